@@ -1,0 +1,121 @@
+!> Checks shared by every analysis: known groups, known keys, and reading a group
+!> with an error that names the file, line, group, key and problem.
+module driver_input
+    use driver_namelist_scan, only: nml_group
+    implicit none
+    private
+
+    public :: group_reader, find_group, check_keys, read_group, located, join
+
+    abstract interface
+        !> Read one namelist group into the analysis' variables: from `unit`, or
+        !> from `text` (an internal file "&group key = value /") when it is not empty.
+        subroutine group_reader(unit, text, ios, iomsg)
+            integer, intent(in) :: unit
+            character(len=*), intent(in) :: text
+            integer, intent(out) :: ios
+            character(len=*), intent(inout) :: iomsg
+        end subroutine group_reader
+    end interface
+
+contains
+
+    !> Index of group `name` in `groups`, 0 if absent.
+    pure integer function find_group(groups, name)
+        type(nml_group), intent(in) :: groups(:)
+        character(len=*), intent(in) :: name
+        integer :: i
+        find_group = 0
+        do i = 1, size(groups)
+            if (groups(i)%name == name) then
+                find_group = i
+                return
+            end if
+        end do
+    end function find_group
+
+    !> Every key of `group` must be in `allowed`; each key at most once.
+    subroutine check_keys(path, group, allowed, stat, errmsg)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: group
+        character(len=*), intent(in) :: allowed(:)
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        integer :: i, j
+        stat = 0
+        errmsg = ''
+        do i = 1, size(group%items)
+            if (.not. any(allowed == group%items(i)%key)) then
+                stat = 1
+                errmsg = located(path, group)//group%items(i)%key//': unknown key (allowed: ' &
+                         //join(allowed)//')'
+                return
+            end if
+            do j = 1, i - 1
+                if (group%items(j)%key == group%items(i)%key) then
+                    stat = 1
+                    errmsg = located(path, group)//group%items(i)%key//': given twice'
+                    return
+                end if
+            end do
+        end do
+    end subroutine check_keys
+
+    !> Read group `groups(ig)` from `path` with `reader`. On a bad value, re-read each
+    !> item alone to find the key it belongs to.
+    subroutine read_group(path, group, reader, stat, errmsg)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: group
+        procedure(group_reader) :: reader
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        integer :: u, ios, i
+        character(len=512) :: iomsg
+        errmsg = ''
+        open(newunit=u, file=path, status='old', action='read', iostat=ios, iomsg=iomsg)
+        if (ios /= 0) then
+            stat = 1
+            errmsg = path//': cannot open the input file: '//trim(iomsg)
+            return
+        end if
+        iomsg = ''
+        call reader(u, '', ios, iomsg)
+        close(u)
+        stat = 0
+        if (ios == 0) return
+        stat = 1
+        do i = 1, size(group%items)
+            iomsg = ''
+            call reader(-1, '&'//group%name//' '//group%items(i)%text//' /', ios, iomsg)
+            if (ios /= 0) then
+                errmsg = located(path, group)//group%items(i)%key//': bad value in "' &
+                         //group%items(i)%text//'" ('//trim(iomsg)//')'
+                return
+            end if
+        end do
+        errmsg = located(path, group)//'cannot read the group ('//trim(iomsg)//')'
+    end subroutine read_group
+
+    !> "file:line: &group: " prefix of a message.
+    function located(path, group) result(prefix)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: group
+        character(len=:), allocatable :: prefix
+        character(len=16) :: num
+        write(num, '(i0)') group%line
+        prefix = path//':'//trim(num)//': &'//group%name//': '
+    end function located
+
+    !> "a, b, c" from a list of names.
+    pure function join(names) result(list)
+        character(len=*), intent(in) :: names(:)
+        character(len=:), allocatable :: list
+        integer :: i
+        list = ''
+        do i = 1, size(names)
+            if (i > 1) list = list//', '
+            list = list//trim(names(i))
+        end do
+    end function join
+
+end module driver_input

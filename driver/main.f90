@@ -1,0 +1,88 @@
+!> seispulse batch driver: `seispulse FILE.nml`.
+!>
+!> Reads &run (analysis, output) and the groups of that analysis, echoes the
+!> effective input, writes the tables and says where they went. Any problem is one
+!> line on stderr naming file, line, group, key and problem, and exit status 2.
+program seispulse_driver
+    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+    use, intrinsic :: iso_c_binding, only: c_int
+    use driver_namelist_scan, only: nml_group, scan_file, lower
+    use driver_input, only: find_group, check_keys, read_group, located, join
+    use driver_pulse, only: run_pulse, pulse_groups
+    use driver_run_group, only: run_analysis, run_output, read_run, run_keys, write_run
+    implicit none
+
+    interface
+        ! C exit(): the status without gfortran's "STOP 2" line (stop prints it).
+        subroutine c_exit(status) bind(c, name='exit')
+            import :: c_int
+            integer(c_int), value, intent(in) :: status
+        end subroutine c_exit
+    end interface
+
+    character(len=8), parameter :: analyses(1) = [character(len=8) :: 'pulse']
+
+    character(len=:), allocatable :: path, errmsg
+    character(len=4096) :: arg
+    type(nml_group), allocatable :: groups(:)
+    integer :: stat, irun, i, j
+
+    if (command_argument_count() /= 1) then
+        write(error_unit, '(a)') 'usage: seispulse INPUT.nml   (see README, "Batch driver")'
+        call finish(2)
+    end if
+    call get_command_argument(1, arg)
+    path = trim(arg)
+
+    call scan_file(path, groups, stat, errmsg)
+    if (stat /= 0) call fail(path//': '//errmsg)
+
+    ! every group must be known and appear once
+    do i = 1, size(groups)
+        if (groups(i)%name /= 'run' .and. .not. any(pulse_groups == groups(i)%name)) &
+            call fail(located(path, groups(i))//'unknown group (allowed: run, ' &
+                      //join(pulse_groups)//')')
+        do j = 1, i - 1
+            if (groups(j)%name == groups(i)%name) &
+                call fail(located(path, groups(i))//'group given twice')
+        end do
+    end do
+
+    irun = find_group(groups, 'run')
+    if (irun == 0) call fail(path//': &run: missing group (it names the analysis and output)')
+    call check_keys(path, groups(irun), run_keys, stat, errmsg)
+    if (stat /= 0) call fail(errmsg)
+    call read_group(path, groups(irun), read_run, stat, errmsg)
+    if (stat /= 0) call fail(errmsg)
+    if (len(run_output()) == 0) call fail(located(path, groups(irun)) &
+        //'output: missing (the prefix of the output files, e.g. ''out/case1'')')
+
+    select case (lower(run_analysis()))
+    case ('pulse')
+        call write_run(output_unit)
+        call run_pulse(path, groups, run_output(), stat, errmsg)
+    case ('')
+        call fail(located(path, groups(irun))//'analysis: missing (allowed: '//join(analyses)//')')
+    case default
+        call fail(located(path, groups(irun))//'analysis = '''//run_analysis() &
+                  //''': unknown analysis (allowed: '//join(analyses)//')')
+    end select
+    if (stat /= 0) call fail(errmsg)
+    call finish(0)
+
+contains
+
+    subroutine fail(message)
+        character(len=*), intent(in) :: message
+        write(error_unit, '(a)') 'seispulse: error: '//message
+        call finish(2)
+    end subroutine fail
+
+    subroutine finish(status)
+        integer, intent(in) :: status
+        flush(output_unit)
+        flush(error_unit)
+        call c_exit(int(status, c_int))
+    end subroutine finish
+
+end program seispulse_driver

@@ -1,0 +1,45 @@
+!> The &run group: which analysis, and the prefix of the output files.
+module driver_run_group
+    implicit none
+    private
+
+    public :: run_analysis, run_output, read_run, run_keys, write_run
+
+    character(len=8), parameter :: run_keys(2) = [character(len=8) :: 'analysis', 'output']
+
+    character(len=32) :: analysis = ''
+    character(len=1024) :: output = ''
+    namelist /run/ analysis, output
+
+contains
+
+    !> Reader for driver_input's read_group.
+    subroutine read_run(unit, text, ios, iomsg)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: text
+        integer, intent(out) :: ios
+        character(len=*), intent(inout) :: iomsg
+        if (len(text) > 0) then
+            read(text, nml=run, iostat=ios, iomsg=iomsg)
+        else
+            read(unit, nml=run, iostat=ios, iomsg=iomsg)
+        end if
+    end subroutine read_run
+
+    function run_analysis() result(s)
+        character(len=:), allocatable :: s
+        s = trim(analysis)
+    end function run_analysis
+
+    function run_output() result(s)
+        character(len=:), allocatable :: s
+        s = trim(output)
+    end function run_output
+
+    !> Echo the group (for the log).
+    subroutine write_run(unit)
+        integer, intent(in) :: unit
+        write(unit, nml=run)
+    end subroutine write_run
+
+end module driver_run_group

@@ -1,0 +1,141 @@
+!> Output tables: each table is written twice, as a fixed-width text table with a
+!> header of names and units, and as CSV. Either both files are complete or neither
+!> exists: on any write error both are deleted.
+module driver_tables
+    use seispulse_kinds, only: dp
+    implicit none
+    private
+
+    public :: write_tables, column_len
+
+    !> Width of a text column: a blank, then es24.16e3 (a negative number fills all 24).
+    integer, parameter :: column_len = 25
+
+contains
+
+    !> Write <prefix>_<name>.txt and <prefix>_<name>.csv.
+    subroutine write_tables(prefix, name, comments, names, units, data, files, stat, errmsg)
+        character(len=*), intent(in) :: prefix          !! output prefix (may contain a directory)
+        character(len=*), intent(in) :: name            !! table name, e.g. 'pulse'
+        character(len=*), intent(in) :: comments(:)     !! lines for the text header
+        character(len=*), intent(in) :: names(:)        !! column names
+        character(len=*), intent(in) :: units(:)        !! column units
+        real(dp), intent(in) :: data(:, :)              !! rows x columns
+        character(len=*), intent(out) :: files(2)       !! paths written (txt, csv)
+        integer, intent(out) :: stat                    !! 0 or an iostat
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=512) :: iomsg
+        integer :: ut, uc, i, j, ncol
+        character(len=:), allocatable :: row, line
+
+        ncol = size(names)
+        allocate(character(len=(column_len + 1) * ncol) :: line)
+        errmsg = ''
+        files(1) = trim(prefix)//'_'//trim(name)//'.txt'
+        files(2) = trim(prefix)//'_'//trim(name)//'.csv'
+        call make_parent_dir(files(1))
+        ut = -1
+        uc = -1
+        open(newunit=ut, file=trim(files(1)), status='replace', action='write', &
+             iostat=stat, iomsg=iomsg)
+        if (stat /= 0) then
+            call fail('cannot create '//trim(files(1)))
+            return
+        end if
+        open(newunit=uc, file=trim(files(2)), status='replace', action='write', &
+             iostat=stat, iomsg=iomsg)
+        if (stat /= 0) then
+            call fail('cannot create '//trim(files(2)))
+            return
+        end if
+        do i = 1, size(comments)
+            write(ut, '(a)', iostat=stat, iomsg=iomsg) '# '//trim(comments(i))
+            if (stat /= 0) exit
+        end do
+        if (stat == 0) write(ut, '(a, *(a))', iostat=stat, iomsg=iomsg) '#', &
+            (adjustr(cell(names(j), column_len - 1)), j = 1, ncol)
+        if (stat == 0) write(ut, '(a, *(a))', iostat=stat, iomsg=iomsg) '#', &
+            (adjustr(cell('('//trim(units(j))//')', column_len - 1)), j = 1, ncol)
+        if (stat == 0) then
+            row = trim(names(1))//' ('//trim(units(1))//')'
+            do j = 2, ncol
+                row = row//','//trim(names(j))//' ('//trim(units(j))//')'
+            end do
+            write(uc, '(a)', iostat=stat, iomsg=iomsg) row
+        end if
+        do i = 1, size(data, 1)
+            if (stat /= 0) exit
+            write(ut, '(*(1x, es24.16e3))', iostat=stat, iomsg=iomsg) data(i, :)
+            if (stat == 0) then
+                ! CSV: the same 17 significant digits, blanks squeezed out
+                write(line, '(*(es24.16e3, :, ","))', iostat=stat, iomsg=iomsg) data(i, :)
+                if (stat == 0) write(uc, '(a)', iostat=stat, iomsg=iomsg) squeeze(line)
+            end if
+        end do
+        if (stat /= 0) then
+            call fail('cannot write '//trim(files(1))//' / '//trim(files(2)))
+            return
+        end if
+        close(ut, iostat=stat, iomsg=iomsg)
+        if (stat == 0) close(uc, iostat=stat, iomsg=iomsg)
+        if (stat /= 0) call fail('cannot close the tables')
+
+    contains
+
+        subroutine fail(what)
+            character(len=*), intent(in) :: what
+            integer :: ios
+            errmsg = what//': '//trim(iomsg)
+            if (ut /= -1) close(ut, status='delete', iostat=ios)
+            if (uc /= -1) close(uc, status='delete', iostat=ios)
+            if (stat == 0) stat = 1
+        end subroutine fail
+
+    end subroutine write_tables
+
+    !> s without blanks.
+    pure function squeeze(s) result(r)
+        character(len=*), intent(in) :: s
+        character(len=:), allocatable :: r
+        integer :: i, n
+        character(len=len(s)) :: buf
+        n = 0
+        do i = 1, len_trim(s)
+            if (s(i:i) /= ' ') then
+                n = n + 1
+                buf(n:n) = s(i:i)
+            end if
+        end do
+        r = buf(1:n)
+    end function squeeze
+
+    pure function cell(text, width) result(c)
+        character(len=*), intent(in) :: text
+        integer, intent(in) :: width
+        character(len=width + 1) :: c
+        c = ' '//text
+    end function cell
+
+    !> Create the directory part of `path` if there is one (mkdir -p).
+    subroutine make_parent_dir(path)
+        character(len=*), intent(in) :: path
+        integer :: k, code
+        character(len=:), allocatable :: dir, quoted
+        k = index(path, '/', back=.true.)
+        if (k <= 1) return
+        dir = path(1:k - 1)
+        ! single-quote the name for the shell, escaping embedded quotes
+        quoted = ''''
+        do code = 1, len(dir)
+            if (dir(code:code) == '''') then
+                quoted = quoted//'''\'''''
+            else
+                quoted = quoted//dir(code:code)
+            end if
+        end do
+        quoted = quoted//''''
+        ! a failure shows up when the table is opened, with a better message
+        call execute_command_line('mkdir -p -- '//quoted//' 2>/dev/null', exitstat=code)
+    end subroutine make_parent_dir
+
+end module driver_tables

@@ -1,0 +1,99 @@
+"""Shared plumbing of the Python layer: argument conversion, ufunc-style
+broadcasting, and turning Fortran status codes into exceptions."""
+
+import numbers
+
+import numpy as np
+
+from .errors import STATUS_ERRORS, InternalError, InvalidInputError
+
+
+def as_float_array(name, value):
+    """`value` as a float64 array; raise InvalidInputError naming `name` if it is not
+    real-valued numeric data."""
+    try:
+        arr = np.asarray(value)
+    except Exception as exc:  # ragged lists and the like
+        raise InvalidInputError(f"{name}: must be a real number or an array of them") from exc
+    if arr.dtype == object or arr.dtype.kind not in "biuf":
+        raise InvalidInputError(
+            f"{name}: must be a real number or an array of them (got {arr.dtype} data)")
+    return arr.astype(np.float64, copy=False)
+
+
+def broadcast(**arrays):
+    """Broadcast named float arrays together like a numpy ufunc.
+
+    Returns (shape, {name: array}) with each array converted; raises
+    InvalidInputError naming the arguments when the shapes do not broadcast."""
+    converted = {name: as_float_array(name, value) for name, value in arrays.items()}
+    try:
+        shape = np.broadcast_shapes(*(a.shape for a in converted.values()))
+    except ValueError as exc:
+        described = ", ".join(f"{n} {a.shape}" for n, a in converted.items())
+        raise InvalidInputError(f"shapes do not broadcast together: {described}") from exc
+    return shape, converted
+
+
+def flat(arr, shape):
+    """`arr` broadcast to `shape`, as a contiguous 1-d float64 array (no copy when
+    it already is one)."""
+    return np.ascontiguousarray(np.broadcast_to(arr, shape).reshape(-1))
+
+
+def compact(arr, shape):
+    """A parameter for the Fortran layer: length 1 when it is a single value
+    (the fast path), else broadcast to `shape` and flattened."""
+    if arr.size == 1:
+        return arr.reshape(1)
+    return flat(arr, shape)
+
+
+def check_bool(name, value):
+    """A flag given as bool (or 0/1); InvalidInputError otherwise."""
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    if isinstance(value, numbers.Integral) and value in (0, 1):
+        return bool(value)
+    raise InvalidInputError(f"{name} = {value!r}: must be True or False")
+
+
+def check_choice(name, value, allowed):
+    """A name from `allowed`; InvalidInputError listing them otherwise."""
+    if not isinstance(value, str) or value not in allowed:
+        raise InvalidInputError(
+            f"{name} = {value!r}: unknown value (allowed: {', '.join(map(repr, allowed))})")
+    return value
+
+
+def check_positive(name, value, unit=""):
+    """A finite real scalar > 0."""
+    try:
+        x = float(value)
+    except (TypeError, ValueError) as exc:
+        raise InvalidInputError(f"{name} = {value!r}: must be a finite number > 0{unit}") from exc
+    if not np.isfinite(x) or x <= 0.0:
+        raise InvalidInputError(f"{name} = {x!r}: must be a finite number > 0{unit}")
+    return x
+
+
+def raise_for_status(stat, errmsg, rename=None):
+    """Raise the exception of a nonzero Fortran status, with its message.
+
+    `rename` maps Fortran parameter names to the Python ones, so the message names
+    the argument the caller actually passed."""
+    if stat == 0:
+        return
+    msg = errmsg.decode("ascii", "replace") if isinstance(errmsg, bytes) else str(errmsg)
+    msg = msg.strip()
+    for fortran_name, python_name in (rename or {}).items():
+        if msg.startswith(fortran_name + " ") or msg.startswith(fortran_name + ":"):
+            msg = python_name + msg[len(fortran_name):]
+    raise STATUS_ERRORS.get(int(stat), InternalError)(msg or f"status {stat}")
+
+
+def shaped(shape, *arrays):
+    """Reshape flat results; 0-d results become Python floats."""
+    if shape == ():
+        return tuple(float(a[0]) for a in arrays)
+    return tuple(a.reshape(shape) for a in arrays)

@@ -1,0 +1,40 @@
+"""Exceptions raised by seispulse.
+
+Every error the Fortran library reports as a status becomes one of these. Bad input
+raises :class:`InvalidInputError`, a :class:`ValueError`, whose message starts with
+the parameter's name and states the allowed range.
+"""
+
+
+class SeispulseError(Exception):
+    """Base class of every seispulse error."""
+
+
+class InvalidInputError(SeispulseError, ValueError):
+    """An argument is outside its domain (NaN, wrong sign, unknown name, bad shape)."""
+
+
+class SingularError(SeispulseError, ArithmeticError):
+    """A matrix or system is singular."""
+
+
+class ConvergenceError(SeispulseError, RuntimeError):
+    """An iteration reached its limit before converging."""
+
+
+class NoBracketError(SeispulseError, ValueError):
+    """A root finder was given an interval without a sign change."""
+
+
+class InternalError(SeispulseError, RuntimeError):
+    """A bug in seispulse: please report it with the input that caused it."""
+
+
+#: Fortran status code (module seispulse_errors) -> exception class.
+STATUS_ERRORS = {
+    1: InvalidInputError,
+    2: SingularError,
+    3: ConvergenceError,
+    4: NoBracketError,
+    5: InternalError,
+}

@@ -1,0 +1,28 @@
+!> seispulse: closed-form and exact numerical answers for idealized near-fault
+!> pulses and accelerograms. This facade re-exports the public API; `use seispulse`
+!> is all a design code needs.
+module seispulse
+    use seispulse_kinds, only: dp, ik
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
+                                SEISPULSE_NO_CONVERGENCE, SEISPULSE_NO_BRACKET, &
+                                SEISPULSE_INTERNAL, status_name
+    use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, &
+                                 sin_pi, cos_pi
+    use seispulse_roots, only: scalar_function, find_root
+    use seispulse_lapack, only: solve_linear
+    use seispulse_pulses, only: exp_pulse, exp_pulse_point, exp_pulse_peaks, &
+                                exp_pulse_impulse_amplitude, pulse_t, pulse_validate, &
+                                pulse_eval, pulse_at, pulse_breaks, pulse_end_time, &
+                                pulse_kind_from_name, pulse_kind_name, exponential_pulse, &
+                                half_sine_pulse, sine_cycle_pulse, cosine_cycle_pulse, &
+                                rectangular_pulse, triangular_pulse, ricker_pulse, mp_pulse, &
+                                PULSE_EXPONENTIAL, PULSE_HALF_SINE, PULSE_SINE_CYCLE, &
+                                PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
+                                PULSE_RICKER, PULSE_MP
+    implicit none
+    public
+
+    !> Library version, as in meson.build.
+    character(len=*), parameter :: seispulse_version = '0.1.0'
+
+end module seispulse

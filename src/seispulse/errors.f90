@@ -1,0 +1,80 @@
+!> Status codes and the one helper that reports them.
+!>
+!> Library routines never stop and never print: a fallible routine ends with
+!> `stat` (one of the codes below) and an optional `errmsg`. Messages name the
+!> parameter first ("beta: ..."), so that the driver can prefix file and group
+!> and the Python layer can raise an exception that names the argument.
+module seispulse_errors
+    implicit none
+    private
+
+    public :: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
+              SEISPULSE_NO_CONVERGENCE, SEISPULSE_NO_BRACKET, SEISPULSE_INTERNAL
+    public :: set_error, status_name, real_str
+
+    integer, parameter :: SEISPULSE_SUCCESS = 0        !! no error
+    integer, parameter :: SEISPULSE_INVALID_INPUT = 1  !! an argument is out of its domain
+    integer, parameter :: SEISPULSE_SINGULAR = 2       !! singular matrix or degenerate system
+    integer, parameter :: SEISPULSE_NO_CONVERGENCE = 3 !! iteration limit reached
+    integer, parameter :: SEISPULSE_NO_BRACKET = 4     !! root finder: f(a), f(b) of one sign
+    integer, parameter :: SEISPULSE_INTERNAL = 5       !! a bug: please report it
+
+contains
+
+    !> Set `stat` to `code` and, when the caller passed one, `errmsg` to `message`.
+    pure subroutine set_error(stat, errmsg, code, message)
+        integer, intent(out) :: stat                          !! receives `code`
+        character(len=*), intent(inout), optional :: errmsg  !! receives `message` (truncated)
+        integer, intent(in) :: code                           !! one of the SEISPULSE_* codes
+        character(len=*), intent(in) :: message               !! "parameter: what is wrong"
+        stat = code
+        if (present(errmsg)) errmsg = message
+    end subroutine set_error
+
+    !> Short name of a status code, for logs.
+    pure function status_name(code) result(name)
+        integer, intent(in) :: code  !! a SEISPULSE_* code
+        character(len=:), allocatable :: name
+        select case (code)
+        case (SEISPULSE_SUCCESS)
+            name = 'success'
+        case (SEISPULSE_INVALID_INPUT)
+            name = 'invalid input'
+        case (SEISPULSE_SINGULAR)
+            name = 'singular'
+        case (SEISPULSE_NO_CONVERGENCE)
+            name = 'no convergence'
+        case (SEISPULSE_NO_BRACKET)
+            name = 'no bracket'
+        case (SEISPULSE_INTERNAL)
+            name = 'internal error'
+        case default
+            name = 'unknown status'
+        end select
+    end function status_name
+
+    !> A real number as short text for messages: 15 significant digits without
+    !> trailing zeros ("-1.0", "0.6", "1.0E+300", "NaN", "Infinity").
+    pure function real_str(x) result(text)
+        use seispulse_kinds, only: dp
+        real(dp), intent(in) :: x  !! the number
+        character(len=:), allocatable :: text
+        character(len=40) :: buf
+        integer :: e, k
+        write(buf, '(g0.15)') x
+        buf = adjustl(buf)
+        e = scan(buf, 'Ee')
+        if (e == 0) e = len_trim(buf) + 1
+        if (index(buf(1:e - 1), '.') > 0) then
+            k = e - 1
+            do while (k > 1)
+                if (buf(k:k) /= '0' .or. buf(k - 1:k - 1) == '.') exit
+                k = k - 1
+            end do
+            text = buf(1:k)//trim(buf(e:))
+        else
+            text = trim(buf)
+        end if
+    end function real_str
+
+end module seispulse_errors

@@ -1,0 +1,196 @@
+!> Bracketed root finding that always terminates with a status (Brent 1973).
+!>
+!> A problem supplies its function by extending `scalar_function` and
+!> implementing `eval`; the extension carries the parameters, so no global state
+!> and no internal-procedure trampolines (which need an executable stack) are used.
+module seispulse_roots
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
+                                SEISPULSE_NO_BRACKET, SEISPULSE_NO_CONVERGENCE, set_error
+    implicit none
+    private
+
+    public :: scalar_function, find_root
+
+    !> A real function of one real variable, with its parameters as components.
+    type, abstract :: scalar_function
+    contains
+        procedure(scalar_eval), deferred :: eval
+    end type scalar_function
+
+    abstract interface
+        !> Value of the function at x.
+        function scalar_eval(self, x) result(y)
+            import :: scalar_function, dp
+            class(scalar_function), intent(inout) :: self  !! the function and its parameters
+            real(dp), intent(in) :: x                      !! abscissa
+            real(dp) :: y
+        end function scalar_eval
+    end interface
+
+contains
+
+    !> Find x in [a, b] with f(x) = 0, given f(a) f(b) <= 0 (Brent's method:
+    !> inverse quadratic interpolation, secant and bisection steps; the bracket
+    !> always contains a sign change, so the method cannot leave it).
+    !>
+    !> Converged when the bracket is narrower than 4 eps |x| + xtol. Termination
+    !> is guaranteed: after `max_iter` evaluations stat = SEISPULSE_NO_CONVERGENCE
+    !> and x is the best point found.
+    subroutine find_root(f, a, b, x, stat, errmsg, xtol, max_iter, fa_known, fb_known, n_eval)
+        class(scalar_function), intent(inout) :: f            !! function whose root is sought
+        real(dp), intent(in) :: a                             !! one end of the bracket
+        real(dp), intent(in) :: b                             !! other end of the bracket
+        real(dp), intent(out) :: x                            !! the root (best estimate)
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp), intent(in), optional :: xtol                !! absolute tolerance in x (default 0)
+        integer, intent(in), optional :: max_iter             !! evaluation limit (default 1000)
+        real(dp), intent(in), optional :: fa_known            !! f(a), if the caller has it
+        real(dp), intent(in), optional :: fb_known            !! f(b), if the caller has it
+        integer, intent(out), optional :: n_eval              !! evaluations used
+        real(dp) :: xa, xb, xc, fa, fb, fc, d, e, tol1, xm, p, q, r, s, abs_tol
+        integer :: iter, limit, evals
+
+        abs_tol = 0.0_dp
+        if (present(xtol)) abs_tol = max(xtol, 0.0_dp)
+        limit = 1000
+        if (present(max_iter)) limit = max_iter
+        evals = 0
+        x = a
+        if (.not. (ieee_is_finite(a) .and. ieee_is_finite(b))) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'bracket: both ends must be finite numbers')
+            call report_evals()
+            return
+        end if
+        xa = a
+        xb = b
+        if (present(fa_known)) then
+            fa = fa_known
+        else
+            fa = f%eval(xa)
+            evals = evals + 1
+        end if
+        if (present(fb_known)) then
+            fb = fb_known
+        else
+            fb = f%eval(xb)
+            evals = evals + 1
+        end if
+        if (.not. (ieee_is_finite(fa) .and. ieee_is_finite(fb))) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'bracket: function value at an end is not a finite number')
+            call report_evals()
+            return
+        end if
+        stat = SEISPULSE_SUCCESS
+        if (is_zero(fa)) then
+            x = xa
+            call report_evals()
+            return
+        end if
+        if (is_zero(fb)) then
+            x = xb
+            call report_evals()
+            return
+        end if
+        if ((fa > 0.0_dp .and. fb > 0.0_dp) .or. (fa < 0.0_dp .and. fb < 0.0_dp)) then
+            call set_error(stat, errmsg, SEISPULSE_NO_BRACKET, &
+                           'bracket: f(a) and f(b) have the same sign')
+            call report_evals()
+            return
+        end if
+
+        xc = xb
+        fc = fb
+        d = xb - xa
+        e = d
+        do iter = 1, limit
+            if ((fb > 0.0_dp .and. fc > 0.0_dp) .or. (fb < 0.0_dp .and. fc < 0.0_dp)) then
+                ! keep the sign change between b and c
+                xc = xa
+                fc = fa
+                d = xb - xa
+                e = d
+            end if
+            if (abs(fc) < abs(fb)) then
+                ! b is the best estimate so far
+                xa = xb
+                xb = xc
+                xc = xa
+                fa = fb
+                fb = fc
+                fc = fa
+            end if
+            tol1 = 2.0_dp * epsilon(1.0_dp) * abs(xb) + 0.5_dp * abs_tol
+            xm = 0.5_dp * (xc - xb)
+            if (abs(xm) <= tol1 .or. is_zero(fb)) then
+                x = xb
+                call report_evals()
+                return
+            end if
+            if (abs(e) >= tol1 .and. abs(fa) > abs(fb)) then
+                s = fb / fa
+                if (is_zero(xa - xc)) then
+                    ! secant step
+                    p = 2.0_dp * xm * s
+                    q = 1.0_dp - s
+                else
+                    ! inverse quadratic interpolation
+                    q = fa / fc
+                    r = fb / fc
+                    p = s * (2.0_dp * xm * q * (q - r) - (xb - xa) * (r - 1.0_dp))
+                    q = (q - 1.0_dp) * (r - 1.0_dp) * (s - 1.0_dp)
+                end if
+                if (p > 0.0_dp) q = -q
+                p = abs(p)
+                if (2.0_dp * p < min(3.0_dp * xm * q - abs(tol1 * q), abs(e * q))) then
+                    e = d            ! interpolation accepted
+                    d = p / q
+                else
+                    d = xm           ! fall back to bisection
+                    e = d
+                end if
+            else
+                d = xm
+                e = d
+            end if
+            xa = xb
+            fa = fb
+            if (abs(d) > tol1) then
+                xb = xb + d
+            else
+                xb = xb + sign(tol1, xm)
+            end if
+            fb = f%eval(xb)
+            evals = evals + 1
+            if (.not. ieee_is_finite(fb)) then
+                x = xa
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                               'function: value inside the bracket is not a finite number')
+                call report_evals()
+                return
+            end if
+        end do
+        x = xb
+        call set_error(stat, errmsg, SEISPULSE_NO_CONVERGENCE, &
+                       'root: iteration limit reached before the bracket closed')
+        call report_evals()
+
+    contains
+
+        subroutine report_evals()
+            if (present(n_eval)) n_eval = evals
+        end subroutine report_evals
+
+    end subroutine find_root
+
+    !> True for +0 and -0 (avoids an equality test on reals).
+    elemental logical function is_zero(v)
+        real(dp), intent(in) :: v
+        is_zero = .not. (abs(v) > 0.0_dp)
+    end function is_zero
+
+end module seispulse_roots

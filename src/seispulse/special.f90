@@ -1,0 +1,205 @@
+!> Special functions evaluated without cancellation or overflow.
+!>
+!> The exponential "phi functions" phi_k(x) = sum_{j>=0} x^j/(j+k)! are the
+!> building blocks of every closed form for exponential pulses:
+!>   phi_1(x) = (e^x - 1)/x,  phi(x) = phi_2(x) = (e^x - 1 - x)/x^2,
+!>   chi(x) = phi_3(x) = (e^x - 1 - x - x^2/2)/x^3,   phi_k(0) = 1/k!.
+!> Printed forms such as (e^x - 1 - x)/x^2 lose every digit for small |x|; here a
+!> series is used for |x| < 2 and recurrences built on expm1 elsewhere (at most a
+!> few ulps lost). For large positive x the scaled values e^(-x) phi_k(x) are
+!> available, which never overflow (sliding.md 2.5).
+module seispulse_special
+    use, intrinsic :: iso_c_binding, only: c_double
+    use seispulse_kinds, only: dp
+    implicit none
+    private
+
+    public :: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, sin_pi, cos_pi, &
+              tau_minus_sinpi, pi
+
+    real(dp), parameter :: pi = 3.141592653589793238462643383279502884_dp  !! pi
+
+    !> Series/recurrence switch for the phi functions (see exp_phis).
+    real(dp), parameter :: series_limit = 2.0_dp
+    !> Above this argument e^x overflows soon: switch to the scaled recurrence.
+    real(dp), parameter :: scaled_limit = 700.0_dp
+    !> 1/(j+3)!, j = 0..23: Taylor coefficients of chi = phi_3.
+    integer, parameter :: nchi = 23
+    real(dp), parameter :: chi_coef(0:nchi) = [ &
+        1.0_dp / 6.0_dp, 1.0_dp / 24.0_dp, 1.0_dp / 120.0_dp, 1.0_dp / 720.0_dp, &
+        1.0_dp / 5040.0_dp, 1.0_dp / 40320.0_dp, 1.0_dp / 362880.0_dp, &
+        1.0_dp / 3628800.0_dp, 1.0_dp / 39916800.0_dp, 1.0_dp / 479001600.0_dp, &
+        1.0_dp / 6227020800.0_dp, 1.0_dp / 87178291200.0_dp, &
+        1.0_dp / 1307674368000.0_dp, 1.0_dp / 20922789888000.0_dp, &
+        1.0_dp / 355687428096000.0_dp, 1.0_dp / 6402373705728000.0_dp, &
+        1.0_dp / 121645100408832000.0_dp, 1.0_dp / 2432902008176640000.0_dp, &
+        1.0_dp / 51090942171709440000.0_dp, 1.0_dp / 1124000727777607680000.0_dp, &
+        1.0_dp / 25852016738884976640000.0_dp, 1.0_dp / 620448401733239439360000.0_dp, &
+        1.0_dp / 15511210043330985984000000.0_dp, 1.0_dp / 403291461126605635584000000.0_dp]
+
+    interface
+        pure function c_expm1(x) bind(c, name='expm1') result(y)
+            import :: c_double
+            real(c_double), value, intent(in) :: x
+            real(c_double) :: y
+        end function c_expm1
+        pure function c_log1p(x) bind(c, name='log1p') result(y)
+            import :: c_double
+            real(c_double), value, intent(in) :: x
+            real(c_double) :: y
+        end function c_log1p
+    end interface
+
+contains
+
+    !> e^x - 1 without cancellation for small |x| (C99 libm).
+    elemental function expm1(x) result(y)
+        real(dp), intent(in) :: x  !! argument
+        real(dp) :: y
+        y = c_expm1(x)
+    end function expm1
+
+    !> log(1 + x) without cancellation for small |x| (C99 libm).
+    elemental function log1p(x) result(y)
+        real(dp), intent(in) :: x  !! argument, x > -1
+        real(dp) :: y
+        y = c_log1p(x)
+    end function log1p
+
+    !> phi_1(x), phi_2(x), phi_3(x) together, for x <= 700.
+    !> Relative error a few ulps; exact limits 1, 1/2, 1/6 at x = 0.
+    elemental subroutine exp_phis(x, p1, p2, p3)
+        real(dp), intent(in) :: x    !! argument (x <= 700; larger overflows: use the scaled form)
+        real(dp), intent(out) :: p1  !! (e^x - 1)/x
+        real(dp), intent(out) :: p2  !! (e^x - 1 - x)/x^2
+        real(dp), intent(out) :: p3  !! (e^x - 1 - x - x^2/2)/x^3
+        real(dp) :: r
+        if (abs(x) < series_limit) then
+            p3 = chi_series(x)
+            p2 = 0.5_dp + x * p3
+            if (abs(x) < 0.7_dp) then
+                p1 = 1.0_dp + x * p2          ! |x p2| < 0.3: no cancellation
+            else
+                p1 = (exp(x) - 1.0_dp) / x    ! e^x >= 2 or <= 1/2: at most 2 ulps
+            end if
+        else
+            ! Forward recurrence phi_(k+1) = (phi_k - 1/k!)/x; for |x| >= 2 each step
+            ! loses at most about 1.5 bits. exp(x) - 1 is as good as expm1 here and
+            ! several times faster; one reciprocal instead of three divisions costs
+            ! half an ulp per step.
+            r = 1.0_dp / x
+            p1 = (exp(x) - 1.0_dp) * r
+            p2 = (p1 - 1.0_dp) * r
+            p3 = (p2 - 0.5_dp) * r
+        end if
+    end subroutine exp_phis
+
+    !> Scaled values q_k = e^(-x) phi_k(x), k = 1, 2, 3, for x >= 0: finite for any x
+    !> (q_k ~ 1/x^k as x -> +inf).
+    elemental subroutine exp_phis_scaled(x, q1, q2, q3)
+        real(dp), intent(in) :: x    !! argument, x >= 0 (may be huge)
+        real(dp), intent(out) :: q1  !! e^(-x) phi_1(x) = (1 - e^(-x))/x
+        real(dp), intent(out) :: q2  !! e^(-x) phi_2(x)
+        real(dp), intent(out) :: q3  !! e^(-x) phi_3(x)
+        real(dp) :: p1, p2, p3, emx
+        if (x <= scaled_limit) then
+            call exp_phis(x, p1, p2, p3)
+            emx = exp(-x)
+            q1 = emx * p1
+            q2 = emx * p2
+            q3 = emx * p3
+        else
+            ! e^(-x) is below 1e-304 here, so the recurrence subtracts nothing visible.
+            emx = exp(-x)
+            q1 = -expm1(-x) / x
+            q2 = (q1 - emx) / x
+            q3 = (q2 - 0.5_dp * emx) / x
+        end if
+    end subroutine exp_phis_scaled
+
+    !> phi(x) = (e^x - 1 - x)/x^2, phi(0) = 1/2 (x <= 700).
+    elemental function phi(x) result(y)
+        real(dp), intent(in) :: x  !! argument
+        real(dp) :: y
+        real(dp) :: p1, p3
+        call exp_phis(x, p1, y, p3)
+    end function phi
+
+    !> chi(x) = (e^x - 1 - x - x^2/2)/x^3, chi(0) = 1/6 (x <= 700).
+    elemental function chi(x) result(y)
+        real(dp), intent(in) :: x  !! argument
+        real(dp) :: y
+        real(dp) :: p1, p2
+        call exp_phis(x, p1, p2, y)
+    end function chi
+
+    !> Taylor series of phi_3: the even and odd coefficients by two independent
+    !> Horner chains in x^2 (half the latency of one chain); the number of terms
+    !> grows with |x| (truncation below 1e-17 relative for |x| < 2).
+    pure function chi_series(x) result(y)
+        real(dp), intent(in) :: x
+        real(dp) :: y
+        real(dp) :: x2, even, odd
+        integer :: j, n
+        if (abs(x) < 0.125_dp) then
+            n = 9
+        else if (abs(x) < 0.5_dp) then
+            n = 13
+        else
+            n = nchi
+        end if
+        if (mod(n, 2) == 0) n = n + 1      ! n odd: chi_coef(n) closes the odd chain
+        x2 = x * x
+        even = chi_coef(n - 1)
+        odd = chi_coef(n)
+        do j = n - 3, 0, -2
+            even = chi_coef(j) + x2 * even
+            odd = chi_coef(j + 1) + x2 * odd
+        end do
+        y = even + x * odd
+    end function chi_series
+
+    !> sin(pi x) with exact argument reduction (zero at every integer).
+    elemental function sin_pi(x) result(y)
+        real(dp), intent(in) :: x  !! argument (finite)
+        real(dp) :: y
+        real(dp) :: r
+        r = x - 2.0_dp * anint(0.5_dp * x)    ! exact: r in [-1, 1], same sin(pi r)
+        if (r > 0.5_dp) then
+            r = 1.0_dp - r                     ! sin(pi r) = sin(pi (1 - r))
+        else if (r < -0.5_dp) then
+            r = -1.0_dp - r
+        end if
+        y = sin(pi * r)
+    end function sin_pi
+
+    !> cos(pi x) with exact argument reduction (zero at every half-integer).
+    elemental function cos_pi(x) result(y)
+        real(dp), intent(in) :: x  !! argument (finite)
+        real(dp) :: y
+        y = sin_pi(0.5_dp - abs(x - 2.0_dp * anint(0.5_dp * x)))
+    end function cos_pi
+
+    !> t - sin(pi t)/pi without cancellation near t = 0 (series for |t| < 1/2).
+    elemental function tau_minus_sinpi(t) result(y)
+        real(dp), intent(in) :: t  !! argument (finite)
+        real(dp) :: y
+        real(dp) :: x, x2, term
+        integer :: j
+        if (abs(t) < 0.5_dp) then
+            ! (x - sin x)/pi = sum_{j>=1} (-1)^(j+1) x^(2j+1)/(2j+1)!/pi, x = pi t
+            x = pi * t
+            x2 = x * x
+            term = x * x2 / 6.0_dp
+            y = term
+            do j = 2, 12
+                term = -term * x2 / real((2 * j) * (2 * j + 1), dp)
+                y = y + term
+            end do
+            y = y / pi
+        else
+            y = t - sin_pi(t) / pi
+        end if
+    end function tau_minus_sinpi
+
+end module seispulse_special

@@ -1,0 +1,51 @@
+!> Runs all unit-test suites, or the one named by the first argument.
+!> Last line: "N passed, N failed"; exit status 1 on any failure.
+program tester
+    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+    use testing, only: unit_test, run_suite
+    use test_special, only: collect_special
+    use test_roots, only: collect_roots
+    use test_lapack, only: collect_lapack
+    use test_pulses, only: collect_pulses
+    implicit none
+    character(len=64) :: wanted
+    integer :: npass, nfail, nrun
+    type(unit_test), allocatable :: tests(:)
+
+    wanted = ''
+    if (command_argument_count() >= 1) call get_command_argument(1, wanted)
+    npass = 0
+    nfail = 0
+    nrun = 0
+    if (selected('special')) then
+        call collect_special(tests)
+        call run_suite('special', tests, output_unit, npass, nfail)
+    end if
+    if (selected('roots')) then
+        call collect_roots(tests)
+        call run_suite('roots', tests, output_unit, npass, nfail)
+    end if
+    if (selected('lapack')) then
+        call collect_lapack(tests)
+        call run_suite('lapack', tests, output_unit, npass, nfail)
+    end if
+    if (selected('pulses')) then
+        call collect_pulses(tests)
+        call run_suite('pulses', tests, output_unit, npass, nfail)
+    end if
+    if (nrun == 0) then
+        write(error_unit, '(a)') 'unknown suite: '//trim(wanted)
+        error stop 2
+    end if
+    write(output_unit, '(i0, a, i0, a)') npass, ' passed, ', nfail, ' failed'
+    if (nfail > 0) error stop 1
+
+contains
+
+    logical function selected(name)
+        character(len=*), intent(in) :: name
+        selected = len_trim(wanted) == 0 .or. trim(wanted) == name
+        if (selected) nrun = nrun + 1
+    end function selected
+
+end program tester

@@ -1,0 +1,72 @@
+#!/usr/bin/env python3
+"""Driver regression: run the driver on a case in a scratch directory and compare
+its CSV table with the reference table <case>.ref (computed independently by
+make_refs.py with mpmath). Also checks that the text table holds the same numbers.
+
+usage: compare.py DRIVER CASE.nml CASE.ref
+"""
+import csv
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+RTOL = 1e-12
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    return rows[0], [[float(x) for x in row] for row in rows[1:]]
+
+
+def read_txt(path):
+    rows = []
+    for line in Path(path).read_text().splitlines():
+        if line.startswith("#") or not line.strip():
+            continue
+        rows.append([float(x) for x in line.split()])
+    return rows
+
+
+def main():
+    driver, case, ref = sys.argv[1], Path(sys.argv[2]), Path(sys.argv[3])
+    ref_header, ref_rows = read_csv(ref)
+    with tempfile.TemporaryDirectory() as scratch:
+        shutil.copy(case, scratch)
+        proc = subprocess.run([driver, case.name], cwd=scratch, capture_output=True, text=True)
+        if proc.returncode != 0:
+            print(f"FAIL driver exited {proc.returncode}: {proc.stderr.strip()}")
+            return 1
+        outputs = sorted(Path(scratch).glob("out/*.csv"))
+        if len(outputs) != 1:
+            print(f"FAIL expected one CSV table, found {[p.name for p in outputs]}")
+            return 1
+        header, rows = read_csv(outputs[0])
+        txt_rows = read_txt(outputs[0].with_suffix(".txt"))
+    failures = 0
+    if header != ref_header:
+        print(f"FAIL header {header} != {ref_header}")
+        failures += 1
+    if len(rows) != len(ref_rows):
+        print(f"FAIL {len(rows)} rows, reference has {len(ref_rows)}")
+        return 1
+    scales = [max(abs(r[j]) for r in ref_rows) or 1.0 for j in range(len(ref_header))]
+    for i, (row, ref_row, txt_row) in enumerate(zip(rows, ref_rows, txt_rows)):
+        for j, (x, y, z) in enumerate(zip(row, ref_row, txt_row)):
+            if abs(x - y) > RTOL * max(abs(y), scales[j] * 1e-3):
+                print(f"FAIL row {i + 1}, {header[j]}: {x!r} vs reference {y!r}")
+                failures += 1
+            if abs(x - z) > 1e-15 * max(abs(x), 1e-300):
+                print(f"FAIL row {i + 1}, {header[j]}: text table {z!r} vs CSV {x!r}")
+                failures += 1
+            if failures > 10:
+                break
+    checked = len(rows) * len(ref_header)
+    print(f"{checked - failures} passed, {failures} failed")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
