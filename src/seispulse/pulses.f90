@@ -511,9 +511,7 @@ contains
         real(dp), intent(in) :: beta  !! shape parameter
         logical, intent(in) :: full   !! full cycle
         type(pulse_t) :: p
-        p%kind = PULSE_EXPONENTIAL
-        p%amp = amp
-        p%duration = td
+        p = timed_pulse(PULSE_EXPONENTIAL, amp, td)
         p%beta = beta
         p%full = full
     end function exponential_pulse
@@ -523,9 +521,7 @@ contains
         real(dp), intent(in) :: amp       !! peak acceleration (m/s^2)
         real(dp), intent(in) :: duration  !! pulse length T (s)
         type(pulse_t) :: p
-        p%kind = PULSE_HALF_SINE
-        p%amp = amp
-        p%duration = duration
+        p = timed_pulse(PULSE_HALF_SINE, amp, duration)
     end function half_sine_pulse
 
     !> One-cycle sine acceleration pulse a = A sin(2 pi t/T_p) on [0, T_p).
@@ -533,9 +529,7 @@ contains
         real(dp), intent(in) :: amp     !! peak acceleration (m/s^2)
         real(dp), intent(in) :: period  !! T_p (s)
         type(pulse_t) :: p
-        p%kind = PULSE_SINE_CYCLE
-        p%amp = amp
-        p%duration = period
+        p = timed_pulse(PULSE_SINE_CYCLE, amp, period)
     end function sine_cycle_pulse
 
     !> One-cycle cosine acceleration pulse a = A cos(2 pi t/T_p) on [0, T_p).
@@ -543,9 +537,7 @@ contains
         real(dp), intent(in) :: amp     !! peak acceleration (m/s^2)
         real(dp), intent(in) :: period  !! T_p (s)
         type(pulse_t) :: p
-        p%kind = PULSE_COSINE_CYCLE
-        p%amp = amp
-        p%duration = period
+        p = timed_pulse(PULSE_COSINE_CYCLE, amp, period)
     end function cosine_cycle_pulse
 
     !> Rectangular acceleration pulse a = A on [0, T).
@@ -553,9 +545,7 @@ contains
         real(dp), intent(in) :: amp       !! acceleration (m/s^2)
         real(dp), intent(in) :: duration  !! T (s)
         type(pulse_t) :: p
-        p%kind = PULSE_RECTANGULAR
-        p%amp = amp
-        p%duration = duration
+        p = timed_pulse(PULSE_RECTANGULAR, amp, duration)
     end function rectangular_pulse
 
     !> Triangular acceleration pulse: 0 at t = 0, A at t = r T, 0 at t = T.
@@ -564,11 +554,19 @@ contains
         real(dp), intent(in) :: duration   !! T (s)
         real(dp), intent(in) :: peak_frac  !! r in [0, 1]
         type(pulse_t) :: p
-        p%kind = PULSE_TRIANGULAR
-        p%amp = amp
-        p%duration = duration
+        p = timed_pulse(PULSE_TRIANGULAR, amp, duration)
         p%peak_frac = peak_frac
     end function triangular_pulse
+
+    !> A pulse described by its kind, amplitude and duration only.
+    pure function timed_pulse(kind, amp, duration) result(p)
+        integer, intent(in) :: kind
+        real(dp), intent(in) :: amp, duration
+        type(pulse_t) :: p
+        p%kind = kind
+        p%amp = amp
+        p%duration = duration
+    end function timed_pulse
 
     !> Ricker wavelet of peak acceleration a_p at t0 and dominant frequency f_p.
     pure function ricker_pulse(amp, freq, t0) result(p)
