@@ -441,9 +441,15 @@ contains
         x = tau - tau0
         w = pi * pi * x * x
         e0 = exp(-pi * pi * tau0 * tau0)
-        a = (1.0_dp - 2.0_dp * w) * exp(-w)
-        ! v = [x e^(-pi^2 x^2)] from -tau0 to x
-        v = x * exp(-w) + tau0 * e0
+        if (w < 750.0_dp) then
+            a = (1.0_dp - 2.0_dp * w) * exp(-w)
+            ! v = [x e^(-pi^2 x^2)] from -tau0 to x
+            v = x * exp(-w) + tau0 * e0
+        else
+            ! e^(-w) underflows: the wavelet is over (and w may be +inf: no inf * 0)
+            a = 0.0_dp
+            v = tau0 * e0
+        end if
         ! d = (e0 - e^(-w))/(2 pi^2) + tau0 e0 tau, with w - pi^2 tau0^2 = pi^2 tau (tau - 2 tau0)
         z = pi * pi * tau * (tau - 2.0_dp * tau0)
         if (abs(z) < 1.0_dp) then
@@ -686,6 +692,7 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         type(exp_consts_t) :: c
+        real(dp) :: t_end
         integer :: i
         if (size(a) /= size(t) .or. size(v) /= size(t) .or. size(d) /= size(t)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
@@ -696,15 +703,11 @@ contains
         if (stat /= SEISPULSE_SUCCESS) return
         call check_times(t, 't', stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (p%kind == PULSE_EXPONENTIAL) then
-            c = exp_consts(p%beta)   ! once for the whole array
-            do i = 1, size(t)
-                call exp_eval(c, t(i) / p%duration, p%full, a(i), v(i), d(i))
-            end do
-            call scale_to_si(p, a, v, d)
-        else
-            call pulse_at(p, t, a, v, d)
-        end if
+        if (p%kind == PULSE_EXPONENTIAL) c = exp_consts(p%beta)   ! once for the array
+        t_end = pulse_end_time(p)
+        do i = 1, size(t)
+            call pulse_point(p, c, t_end, t(i), a(i), v(i), d(i))
+        end do
     end subroutine pulse_eval
 
     !> Pulse at time t (s), unchecked: for integrators that have validated `p` once.
@@ -714,6 +717,40 @@ contains
         real(dp), intent(out) :: a      !! acceleration (m/s^2)
         real(dp), intent(out) :: v      !! velocity (m/s)
         real(dp), intent(out) :: d      !! displacement (m)
+        type(exp_consts_t) :: c
+        if (p%kind == PULSE_EXPONENTIAL) c = exp_consts(p%beta)
+        call pulse_point(p, c, pulse_end_time(p), t, a, v, d)
+    end subroutine pulse_at
+
+    !> One point in SI. Before t = 0 the ground is at rest (tested on t itself: a tiny
+    !> t/T rounds to -0). After the end of the pulse the ground moves at the constant
+    !> velocity it ended with, d = d_end + v_end (t - t_end), so t/T never has to be
+    !> formed beyond ~2 and no time scale can overflow it.
+    elemental subroutine pulse_point(p, c, t_end, t, a, v, d)
+        type(pulse_t), intent(in) :: p
+        type(exp_consts_t), intent(in) :: c   !! exponential constants (other kinds: unused)
+        real(dp), intent(in) :: t_end         !! pulse_end_time(p)
+        real(dp), intent(in) :: t
+        real(dp), intent(out) :: a, v, d
+        if (t < 0.0_dp) then
+            a = 0.0_dp
+            v = 0.0_dp
+            d = 0.0_dp
+        else if (t > t_end) then
+            call pulse_core(p, c, t_end, a, v, d)
+            a = 0.0_dp
+            d = d + v * (t - t_end)
+        else
+            call pulse_core(p, c, t, a, v, d)
+        end if
+    end subroutine pulse_point
+
+    !> The closed forms of each kind, scaled to SI.
+    elemental subroutine pulse_core(p, c, t, a, v, d)
+        type(pulse_t), intent(in) :: p
+        type(exp_consts_t), intent(in) :: c
+        real(dp), intent(in) :: t
+        real(dp), intent(out) :: a, v, d
         real(dp) :: tau
         select case (p%kind)
         case (PULSE_RICKER)
@@ -724,7 +761,7 @@ contains
             tau = t / p%duration
             select case (p%kind)
             case (PULSE_EXPONENTIAL)
-                call exp_pulse_point(tau, p%beta, p%full, a, v, d)
+                call exp_eval(c, tau, p%full, a, v, d)
             case (PULSE_HALF_SINE)
                 call half_sine_eval(tau, a, v, d)
             case (PULSE_SINE_CYCLE)
@@ -742,7 +779,7 @@ contains
             end select
         end select
         call scale_to_si(p, a, v, d)
-    end subroutine pulse_at
+    end subroutine pulse_core
 
     !> From the dimensionless core to SI: a in A, v in A T, d in A T^2 (T the time scale;
     !> M&P: v in A, a in A f_p, d in A/f_p).
@@ -761,9 +798,11 @@ contains
             else
                 ts = p%duration
             end if
+            ! scale the dimensionless value first: amp * ts * ts alone can over- or
+            ! underflow for extreme time scales while the product is representable
             a = p%amp * a
-            v = p%amp * ts * v
-            d = p%amp * ts * ts * d
+            v = p%amp * (ts * v)
+            d = p%amp * (ts * (ts * d))
         end select
     end subroutine scale_to_si
 

@@ -31,7 +31,9 @@ def read_txt(path):
 
 
 def main():
-    driver, case, ref = sys.argv[1], Path(sys.argv[2]), Path(sys.argv[3])
+    # meson may pass the driver relative to the build dir; the run happens elsewhere
+    driver = str(Path(sys.argv[1]).resolve())
+    case, ref = Path(sys.argv[2]), Path(sys.argv[3])
     ref_header, ref_rows = read_csv(ref)
     with tempfile.TemporaryDirectory() as scratch:
         shutil.copy(case, scratch)

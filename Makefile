@@ -1,0 +1,125 @@
+# seispulse: quick start is `make run` and `make test` (see `make help`).
+#
+# deps   system packages (apt: gfortran liblapack-dev pkg-config; python3-dev python3-venv
+#        for Debian's own python only) and a virtual environment .venv with the Python tools
+# build  meson setup + compile in build/ (the f2py extension is built with .venv's python)
+# run    build, then the batch driver on input/example.nml (tables go under out/)
+# test   everything: meson suites, a -fcheck=all/-ffpe-trap build, install and pip checks
+#
+# Variables: PYTHON (interpreter the venv is made from, default python3), BUILDDIR (build).
+
+SHELL := /bin/bash
+.SHELLFLAGS := -eu -o pipefail -c
+.DEFAULT_GOAL := help
+.DELETE_ON_ERROR:
+
+PYTHON   ?= python3
+BUILDDIR ?= build
+VENV     := .venv
+VENV_BIN := $(CURDIR)/$(VENV)/bin
+VENV_PY  := $(VENV_BIN)/python
+STAMP    := $(VENV)/.seispulse-deps
+PIP_PKGS := 'numpy>=1.24' meson meson-python ninja pytest mpmath
+# meson and ninja from the venv (ninja is found on PATH)
+MESON    := PATH="$(VENV_BIN):$$PATH" $(VENV_BIN)/meson
+DRIVER   := $(BUILDDIR)/driver/seispulse
+EXAMPLE  := input/example.nml
+
+.PHONY: help deps sysdeps venv build run test clean
+
+help:
+	@echo 'seispulse make targets:'
+	@echo '  make run     build, then run the driver on $(EXAMPLE) (tables go under out/)'
+	@echo '  make test    build and run every test suite; last line "N passed, N failed"'
+	@echo '  make build   configure ($(BUILDDIR)/, meson) and compile only'
+	@echo '  make deps    install system packages if missing and the .venv Python tools'
+	@echo '  make clean   remove build directories (keeps .venv)'
+	@echo 'Variables: PYTHON=$(PYTHON) (interpreter for .venv)'
+
+deps: sysdeps $(STAMP)
+
+# System packages. Cheap checks; apt-get only runs when something is missing.
+# Python headers and venv support come from apt only for Debian's own /usr python; any
+# other interpreter (pyenv, conda, uv, ...) ships its own.
+PY_HAS_HEADERS := import os, sys, sysconfig; \
+    sys.exit(not os.path.isfile(os.path.join(sysconfig.get_paths()["include"], "Python.h")))
+PY_HAS_VENV    := import venv, ensurepip
+PY_IS_DEBIAN   := import sys; sys.exit(not sys.base_prefix == "/usr")
+
+sysdeps:
+	@command -v $(PYTHON) >/dev/null 2>&1 || { \
+	    echo "error: '$(PYTHON)' not found; install Python 3 (apt-get install python3) or set PYTHON=..." >&2; \
+	    exit 1; }; \
+	pkgs=""; missing=""; \
+	for p in gfortran gcc pkg-config; do \
+	    command -v $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -z "$$missing" ] && ! pkg-config --exists lapack; then missing=" lapack.pc"; fi; \
+	[ -z "$$missing" ] || pkgs=" gfortran liblapack-dev pkg-config"; \
+	pylack=""; pypkgs=""; \
+	$(PYTHON) -c '$(PY_HAS_HEADERS)' || { pylack="$$pylack Python.h"; pypkgs="$$pypkgs python3-dev"; }; \
+	if ! $(VENV)/bin/python -c '' >/dev/null 2>&1 && ! $(PYTHON) -c '$(PY_HAS_VENV)' >/dev/null 2>&1; then \
+	    pylack="$$pylack venv/ensurepip"; pypkgs="$$pypkgs python3-venv"; fi; \
+	if [ -n "$$pylack" ]; then \
+	    if [ -f /etc/debian_version ] && $(PYTHON) -c '$(PY_IS_DEBIAN)'; then \
+	        pkgs="$$pkgs$$pypkgs"; missing="$$missing$$pylack"; \
+	    else \
+	        echo "error: $$($(PYTHON) -c 'import sys; print(sys.executable)') lacks:$$pylack;" \
+	             "install them for that interpreter, or use another one: make PYTHON=..." >&2; \
+	        exit 1; \
+	    fi; \
+	fi; \
+	[ -n "$$pkgs" ] || exit 0; \
+	echo "deps: missing$$missing -> apt-get install$$pkgs"; \
+	if ! command -v apt-get >/dev/null 2>&1; then \
+	    echo "error: no apt-get here; install gfortran, LAPACK (with lapack.pc), pkg-config" \
+	         "and the Python headers yourself" >&2; \
+	    exit 1; fi; \
+	if [ "$$(id -u)" = 0 ]; then sudo=""; \
+	elif command -v sudo >/dev/null 2>&1; then sudo="sudo"; \
+	else echo "error: need root or sudo to run: apt-get install$$pkgs" >&2; exit 1; fi; \
+	$$sudo env DEBIAN_FRONTEND=noninteractive apt-get update -q; \
+	$$sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -q $$pkgs; \
+	for p in gfortran gcc pkg-config; do \
+	    command -v $$p >/dev/null 2>&1 || { echo "error: $$p still missing after apt-get" >&2; exit 1; }; done; \
+	pkg-config --exists lapack || { echo "error: pkg-config finds no lapack after apt-get" >&2; exit 1; }; \
+	$(PYTHON) -c '$(PY_HAS_HEADERS)' || { echo "error: still no Python.h after apt-get" >&2; exit 1; }; \
+	$(VENV)/bin/python -c '' >/dev/null 2>&1 || $(PYTHON) -c '$(PY_HAS_VENV)' \
+	    || { echo "error: still no venv/ensurepip after apt-get" >&2; exit 1; }
+
+# Python tools in .venv, once (again when this Makefile changes). A broken venv (e.g. its
+# base interpreter is gone) is recreated.
+$(STAMP): Makefile | sysdeps
+	@if ! $(VENV)/bin/python -c 'import sys' >/dev/null 2>&1; then \
+	    echo "deps: creating $(VENV) with $(PYTHON)"; \
+	    rm -rf $(VENV); \
+	    $(PYTHON) -m venv $(VENV); \
+	fi
+	@echo "deps: pip install $(PIP_PKGS) into $(VENV)"
+	$(VENV_PY) -m pip install -q --disable-pip-version-check --upgrade pip
+	$(VENV_PY) -m pip install -q --disable-pip-version-check --upgrade $(PIP_PKGS)
+	@touch $@
+
+venv: $(STAMP)
+
+# Configure once; meson regenerates by itself when meson.build files change. A new venv
+# (newer stamp) reconfigures, so -Dpython always names this venv's interpreter.
+$(BUILDDIR)/build.ninja: $(STAMP)
+	@reconf=""; [ ! -f $(BUILDDIR)/meson-private/coredata.dat ] || reconf="--reconfigure"; \
+	echo "meson setup $$reconf $(BUILDDIR) -Dpython=$(VENV_PY)"; \
+	$(MESON) setup $$reconf $(BUILDDIR) -Dpython=$(VENV_PY)
+	@touch $@
+
+build: sysdeps $(BUILDDIR)/build.ninja
+	@echo "meson compile -C $(BUILDDIR)"
+	@$(MESON) compile -C $(BUILDDIR)
+
+run: build
+	$(abspath $(DRIVER)) $(EXAMPLE)
+
+# run_tests.py configures/compiles build/ itself, so that a compile error is one counted
+# failure and the other stages still run.
+test: deps
+	@$(VENV_PY) tools/run_tests.py --builddir $(BUILDDIR)
+
+clean:
+	rm -rf $(BUILDDIR) build-check build-install
