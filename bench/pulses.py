@@ -53,15 +53,18 @@ def main():
     parser.add_argument("--beta", type=float, default=-np.pi)
     args = parser.parse_args()
     tau = np.linspace(-0.1, 1.1, args.points)
-    # agreement first (the peer is accurate at moderate beta)
+    n = args.points
+    t_ours = median_time(lambda: pulse.exp_pulse(tau, args.beta), args.runs)
+    print(f"exponential pulse, beta = {args.beta:g}, {n:.0e} points, median of {args.runs} runs")
+    print(f"  seispulse.pulse.exp_pulse : {t_ours / n * 1e9:7.2f} ns/point  ({t_ours:.3f} s)")
+    if args.beta == 0.0 or not np.isfinite(args.beta):
+        print("  numpy printed forms (peer): undefined at this beta (0/0 or inf/inf)")
+        return
+    # agreement first (the peer is accurate at moderate beta only)
     ours = pulse.exp_pulse(tau[::1000], args.beta)
     peer = numpy_peer(tau[::1000], args.beta)
     worst = max(np.max(np.abs(x - y)) for x, y in zip(ours, peer))
-    t_ours = median_time(lambda: pulse.exp_pulse(tau, args.beta), args.runs)
     t_peer = median_time(lambda: numpy_peer(tau, args.beta), args.runs)
-    n = args.points
-    print(f"exponential pulse, beta = {args.beta:g}, {n:.0e} points, median of {args.runs} runs")
-    print(f"  seispulse.pulse.exp_pulse : {t_ours / n * 1e9:7.2f} ns/point  ({t_ours:.3f} s)")
     print(f"  numpy printed forms (peer): {t_peer / n * 1e9:7.2f} ns/point  ({t_peer:.3f} s)")
     print(f"  ratio seispulse / peer    : {t_ours / t_peer:7.3f}")
     print(f"  max |difference| on a subsample: {worst:.2e}")

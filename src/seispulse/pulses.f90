@@ -232,82 +232,73 @@ contains
         end if
     end function exp_consts
 
-    !> Evaluate the half or full cycle at tau.
+    !> Evaluate the half or full cycle at tau (sliding.md 2.5 in the phi_k form).
+    !> One routine, not one per phase: this is the hot loop of every pulse table.
     elemental subroutine exp_eval(c, tau, full, a, v, d)
         type(exp_consts_t), intent(in) :: c
         real(dp), intent(in) :: tau
         logical, intent(in) :: full
         real(dp), intent(out) :: a, v, d
-        real(dp) :: s
+        real(dp) :: s, r, x, p1, p2, p3, w
+        logical :: second_lobe, falling
         if (tau < 0.0_dp) then
             a = 0.0_dp
             v = 0.0_dp
             d = 0.0_dp
+            return
         else if (c%form == FORM_BOX) then
             call box_eval(tau, full, a, v, d)
-        else if (tau < 1.0_dp) then
-            call exp_lobe(c, tau, a, v, d)
-        else if (.not. full) then
+            return
+        else if (tau >= 1.0_dp .and. .not. full) then
             ! after a half cycle the ground keeps the velocity V_g
             a = 0.0_dp
             v = c%vg
             d = c%vg * (tau - 0.5_dp)
-        else if (tau < 2.0_dp) then
-            ! negative lobe: a(tau) = -a(2 - tau), v(tau) = v(2 - tau),
-            ! d(tau) = V_g - d(2 - tau); exact because the full cycle is odd about tau = 1
-            s = 2.0_dp - tau
-            call exp_lobe(c, s, a, v, d)
-            a = -a
-            d = c%vg - d
-        else
+            return
+        else if (tau >= 2.0_dp) then
             a = 0.0_dp
             v = 0.0_dp
             d = c%vg
+            return
         end if
-    end subroutine exp_eval
-
-    !> One positive lobe, 0 <= s <= 1 (sliding.md 2.5 in the phi_k form).
-    elemental subroutine exp_lobe(c, s, a, v, d)
-        type(exp_consts_t), intent(in) :: c
-        real(dp), intent(in) :: s
-        real(dp), intent(out) :: a, v, d
-        real(dp) :: r
+        ! negative lobe: a(tau) = -a(2 - tau), v(tau) = v(2 - tau), d(tau) = V_g - d(2 - tau),
+        ! exact because the full cycle is odd about tau = 1
+        second_lobe = tau > 1.0_dp
+        s = tau
+        if (second_lobe) s = 2.0_dp - tau
         if (c%form == FORM_SPIKE) then
             ! the limit beta -> +inf: a = 1 at the centre only, no area
             a = 0.0_dp
             if (.not. (abs(s - 0.5_dp) > 0.0_dp)) a = 1.0_dp
             v = 0.0_dp
             d = 0.0_dp
-        else if (s <= 0.5_dp) then
-            call exp_rise(c, s, a, v, d)
         else
-            ! falling half: mirror of the rising half about s = 1/2
-            r = 1.0_dp - s
-            call exp_rise(c, r, a, v, d)
-            v = c%vg - v
-            d = c%vg * (s - 0.5_dp) + d
+            ! rising half r = s <= 1/2, or the falling half mirrored about s = 1/2
+            falling = s > 0.5_dp
+            r = s
+            if (falling) r = 1.0_dp - s
+            x = 2.0_dp * c%beta * r
+            if (c%form == FORM_DIRECT) then
+                call exp_phis(x, p1, p2, p3)
+                w = 2.0_dp * r * c%inv_p1
+            else
+                ! phi_k(x)/phi_1(beta) = e^(x - beta) q_k(x)/q_1(beta), x - beta <= 0
+                call exp_phis_scaled(x, p1, p2, p3)
+                w = 2.0_dp * r * c%inv_p1 * exp(c%beta * (2.0_dp * r - 1.0_dp))
+            end if
+            a = w * p1
+            v = w * r * p2
+            d = w * r * r * p3
+            if (falling) then
+                v = c%vg - v
+                d = c%vg * (s - 0.5_dp) + d
+            end if
         end if
-    end subroutine exp_lobe
-
-    !> Rising half of a lobe, 0 <= s <= 1/2.
-    elemental subroutine exp_rise(c, s, a, v, d)
-        type(exp_consts_t), intent(in) :: c
-        real(dp), intent(in) :: s
-        real(dp), intent(out) :: a, v, d
-        real(dp) :: x, p1, p2, p3, w
-        x = 2.0_dp * c%beta * s
-        if (c%form == FORM_DIRECT) then
-            call exp_phis(x, p1, p2, p3)
-            w = 2.0_dp * s * c%inv_p1
-        else
-            ! phi_k(x)/phi_1(beta) = e^(x - beta) q_k(x)/q_1(beta), x - beta <= 0
-            call exp_phis_scaled(x, p1, p2, p3)
-            w = 2.0_dp * s * c%inv_p1 * exp(c%beta * (2.0_dp * s - 1.0_dp))
+        if (second_lobe) then
+            a = -a
+            d = c%vg - d
         end if
-        a = w * p1
-        v = w * s * p2
-        d = w * s * s * p3
-    end subroutine exp_rise
+    end subroutine exp_eval
 
     !> Box (beta = -inf, and the rectangular pulse): a = 1 on [0, 1), -1 on [1, 2).
     elemental subroutine box_eval(tau, full, a, v, d)
@@ -340,18 +331,15 @@ contains
     end subroutine box_eval
 
     ! ------------------------------------------------------------------------------
-    ! Classic pulses, dimensionless (tau = t/T, a in A, v in A T, d in A T^2)
+    ! Classic pulses, dimensionless (tau = t/T, a in A, v in A T, d in A T^2).
+    ! Reached through pulse_point only, so tau >= 0 (rest before t = 0 is handled there).
     ! ------------------------------------------------------------------------------
 
     !> a = sin(pi tau) on [0, 1): v = (1 - cos pi tau)/pi, d = (tau - sin(pi tau)/pi)/pi.
     elemental subroutine half_sine_eval(tau, a, v, d)
         real(dp), intent(in) :: tau
         real(dp), intent(out) :: a, v, d
-        if (tau < 0.0_dp) then
-            a = 0.0_dp
-            v = 0.0_dp
-            d = 0.0_dp
-        else if (tau < 1.0_dp) then
+        if (tau < 1.0_dp) then
             a = sin_pi(tau)
             v = 2.0_dp * sin_pi(0.5_dp * tau)**2 / pi
             d = tau_minus_sinpi(tau) / pi
@@ -367,11 +355,7 @@ contains
     elemental subroutine sine_cycle_eval(tau, a, v, d)
         real(dp), intent(in) :: tau
         real(dp), intent(out) :: a, v, d
-        if (tau < 0.0_dp) then
-            a = 0.0_dp
-            v = 0.0_dp
-            d = 0.0_dp
-        else if (tau < 1.0_dp) then
+        if (tau < 1.0_dp) then
             a = sin_pi(2.0_dp * tau)
             v = sin_pi(tau)**2 / pi
             d = tau_minus_sinpi(2.0_dp * tau) / (4.0_dp * pi)
@@ -387,7 +371,7 @@ contains
     elemental subroutine cosine_cycle_eval(tau, a, v, d)
         real(dp), intent(in) :: tau
         real(dp), intent(out) :: a, v, d
-        if (tau < 0.0_dp .or. tau >= 1.0_dp) then
+        if (tau >= 1.0_dp) then
             a = 0.0_dp
             v = 0.0_dp
             d = 0.0_dp
@@ -405,11 +389,7 @@ contains
         real(dp), intent(in) :: tau, r
         real(dp), intent(out) :: a, v, d
         real(dp) :: q, rr
-        if (tau < 0.0_dp) then
-            a = 0.0_dp
-            v = 0.0_dp
-            d = 0.0_dp
-        else if (tau < r) then
+        if (tau < r) then
             a = tau / r
             v = 0.5_dp * tau * tau / r
             d = tau**3 / (6.0_dp * r)
@@ -432,12 +412,6 @@ contains
         real(dp), intent(in) :: tau, tau0
         real(dp), intent(out) :: a, v, d
         real(dp) :: x, w, e0, z
-        if (tau < 0.0_dp) then
-            a = 0.0_dp
-            v = 0.0_dp
-            d = 0.0_dp
-            return
-        end if
         x = tau - tau0
         w = pi * pi * x * x
         e0 = exp(-pi * pi * tau0 * tau0)

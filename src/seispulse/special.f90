@@ -75,13 +75,11 @@ contains
         real(dp), intent(out) :: p3  !! (e^x - 1 - x - x^2/2)/x^3
         real(dp) :: r
         if (abs(x) < series_limit) then
+            ! backward recurrence phi_k = 1/k! + x phi_(k+1): at worst (x = -2) the sum
+            ! cancels to 1/3.6 of its terms, about 2 bits, and saves a call to exp
             p3 = chi_series(x)
             p2 = 0.5_dp + x * p3
-            if (abs(x) < 0.7_dp) then
-                p1 = 1.0_dp + x * p2          ! |x p2| < 0.3: no cancellation
-            else
-                p1 = (exp(x) - 1.0_dp) / x    ! e^x >= 2 or <= 1/2: at most 2 ulps
-            end if
+            p1 = 1.0_dp + x * p2
         else
             ! Forward recurrence phi_(k+1) = (phi_k - 1/k!)/x; for |x| >= 2 each step
             ! loses at most about 1.5 bits. exp(x) - 1 is as good as expm1 here and
