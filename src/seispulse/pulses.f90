@@ -685,6 +685,8 @@ contains
     end subroutine pulse_eval
 
     !> Pulse at time t (s), unchecked: for integrators that have validated `p` once.
+    !> Each call recomputes the beta constants of an exponential pulse (two exp calls);
+    !> for many times at once `pulse_eval` computes them once.
     elemental subroutine pulse_at(p, t, a, v, d)
         type(pulse_t), intent(in) :: p  !! a valid pulse
         real(dp), intent(in) :: t       !! time (s)

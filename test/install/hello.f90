@@ -15,7 +15,7 @@ program hello
     nfail = 0
     msg = ''
 
-    ! exponential pulse, beta = 0 (triangular-like limit): vg = 1/2, dg = vg/2
+    ! exponential pulse, beta = 0 (exactly the triangle): vg = 1/2, dg = vg/2
     call exp_pulse_peaks(0.0_dp, .false., vg, dg, stat, msg)
     call expect(stat == SEISPULSE_SUCCESS, 'exp_pulse_peaks: stat /= 0: '//trim(msg))
     call expect(vg == 0.5_dp, 'exp_pulse_peaks: vg /= 0.5')
