@@ -9,6 +9,7 @@ program seispulse_driver
     use driver_namelist_scan, only: nml_group, scan_file, lower
     use driver_input, only: find_group, check_keys, read_group, located, join
     use driver_pulse, only: run_pulse, pulse_groups
+    use driver_sliding, only: run_sliding, sliding_groups
     use driver_run_group, only: run_analysis, run_output, read_run, run_keys, write_run
     implicit none
 
@@ -20,7 +21,10 @@ program seispulse_driver
         end subroutine c_exit
     end interface
 
-    character(len=8), parameter :: analyses(1) = [character(len=8) :: 'pulse']
+    character(len=8), parameter :: analyses(2) = [character(len=8) :: 'pulse', 'sliding']
+    !> Every group of any analysis (besides run), for the first check.
+    character(len=8), parameter :: all_groups(5) = [character(len=8) :: 'pulse', 'time', &
+        'block', 'method', 'history']
 
     character(len=:), allocatable :: path, errmsg
     character(len=4096) :: arg
@@ -39,9 +43,9 @@ program seispulse_driver
 
     ! every group must be known and appear once
     do i = 1, size(groups)
-        if (groups(i)%name /= 'run' .and. .not. any(pulse_groups == groups(i)%name)) &
+        if (groups(i)%name /= 'run' .and. .not. any(all_groups == groups(i)%name)) &
             call fail(located(path, groups(i))//'unknown group (allowed: run, ' &
-                      //join(pulse_groups)//')')
+                      //join(all_groups)//')')
         do j = 1, i - 1
             if (groups(j)%name == groups(i)%name) &
                 call fail(located(path, groups(i))//'group given twice')
@@ -59,8 +63,13 @@ program seispulse_driver
 
     select case (lower(run_analysis()))
     case ('pulse')
+        call check_groups(pulse_groups)
         call write_run(output_unit)
         call run_pulse(path, groups, run_output(), stat, errmsg)
+    case ('sliding')
+        call check_groups(sliding_groups)
+        call write_run(output_unit)
+        call run_sliding(path, groups, run_output(), stat, errmsg)
     case ('')
         call fail(located(path, groups(irun))//'analysis: missing (allowed: '//join(analyses)//')')
     case default
@@ -71,6 +80,17 @@ program seispulse_driver
     call finish(0)
 
 contains
+
+    !> Every group but &run must belong to the analysis.
+    subroutine check_groups(allowed)
+        character(len=*), intent(in) :: allowed(:)
+        integer :: k
+        do k = 1, size(groups)
+            if (groups(k)%name /= 'run' .and. .not. any(allowed == groups(k)%name)) &
+                call fail(located(path, groups(k))//'not a group of analysis ''' &
+                          //lower(run_analysis())//''' (allowed: run, '//join(allowed)//')')
+        end do
+    end subroutine check_groups
 
     subroutine fail(message)
         character(len=*), intent(in) :: message

@@ -19,6 +19,20 @@ module seispulse
                                 PULSE_EXPONENTIAL, PULSE_HALF_SINE, PULSE_SINE_CYCLE, &
                                 PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
                                 PULSE_RICKER, PULSE_MP
+    use seispulse_stickslip, only: friction_t, slide_t, stickslip_result_t, friction_validate, &
+                                   stickslip_pulse, stickslip_record
+    use seispulse_sliding, only: half_cycle_t, full_cycle_t, block_t, yield_time, half_cycle, &
+                                 full_cycle, inclined_resistances, block_response, &
+                                 block_response_eta, half_cycle_integrated, &
+                                 full_cycle_integrated, summarize_slides, &
+                                 eta_critical, eta_critical_regression, &
+                                 full_cycle_peak_regression, rectangle_half, rectangle_full, &
+                                 triangle_half, spike_velocity_ratio, regime_name, mode_name, &
+                                 REGIME_NONE, REGIME_FORCED, REGIME_FREE, MODE_NO_SLIDING, &
+                                 MODE_UNILATERAL, MODE_STICK, MODE_SLIP, MODE_STUCK, &
+                                 MODE_REVERSE_ONLY
+    use seispulse_sliding_norm, only: characteristic_length, basic_lengths, &
+                                      table_1_2_exponents, table_1_3
     implicit none
     public
 

@@ -7,6 +7,8 @@ program tester
     use test_roots, only: collect_roots
     use test_lapack, only: collect_lapack
     use test_pulses, only: collect_pulses
+    use test_stickslip, only: collect_stickslip
+    use test_sliding, only: collect_sliding
     implicit none
     character(len=64) :: wanted
     integer :: npass, nfail, nrun
@@ -32,6 +34,14 @@ program tester
     if (selected('pulses')) then
         call collect_pulses(tests)
         call run_suite('pulses', tests, output_unit, npass, nfail)
+    end if
+    if (selected('stickslip')) then
+        call collect_stickslip(tests)
+        call run_suite('stickslip', tests, output_unit, npass, nfail)
+    end if
+    if (selected('sliding')) then
+        call collect_sliding(tests)
+        call run_suite('sliding', tests, output_unit, npass, nfail)
     end if
     if (nrun == 0) then
         write(error_unit, '(a)') 'unknown suite: '//trim(wanted)

@@ -92,3 +92,338 @@ subroutine sp_pulse_kind(name, kind, stat, errmsg)
     errmsg = ''
     call pulse_kind_from_name(name, kind, stat, errmsg)
 end subroutine sp_pulse_kind
+
+! ---------------------------------------------------------------------------------
+! Sliding block (seispulse_sliding); every array has length n (broadcast in Python)
+! ---------------------------------------------------------------------------------
+
+!> Onset time (Eq. 1.12, 1.34).
+subroutine sp_yield_time(n, eta, beta, sfac, tau_y, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_sliding, only: yield_time
+    implicit none
+    integer, intent(in) :: n
+    real(dp), intent(in) :: eta(n), beta(n), sfac(n)
+    real(dp), intent(out) :: tau_y(n)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    integer :: i
+    errmsg = ''
+    stat = SEISPULSE_SUCCESS
+    do i = 1, n
+        call yield_time(eta(i), beta(i), sfac(i), tau_y(i), stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+    end do
+end subroutine sp_yield_time
+
+!> Half-cycle response; regime codes as REGIME_*; method 0 closed forms, 1 integrator.
+subroutine sp_half_cycle(n, eta, beta, sfac, method, tau_y, tau_m, regime, um, dugm, vm, &
+                         stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_sliding, only: half_cycle, half_cycle_integrated, half_cycle_t
+    implicit none
+    integer, intent(in) :: n, method
+    real(dp), intent(in) :: eta(n), beta(n), sfac(n)
+    real(dp), intent(out) :: tau_y(n), tau_m(n), um(n), dugm(n), vm(n)
+    integer, intent(out) :: regime(n)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    type(half_cycle_t) :: r
+    integer :: i
+    errmsg = ''
+    stat = SEISPULSE_SUCCESS
+    do i = 1, n
+        if (method == 0) then
+            call half_cycle(eta(i), beta(i), sfac(i), r, stat, errmsg)
+        else
+            call half_cycle_integrated(eta(i), beta(i), sfac(i), r, stat, errmsg)
+        end if
+        if (stat /= SEISPULSE_SUCCESS) return
+        tau_y(i) = r%tau_y
+        tau_m(i) = r%tau_m
+        regime(i) = r%regime
+        um(i) = r%um
+        dugm(i) = r%dugm
+        vm(i) = r%vm
+    end do
+end subroutine sp_half_cycle
+
+!> Full-cycle response; mode codes as MODE_*; out(:, 1:9) = tau_y1, tau_m1, um1, tau_y2,
+!> tau_m2, um2, ures, vm1, vm2; method 0 closed forms, 1 integrator.
+subroutine sp_full_cycle(n, eta1, eta2, beta, sfac, static_reverse, method, mode, out, stat, &
+                         errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_sliding, only: full_cycle, full_cycle_integrated, full_cycle_t
+    implicit none
+    integer, intent(in) :: n, static_reverse, method
+    real(dp), intent(in) :: eta1(n), eta2(n), beta(n), sfac(n)
+    integer, intent(out) :: mode(n)
+    real(dp), intent(out) :: out(n, 9)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    type(full_cycle_t) :: r
+    integer :: i
+    errmsg = ''
+    stat = SEISPULSE_SUCCESS
+    do i = 1, n
+        if (method == 0) then
+            call full_cycle(eta1(i), eta2(i), beta(i), sfac(i), static_reverse /= 0, r, stat, &
+                            errmsg)
+        else
+            call full_cycle_integrated(eta1(i), eta2(i), beta(i), sfac(i), static_reverse /= 0, &
+                                       .true., r, stat, errmsg)
+        end if
+        if (stat /= SEISPULSE_SUCCESS) return
+        mode(i) = r%mode
+        out(i, :) = [r%tau_y1, r%tau_m1, r%um1, r%tau_y2, r%tau_m2, r%um2, r%ures, r%vm1, r%vm2]
+    end do
+end subroutine sp_full_cycle
+
+!> Resistances and along-plane factors on an incline (Eq. 1.31).
+subroutine sp_inclined(n, mu, ag, slope, xi, eta1, eta2, k1, k2, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_sliding, only: inclined_resistances
+    implicit none
+    integer, intent(in) :: n
+    real(dp), intent(in) :: mu(n), ag(n), slope(n), xi(n)
+    real(dp), intent(out) :: eta1(n), eta2(n), k1(n), k2(n)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    integer :: i
+    errmsg = ''
+    stat = SEISPULSE_SUCCESS
+    do i = 1, n
+        call inclined_resistances(mu(i), ag(i), slope(i), xi(i), eta1(i), eta2(i), k1(i), &
+                                  k2(i), stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+    end do
+end subroutine sp_inclined
+
+!> Stick/slip boundary: exact (method 0) or Eq. 1.22 (method 1).
+subroutine sp_eta_critical(n, beta, method, eta_cr, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_sliding, only: eta_critical, eta_critical_regression
+    implicit none
+    integer, intent(in) :: n, method
+    real(dp), intent(in) :: beta(n)
+    real(dp), intent(out) :: eta_cr(n)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    integer :: i
+    errmsg = ''
+    stat = SEISPULSE_SUCCESS
+    do i = 1, n
+        if (method == 0) then
+            call eta_critical(beta(i), eta_cr(i), stat, errmsg)
+            if (stat /= SEISPULSE_SUCCESS) return
+        else
+            eta_cr(i) = eta_critical_regression(beta(i))
+        end if
+    end do
+end subroutine sp_eta_critical
+
+!> Closed forms: which = 1 rectangle half (tau_m, um, um/dugm, vm), 2 rectangle full
+!> (tau_m1, um1, tau_m2, um2, ures), 3 triangle half (tau_y, tau_m, um, vm, regime),
+!> 4 spike (vm), 5 regression 1.30 (um/D_g; beta in out(:, 1) on entry). eta in (0, 1).
+subroutine sp_limit_form(n, which, eta, out)
+    use seispulse_kinds, only: dp
+    use seispulse_sliding, only: rectangle_half, rectangle_full, triangle_half, &
+                                 spike_velocity_ratio, full_cycle_peak_regression
+    implicit none
+    integer, intent(in) :: n, which
+    real(dp), intent(in) :: eta(n)
+    real(dp), intent(inout) :: out(n, 5)
+    integer :: regime(n)
+    select case (which)
+    case (1)
+        call rectangle_half(eta, out(:, 1), out(:, 2), out(:, 3), out(:, 4))
+    case (2)
+        call rectangle_full(eta, out(:, 1), out(:, 2), out(:, 3), out(:, 4), out(:, 5))
+    case (3)
+        call triangle_half(eta, out(:, 1), out(:, 2), out(:, 3), out(:, 4), regime)
+        out(:, 5) = real(regime, dp)
+    case (4)
+        out(:, 1) = spike_velocity_ratio(eta)
+    case default
+        out(:, 1) = full_cycle_peak_regression(eta, out(:, 1))
+    end select
+end subroutine sp_limit_form
+
+!> A block on an incline in SI; out(:, 1:12) = eta1, eta2, t_y1, t_m1, u_m1, t_y2, t_m2,
+!> u_m2, u_res, v_m1, v_m2, 0.
+subroutine sp_block(n, mu, ag, td, beta, full, slope, xi, sfac, static_reverse, along_plane, &
+                    g, mode, out, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_sliding, only: block_response, block_t
+    implicit none
+    integer, intent(in) :: n, full, static_reverse, along_plane
+    real(dp), intent(in) :: mu(n), ag(n), td(n), beta(n), slope(n), xi(n), sfac(n), g
+    integer, intent(out) :: mode(n)
+    real(dp), intent(out) :: out(n, 11)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    type(block_t) :: r
+    integer :: i
+    errmsg = ''
+    stat = SEISPULSE_SUCCESS
+    do i = 1, n
+        call block_response(mu(i), ag(i), td(i), beta(i), full /= 0, slope(i), xi(i), sfac(i), &
+                            static_reverse /= 0, along_plane /= 0, g, r, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        mode(i) = r%mode
+        out(i, :) = [r%eta1, r%eta2, r%t_y1, r%t_m1, r%u_m1, r%t_y2, r%t_m2, r%u_m2, r%u_res, &
+                     r%v_m1, r%v_m2]
+    end do
+end subroutine sp_block
+
+! ---------------------------------------------------------------------------------
+! Normalization of sliding displacements (seispulse_sliding_norm)
+! ---------------------------------------------------------------------------------
+
+!> D_c = A^a V^b D^c t^d per element.
+subroutine sp_characteristic_length(n, a, b, c, d, ag, vg, dg, td, dc, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_sliding_norm, only: characteristic_length
+    implicit none
+    integer, intent(in) :: n
+    real(dp), intent(in) :: a(n), b(n), c(n), d(n), ag(n), vg(n), dg(n), td(n)
+    real(dp), intent(out) :: dc(n)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    integer :: i
+    errmsg = ''
+    stat = SEISPULSE_SUCCESS
+    do i = 1, n
+        call characteristic_length(a(i), b(i), c(i), d(i), ag(i), vg(i), dg(i), td(i), dc(i), &
+                                   stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+    end do
+end subroutine sp_characteristic_length
+
+!> The six lengths of Eq. 1.28 per element.
+subroutine sp_basic_lengths(n, ag, vg, dg, td, lengths, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_sliding_norm, only: basic_lengths
+    implicit none
+    integer, intent(in) :: n
+    real(dp), intent(in) :: ag(n), vg(n), dg(n), td(n)
+    real(dp), intent(out) :: lengths(n, 6)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    integer :: i
+    errmsg = ''
+    stat = SEISPULSE_SUCCESS
+    do i = 1, n
+        call basic_lengths(ag(i), vg(i), dg(i), td(i), lengths(i, :), stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+    end do
+end subroutine sp_basic_lengths
+
+!> Exponents (a, b, c, d) of every cell of Table 1.2 `table` for the given row and
+!> column values.
+subroutine sp_table_1_2(table, nr, rows, nc, cols, exps, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_sliding_norm, only: table_1_2_exponents
+    implicit none
+    character(len=*), intent(in) :: table
+    integer, intent(in) :: nr, nc
+    real(dp), intent(in) :: rows(nr), cols(nc)
+    real(dp), intent(out) :: exps(nr, nc, 4)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    integer :: i, j
+    errmsg = ''
+    stat = SEISPULSE_SUCCESS
+    exps = 0.0_dp
+    do j = 1, nc
+        do i = 1, nr
+            call table_1_2_exponents(table, rows(i), cols(j), exps(i, j, 1), exps(i, j, 2), &
+                                     exps(i, j, 3), exps(i, j, 4), stat, errmsg)
+            if (stat /= SEISPULSE_SUCCESS) return
+        end do
+    end do
+end subroutine sp_table_1_2
+
+!> Table 1.3 per beta.
+subroutine sp_table_1_3(n, beta, full, ratios, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_sliding_norm, only: table_1_3
+    implicit none
+    integer, intent(in) :: n, full
+    real(dp), intent(in) :: beta(n)
+    real(dp), intent(out) :: ratios(n, 6)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    integer :: i
+    errmsg = ''
+    stat = SEISPULSE_SUCCESS
+    do i = 1, n
+        call table_1_3(beta(i), full /= 0, ratios(i, :), stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+    end do
+end subroutine sp_table_1_3
+
+! ---------------------------------------------------------------------------------
+! Stick-slip integrator (seispulse_stickslip)
+! ---------------------------------------------------------------------------------
+
+!> One run under a pulse (kind > 0, params packed as in pulse_from_params) or a record
+!> (kind = 0: accel(nrec), dt). slides(nmax, 8) = direction, t_start, t_stop, u_start,
+!> u_stop, w_peak, t_peak, from_slip for the first min(nslides, nmax) slides; summary =
+!> u_final, u_max, u_min, t_end; u, w at the times tg when ngrid > 0.
+subroutine sp_stickslip(kind, params, nrec, accel, dt, ay_fwd, ay_rev, sfac, static_all, &
+                        ngrid, tg, ug, wg, nmax, slides, nslides, summary, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_pulses, only: pulse_from_params
+    use seispulse_stickslip, only: friction_t, stickslip_result_t, stickslip_pulse, &
+                                   stickslip_record
+    implicit none
+    integer, intent(in) :: kind, nrec, static_all, ngrid, nmax
+    real(dp), intent(in) :: params(9), accel(nrec), dt, ay_fwd, ay_rev, sfac, tg(ngrid)
+    real(dp), intent(out) :: ug(ngrid), wg(ngrid), slides(nmax, 8), summary(4)
+    integer, intent(out) :: nslides, stat
+    character(len=256), intent(out) :: errmsg
+    type(friction_t) :: fr
+    type(stickslip_result_t) :: res
+    integer :: i
+    errmsg = ''
+    slides = 0.0_dp
+    summary = 0.0_dp
+    ug = 0.0_dp
+    wg = 0.0_dp
+    nslides = 0
+    fr = friction_t(ay_fwd=ay_fwd, ay_rev=ay_rev, static_factor=sfac, static_all=static_all /= 0)
+    if (kind > 0) then
+        if (ngrid > 0) then
+            call stickslip_pulse(pulse_from_params(kind, params), fr, res, stat, errmsg, tg, ug, wg)
+        else
+            call stickslip_pulse(pulse_from_params(kind, params), fr, res, stat, errmsg)
+        end if
+    else
+        if (ngrid > 0) then
+            call stickslip_record(accel, dt, fr, res, stat, errmsg, tg, ug, wg)
+        else
+            call stickslip_record(accel, dt, fr, res, stat, errmsg)
+        end if
+    end if
+    if (stat /= SEISPULSE_SUCCESS) return
+    nslides = size(res%slides)
+    do i = 1, min(nslides, nmax)
+        associate (s => res%slides(i))
+            slides(i, :) = [real(s%direction, dp), s%t_start, s%t_stop, s%u_start, s%u_stop, &
+                            s%w_peak, s%t_peak, merge(1.0_dp, 0.0_dp, s%from_slip)]
+        end associate
+    end do
+    summary = [res%u_final, res%u_max, res%u_min, res%t_end]
+end subroutine sp_stickslip

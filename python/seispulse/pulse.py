@@ -28,10 +28,10 @@ from ._seispulse import (sp_exp_pulse, sp_exp_pulse_impulse_amplitude, sp_exp_pu
                          sp_pulse_eval, sp_pulse_kind)
 from .errors import InvalidInputError
 
-__all__ = ["PulseHistory", "PulsePeaks", "STANDARD_GRAVITY", "KINDS", "exp_pulse",
+__all__ = ["PulseHistory", "PulsePeaks", "Pulse", "STANDARD_GRAVITY", "KINDS", "exp_pulse",
            "exp_pulse_peaks", "exp_pulse_impulse_amplitude", "exponential", "half_sine",
            "sine_cycle", "cosine_cycle", "rectangular", "triangular", "ricker",
-           "mavroeidis_papageorgiou", "evaluate"]
+           "mavroeidis_papageorgiou", "evaluate", "define"]
 
 #: Standard gravity (m/s^2), the default ``g`` for amplitudes given in g.
 STANDARD_GRAVITY = 9.80665
@@ -50,6 +50,13 @@ d / (A_g t_d^2)."""
 PulsePeaks = namedtuple("PulsePeaks", ["vg", "dg"])
 PulsePeaks.__doc__ = """Peaks of the exponential pulse: vg = V_g / (A_g t_d),
 dg = D_g / (A_g t_d^2)."""
+
+Pulse = namedtuple("Pulse", ["kind", "code", "params"])
+Pulse.__doc__ = """A validated pulse to hand to other modules (:func:`define`): its kind
+name, the Fortran kind code and the packed SI parameter vector of pulse_from_params."""
+
+# Passed as t by define(): _evaluate then returns the packed pulse instead of values.
+_DEFINE = object()
 
 # Order of the packed parameter vector of Fortran pulse_from_params.
 _PARAM_ORDER = ("amp", "duration", "beta", "full", "peak_frac", "freq", "t0", "gamma",
@@ -130,6 +137,8 @@ def _evaluate(kind, t, rename=None, **params):
     """Broadcast t and the parameters, pack them and call the Fortran evaluator."""
     code, stat, msg = sp_pulse_kind(kind)
     _core.raise_for_status(stat, msg)
+    if t is _DEFINE:
+        return _define(kind, code, rename, params)
     shape, arr = _core.broadcast(t=t, **params)
     values = {name: arr.get(name, np.float64(_PARAM_DEFAULTS[name])) for name in _PARAM_ORDER}
     if all(np.size(values[name]) == 1 for name in _PARAM_ORDER):
@@ -233,6 +242,20 @@ def mavroeidis_papageorgiou(t, vamp, freq, gamma, nu_deg=0.0, t0=None):
                      nu_deg=nu_deg, t0=t0, rename={"amp": "vamp"})
 
 
+def _define(kind, code, rename, params):
+    """The packed, validated parameters of one pulse (scalars only)."""
+    values = {name: _core.as_float_array(name, params.get(name, _PARAM_DEFAULTS[name]))
+              for name in _PARAM_ORDER}
+    for name, value in values.items():
+        if value.size != 1:
+            shown = (rename or {}).get(name, name)
+            raise InvalidInputError(f"{shown}: define() takes one value per parameter")
+    packed = np.array([[float(values[n].reshape(-1)[0]) for n in _PARAM_ORDER]], order="F")
+    *_, stat, msg = sp_pulse_eval(code, np.zeros(1), packed)   # validates
+    _core.raise_for_status(stat, msg, rename)
+    return Pulse(kind, int(code), packed[0].copy())
+
+
 _BY_NAME = {
     "exponential": exponential, "exp": exponential,
     "half_sine": half_sine,
@@ -243,6 +266,20 @@ _BY_NAME = {
     "ricker": ricker,
     "mavroeidis_papageorgiou": mavroeidis_papageorgiou, "mp": mavroeidis_papageorgiou,
 }
+
+
+def define(kind, **params):
+    """A pulse, validated, to pass to other modules (e.g.
+    :func:`seispulse.sliding.simulate`): ``define('half_sine', amp=0.3, amp_unit='g',
+    duration=0.8)`` takes the keyword parameters of the pulse's function, scalars only.
+    Returns :class:`Pulse`."""
+    if not isinstance(kind, str) or kind.strip().lower() not in _BY_NAME:
+        raise InvalidInputError(
+            f"kind = {kind!r}: unknown pulse (allowed: {', '.join(KINDS)})")
+    try:
+        return _BY_NAME[kind.strip().lower()](_DEFINE, **params)
+    except TypeError as exc:
+        raise InvalidInputError(f"{kind}: {exc}") from exc
 
 
 def evaluate(kind, t, **params):

@@ -31,6 +31,8 @@ module seispulse_pulses
 
     ! dimensionless exponential pulse
     public :: exp_pulse, exp_pulse_point, exp_pulse_peaks, exp_pulse_impulse_amplitude
+    ! the same, unchecked, with the beta constants computed once (for solvers)
+    public :: exp_consts_t, exp_consts, exp_eval, check_beta
     ! SI pulses of every kind
     public :: pulse_t, pulse_validate, pulse_eval, pulse_at, pulse_breaks, pulse_end_time
     public :: pulse_kind_from_name, pulse_kind_name
@@ -883,10 +885,11 @@ contains
         end do
     end function kind_list
 
+    !> beta of the exponential pulse: any real number or +-inf, not NaN.
     subroutine check_beta(beta, stat, errmsg)
-        real(dp), intent(in) :: beta
-        integer, intent(out) :: stat
-        character(len=*), intent(inout), optional :: errmsg
+        real(dp), intent(in) :: beta                          !! pulse shape
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         stat = SEISPULSE_SUCCESS
         if (ieee_is_nan(beta)) call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
             'beta = NaN: must be a real number or +-inf (-inf box, 0 triangle, +inf spike)')

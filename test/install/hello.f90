@@ -3,11 +3,13 @@
 !> one line per failed check and `error stop 1`.
 program hello
     use seispulse, only: dp, SEISPULSE_SUCCESS, exp_pulse_peaks, half_sine_pulse, pulse_t, &
-                         pulse_eval, solve_linear
+                         pulse_eval, solve_linear, half_cycle, half_cycle_t
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_negative_inf
     implicit none
 
     real(dp), parameter :: pi = 3.14159265358979323846264338327950288_dp
     type(pulse_t) :: p
+    type(half_cycle_t) :: h
     real(dp) :: vg, dg, t(1), a(1), v(1), d(1), m(2, 2), b(2), x(2)
     integer :: stat, nfail
     character(len=200) :: msg
@@ -20,6 +22,11 @@ program hello
     call expect(stat == SEISPULSE_SUCCESS, 'exp_pulse_peaks: stat /= 0: '//trim(msg))
     call expect(vg == 0.5_dp, 'exp_pulse_peaks: vg /= 0.5')
     call expect(abs(dg - 0.25_dp) <= 1.0e-15_dp, 'exp_pulse_peaks: dg /= 0.25')
+
+    ! sliding block under the rectangular half cycle: u_m = (1 - eta)/(2 eta) (Newmark)
+    call half_cycle(0.25_dp, ieee_value(1.0_dp, ieee_negative_inf), 1.0_dp, h, stat, msg)
+    call expect(stat == SEISPULSE_SUCCESS, 'half_cycle: stat /= 0: '//trim(msg))
+    call expect(abs(h%um - 1.5_dp) <= 1.0e-15_dp, 'half_cycle: um /= 1.5')
 
     ! half-sine pulse, amplitude 1, duration 1: v(1) = 2/pi
     p = half_sine_pulse(1.0_dp, 1.0_dp)

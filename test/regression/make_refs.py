@@ -1,14 +1,29 @@
 #!/usr/bin/env python3
 """Write the driver regression references <case>.ref from <case>.nml, computed
-independently with the mpmath pulse references in test/python/pulse_reference.py.
+independently with the mpmath pulse references in test/python/pulse_reference.py
+(analysis 'pulse') or with the closed forms of the limit shapes (analysis 'sliding').
 
-usage: make_refs.py [CASE.nml ...]   (default: pulse_exponential.nml pulse_classic.nml
-                                      next to this script)
+usage: make_refs.py [CASE.nml ...]   (default: every *.nml next to this script)
 
+Analysis 'pulse':
 The time grid follows the driver: t_i = t_start + dt * i in double precision, with
 npts = floor((t_end - t_start) / dt * (1 + 1e-12)) + 1 when dt is given, or
 dt = (t_end - t_start) / (npts - 1) when npts is given. Each row is evaluated at that
 exact double t in high precision and printed with repr(float(x)).
+
+Analysis 'sliding' (one row per friction value; never by running the driver): the
+pulse must be one of the shapes with a closed-form answer, written out below from
+sliding.md (mpmath, 40 digits):
+  * rectangle, full cycle: kind 'exponential' with beta = -inf, full = .true.
+    (sliding.md 5.5; the block always slips);
+  * rectangle, half cycle: kind 'rectangular', or 'exponential' with beta = -inf
+    (Newmark 1965, sliding.md 3.5 Eq. 1.10a);
+  * triangle, half cycle: kind 'triangular' with peak_frac = 0.5, or 'exponential' with
+    beta = 0 (sliding.md 3.5, the table of explicit triangle results; V_m/V_g = (1-eta)^2);
+and &block gives mu (mu_list; any slope_deg, xi_deg: Eq. 1.31 and the factors K of
+sliding.md 7.1) or eta1 (eta_list), with static_factor. Static friction only moves the
+onset: for the rectangle the onset stays at t = 0 (no sliding if static_factor eta >= 1);
+for the triangle these references support static_factor = 1 only.
 """
 import math
 import re
@@ -19,9 +34,12 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "python"))
 
 import pulse_reference as ref  # noqa: E402
-from mpmath import mpf  # noqa: E402
+from mpmath import mp, mpf  # noqa: E402
 
 HEADER = "t (s),a (m/s2),a (g),v (m/s),d (m)"
+SLIDING_HEADER = ("case (-),mu (-),eta1 (-),eta2 (-),mode (-),t_y1 (s),t_m1 (s),u_m1 (m),"
+                  "t_y2 (s),t_m2 (s),u_m2 (m),u_res (m),v_m1 (m/s),v_m2 (m/s)")
+MODES = ("no_sliding", "unilateral", "stick", "slip", "stuck", "reverse_only")
 
 _TOKEN = re.compile(r"""
     \s*(?:
@@ -30,6 +48,7 @@ _TOKEN = re.compile(r"""
     | (?P<key>\w+)\s*=
     | (?P<str>'[^']*'|"[^"]*")
     | (?P<logical>\.(?:true|false|t|f)\.)
+    | (?P<special>[-+]?(?:infinity|inf|nan)\b)
     | (?P<num>[-+]?(?:\d+\.?\d*|\.\d+)(?:[eEdD][-+]?\d+)?)
     | (?P<sep>,)
     )""", re.VERBOSE | re.IGNORECASE)
@@ -37,9 +56,11 @@ _TOKEN = re.compile(r"""
 
 def parse_namelist(text):
     """Minimal Fortran namelist reader: {group: {key: value}} (lower-case names;
-    scalar values only: strings, logicals, integers, reals)."""
+    strings, logicals, integers, reals including inf and nan; a key followed by several
+    values, "mu_list = 0.1, 0.2", gives a list)."""
     text = "\n".join(line.split("!", 1)[0] for line in text.splitlines())
     groups, group, key, pos = {}, None, None, 0
+    last = None        # the key of the last value, for list continuations
     while pos < len(text):
         if text[pos:].strip() == "":
             break
@@ -51,27 +72,36 @@ def parse_namelist(text):
         tok = m.group(kind)
         if kind == "group":
             group = groups.setdefault(tok[1:].lower(), {})
+            last = None
         elif kind == "end":
-            group, key = None, None
+            group, key, last = None, None, None
         elif kind == "key":
             if group is None:
                 raise ValueError(f"key {tok!r} outside a group")
             key = tok.lower()
+            last = None
         elif kind == "sep":
             continue
         else:
-            if group is None or key is None:
+            if group is None or (key is None and last is None):
                 raise ValueError(f"value {tok!r} without a key")
             if kind == "str":
                 value = tok[1:-1]
             elif kind == "logical":
                 value = tok.lower() in (".true.", ".t.")
+            elif kind == "special":
+                value = float(tok)
             elif re.fullmatch(r"[-+]?\d+", tok):
                 value = int(tok)
             else:
                 value = float(tok.replace("d", "e").replace("D", "e"))
-            group[key] = value
-            key = None
+            if key is None:             # a further value of the last key: a list
+                if not isinstance(group[last], list):
+                    group[last] = [group[last]]
+                group[last].append(value)
+            else:
+                group[key] = value
+                last, key = key, None
     return groups
 
 
@@ -127,8 +157,144 @@ def pulse_function(pgroup):
     return (lambda t: func(t, amp, amp_unit=amp_unit, g=g, **kw)), g
 
 
+# ---------------------------------------------------------------------------
+# Analysis 'sliding': closed forms of the limit shapes, written from sliding.md
+# ---------------------------------------------------------------------------
+
+def _as_list(x):
+    return x if isinstance(x, list) else [x]
+
+
+def resistances(mu, ag_over_g, slope_deg, xi_deg):
+    """Eq. 1.31 and the along-plane factors of sliding.md 7.1, from the force balance:
+    eta1,2 = (mu/A_g)(cos lambda -+ sin lambda/mu)/K1,2, K1,2 = cos(lambda - xi) +- mu
+    sin(lambda - xi); eta = +inf where K <= 0."""
+    mu, lam = mpf(mu), mp.radians(mpf(slope_deg))
+    dl = lam - mp.radians(mpf(xi_deg))
+    if not mp.tan(lam) < mu:
+        raise ValueError("statically unstable slope: no reference")
+    k1 = mp.cos(dl) + mu * mp.sin(dl)
+    k2 = mp.cos(dl) - mu * mp.sin(dl)
+    eta = mu / mpf(ag_over_g)
+    eta1 = eta * (mp.cos(lam) - mp.sin(lam) / mu) / k1 if k1 > 0 else mp.inf
+    eta2 = eta * (mp.cos(lam) + mp.sin(lam) / mu) / k2 if k2 > 0 else mp.inf
+    return eta1, eta2, max(k1, mpf(0)), max(k2, mpf(0))
+
+
+def rectangle_full(eta):
+    """Box full cycle (sliding.md 5.5), dimensionless: the forward slide starts at 0 with
+    relative acceleration 1 - eta, runs to tau = 1 at speed 1 - eta, then decelerates at
+    1 + eta: stop tau_m1 = 1 + (1 - eta)/(1 + eta) = 2/(1 + eta), u_m1 = (1 - eta)/(1 + eta).
+    There a = -1 exceeds eta the other way: slip. The reverse slide accelerates at 1 - eta
+    up to tau = 2 (speed 2 eta (1 - eta)/(1 + eta)), then stops at rate eta:
+    tau_m2 = 4/(1 + eta), u_m2 = 2 eta (1 - eta)/(1 + eta)^2."""
+    q = (1 - eta) / (1 + eta)
+    return dict(mode=3, ty1=mpf(0), tm1=2 / (1 + eta), um1=q, vm1=1 - eta,
+                ty2=2 / (1 + eta), tm2=4 / (1 + eta), um2=2 * eta * q / (1 + eta),
+                vm2=2 * eta * q)
+
+
+def rectangle_half(eta):
+    """Box half cycle (Newmark; Eq. 1.10a with tau_y = 0): tau_m = 1/eta,
+    u_m = (1 - eta)/(2 eta), peak speed 1 - eta at tau = 1."""
+    return dict(mode=1, ty1=mpf(0), tm1=1 / eta, um1=(1 - eta) / (2 * eta), vm1=1 - eta)
+
+
+def triangle_half(eta):
+    """Symmetric triangle half cycle (sliding.md 3.5, explicit triangle results; lobe
+    area 1/2): tau_y = eta/2, V_m = (1 - eta)^2/2; free stop for eta <= 2 - sqrt 2."""
+    if eta <= 2 - mp.sqrt(2):
+        tm = (eta**2 + 2) / (4 * eta)
+        um = (12 - 24 * eta + 12 * eta**2 - eta**4) / (96 * eta)
+    else:
+        tm = 1 - eta / 2 + (1 - eta) / mp.sqrt(2)
+        um = (3 + 2 * mp.sqrt(2)) * (1 - eta)**3 / 12
+    return dict(mode=1, ty1=eta / 2, tm1=tm, um1=um, vm1=(1 - eta)**2 / 2)
+
+
+def sliding_shape(pgroup):
+    """(shape name, full, A (m/s2), A/g, T (s), g) of a &pulse group with a closed form."""
+    p = dict(pgroup)
+    kind = p.get("kind", "exponential").lower()
+    g = mpf(p.get("g", ref.G_STANDARD))
+    amp = mpf(p.get("amp", 1.0))
+    ag_over_g = amp if p.get("amp_unit", "m/s2") == "g" else amp / g
+    a = ag_over_g * g if p.get("amp_unit", "m/s2") == "g" else amp
+    td = mpf(p.get("duration", 1.0))
+    full = bool(p.get("full", False))
+    beta = p.get("beta", 0.0)
+    if kind == "rectangular" or (kind == "exponential" and beta == -math.inf):
+        shape = "rectangle"
+    elif (kind == "triangular" and p.get("peak_frac", 0.5) == 0.5) or \
+            (kind == "exponential" and beta == 0):
+        shape = "triangle"
+    else:
+        raise ValueError(f"no closed-form reference for &pulse {pgroup}")
+    if kind != "exponential":
+        full = False
+    if shape == "triangle" and full:
+        raise ValueError("no closed-form reference for the triangular full cycle")
+    return shape, full, a, ag_over_g, td, g
+
+
+def sliding_rows(nml):
+    shape, full, a, ag_over_g, td, g = sliding_shape(nml["pulse"])
+    b = nml["block"]
+    slope, xi = b.get("slope_deg", 0.0), b.get("xi_deg", 0.0)
+    static = mpf(b.get("static_factor", 1.0))
+    along = bool(b.get("along_plane", True))
+    if shape == "triangle" and static != 1:
+        raise ValueError("triangle references: static_factor = 1 only")
+    if "mu_list" in b or "mu" in b:
+        mus = _as_list(b.get("mu_list", b.get("mu")))
+        cases = []
+        for mu in mus:
+            eta1, eta2, k1, k2 = resistances(mu, ag_over_g, slope, xi)
+            if not along:
+                k1 = k2 = mpf(1)
+            cases.append((mpf(mu), eta1, eta2, k1, k2))
+    else:
+        etas = _as_list(b.get("eta_list", b.get("eta1")))
+        eta2s = [b.get("eta2", e) for e in etas] if "eta1" in b else etas
+        cases = [(mp.nan, mpf(e1), mpf(e2), mpf(1), mpf(1)) for e1, e2 in zip(etas, eta2s)]
+    rows = []
+    length, speed = a * td**2, a * td
+    for i, (mu, eta1, eta2, k1, k2) in enumerate(cases, start=1):
+        r = dict(mode=0, ty1=mp.nan, tm1=mp.nan, um1=mpf(0), vm1=mpf(0),
+                 ty2=mp.nan, tm2=mp.nan, um2=mpf(0), vm2=mpf(0))
+        if static * eta1 < 1:
+            if shape == "rectangle" and full:
+                if not eta2 == eta1:
+                    raise ValueError("rectangle full-cycle references: symmetric friction")
+                r.update(rectangle_full(eta1))
+            elif shape == "rectangle":
+                r.update(rectangle_half(eta1))
+            else:
+                r.update(triangle_half(eta1))
+        elif full and static * eta2 < 1:
+            raise ValueError("no reference for a reverse-only full cycle")
+        row = [mpf(i), mu, eta1, eta2, mpf(r["mode"]), r["ty1"] * td, r["tm1"] * td,
+               k1 * r["um1"] * length, r["ty2"] * td, r["tm2"] * td, k2 * r["um2"] * length,
+               (k1 * r["um1"] - k2 * r["um2"]) * length, k1 * r["vm1"] * speed,
+               k2 * r["vm2"] * speed]
+        rows.append(row)
+    return rows
+
+
+def make_sliding_ref(nml_path, nml):
+    with mp.workdps(40):
+        rows = sliding_rows(nml)
+        lines = [SLIDING_HEADER] + [",".join(repr(float(x)) for x in row) for row in rows]
+    out = Path(nml_path).with_suffix(".ref")
+    out.write_text("\n".join(lines) + "\n")
+    print(f"wrote {out} ({len(lines) - 1} rows)")
+
+
 def make_ref(nml_path):
     nml = parse_namelist(Path(nml_path).read_text())
+    if nml.get("run", {}).get("analysis", "pulse").lower() == "sliding":
+        make_sliding_ref(nml_path, nml)
+        return
     func, g = pulse_function(nml["pulse"])
     lines = [HEADER]
     for t in time_grid(nml["time"]):
@@ -141,7 +307,7 @@ def make_ref(nml_path):
 
 
 def main(argv):
-    cases = argv or [HERE / "pulse_exponential.nml", HERE / "pulse_classic.nml"]
+    cases = argv or sorted(HERE.glob("*.nml"))
     for case in cases:
         make_ref(case)
 

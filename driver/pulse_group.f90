@@ -1,0 +1,205 @@
+!> The &pulse group, shared by every analysis that drives something with one pulse
+!> ('pulse', 'sliding'): its keys, defaults, reading, validation and the pulse_t it
+!> builds. One code path, so that a pulse means the same in every analysis.
+module driver_pulse_group
+    use, intrinsic :: iso_fortran_env, only: error_unit
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
+                                             ieee_quiet_nan
+    use seispulse, only: dp, pulse_t, pulse_validate, pulse_kind_from_name, pulse_kind_name, &
+                         SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, PULSE_TRIANGULAR, &
+                         PULSE_RICKER, PULSE_MP
+    use driver_namelist_scan, only: nml_group, lower
+    use driver_input, only: find_group, check_keys, read_group, located
+    implicit none
+    private
+
+    public :: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, write_pulse_group
+    public :: finite_positive
+
+    !> Every key of &pulse.
+    character(len=12), parameter :: pulse_keys(13) = [character(len=12) :: 'kind', 'amp', &
+        'amp_unit', 'g', 'duration', 'beta', 'full', 'peak_frac', 'freq', 't0', 'gamma', &
+        'nu_deg', 'vamp']
+
+    !> What an analysis gets from &pulse.
+    type :: pulse_input_t
+        type(nml_group) :: group               !! the scanned group (an empty one if absent)
+        type(pulse_t) :: p                     !! the validated pulse, SI
+        integer :: code = PULSE_EXPONENTIAL    !! its kind, PULSE_*
+        real(dp) :: g = 9.80665_dp             !! gravity (m/s2)
+        real(dp) :: amp_g = 0.0_dp             !! amplitude in g, as given when amp_unit = 'g'
+                                               !! (NaN for M&P: a velocity amplitude)
+    end type pulse_input_t
+
+    ! namelist variables (defaults are set in set_defaults)
+    character(len=32) :: kind, amp_unit
+    real(dp) :: amp, g, duration, beta, peak_frac, freq, t0, gamma, nu_deg, vamp
+    logical :: full
+    namelist /pulse/ kind, amp, amp_unit, g, duration, beta, full, peak_frac, freq, t0, &
+        gamma, nu_deg, vamp
+
+contains
+
+    subroutine set_defaults()
+        real(dp) :: nan
+        nan = ieee_value(nan, ieee_quiet_nan)
+        kind = 'exponential'
+        amp = 1.0_dp
+        amp_unit = 'm/s2'
+        g = 9.80665_dp
+        duration = 1.0_dp
+        beta = 0.0_dp
+        full = .false.
+        peak_frac = 0.5_dp
+        freq = 1.0_dp
+        t0 = nan          ! NaN: Ricker 1.5/freq, M&P gamma/(2 freq)
+        gamma = 2.0_dp
+        nu_deg = 0.0_dp
+        vamp = 1.0_dp
+    end subroutine set_defaults
+
+    subroutine read_pulse(unit, text, ios, iomsg)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: text
+        integer, intent(out) :: ios
+        character(len=*), intent(inout) :: iomsg
+        if (len(text) > 0) then
+            read(text, nml=pulse, iostat=ios, iomsg=iomsg)
+        else
+            read(unit, nml=pulse, iostat=ios, iomsg=iomsg)
+        end if
+    end subroutine read_pulse
+
+    !> Set the defaults, then check the keys of &pulse and read it (if present).
+    subroutine read_pulse_group(path, groups, pin, stat, errmsg)
+        character(len=*), intent(in) :: path              !! input file (for messages)
+        type(nml_group), intent(in) :: groups(:)          !! scanned groups
+        type(pulse_input_t), intent(out) :: pin           !! receives the group
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        integer :: ip
+        call set_defaults()
+        errmsg = ''
+        stat = 0
+        ip = find_group(groups, 'pulse')
+        if (ip > 0) then
+            pin%group = groups(ip)
+            call check_keys(path, pin%group, pulse_keys, stat, errmsg)
+            if (stat /= 0) return
+            call read_group(path, pin%group, read_pulse, stat, errmsg)
+        else
+            pin%group%name = 'pulse'
+            pin%group%line = 0
+            allocate(pin%group%items(0))
+        end if
+    end subroutine read_pulse_group
+
+    !> Validate the values read and build the pulse (amplitude in m/s2). Warns on
+    !> stderr about keys the kind does not use; `g_used`: the analysis always uses g.
+    subroutine build_pulse(path, pin, stat, errmsg, g_used)
+        character(len=*), intent(in) :: path              !! input file (for messages)
+        type(pulse_input_t), intent(inout) :: pin         !! group in, pulse out
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        logical, intent(in), optional :: g_used
+        character(len=256) :: msg
+        integer :: code, i
+        logical :: g_always
+
+        g_always = .false.
+        if (present(g_used)) g_always = g_used
+        errmsg = ''
+        stat = 1
+        call pulse_kind_from_name(kind, code, i, msg)
+        if (i /= SEISPULSE_SUCCESS) then
+            errmsg = located(path, pin%group)//trim(msg)
+            return
+        end if
+        pin%amp_g = ieee_value(pin%amp_g, ieee_quiet_nan)
+        if (g_always .and. .not. finite_positive(g)) then
+            errmsg = located(path, pin%group)//'g: must be a finite number > 0 (m/s2)'
+            return
+        end if
+        select case (lower(trim(amp_unit)))
+        case ('m/s2')
+            if (code /= PULSE_MP) pin%amp_g = amp / g
+        case ('g')
+            if (.not. finite_positive(g)) then
+                errmsg = located(path, pin%group)//'g: must be a finite number > 0 (m/s2)'
+                return
+            end if
+            if (code /= PULSE_MP) pin%amp_g = amp
+            amp = amp * g
+        case default
+            errmsg = located(path, pin%group)//'amp_unit = '''//trim(amp_unit) &
+                     //''': unknown unit (allowed: m/s2, g)'
+            return
+        end select
+        if (code == PULSE_MP) amp = vamp
+        if (ieee_is_nan(t0)) then
+            if (code == PULSE_MP) then
+                t0 = 0.5_dp * gamma / freq
+            else
+                t0 = 1.5_dp / freq
+            end if
+        end if
+        pin%p = pulse_t(kind=code, amp=amp, duration=duration, beta=beta, full=full, &
+                        peak_frac=peak_frac, freq=freq, t0=t0, gamma=gamma, nu_deg=nu_deg)
+        call pulse_validate(pin%p, i, msg)
+        if (i /= SEISPULSE_SUCCESS) then
+            errmsg = located(path, pin%group)//trim(msg)
+            return
+        end if
+        pin%code = code
+        pin%g = g
+        call warn_unused(path, pin%group, code, g_always)
+        stat = 0
+    end subroutine build_pulse
+
+    !> x is a finite number > 0. (Never compares a NaN: a build with
+    !> -ffpe-trap=invalid evaluates both operands of .and.)
+    elemental logical function finite_positive(x)
+        real(dp), intent(in) :: x
+        finite_positive = .false.
+        if (ieee_is_finite(x)) finite_positive = x > 0.0_dp
+    end function finite_positive
+
+    !> Echo the group as read and completed (for the log).
+    subroutine write_pulse_group(unit)
+        integer, intent(in) :: unit
+        write(unit, nml=pulse)
+    end subroutine write_pulse_group
+
+    !> Warn (stderr) about keys the chosen kind does not use: a likely slip.
+    subroutine warn_unused(path, group, code, g_always)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: group
+        integer, intent(in) :: code
+        logical, intent(in) :: g_always
+        integer :: i
+        logical :: used
+        do i = 1, size(group%items)
+            select case (group%items(i)%key)
+            case ('kind')
+                used = .true.
+            case ('g')
+                used = code /= PULSE_MP .or. g_always
+            case ('amp', 'amp_unit')
+                used = code /= PULSE_MP
+            case ('duration')
+                used = code /= PULSE_MP .and. code /= PULSE_RICKER
+            case ('beta', 'full')
+                used = code == PULSE_EXPONENTIAL
+            case ('peak_frac')
+                used = code == PULSE_TRIANGULAR
+            case ('freq', 't0')
+                used = code == PULSE_MP .or. code == PULSE_RICKER
+            case default   ! gamma, nu_deg, vamp
+                used = code == PULSE_MP
+            end select
+            if (.not. used) write(error_unit, '(a)') 'warning: '//located(path, group) &
+                //group%items(i)%key//': not used by kind '//pulse_kind_name(code)
+        end do
+    end subroutine warn_unused
+
+end module driver_pulse_group

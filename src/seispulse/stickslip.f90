@@ -1,0 +1,1032 @@
+!> Event-driven stick-slip integrator for a rigid block on a frictional plane
+!> (Newmark sliding block): the reference that checks the closed forms of
+!> sliding.md, and the tool for real accelerograms.
+!>
+!> Relative (sliding) displacement u of the block with respect to the plane
+!> (sliding.md 1.2, Eq. 1.3, with the stick-slip law written out there):
+!>     u'' = a_g(t) - ay_dir sgn(u')          while sliding,
+!>     u'  = 0                                while at rest and -thr_rev <= a_g <= thr_fwd.
+!> Onset from rest: forward when a_g > thr_fwd, reverse when a_g < -thr_rev, where
+!> thr_dir = static_factor ay_dir for the first onset of the run (and for every
+!> onset if `static_all`), else ay_dir (sliding.md 8.1). While sliding the kinetic
+!> ay_dir applies. When a slide stops at t_s and a_g(t_s) already exceeds the
+!> threshold the other way, the block reverses at once ("slip", sliding.md 5.1);
+!> otherwise it sticks until the next onset.
+!>
+!> Method: exact events, no time step (sliding.md 13.7). The time axis is cut into
+!> pieces on which a_g is continuous and monotone. On such a piece a_g - thr has at
+!> most one root (the onset), u'' = a_g - s ay changes sign at most once (the piece
+!> is split there), and on each part u' is monotone, so a stop is bracketed by a
+!> sign check at the ends. Every event is located by Brent's method (seispulse_roots)
+!> to full double precision. The relative motion on a piece is propagated from a
+!> reference state (t_r, u_r, w_r) set at the piece start and at each event:
+!>     w(t) = w_r + [v_g(t) - v_g(t_r)] - s ay (t - t_r)
+!>     u(t) = u_r + w_r (t - t_r) + [d_g(t) - d_g(t_r) - v_g(t_r)(t - t_r)] - s ay (t - t_r)^2/2
+!> (sliding.md 3.1, Eqs. 1.4-1.5), with the closed-form v_g, d_g of a pulse, or the
+!> local polynomial of a record step (never the cumulative ground velocity).
+!> The peak sliding velocity is where a_g = s ay (the split points) or at a piece end.
+!> After the excitation (a_g = 0) a sliding block stops at t + |w|/ay exactly.
+!>
+!> Conventions of the result: a slide of zero length (the threshold touched but not
+!> exceeded, by more than two ulps) is not reported; `t_end` is the stop of the last
+!> slide (0 if the block never slides). Optional output grid: `t_grid`, `u_grid`,
+!> `w_grid` all present or all absent, of one size, `t_grid` finite and ascending
+!> (any times: u = 0 before the first onset, u = u_final and u' = 0 after `t_end`);
+!> values come from the same closed forms as the events, not from interpolation.
+module seispulse_stickslip
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
+                                             ieee_positive_inf
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
+                                SEISPULSE_INTERNAL, set_error, real_str
+    use seispulse_roots, only: scalar_function, find_root
+    use seispulse_special, only: pi
+    use seispulse_pulses, only: pulse_t, pulse_validate, pulse_at, pulse_breaks, &
+                                PULSE_EXPONENTIAL, PULSE_HALF_SINE, PULSE_SINE_CYCLE, &
+                                PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
+                                PULSE_RICKER, PULSE_MP
+    implicit none
+    private
+
+    public :: friction_t, slide_t, stickslip_result_t
+    public :: friction_validate, stickslip_pulse, stickslip_record
+
+    !> Friction of the block, as yield accelerations in the caller's units
+    !> (A_g units for the dimensionless problem: ay = eta).
+    type :: friction_t
+        real(dp) :: ay_fwd = 0.1_dp         !! resistance to forward (u' > 0) sliding, > 0, or +inf
+        real(dp) :: ay_rev = 0.1_dp         !! resistance to reverse sliding, > 0, or +inf
+        real(dp) :: static_factor = 1.0_dp  !! onset threshold / kinetic resistance, >= 1, finite
+        logical :: static_all = .false.     !! static threshold at every onset, not only the first
+    end type friction_t
+
+    !> One sliding interval.
+    type :: slide_t
+        integer :: direction = 0            !! +1 forward, -1 reverse
+        real(dp) :: t_start = 0.0_dp        !! onset time
+        real(dp) :: t_stop = 0.0_dp         !! stop time (u' = 0 again)
+        real(dp) :: u_start = 0.0_dp        !! relative displacement at onset
+        real(dp) :: u_stop = 0.0_dp         !! relative displacement at the stop
+        real(dp) :: w_peak = 0.0_dp         !! largest |u'| in the interval
+        real(dp) :: t_peak = 0.0_dp         !! time of w_peak
+        logical :: from_slip = .false.      !! started by an immediate reversal at the previous stop
+    end type slide_t
+
+    !> Result of a run.
+    type :: stickslip_result_t
+        type(slide_t), allocatable :: slides(:)  !! the slides in time order
+        real(dp) :: u_final = 0.0_dp        !! u when the block is finally at rest
+        real(dp) :: u_max = 0.0_dp          !! largest u over the run (>= 0)
+        real(dp) :: u_min = 0.0_dp          !! smallest u over the run (<= 0)
+        real(dp) :: t_end = 0.0_dp          !! stop of the last slide (0 if none)
+    end type stickslip_result_t
+
+    integer, parameter :: SRC_PULSE = 1, SRC_RECORD = 2
+    integer, parameter :: EVAL_ACCEL = 1, EVAL_VELOCITY = 2
+
+    !> Events allowed on one monotone piece; a handful are possible (onset, split,
+    !> stop, reverse onset, ...), so reaching this is a bug, reported as such.
+    integer, parameter :: max_events = 64
+    !> Mavroeidis-Papageorgiou pieces per 1/f_p before the jerk-sign split.
+    integer, parameter :: mp_per_period = 64
+    !> M&P: largest gamma accepted (64 gamma coarse pieces are generated).
+    real(dp), parameter :: mp_gamma_max = 1.0e6_dp
+    !> M&P: bisection depth of the jerk-root search below one coarse piece.
+    integer, parameter :: mp_max_depth = 48
+    !> Ricker: the last piece ends at x = pi f (t - t0) = 10, where |a| < 1e-40 a_p.
+    real(dp), parameter :: ricker_x_cut = 10.0_dp
+
+    !> Ground acceleration and relative velocity on the current piece, as a function
+    !> for the root finder (the components carry the piece and the reference state).
+    type, extends(scalar_function) :: ground_fn
+        integer :: src = SRC_PULSE
+        integer :: what = EVAL_ACCEL       !! EVAL_ACCEL: a_g - level; EVAL_VELOCITY: w
+        type(pulse_t) :: p                 !! the pulse (SRC_PULSE)
+        real(dp) :: level = 0.0_dp         !! subtracted from a_g (EVAL_ACCEL)
+        real(dp) :: t0 = 0.0_dp            !! record step: start time
+        real(dp) :: a0 = 0.0_dp            !! record step: a_g at t0
+        real(dp) :: slope = 0.0_dp         !! record step: da_g/dt
+        real(dp) :: t_ref = 0.0_dp         !! reference state of the relative motion
+        real(dp) :: u_ref = 0.0_dp
+        real(dp) :: w_ref = 0.0_dp
+        real(dp) :: v_ref = 0.0_dp         !! pulse: v_g(t_ref)
+        real(dp) :: d_ref = 0.0_dp         !! pulse: d_g(t_ref)
+        real(dp) :: a_ref = 0.0_dp         !! record: a_g(t_ref)
+        real(dp) :: c = 0.0_dp             !! s ay of the current slide
+    contains
+        procedure :: eval => ground_eval
+    end type ground_fn
+
+    !> Second derivative of the M&P velocity in x = f_p (t - t0), up to a factor -A/2:
+    !> J(x) = k0^2 cos(k0 x + nu) + (kp^2 cos(kp x + nu) + km^2 cos(km x + nu))/2.
+    type, extends(scalar_function) :: jerk_fn
+        real(dp) :: k0 = 0.0_dp, kp = 0.0_dp, km = 0.0_dp, nu = 0.0_dp
+    contains
+        procedure :: eval => jerk_eval
+    end type jerk_fn
+
+    !> Generator of the monotone pieces, one at a time (no storage that grows).
+    type :: piece_iter_t
+        integer :: src = SRC_PULSE
+        ! fixed break list (pulses other than M&P)
+        integer :: nbreaks = 0
+        integer :: next = 1
+        real(dp) :: breaks(8) = 0.0_dp
+        ! record
+        integer :: nsamp = 0
+        integer :: step = 0
+        real(dp) :: dt = 0.0_dp
+        ! Mavroeidis & Papageorgiou
+        logical :: mp = .false.
+        integer :: ncoarse = 0
+        integer :: kc = 1
+        real(dp) :: x_lo = 0.0_dp
+        real(dp) :: t_lo = 0.0_dp
+        real(dp) :: half_gamma = 0.0_dp
+        real(dp) :: m1 = 0.0_dp             !! bound on |J'|
+        real(dp) :: m2 = 0.0_dp             !! bound on |J''|
+        logical :: from_root = .false.      !! x_lo is a root of J found before
+        real(dp) :: j_lo = 0.0_dp           !! J(x_lo) when x_lo is not a root
+        real(dp) :: a_lo = 0.0_dp           !! a_g(t_lo), carried: a_g is continuous
+        type(jerk_fn) :: jerk
+    end type piece_iter_t
+
+contains
+
+    ! ------------------------------------------------------------------------------
+    ! Public API
+    ! ------------------------------------------------------------------------------
+
+    !> Check friction parameters; the message names the offending parameter.
+    subroutine friction_validate(fr, stat, errmsg)
+        type(friction_t), intent(in) :: fr                    !! the friction
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        stat = SEISPULSE_SUCCESS
+        if (.not. positive(fr%ay_fwd)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ay_fwd = ' &
+                           //real_str(fr%ay_fwd)//': must be > 0 (or +inf for no sliding that way)')
+        else if (.not. positive(fr%ay_rev)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ay_rev = ' &
+                           //real_str(fr%ay_rev)//': must be > 0 (or +inf for no sliding that way)')
+        else if (.not. finite_at_least(fr%static_factor, 1.0_dp)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'static_factor = ' &
+                           //real_str(fr%static_factor)//': must be a finite number >= 1')
+        end if
+    end subroutine friction_validate
+
+    !> Stick-slip response to an idealized pulse of seispulse_pulses (SI or any
+    !> consistent units; amp = 1, duration = 1 gives the dimensionless problem).
+    !>
+    !> Pieces (a_g continuous and monotone on each): exponential 0, t_d/2, t_d (3t_d/2,
+    !> 2t_d); half-sine 0, T/2, T; sine cycle 0, T/4, 3T/4, T; cosine cycle 0, T/2, T;
+    !> rectangular 0, T; triangular 0, rT, T. The spike (beta = +inf) exceeds any
+    !> threshold at one instant only, so the block never slides. Ricker: from t = 0,
+    !> breaks at the extrema x = pi f_p (t - t0) = -sqrt(1.5), 0, +sqrt(1.5), last
+    !> piece cut at x = 10 (|a| < 1e-40 a_p), a_g = 0 after the cut. M&P: the extrema
+    !> of a_g are not closed form: the window is cut into pieces of 1/(64 f_p), each
+    !> split at the sign changes of the closed-form jerk (see `mp_next_break`).
+    subroutine stickslip_pulse(p, fr, res, stat, errmsg, t_grid, u_grid, w_grid)
+        type(pulse_t), intent(in) :: p                        !! the ground pulse
+        type(friction_t), intent(in) :: fr                    !! friction of the block
+        type(stickslip_result_t), intent(out) :: res          !! slides and summary
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp), intent(in), optional :: t_grid(:)           !! output times, ascending
+        real(dp), intent(out), optional :: u_grid(:)          !! u at t_grid
+        real(dp), intent(out), optional :: w_grid(:)          !! u' at t_grid
+        type(ground_fn) :: g
+        type(piece_iter_t) :: it
+        real(dp) :: no_record(0)
+
+        call empty_result(res)
+        call friction_validate(fr, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        call pulse_validate(p, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        if (p%kind == PULSE_MP) then
+            if (p%gamma > mp_gamma_max) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'gamma = ' &
+                               //real_str(p%gamma) &
+                               //': the stick-slip integrator supports gamma <= 1e6')
+                return
+            end if
+        end if
+        call check_grid(t_grid, u_grid, w_grid, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+
+        g%src = SRC_PULSE
+        g%p = p
+        call pulse_pieces_init(it, p)
+        call integrate(g, it, fr, no_record, res, stat, errmsg, t_grid, u_grid, w_grid)
+    end subroutine stickslip_pulse
+
+    !> Stick-slip response to an accelerogram: accel(i) at t = (i - 1) dt, linear in
+    !> between (each step is a piece), at rest before t = 0 and a_g = 0 after the
+    !> last sample (a sliding block then decelerates to rest).
+    subroutine stickslip_record(accel, dt, fr, res, stat, errmsg, t_grid, u_grid, w_grid)
+        real(dp), intent(in) :: accel(:)                      !! ground acceleration samples, finite
+        real(dp), intent(in) :: dt                            !! sampling interval, > 0
+        type(friction_t), intent(in) :: fr                    !! friction of the block
+        type(stickslip_result_t), intent(out) :: res          !! slides and summary
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp), intent(in), optional :: t_grid(:)           !! output times, ascending
+        real(dp), intent(out), optional :: u_grid(:)          !! u at t_grid
+        real(dp), intent(out), optional :: w_grid(:)          !! u' at t_grid
+        type(ground_fn) :: g
+        type(piece_iter_t) :: it
+        integer :: i
+        character(len=24) :: idx
+
+        call empty_result(res)
+        call friction_validate(fr, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        if (.not. (positive(dt) .and. ieee_is_finite(dt))) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'dt = '//real_str(dt) &
+                           //': must be a finite number > 0')
+            return
+        end if
+        if (size(accel) < 1) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'accel: the record is empty (at least one sample is needed)')
+            return
+        end if
+        do i = 1, size(accel)
+            if (.not. ieee_is_finite(accel(i))) then
+                write(idx, '(i0)') i
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel('//trim(idx) &
+                               //') = '//real_str(accel(i)) &
+                               //': every sample must be a finite number')
+                return
+            end if
+        end do
+        call check_grid(t_grid, u_grid, w_grid, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+
+        g%src = SRC_RECORD
+        it%src = SRC_RECORD
+        it%nsamp = size(accel)
+        it%dt = dt
+        it%step = 0
+        call integrate(g, it, fr, accel, res, stat, errmsg, t_grid, u_grid, w_grid)
+    end subroutine stickslip_record
+
+    ! ------------------------------------------------------------------------------
+    ! The integrator
+    ! ------------------------------------------------------------------------------
+
+    !> Run the event loop over the pieces of `it`; the ground is `g` (and `accel`).
+    subroutine integrate(g, it, fr, accel, res, stat, errmsg, t_grid, u_grid, w_grid)
+        type(ground_fn), intent(inout) :: g
+        type(piece_iter_t), intent(inout) :: it
+        type(friction_t), intent(in) :: fr
+        real(dp), intent(in) :: accel(:)
+        type(stickslip_result_t), intent(inout) :: res
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        real(dp), intent(in), optional :: t_grid(:)
+        real(dp), intent(out), optional :: u_grid(:)
+        real(dp), intent(out), optional :: w_grid(:)
+
+        type(slide_t), allocatable :: buf(:)
+        type(slide_t) :: cur
+        real(dp) :: t, u, w, ta, tb, aa, ab, a_c, thr_f, thr_r, lev, t_o, r, u_r, w_r
+        real(dp) :: t_s, u_s, gc, gb, h, ay
+        integer :: mode, dir, blocked, last_dir, nslides, ig, ng, nev
+        logical :: found, first_done, first_slide, just_stopped, now, split_done
+        character(len=120) :: rmsg
+
+        stat = SEISPULSE_SUCCESS
+        allocate(buf(8))
+        nslides = 0
+        ng = 0
+        if (present(t_grid)) ng = size(t_grid)
+        ig = 1
+        ! thresholds of the first onset (sliding.md 8.1); kinetic values after it
+        thr_f = scaled_threshold(fr%ay_fwd, fr%static_factor)
+        thr_r = scaled_threshold(fr%ay_rev, fr%static_factor)
+        first_done = .false.
+        first_slide = .false.
+        just_stopped = .false.
+        t = 0.0_dp
+        u = 0.0_dp
+        w = 0.0_dp
+        mode = 0
+        last_dir = 0
+        a_c = 0.0_dp
+        lev = 0.0_dp
+
+        pieces: do
+            call next_piece(it, g, accel, ta, tb, aa, ab, found, stat, errmsg)
+            if (stat /= SEISPULSE_SUCCESS) return
+            if (.not. found) exit pieces
+            ! pieces are contiguous while sliding; at rest the block may wait for the first
+            t = ta
+            blocked = 0
+            split_done = .false.
+            a_c = aa
+            if (mode /= 0) call set_reference(g, t, u, w, real(mode, dp) * ay_of(fr, mode))
+            events: do nev = 1, max_events + 1
+                if (nev > max_events) then
+                    call set_error(stat, errmsg, SEISPULSE_INTERNAL, 'stickslip: too many ' &
+                                   //'events on one piece near t = '//real_str(t)//' (a bug)')
+                    return
+                end if
+                if (mode == 0) then
+                    ! ---- at rest: onset on this piece? a_g is monotone, so the
+                    ! largest excursion is at an end of [t, tb]
+                    if (t >= tb) exit events
+                    dir = 0
+                    now = .false.
+                    if (blocked /= 1 .and. exceeds(a_c, thr_f)) then
+                        dir = 1
+                        now = .true.
+                    else if (blocked /= -1 .and. exceeds(-a_c, thr_r)) then
+                        dir = -1
+                        now = .true.
+                    else if (blocked /= 1 .and. exceeds(ab, thr_f)) then
+                        dir = 1
+                        lev = thr_f
+                        now = .not. (a_c < thr_f)
+                    else if (blocked /= -1 .and. exceeds(-ab, thr_r)) then
+                        dir = -1
+                        lev = -thr_r
+                        now = .not. (a_c > -thr_r)
+                    end if
+                    if (dir == 0) then
+                        call fill_rest(tb)
+                        if (tb > t) just_stopped = .false.
+                        t = tb
+                        exit events
+                    end if
+                    t_o = t
+                    if (.not. now) then
+                        ! a_g - lev < 0 at t, > 0 at tb (or the mirror): one root
+                        g%what = EVAL_ACCEL
+                        g%level = lev
+                        call find_root(g, t, tb, t_o, stat, rmsg, fa_known=a_c - lev, &
+                                       fb_known=ab - lev)
+                        if (stat /= SEISPULSE_SUCCESS) then
+                            call root_failure('onset', t)
+                            return
+                        end if
+                        t_o = min(max(t_o, t), tb)
+                        if (t_o > t) then
+                            just_stopped = .false.
+                            a_c = accel_on_piece(t_o)
+                        end if
+                    end if
+                    call fill_rest(t_o)
+                    cur%direction = dir
+                    cur%t_start = t_o
+                    cur%u_start = u
+                    cur%w_peak = 0.0_dp
+                    cur%t_peak = t_o
+                    cur%from_slip = just_stopped .and. dir == -last_dir
+                    first_slide = .not. first_done
+                    if (.not. first_done) then
+                        first_done = .true.
+                        if (.not. fr%static_all) then
+                            thr_f = fr%ay_fwd
+                            thr_r = fr%ay_rev
+                        end if
+                    end if
+                    mode = dir
+                    t = t_o
+                    w = 0.0_dp
+                    ! after an onset inside the piece a_g runs on past thr >= ay: u'' keeps
+                    ! the sign of the slide to the piece end (no split; splitting at the
+                    ! onset itself would see a zero-length slide)
+                    split_done = .not. now
+                    call set_reference(g, t, u, w, real(dir, dp) * ay_of(fr, dir))
+                else
+                    ! ---- sliding: split where u'' = a_g - s ay changes sign, so that u'
+                    ! is monotone on [t, r]
+                    r = tb
+                    if (.not. split_done) then
+                        gc = a_c - g%c
+                        gb = ab - g%c
+                        if ((gc < 0.0_dp .and. gb > 0.0_dp) .or. &
+                            (gc > 0.0_dp .and. gb < 0.0_dp)) then
+                            g%what = EVAL_ACCEL
+                            g%level = g%c
+                            call find_root(g, t, tb, r, stat, rmsg, fa_known=gc, fb_known=gb)
+                            if (stat /= SEISPULSE_SUCCESS) then
+                                call root_failure('peak velocity', t)
+                                return
+                            end if
+                            r = min(max(r, t), tb)
+                            split_done = .true.
+                        end if
+                    end if
+                    call relative_state(g, r, u_r, w_r)
+                    if (moving(mode, w_r)) then
+                        ! no stop on [t, r]: r is a candidate for the peak velocity
+                        call fill_slide(r)
+                        if (abs(w_r) > cur%w_peak) then
+                            cur%w_peak = abs(w_r)
+                            cur%t_peak = r
+                        end if
+                        t = r
+                        u = u_r
+                        w = w_r
+                        if (r >= tb) exit events
+                        a_c = accel_on_piece(r)
+                        cycle events
+                    end if
+                    ! u' reaches 0 in (t, r]: s w(t) > 0 >= s w(r), one root
+                    if (moving(mode, w)) then
+                        g%what = EVAL_VELOCITY
+                        call find_root(g, t, r, t_s, stat, rmsg, fa_known=w, fb_known=w_r)
+                        if (stat /= SEISPULSE_SUCCESS) then
+                            call root_failure('stop', t)
+                            return
+                        end if
+                        t_s = min(max(t_s, t), r)
+                        call relative_state(g, t_s, u_s, w_r)
+                    else
+                        ! w = 0 at the onset and no push that way: no motion at all
+                        t_s = t
+                        u_s = u
+                    end if
+                    call fill_slide(t_s)
+                    call close_slide(t_s, u_s)
+                    a_c = accel_on_piece(t_s)
+                end if
+            end do events
+        end do pieces
+
+        ! after the excitation a_g = 0: uniform deceleration to rest
+        if (mode /= 0) then
+            ay = ay_of(fr, mode)
+            if (ay < abs(w) / huge(w)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ay_fwd, ay_rev: too ' &
+                               //'small for the final sliding velocity (the stop time overflows)')
+                return
+            end if
+            h = abs(w) / ay
+            do while (ig <= ng)
+                if (t_grid(ig) > t + h) exit
+                call decelerate(t_grid(ig) - t, u_grid(ig), w_grid(ig))
+                ig = ig + 1
+            end do
+            call close_slide(t + h, u + 0.5_dp * w * h)
+        end if
+        do while (ig <= ng)
+            u_grid(ig) = u
+            w_grid(ig) = 0.0_dp
+            ig = ig + 1
+        end do
+
+        res%u_final = u
+        if (nslides == size(buf)) then
+            call move_alloc(buf, res%slides)
+        else
+            if (allocated(res%slides)) deallocate(res%slides)
+            allocate(res%slides(nslides))
+            res%slides(:) = buf(1:nslides)
+        end if
+
+    contains
+
+        !> a_g at t on the current piece, with the one-sided limits at its ends.
+        function accel_on_piece(tt) result(a)
+            real(dp), intent(in) :: tt
+            real(dp) :: a
+            if (tt >= tb) then
+                a = ab
+            else if (tt <= ta) then
+                a = aa
+            else
+                a = ground_accel(g, tt)
+            end if
+        end function accel_on_piece
+
+        !> Grid points up to tt while at rest.
+        subroutine fill_rest(tt)
+            real(dp), intent(in) :: tt
+            do while (ig <= ng)
+                if (t_grid(ig) > tt) exit
+                u_grid(ig) = u
+                w_grid(ig) = 0.0_dp
+                ig = ig + 1
+            end do
+        end subroutine fill_rest
+
+        !> Grid points up to tt on the current slide (reference state of g).
+        subroutine fill_slide(tt)
+            real(dp), intent(in) :: tt
+            do while (ig <= ng)
+                if (t_grid(ig) > tt) exit
+                call relative_state(g, t_grid(ig), u_grid(ig), w_grid(ig))
+                ig = ig + 1
+            end do
+        end subroutine fill_slide
+
+        !> Free deceleration after the excitation, tau after t.
+        subroutine decelerate(tau, ut, wt)
+            real(dp), intent(in) :: tau
+            real(dp), intent(out) :: ut, wt
+            real(dp) :: cc
+            cc = real(mode, dp) * ay
+            ut = u + tau * (w - 0.5_dp * cc * tau)
+            wt = w - cc * tau
+        end subroutine decelerate
+
+        !> End the current slide at tt with displacement uu; drop it if nothing moved.
+        subroutine close_slide(tt, uu)
+            real(dp), intent(in) :: tt, uu
+            type(slide_t), allocatable :: tmp(:)
+            if (tt > cur%t_start .and. cur%w_peak > 0.0_dp) then
+                cur%t_stop = tt
+                cur%u_stop = uu
+                if (nslides == size(buf)) then
+                    allocate(tmp(2 * nslides))
+                    tmp(1:nslides) = buf(1:nslides)
+                    call move_alloc(tmp, buf)
+                end if
+                nslides = nslides + 1
+                buf(nslides) = cur
+                u = uu
+                res%u_max = max(res%u_max, uu)
+                res%u_min = min(res%u_min, uu)
+                res%t_end = tt
+                last_dir = mode
+                just_stopped = .true.
+            else
+                ! threshold touched, not exceeded: no slide, and none that way on this
+                ! monotone piece (else the same onset would be found again)
+                u = cur%u_start
+                blocked = mode
+                if (first_slide) then
+                    ! not a real first onset: the static thresholds still hold
+                    first_done = .false.
+                    thr_f = scaled_threshold(fr%ay_fwd, fr%static_factor)
+                    thr_r = scaled_threshold(fr%ay_rev, fr%static_factor)
+                end if
+            end if
+            mode = 0
+            w = 0.0_dp
+            t = tt
+        end subroutine close_slide
+
+        subroutine root_failure(what, tt)
+            character(len=*), intent(in) :: what
+            real(dp), intent(in) :: tt
+            call set_error(stat, errmsg, SEISPULSE_INTERNAL, 'stickslip: '//what// &
+                           ' location failed after t = '//real_str(tt)//': '//trim(rmsg)// &
+                           ' (a bug)')
+        end subroutine root_failure
+
+    end subroutine integrate
+
+    ! ------------------------------------------------------------------------------
+    ! Ground and relative motion on a piece
+    ! ------------------------------------------------------------------------------
+
+    function ground_eval(self, x) result(y)
+        class(ground_fn), intent(inout) :: self
+        real(dp), intent(in) :: x
+        real(dp) :: y
+        real(dp) :: ux
+        if (self%what == EVAL_ACCEL) then
+            y = ground_accel(self, x) - self%level
+        else
+            call relative_state(self, x, ux, y)
+        end if
+    end function ground_eval
+
+    !> Ground acceleration at t inside the current piece.
+    pure function ground_accel(g, t) result(a)
+        type(ground_fn), intent(in) :: g
+        real(dp), intent(in) :: t
+        real(dp) :: a
+        real(dp) :: v, d
+        if (g%src == SRC_PULSE) then
+            call pulse_at(g%p, t, a, v, d)
+        else
+            a = g%a0 + g%slope * (t - g%t0)
+        end if
+    end function ground_accel
+
+    !> Start propagating the relative motion from (t, u, w) with u'' = a_g - c.
+    pure subroutine set_reference(g, t, u, w, c)
+        type(ground_fn), intent(inout) :: g
+        real(dp), intent(in) :: t, u, w, c
+        real(dp) :: a
+        g%t_ref = t
+        g%u_ref = u
+        g%w_ref = w
+        g%c = c
+        if (g%src == SRC_PULSE) then
+            call pulse_at(g%p, t, a, g%v_ref, g%d_ref)
+        else
+            g%a_ref = g%a0 + g%slope * (t - g%t0)
+        end if
+    end subroutine set_reference
+
+    !> Relative displacement and velocity at t from the reference state (Eqs. 1.4-1.5
+    !> with ground increments from t_ref; a record step in its local polynomial).
+    pure subroutine relative_state(g, t, u, w)
+        type(ground_fn), intent(in) :: g
+        real(dp), intent(in) :: t
+        real(dp), intent(out) :: u, w
+        real(dp) :: h, a, v, d
+        h = t - g%t_ref
+        if (g%src == SRC_PULSE) then
+            call pulse_at(g%p, t, a, v, d)
+            w = g%w_ref + (v - g%v_ref) - g%c * h
+            u = g%u_ref + g%w_ref * h + ((d - g%d_ref) - g%v_ref * h) - 0.5_dp * g%c * h * h
+        else
+            w = g%w_ref + h * (g%a_ref - g%c + 0.5_dp * g%slope * h)
+            u = g%u_ref + h * (g%w_ref + h * (0.5_dp * (g%a_ref - g%c) &
+                                              + g%slope * h / 6.0_dp))
+        end if
+    end subroutine relative_state
+
+    ! ------------------------------------------------------------------------------
+    ! Pieces
+    ! ------------------------------------------------------------------------------
+
+    !> Break list of a (valid) pulse, or the M&P generator state.
+    subroutine pulse_pieces_init(it, p)
+        type(piece_iter_t), intent(out) :: it
+        type(pulse_t), intent(in) :: p
+        real(dp) :: td, xs(4), tx, gam, v, d
+        integer :: n, k
+        it%src = SRC_PULSE
+        it%next = 1
+        td = p%duration
+        select case (p%kind)
+        case (PULSE_EXPONENTIAL)
+            if (p%beta > huge(p%beta)) then
+                ! spike: a_g > 0 at one instant only, no area: no piece, no sliding
+                it%nbreaks = 0
+            else
+                call pulse_breaks(p, it%breaks(1:5), it%nbreaks)
+            end if
+        case (PULSE_HALF_SINE, PULSE_COSINE_CYCLE)
+            it%nbreaks = 3
+            it%breaks(1:3) = [0.0_dp, 0.5_dp * td, td]
+        case (PULSE_SINE_CYCLE)
+            it%nbreaks = 4
+            it%breaks(1:4) = [0.0_dp, 0.25_dp * td, 0.75_dp * td, td]
+        case (PULSE_RICKER)
+            ! extrema of (1 - 2x^2) e^(-x^2) at x = 0, +-sqrt(3/2); cut at x = 10
+            xs = [-sqrt(1.5_dp), 0.0_dp, sqrt(1.5_dp), ricker_x_cut]
+            n = 1
+            it%breaks(1) = 0.0_dp
+            do k = 1, 4
+                tx = p%t0 + xs(k) / (pi * p%freq)
+                if (tx > it%breaks(n)) then
+                    n = n + 1
+                    it%breaks(n) = tx
+                end if
+            end do
+            it%nbreaks = n
+        case (PULSE_MP)
+            gam = p%gamma
+            it%mp = .true.
+            it%nbreaks = 0
+            it%half_gamma = 0.5_dp * gam
+            it%ncoarse = max(1, ceiling(real(mp_per_period, dp) * gam - 1.0e-9_dp))
+            it%kc = 1
+            it%x_lo = -it%half_gamma
+            it%t_lo = p%t0 + it%x_lo / p%freq
+            it%from_root = .false.
+            call pulse_at(p, it%t_lo, it%a_lo, v, d)
+            it%jerk%k0 = 2.0_dp * pi
+            it%jerk%kp = 2.0_dp * pi * (1.0_dp + 1.0_dp / gam)
+            it%jerk%km = 2.0_dp * pi * (1.0_dp - 1.0_dp / gam)
+            it%jerk%nu = p%nu_deg * (pi / 180.0_dp)
+            it%m1 = it%jerk%k0**3 + 0.5_dp * (it%jerk%kp**3 + it%jerk%km**3)
+            it%m2 = it%jerk%k0**4 + 0.5_dp * (it%jerk%kp**4 + it%jerk%km**4)
+            it%j_lo = it%jerk%eval(it%x_lo)
+        case default
+            ! rectangular 0, T; triangular 0, rT, T
+            call pulse_breaks(p, it%breaks(1:5), it%nbreaks)
+        end select
+    end subroutine pulse_pieces_init
+
+    !> Next piece [ta, tb] of positive length, a_g(ta+) = aa and a_g(tb-) = ab.
+    !> For a record it also loads the step into g.
+    subroutine next_piece(it, g, accel, ta, tb, aa, ab, found, stat, errmsg)
+        type(piece_iter_t), intent(inout) :: it
+        type(ground_fn), intent(inout) :: g
+        real(dp), intent(in) :: accel(:)
+        real(dp), intent(out) :: ta, tb, aa, ab
+        logical, intent(out) :: found
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        real(dp) :: v, d, xe, xb
+        integer :: i
+        stat = SEISPULSE_SUCCESS
+        found = .false.
+        ta = 0.0_dp
+        tb = 0.0_dp
+        aa = 0.0_dp
+        ab = 0.0_dp
+        if (it%src == SRC_RECORD) then
+            if (it%step >= it%nsamp - 1) return
+            it%step = it%step + 1
+            i = it%step
+            ta = real(i - 1, dp) * it%dt
+            tb = real(i, dp) * it%dt
+            aa = accel(i)
+            ab = accel(i + 1)
+            g%t0 = ta
+            g%a0 = aa
+            g%slope = (ab - aa) / it%dt
+            found = .true.
+        else if (it%mp) then
+            do while (it%kc <= it%ncoarse)
+                if (it%kc == it%ncoarse) then
+                    xe = it%half_gamma
+                else
+                    xe = -it%half_gamma + real(it%kc, dp) / real(mp_per_period, dp)
+                end if
+                call mp_next_break(it, xe, xb, stat, errmsg)
+                if (stat /= SEISPULSE_SUCCESS) return
+                if (xb >= xe) then
+                    xb = xe
+                    it%kc = it%kc + 1
+                    it%from_root = .false.
+                else
+                    it%from_root = .true.
+                end if
+                it%x_lo = xb
+                ta = it%t_lo
+                tb = g%p%t0 + xb / g%p%freq
+                if (tb > ta) then
+                    it%t_lo = tb
+                    aa = it%a_lo
+                    call pulse_at(g%p, tb, ab, v, d)
+                    it%a_lo = ab
+                    found = .true.
+                    return
+                end if
+            end do
+        else
+            do while (it%next < it%nbreaks)
+                ta = it%breaks(it%next)
+                tb = it%breaks(it%next + 1)
+                it%next = it%next + 1
+                if (tb > ta) then
+                    call pulse_at(g%p, ta, aa, v, d)
+                    ab = accel_before(g%p, tb)
+                    found = .true.
+                    return
+                end if
+            end do
+        end if
+    end subroutine next_piece
+
+    !> a_g just before the break t (left limit): pulse_at is right-continuous, so it
+    !> differs only where the pulse jumps: the box (beta = -inf) at t_d and 2 t_d,
+    !> the rectangle and the cosine cycle at T, the triangle with r = 1 at T.
+    pure function accel_before(p, t) result(a)
+        type(pulse_t), intent(in) :: p
+        real(dp), intent(in) :: t
+        real(dp) :: a
+        real(dp) :: v, d
+        call pulse_at(p, t, a, v, d)
+        select case (p%kind)
+        case (PULSE_EXPONENTIAL)
+            if (p%beta < -huge(p%beta)) then
+                if (t > p%duration) then
+                    a = -p%amp
+                else
+                    a = p%amp
+                end if
+            end if
+        case (PULSE_RECTANGULAR, PULSE_COSINE_CYCLE)
+            if (t >= p%duration) a = p%amp
+        case (PULSE_TRIANGULAR)
+            if (t >= p%duration .and. p%peak_frac >= 1.0_dp) a = p%amp
+        end select
+    end function accel_before
+
+    !> M&P: the first sign change of the jerk J in (x_lo, xe), or xe if none.
+    !>
+    !> v = (A/2)[cos(k0 x + nu) + (cos(kp x + nu) + cos(km x + nu))/2] with x = f_p (t - t0),
+    !> k0 = 2 pi, kp, km = 2 pi (1 +- 1/gamma) (product-to-sum form of Eq. 1 of M&P 2003),
+    !> so J ~ d^2 v/dx^2 is a sum of three cosines with |J'| <= m1, |J''| <= m2.
+    !> An interval [lo, hi] of midpoint m and width h has no root when |J(m)| > m1 h/2,
+    !> and J is monotone on it (one root at most, found by Brent if J changes sign)
+    !> when |J'(m)| > m2 h/2; otherwise it is halved. Only a tangency of J (a double
+    !> root: a_g has an inflection with zero slope there) can reach the depth limit,
+    !> where the plain sign test is used; a_g is then monotone up to a variation of
+    !> order m1 h^3 with h = 2^-48/64, far below the rounding of a_g.
+    subroutine mp_next_break(it, xe, xb, stat, errmsg)
+        type(piece_iter_t), intent(inout) :: it
+        real(dp), intent(in) :: xe
+        real(dp), intent(out) :: xb
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        real(dp) :: stack(mp_max_depth + 1), jstack(mp_max_depth + 1), lo, hi, h, xm, jlo, jhi, jm
+        integer :: n, iter
+        logical :: done
+        character(len=120) :: rmsg
+        stat = SEISPULSE_SUCCESS
+        xb = xe
+        lo = it%x_lo
+        ! a root found before: J is monotone just after it, so no new root there
+        if (it%from_root) then
+            jlo = 0.0_dp
+        else
+            jlo = it%j_lo
+        end if
+        ! J at the right ends of the pending intervals, each evaluated once
+        n = 1
+        stack(1) = xe
+        jstack(1) = it%jerk%eval(xe)
+        ! each pass either halves an interval (depth <= mp_max_depth) or retires one
+        do iter = 1, 100000
+            hi = stack(n)
+            h = hi - lo
+            xm = lo + 0.5_dp * h
+            jhi = jstack(n)
+            jm = it%jerk%eval(xm)
+            done = .false.
+            if (abs(jm) > 0.5_dp * it%m1 * h) then
+                done = .true.
+            else if (abs(jerk_slope(it%jerk, xm)) > 0.5_dp * it%m2 * h &
+                     .or. n > mp_max_depth) then
+                if ((jlo < 0.0_dp .and. jhi > 0.0_dp) .or. (jlo > 0.0_dp .and. jhi < 0.0_dp)) then
+                    call find_root(it%jerk, lo, hi, xb, stat, rmsg, fa_known=jlo, fb_known=jhi)
+                    if (stat /= SEISPULSE_SUCCESS) then
+                        call set_error(stat, errmsg, SEISPULSE_INTERNAL, &
+                                       'stickslip: M&P jerk root: '//trim(rmsg)//' (a bug)')
+                        return
+                    end if
+                    xb = min(max(xb, lo), hi)
+                    return
+                end if
+                done = .true.
+            else
+                n = n + 1
+                stack(n) = xm
+                jstack(n) = jm
+            end if
+            if (done) then
+                lo = hi
+                jlo = jhi
+                n = n - 1
+                if (n == 0) then
+                    xb = xe
+                    it%j_lo = jhi
+                    return
+                end if
+            end if
+        end do
+        call set_error(stat, errmsg, SEISPULSE_INTERNAL, &
+                       'stickslip: M&P jerk roots: search did not end (a bug)')
+    end subroutine mp_next_break
+
+    function jerk_eval(self, x) result(y)
+        class(jerk_fn), intent(inout) :: self
+        real(dp), intent(in) :: x
+        real(dp) :: y
+        y = self%k0**2 * cos(self%k0 * x + self%nu) &
+            + 0.5_dp * (self%kp**2 * cos(self%kp * x + self%nu) &
+                        + self%km**2 * cos(self%km * x + self%nu))
+    end function jerk_eval
+
+    !> dJ/dx.
+    pure function jerk_slope(f, x) result(y)
+        type(jerk_fn), intent(in) :: f
+        real(dp), intent(in) :: x
+        real(dp) :: y
+        y = -(f%k0**3 * sin(f%k0 * x + f%nu) &
+              + 0.5_dp * (f%kp**3 * sin(f%kp * x + f%nu) + f%km**3 * sin(f%km * x + f%nu)))
+    end function jerk_slope
+
+    ! ------------------------------------------------------------------------------
+    ! Small helpers
+    ! ------------------------------------------------------------------------------
+
+    !> a exceeds thr by more than rounding (two ulps of the larger): a threshold that
+    !> is only touched starts no slide. Safe for thr = +inf (no inf - inf).
+    elemental logical function exceeds(a, thr)
+        real(dp), intent(in) :: a, thr
+        exceeds = a - thr > 2.0_dp * epsilon(a) * max(abs(a), abs(thr))
+    end function exceeds
+
+    !> x > 0 and not NaN (no ordered comparison with a NaN: it traps under
+    !> -ffpe-trap=invalid).
+    elemental logical function positive(x)
+        real(dp), intent(in) :: x
+        if (ieee_is_nan(x)) then
+            positive = .false.
+        else
+            positive = x > 0.0_dp
+        end if
+    end function positive
+
+    !> x finite and >= lo.
+    elemental logical function finite_at_least(x, lo)
+        real(dp), intent(in) :: x, lo
+        if (ieee_is_finite(x)) then
+            finite_at_least = x >= lo
+        else
+            finite_at_least = .false.
+        end if
+    end function finite_at_least
+
+    !> True while the block still moves in direction `mode` with velocity w.
+    elemental logical function moving(mode, w)
+        integer, intent(in) :: mode
+        real(dp), intent(in) :: w
+        moving = (mode > 0 .and. w > 0.0_dp) .or. (mode < 0 .and. w < 0.0_dp)
+    end function moving
+
+    pure function ay_of(fr, dir) result(ay)
+        type(friction_t), intent(in) :: fr
+        integer, intent(in) :: dir
+        real(dp) :: ay
+        if (dir > 0) then
+            ay = fr%ay_fwd
+        else
+            ay = fr%ay_rev
+        end if
+    end function ay_of
+
+    !> factor * ay without overflow (+inf when it would overflow or ay = +inf).
+    function scaled_threshold(ay, factor) result(thr)
+        real(dp), intent(in) :: ay, factor
+        real(dp) :: thr
+        if (ay > huge(ay) / factor) then
+            thr = ieee_value(thr, ieee_positive_inf)
+        else
+            thr = factor * ay
+        end if
+    end function scaled_threshold
+
+    !> A well-defined result for the error returns.
+    subroutine empty_result(res)
+        type(stickslip_result_t), intent(inout) :: res
+        if (allocated(res%slides)) deallocate(res%slides)
+        allocate(res%slides(0))
+        res%u_final = 0.0_dp
+        res%u_max = 0.0_dp
+        res%u_min = 0.0_dp
+        res%t_end = 0.0_dp
+    end subroutine empty_result
+
+    !> The output grid: t_grid, u_grid and w_grid all present or all absent, one
+    !> size, t_grid finite and ascending.
+    subroutine check_grid(t_grid, u_grid, w_grid, stat, errmsg)
+        real(dp), intent(in), optional :: t_grid(:)
+        real(dp), intent(in), optional :: u_grid(:)
+        real(dp), intent(in), optional :: w_grid(:)
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        integer :: i
+        character(len=24) :: idx
+        stat = SEISPULSE_SUCCESS
+        if (.not. (present(t_grid) .or. present(u_grid) .or. present(w_grid))) return
+        if (.not. present(t_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           't_grid: missing (u_grid and w_grid need the output times)')
+            return
+        end if
+        if (.not. present(u_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'u_grid: missing (t_grid, u_grid and w_grid go together)')
+            return
+        end if
+        if (.not. present(w_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'w_grid: missing (t_grid, u_grid and w_grid go together)')
+            return
+        end if
+        if (size(u_grid) /= size(t_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'u_grid: must have the size of t_grid')
+            return
+        end if
+        if (size(w_grid) /= size(t_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'w_grid: must have the size of t_grid')
+            return
+        end if
+        do i = 1, size(t_grid)
+            if (.not. ieee_is_finite(t_grid(i))) then
+                write(idx, '(i0)') i
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 't_grid('//trim(idx) &
+                               //') = '//real_str(t_grid(i))//': must be a finite number')
+                return
+            end if
+        end do
+        do i = 2, size(t_grid)
+            if (t_grid(i) < t_grid(i - 1)) then
+                write(idx, '(i0)') i
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 't_grid('//trim(idx) &
+                               //') = '//real_str(t_grid(i))//': the times must be ascending')
+                return
+            end if
+        end do
+    end subroutine check_grid
+
+end module seispulse_stickslip
