@@ -37,8 +37,10 @@ contains
     !>
     !> Converged when the bracket is narrower than 4 eps |x| + xtol. Termination
     !> is guaranteed: after `max_iter` evaluations stat = SEISPULSE_NO_CONVERGENCE
-    !> and x is the best point found.
-    subroutine find_root(f, a, b, x, stat, errmsg, xtol, max_iter, fa_known, fb_known, n_eval)
+    !> and x is the best point found. Recursive: f may itself solve with find_root
+    !> (nested solves, e.g. a root in a parameter of a root).
+    recursive subroutine find_root(f, a, b, x, stat, errmsg, xtol, max_iter, fa_known, &
+                                   fb_known, n_eval)
         class(scalar_function), intent(inout) :: f            !! function whose root is sought
         real(dp), intent(in) :: a                             !! one end of the bracket
         real(dp), intent(in) :: b                             !! other end of the bracket

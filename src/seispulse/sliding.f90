@@ -643,16 +643,16 @@ contains
         k1 = eta1
         k2 = eta1
         stat = SEISPULSE_SUCCESS
-        if (ieee_is_nan(mu) .or. .not. (mu > 0.0_dp .and. mu < inf)) then
+        if (outside(mu, 0.0_dp, inf, .true., .true.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'mu = '//real_str(mu) &
                            //': must be a finite friction coefficient > 0')
-        else if (ieee_is_nan(ag_over_g) .or. .not. (ag_over_g > 0.0_dp .and. ag_over_g < inf)) then
+        else if (outside(ag_over_g, 0.0_dp, inf, .true., .true.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ag = '//real_str(ag_over_g) &
                            //': must be a finite pulse amplitude > 0 (in g)')
-        else if (ieee_is_nan(slope_deg) .or. .not. (slope_deg >= 0.0_dp .and. slope_deg < 90.0_dp)) then
+        else if (outside(slope_deg, 0.0_dp, 90.0_dp, .false., .true.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'slope_deg = ' &
                            //real_str(slope_deg)//': must be in [0, 90) degrees')
-        else if (ieee_is_nan(xi_deg) .or. .not. (abs(xi_deg) <= 90.0_dp)) then
+        else if (outside(xi_deg, -90.0_dp, 90.0_dp, .false., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'xi_deg = ' &
                            //real_str(xi_deg)//': must be in [-90, 90] degrees')
         end if
@@ -732,13 +732,13 @@ contains
         type(half_cycle_t) :: h
         type(full_cycle_t) :: f
         stat = SEISPULSE_SUCCESS
-        if (ieee_is_nan(ag_over_g) .or. .not. (ag_over_g > 0.0_dp .and. ag_over_g <= huge(g))) then
+        if (outside(ag_over_g, 0.0_dp, huge(g), .true., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ag = '//real_str(ag_over_g) &
                            //': must be a finite pulse amplitude > 0 (in g)')
-        else if (ieee_is_nan(td) .or. .not. (td > 0.0_dp .and. td <= huge(td))) then
+        else if (outside(td, 0.0_dp, huge(td), .true., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'td = '//real_str(td) &
                            //': must be a finite duration > 0 (s)')
-        else if (ieee_is_nan(g) .or. .not. (g > 0.0_dp .and. g <= huge(g))) then
+        else if (outside(g, 0.0_dp, huge(g), .true., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(g) &
                            //': must be a finite acceleration > 0 (m/s2)')
         end if
@@ -809,9 +809,10 @@ contains
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
         stat = SEISPULSE_SUCCESS
-        if (ieee_is_nan(eta) .or. .not. (eta > 0.0_dp)) call set_error(stat, errmsg, &
-            SEISPULSE_INVALID_INPUT, name//' = '//real_str(eta)//': must be > 0 ' &
-            //'(a_y/A_g; eta >= 1 means no sliding)')
+        ! +inf is allowed: no sliding that way
+        if (outside(eta, 0.0_dp, ieee_value(eta, ieee_positive_inf), .true., .false.)) &
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, name//' = '//real_str(eta) &
+                           //': must be > 0 (a_y/A_g; eta >= 1 means no sliding)')
     end subroutine check_eta
 
     subroutine check_static(a, stat, errmsg)
@@ -819,9 +820,29 @@ contains
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
         stat = SEISPULSE_SUCCESS
-        if (ieee_is_nan(a) .or. .not. (a >= 1.0_dp .and. a <= huge(a))) call set_error(stat, &
+        if (outside(a, 1.0_dp, huge(a), .false., .false.)) call set_error(stat, &
             errmsg, SEISPULSE_INVALID_INPUT, 'static_factor = '//real_str(a) &
             //': must be a finite number >= 1 (static over kinetic friction)')
     end subroutine check_static
+
+    !> x is NaN or outside [lo, hi] (an end excluded when open). NaN is tested first: an
+    !> ordered comparison on NaN raises the invalid flag (and traps in checked builds).
+    elemental logical function outside(x, lo, hi, open_lo, open_hi)
+        real(dp), intent(in) :: x, lo, hi
+        logical, intent(in) :: open_lo, open_hi
+        if (ieee_is_nan(x)) then
+            outside = .true.
+        else if (open_lo) then
+            outside = .not. (x > lo)
+        else
+            outside = x < lo
+        end if
+        if (outside) return
+        if (open_hi) then
+            outside = .not. (x < hi)
+        else
+            outside = x > hi
+        end if
+    end function outside
 
 end module seispulse_sliding
