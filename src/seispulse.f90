@@ -8,7 +8,7 @@ module seispulse
                                 SEISPULSE_INTERNAL, status_name
     use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, &
                                  sin_pi, cos_pi
-    use seispulse_roots, only: scalar_function, find_root
+    use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
     use seispulse_lapack, only: solve_linear
     use seispulse_pulses, only: exp_pulse, exp_pulse_point, exp_pulse_peaks, &
                                 exp_pulse_impulse_amplitude, pulse_t, pulse_validate, &

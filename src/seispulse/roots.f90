@@ -11,7 +11,7 @@ module seispulse_roots
     implicit none
     private
 
-    public :: scalar_function, find_root
+    public :: scalar_function, find_root, smooth_function, find_root_newton
 
     !> A real function of one real variable, with its parameters as components.
     type, abstract :: scalar_function
@@ -29,7 +29,154 @@ module seispulse_roots
         end function scalar_eval
     end interface
 
+    !> A function with its derivative, for `find_root_newton`.
+    type, abstract, extends(scalar_function) :: smooth_function
+    contains
+        procedure(value_and_slope), deferred :: eval_slope
+    end type smooth_function
+
+    abstract interface
+        !> Value y = f(x) and derivative dy = f'(x).
+        subroutine value_and_slope(self, x, y, dy)
+            import :: smooth_function, dp
+            class(smooth_function), intent(inout) :: self  !! the function and its parameters
+            real(dp), intent(in) :: x                      !! abscissa
+            real(dp), intent(out) :: y                     !! f(x)
+            real(dp), intent(out) :: dy                    !! f'(x)
+        end subroutine value_and_slope
+    end interface
+
 contains
+
+    !> Find x in [a, b] with f(x) = 0, given f(a) f(b) <= 0, by Newton steps kept inside
+    !> the bracket (rtsafe): a step that would leave the bracket, or that does not halve
+    !> the previous one, is replaced by bisection, and the bracket shrinks at every
+    !> evaluation. Quadratic convergence where Newton works, bisection's guarantee
+    !> otherwise; the same convergence test, statuses and evaluation limit as `find_root`.
+    !> For problems whose derivative is cheap next to the value.
+    recursive subroutine find_root_newton(f, a, b, x, stat, errmsg, max_iter, fa_known, &
+                                          fb_known, n_eval)
+        class(smooth_function), intent(inout) :: f            !! function whose root is sought
+        real(dp), intent(in) :: a                             !! one end of the bracket
+        real(dp), intent(in) :: b                             !! other end of the bracket
+        real(dp), intent(out) :: x                            !! the root (best estimate)
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        integer, intent(in), optional :: max_iter             !! evaluation limit (default 1000)
+        real(dp), intent(in), optional :: fa_known            !! f(a), if the caller has it
+        real(dp), intent(in), optional :: fb_known            !! f(b), if the caller has it
+        integer, intent(out), optional :: n_eval              !! evaluations used
+        real(dp) :: fa, fb, xl, xh, fx, dfx, step, step_old, tol
+        integer :: iter, limit, evals
+        limit = 1000
+        if (present(max_iter)) limit = max_iter
+        evals = 0
+        x = a
+        if (.not. (ieee_is_finite(a) .and. ieee_is_finite(b))) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'bracket: both ends must be finite numbers')
+            call report_evals()
+            return
+        end if
+        if (present(fa_known)) then
+            fa = fa_known
+        else
+            fa = f%eval(a)
+            evals = evals + 1
+        end if
+        if (present(fb_known)) then
+            fb = fb_known
+        else
+            fb = f%eval(b)
+            evals = evals + 1
+        end if
+        if (.not. (ieee_is_finite(fa) .and. ieee_is_finite(fb))) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'bracket: function value at an end is not a finite number')
+            call report_evals()
+            return
+        end if
+        stat = SEISPULSE_SUCCESS
+        if (is_zero(fa)) then
+            call report_evals()
+            return
+        end if
+        x = b
+        if (is_zero(fb)) then
+            call report_evals()
+            return
+        end if
+        if ((fa > 0.0_dp .and. fb > 0.0_dp) .or. (fa < 0.0_dp .and. fb < 0.0_dp)) then
+            call set_error(stat, errmsg, SEISPULSE_NO_BRACKET, &
+                           'bracket: f(a) and f(b) have the same sign')
+            call report_evals()
+            return
+        end if
+        ! xl: the end where f < 0, xh: where f > 0
+        if (fa < 0.0_dp) then
+            xl = a
+            xh = b
+        else
+            xl = b
+            xh = a
+        end if
+        ! start from the secant point of the bracket
+        x = a - fa * ((b - a) / (fb - fa))
+        step_old = abs(b - a)
+        step = step_old
+        call f%eval_slope(x, fx, dfx)
+        evals = evals + 1
+        do iter = 1, limit
+            if (.not. (ieee_is_finite(fx) .and. ieee_is_finite(dfx))) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                               'function: value inside the bracket is not a finite number')
+                call report_evals()
+                return
+            end if
+            if (is_zero(fx)) then
+                call report_evals()
+                return
+            end if
+            if (fx < 0.0_dp) then
+                xl = x
+            else
+                xh = x
+            end if
+            tol = 2.0_dp * epsilon(1.0_dp) * abs(x)
+            if (.not. (abs(xh - xl) > 2.0_dp * tol)) then
+                call report_evals()
+                return
+            end if
+            if (((x - xh) * dfx - fx) * ((x - xl) * dfx - fx) > 0.0_dp &
+                .or. abs(2.0_dp * fx) > abs(step_old * dfx)) then
+                ! Newton would leave the bracket or converges too slowly: bisect
+                step_old = step
+                step = 0.5_dp * (xh - xl)
+                x = xl + step
+            else
+                step_old = step
+                step = fx / dfx
+                x = x - step
+            end if
+            if (.not. (abs(step) > tol)) then
+                call report_evals()
+                return
+            end if
+            call f%eval_slope(x, fx, dfx)
+            evals = evals + 1
+            if (evals >= limit) exit
+        end do
+        call set_error(stat, errmsg, SEISPULSE_NO_CONVERGENCE, &
+                       'root: iteration limit reached before the bracket closed')
+        call report_evals()
+
+    contains
+
+        subroutine report_evals()
+            if (present(n_eval)) n_eval = evals
+        end subroutine report_evals
+
+    end subroutine find_root_newton
 
     !> Find x in [a, b] with f(x) = 0, given f(a) f(b) <= 0 (Brent's method:
     !> inverse quadratic interpolation, secant and bisection steps; the bracket

@@ -21,7 +21,7 @@ module seispulse_sliding
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error, real_str
     use seispulse_special, only: expm1, log1p, pi
-    use seispulse_roots, only: scalar_function, find_root
+    use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
     use seispulse_pulses, only: exp_consts_t, exp_consts, exp_eval, exponential_pulse, &
                                 check_beta
     use seispulse_stickslip, only: friction_t, stickslip_result_t, stickslip_pulse
@@ -99,12 +99,14 @@ module seispulse_sliding
     !> Relative velocity of a forward slide from rest at tau0, the left side of Eq. 1.8
     !> (half cycle) or of the corrected Eq. 1.19 (full cycle), in the form of Eq. 1.4:
     !> w(tau) = v_g(tau) - v_g(tau0) - eta (tau - tau0).
-    type, extends(scalar_function) :: slide_velocity
+    !> Its slope is the relative acceleration a_g(tau) - eta (for Newton's method).
+    type, extends(smooth_function) :: slide_velocity
         type(exp_consts_t) :: c
         logical :: full = .false.
         real(dp) :: tau0 = 0.0_dp, v0 = 0.0_dp, eta = 0.0_dp
     contains
         procedure :: eval => slide_velocity_eval
+        procedure :: eval_slope => slide_velocity_slope
     end type slide_velocity
 
     !> tau_m1(eta) - 1 - tau_y(eta): zero on the stick/slip boundary (section 5.1).
@@ -204,7 +206,8 @@ contains
             tau_m = tau0 + h
         else
             ! forced stop, Eq. 1.8 / corrected 1.19 / section 7.4: w > 0 at tau_k and falls
-            ! monotonically to w < 0 at the upper end, so the root is unique
+            ! monotonically to w < 0 at the upper end, so the root is unique (safeguarded
+            ! Newton: the slope a_g - eta comes with the value)
             if (full) then
                 ! v_g(2 - tau_y) = v_g(tau_y) <= v_g(tau0): w(2 - tau_y) < 0 (section 4.2)
                 hi = 2.0_dp - onset_time(eta, c%beta)
@@ -213,7 +216,8 @@ contains
             end if
             w_hi = w%eval(hi)
             if (w_hi < 0.0_dp) then
-                call find_root(w, tau_k, hi, tau_m, stat, errmsg, fa_known=w_k, fb_known=w_hi)
+                call find_root_newton(w, tau_k, hi, tau_m, stat, errmsg, fa_known=w_k, &
+                                      fb_known=w_hi)
                 if (stat /= SEISPULSE_SUCCESS) return
             else
                 ! on the free/forced boundary (tau_m = 1 up to rounding)
@@ -237,6 +241,16 @@ contains
         call exp_eval(self%c, x, self%full, a, v, d)
         y = (v - self%v0) - self%eta * (x - self%tau0)
     end function slide_velocity_eval
+
+    subroutine slide_velocity_slope(self, x, y, dy)
+        class(slide_velocity), intent(inout) :: self
+        real(dp), intent(in) :: x
+        real(dp), intent(out) :: y, dy
+        real(dp) :: a, v, d
+        call exp_eval(self%c, x, self%full, a, v, d)
+        y = (v - self%v0) - self%eta * (x - self%tau0)
+        dy = a - self%eta
+    end subroutine slide_velocity_slope
 
     !> V_m/V_g of the spike limit (beta = +inf) with onset resistance eta_on and kinetic
     !> eta: [(1 - eta_on) + (1 - eta) + eta ln(eta_on eta)]/2; 1 - eta(1 - ln eta) for
