@@ -687,17 +687,22 @@ contains
     end subroutine pulse_eval
 
     !> Pulse at time t (s), unchecked: for integrators that have validated `p` once.
-    !> Each call recomputes the beta constants of an exponential pulse (two exp calls);
-    !> for many times at once `pulse_eval` computes them once.
-    elemental subroutine pulse_at(p, t, a, v, d)
-        type(pulse_t), intent(in) :: p  !! a valid pulse
-        real(dp), intent(in) :: t       !! time (s)
-        real(dp), intent(out) :: a      !! acceleration (m/s^2)
-        real(dp), intent(out) :: v      !! velocity (m/s)
-        real(dp), intent(out) :: d      !! displacement (m)
+    !> Without `consts` each call recomputes the beta constants of an exponential pulse
+    !> (two exp calls); an integrator passes `exp_consts(p%beta)` computed once.
+    elemental subroutine pulse_at(p, t, a, v, d, consts)
+        type(pulse_t), intent(in) :: p                          !! a valid pulse
+        real(dp), intent(in) :: t                               !! time (s)
+        real(dp), intent(out) :: a                              !! acceleration (m/s^2)
+        real(dp), intent(out) :: v                              !! velocity (m/s)
+        real(dp), intent(out) :: d                              !! displacement (m)
+        type(exp_consts_t), intent(in), optional :: consts      !! exp_consts(p%beta)
         type(exp_consts_t) :: c
-        if (p%kind == PULSE_EXPONENTIAL) c = exp_consts(p%beta)
-        call pulse_point(p, c, pulse_end_time(p), t, a, v, d)
+        if (present(consts)) then
+            call pulse_point(p, consts, pulse_end_time(p), t, a, v, d)
+        else
+            if (p%kind == PULSE_EXPONENTIAL) c = exp_consts(p%beta)
+            call pulse_point(p, c, pulse_end_time(p), t, a, v, d)
+        end if
     end subroutine pulse_at
 
     !> One point in SI. Before t = 0 the ground is at rest (tested on t itself: a tiny

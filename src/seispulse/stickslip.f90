@@ -42,6 +42,7 @@ module seispulse_stickslip
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_special, only: pi
     use seispulse_pulses, only: pulse_t, pulse_validate, pulse_at, pulse_breaks, &
+                                exp_consts_t, exp_consts, &
                                 PULSE_EXPONENTIAL, PULSE_HALF_SINE, PULSE_SINE_CYCLE, &
                                 PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
                                 PULSE_RICKER, PULSE_MP
@@ -102,6 +103,7 @@ module seispulse_stickslip
         integer :: src = SRC_PULSE
         integer :: what = EVAL_ACCEL       !! EVAL_ACCEL: a_g - level; EVAL_VELOCITY: w
         type(pulse_t) :: p                 !! the pulse (SRC_PULSE)
+        type(exp_consts_t) :: cexp         !! its beta constants (exponential kind)
         real(dp) :: level = 0.0_dp         !! subtracted from a_g (EVAL_ACCEL)
         real(dp) :: t0 = 0.0_dp            !! record step: start time
         real(dp) :: a0 = 0.0_dp            !! record step: a_g at t0
@@ -217,6 +219,7 @@ contains
 
         g%src = SRC_PULSE
         g%p = p
+        if (p%kind == PULSE_EXPONENTIAL) g%cexp = exp_consts(p%beta)   ! once per run
         call pulse_pieces_init(it, p)
         call integrate(g, it, fr, no_record, res, stat, errmsg, t_grid, u_grid, w_grid)
     end subroutine stickslip_pulse
@@ -604,7 +607,7 @@ contains
         real(dp) :: a
         real(dp) :: v, d
         if (g%src == SRC_PULSE) then
-            call pulse_at(g%p, t, a, v, d)
+            call pulse_at(g%p, t, a, v, d, g%cexp)
         else
             a = g%a0 + g%slope * (t - g%t0)
         end if
@@ -620,7 +623,7 @@ contains
         g%w_ref = w
         g%c = c
         if (g%src == SRC_PULSE) then
-            call pulse_at(g%p, t, a, g%v_ref, g%d_ref)
+            call pulse_at(g%p, t, a, g%v_ref, g%d_ref, g%cexp)
         else
             g%a_ref = g%a0 + g%slope * (t - g%t0)
         end if
@@ -635,7 +638,7 @@ contains
         real(dp) :: h, a, v, d
         h = t - g%t_ref
         if (g%src == SRC_PULSE) then
-            call pulse_at(g%p, t, a, v, d)
+            call pulse_at(g%p, t, a, v, d, g%cexp)
             w = g%w_ref + (v - g%v_ref) - g%c * h
             u = g%u_ref + g%w_ref * h + ((d - g%d_ref) - g%v_ref * h) - 0.5_dp * g%c * h * h
         else
@@ -761,7 +764,7 @@ contains
                 if (tb > ta) then
                     it%t_lo = tb
                     aa = it%a_lo
-                    call pulse_at(g%p, tb, ab, v, d)
+                    call pulse_at(g%p, tb, ab, v, d, g%cexp)
                     it%a_lo = ab
                     found = .true.
                     return
@@ -773,7 +776,7 @@ contains
                 tb = it%breaks(it%next + 1)
                 it%next = it%next + 1
                 if (tb > ta) then
-                    call pulse_at(g%p, ta, aa, v, d)
+                    call pulse_at(g%p, ta, aa, v, d, g%cexp)
                     ab = accel_before(g%p, tb)
                     found = .true.
                     return
