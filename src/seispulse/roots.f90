@@ -68,47 +68,11 @@ contains
         integer, intent(out), optional :: n_eval              !! evaluations used
         real(dp) :: fa, fb, xl, xh, fx, dfx, step, step_old, tol
         integer :: iter, limit, evals
+        logical :: done
         limit = 1000
         if (present(max_iter)) limit = max_iter
-        evals = 0
-        x = a
-        if (.not. (ieee_is_finite(a) .and. ieee_is_finite(b))) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
-                           'bracket: both ends must be finite numbers')
-            call report_evals()
-            return
-        end if
-        if (present(fa_known)) then
-            fa = fa_known
-        else
-            fa = f%eval(a)
-            evals = evals + 1
-        end if
-        if (present(fb_known)) then
-            fb = fb_known
-        else
-            fb = f%eval(b)
-            evals = evals + 1
-        end if
-        if (.not. (ieee_is_finite(fa) .and. ieee_is_finite(fb))) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
-                           'bracket: function value at an end is not a finite number')
-            call report_evals()
-            return
-        end if
-        stat = SEISPULSE_SUCCESS
-        if (is_zero(fa)) then
-            call report_evals()
-            return
-        end if
-        x = b
-        if (is_zero(fb)) then
-            call report_evals()
-            return
-        end if
-        if ((fa > 0.0_dp .and. fb > 0.0_dp) .or. (fa < 0.0_dp .and. fb < 0.0_dp)) then
-            call set_error(stat, errmsg, SEISPULSE_NO_BRACKET, &
-                           'bracket: f(a) and f(b) have the same sign')
+        call open_bracket(f, a, b, fa_known, fb_known, fa, fb, x, evals, stat, errmsg, done)
+        if (done) then
             call report_evals()
             return
         end if
@@ -201,56 +165,19 @@ contains
         integer, intent(out), optional :: n_eval              !! evaluations used
         real(dp) :: xa, xb, xc, fa, fb, fc, d, e, tol1, xm, p, q, r, s, abs_tol
         integer :: iter, limit, evals
+        logical :: done
 
         abs_tol = 0.0_dp
         if (present(xtol)) abs_tol = max(xtol, 0.0_dp)
         limit = 1000
         if (present(max_iter)) limit = max_iter
-        evals = 0
-        x = a
-        if (.not. (ieee_is_finite(a) .and. ieee_is_finite(b))) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
-                           'bracket: both ends must be finite numbers')
+        call open_bracket(f, a, b, fa_known, fb_known, fa, fb, x, evals, stat, errmsg, done)
+        if (done) then
             call report_evals()
             return
         end if
         xa = a
         xb = b
-        if (present(fa_known)) then
-            fa = fa_known
-        else
-            fa = f%eval(xa)
-            evals = evals + 1
-        end if
-        if (present(fb_known)) then
-            fb = fb_known
-        else
-            fb = f%eval(xb)
-            evals = evals + 1
-        end if
-        if (.not. (ieee_is_finite(fa) .and. ieee_is_finite(fb))) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
-                           'bracket: function value at an end is not a finite number')
-            call report_evals()
-            return
-        end if
-        stat = SEISPULSE_SUCCESS
-        if (is_zero(fa)) then
-            x = xa
-            call report_evals()
-            return
-        end if
-        if (is_zero(fb)) then
-            x = xb
-            call report_evals()
-            return
-        end if
-        if ((fa > 0.0_dp .and. fb > 0.0_dp) .or. (fa < 0.0_dp .and. fb < 0.0_dp)) then
-            call set_error(stat, errmsg, SEISPULSE_NO_BRACKET, &
-                           'bracket: f(a) and f(b) have the same sign')
-            call report_evals()
-            return
-        end if
 
         xc = xb
         fc = fb
@@ -335,6 +262,57 @@ contains
         end subroutine report_evals
 
     end subroutine find_root
+
+    !> The start both root finders share: f at the ends (unless the caller knows it), the
+    !> checks, a zero at an end, the sign change. done: x is final or stat /= 0.
+    recursive subroutine open_bracket(f, a, b, fa_known, fb_known, fa, fb, x, evals, stat, &
+                                      errmsg, done)
+        class(scalar_function), intent(inout) :: f
+        real(dp), intent(in) :: a, b
+        real(dp), intent(in), optional :: fa_known, fb_known
+        real(dp), intent(out) :: fa, fb, x
+        integer, intent(out) :: evals, stat
+        character(len=*), intent(inout), optional :: errmsg
+        logical, intent(out) :: done
+        evals = 0
+        x = a
+        fa = 0.0_dp
+        fb = 0.0_dp
+        done = .true.
+        if (.not. (ieee_is_finite(a) .and. ieee_is_finite(b))) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'bracket: both ends must be finite numbers')
+            return
+        end if
+        if (present(fa_known)) then
+            fa = fa_known
+        else
+            fa = f%eval(a)
+            evals = evals + 1
+        end if
+        if (present(fb_known)) then
+            fb = fb_known
+        else
+            fb = f%eval(b)
+            evals = evals + 1
+        end if
+        if (.not. (ieee_is_finite(fa) .and. ieee_is_finite(fb))) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'bracket: function value at an end is not a finite number')
+            return
+        end if
+        stat = SEISPULSE_SUCCESS
+        if (is_zero(fa)) return
+        x = b
+        if (is_zero(fb)) return
+        if ((fa > 0.0_dp .and. fb > 0.0_dp) .or. (fa < 0.0_dp .and. fb < 0.0_dp)) then
+            x = a
+            call set_error(stat, errmsg, SEISPULSE_NO_BRACKET, &
+                           'bracket: f(a) and f(b) have the same sign')
+            return
+        end if
+        done = .false.
+    end subroutine open_bracket
 
     !> True for +0 and -0 (avoids an equality test on reals).
     elemental logical function is_zero(v)
