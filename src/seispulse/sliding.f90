@@ -226,7 +226,8 @@ contains
             regime = REGIME_FORCED
             if (tau_m > 1.0_dp) regime = REGIME_FREE
         end if
-        ! Eq. 1.5: u_m = u_g(tau_m) - u_g(tau0) - (tau_m - tau0) v_g(tau0) - eta (tau_m - tau0)^2/2
+        ! Eq. 1.5: u_m = u_g(tau_m) - u_g(tau0) - (tau_m - tau0) v_g(tau0)
+        !                - eta (tau_m - tau0)^2/2
         call exp_eval(c, tau_m, full, a, v, d)
         h = tau_m - tau0
         dug = d - d0
@@ -237,9 +238,8 @@ contains
         class(slide_velocity), intent(inout) :: self
         real(dp), intent(in) :: x
         real(dp) :: y
-        real(dp) :: a, v, d
-        call exp_eval(self%c, x, self%full, a, v, d)
-        y = (v - self%v0) - self%eta * (x - self%tau0)
+        real(dp) :: dy
+        call self%eval_slope(x, y, dy)
     end function slide_velocity_eval
 
     subroutine slide_velocity_slope(self, x, y, dy)
