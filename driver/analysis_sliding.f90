@@ -20,7 +20,7 @@ module driver_sliding
                                  inclined_resistances, summarize_slides, mode_name
     use seispulse_stickslip, only: friction_t, stickslip_result_t, stickslip_pulse
     use driver_namelist_scan, only: nml_group, lower
-    use driver_input, only: group_reader, find_group, check_keys, read_group, located, join
+    use driver_input, only: find_group, located, join, read_optional, given
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, finite_positive
     use driver_tables, only: write_tables
@@ -243,46 +243,6 @@ contains
         names_pulse_key = .false.
         if (k > 1) names_pulse_key = any(pulse_keys == msg(1:k - 1))
     end function names_pulse_key
-
-    !> Check the keys of an optional group and read it; an empty group if absent.
-    subroutine read_optional(path, groups, name, keys, reader, group, stat, errmsg)
-        character(len=*), intent(in) :: path
-        type(nml_group), intent(in) :: groups(:)
-        character(len=*), intent(in) :: name
-        character(len=*), intent(in) :: keys(:)
-        procedure(group_reader) :: reader
-        type(nml_group), intent(out) :: group
-        integer, intent(out) :: stat
-        character(len=:), allocatable, intent(out) :: errmsg
-        integer :: k
-        stat = 0
-        errmsg = ''
-        k = find_group(groups, name)
-        if (k == 0) then
-            group%name = name
-            group%line = 0
-            allocate(group%items(0))
-            return
-        end if
-        group = groups(k)
-        call check_keys(path, group, keys, stat, errmsg)
-        if (stat /= 0) return
-        call read_group(path, group, reader, stat, errmsg)
-    end subroutine read_optional
-
-    !> Whether `key` was written in `group`.
-    pure logical function given(group, key)
-        type(nml_group), intent(in) :: group
-        character(len=*), intent(in) :: key
-        integer :: i
-        given = .false.
-        do i = 1, size(group%items)
-            if (group%items(i)%key == key) then
-                given = .true.
-                return
-            end if
-        end do
-    end function given
 
     !> Check &block and make the list of cases. errmsg is empty on success.
     subroutine check_block(path, gb, pin, cases, input_mode, errmsg)

@@ -6,6 +6,7 @@ module driver_input
     private
 
     public :: group_reader, find_group, check_keys, read_group, located, join
+    public :: read_optional, given
 
     abstract interface
         !> Read one namelist group into the analysis' variables: from `unit`, or
@@ -95,6 +96,46 @@ contains
         end do
         errmsg = located(path, group)//'cannot read the group ('//trim(iomsg)//')'
     end subroutine read_group
+
+    !> Check the keys of an optional group and read it; an empty group (line 0) if absent.
+    subroutine read_optional(path, groups, name, keys, reader, group, stat, errmsg)
+        character(len=*), intent(in) :: path              !! input file (for messages)
+        type(nml_group), intent(in) :: groups(:)          !! scanned groups
+        character(len=*), intent(in) :: name              !! group name
+        character(len=*), intent(in) :: keys(:)           !! its allowed keys
+        procedure(group_reader) :: reader
+        type(nml_group), intent(out) :: group             !! the group, or an empty one
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        integer :: k
+        stat = 0
+        errmsg = ''
+        k = find_group(groups, name)
+        if (k == 0) then
+            group%name = name
+            group%line = 0
+            allocate(group%items(0))
+            return
+        end if
+        group = groups(k)
+        call check_keys(path, group, keys, stat, errmsg)
+        if (stat /= 0) return
+        call read_group(path, group, reader, stat, errmsg)
+    end subroutine read_optional
+
+    !> Whether `key` was written in `group`.
+    pure logical function given(group, key)
+        type(nml_group), intent(in) :: group
+        character(len=*), intent(in) :: key
+        integer :: i
+        given = .false.
+        do i = 1, size(group%items)
+            if (group%items(i)%key == key) then
+                given = .true.
+                return
+            end if
+        end do
+    end function given
 
     !> "file:line: &group: " prefix of a message.
     function located(path, group) result(prefix)

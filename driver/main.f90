@@ -10,6 +10,7 @@ program seispulse_driver
     use driver_input, only: find_group, check_keys, read_group, located, join
     use driver_pulse, only: run_pulse, pulse_groups
     use driver_sliding, only: run_sliding, sliding_groups
+    use driver_rocking, only: run_rocking, rocking_groups
     use driver_run_group, only: run_analysis, run_output, read_run, run_keys, write_run
     implicit none
 
@@ -21,10 +22,11 @@ program seispulse_driver
         end subroutine c_exit
     end interface
 
-    character(len=8), parameter :: analyses(2) = [character(len=8) :: 'pulse', 'sliding']
+    character(len=8), parameter :: analyses(3) = [character(len=8) :: 'pulse', 'sliding', &
+        'rocking']
     !> Every group of any analysis (besides run), for the first check.
-    character(len=8), parameter :: all_groups(5) = [character(len=8) :: 'pulse', 'time', &
-        'block', 'method', 'history']
+    character(len=8), parameter :: all_groups(7) = [character(len=8) :: 'pulse', 'time', &
+        'block', 'method', 'history', 'rocking', 'map']
 
     character(len=:), allocatable :: path, errmsg
     character(len=4096) :: arg
@@ -70,6 +72,10 @@ program seispulse_driver
         call check_groups(sliding_groups)
         call write_run(output_unit)
         call run_sliding(path, groups, run_output(), stat, errmsg)
+    case ('rocking')
+        call check_groups(rocking_groups)
+        call write_run(output_unit)
+        call run_rocking(path, groups, run_output(), stat, errmsg)
     case ('')
         call fail(located(path, groups(irun))//'analysis: missing (allowed: '//join(analyses)//')')
     case default

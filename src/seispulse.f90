@@ -33,6 +33,19 @@ module seispulse
                                  MODE_REVERSE_ONLY
     use seispulse_sliding_norm, only: characteristic_length, basic_lengths, &
                                       table_1_2_exponents, table_1_3
+    use seispulse_rocking, only: ROCK_NONE, ROCK_O1, ROCK_O2, ROCK_O3, ROCK_S1, ROCK_S2, &
+                                 rocking_region_name, uplift_time, rocking_response, &
+                                 stability_wall, stability_wall_inverse, overturn_boundary, &
+                                 overturn_boundary_inverse, s1_s2_boundary, rocking_classify, &
+                                 critical_time, time_of_max, max_rotation, impact_time, &
+                                 rocking_summary, rocking_extremes, &
+                                 rect_time_of_max_normalized, rect_max_rotation_normalized, &
+                                 rect_impact_time_normalized
+    use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rectangular_block, &
+                                     symmetric_block, rocking_block_validate, rock_pulse, &
+                                     rock_record, overturning_map, ROCK_REST, ROCK_NO_UPLIFT, &
+                                     ROCK_OVERTURN_NO_IMPACT, ROCK_OVERTURN_ONE_IMPACT, &
+                                     ROCK_OVERTURN_MANY, ROCK_TIME_LIMIT
     implicit none
     public
 

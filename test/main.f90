@@ -9,6 +9,8 @@ program tester
     use test_pulses, only: collect_pulses
     use test_stickslip, only: collect_stickslip
     use test_sliding, only: collect_sliding
+    use test_rocking, only: collect_rocking
+    use test_rocking_sim, only: collect_rocking_sim
     implicit none
     character(len=64) :: wanted
     integer :: npass, nfail, nrun
@@ -42,6 +44,14 @@ program tester
     if (selected('sliding')) then
         call collect_sliding(tests)
         call run_suite('sliding', tests, output_unit, npass, nfail)
+    end if
+    if (selected('rocking')) then
+        call collect_rocking(tests)
+        call run_suite('rocking', tests, output_unit, npass, nfail)
+    end if
+    if (selected('rocking_sim')) then
+        call collect_rocking_sim(tests)
+        call run_suite('rocking_sim', tests, output_unit, npass, nfail)
     end if
     if (nrun == 0) then
         write(error_unit, '(a)') 'unknown suite: '//trim(wanted)

@@ -427,3 +427,227 @@ subroutine sp_stickslip(kind, params, nrec, accel, dt, ay_fwd, ay_rev, sfac, sta
     end do
     summary = [res%u_final, res%u_max, res%u_min, res%t_end]
 end subroutine sp_stickslip
+
+! ---------------------------------------------------------------------------------
+! Rocking blocks: linearized closed forms (seispulse_rocking)
+! ---------------------------------------------------------------------------------
+
+!> Everything of the first excursion per case: region, tau_up, tau_c, tau_m, psi_max, tau_i.
+subroutine sp_rocking_summary(n, f, eta, beta, region, out, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_rocking, only: rocking_summary
+    implicit none
+    integer, intent(in) :: n
+    real(dp), intent(in) :: f(n), eta(n), beta(n)
+    integer, intent(out) :: region(n)
+    real(dp), intent(out) :: out(n, 5)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    integer :: i
+    errmsg = ''
+    stat = SEISPULSE_SUCCESS
+    do i = 1, n
+        call rocking_summary(f(i), eta(i), beta(i), region(i), out(i, 1), out(i, 2), out(i, 3), &
+                             out(i, 4), out(i, 5), stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+    end do
+end subroutine sp_rocking_summary
+
+!> Region and theta_max/alpha per case (the fast path of classify and max_rotation).
+subroutine sp_rocking_extremes(n, f, eta, beta, region, psi_max, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_rocking, only: rocking_extremes
+    implicit none
+    integer, intent(in) :: n
+    real(dp), intent(in) :: f(n), eta(n), beta(n)
+    integer, intent(out) :: region(n)
+    real(dp), intent(out) :: psi_max(n)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    integer :: i
+    errmsg = ''
+    stat = SEISPULSE_SUCCESS
+    do i = 1, n
+        call rocking_extremes(f(i), eta(i), beta(i), region(i), psi_max(i), stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+    end do
+end subroutine sp_rocking_extremes
+
+!> psi and dpsi of the first excursion at the times tau (one f, eta, beta per point).
+subroutine sp_rocking_response(n, tau, f, eta, beta, psi, dpsi, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_rocking, only: rocking_response
+    implicit none
+    integer, intent(in) :: n
+    real(dp), intent(in) :: tau(n), f(n), eta(n), beta(n)
+    real(dp), intent(out) :: psi(n), dpsi(n)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    integer :: i
+    errmsg = ''
+    stat = SEISPULSE_SUCCESS
+    do i = 1, n
+        call rocking_response(tau(i), f(i), eta(i), beta(i), psi(i), dpsi(i), stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+    end do
+end subroutine sp_rocking_response
+
+!> Boundaries in the (f, eta) plane and their inverses, per element. which: 1 uplift time
+!> (x = eta), 2 stability wall (x = f), 3 its inverse (x = eta), 4 overturn boundary at the
+!> end (x = f), 5 at mid-pulse (x = f), 6/7 their inverses (x = eta), 8 S1/S2 boundary (x = f).
+subroutine sp_rocking_curve(n, which, x, beta, y, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_rocking, only: uplift_time, stability_wall, stability_wall_inverse, &
+                                 overturn_boundary, overturn_boundary_inverse, s1_s2_boundary
+    implicit none
+    integer, intent(in) :: n, which
+    real(dp), intent(in) :: x(n), beta(n)
+    real(dp), intent(out) :: y(n)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    integer :: i
+    errmsg = ''
+    stat = SEISPULSE_SUCCESS
+    do i = 1, n
+        select case (which)
+        case (1)
+            call uplift_time(x(i), beta(i), y(i), stat, errmsg)
+        case (2)
+            call stability_wall(x(i), beta(i), y(i), stat, errmsg)
+        case (3)
+            call stability_wall_inverse(x(i), beta(i), y(i), stat, errmsg)
+        case (4)
+            call overturn_boundary(x(i), beta(i), .true., y(i), stat, errmsg)
+        case (5)
+            call overturn_boundary(x(i), beta(i), .false., y(i), stat, errmsg)
+        case (6)
+            call overturn_boundary_inverse(x(i), beta(i), .true., y(i), stat, errmsg)
+        case (7)
+            call overturn_boundary_inverse(x(i), beta(i), .false., y(i), stat, errmsg)
+        case default
+            call s1_s2_boundary(x(i), beta(i), y(i), stat, errmsg)
+        end select
+        if (stat /= SEISPULSE_SUCCESS) return
+    end do
+end subroutine sp_rocking_curve
+
+!> Normalized rectangle forms (2.27, corrected 2.30, corrected 2.35); 0 < fbar < 1, 0 < eta < 1.
+subroutine sp_rocking_rect_normalized(n, fbar, eta, out)
+    use seispulse_kinds, only: dp
+    use seispulse_rocking, only: rect_time_of_max_normalized, rect_max_rotation_normalized, &
+                                 rect_impact_time_normalized
+    implicit none
+    integer, intent(in) :: n
+    real(dp), intent(in) :: fbar(n), eta(n)
+    real(dp), intent(out) :: out(n, 3)
+    out(:, 1) = rect_time_of_max_normalized(fbar, eta)
+    out(:, 2) = rect_max_rotation_normalized(fbar, eta)
+    out(:, 3) = rect_impact_time_normalized(fbar, eta)
+end subroutine sp_rocking_rect_normalized
+
+! ---------------------------------------------------------------------------------
+! Rocking blocks: nonlinear integrator and maps (seispulse_rocking_sim)
+! ---------------------------------------------------------------------------------
+
+!> Block properties: which = 1 rectangle (x = b, y = h), 2 symmetric body (x = R,
+!> y = alpha, z = I_o/(m R^2)); out = alpha, p, e, R.
+subroutine sp_rocking_block(which, x, y, z, g, out, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_rocking_sim, only: rocking_block_t, rectangular_block, symmetric_block
+    implicit none
+    integer, intent(in) :: which
+    real(dp), intent(in) :: x, y, z, g
+    real(dp), intent(out) :: out(4)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    type(rocking_block_t) :: blk
+    errmsg = ''
+    out = 0.0_dp
+    if (which == 1) then
+        call rectangular_block(x, y, g, blk, stat, errmsg)
+        out(4) = hypot(x, y)
+    else
+        call symmetric_block(x, y, z, g, blk, stat, errmsg)
+        out(4) = x
+    end if
+    out(1:3) = [blk%alpha, blk%p, blk%e]
+end subroutine sp_rocking_block
+
+!> One run under a pulse (kind > 0, params packed as in pulse_from_params) or a record
+!> (kind = 0: accel(nrec), dt). opts = t_max (<= 0: none), theta0, omega0, rtol (<= 0:
+!> the default).
+!> res = t_uplift, t_overturn, theta_max, theta_min, t_end, n_steps; impacts: the first
+!> min(n_imp, nmax) impact times.
+subroutine sp_rock(kind, params, nrec, accel, dt, blkv, linearized, opts, ngrid, tg, thg, omg, &
+                   nmax, impacts, n_imp, outcome, res, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_pulses, only: pulse_from_params
+    use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rock_pulse, rock_record
+    implicit none
+    integer, intent(in) :: kind, nrec, linearized, ngrid, nmax
+    real(dp), intent(in) :: params(9), accel(nrec), dt, blkv(4), opts(4), tg(ngrid)
+    real(dp), intent(out) :: thg(ngrid), omg(ngrid), impacts(nmax), res(6)
+    integer, intent(out) :: n_imp, outcome, stat
+    character(len=256), intent(out) :: errmsg
+    type(rocking_block_t) :: blk
+    type(rocking_run_t) :: run
+    real(dp) :: t_max, rtol
+    errmsg = ''
+    thg = 0.0_dp
+    omg = 0.0_dp
+    impacts = 0.0_dp
+    res = 0.0_dp
+    n_imp = 0
+    outcome = 0
+    blk = rocking_block_t(alpha=blkv(1), p=blkv(2), e=blkv(3), g=blkv(4), &
+                          linearized=linearized /= 0)
+    t_max = huge(1.0_dp)
+    if (opts(1) > 0.0_dp) t_max = opts(1)
+    rtol = 1.0e-12_dp
+    if (opts(4) > 0.0_dp) rtol = opts(4)
+    if (kind > 0) then
+        if (ngrid > 0) then
+            call rock_pulse(blk, pulse_from_params(kind, params), run, stat, errmsg, tg, thg, &
+                            omg, t_max=t_max, theta0=opts(2), omega0=opts(3), rtol=rtol)
+        else
+            call rock_pulse(blk, pulse_from_params(kind, params), run, stat, errmsg, &
+                            t_max=t_max, theta0=opts(2), omega0=opts(3), rtol=rtol)
+        end if
+    else
+        if (ngrid > 0) then
+            call rock_record(blk, accel, dt, run, stat, errmsg, tg, thg, omg, t_max=t_max, &
+                             theta0=opts(2), omega0=opts(3), rtol=rtol)
+        else
+            call rock_record(blk, accel, dt, run, stat, errmsg, t_max=t_max, theta0=opts(2), &
+                             omega0=opts(3), rtol=rtol)
+        end if
+    end if
+    if (stat /= SEISPULSE_SUCCESS) return
+    outcome = run%outcome
+    n_imp = run%n_impacts
+    if (n_imp > 0) impacts(1:min(n_imp, nmax)) = run%t_impacts(1:min(n_imp, nmax))
+    res = [run%t_uplift, run%t_overturn, run%theta_max, run%theta_min, run%t_end, &
+           real(run%n_steps, dp)]
+end subroutine sp_rock
+
+!> Overturning map of a pulse family (template params packed as in pulse_from_params).
+subroutine sp_overturning_map(alpha, e, kind, params, linearized, nf, freq, na, amp, classes, &
+                              stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_pulses, only: pulse_from_params
+    use seispulse_rocking_sim, only: overturning_map
+    implicit none
+    integer, intent(in) :: kind, linearized, nf, na
+    real(dp), intent(in) :: alpha, e, params(9), freq(nf), amp(na)
+    integer, intent(out) :: classes(na, nf)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    errmsg = ''
+    call overturning_map(alpha, e, kind, freq, amp, classes, stat, errmsg, &
+                         linearized=linearized /= 0, template=pulse_from_params(kind, params))
+end subroutine sp_overturning_map

@@ -10,7 +10,7 @@ module seispulse_errors
 
     public :: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
               SEISPULSE_NO_CONVERGENCE, SEISPULSE_NO_BRACKET, SEISPULSE_INTERNAL
-    public :: set_error, status_name, real_str
+    public :: set_error, status_name, real_str, outside
 
     integer, parameter :: SEISPULSE_SUCCESS = 0        !! no error
     integer, parameter :: SEISPULSE_INVALID_INPUT = 1  !! an argument is out of its domain
@@ -76,5 +76,30 @@ contains
             text = trim(buf)
         end if
     end function real_str
+
+    !> x is NaN or outside [lo, hi] (an end excluded when open): the range check of every
+    !> input. NaN is tested first: an ordered comparison on NaN raises the invalid flag
+    !> (and traps in checked builds).
+    elemental logical function outside(x, lo, hi, open_lo, open_hi)
+        use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+        use seispulse_kinds, only: dp
+        real(dp), intent(in) :: x        !! the value
+        real(dp), intent(in) :: lo, hi   !! the range
+        logical, intent(in) :: open_lo   !! lo itself is outside
+        logical, intent(in) :: open_hi   !! hi itself is outside
+        if (ieee_is_nan(x)) then
+            outside = .true.
+        else if (open_lo) then
+            outside = .not. (x > lo)
+        else
+            outside = x < lo
+        end if
+        if (outside) return
+        if (open_hi) then
+            outside = .not. (x < hi)
+        else
+            outside = x > hi
+        end if
+    end function outside
 
 end module seispulse_errors

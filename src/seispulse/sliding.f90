@@ -19,7 +19,8 @@ module seispulse_sliding
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
                                              ieee_quiet_nan, ieee_positive_inf
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error, real_str
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error, real_str, &
+                                outside
     use seispulse_special, only: expm1, log1p, pi
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
     use seispulse_pulses, only: exp_consts_t, exp_consts, exp_eval, exponential_pulse, &
@@ -838,25 +839,5 @@ contains
             errmsg, SEISPULSE_INVALID_INPUT, 'static_factor = '//real_str(a) &
             //': must be a finite number >= 1 (static over kinetic friction)')
     end subroutine check_static
-
-    !> x is NaN or outside [lo, hi] (an end excluded when open). NaN is tested first: an
-    !> ordered comparison on NaN raises the invalid flag (and traps in checked builds).
-    elemental logical function outside(x, lo, hi, open_lo, open_hi)
-        real(dp), intent(in) :: x, lo, hi
-        logical, intent(in) :: open_lo, open_hi
-        if (ieee_is_nan(x)) then
-            outside = .true.
-        else if (open_lo) then
-            outside = .not. (x > lo)
-        else
-            outside = x < lo
-        end if
-        if (outside) return
-        if (open_hi) then
-            outside = .not. (x < hi)
-        else
-            outside = x > hi
-        end if
-    end function outside
 
 end module seispulse_sliding

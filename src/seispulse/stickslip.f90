@@ -14,7 +14,8 @@
 !> otherwise it sticks until the next onset.
 !>
 !> Method: exact events, no time step (sliding.md 13.7). The time axis is cut into
-!> pieces on which a_g is continuous and monotone. On such a piece a_g - thr has at
+!> pieces on which a_g is continuous and monotone (seispulse_pieces, shared with the
+!> rocking integrator of seispulse_rocking_sim). On such a piece a_g - thr has at
 !> most one root (the onset), u'' = a_g - s ay changes sign at most once (the piece
 !> is split there), and on each part u' is monotone, so a stop is bracketed by a
 !> sign check at the ends. Every event is located by Brent's method (seispulse_roots)
@@ -40,12 +41,10 @@ module seispulse_stickslip
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
                                 SEISPULSE_INTERNAL, set_error, real_str
     use seispulse_roots, only: scalar_function, find_root
-    use seispulse_special, only: pi
-    use seispulse_pulses, only: pulse_t, pulse_validate, pulse_at, pulse_breaks, &
-                                exp_consts_t, exp_consts, &
-                                PULSE_EXPONENTIAL, PULSE_HALF_SINE, PULSE_SINE_CYCLE, &
-                                PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
-                                PULSE_RICKER, PULSE_MP
+    use seispulse_pulses, only: pulse_t, pulse_validate, pulse_at, exp_consts_t, exp_consts, &
+                                PULSE_EXPONENTIAL
+    use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_pieces_check, &
+                                pulse_pieces_init, record_pieces_init, next_piece
     implicit none
     private
 
@@ -88,14 +87,6 @@ module seispulse_stickslip
     !> Events allowed on one monotone piece; a handful are possible (onset, split,
     !> stop, reverse onset, ...), so reaching this is a bug, reported as such.
     integer, parameter :: max_events = 64
-    !> Mavroeidis-Papageorgiou pieces per 1/f_p before the jerk-sign split.
-    integer, parameter :: mp_per_period = 64
-    !> M&P: largest gamma accepted (64 gamma coarse pieces are generated).
-    real(dp), parameter :: mp_gamma_max = 1.0e6_dp
-    !> M&P: bisection depth of the jerk-root search below one coarse piece.
-    integer, parameter :: mp_max_depth = 48
-    !> Ricker: the last piece ends at x = pi f (t - t0) = 10, where |a| < 1e-40 a_p.
-    real(dp), parameter :: ricker_x_cut = 10.0_dp
 
     !> Ground acceleration and relative velocity on the current piece, as a function
     !> for the root finder (the components carry the piece and the reference state).
@@ -118,40 +109,6 @@ module seispulse_stickslip
     contains
         procedure :: eval => ground_eval
     end type ground_fn
-
-    !> Second derivative of the M&P velocity in x = f_p (t - t0), up to a factor -A/2:
-    !> J(x) = k0^2 cos(k0 x + nu) + (kp^2 cos(kp x + nu) + km^2 cos(km x + nu))/2.
-    type, extends(scalar_function) :: jerk_fn
-        real(dp) :: k0 = 0.0_dp, kp = 0.0_dp, km = 0.0_dp, nu = 0.0_dp
-    contains
-        procedure :: eval => jerk_eval
-    end type jerk_fn
-
-    !> Generator of the monotone pieces, one at a time (no storage that grows).
-    type :: piece_iter_t
-        integer :: src = SRC_PULSE
-        ! fixed break list (pulses other than M&P)
-        integer :: nbreaks = 0
-        integer :: next = 1
-        real(dp) :: breaks(8) = 0.0_dp
-        ! record
-        integer :: nsamp = 0
-        integer :: step = 0
-        real(dp) :: dt = 0.0_dp
-        ! Mavroeidis & Papageorgiou
-        logical :: mp = .false.
-        integer :: ncoarse = 0
-        integer :: kc = 1
-        real(dp) :: x_lo = 0.0_dp
-        real(dp) :: t_lo = 0.0_dp
-        real(dp) :: half_gamma = 0.0_dp
-        real(dp) :: m1 = 0.0_dp             !! bound on |J'|
-        real(dp) :: m2 = 0.0_dp             !! bound on |J''|
-        logical :: from_root = .false.      !! x_lo is a root of J found before
-        real(dp) :: j_lo = 0.0_dp           !! J(x_lo) when x_lo is not a root
-        real(dp) :: a_lo = 0.0_dp           !! a_g(t_lo), carried: a_g is continuous
-        type(jerk_fn) :: jerk
-    end type piece_iter_t
 
 contains
 
@@ -187,7 +144,7 @@ contains
     !> breaks at the extrema x = pi f_p (t - t0) = -sqrt(1.5), 0, +sqrt(1.5), last
     !> piece cut at x = 10 (|a| < 1e-40 a_p), a_g = 0 after the cut. M&P: the extrema
     !> of a_g are not closed form: the window is cut into pieces of 1/(64 f_p), each
-    !> split at the sign changes of the closed-form jerk (see `mp_next_break`).
+    !> split at the sign changes of the closed-form jerk (see seispulse_pieces).
     subroutine stickslip_pulse(p, fr, res, stat, errmsg, t_grid, u_grid, w_grid)
         type(pulse_t), intent(in) :: p                        !! the ground pulse
         type(friction_t), intent(in) :: fr                    !! friction of the block
@@ -206,14 +163,8 @@ contains
         if (stat /= SEISPULSE_SUCCESS) return
         call pulse_validate(p, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (p%kind == PULSE_MP) then
-            if (p%gamma > mp_gamma_max) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'gamma = ' &
-                               //real_str(p%gamma) &
-                               //': the stick-slip integrator supports gamma <= 1e6')
-                return
-            end if
-        end if
+        call pulse_pieces_check(p, 'stick-slip', stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         call check_grid(t_grid, u_grid, w_grid, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
 
@@ -239,8 +190,6 @@ contains
         real(dp), intent(out), optional :: w_grid(:)          !! u' at t_grid
         type(ground_fn) :: g
         type(piece_iter_t) :: it
-        integer :: i
-        character(len=24) :: idx
 
         call empty_result(res)
         call friction_validate(fr, stat, errmsg)
@@ -250,28 +199,13 @@ contains
                            //': must be a finite number > 0')
             return
         end if
-        if (size(accel) < 1) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
-                           'accel: the record is empty (at least one sample is needed)')
-            return
-        end if
-        do i = 1, size(accel)
-            if (.not. ieee_is_finite(accel(i))) then
-                write(idx, '(i0)') i
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel('//trim(idx) &
-                               //') = '//real_str(accel(i)) &
-                               //': every sample must be a finite number')
-                return
-            end if
-        end do
+        call record_pieces_check(accel, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         call check_grid(t_grid, u_grid, w_grid, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
 
         g%src = SRC_RECORD
-        it%src = SRC_RECORD
-        it%nsamp = size(accel)
-        it%dt = dt
-        it%step = 0
+        call record_pieces_init(it, size(accel), dt)
         call integrate(g, it, fr, accel, res, stat, errmsg, t_grid, u_grid, w_grid)
     end subroutine stickslip_record
 
@@ -296,6 +230,7 @@ contains
         type(slide_t) :: cur
         real(dp) :: t, u, w, ta, tb, aa, ab, a_c, thr_f, thr_r, lev, t_o, r, u_r, w_r
         real(dp) :: t_s, u_s, gc, gb, h, ay
+        type(piece_t) :: piece
         integer :: mode, dir, blocked, last_dir, nslides, ig, ng, nev
         logical :: found, first_done, first_slide, just_stopped, now, split_done
         character(len=120) :: rmsg
@@ -321,9 +256,19 @@ contains
         lev = 0.0_dp
 
         pieces: do
-            call next_piece(it, g, accel, ta, tb, aa, ab, found, stat, errmsg)
+            call next_piece(it, accel, 'stickslip', piece, found, stat, errmsg)
             if (stat /= SEISPULSE_SUCCESS) return
             if (.not. found) exit pieces
+            ta = piece%ta
+            tb = piece%tb
+            aa = piece%aa
+            ab = piece%ab
+            ! a record step is a line: load it into g (a pulse has its closed form)
+            if (g%src == SRC_RECORD) then
+                g%t0 = ta
+                g%a0 = aa
+                g%slope = piece%slope
+            end if
             ! pieces are contiguous while sliding; at rest the block may wait for the first
             t = ta
             blocked = 0
@@ -647,263 +592,6 @@ contains
                                               + g%slope * h / 6.0_dp))
         end if
     end subroutine relative_state
-
-    ! ------------------------------------------------------------------------------
-    ! Pieces
-    ! ------------------------------------------------------------------------------
-
-    !> Break list of a (valid) pulse, or the M&P generator state.
-    subroutine pulse_pieces_init(it, p)
-        type(piece_iter_t), intent(out) :: it
-        type(pulse_t), intent(in) :: p
-        real(dp) :: td, xs(4), tx, gam, v, d
-        integer :: n, k
-        it%src = SRC_PULSE
-        it%next = 1
-        td = p%duration
-        select case (p%kind)
-        case (PULSE_EXPONENTIAL)
-            if (p%beta > huge(p%beta)) then
-                ! spike: a_g > 0 at one instant only, no area: no piece, no sliding
-                it%nbreaks = 0
-            else
-                call pulse_breaks(p, it%breaks(1:5), it%nbreaks)
-            end if
-        case (PULSE_HALF_SINE, PULSE_COSINE_CYCLE)
-            it%nbreaks = 3
-            it%breaks(1:3) = [0.0_dp, 0.5_dp * td, td]
-        case (PULSE_SINE_CYCLE)
-            it%nbreaks = 4
-            it%breaks(1:4) = [0.0_dp, 0.25_dp * td, 0.75_dp * td, td]
-        case (PULSE_RICKER)
-            ! extrema of (1 - 2x^2) e^(-x^2) at x = 0, +-sqrt(3/2); cut at x = 10
-            xs = [-sqrt(1.5_dp), 0.0_dp, sqrt(1.5_dp), ricker_x_cut]
-            n = 1
-            it%breaks(1) = 0.0_dp
-            do k = 1, 4
-                tx = p%t0 + xs(k) / (pi * p%freq)
-                if (tx > it%breaks(n)) then
-                    n = n + 1
-                    it%breaks(n) = tx
-                end if
-            end do
-            it%nbreaks = n
-        case (PULSE_MP)
-            gam = p%gamma
-            it%mp = .true.
-            it%nbreaks = 0
-            it%half_gamma = 0.5_dp * gam
-            it%ncoarse = max(1, ceiling(real(mp_per_period, dp) * gam - 1.0e-9_dp))
-            it%kc = 1
-            it%x_lo = -it%half_gamma
-            it%t_lo = p%t0 + it%x_lo / p%freq
-            it%from_root = .false.
-            call pulse_at(p, it%t_lo, it%a_lo, v, d)
-            it%jerk%k0 = 2.0_dp * pi
-            it%jerk%kp = 2.0_dp * pi * (1.0_dp + 1.0_dp / gam)
-            it%jerk%km = 2.0_dp * pi * (1.0_dp - 1.0_dp / gam)
-            it%jerk%nu = p%nu_deg * (pi / 180.0_dp)
-            it%m1 = it%jerk%k0**3 + 0.5_dp * (it%jerk%kp**3 + it%jerk%km**3)
-            it%m2 = it%jerk%k0**4 + 0.5_dp * (it%jerk%kp**4 + it%jerk%km**4)
-            it%j_lo = it%jerk%eval(it%x_lo)
-        case default
-            ! rectangular 0, T; triangular 0, rT, T
-            call pulse_breaks(p, it%breaks(1:5), it%nbreaks)
-        end select
-    end subroutine pulse_pieces_init
-
-    !> Next piece [ta, tb] of positive length, a_g(ta+) = aa and a_g(tb-) = ab.
-    !> For a record it also loads the step into g.
-    subroutine next_piece(it, g, accel, ta, tb, aa, ab, found, stat, errmsg)
-        type(piece_iter_t), intent(inout) :: it
-        type(ground_fn), intent(inout) :: g
-        real(dp), intent(in) :: accel(:)
-        real(dp), intent(out) :: ta, tb, aa, ab
-        logical, intent(out) :: found
-        integer, intent(out) :: stat
-        character(len=*), intent(inout), optional :: errmsg
-        real(dp) :: v, d, xe, xb
-        integer :: i
-        stat = SEISPULSE_SUCCESS
-        found = .false.
-        ta = 0.0_dp
-        tb = 0.0_dp
-        aa = 0.0_dp
-        ab = 0.0_dp
-        if (it%src == SRC_RECORD) then
-            if (it%step >= it%nsamp - 1) return
-            it%step = it%step + 1
-            i = it%step
-            ta = real(i - 1, dp) * it%dt
-            tb = real(i, dp) * it%dt
-            aa = accel(i)
-            ab = accel(i + 1)
-            g%t0 = ta
-            g%a0 = aa
-            g%slope = (ab - aa) / it%dt
-            found = .true.
-        else if (it%mp) then
-            do while (it%kc <= it%ncoarse)
-                if (it%kc == it%ncoarse) then
-                    xe = it%half_gamma
-                else
-                    xe = -it%half_gamma + real(it%kc, dp) / real(mp_per_period, dp)
-                end if
-                call mp_next_break(it, xe, xb, stat, errmsg)
-                if (stat /= SEISPULSE_SUCCESS) return
-                if (xb >= xe) then
-                    xb = xe
-                    it%kc = it%kc + 1
-                    it%from_root = .false.
-                else
-                    it%from_root = .true.
-                end if
-                it%x_lo = xb
-                ta = it%t_lo
-                tb = g%p%t0 + xb / g%p%freq
-                if (tb > ta) then
-                    it%t_lo = tb
-                    aa = it%a_lo
-                    call pulse_at(g%p, tb, ab, v, d, g%cexp)
-                    it%a_lo = ab
-                    found = .true.
-                    return
-                end if
-            end do
-        else
-            do while (it%next < it%nbreaks)
-                ta = it%breaks(it%next)
-                tb = it%breaks(it%next + 1)
-                it%next = it%next + 1
-                if (tb > ta) then
-                    call pulse_at(g%p, ta, aa, v, d, g%cexp)
-                    ab = accel_before(g%p, tb)
-                    found = .true.
-                    return
-                end if
-            end do
-        end if
-    end subroutine next_piece
-
-    !> a_g just before the break t (left limit): pulse_at is right-continuous, so it
-    !> differs only where the pulse jumps: the box (beta = -inf) at t_d and 2 t_d,
-    !> the rectangle and the cosine cycle at T, the triangle with r = 1 at T.
-    pure function accel_before(p, t) result(a)
-        type(pulse_t), intent(in) :: p
-        real(dp), intent(in) :: t
-        real(dp) :: a
-        real(dp) :: v, d
-        call pulse_at(p, t, a, v, d)
-        select case (p%kind)
-        case (PULSE_EXPONENTIAL)
-            if (p%beta < -huge(p%beta)) then
-                if (t > p%duration) then
-                    a = -p%amp
-                else
-                    a = p%amp
-                end if
-            end if
-        case (PULSE_RECTANGULAR, PULSE_COSINE_CYCLE)
-            if (t >= p%duration) a = p%amp
-        case (PULSE_TRIANGULAR)
-            if (t >= p%duration .and. p%peak_frac >= 1.0_dp) a = p%amp
-        end select
-    end function accel_before
-
-    !> M&P: the first sign change of the jerk J in (x_lo, xe), or xe if none.
-    !>
-    !> v = (A/2)[cos(k0 x + nu) + (cos(kp x + nu) + cos(km x + nu))/2] with x = f_p (t - t0),
-    !> k0 = 2 pi, kp, km = 2 pi (1 +- 1/gamma) (product-to-sum form of Eq. 1 of M&P 2003),
-    !> so J ~ d^2 v/dx^2 is a sum of three cosines with |J'| <= m1, |J''| <= m2.
-    !> An interval [lo, hi] of midpoint m and width h has no root when |J(m)| > m1 h/2,
-    !> and J is monotone on it (one root at most, found by Brent if J changes sign)
-    !> when |J'(m)| > m2 h/2; otherwise it is halved. Only a tangency of J (a double
-    !> root: a_g has an inflection with zero slope there) can reach the depth limit,
-    !> where the plain sign test is used; a_g is then monotone up to a variation of
-    !> order m1 h^3 with h = 2^-48/64, far below the rounding of a_g.
-    subroutine mp_next_break(it, xe, xb, stat, errmsg)
-        type(piece_iter_t), intent(inout) :: it
-        real(dp), intent(in) :: xe
-        real(dp), intent(out) :: xb
-        integer, intent(out) :: stat
-        character(len=*), intent(inout), optional :: errmsg
-        real(dp) :: stack(mp_max_depth + 1), jstack(mp_max_depth + 1), lo, hi, h, xm, jlo, jhi, jm
-        integer :: n, iter
-        logical :: done
-        character(len=120) :: rmsg
-        stat = SEISPULSE_SUCCESS
-        xb = xe
-        lo = it%x_lo
-        ! a root found before: J is monotone just after it, so no new root there
-        if (it%from_root) then
-            jlo = 0.0_dp
-        else
-            jlo = it%j_lo
-        end if
-        ! J at the right ends of the pending intervals, each evaluated once
-        n = 1
-        stack(1) = xe
-        jstack(1) = it%jerk%eval(xe)
-        ! each pass either halves an interval (depth <= mp_max_depth) or retires one
-        do iter = 1, 100000
-            hi = stack(n)
-            h = hi - lo
-            xm = lo + 0.5_dp * h
-            jhi = jstack(n)
-            jm = it%jerk%eval(xm)
-            done = .false.
-            if (abs(jm) > 0.5_dp * it%m1 * h) then
-                done = .true.
-            else if (abs(jerk_slope(it%jerk, xm)) > 0.5_dp * it%m2 * h &
-                     .or. n > mp_max_depth) then
-                if ((jlo < 0.0_dp .and. jhi > 0.0_dp) .or. (jlo > 0.0_dp .and. jhi < 0.0_dp)) then
-                    call find_root(it%jerk, lo, hi, xb, stat, rmsg, fa_known=jlo, fb_known=jhi)
-                    if (stat /= SEISPULSE_SUCCESS) then
-                        call set_error(stat, errmsg, SEISPULSE_INTERNAL, &
-                                       'stickslip: M&P jerk root: '//trim(rmsg)//' (a bug)')
-                        return
-                    end if
-                    xb = min(max(xb, lo), hi)
-                    return
-                end if
-                done = .true.
-            else
-                n = n + 1
-                stack(n) = xm
-                jstack(n) = jm
-            end if
-            if (done) then
-                lo = hi
-                jlo = jhi
-                n = n - 1
-                if (n == 0) then
-                    xb = xe
-                    it%j_lo = jhi
-                    return
-                end if
-            end if
-        end do
-        call set_error(stat, errmsg, SEISPULSE_INTERNAL, &
-                       'stickslip: M&P jerk roots: search did not end (a bug)')
-    end subroutine mp_next_break
-
-    function jerk_eval(self, x) result(y)
-        class(jerk_fn), intent(inout) :: self
-        real(dp), intent(in) :: x
-        real(dp) :: y
-        y = self%k0**2 * cos(self%k0 * x + self%nu) &
-            + 0.5_dp * (self%kp**2 * cos(self%kp * x + self%nu) &
-                        + self%km**2 * cos(self%km * x + self%nu))
-    end function jerk_eval
-
-    !> dJ/dx.
-    pure function jerk_slope(f, x) result(y)
-        type(jerk_fn), intent(in) :: f
-        real(dp), intent(in) :: x
-        real(dp) :: y
-        y = -(f%k0**3 * sin(f%k0 * x + f%nu) &
-              + 0.5_dp * (f%kp**3 * sin(f%kp * x + f%nu) + f%km**3 * sin(f%km * x + f%nu)))
-    end function jerk_slope
 
     ! ------------------------------------------------------------------------------
     ! Small helpers

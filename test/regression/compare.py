@@ -6,6 +6,7 @@ make_refs.py with mpmath). Also checks that the text table holds the same number
 usage: compare.py DRIVER CASE.nml CASE.ref
 """
 import csv
+import math
 import shutil
 import subprocess
 import sys
@@ -13,6 +14,16 @@ import tempfile
 from pathlib import Path
 
 RTOL = 1e-12
+
+
+def close(x, y, tol):
+    """x matches y within tol; NaN matches NaN only, an infinity the same infinity only
+    (an ordinary difference would let NaN and inf pass every comparison)."""
+    if math.isnan(y) or math.isnan(x):
+        return math.isnan(x) and math.isnan(y)
+    if math.isinf(y) or math.isinf(x):
+        return x == y
+    return abs(x - y) <= tol
 
 
 def read_csv(path):
@@ -54,13 +65,14 @@ def main():
     if len(rows) != len(ref_rows):
         print(f"FAIL {len(rows)} rows, reference has {len(ref_rows)}")
         return 1
-    scales = [max(abs(r[j]) for r in ref_rows) or 1.0 for j in range(len(ref_header))]
+    scales = [max((abs(r[j]) for r in ref_rows if math.isfinite(r[j])), default=0.0) or 1.0
+              for j in range(len(ref_header))]
     for i, (row, ref_row, txt_row) in enumerate(zip(rows, ref_rows, txt_rows)):
         for j, (x, y, z) in enumerate(zip(row, ref_row, txt_row)):
-            if abs(x - y) > RTOL * max(abs(y), scales[j] * 1e-3):
+            if not close(x, y, RTOL * max(abs(y), scales[j] * 1e-3) if math.isfinite(y) else 0):
                 print(f"FAIL row {i + 1}, {header[j]}: {x!r} vs reference {y!r}")
                 failures += 1
-            if abs(x - z) > 1e-15 * max(abs(x), 1e-300):
+            if not close(z, x, 1e-15 * max(abs(x), 1e-300) if math.isfinite(x) else 0):
                 print(f"FAIL row {i + 1}, {header[j]}: text table {z!r} vs CSV {x!r}")
                 failures += 1
             if failures > 10:

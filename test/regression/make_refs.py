@@ -24,6 +24,17 @@ and &block gives mu (mu_list; any slope_deg, xi_deg: Eq. 1.31 and the factors K 
 sliding.md 7.1) or eta1 (eta_list), with static_factor. Static friction only moves the
 onset: for the rectangle the onset stays at t = 0 (no sliding if static_factor eta >= 1);
 for the triangle these references support static_factor = 1 only.
+
+Analysis 'rocking' (never by running the driver): the linearized model (&block
+model = 'linearized') under the rectangular half-cycle pulse (kind 'rectangular', or
+'exponential' with beta = -inf and full = .false.), written out from rocking.md in mpmath
+(40 digits): the response (2.12, 2.13), the wall eta_w = 1 - e^-f (2.21), the region
+boundaries cosh(f/2), cosh(f) = 1/(1 - eta) (2.17b, 2.17a), the critical time, the time of
+the maximum (2.25), the maximum rotation (2.29) and the first impact (2.33). Summaries and
+histories need restitution e = 0 (the block rests at its first impact; overturning
+blocks need none); maps use the wall alone (the rectangle's impacts come after the
+pulse, where a stable block cannot overturn: rocking.md 5.4), with cells at least 1e-6
+(relative) away from it.
 """
 import math
 import re
@@ -290,10 +301,204 @@ def make_sliding_ref(nml_path, nml):
     print(f"wrote {out} ({len(lines) - 1} rows)")
 
 
+# ---------------------------------------------------------------------------
+# Analysis 'rocking': the linearized rectangle in closed form, written from rocking.md
+# ---------------------------------------------------------------------------
+
+ROCKING_HEADER = ("alpha (rad),p (rad/s),e (-),f (-),eta (-),outcome (-),t_uplift (s),"
+                  "t_overturn (s),n_impacts (-),t_impact1 (s),theta_max (rad),"
+                  "theta_min (rad),psi_max (-),psi_min (-),t_end (s),region (-),"
+                  "t_up_cf (s),t_c_cf (s),t_m_cf (s),psi_max_cf (-),t_i_cf (s)")
+ROCKING_HISTORY_HEADER = "t (s),a_g (m/s2),theta (rad),omega (rad/s)"
+ROCKING_MAP_HEADER = "freq_ratio (-),amp_ratio (-),class (-)"
+# outcome codes: 0 rest, 2 overturn_no_impact; region codes: 1 O1, 2 O2, 3 O3, 5 S2
+
+
+def rocking_block(b, g):
+    """(alpha, p, e) of &block (rocking.md 2: R = sqrt(b^2 + h^2), alpha = atan(b/h),
+    p = sqrt(g/(io R)), io = I_o/(m R^2) = 4/3 for the uniform rectangle; Housner's
+    e = 1 - (2/io) sin^2 alpha, rocking.md 7)."""
+    if str(b.get("model", "nonlinear")).lower() != "linearized":
+        raise ValueError("rocking references: model = 'linearized' only")
+    io = mpf(b["io_over_mr2"]) if "io_over_mr2" in b else mpf(4) / 3
+    if "b" in b:
+        bb, hh = mpf(b["b"]), mpf(b["h"])
+        radius, alpha = mp.sqrt(bb**2 + hh**2), mp.atan(bb / hh)
+    else:
+        alpha = mp.radians(mpf(b["alpha_deg"])) if "alpha_deg" in b else mpf(b["alpha"])
+        radius = mpf(b.get("r", 1.0))      # a map does not need r
+    p = mp.sqrt(g / (io * radius))
+    e = mpf(b["e"]) if "e" in b else max(mpf(0), 1 - (2 / io) * mp.sin(alpha)**2)
+    return alpha, p, e
+
+
+def rectangle_pulse(pgroup):
+    """(A (m/s2), A/g, T (s), g) of a rectangular half-cycle &pulse."""
+    p = dict(pgroup)
+    kind = p.get("kind", "exponential").lower()
+    rect = kind in ("rectangular", "rect") or (
+        kind in ("exponential", "exp") and p.get("beta", 0.0) == -math.inf
+        and not p.get("full", False))
+    if not rect:
+        raise ValueError(f"rocking references: rectangular half-cycle pulses only, not {p}")
+    g = mpf(p.get("g", ref.G_STANDARD))
+    amp = mpf(p.get("amp", 1.0))
+    if p.get("amp_unit", "m/s2") == "g":
+        return amp * g, amp, mpf(p.get("duration", 1.0)), g
+    return amp, amp / g, mpf(p.get("duration", 1.0)), g
+
+
+def rect_psi(tau, f, eta):
+    """psi = theta/alpha and dpsi = (dtheta/dt)/(alpha p) of the first excursion,
+    Eqs. 2.12, 2.13 (uplift at tau = 0)."""
+    psi = (1 / eta - 1) * (mp.cosh(f * tau) - 1)
+    dpsi = (1 / eta - 1) * mp.sinh(f * tau)
+    if tau > 1:
+        psi -= (mp.cosh(f * (tau - 1)) - 1) / eta
+        dpsi -= mp.sinh(f * (tau - 1)) / eta
+    return psi, dpsi
+
+
+def rect_summary(f, eta, psi_cap):
+    """Region and times (in t_d) of the linearized rectangle, and the time psi reaches
+    psi_cap (|theta| = pi/2) for an overturning block."""
+    if not eta < 1:
+        raise ValueError("rocking references: eta < 1 only")
+    one = 1 / (1 - eta)
+    r = dict(tau_c=mp.nan, tau_m=mp.nan, psi_max=mp.nan, tau_i=mp.nan, tau_cap=mp.nan)
+    if mp.cosh(f / 2) >= one:
+        r["region"] = 1
+    elif mp.cosh(f) >= one:
+        r["region"] = 2
+    elif eta < 1 - mp.exp(-f):                         # below the wall, Eq. 2.21
+        r["region"] = 3
+    else:
+        r["region"] = 5                                # S2: the rectangle has no S1
+    if r["region"] in (1, 2):
+        r["tau_c"] = mp.acosh(one) / f                 # (1/eta - 1)(cosh f tau - 1) = 1
+    elif r["region"] == 3:
+        # psi - 1 = (1/eta - 1) cosh f tau - (1/eta) cosh f(tau - 1) = 0 after the pulse
+        r["tau_c"] = mp.log((mp.exp(f) - 1 + eta) / (1 - eta - mp.exp(-f))) / (2 * f)
+    if r["region"] == 5:
+        tm = mp.log((1 - eta - mp.exp(f)) / (1 - eta - mp.exp(-f))) / (2 * f)    # 2.25
+        r["tau_m"] = tm
+        r["psi_max"] = (eta + (1 - eta) * mp.cosh(f * tm) - mp.cosh(f * (tm - 1))) / eta
+        r["tau_i"] = mp.log(((mp.exp(-f) - 1) * mp.sqrt(mp.exp(f) * (1 - eta)) - eta)
+                            / (1 - eta - mp.exp(-f))) / f                       # 2.33
+        check = mp.findroot(lambda x: rect_psi(x, f, eta)[0], r["tau_i"])
+        assert abs(check - r["tau_i"]) < mpf(10)**-30, "2.33 against 2.12"
+    else:
+        # psi = psi_cap: during the pulse, or A z + B/z = psi_cap - 1 after it (z = e^(f tau))
+        during = mp.acosh(1 + (psi_cap * eta) / (1 - eta)) / f
+        if during <= 1:
+            r["tau_cap"] = during
+        else:
+            a = ((1 / eta - 1) - mp.exp(-f) / eta) / 2
+            b = ((1 / eta - 1) - mp.exp(f) / eta) / 2
+            y = psi_cap - 1
+            r["tau_cap"] = mp.log((y + mp.sqrt(y * y - 4 * a * b)) / (2 * a)) / f
+    return r
+
+
+def rocking_summary_rows(nml):
+    amp, amp_g, td, g = rectangle_pulse(nml["pulse"])
+    alpha, p, e = rocking_block(nml["block"], g)
+    f, eta = p * td, alpha / amp_g
+    psi_cap = mp.pi / 2 / alpha
+    r = rect_summary(f, eta, psi_cap)
+    nan = mp.nan
+    if r["region"] == 5:
+        if e != 0:
+            raise ValueError("rocking summary references: e = 0 for stable blocks")
+        outcome, t_ov, n_imp, t_i1 = 0, nan, 1, r["tau_i"] * td
+        theta_max, t_end = r["psi_max"] * alpha, r["tau_i"] * td
+        cf = [r["region"], mpf(0), nan, r["tau_m"] * td, r["psi_max"], r["tau_i"] * td]
+    else:
+        outcome, t_ov, n_imp, t_i1 = 2, r["tau_c"] * td, 0, nan
+        theta_max, t_end = mp.pi / 2, r["tau_cap"] * td
+        cf = [r["region"], mpf(0), r["tau_c"] * td, nan, mp.inf, nan]
+    row = [alpha, p, e, f, eta, outcome, mpf(0), t_ov, n_imp, t_i1, theta_max, mpf(0),
+           theta_max / alpha, mpf(0), t_end] + cf
+    return [row]
+
+
+def rocking_history_rows(nml):
+    amp, amp_g, td, g = rectangle_pulse(nml["pulse"])
+    alpha, p, e = rocking_block(nml["block"], g)
+    f, eta = p * td, alpha / amp_g
+    r = rect_summary(f, eta, mp.pi / 2 / alpha)
+    if r["region"] != 5 or e != 0:
+        raise ValueError("rocking history references: a stable block (S2) with e = 0")
+    func, _ = pulse_function(nml["pulse"])
+    rows = []
+    for t in time_grid({"t_end": nml["rocking"]["t_end"], **nml["rocking"]}):
+        tau = mpf(t) / td
+        if abs(tau - r["tau_i"]) < mpf(10)**-6 or abs(tau - 1) < mpf(10)**-6:
+            raise ValueError(f"t = {t}: too close to the impact or the end of the pulse")
+        if tau < r["tau_i"]:
+            psi, dpsi = rect_psi(tau, f, eta)
+        else:
+            psi, dpsi = mpf(0), mpf(0)        # at rest after the impact (e = 0)
+        rows.append([mpf(t), func(t)[0], psi * alpha, dpsi * alpha * p])
+    return rows
+
+
+def rocking_map_rows(nml):
+    m = nml["map"]
+    kind = m.get("kind", "exponential").lower()
+    if not (kind in ("rectangular", "rect") or (kind in ("exponential", "exp")
+                                                 and m.get("beta", 0.0) == -math.inf
+                                                 and not m.get("full", False))):
+        raise ValueError("rocking map references: the rectangular family only")
+    alpha, _, _ = rocking_block(nml["block"], mpf(1))
+
+    def axis(name):
+        if f"{name}_ratio" in m:
+            return [mpf(x) for x in _as_list(m[f"{name}_ratio"])]
+        lo, hi = (float(x) for x in m[f"{name}_range"])
+        n = int(m.get(f"{name}_count", 21))
+        # the driver's doubles: lo + (hi - lo) * ((k - 1)/(n - 1)), the last one hi
+        return [mpf(lo + (hi - lo) * ((k - 1) / (n - 1))) for k in range(1, n)] + [mpf(hi)]
+
+    rows = []
+    for a in axis("amp"):
+        for fr in axis("freq"):
+            f = 2 * mp.pi / fr                          # p = 1, T = 2 pi/freq_ratio
+            if a == 0:
+                cls = 0
+            else:
+                eta = alpha / (a * mp.tan(alpha))       # uplift at g alpha (linearized)
+                wall = 1 - mp.exp(-f)
+                if abs(eta - wall) < mpf(10)**-6 * wall or abs(eta - 1) < mpf(10)**-6:
+                    raise ValueError(f"cell ({fr}, {a}) is too close to a boundary")
+                cls = 1 if eta < wall else 0
+            rows.append([fr, a, mpf(cls)])
+    return rows
+
+
+def make_rocking_ref(nml_path, nml):
+    what = nml.get("rocking", {}).get("what", "summary").lower()
+    with mp.workdps(40):
+        if what == "summary":
+            header, rows = ROCKING_HEADER, rocking_summary_rows(nml)
+        elif what == "history":
+            header, rows = ROCKING_HISTORY_HEADER, rocking_history_rows(nml)
+        else:
+            header, rows = ROCKING_MAP_HEADER, rocking_map_rows(nml)
+        lines = [header] + [",".join(repr(float(x)) for x in row) for row in rows]
+    out = Path(nml_path).with_suffix(".ref")
+    out.write_text("\n".join(lines) + "\n")
+    print(f"wrote {out} ({len(lines) - 1} rows)")
+
+
 def make_ref(nml_path):
     nml = parse_namelist(Path(nml_path).read_text())
-    if nml.get("run", {}).get("analysis", "pulse").lower() == "sliding":
+    analysis = nml.get("run", {}).get("analysis", "pulse").lower()
+    if analysis == "sliding":
         make_sliding_ref(nml_path, nml)
+        return
+    if analysis == "rocking":
+        make_rocking_ref(nml_path, nml)
         return
     func, g = pulse_function(nml["pulse"])
     lines = [HEADER]

@@ -1,0 +1,941 @@
+!> Analysis 'rocking': a free-standing rigid block rocking on a rigid base (Housner 1963)
+!> under one pulse: the classification and extreme values of the response, its time
+!> history, or an overturning map of a pulse family.
+!>
+!> Groups: &block (geometry, restitution, model), &pulse (driver_pulse_group; the
+!> excitation), &rocking (what to compute, run limits, the history grid) and &map (the
+!> pulse family and the grids of an overturning map). A sampled record is a later
+!> addition: it will be a group of its own, used instead of &pulse.
+!> Tables <output>_rocking (what = 'summary'), <output>_rocking_history ('history') or
+!> <output>_rocking_map ('map'). The numbers come from seispulse_rocking_sim (the
+!> integrator, any pulse) and seispulse_rocking (the linearized closed forms of the
+!> half-cycle exponential pulse, shown side by side); the driver only reads, checks,
+!> converts units and writes.
+module driver_rocking
+    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
+                                             ieee_quiet_nan, ieee_positive_inf
+    use seispulse, only: dp, pulse_t, pulse_validate, pulse_eval, pulse_end_time, &
+                         pulse_kind_name, pulse_kind_from_name, SEISPULSE_SUCCESS, &
+                         PULSE_EXPONENTIAL, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
+                         PULSE_RICKER, PULSE_MP
+    use seispulse_errors, only: real_str
+    use seispulse_rocking, only: rocking_summary, rocking_region_name
+    use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rectangular_block, &
+                                     symmetric_block, rocking_block_validate, rock_pulse, &
+                                     overturning_map, ROCK_TIME_LIMIT
+    use driver_namelist_scan, only: nml_group, lower
+    use driver_input, only: find_group, located, join, read_optional, given
+    use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
+                                  write_pulse_group, finite_positive
+    use driver_tables, only: write_tables
+    implicit none
+    private
+
+    public :: run_rocking, rocking_groups
+
+    !> Groups this analysis reads (besides &run).
+    character(len=8), parameter :: rocking_groups(4) = [character(len=8) :: 'block', &
+        'pulse', 'rocking', 'map']
+
+    character(len=12), parameter :: block_keys(8) = [character(len=12) :: 'b', 'h', &
+        'alpha', 'alpha_deg', 'r', 'io_over_mr2', 'e', 'model']
+    character(len=8), parameter :: rocking_keys(6) = [character(len=8) :: 'what', 't_max', &
+        'rtol', 't_end', 'npts', 'dt']
+    character(len=12), parameter :: map_keys(11) = [character(len=12) :: 'kind', 'beta', &
+        'full', 'peak_frac', 't0_periods', 'freq_ratio', 'freq_range', 'freq_count', &
+        'amp_ratio', 'amp_range', 'amp_count']
+    character(len=8), parameter :: what_names(3) = [character(len=8) :: 'summary', &
+        'history', 'map']
+    character(len=10), parameter :: model_names(2) = [character(len=10) :: 'nonlinear', &
+        'linearized']
+    character(len=24), parameter :: outcome_names(0:5) = [character(len=24) :: 'rest', &
+        'no_uplift', 'overturn_no_impact', 'overturn_one_impact', 'overturn_many_impacts', &
+        'time_limit']
+
+    !> Most values on one axis of a map (freq_ratio, amp_ratio).
+    integer, parameter :: max_list = 1000
+    !> Most rows of the history table.
+    integer, parameter :: max_rows = 10000000
+    !> A map prints progress once it has run this long (s), then at most every
+    !> `progress_every` seconds.
+    real(dp), parameter :: progress_after = 2.0_dp, progress_every = 3.0_dp
+
+    real(dp), parameter :: pi = 3.14159265358979323846264338327950288_dp
+
+    ! namelist variables (defaults are set in set_defaults)
+    real(dp) :: b, h, alpha, alpha_deg, r, io_over_mr2, e
+    character(len=32) :: model
+    character(len=32) :: what
+    real(dp) :: t_max, rtol, t_end, dt
+    integer :: npts
+    character(len=32) :: kind
+    real(dp) :: beta, peak_frac, t0_periods
+    logical :: full
+    real(dp) :: freq_ratio(max_list), freq_range(2), amp_ratio(max_list), amp_range(2)
+    integer :: freq_count, amp_count
+    namelist /block/ b, h, alpha, alpha_deg, r, io_over_mr2, e, model
+    namelist /rocking/ what, t_max, rtol, t_end, npts, dt
+    namelist /map/ kind, beta, full, peak_frac, t0_periods, freq_ratio, freq_range, &
+        freq_count, amp_ratio, amp_range, amp_count
+
+contains
+
+    subroutine set_defaults()
+        real(dp) :: nan
+        nan = ieee_value(nan, ieee_quiet_nan)
+        b = nan
+        h = nan
+        alpha = nan
+        alpha_deg = nan
+        r = nan
+        io_over_mr2 = 4.0_dp / 3.0_dp
+        e = nan           ! NaN: Housner's value from the geometry
+        model = 'nonlinear'
+        what = 'summary'
+        t_max = ieee_value(t_max, ieee_positive_inf)
+        rtol = 1.0e-12_dp
+        t_end = nan       ! NaN: 1.25 x the end of the motion, at least the end of the pulse
+        npts = 0          ! neither dt nor npts: 1001 points
+        dt = 0.0_dp
+        kind = 'exponential'
+        beta = 0.0_dp
+        full = .false.
+        peak_frac = 0.5_dp
+        t0_periods = 1.5_dp
+        freq_ratio = nan
+        freq_range = nan
+        freq_count = 21
+        amp_ratio = nan
+        amp_range = nan
+        amp_count = 21
+    end subroutine set_defaults
+
+    subroutine read_block(unit, text, ios, iomsg)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: text
+        integer, intent(out) :: ios
+        character(len=*), intent(inout) :: iomsg
+        if (len(text) > 0) then
+            read(text, nml=block, iostat=ios, iomsg=iomsg)
+        else
+            read(unit, nml=block, iostat=ios, iomsg=iomsg)
+        end if
+    end subroutine read_block
+
+    subroutine read_rocking(unit, text, ios, iomsg)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: text
+        integer, intent(out) :: ios
+        character(len=*), intent(inout) :: iomsg
+        if (len(text) > 0) then
+            read(text, nml=rocking, iostat=ios, iomsg=iomsg)
+        else
+            read(unit, nml=rocking, iostat=ios, iomsg=iomsg)
+        end if
+    end subroutine read_rocking
+
+    subroutine read_map(unit, text, ios, iomsg)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: text
+        integer, intent(out) :: ios
+        character(len=*), intent(inout) :: iomsg
+        if (len(text) > 0) then
+            read(text, nml=map, iostat=ios, iomsg=iomsg)
+        else
+            read(unit, nml=map, iostat=ios, iomsg=iomsg)
+        end if
+    end subroutine read_map
+
+    !> Read the groups, compute, write the table; print where it went.
+    subroutine run_rocking(path, groups, prefix, stat, errmsg)
+        character(len=*), intent(in) :: path              !! input file (for messages)
+        type(nml_group), intent(in) :: groups(:)          !! scanned groups
+        character(len=*), intent(in) :: prefix            !! output prefix
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        type(pulse_input_t) :: pin
+        type(nml_group) :: gb, gr, gm
+        type(rocking_block_t) :: blk
+        character(len=:), allocatable :: task
+        real(dp) :: g_block
+
+        call set_defaults()
+        call read_pulse_group(path, groups, pin, stat, errmsg)
+        if (stat /= 0) return
+        call read_optional(path, groups, 'block', block_keys, read_block, gb, stat, errmsg)
+        if (stat /= 0) return
+        call read_optional(path, groups, 'rocking', rocking_keys, read_rocking, gr, stat, &
+                           errmsg)
+        if (stat /= 0) return
+        call read_optional(path, groups, 'map', map_keys, read_map, gm, stat, errmsg)
+        if (stat /= 0) return
+        stat = 1
+
+        ! --- what to compute, and which groups go with it
+        task = trim(lower(adjustl(what)))
+        if (.not. any(what_names == task)) then
+            errmsg = located(path, gr)//'what = '''//trim(what)//''': unknown (allowed: ' &
+                     //join(what_names)//')'
+            return
+        end if
+        call check_rocking(path, gr, task, errmsg)
+        if (len(errmsg) > 0) return
+        if (find_group(groups, 'block') == 0) then
+            errmsg = path//': &block: missing group (it gives the block: b and h, or alpha ' &
+                     //'or alpha_deg with r)'
+            return
+        end if
+        if (task == 'map') then
+            if (find_group(groups, 'pulse') > 0) then
+                errmsg = located(path, pin%group)//'not used by what = ''map'' (the pulse ' &
+                         //'family and shape of a map are in &map)'
+                return
+            end if
+            if (find_group(groups, 'map') == 0) then
+                errmsg = path//': &map: missing group (what = ''map'' needs the grids: ' &
+                         //'freq_ratio or freq_range, amp_ratio or amp_range)'
+                return
+            end if
+        else if (find_group(groups, 'map') > 0) then
+            errmsg = located(path, gm)//'only with what = ''map'' (&rocking; now what = ''' &
+                     //task//''')'
+            return
+        end if
+
+        ! --- the excitation, then the block (which uses its g)
+        g_block = 9.80665_dp
+        if (task /= 'map') then
+            call build_pulse(path, pin, stat, errmsg, g_used=.true.)
+            if (stat /= 0) return
+            stat = 1
+            g_block = pin%g
+        end if
+        call check_block(path, gb, g_block, task == 'map', blk, errmsg)
+        if (len(errmsg) > 0) return
+
+        select case (task)
+        case ('summary')
+            call do_summary(path, prefix, pin, gb, gr, blk, stat, errmsg)
+        case ('history')
+            call do_history(path, prefix, pin, gb, gr, blk, stat, errmsg)
+        case default
+            call do_map(path, prefix, gb, gr, gm, blk, stat, errmsg)
+        end select
+    end subroutine run_rocking
+
+    ! ------------------------------------------------------------------------------
+    ! Checks
+    ! ------------------------------------------------------------------------------
+
+    !> Check &rocking for the task. errmsg is empty on success.
+    subroutine check_rocking(path, gr, task, errmsg)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gr
+        character(len=*), intent(in) :: task
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=:), allocatable :: where
+        character(len=8), parameter :: grid_keys(3) = [character(len=8) :: 't_end', 'npts', &
+            'dt']
+        integer :: i
+        logical :: ok
+        where = located(path, gr)
+        errmsg = ''
+        if (task /= 'history') then
+            do i = 1, size(grid_keys)
+                if (given(gr, trim(grid_keys(i)))) then
+                    errmsg = where//trim(grid_keys(i))//': only with what = ''history'' ' &
+                             //'(the grid of the history table)'
+                    return
+                end if
+            end do
+        end if
+        if (task == 'map' .and. given(gr, 't_max')) then
+            errmsg = where//'t_max: not with what = ''map'' (each cell runs until its ' &
+                     //'class is known)'
+            return
+        end if
+        ok = .false.
+        if (.not. ieee_is_nan(t_max)) ok = t_max > 0.0_dp
+        if (.not. ok) then
+            errmsg = where//'t_max = '//real_str(t_max)//': must be a number > 0 (s) or ' &
+                     //'+Inf (no limit)'
+            return
+        end if
+        ok = .false.
+        if (.not. ieee_is_nan(rtol)) ok = rtol >= 1.0e-14_dp .and. rtol <= 1.0e-3_dp
+        if (.not. ok) then
+            errmsg = where//'rtol = '//real_str(rtol)//': must be in [1e-14, 1e-3]'
+            return
+        end if
+        if (task /= 'history') return
+        if (given(gr, 't_end') .and. .not. finite_positive(t_end)) then
+            errmsg = where//'t_end = '//real_str(t_end)//': must be a finite number > 0 (s)'
+        else if (given(gr, 'npts') .and. given(gr, 'dt')) then
+            errmsg = where//'dt, npts: give one of them, not both'
+        else if (given(gr, 'dt') .and. .not. finite_positive(dt)) then
+            errmsg = where//'dt = '//real_str(dt)//': must be a finite number > 0 (s)'
+        else if (given(gr, 'npts') .and. (npts < 2 .or. npts > max_rows)) then
+            errmsg = where//'npts: must be in 2 .. 10000000'
+        end if
+    end subroutine check_rocking
+
+    !> Check &block and build the block (g: gravity of the excitation; for a map any
+    !> value, the map being dimensionless). errmsg is empty on success.
+    subroutine check_block(path, gb, g, for_map, blk, errmsg)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gb
+        real(dp), intent(in) :: g
+        logical, intent(in) :: for_map
+        type(rocking_block_t), intent(out) :: blk
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=:), allocatable :: where, name
+        character(len=512) :: msg
+        real(dp) :: a, radius
+        integer :: stat
+        logical :: has_bh, has_alpha, ok
+
+        where = located(path, gb)
+        errmsg = ''
+        msg = ''
+        has_bh = given(gb, 'b') .or. given(gb, 'h')
+        has_alpha = given(gb, 'alpha') .or. given(gb, 'alpha_deg')
+        if (given(gb, 'alpha') .and. given(gb, 'alpha_deg')) then
+            errmsg = where//'alpha, alpha_deg: give only one of them'
+            return
+        end if
+        if (has_bh .and. has_alpha) then
+            errmsg = where//'b, h: not with alpha or alpha_deg (give b and h, or the ' &
+                     //'slenderness with r)'
+            return
+        end if
+        if (has_bh) then
+            if (.not. given(gb, 'b')) then
+                errmsg = where//'b: missing (b and h go together: half-width and ' &
+                         //'half-height, m)'
+            else if (.not. given(gb, 'h')) then
+                errmsg = where//'h: missing (b and h go together: half-width and ' &
+                         //'half-height, m)'
+            else if (given(gb, 'r')) then
+                errmsg = where//'r: not with b and h (R = sqrt(b^2 + h^2))'
+            end if
+            if (len(errmsg) > 0) return
+            if (given(gb, 'io_over_mr2')) then
+                ! b, h and a non-uniform mass: symmetric_block, after the checks of b, h
+                call rectangular_block(b, h, g, blk, stat, msg)
+                if (stat == SEISPULSE_SUCCESS) call symmetric_block(hypot(b, h), &
+                    atan2(b, h), io_over_mr2, g, blk, stat, msg)
+            else
+                call rectangular_block(b, h, g, blk, stat, msg)
+            end if
+        else if (has_alpha) then
+            if (given(gb, 'alpha_deg')) then
+                ok = .false.
+                if (.not. ieee_is_nan(alpha_deg)) ok = alpha_deg > 0.0_dp .and. &
+                                                       alpha_deg < 90.0_dp
+                if (.not. ok) then
+                    errmsg = where//'alpha_deg = '//real_str(alpha_deg)//': must be a ' &
+                             //'number in (0, 90) (degrees)'
+                    return
+                end if
+                a = alpha_deg * (pi / 180.0_dp)
+            else
+                a = alpha
+            end if
+            radius = r
+            if (.not. given(gb, 'r')) then
+                if (.not. for_map) then
+                    errmsg = where//'r: missing (the distance from the pivot corner to the ' &
+                             //'centre of mass, m; with alpha or alpha_deg)'
+                    return
+                end if
+                radius = 1.0_dp          ! a map is dimensionless: p drops out
+            end if
+            call symmetric_block(radius, a, io_over_mr2, g, blk, stat, msg)
+        else
+            errmsg = where//'b, h: missing (give b and h, or alpha or alpha_deg with r)'
+            return
+        end if
+        if (stat /= SEISPULSE_SUCCESS) then
+            errmsg = where//trim(msg)
+            return
+        end if
+        if (for_map .and. given(gb, 'r')) write(error_unit, '(a)') 'warning: '//where &
+            //'r: not used by what = ''map'' (the map is dimensionless)'
+        if (given(gb, 'e')) then
+            ok = .false.
+            if (.not. ieee_is_nan(e)) ok = e >= 0.0_dp .and. e <= 1.0_dp
+            if (.not. ok) then
+                errmsg = where//'e = '//real_str(e)//': the coefficient of restitution ' &
+                         //'must be in [0, 1]'
+                return
+            end if
+            blk%e = e
+        end if
+        name = trim(lower(adjustl(model)))
+        select case (name)
+        case ('nonlinear')
+            blk%linearized = .false.
+        case ('linearized')
+            blk%linearized = .true.
+        case default
+            errmsg = where//'model = '''//trim(model)//''': unknown model (allowed: ' &
+                     //join(model_names)//')'
+            return
+        end select
+        call rocking_block_validate(blk, stat, msg)
+        if (stat /= SEISPULSE_SUCCESS) then
+            errmsg = where//trim(msg)
+            return
+        end if
+        ! the effective values, for the echo
+        e = blk%e
+        model = name
+    end subroutine check_block
+
+    !> Where a library message about a run belongs: &pulse, &rocking or &block.
+    function locate_message(path, msg, pin, gb, gr) result(full_msg)
+        character(len=*), intent(in) :: path, msg
+        type(pulse_input_t), intent(in) :: pin
+        type(nml_group), intent(in) :: gb, gr
+        character(len=:), allocatable :: full_msg
+        character(len=:), allocatable :: key
+        integer :: k
+        k = scan(msg, ' =:(')
+        key = ''
+        if (k > 1) key = msg(1:k - 1)
+        if (any(pulse_keys == key)) then
+            full_msg = located(path, pin%group)//msg
+        else if (any(rocking_keys == key)) then
+            full_msg = located(path, gr)//msg
+        else
+            full_msg = located(path, gb)//msg
+        end if
+    end function locate_message
+
+    ! ------------------------------------------------------------------------------
+    ! Summary
+    ! ------------------------------------------------------------------------------
+
+    !> The closed forms apply: the half-cycle exponential pulse or one of its limits
+    !> (rectangular: beta = -inf; symmetric triangular: beta = 0), amp > 0. beta_cf
+    !> receives the shape.
+    logical function closed_form_pulse(p, beta_cf)
+        type(pulse_t), intent(in) :: p
+        real(dp), intent(out) :: beta_cf
+        closed_form_pulse = .false.
+        beta_cf = 0.0_dp
+        if (.not. p%amp > 0.0_dp) return
+        select case (p%kind)
+        case (PULSE_EXPONENTIAL)
+            closed_form_pulse = .not. p%full
+            beta_cf = p%beta
+        case (PULSE_RECTANGULAR)
+            closed_form_pulse = .true.
+            beta_cf = -ieee_value(beta_cf, ieee_positive_inf)
+        case (PULSE_TRIANGULAR)
+            closed_form_pulse = .not. abs(p%peak_frac - 0.5_dp) > 0.0_dp
+        end select
+    end function closed_form_pulse
+
+    subroutine do_summary(path, prefix, pin, gb, gr, blk, stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(pulse_input_t), intent(in) :: pin
+        type(nml_group), intent(in) :: gb, gr
+        type(rocking_block_t), intent(in) :: blk
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        type(rocking_run_t) :: run
+        character(len=512) :: msg, files(2), comments(8)
+        real(dp) :: row(21), nan, f, eta, beta_cf, tau_up, tau_c, tau_m, psi_max, tau_i, td
+        integer :: region, i
+        logical :: cf
+
+        nan = ieee_value(nan, ieee_quiet_nan)
+        call echo()
+        stat = 1
+        msg = ''
+        call rock_pulse(blk, pin%p, run, i, msg, t_max=t_max, rtol=rtol)
+        if (i /= SEISPULSE_SUCCESS) then
+            errmsg = locate_message(path, trim(msg), pin, gb, gr)
+            return
+        end if
+        cf = closed_form_pulse(pin%p, beta_cf)
+        f = nan
+        eta = nan
+        region = -1
+        tau_up = nan
+        tau_c = nan
+        tau_m = nan
+        psi_max = nan
+        tau_i = nan
+        td = pin%p%duration
+        if (cf) then
+            f = blk%p * td
+            eta = blk%alpha / pin%amp_g
+            call rocking_summary(f, eta, beta_cf, region, tau_up, tau_c, tau_m, psi_max, &
+                                 tau_i, i, msg)
+            if (i /= SEISPULSE_SUCCESS) then
+                errmsg = located(path, gb)//'closed forms: '//trim(msg)
+                return
+            end if
+        end if
+        row = nan
+        row(1:6) = [blk%alpha, blk%p, blk%e, f, eta, real(run%outcome, dp)]
+        row(7:8) = [run%t_uplift, run%t_overturn]
+        row(9) = real(run%n_impacts, dp)
+        if (run%n_impacts > 0) row(10) = run%t_impacts(1)
+        row(11:15) = [run%theta_max, run%theta_min, run%theta_max / blk%alpha, &
+                      run%theta_min / blk%alpha, run%t_end]
+        if (cf) row(16:21) = [real(region, dp), tau_up * td, tau_c * td, tau_m * td, &
+                              psi_max, tau_i * td]
+
+        call block_comments(pin, blk, comments(1:3))
+        comments(4) = outcome_legend()
+        comments(5) = 't_overturn: last outward crossing of |theta| = alpha before ' &
+                      //'overturning (theta_max = pi/2 then); t_impact1: first impact; ' &
+                      //'t_end: rest, overturned (|theta| = pi/2) or the time limit'
+        comments(6) = 'psi = theta/alpha; NaN: no such event'
+        comments(7) = region_legend()
+        if (cf) then
+            comments(8) = 'closed forms (_cf): linearized model (rocking.md 2.4-2.35, ' &
+                          //'seispulse_rocking), half-cycle exponential pulse, beta = ' &
+                          //real_str(beta_cf)//', f = p t_d, eta = alpha/(A_g/g)'
+        else
+            comments(8) = 'closed forms (_cf): NaN, they exist for the half-cycle ' &
+                          //'exponential pulse (also rectangular, symmetric triangular) ' &
+                          //'with amp > 0 only'
+        end if
+        call write_tables(prefix, 'rocking', comments, &
+            [character(len=12) :: 'alpha', 'p', 'e', 'f', 'eta', 'outcome', 't_uplift', &
+             't_overturn', 'n_impacts', 't_impact1', 'theta_max', 'theta_min', 'psi_max', &
+             'psi_min', 't_end', 'region', 't_up_cf', 't_c_cf', 't_m_cf', 'psi_max_cf', &
+             't_i_cf'], &
+            [character(len=6) :: 'rad', 'rad/s', '-', '-', '-', '-', 's', 's', '-', 's', &
+             'rad', 'rad', '-', '-', 's', '-', 's', 's', 's', '-', 's'], &
+            reshape(row, [1, size(row)]), files, stat, errmsg)
+        if (stat /= 0) then
+            errmsg = path//': &run: output: '//errmsg
+            return
+        end if
+        write(output_unit, '(a)') 'rocking: '//trim(outcome_names(run%outcome))
+        write(output_unit, '(a)') 'rocking table written to '//trim(files(1))//' and ' &
+            //trim(files(2))
+    end subroutine do_summary
+
+    !> Header lines describing the excitation and the block.
+    subroutine block_comments(pin, blk, lines)
+        type(pulse_input_t), intent(in) :: pin
+        type(rocking_block_t), intent(in) :: blk
+        character(len=*), intent(out) :: lines(3)
+        lines(1) = 'seispulse analysis rocking: '//pulse_kind_name(pin%code)//' pulse, ' &
+                   //trim(model)//' model (seispulse_rocking_sim)'
+        lines(2) = 'block: alpha = '//real_str(blk%alpha)//' rad, p = '//real_str(blk%p) &
+                   //' rad/s, e = '//real_str(blk%e)//', g = '//real_str(blk%g)//' m/s2'
+        lines(3) = 'uplift at |a_g| > g tan(alpha) (nonlinear) or g alpha (linearized); ' &
+                   //'a_g > 0 drives theta > 0'
+    end subroutine block_comments
+
+    function outcome_legend() result(text)
+        character(len=:), allocatable :: text
+        integer :: k
+        text = 'outcome:'
+        do k = 0, 5
+            text = text//' '//achar(iachar('0') + k)//' '//trim(outcome_names(k))
+            if (k < 5) text = text//','
+        end do
+    end function outcome_legend
+
+    function region_legend() result(text)
+        character(len=:), allocatable :: text
+        integer :: k
+        text = 'region:'
+        do k = 0, 5
+            text = text//' '//achar(iachar('0') + k)//' '//rocking_region_name(k)
+            if (k < 5) text = text//','
+        end do
+    end function region_legend
+
+    ! ------------------------------------------------------------------------------
+    ! History
+    ! ------------------------------------------------------------------------------
+
+    subroutine do_history(path, prefix, pin, gb, gr, blk, stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(pulse_input_t), intent(in) :: pin
+        type(nml_group), intent(in) :: gb, gr
+        type(rocking_block_t), intent(in) :: blk
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        type(rocking_run_t) :: run
+        character(len=512) :: msg, files(2), comments(7)
+        real(dp), allocatable :: t(:), table(:, :), v(:), d(:)
+        real(dp) :: t_last, step, pulse_end
+        integer :: n, j, i
+
+        call echo()
+        stat = 1
+        msg = ''
+        ! --- the grid: up to t_end, or past the end of the motion
+        t_last = t_end
+        if (ieee_is_nan(t_end)) then
+            call rock_pulse(blk, pin%p, run, i, msg, t_max=t_max, rtol=rtol)
+            if (i /= SEISPULSE_SUCCESS) then
+                errmsg = locate_message(path, trim(msg), pin, gb, gr)
+                return
+            end if
+            if (pin%code == PULSE_RICKER) then
+                pulse_end = 2.0_dp * pin%p%t0
+            else
+                pulse_end = pulse_end_time(pin%p)
+            end if
+            if (run%outcome == ROCK_TIME_LIMIT .and. run%t_end > 0.0_dp) then
+                t_last = run%t_end               ! no solution beyond it
+            else
+                t_last = max(1.25_dp * run%t_end, pulse_end)
+            end if
+        end if
+        if (given(gr, 'dt')) then
+            if (t_last / dt + 1.0_dp > max_rows) then
+                errmsg = located(path, gr)//'dt: too small, more than 1e7 points'
+                return
+            end if
+            n = int(t_last / dt * (1.0_dp + 1.0e-12_dp)) + 1
+            step = dt
+        else
+            n = npts
+            if (n == 0) n = 1001
+            step = t_last / (n - 1)
+        end if
+        allocate(t(n), table(n, 4), v(n), d(n))
+        t = step * [(real(j, dp), j = 0, n - 1)]
+        call rock_pulse(blk, pin%p, run, i, msg, t_grid=t, theta_grid=table(:, 3), &
+                        omega_grid=table(:, 4), t_max=t_max, rtol=rtol)
+        if (i == SEISPULSE_SUCCESS) call pulse_eval(pin%p, t, table(:, 2), v, d, i, msg)
+        if (i /= SEISPULSE_SUCCESS) then
+            errmsg = locate_message(path, trim(msg), pin, gb, gr)
+            return
+        end if
+        table(:, 1) = t
+
+        call block_comments(pin, blk, comments(1:3))
+        comments(4) = 'outcome: '//trim(outcome_names(run%outcome))//', t_uplift = ' &
+                      //real_str(run%t_uplift)//' s, impacts: '//int_str(run%n_impacts) &
+                      //', theta_max = '//real_str(run%theta_max)//' rad, theta_min = ' &
+                      //real_str(run%theta_min)//' rad, t_end = '//real_str(run%t_end)//' s'
+        comments(5) = 'theta: rotation (rad; > 0 about one corner, < 0 about the other), ' &
+                      //'omega = dtheta/dt (rad/s)'
+        comments(6) = 'overturned: theta = +-pi/2 and omega = 0 after t_end; NaN after a ' &
+                      //'time limit'
+        comments(7) = 'input: '//trim(path)
+        call write_tables(prefix, 'rocking_history', comments, &
+            [character(len=8) :: 't', 'a_g', 'theta', 'omega'], &
+            [character(len=8) :: 's', 'm/s2', 'rad', 'rad/s'], table, files, stat, errmsg)
+        if (stat /= 0) then
+            errmsg = path//': &run: output: '//errmsg
+            return
+        end if
+        write(output_unit, '(a)') 'rocking: '//trim(outcome_names(run%outcome))
+        write(output_unit, '(a)') 'rocking history written to '//trim(files(1))//' and ' &
+            //trim(files(2))
+    end subroutine do_history
+
+    ! ------------------------------------------------------------------------------
+    ! Overturning map
+    ! ------------------------------------------------------------------------------
+
+    subroutine do_map(path, prefix, gb, gr, gm, blk, stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(nml_group), intent(in) :: gb, gr, gm
+        type(rocking_block_t), intent(in) :: blk
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=:), allocatable :: where
+        character(len=512) :: msg, files(2), comments(7)
+        real(dp), allocatable :: freqs(:), amps(:), table(:, :)
+        integer, allocatable :: classes(:, :)
+        type(pulse_t) :: tpl, pl
+        integer :: code, i, j, row, st
+        integer(int64) :: c_start, c_now, c_last, rate
+        real(dp) :: elapsed
+        logical :: printed
+
+        where = located(path, gm)
+        stat = 1
+        msg = ''
+        call pulse_kind_from_name(kind, code, st, msg)
+        if (st /= SEISPULSE_SUCCESS) then
+            errmsg = where//trim(msg)
+            return
+        end if
+        if (code == PULSE_MP) then
+            errmsg = where//'kind = '''//trim(kind)//''': maps take an acceleration pulse ' &
+                     //'with a time scale (not mavroeidis_papageorgiou)'
+            return
+        end if
+        call map_axis(gm, 'freq', freq_ratio, freq_range, freq_count, .true., freqs, errmsg)
+        if (len(errmsg) > 0) then
+            errmsg = where//errmsg
+            return
+        end if
+        call map_axis(gm, 'amp', amp_ratio, amp_range, amp_count, .false., amps, errmsg)
+        if (len(errmsg) > 0) then
+            errmsg = where//errmsg
+            return
+        end if
+        tpl = pulse_t(kind=code, amp=1.0_dp, duration=1.0_dp, beta=beta, full=full, &
+                      peak_frac=peak_frac, freq=1.0_dp, t0=t0_periods)
+        if (code == PULSE_RICKER .and. .not. (ieee_is_finite(t0_periods) .and. &
+                                              t0_periods >= 0.0_dp)) then
+            errmsg = where//'t0_periods = '//real_str(t0_periods)//': must be a finite ' &
+                     //'number >= 0 (the centre of the wavelet times f_p)'
+            return
+        end if
+        ! the shape first (at a unit time scale), then every time scale of the map
+        call pulse_validate(tpl, st, msg)
+        if (st /= SEISPULSE_SUCCESS) then
+            errmsg = where//trim(msg)
+            return
+        end if
+        do j = 1, size(freqs)
+            pl = tpl
+            pl%amp = tan(blk%alpha)
+            if (code == PULSE_RICKER) then
+                pl%freq = freqs(j) / (2.0_dp * pi)
+                pl%t0 = t0_periods / pl%freq
+            else
+                pl%duration = 2.0_dp * pi / freqs(j)
+            end if
+            call pulse_validate(pl, st, msg)
+            if (st /= SEISPULSE_SUCCESS) then
+                if (given(gm, 'freq_ratio')) then
+                    errmsg = where//'freq_ratio('//int_str(j)//') = '//real_str(freqs(j))
+                else
+                    errmsg = where//'freq_range: the value '//real_str(freqs(j))
+                end if
+                errmsg = errmsg//': no valid pulse at this time scale ('//trim(msg)//')'
+                return
+            end if
+        end do
+        call warn_unused_template(path, gm, code)
+
+        call echo()
+        allocate(classes(size(amps), size(freqs)))
+        call system_clock(c_start, rate)
+        c_last = c_start
+        printed = .false.
+        do i = 1, size(amps)
+            call overturning_map(blk%alpha, blk%e, code, freqs, amps(i:i), &
+                                 classes(i:i, :), st, msg, linearized=blk%linearized, &
+                                 template=tpl, rtol=rtol)
+            if (st /= SEISPULSE_SUCCESS) then
+                if (index(msg, 'rtol') == 1) then
+                    errmsg = located(path, gr)//trim(msg)
+                else if (index(msg, 'alpha') == 1 .or. msg(1:2) == 'e ') then
+                    errmsg = located(path, gb)//trim(msg)
+                else
+                    errmsg = where//trim(msg)
+                end if
+                return
+            end if
+            call system_clock(c_now)
+            elapsed = real(c_now - c_start, dp) / real(max(rate, 1_int64), dp)
+            if (i < size(amps) .and. elapsed >= progress_after .and. (.not. printed .or. &
+                real(c_now - c_last, dp) / real(max(rate, 1_int64), dp) >= progress_every)) &
+                then
+                write(error_unit, '(a, i0, a, i0)') 'map: row ', i, '/', size(amps)
+                flush(error_unit)
+                c_last = c_now
+                printed = .true.
+            end if
+        end do
+        if (printed) then
+            write(error_unit, '(a, i0, a, i0, a)') 'map: row ', size(amps), '/', &
+                size(amps), ' (done)'
+            flush(error_unit)
+        end if
+
+        allocate(table(size(amps) * size(freqs), 3))
+        row = 0
+        do i = 1, size(amps)
+            do j = 1, size(freqs)
+                row = row + 1
+                table(row, :) = [freqs(j), amps(i), real(classes(i, j), dp)]
+            end do
+        end do
+        comments(1) = 'seispulse analysis rocking: overturning map, '//pulse_kind_name(code) &
+                      //' pulse family, '//trim(model)//' model (seispulse_rocking_sim)'
+        comments(2) = 'class: 0 safe, 1 overturns without impact, 2 overturns after one ' &
+                      //'impact, 3 after more impacts, -1 undecided (step budget)'
+        comments(3) = 'freq_ratio = omega_p/p, omega_p = 2 pi/T_p (T_p: t_d of the ' &
+                      //'exponential pulse, the period of sine/cosine cycles, the length ' &
+                      //'of the others; Ricker: omega_p = 2 pi f_p)'
+        comments(4) = 'amp_ratio = a_p/(g tan alpha) (both models); rows: amp_ratio ' &
+                      //'outer, freq_ratio inner'
+        comments(5) = 'block: alpha = '//real_str(blk%alpha)//' rad, e = '//real_str(blk%e)
+        comments(6) = template_text(code)
+        comments(7) = 'input: '//trim(path)
+        call write_tables(prefix, 'rocking_map', comments, &
+            [character(len=12) :: 'freq_ratio', 'amp_ratio', 'class'], &
+            [character(len=4) :: '-', '-', '-'], table, files, stat, errmsg)
+        if (stat /= 0) then
+            errmsg = path//': &run: output: '//errmsg
+            return
+        end if
+        write(output_unit, '(a)') 'rocking map written to '//trim(files(1))//' and ' &
+            //trim(files(2))
+    end subroutine do_map
+
+    !> One axis of the map from a list (`<axis>_ratio`) or a range with a count.
+    subroutine map_axis(gm, axis, list, range, count, positive, values, errmsg)
+        type(nml_group), intent(in) :: gm
+        character(len=*), intent(in) :: axis              !! 'freq' or 'amp'
+        real(dp), intent(in) :: list(:), range(2)
+        integer, intent(in) :: count
+        logical, intent(in) :: positive                   !! > 0 (else >= 0)
+        real(dp), allocatable, intent(out) :: values(:)
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=:), allocatable :: lname, rname, cname, bound
+        integer :: n, i
+        logical :: ok
+        errmsg = ''
+        lname = axis//'_ratio'
+        rname = axis//'_range'
+        cname = axis//'_count'
+        bound = merge('> 0 ', '>= 0', positive)
+        if (given(gm, lname) .and. given(gm, rname)) then
+            errmsg = lname//', '//rname//': give only one of them'
+            return
+        end if
+        if (given(gm, lname)) then
+            if (given(gm, cname)) then
+                errmsg = cname//': only with '//rname
+                return
+            end if
+            n = 0
+            do i = size(list), 1, -1
+                if (.not. ieee_is_nan(list(i))) then
+                    n = i
+                    exit
+                end if
+            end do
+            if (n == 0) then
+                errmsg = lname//': no value given'
+                return
+            end if
+            do i = 1, n
+                ok = .false.
+                if (ieee_is_finite(list(i))) ok = list(i) > 0.0_dp .or. &
+                    (.not. positive .and. .not. list(i) < 0.0_dp)
+                if (.not. ok) then
+                    if (ieee_is_nan(list(i))) then
+                        errmsg = lname//'('//int_str(i)//'): missing or NaN (give every ' &
+                                 //'value, without gaps)'
+                    else
+                        errmsg = lname//'('//int_str(i)//') = '//real_str(list(i)) &
+                                 //': must be a finite number '//trim(bound)
+                    end if
+                    return
+                end if
+            end do
+            allocate(values(n), source=list(1:n))
+        else if (given(gm, rname)) then
+            ok = ieee_is_finite(range(1)) .and. ieee_is_finite(range(2))
+            if (.not. ok) then
+                errmsg = rname//': give two finite numbers, '//rname//' = min, max'
+                return
+            end if
+            if (positive) then
+                ok = range(1) > 0.0_dp
+            else
+                ok = range(1) >= 0.0_dp
+            end if
+            if (.not. ok) then
+                errmsg = rname//'(1) = '//real_str(range(1))//': must be '//trim(bound)
+                return
+            end if
+            if (.not. range(2) > range(1)) then
+                errmsg = rname//' = '//real_str(range(1))//', '//real_str(range(2)) &
+                         //': the maximum must be above the minimum'
+                return
+            end if
+            if (count < 2 .or. count > max_list) then
+                errmsg = cname//' = '//int_str(count)//': must be in 2 .. 1000'
+                return
+            end if
+            allocate(values(count))
+            do i = 1, count
+                values(i) = range(1) + (range(2) - range(1)) * (real(i - 1, dp) &
+                                                                 / real(count - 1, dp))
+            end do
+            values(count) = range(2)
+        else
+            errmsg = lname//': missing (give '//lname//' = a list, or '//rname//' = min, ' &
+                     //'max with '//cname//')'
+        end if
+    end subroutine map_axis
+
+    !> Warn (stderr) about template keys of &map the pulse family does not use.
+    subroutine warn_unused_template(path, gm, code)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gm
+        integer, intent(in) :: code
+        integer :: i
+        logical :: used
+        do i = 1, size(gm%items)
+            select case (gm%items(i)%key)
+            case ('beta', 'full')
+                used = code == PULSE_EXPONENTIAL
+            case ('peak_frac')
+                used = code == PULSE_TRIANGULAR
+            case ('t0_periods')
+                used = code == PULSE_RICKER
+            case default
+                used = .true.
+            end select
+            if (.not. used) write(error_unit, '(a)') 'warning: '//located(path, gm) &
+                //gm%items(i)%key//': not used by kind '//pulse_kind_name(code)
+        end do
+    end subroutine warn_unused_template
+
+    !> The shape parameters of a map's pulse family, for the header.
+    function template_text(code) result(text)
+        integer, intent(in) :: code
+        character(len=:), allocatable :: text
+        select case (code)
+        case (PULSE_EXPONENTIAL)
+            text = 'pulse shape: beta = '//real_str(beta)//', full = ' &
+                   //trim(merge('.true. ', '.false.', full))
+        case (PULSE_TRIANGULAR)
+            text = 'pulse shape: peak_frac = '//real_str(peak_frac)
+        case (PULSE_RICKER)
+            text = 'pulse shape: t0 f_p = '//real_str(t0_periods)
+        case default
+            text = 'pulse shape: '//pulse_kind_name(code)
+        end select
+    end function template_text
+
+    ! ------------------------------------------------------------------------------
+    ! Helpers
+    ! ------------------------------------------------------------------------------
+
+    !> Echo the effective input (&pulse unless a map, &block, &rocking, &map if a map).
+    subroutine echo()
+        character(len=:), allocatable :: task
+        task = trim(lower(adjustl(what)))
+        what = task
+        if (task /= 'map') call write_pulse_group(output_unit)
+        write(output_unit, nml=block)
+        write(output_unit, nml=rocking)
+        if (task == 'map') write(output_unit, nml=map)
+    end subroutine echo
+
+    pure function int_str(i) result(text)
+        integer, intent(in) :: i
+        character(len=:), allocatable :: text
+        character(len=16) :: buf
+        write(buf, '(i0)') i
+        text = trim(buf)
+    end function int_str
+
+end module driver_rocking

@@ -1,0 +1,364 @@
+"""Rocking and overturning of free-standing rigid blocks (seed 000, chapter 2,
+corrected; Fortran modules ``seispulse_rocking`` and ``seispulse_rocking_sim``).
+
+Linearized closed forms under the half-cycle exponential pulse, dimensionless as in the
+chapter: ``f = p t_d`` (the printed ``f = p/t_d`` is an erratum), ``eta = alpha /
+alpha_g`` with ``alpha_g = A_g / g``, ``beta`` the pulse shape (-inf box, 0 triangle,
++inf spike), ``tau = t / t_d``, ``psi = theta / alpha`` and ``dpsi = (dtheta/dt) /
+(alpha p)``. Regions (rocking.md 5.4): 'no_rocking' (eta >= 1), 'O1', 'O2', 'O3'
+(overturning without impact: during the rising branch, the falling branch, after the
+pulse) and 'S1', 'S2' (stable, maximum during or after the pulse).
+
+The nonlinear model (Housner's Eqs. 2.5/2.6, or the linearized 2.7) runs under any
+pulse of :mod:`seispulse.pulse` or a sampled accelerogram with impacts and restitution
+(:func:`simulate`), and overturning maps classify whole grids (:func:`overturning_map`).
+
+Parameters of the closed forms broadcast like numpy ufuncs; scalars in give Python
+scalars out.
+"""
+
+from collections import namedtuple
+
+import numpy as np
+
+from . import _core
+from ._seispulse import (sp_overturning_map, sp_rock, sp_rocking_block, sp_rocking_curve,
+                         sp_rocking_extremes, sp_rocking_rect_normalized, sp_rocking_response,
+                         sp_rocking_summary)
+from .errors import InvalidInputError
+from .pulse import STANDARD_GRAVITY, Pulse, define
+
+__all__ = ["REGIONS", "Response", "Summary", "uplift_time", "response", "summary",
+           "extremes", "classify", "critical_time", "time_of_max", "max_rotation", "impact_time",
+           "stability_wall", "stability_wall_inverse", "min_overturning_amplitude",
+           "overturn_boundary", "overturn_boundary_inverse", "s1_s2_boundary",
+           "rectangle_normalized", "Block", "rectangular_block", "symmetric_block",
+           "OUTCOMES", "RockingRun", "simulate", "MAP_CLASSES", "overturning_map",
+           "plot_overturning_map"]
+
+#: Regions of the (f, eta) plane, by code.
+REGIONS = ("no_rocking", "O1", "O2", "O3", "S1", "S2")
+
+Response = namedtuple("Response", ["psi", "dpsi"])
+Response.__doc__ = """First excursion: psi = theta/alpha and dpsi = (dtheta/dt)/(alpha p)."""
+
+Summary = namedtuple("Summary", ["region", "tau_up", "tau_c", "tau_m", "psi_max", "tau_i"])
+Summary.__doc__ = """Everything of the first excursion: region, uplift tau_up, critical
+(overturning) time tau_c (O regions, else NaN), time of the maximum tau_m and first
+impact tau_i (S regions, else NaN), psi_max = theta_max/alpha (0 without rocking,
++inf when the block overturns). Times are t/t_d."""
+
+_CURVES = {"uplift": 1, "wall": 2, "wall_inverse": 3, "end": 4, "mid": 5, "end_inverse": 6,
+           "mid_inverse": 7, "s1_s2": 8}
+
+
+def _names(codes, shape):
+    names = np.asarray(REGIONS)[np.asarray(codes)]
+    return str(names.reshape(-1)[0]) if shape == () else names.reshape(shape)
+
+
+def _curve(which, x_name, x, beta, rename=None):
+    shape, arr = _core.broadcast(**{x_name: x, "beta": beta})
+    y, stat, msg = sp_rocking_curve(_CURVES[which], _core.flat(arr[x_name], shape),
+                                    _core.flat(arr["beta"], shape))
+    _core.raise_for_status(stat, msg, rename)
+    return _core.shaped(shape, y)[0]
+
+
+def uplift_time(eta, beta):
+    """Uplift (rocking onset) time tau_up = t_up/t_d (Eq. 2.4); NaN for eta >= 1."""
+    return _curve("uplift", "eta", eta, beta)
+
+
+def response(tau, f, eta, beta):
+    """psi = theta/alpha and dpsi = (dtheta/dt)/(alpha p) of the first excursion
+    (Eqs. 2.10-2.15 in stable form): 0 before uplift, NaN after the first impact."""
+    shape, arr = _core.broadcast(tau=tau, f=f, eta=eta, beta=beta)
+    psi, dpsi, stat, msg = sp_rocking_response(*(_core.flat(arr[k], shape)
+                                                 for k in ("tau", "f", "eta", "beta")))
+    _core.raise_for_status(stat, msg)
+    return Response(*_core.shaped(shape, psi, dpsi))
+
+
+def summary(f, eta, beta):
+    """Region, tau_up, tau_c, tau_m, psi_max and tau_i in one pass (:class:`Summary`)."""
+    shape, arr = _core.broadcast(f=f, eta=eta, beta=beta)
+    region, out, stat, msg = sp_rocking_summary(*(_core.flat(arr[k], shape)
+                                                  for k in ("f", "eta", "beta")))
+    _core.raise_for_status(stat, msg)
+    cols = _core.shaped(shape, *(np.ascontiguousarray(out[:, j]) for j in range(5)))
+    return Summary(_names(region, shape), *cols)
+
+
+def extremes(f, eta, beta):
+    """(region, psi_max) from one evaluation per case: the fast path of :func:`classify`
+    and :func:`max_rotation` for many cases."""
+    shape, arr = _core.broadcast(f=f, eta=eta, beta=beta)
+    region, psi_max, stat, msg = sp_rocking_extremes(*(_core.flat(arr[k], shape)
+                                                       for k in ("f", "eta", "beta")))
+    _core.raise_for_status(stat, msg)
+    return _names(region, shape), _core.shaped(shape, psi_max)[0]
+
+
+def classify(f, eta, beta):
+    """'no_rocking', 'O1', 'O2', 'O3', 'S1' or 'S2' (rocking.md 5.4)."""
+    return extremes(f, eta, beta)[0]
+
+
+def critical_time(f, eta, beta):
+    """Time tau_c at which theta reaches alpha (O regions; NaN otherwise)."""
+    return summary(f, eta, beta).tau_c
+
+
+def time_of_max(f, eta, beta):
+    """Time of the maximum rotation tau_m (Eqs. 2.23-2.26; S regions, NaN otherwise)."""
+    return summary(f, eta, beta).tau_m
+
+
+def max_rotation(f, eta, beta):
+    """theta_max/alpha: 0 without rocking, +inf when the block overturns."""
+    return extremes(f, eta, beta)[1]
+
+
+def impact_time(f, eta, beta):
+    """Time of the first impact tau_i (corrected Eqs. 2.32-2.36; S regions, else NaN)."""
+    return summary(f, eta, beta).tau_i
+
+
+def stability_wall(f, beta):
+    """eta_w(f, beta) (Eq. 2.20; 2.21 rectangle, 2.22 triangle): the block overturns for
+    eta < eta_w."""
+    return _curve("wall", "f", f, beta)
+
+
+def min_overturning_amplitude(f, beta):
+    """Minimum overturning amplitude alpha_g,min/alpha = 1/eta_w(f, beta)."""
+    return 1.0 / stability_wall(f, beta)
+
+
+def stability_wall_inverse(eta, beta):
+    """f on the stability wall for a given eta (0 < eta < 1)."""
+    return _curve("wall_inverse", "eta", eta, beta)
+
+
+def _check_at(at):
+    return _core.check_choice("at", at, ("end", "mid"))
+
+
+def overturn_boundary(f, beta, at="end"):
+    """eta on the boundary of overturning by the end of the pulse (at='end', corrected
+    Eq. 2.16a, O2/O3) or by mid-pulse (at='mid', Eq. 2.16b, O1/O2)."""
+    return _curve(_check_at(at), "f", f, beta)
+
+
+def overturn_boundary_inverse(eta, beta, at="end"):
+    """f on :func:`overturn_boundary` for a given eta."""
+    return _curve(_check_at(at) + "_inverse", "eta", eta, beta)
+
+
+def s1_s2_boundary(f, beta):
+    """eta on the S1/S2 boundary (the maximum at the end of the pulse); NaN for the
+    rectangle, which has no S1."""
+    return _curve("s1_s2", "f", f, beta)
+
+
+def rectangle_normalized(fbar, eta):
+    """The normalized rectangle forms with fbar = f/ln(1/(1 - eta)) in (0, 1) and
+    0 < eta < 1: (eta tau_m (Eq. 2.27), theta_max/alpha (corrected 2.30),
+    eta tau_i/(1 + sqrt(1 - eta)) (corrected 2.35))."""
+    shape, arr = _core.broadcast(fbar=fbar, eta=eta)
+    fb, e = _core.flat(arr["fbar"], shape), _core.flat(arr["eta"], shape)
+    for name, v in (("fbar", fb), ("eta", e)):
+        bad = ~((v > 0) & (v < 1))
+        if np.any(bad):
+            raise InvalidInputError(f"{name} = {float(v[np.argmax(bad)])!r}: must satisfy "
+                                    f"0 < {name} < 1")
+    out = sp_rocking_rect_normalized(fb, e)
+    return _core.shaped(shape, *(np.ascontiguousarray(out[:, j]) for j in range(3)))
+
+
+# ------------------------------------------------------------------ nonlinear rocking
+
+Block = namedtuple("Block", ["alpha", "p", "e", "g", "r"])
+Block.__doc__ = """A rigid block: slenderness alpha (rad), frequency parameter
+p = sqrt(m g R / I_o) (rad/s), restitution e (angular velocity ratio at an impact),
+gravity g (m/s^2) and R, the distance from a base corner to the centre of mass (m)."""
+
+#: Outcomes of :func:`simulate`, by code.
+OUTCOMES = ("rest", "no_uplift", "overturn_no_impact", "overturn_one_impact",
+            "overturn_many_impacts", "time_limit")
+
+#: Classes of :func:`overturning_map` cells, by value.
+MAP_CLASSES = ("safe", "overturns without impact", "overturns after one impact",
+               "overturns after more impacts")
+
+RockingRun = namedtuple("RockingRun", ["outcome", "t_uplift", "t_overturn", "n_impacts",
+                                       "t_impacts", "theta_max", "theta_min", "t_end", "t",
+                                       "theta", "omega"])
+RockingRun.__doc__ = """Result of :func:`simulate`: outcome (see :data:`OUTCOMES`), first
+uplift (s, NaN if none), last outward crossing of |theta| = alpha before overturning
+(s, NaN if the block is safe), number and times (s) of the impacts, extremes of theta
+(rad), time of rest, overturning (|theta| = pi/2) or the limit (s); with a time grid,
+t, theta(t) (rad) and omega(t) = theta'(t) (rad/s), else None."""
+
+
+def _block_tuple(out, g):
+    return Block(float(out[0]), float(out[1]), float(out[2]), float(g), float(out[3]))
+
+
+def rectangular_block(b, h, g=STANDARD_GRAVITY, e=None):
+    """Uniform rectangular block of half-width b and half-height h (m): alpha = atan(b/h),
+    R = sqrt(b^2 + h^2), p = sqrt(3 g/(4 R)) and Housner's e = 1 - 1.5 sin^2(alpha)
+    unless `e` is given."""
+    out, stat, msg = sp_rocking_block(1, float(b), float(h), 0.0, float(g))
+    _core.raise_for_status(stat, msg)
+    blk = _block_tuple(out, g)
+    return blk if e is None else blk._replace(e=_restitution(e))
+
+
+def symmetric_block(r, alpha, io_over_mr2, g=STANDARD_GRAVITY, e=None):
+    """A body symmetric about the vertical through its centre of mass: R (m) from a base
+    corner to the centre of mass, slenderness alpha (rad) and I_o = io_over_mr2 m R^2
+    about the corner (4/3 for a uniform rectangle): p = sqrt(g/(io_over_mr2 R)) and
+    Housner's e = 1 - (2/io_over_mr2) sin^2(alpha) unless `e` is given."""
+    out, stat, msg = sp_rocking_block(2, float(r), float(alpha), float(io_over_mr2), float(g))
+    _core.raise_for_status(stat, msg)
+    blk = _block_tuple(out, g)
+    return blk if e is None else blk._replace(e=_restitution(e))
+
+
+def _restitution(e):
+    x = float(e)
+    if not 0.0 <= x <= 1.0:
+        raise InvalidInputError(f"e = {x!r}: the coefficient of restitution must be in [0, 1]")
+    return x
+
+
+def simulate(block, pulse=None, *, accel=None, dt=None, linearized=False, t=None,
+             t_max=None, theta0=0.0, omega0=0.0, rtol=1e-12):
+    """Rocking of `block` (:class:`Block`) under a pulse (from
+    :func:`seispulse.pulse.define`, SI) or a sampled accelerogram (accel in m/s^2 at
+    t = i dt, linear in between, zero after), from rest (or theta0, omega0) until rest,
+    overturning or t_max (s).
+
+    Housner's nonlinear equations 2.5/2.6 (linearized=True: Eq. 2.7); uplift at
+    |a_g| > g tan(alpha) (alpha when linearized); impacts at theta = 0 located exactly,
+    the angular velocity multiplied by e; overturning when |theta| reaches pi/2 (or,
+    once the excitation is over, as soon as the energy settles it). Returns
+    :class:`RockingRun`. rtol: relative tolerance of the integration steps (absolute:
+    alpha and p alpha times it), in [1e-14, 1e-3].
+    """
+    if not isinstance(block, Block):
+        raise InvalidInputError("block: must be a seispulse.rocking.Block (rectangular_block "
+                                "or symmetric_block)")
+    if (pulse is None) == (accel is None):
+        raise InvalidInputError("pulse, accel: give exactly one of them")
+    linearized = _core.check_bool("linearized", linearized)
+    if pulse is not None:
+        if not isinstance(pulse, Pulse):
+            raise InvalidInputError("pulse: must be a seispulse.pulse.Pulse from "
+                                    "seispulse.pulse.define()")
+        kind, params, rec, step = pulse.code, np.asarray(pulse.params, float), np.zeros(1), 1.0
+    else:
+        rec = np.ascontiguousarray(_core.as_float_array("accel", accel).reshape(-1))
+        if dt is None:
+            raise InvalidInputError("dt: the time step (> 0, s) of accel is required")
+        kind, params, step = 0, np.zeros(9), float(dt)
+    grid = np.zeros(0) if t is None else np.ascontiguousarray(
+        _core.as_float_array("t", t).reshape(-1))
+    opts = np.array([-1.0 if t_max is None else _core.check_positive("t_max", t_max, " (s)"),
+                     float(theta0), float(omega0), float(rtol)])
+    blkv = np.array([block.alpha, block.p, block.e, block.g])
+    nmax = 256
+    while True:
+        thg, omg, impacts, n_imp, outcome, res, stat, msg = sp_rock(
+            kind, params, rec, step, blkv, int(linearized), opts, grid, nmax)
+        _core.raise_for_status(stat, msg, rename={"t_grid": "t"})
+        if n_imp <= nmax:
+            break
+        nmax = n_imp
+    hist = (None, None, None) if t is None else (grid.copy(), thg.copy(), omg.copy())
+    return RockingRun(OUTCOMES[outcome], float(res[0]), float(res[1]), int(n_imp),
+                      impacts[:n_imp].copy(), float(res[2]), float(res[3]), float(res[4]),
+                      *hist)
+
+
+def overturning_map(kind, freq_ratio, amp_ratio, alpha, e=None, linearized=False,
+                    method="integrator", **shape):
+    """Overturning map of a pulse family over frequency ratios omega_p/p and amplitude
+    ratios a_p/(g tan alpha): an integer array of shape (len(amp_ratio),
+    len(freq_ratio)) with 0 safe, 1 overturns without impact, 2 after one impact,
+    3 after more (:data:`MAP_CLASSES`).
+
+    omega_p = 2 pi/T_p with T_p the period (sine_cycle, cosine_cycle), the pulse length
+    (half_sine, rectangular, triangular) or t_d (exponential: f = p t_d =
+    2 pi/freq_ratio); omega_p = 2 pi f_p for the Ricker wavelet. `shape` takes beta and
+    full (exponential), peak_frac (triangular). e defaults to Housner's
+    1 - 1.5 sin^2(alpha). method='closed' (exponential half cycle only) classifies with
+    the linearized closed forms (regions O -> 1, S and no rocking -> 0), with the
+    linearized uplift amplitude g alpha: eta = alpha/(amp_ratio tan alpha).
+    """
+    _core.check_choice("method", method, ("integrator", "closed"))
+    alpha = float(alpha)
+    if not 0.0 < alpha < np.pi / 2:
+        raise InvalidInputError(f"alpha = {alpha!r}: must be in (0, pi/2) (rad)")
+    freq = np.ascontiguousarray(_core.as_float_array("freq_ratio", freq_ratio).reshape(-1))
+    amp = np.ascontiguousarray(_core.as_float_array("amp_ratio", amp_ratio).reshape(-1))
+    if method == "closed":
+        if kind not in ("exponential", "exp") or shape.get("full", False):
+            raise InvalidInputError("method = 'closed': the closed forms are for the "
+                                    "half-cycle exponential pulse only")
+        beta = float(shape.get("beta", 0.0))
+        if np.any(~(freq > 0)):
+            raise InvalidInputError("freq_ratio: must be > 0")
+        if np.any(~(amp > 0)):
+            raise InvalidInputError("amp_ratio: must be > 0 for method = 'closed'")
+        f = 2 * np.pi / freq
+        eta = alpha / (amp[:, None] * np.tan(alpha))
+        region = summary(f[None, :], eta, beta).region
+        return np.isin(region, ("O1", "O2", "O3")).astype(np.int32)
+    e = 1.0 - 1.5 * np.sin(alpha) ** 2 if e is None else _restitution(e)
+    linearized = _core.check_bool("linearized", linearized)
+    template = define(kind, **_template_params(kind, shape))
+    classes, stat, msg = sp_overturning_map(alpha, e, template.code, template.params,
+                                            int(linearized), freq, amp)
+    _core.raise_for_status(stat, msg)
+    return np.array(classes)
+
+
+def _template_params(kind, shape):
+    """Parameters of define() for the template of a map (unit amplitude and time)."""
+    k = kind.strip().lower() if isinstance(kind, str) else kind
+    if k in ("exponential", "exp"):
+        return {"amp": 1.0, "td": 1.0, "beta": shape.get("beta", 0.0),
+                "full": shape.get("full", False)}
+    if k in ("sine_cycle", "sine", "cosine_cycle", "cosine"):
+        return {"amp": 1.0, "period": 1.0}
+    if k in ("triangular", "triangle"):
+        return {"amp": 1.0, "duration": 1.0, "peak_frac": shape.get("peak_frac", 0.5)}
+    if k == "ricker":
+        return {"amp": 1.0, "freq": 1.0, "t0": shape.get("t0_periods", 1.5)}
+    return {"amp": 1.0, "duration": 1.0}
+
+
+def plot_overturning_map(classes, freq_ratio, amp_ratio, ax=None, title=None):
+    """Draw a map of :func:`overturning_map` with matplotlib (an optional dependency):
+    one colour per class over (omega_p/p, a_p/(g tan alpha)). Returns the axes."""
+    try:
+        import matplotlib.pyplot as plt
+        from matplotlib.colors import ListedColormap
+    except ImportError as exc:  # optional
+        raise ImportError("plot_overturning_map needs matplotlib (pip install matplotlib)") \
+            from exc
+    if ax is None:
+        _, ax = plt.subplots()
+    cmap = ListedColormap(["#f0f0f0", "#d7301f", "#fc8d59", "#fdcc8a"])
+    mesh = ax.pcolormesh(np.asarray(freq_ratio), np.asarray(amp_ratio), np.asarray(classes),
+                         cmap=cmap, vmin=-0.5, vmax=3.5, shading="nearest")
+    bar = ax.figure.colorbar(mesh, ax=ax, ticks=range(4))
+    bar.ax.set_yticklabels(MAP_CLASSES)
+    ax.set_xlabel("omega_p / p")
+    ax.set_ylabel("a_p / (g tan alpha)")
+    if title:
+        ax.set_title(title)
+    return ax

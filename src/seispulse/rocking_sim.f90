@@ -1,0 +1,1649 @@
+!> Nonlinear rocking of a free-standing rigid block (Housner 1963) under any pulse of
+!> seispulse_pulses or a sampled accelerogram: uplift, impacts with restitution,
+!> overturning; and overturning maps over (frequency, amplitude) grids.
+!>
+!> Model (rocking.md 2-3; the forcing enters with +, so a_g > 0 drives theta > 0):
+!>     theta'' = -p^2 [sin(alpha s - theta) - (a_g/g) cos(alpha s - theta)]   Eqs. 2.5/2.6
+!>     theta'' =  p^2 [theta + a_g/g - alpha s]                  Eq. 2.7 (`linearized`)
+!> with s = +1 while the block pivots on one corner (theta > 0) and s = -1 on the other.
+!> From rest it uplifts when a_g > g tan(alpha) (s = +1) or a_g < -g tan(alpha) (s = -1);
+!> alpha instead of tan(alpha) in the linearized model (Eq. 2.3). At an impact
+!> (theta = 0, rocking.md 7) the rotation carries on about the other corner, s -> -s,
+!> and the angular velocity is multiplied by e (Housner: e = 1 - 1.5 sin^2(alpha) for a
+!> uniform rectangle, 1 - (2 m R^2/I_o) sin^2(alpha) for a symmetric body).
+!>
+!> Overturning, as defined here (rocking.md 5: theta = alpha is only the static limit).
+!> - During the excitation the ground may still bring a block back from beyond
+!>   |theta| = alpha, so the block has overturned when |theta| reaches pi/2 (it lies on
+!>   its side); the same cap in the linearized model keeps every run finite.
+!> - Once the excitation is over (a_g = 0 for good) each flight conserves
+!>   E = theta'^2/2 + p^2 cos(alpha - |theta|) (linearized: theta'^2/2 + p^2 (alpha |theta|
+!>   - theta^2/2)) and an impact can only lower it, so the energy above the top of the
+!>   potential, D = theta'^2/2 - 2 p^2 sin^2((alpha - |theta|)/2) (linearized:
+!>   theta'^2/2 - p^2 (alpha - |theta|)^2/2), settles the outcome at once: beyond the
+!>   barrier (|theta| >= alpha) moving outward, or beyond it with D <= 0: overturns;
+!>   inside it with D <= 0: never overturns; inside it moving outward with D > 0:
+!>   overturns; otherwise (inward with D > 0) the next impact decides.
+!> - A run follows an overturning block to |theta| = pi/2: `t_end` is that time and
+!>   `t_overturn` the last outward crossing of |theta| = alpha (the critical time
+!>   tau_c of rocking.md 5.4). The class counts the impacts before overturning.
+!> Rest. When after an impact the next flight would rise less than 1e-10 alpha (the
+!> forcing pushing the block back), the block is at rest: this ends a Zeno sequence of
+!> impacts (e < 1) in finite time, estimated as the impact time plus tau/(1 - e), tau the
+!> flight time 2|theta'|/|theta''(0)| (e = 1: the impact time). With e = 1 a safe block
+!> rocks for ever once the excitation is over: without `t_max` the run stops at that
+!> decision with ROCK_TIME_LIMIT.
+!>
+!> Method. Dormand & Prince 8(5,3) (Hairer's DOP853: stages, error estimator and
+!> 7th-order dense output) with rtol = 1e-12 (absolute scales alpha and p alpha). The
+!> time axis is cut into pieces on which a_g is smooth and monotone (the breaks of
+!> the pulse and its extrema, each sample step of a record: seispulse_pieces, shared
+!> with seispulse_stickslip),
+!> and every step ends exactly on a piece end, evaluating a_g there as the limit from
+!> inside the piece, so the right-hand side is smooth inside each step. While at rest,
+!> uplift is the root of a_g -+ g tan(alpha) on a monotone piece (Brent). Impacts,
+!> |theta| = pi/2 and the outward crossings of alpha are roots of the dense output of a
+!> step (Brent on the polynomial), so events are located to the accuracy of the steps
+!> (~1e-12 s in the tests); a step whose angular velocity changes sign is searched at its
+!> turning point, and steps are at most 0.5/p long, so an impact cannot hide inside a
+!> step (one turning point per step). Each flight integrates the branch s of the
+!> equation of motion, continued smoothly past theta = 0, so the root is that of the
+!> true motion. No allocation happens in the stepping loops; every loop is bounded
+!> (a step budget ends a run with ROCK_TIME_LIMIT).
+module seispulse_rocking_sim
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
+                                             ieee_quiet_nan
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
+                                SEISPULSE_INTERNAL, set_error, real_str
+    use seispulse_roots, only: scalar_function, find_root
+    use seispulse_special, only: pi
+    use seispulse_pulses, only: pulse_t, pulse_validate, pulse_at, &
+                                exp_consts_t, exp_consts, pulse_kind_name, &
+                                PULSE_EXPONENTIAL, PULSE_HALF_SINE, PULSE_SINE_CYCLE, &
+                                PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
+                                PULSE_RICKER
+    use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_pieces_check, &
+                                pulse_pieces_init, record_pieces_init, next_piece
+    implicit none
+    private
+
+    public :: rocking_block_t, rocking_run_t
+    public :: rectangular_block, symmetric_block, rocking_block_validate
+    public :: rock_pulse, rock_record, overturning_map
+    public :: ROCK_REST, ROCK_NO_UPLIFT, ROCK_OVERTURN_NO_IMPACT, ROCK_OVERTURN_ONE_IMPACT, &
+              ROCK_OVERTURN_MANY, ROCK_TIME_LIMIT
+
+    integer, parameter :: ROCK_REST = 0                 !! rocked, then came back to rest
+    integer, parameter :: ROCK_NO_UPLIFT = 1            !! never left the ground
+    integer, parameter :: ROCK_OVERTURN_NO_IMPACT = 2   !! overturned without any impact
+    integer, parameter :: ROCK_OVERTURN_ONE_IMPACT = 3  !! overturned after one impact
+    integer, parameter :: ROCK_OVERTURN_MANY = 4        !! overturned after two or more impacts
+    integer, parameter :: ROCK_TIME_LIMIT = 5           !! t_max or the step budget reached first
+
+    !> A rigid block rocking on a rigid base (no sliding, no jumping; rocking.md 2).
+    type :: rocking_block_t
+        real(dp) :: alpha = 0.2_dp        !! slenderness angle (rad), 0 < alpha < pi/2
+        real(dp) :: p = 2.0_dp            !! frequency parameter (rad/s), p^2 = m g R / I_o
+        real(dp) :: e = 0.94_dp           !! restitution, [0, 1]: angular velocity ratio
+        real(dp) :: g = 9.80665_dp        !! gravity (m/s^2)
+        logical :: linearized = .false.   !! Eq. 2.7 instead of 2.5/2.6
+    end type rocking_block_t
+
+    !> Result of a run.
+    type :: rocking_run_t
+        integer :: outcome = ROCK_NO_UPLIFT      !! one of the ROCK_* codes
+        real(dp) :: t_uplift = 0.0_dp            !! first uplift (s); NaN if none
+        real(dp) :: t_overturn = 0.0_dp          !! last outward crossing of |theta| = alpha
+                                                 !! before overturning (s); NaN if safe
+        integer :: n_impacts = 0                 !! impacts (before overturning, if it does)
+        real(dp), allocatable :: t_impacts(:)    !! impact times (s), n_impacts of them
+        real(dp) :: theta_max = 0.0_dp           !! largest theta (rad)
+        real(dp) :: theta_min = 0.0_dp           !! smallest theta (rad)
+        real(dp) :: t_end = 0.0_dp               !! rest, |theta| = pi/2, or the limit (s);
+                                                 !! 0 without uplift
+        integer :: n_steps = 0                   !! integration steps tried (cost)
+    end type rocking_run_t
+
+    ! ---- private constants
+    real(dp), parameter :: two_pi = 2.0_dp * pi
+    real(dp), parameter :: half_pi = 0.5_dp * pi
+    !> Default relative tolerance of the steps (absolute: alpha and p alpha times it).
+    real(dp), parameter :: rtol_default = 1.0e-12_dp
+    !> Smallest and largest accepted rtol.
+    real(dp), parameter :: rtol_min = 1.0e-14_dp, rtol_max = 1.0e-3_dp
+    !> A flight rising less than this times alpha is rest (see the module notes).
+    real(dp), parameter :: rest_tol = 1.0e-10_dp
+    !> Step budget of a run (each attempted step counts), and per sample of a record.
+    integer, parameter :: max_steps_default = 2000000, steps_per_sample = 40
+    !> Step budget of one map cell.
+    integer, parameter :: max_steps_map = 200000
+
+    integer, parameter :: GR_ZERO = 0, GR_PULSE = 1, GR_RECORD = 2
+    !> Why `advance` returned.
+    integer, parameter :: R_REACHED = 0, R_IMPACT = 1, R_REST = 2, R_CAP = 3, &
+                          R_LIMIT = 4, R_TOUCH = 5
+    !> Decisions after the excitation.
+    integer, parameter :: DEC_OPEN = 0, DEC_SAFE = 1, DEC_OVERTURN = 2
+
+    !> The settings of a run, fixed before it starts.
+    type :: sim_t
+        real(dp) :: alpha = 0.2_dp       !! slenderness
+        real(dp) :: p2 = 4.0_dp          !! p^2
+        real(dp) :: p = 2.0_dp
+        real(dp) :: e = 1.0_dp           !! restitution
+        real(dp) :: inv_g = 1.0_dp       !! 1/g
+        real(dp) :: thr = 0.0_dp         !! uplift threshold on |a_g| (m/s^2)
+        logical :: lin = .false.         !! linearized Eq. 2.7
+        real(dp) :: rtol = rtol_default
+        real(dp) :: atol(2) = 0.0_dp     !! absolute tolerances of theta and theta'
+        real(dp) :: rest_amp = 0.0_dp    !! rest_tol alpha
+        logical :: map_mode = .false.    !! stop as soon as the class is known
+        logical :: track = .true.        !! impact list, extremes, t_overturn
+        logical :: has_t_max = .false.
+        real(dp) :: t_max = 0.0_dp       !! end of the run if has_t_max
+        integer :: max_steps = max_steps_default
+    end type sim_t
+
+    !> Ground acceleration on the current piece, also the function of the uplift roots.
+    type, extends(scalar_function) :: ground_t
+        integer :: src = GR_ZERO           !! GR_ZERO (no excitation), GR_PULSE, GR_RECORD
+        type(pulse_t) :: p                 !! the pulse (GR_PULSE)
+        type(exp_consts_t) :: cexp         !! its beta constants (exponential kind)
+        real(dp) :: ta = 0.0_dp            !! piece start
+        real(dp) :: tb = 0.0_dp            !! piece end
+        real(dp) :: ab = 0.0_dp            !! a_g(tb-), the limit from inside the piece
+        real(dp) :: a0 = 0.0_dp            !! record step: a_g(ta)
+        real(dp) :: slope = 0.0_dp         !! record step: da_g/dt
+        real(dp) :: level = 0.0_dp         !! subtracted by eval (uplift threshold)
+    contains
+        procedure :: eval => ground_eval
+    end type ground_t
+
+    !> Dense output of one step (Hairer's DOP853 form): y(t + x h), 0 <= x <= 1; as a
+    !> function for the root finder: sgn * component(x) - level.
+    type, extends(scalar_function) :: dense_fn
+        real(dp) :: f(7, 2) = 0.0_dp
+        real(dp) :: y0(2) = 0.0_dp
+        integer :: comp = 1                !! 1 theta, 2 theta'
+        real(dp) :: sgn = 1.0_dp
+        real(dp) :: level = 0.0_dp
+    contains
+        procedure :: eval => dense_eval
+    end type dense_fn
+
+    ! ---- Dormand & Prince 8(5,3) (DOP853) coefficients: Hairer's code, as in SciPy's
+    ! dop853_coefficients.py (C, A incl. the 3 dense-output stages 14-16, B = A(13, :12),
+    ! the 5th/3rd-order error weights E5/E3 and the dense-output matrix D).
+    real(dp), parameter :: dop_c(16) = [ &
+            0.0_dp, 0.05260015195876773_dp, 0.0789002279381516_dp, 0.1183503419072274_dp, &
+            0.2816496580927726_dp, 0.3333333333333333_dp, 0.25_dp, 0.3076923076923077_dp, &
+            0.6512820512820513_dp, 0.6_dp, 0.8571428571428571_dp, 1.0_dp, 1.0_dp, 0.1_dp, &
+            0.2_dp, 0.7777777777777778_dp &
+        ]
+    real(dp), parameter :: dop_a(16, 16) = reshape([ &
+            0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+            0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+            0.05260015195876773_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+            0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+            0.0197250569845379_dp, 0.0591751709536137_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+            0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+            0.02958758547680685_dp, 0.0_dp, 0.08876275643042054_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+            0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+            0.2413651341592667_dp, 0.0_dp, -0.8845494793282861_dp, 0.924834003261792_dp, 0.0_dp, &
+            0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+            0.0_dp, &
+            0.037037037037037035_dp, 0.0_dp, 0.0_dp, 0.17082860872947386_dp, &
+            0.12546768756682242_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+            0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+            0.037109375_dp, 0.0_dp, 0.0_dp, 0.17025221101954405_dp, 0.06021653898045596_dp, &
+            -0.017578125_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+            0.0_dp, 0.0_dp, &
+            0.03709200011850479_dp, 0.0_dp, 0.0_dp, 0.17038392571223998_dp, &
+            0.10726203044637328_dp, -0.015319437748624402_dp, 0.008273789163814023_dp, 0.0_dp, &
+            0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+            0.6241109587160757_dp, 0.0_dp, 0.0_dp, -3.3608926294469414_dp, &
+            -0.868219346841726_dp, 27.59209969944671_dp, 20.154067550477894_dp, &
+            -43.48988418106996_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+            0.0_dp, &
+            0.47766253643826434_dp, 0.0_dp, 0.0_dp, -2.4881146199716677_dp, &
+            -0.590290826836843_dp, 21.230051448181193_dp, 15.279233632882423_dp, &
+            -33.28821096898486_dp, -0.020331201708508627_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+            0.0_dp, 0.0_dp, 0.0_dp, &
+            -0.9371424300859873_dp, 0.0_dp, 0.0_dp, 5.186372428844064_dp, 1.0914373489967295_dp, &
+            -8.149787010746927_dp, -18.52006565999696_dp, 22.739487099350505_dp, &
+            2.4936055526796523_dp, -3.0467644718982196_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+            0.0_dp, 0.0_dp, &
+            2.273310147516538_dp, 0.0_dp, 0.0_dp, -10.53449546673725_dp, -2.0008720582248625_dp, &
+            -17.9589318631188_dp, 27.94888452941996_dp, -2.8589982771350235_dp, &
+            -8.87285693353063_dp, 12.360567175794303_dp, 0.6433927460157636_dp, 0.0_dp, 0.0_dp, &
+            0.0_dp, 0.0_dp, 0.0_dp, &
+            0.054293734116568765_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 4.450312892752409_dp, &
+            1.8915178993145003_dp, -5.801203960010585_dp, 0.3111643669578199_dp, &
+            -0.1521609496625161_dp, 0.20136540080403034_dp, 0.04471061572777259_dp, 0.0_dp, &
+            0.0_dp, 0.0_dp, 0.0_dp, &
+            0.056167502283047954_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+            0.25350021021662483_dp, -0.2462390374708025_dp, -0.12419142326381637_dp, &
+            0.15329179827876568_dp, 0.00820105229563469_dp, 0.007567897660545699_dp, &
+            -0.008298_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+            0.03183464816350214_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.028300909672366776_dp, &
+            0.053541988307438566_dp, -0.05492374857139099_dp, 0.0_dp, 0.0_dp, &
+            -0.00010834732869724932_dp, 0.0003825710908356584_dp, -0.00034046500868740456_dp, &
+            0.1413124436746325_dp, 0.0_dp, 0.0_dp, &
+            -0.42889630158379194_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, -4.697621415361164_dp, &
+            7.683421196062599_dp, 4.06898981839711_dp, 0.3567271874552811_dp, 0.0_dp, 0.0_dp, &
+            0.0_dp, -0.0013990241651590145_dp, 2.9475147891527724_dp, -9.15095847217987_dp, &
+            0.0_dp &
+        ], [16, 16], order=[2, 1])
+    real(dp), parameter :: dop_b(12) = [ &
+            0.054293734116568765_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 4.450312892752409_dp, &
+            1.8915178993145003_dp, -5.801203960010585_dp, 0.3111643669578199_dp, &
+            -0.1521609496625161_dp, 0.20136540080403034_dp, 0.04471061572777259_dp &
+        ]
+    real(dp), parameter :: dop_e3(13) = [ &
+            -0.18980075407240762_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 4.450312892752409_dp, &
+            1.8915178993145003_dp, -5.801203960010585_dp, -0.4226823213237919_dp, &
+            -0.1521609496625161_dp, 0.20136540080403034_dp, 0.02265179219836082_dp, 0.0_dp &
+        ]
+    real(dp), parameter :: dop_e5(13) = [ &
+            0.01312004499419488_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, -1.2251564463762044_dp, &
+            -0.4957589496572502_dp, 1.6643771824549864_dp, -0.35032884874997366_dp, &
+            0.3341791187130175_dp, 0.08192320648511571_dp, -0.022355307863886294_dp, 0.0_dp &
+        ]
+    real(dp), parameter :: dop_d(4, 16) = reshape([ &
+            -8.428938276109013_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.5667149535193777_dp, &
+            -3.0689499459498917_dp, 2.38466765651207_dp, 2.117034582445028_dp, &
+            -0.871391583777973_dp, 2.2404374302607883_dp, 0.6315787787694688_dp, &
+            -0.08899033645133331_dp, 18.148505520854727_dp, -9.194632392478356_dp, &
+            -4.436036387594894_dp, &
+            10.427508642579134_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 242.28349177525817_dp, &
+            165.20045171727028_dp, -374.5467547226902_dp, -22.113666853125306_dp, &
+            7.733432668472264_dp, -30.674084731089398_dp, -9.332130526430229_dp, &
+            15.697238121770845_dp, -31.139403219565178_dp, -9.35292435884448_dp, &
+            35.81684148639408_dp, &
+            19.985053242002433_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, -387.0373087493518_dp, &
+            -189.17813819516758_dp, 527.8081592054236_dp, -11.57390253995963_dp, &
+            6.8812326946963_dp, -1.0006050966910838_dp, 0.7777137798053443_dp, &
+            -2.778205752353508_dp, -60.19669523126412_dp, 84.32040550667716_dp, &
+            11.99229113618279_dp, &
+            -25.69393346270375_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, -154.18974869023643_dp, &
+            -231.5293791760455_dp, 357.6391179106141_dp, 93.40532418362432_dp, &
+            -37.45832313645163_dp, 104.0996495089623_dp, 29.8402934266605_dp, &
+            -43.53345659001114_dp, 96.32455395918828_dp, -39.17726167561544_dp, &
+            -149.72683625798564_dp &
+        ], [4, 16], order=[2, 1])
+
+contains
+
+    ! ------------------------------------------------------------------------------
+    ! Public API
+    ! ------------------------------------------------------------------------------
+
+    !> Check a block; the message names the offending component.
+    subroutine rocking_block_validate(blk, stat, errmsg)
+        type(rocking_block_t), intent(in) :: blk              !! the block
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        stat = SEISPULSE_SUCCESS
+        if (.not. in_open(blk%alpha, 0.0_dp, half_pi)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'alpha = ' &
+                           //real_str(blk%alpha)//': must be a number in (0, pi/2) (rad)')
+        else if (.not. positive_finite(blk%p)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'p = '//real_str(blk%p) &
+                           //': must be a finite number > 0 (rad/s)')
+        else if (.not. in_closed(blk%e, 0.0_dp, 1.0_dp)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'e = '//real_str(blk%e) &
+                           //': the coefficient of restitution must be in [0, 1]')
+        else if (.not. positive_finite(blk%g)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(blk%g) &
+                           //': must be a finite number > 0 (m/s^2)')
+        end if
+    end subroutine rocking_block_validate
+
+    !> Uniform rectangular block of half-width b and half-height h (rocking.md 2):
+    !> R = sqrt(b^2 + h^2), alpha = atan(b/h), I_o = (4/3) m R^2 so p = sqrt(3 g/(4 R)),
+    !> and Housner's restitution e = 1 - 1.5 sin^2(alpha) (rocking.md 7; change blk%e
+    !> afterwards for another value).
+    subroutine rectangular_block(b, h, g, blk, stat, errmsg)
+        real(dp), intent(in) :: b                             !! half-width (m), > 0
+        real(dp), intent(in) :: h                             !! half-height (m), > 0
+        real(dp), intent(in) :: g                             !! gravity (m/s^2), > 0
+        type(rocking_block_t), intent(out) :: blk             !! the block
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp) :: r
+        stat = SEISPULSE_SUCCESS
+        if (.not. positive_finite(b)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'b = '//real_str(b) &
+                           //': the half-width must be a finite number > 0 (m)')
+        else if (.not. positive_finite(h)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'h = '//real_str(h) &
+                           //': the half-height must be a finite number > 0 (m)')
+        else if (.not. positive_finite(g)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(g) &
+                           //': must be a finite number > 0 (m/s^2)')
+        end if
+        if (stat /= SEISPULSE_SUCCESS) return
+        r = hypot(b, h)
+        blk%alpha = atan2(b, h)
+        blk%p = sqrt(0.75_dp * g / r)
+        blk%e = 1.0_dp - 1.5_dp * sin(blk%alpha)**2
+        blk%g = g
+        blk%linearized = .false.
+    end subroutine rectangular_block
+
+    !> Block symmetric about the vertical through its centre of mass (rocking.md 2):
+    !> R from the pivot corner to the centre of mass, slenderness alpha, and
+    !> I_o = io_over_mr2 m R^2 about the corner (>= m R^2; 4/3 for a uniform rectangle).
+    !> p = sqrt(g/(io_over_mr2 R)) and Housner's e = 1 - (2/io_over_mr2) sin^2(alpha)
+    !> (angular momentum about the new corner, rocking.md 7), set to 0 where the formula
+    !> is negative (squat bodies: the impact then stops the rocking).
+    subroutine symmetric_block(r, alpha, io_over_mr2, g, blk, stat, errmsg)
+        real(dp), intent(in) :: r                             !! pivot to centre of mass (m), > 0
+        real(dp), intent(in) :: alpha                         !! slenderness (rad), in (0, pi/2)
+        real(dp), intent(in) :: io_over_mr2                   !! I_o/(m R^2), finite, >= 1
+        real(dp), intent(in) :: g                             !! gravity (m/s^2), > 0
+        type(rocking_block_t), intent(out) :: blk             !! the block
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        stat = SEISPULSE_SUCCESS
+        if (.not. positive_finite(r)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'r = '//real_str(r) &
+                           //': must be a finite number > 0 (m)')
+        else if (.not. in_open(alpha, 0.0_dp, half_pi)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'alpha = ' &
+                           //real_str(alpha)//': must be a number in (0, pi/2) (rad)')
+        else if (.not. finite_at_least(io_over_mr2, 1.0_dp)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'io_over_mr2 = ' &
+                           //real_str(io_over_mr2)//': I_o/(m R^2) must be a finite number' &
+                           //' >= 1 (I_o = I_cm + m R^2)')
+        else if (.not. positive_finite(g)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(g) &
+                           //': must be a finite number > 0 (m/s^2)')
+        end if
+        if (stat /= SEISPULSE_SUCCESS) return
+        blk%alpha = alpha
+        blk%p = sqrt(g / (io_over_mr2 * r))
+        blk%e = max(0.0_dp, 1.0_dp - (2.0_dp / io_over_mr2) * sin(alpha)**2)
+        blk%g = g
+        blk%linearized = .false.
+    end subroutine symmetric_block
+
+    !> Rocking response to a pulse of seispulse_pulses (SI units), from rest or from the
+    !> initial state (theta0, omega0) at t = 0, until rest, overturning or the limit.
+    !>
+    !> Optional output grid: `t_grid`, `theta_grid`, `omega_grid` all present or all
+    !> absent, of one size, `t_grid` finite and ascending (any times: the initial state
+    !> at t <= 0, 0 while at rest, the dense output of the steps while rocking,
+    !> +-pi/2 and 0 after overturning, NaN after a time limit). The spike (beta = +inf)
+    !> exceeds any threshold at one instant only: the block never uplifts. Ricker
+    !> wavelets end at pi f_p (t - t0) = 10 (|a_g| < 1e-40 a_p) and M&P pulses need
+    !> gamma <= 1e6, as in seispulse_stickslip.
+    subroutine rock_pulse(blk, p, run, stat, errmsg, t_grid, theta_grid, omega_grid, t_max, &
+                          theta0, omega0, rtol)
+        type(rocking_block_t), intent(in) :: blk              !! the block
+        type(pulse_t), intent(in) :: p                        !! ground acceleration pulse (SI)
+        type(rocking_run_t), intent(out) :: run               !! the result
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp), intent(in), optional :: t_grid(:)           !! output times (s), ascending
+        real(dp), intent(out), optional :: theta_grid(:)      !! theta at t_grid (rad)
+        real(dp), intent(out), optional :: omega_grid(:)      !! theta' at t_grid (rad/s)
+        real(dp), intent(in), optional :: t_max               !! end of the run (s), > 0
+        real(dp), intent(in), optional :: theta0              !! initial theta (rad), |.| < pi/2
+        real(dp), intent(in), optional :: omega0              !! initial theta' (rad/s)
+        real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
+        type(sim_t) :: sim
+        type(ground_t) :: gr
+        type(piece_iter_t) :: it
+        real(dp) :: th0, om0, no_record(0)
+
+        call empty_run(run)
+        call rocking_block_validate(blk, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        call pulse_validate(p, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        call pulse_pieces_check(p, 'rocking', stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        call check_options(t_grid, theta_grid, omega_grid, t_max, theta0, omega0, rtol, &
+                           th0, om0, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        call setup_sim(blk, sim, t_max, rtol)
+        gr%src = GR_PULSE
+        gr%p = p
+        if (p%kind == PULSE_EXPONENTIAL) gr%cexp = exp_consts(p%beta)
+        call pulse_pieces_init(it, p)
+        call simulate(sim, gr, it, no_record, th0, om0, run, stat, errmsg, t_grid, &
+                      theta_grid, omega_grid)
+    end subroutine rock_pulse
+
+    !> Rocking response to an accelerogram: accel(i) (m/s^2) at t = (i - 1) dt, linear in
+    !> between, a_g = 0 after the last sample (a jump if it is not 0). Everything else
+    !> as `rock_pulse`; the step budget grows with the record (40 per sample).
+    subroutine rock_record(blk, accel, dt, run, stat, errmsg, t_grid, theta_grid, omega_grid, &
+                           t_max, theta0, omega0, rtol)
+        type(rocking_block_t), intent(in) :: blk              !! the block
+        real(dp), intent(in) :: accel(:)                      !! ground acceleration (m/s^2), finite
+        real(dp), intent(in) :: dt                            !! sampling interval (s), > 0
+        type(rocking_run_t), intent(out) :: run               !! the result
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp), intent(in), optional :: t_grid(:)           !! output times (s), ascending
+        real(dp), intent(out), optional :: theta_grid(:)      !! theta at t_grid (rad)
+        real(dp), intent(out), optional :: omega_grid(:)      !! theta' at t_grid (rad/s)
+        real(dp), intent(in), optional :: t_max               !! end of the run (s), > 0
+        real(dp), intent(in), optional :: theta0              !! initial theta (rad), |.| < pi/2
+        real(dp), intent(in), optional :: omega0              !! initial theta' (rad/s)
+        real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
+        type(sim_t) :: sim
+        type(ground_t) :: gr
+        type(piece_iter_t) :: it
+        real(dp) :: th0, om0
+
+        call empty_run(run)
+        call rocking_block_validate(blk, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        if (.not. positive_finite(dt)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'dt = '//real_str(dt) &
+                           //': must be a finite number > 0 (s)')
+            return
+        end if
+        call record_pieces_check(accel, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        call check_options(t_grid, theta_grid, omega_grid, t_max, theta0, omega0, rtol, &
+                           th0, om0, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        call setup_sim(blk, sim, t_max, rtol)
+        if (real(steps_per_sample, dp) * size(accel) > real(huge(1) - max_steps_default, dp)) then
+            sim%max_steps = huge(1)
+        else
+            sim%max_steps = max_steps_default + steps_per_sample * size(accel)
+        end if
+        gr%src = GR_RECORD
+        call record_pieces_init(it, size(accel), dt)
+        call simulate(sim, gr, it, accel, th0, om0, run, stat, errmsg, t_grid, &
+                      theta_grid, omega_grid)
+    end subroutine rock_record
+
+    !> Overturning map of a pulse family: classes(i, j) for amp_ratio(i) = a_p/(g tan alpha)
+    !> and freq_ratio(j) = omega_p/p: 0 safe, 1 overturns without impact, 2 after one
+    !> impact, 3 after more (-1: undecided within the step budget, not expected), from the
+    !> integrator of `rock_pulse` (nonlinear, or Eq. 2.7 with `linearized`; the amplitude
+    !> is scaled by g tan(alpha) in both). The map is dimensionless: p = 1 rad/s, g = 1.
+    !> Time scale: omega_p = 2 pi/T_p with T_p the pulse duration (sine_cycle and
+    !> cosine_cycle: the period; half_sine, rectangular, triangular: the pulse length;
+    !> exponential: t_d, so f = p t_d = 2 pi/freq_ratio) and, for the Ricker wavelet,
+    !> omega_p = 2 pi f_p. `template` supplies beta and full (exponential), peak_frac
+    !> (triangular) and, for the Ricker wavelet, the centre in periods, t0 f_p (default
+    !> 1.5); its amplitude and time scale are ignored. Each cell stops as soon as its
+    !> class is known (at most one impact after the end of the pulse).
+    subroutine overturning_map(alpha, e, kind, freq_ratio, amp_ratio, classes, stat, errmsg, &
+                               linearized, template, rtol)
+        real(dp), intent(in) :: alpha                         !! slenderness (rad), in (0, pi/2)
+        real(dp), intent(in) :: e                             !! coefficient of restitution, [0, 1]
+        integer, intent(in) :: kind                           !! PULSE_* code (not PULSE_MP)
+        real(dp), intent(in) :: freq_ratio(:)                 !! omega_p/p, finite, > 0
+        real(dp), intent(in) :: amp_ratio(:)                  !! a_p/(g tan alpha), finite, >= 0
+        integer, intent(out) :: classes(:, :)                 !! size(amp_ratio) x size(freq_ratio)
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        logical, intent(in), optional :: linearized           !! Eq. 2.7 (default .false.)
+        type(pulse_t), intent(in), optional :: template       !! shape parameters of the kind
+        real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
+        type(rocking_block_t) :: blk
+        type(sim_t) :: sim
+        type(ground_t) :: gr
+        type(piece_iter_t) :: it
+        type(pulse_t) :: pl
+        type(rocking_run_t) :: run
+        real(dp) :: no_record(0), tan_a, t0f
+        integer :: i, j
+        character(len=24) :: idx
+
+        classes = -1
+        blk%alpha = alpha
+        blk%e = e
+        blk%p = 1.0_dp
+        blk%g = 1.0_dp
+        if (present(linearized)) blk%linearized = linearized
+        call rocking_block_validate(blk, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        select case (kind)
+        case (PULSE_EXPONENTIAL, PULSE_HALF_SINE, PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE, &
+              PULSE_RECTANGULAR, PULSE_TRIANGULAR, PULSE_RICKER)
+        case default
+            write(idx, '(i0)') kind
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'kind = '//trim(idx) &
+                           //' ('//pulse_kind_name(kind)//'): maps take an acceleration' &
+                           //' pulse with a time scale: exponential, half_sine, sine_cycle,' &
+                           //' cosine_cycle, rectangular, triangular or ricker')
+            return
+        end select
+        if (size(classes, 1) /= size(amp_ratio) .or. size(classes, 2) /= size(freq_ratio)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'classes: must be ' &
+                           //'size(amp_ratio) x size(freq_ratio)')
+            return
+        end if
+        do j = 1, size(freq_ratio)
+            if (.not. positive_finite(freq_ratio(j))) then
+                write(idx, '(i0)') j
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'freq_ratio(' &
+                               //trim(idx)//') = '//real_str(freq_ratio(j)) &
+                               //': must be a finite number > 0')
+                return
+            end if
+        end do
+        do i = 1, size(amp_ratio)
+            if (.not. finite_at_least(amp_ratio(i), 0.0_dp)) then
+                write(idx, '(i0)') i
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'amp_ratio(' &
+                               //trim(idx)//') = '//real_str(amp_ratio(i)) &
+                               //': must be a finite number >= 0')
+                return
+            end if
+        end do
+        if (present(rtol)) then
+            if (.not. in_closed(rtol, rtol_min, rtol_max)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'rtol = ' &
+                               //real_str(rtol)//': must be in [1e-14, 1e-3]')
+                return
+            end if
+        end if
+        if (present(template)) pl = template
+        pl%kind = kind
+        t0f = 1.5_dp
+        if (present(template)) t0f = template%t0 * template%freq
+        if (kind == PULSE_RICKER .and. .not. finite_at_least(t0f, 0.0_dp)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 't0 = '//real_str(t0f) &
+                           //': template%t0 * template%freq must be a finite number >= 0')
+            return
+        end if
+        call setup_sim(blk, sim, rtol=rtol)
+        sim%map_mode = .true.
+        sim%track = .false.
+        sim%max_steps = max_steps_map
+        tan_a = tan(alpha)
+        if (kind == PULSE_EXPONENTIAL) gr%cexp = exp_consts(pl%beta)
+
+        do j = 1, size(freq_ratio)
+            if (kind == PULSE_RICKER) then
+                pl%freq = freq_ratio(j) / two_pi
+                pl%t0 = t0f / pl%freq
+            else
+                pl%duration = two_pi / freq_ratio(j)
+            end if
+            do i = 1, size(amp_ratio)
+                pl%amp = amp_ratio(i) * tan_a
+                if (i == 1) then
+                    call pulse_validate(pl, stat, errmsg)
+                    if (stat /= SEISPULSE_SUCCESS) return
+                end if
+                gr%src = GR_PULSE
+                gr%p = pl
+                call pulse_pieces_init(it, pl)
+                call simulate(sim, gr, it, no_record, 0.0_dp, 0.0_dp, run, stat, errmsg)
+                if (stat /= SEISPULSE_SUCCESS) return
+                select case (run%outcome)
+                case (ROCK_REST, ROCK_NO_UPLIFT)
+                    classes(i, j) = 0
+                case (ROCK_OVERTURN_NO_IMPACT)
+                    classes(i, j) = 1
+                case (ROCK_OVERTURN_ONE_IMPACT)
+                    classes(i, j) = 2
+                case (ROCK_OVERTURN_MANY)
+                    classes(i, j) = 3
+                case default
+                    classes(i, j) = -1
+                end select
+            end do
+        end do
+    end subroutine overturning_map
+
+    ! ------------------------------------------------------------------------------
+    ! Set-up
+    ! ------------------------------------------------------------------------------
+
+    !> Settings of a run from a (valid) block.
+    subroutine setup_sim(blk, sim, t_max, rtol)
+        type(rocking_block_t), intent(in) :: blk
+        type(sim_t), intent(out) :: sim
+        real(dp), intent(in), optional :: t_max
+        real(dp), intent(in), optional :: rtol
+        sim%alpha = blk%alpha
+        sim%p = blk%p
+        sim%p2 = blk%p * blk%p
+        sim%e = blk%e
+        sim%inv_g = 1.0_dp / blk%g
+        sim%lin = blk%linearized
+        ! uplift at |a_g| > g tan(alpha), or g alpha in the linearized model (Eq. 2.3)
+        if (sim%lin) then
+            sim%thr = blk%g * blk%alpha
+        else
+            sim%thr = blk%g * tan(blk%alpha)
+        end if
+        sim%rtol = rtol_default
+        if (present(rtol)) sim%rtol = rtol
+        sim%atol = sim%rtol * [blk%alpha, blk%p * blk%alpha]
+        sim%rest_amp = rest_tol * blk%alpha
+        sim%has_t_max = .false.
+        if (present(t_max)) then
+            if (t_max <= huge(t_max)) then
+                sim%has_t_max = .true.
+                sim%t_max = t_max
+            end if
+        end if
+    end subroutine setup_sim
+
+    !> Checks shared by rock_pulse and rock_record; th0, om0 receive the initial state.
+    subroutine check_options(t_grid, theta_grid, omega_grid, t_max, theta0, omega0, rtol, &
+                             th0, om0, stat, errmsg)
+        real(dp), intent(in), optional :: t_grid(:)
+        real(dp), intent(in), optional :: theta_grid(:)
+        real(dp), intent(in), optional :: omega_grid(:)
+        real(dp), intent(in), optional :: t_max
+        real(dp), intent(in), optional :: theta0
+        real(dp), intent(in), optional :: omega0
+        real(dp), intent(in), optional :: rtol
+        real(dp), intent(out) :: th0, om0
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        integer :: i
+        character(len=24) :: idx
+        stat = SEISPULSE_SUCCESS
+        th0 = 0.0_dp
+        om0 = 0.0_dp
+        if (present(t_max)) then
+            if (ieee_is_nan(t_max)) then
+                stat = SEISPULSE_INVALID_INPUT
+            else if (.not. t_max > 0.0_dp) then
+                stat = SEISPULSE_INVALID_INPUT
+            end if
+            if (stat /= SEISPULSE_SUCCESS) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 't_max = ' &
+                               //real_str(t_max)//': must be a number > 0 (s) or +inf')
+                return
+            end if
+        end if
+        if (present(theta0)) then
+            if (.not. in_open(theta0, -half_pi, half_pi)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'theta0 = ' &
+                               //real_str(theta0)//': must be a number in (-pi/2, pi/2) (rad)')
+                return
+            end if
+            th0 = theta0
+        end if
+        if (present(omega0)) then
+            if (.not. ieee_is_finite(omega0)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'omega0 = ' &
+                               //real_str(omega0)//': must be a finite number (rad/s)')
+                return
+            end if
+            om0 = omega0
+        end if
+        if (present(rtol)) then
+            if (.not. in_closed(rtol, rtol_min, rtol_max)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'rtol = ' &
+                               //real_str(rtol)//': must be in [1e-14, 1e-3]')
+                return
+            end if
+        end if
+        if (.not. (present(t_grid) .or. present(theta_grid) .or. present(omega_grid))) return
+        if (.not. present(t_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           't_grid: missing (theta_grid and omega_grid need the output times)')
+            return
+        end if
+        if (.not. present(theta_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'theta_grid: missing (t_grid, theta_grid and omega_grid go together)')
+            return
+        end if
+        if (.not. present(omega_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'omega_grid: missing (t_grid, theta_grid and omega_grid go together)')
+            return
+        end if
+        if (size(theta_grid) /= size(t_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'theta_grid: must have the size of t_grid')
+            return
+        end if
+        if (size(omega_grid) /= size(t_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'omega_grid: must have the size of t_grid')
+            return
+        end if
+        do i = 1, size(t_grid)
+            if (.not. ieee_is_finite(t_grid(i))) then
+                write(idx, '(i0)') i
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 't_grid('//trim(idx) &
+                               //') = '//real_str(t_grid(i))//': must be a finite number')
+                return
+            end if
+        end do
+        do i = 2, size(t_grid)
+            if (t_grid(i) < t_grid(i - 1)) then
+                write(idx, '(i0)') i
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 't_grid('//trim(idx) &
+                               //') = '//real_str(t_grid(i))//': the times must be ascending')
+                return
+            end if
+        end do
+    end subroutine check_options
+
+    !> A well-defined result for the error returns.
+    subroutine empty_run(run)
+        type(rocking_run_t), intent(inout) :: run
+        if (allocated(run%t_impacts)) deallocate(run%t_impacts)
+        allocate(run%t_impacts(0))
+        run%outcome = ROCK_NO_UPLIFT
+        run%t_uplift = ieee_value(run%t_uplift, ieee_quiet_nan)
+        run%t_overturn = ieee_value(run%t_overturn, ieee_quiet_nan)
+        run%n_impacts = 0
+        run%theta_max = 0.0_dp
+        run%theta_min = 0.0_dp
+        run%t_end = 0.0_dp
+        run%n_steps = 0
+    end subroutine empty_run
+
+    ! ------------------------------------------------------------------------------
+    ! The event-driven integrator
+    ! ------------------------------------------------------------------------------
+
+    !> Run the block over the pieces of `it` (ground `gr`, samples `accel`), then in free
+    !> motion until the outcome is known (map mode) or the run ends.
+    subroutine simulate(sim, gr, it, accel, th0, om0, run, stat, errmsg, t_grid, th_grid, &
+                        om_grid)
+        type(sim_t), intent(in) :: sim
+        type(ground_t), intent(inout) :: gr
+        type(piece_iter_t), intent(inout) :: it
+        real(dp), intent(in) :: accel(:)
+        real(dp), intent(in) :: th0, om0
+        type(rocking_run_t), intent(inout) :: run
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        real(dp), intent(in), optional :: t_grid(:)
+        real(dp), intent(out), optional :: th_grid(:)
+        real(dp), intent(out), optional :: om_grid(:)
+
+        real(dp), allocatable :: imp(:)
+        real(dp) :: t, y(2), f(2), h, sa, t_cross, t_rest, t_lim
+        type(piece_t) :: piece
+        integer :: s, mode, blocked, n_imp, steps, ig, ng, reason, dec, k, src_saved
+        logical :: found, from_zero, ever_up, done
+        character(len=120) :: rmsg
+
+        stat = SEISPULSE_SUCCESS
+        rmsg = ''
+        ng = 0
+        if (present(t_grid)) ng = size(t_grid)
+        ig = 1
+        t = 0.0_dp
+        y = [th0, om0]
+        f = 0.0_dp
+        n_imp = 0
+        steps = 0
+        done = .false.
+        blocked = 0
+        t_cross = ieee_value(t_cross, ieee_quiet_nan)
+        run%t_overturn = t_cross
+        t_rest = 0.0_dp
+        t_lim = huge(t_lim)
+        if (sim%has_t_max) t_lim = sim%t_max
+        ! first step: a small fraction of the block's time scale; the control adapts it
+        h = 0.05_dp / sim%p
+        run%theta_max = max(0.0_dp, th0)
+        run%theta_min = min(0.0_dp, th0)
+        if (sim%track) allocate(imp(16))
+        ! the state before t = 0 is the initial one
+        do while (ig <= ng)
+            if (t_grid(ig) > 0.0_dp) exit
+            th_grid(ig) = th0
+            om_grid(ig) = om0
+            ig = ig + 1
+        end do
+        if (abs(th0) > 0.0_dp .or. abs(om0) > 0.0_dp) then
+            mode = 1
+            if (abs(th0) > 0.0_dp) then
+                s = int(sign(1.0_dp, th0))
+            else
+                s = int(sign(1.0_dp, om0))
+            end if
+            ever_up = .true.
+            run%t_uplift = 0.0_dp
+            from_zero = .not. abs(th0) > 0.0_dp
+            ! an initial state beyond the barrier has no crossing: count it from t = 0
+            if (abs(th0) >= sim%alpha) t_cross = 0.0_dp
+        else
+            mode = 0
+            s = 0
+            ever_up = .false.
+            from_zero = .false.
+            run%t_uplift = ieee_value(run%t_uplift, ieee_quiet_nan)
+        end if
+        sa = sim%alpha * real(s, dp)
+
+        pieces: do
+            call next_piece(it, accel, 'rocking', piece, found, stat, errmsg)
+            if (stat /= SEISPULSE_SUCCESS) return
+            if (.not. found) exit pieces
+            call load_piece(gr, piece)
+            if (t < piece%ta) then
+                ! no excitation before this piece (M&P window): free flight or rest
+                if (mode == 1) then
+                    src_saved = gr%src
+                    gr%src = GR_ZERO
+                    call run_segment(piece%ta)
+                    gr%src = src_saved
+                    if (done) return
+                end if
+                if (t < piece%ta) then
+                    call fill_rest(piece%ta)
+                    t = piece%ta
+                end if
+            end if
+            blocked = 0
+            call run_segment(piece%tb)
+            if (done) return
+        end do pieces
+
+        ! the excitation is over: a_g = 0 from now on
+        gr%src = GR_ZERO
+        if (mode == 0) then
+            call finish_rest()
+            return
+        end if
+        free: do k = 1, sim%max_steps
+            dec = decide(sim, y, s)
+            if (sim%map_mode .and. dec /= DEC_OPEN) then
+                if (dec == DEC_SAFE) then
+                    call finish(ROCK_REST)
+                else
+                    call finish_overturn()
+                end if
+                return
+            end if
+            if (dec == DEC_SAFE) then
+                if (.not. (sim%has_t_max .or. sim%e < 1.0_dp)) then
+                    ! e = 1: perpetual rocking, nothing more to learn without t_max
+                    call finish(ROCK_TIME_LIMIT)
+                    return
+                end if
+                call advance(t_lim, .false., reason)
+            else
+                call advance(t_lim, .true., reason)
+            end if
+            if (stat /= SEISPULSE_SUCCESS) return
+            select case (reason)
+            case (R_IMPACT)
+                cycle free
+            case (R_REST, R_TOUCH)
+                call finish_rest()
+            case (R_CAP)
+                call finish_overturn()
+            case default
+                call finish(ROCK_TIME_LIMIT)
+            end select
+            return
+        end do free
+        call finish(ROCK_TIME_LIMIT)
+
+    contains
+
+        !> Rest and flights on the current piece up to t_stop.
+        subroutine run_segment(t_stop)
+            real(dp), intent(in) :: t_stop
+            integer :: kk
+            do kk = 1, sim%max_steps
+                if (.not. t < t_stop) return
+                if (.not. t < t_lim) then
+                    call finish(ROCK_TIME_LIMIT)
+                    return
+                end if
+                if (mode == 0) then
+                    call rest_scan(t_stop)
+                    if (done .or. stat /= SEISPULSE_SUCCESS) then
+                        done = .true.
+                        return
+                    end if
+                else
+                    call advance(min(t_stop, t_lim), .false., reason)
+                    if (stat /= SEISPULSE_SUCCESS) then
+                        done = .true.
+                        return
+                    end if
+                    select case (reason)
+                    case (R_TOUCH)
+                        ! the threshold was touched, not exceeded: no uplift that way
+                        ! on this monotone piece
+                        blocked = s
+                        call set_rest(t)
+                    case (R_CAP)
+                        call finish_overturn()
+                        return
+                    case (R_LIMIT)
+                        call finish(ROCK_TIME_LIMIT)
+                        return
+                    end select
+                end if
+            end do
+            call finish(ROCK_TIME_LIMIT)
+        end subroutine run_segment
+
+        !> At rest on a monotone piece: find the uplift (rocking.md 2, Eq. 2.3), a root of
+        !> a_g -+ threshold (Brent), or move to t_stop.
+        subroutine rest_scan(t_stop)
+            real(dp), intent(in) :: t_stop
+            real(dp) :: a_c, a_e, lev, t_u, thr
+            integer :: dir
+            logical :: now
+            if (gr%src == GR_ZERO) then
+                call fill_rest(t_stop)
+                t = t_stop
+                return
+            end if
+            thr = sim%thr
+            a_c = ground_accel(gr, t)
+            a_e = gr%ab
+            dir = 0
+            now = .false.
+            lev = 0.0_dp
+            if (blocked /= 1 .and. exceeds(a_c, thr)) then
+                dir = 1
+                now = .true.
+            else if (blocked /= -1 .and. exceeds(-a_c, thr)) then
+                dir = -1
+                now = .true.
+            else if (blocked /= 1 .and. exceeds(a_e, thr)) then
+                dir = 1
+                lev = thr
+                now = .not. (a_c < thr)
+            else if (blocked /= -1 .and. exceeds(-a_e, thr)) then
+                dir = -1
+                lev = -thr
+                now = .not. (a_c > -thr)
+            end if
+            if (dir == 0) then
+                call fill_rest(t_stop)
+                t = t_stop
+                return
+            end if
+            t_u = t
+            if (.not. now) then
+                gr%level = lev
+                call find_root(gr, t, t_stop, t_u, stat, rmsg, fa_known=a_c - lev, &
+                               fb_known=a_e - lev)
+                if (stat /= SEISPULSE_SUCCESS) then
+                    call set_error(stat, errmsg, SEISPULSE_INTERNAL, 'rocking: uplift ' &
+                                   //'location failed after t = '//real_str(t)//': ' &
+                                   //trim(rmsg)//' (a bug)')
+                    return
+                end if
+                t_u = min(max(t_u, t), t_stop)
+            end if
+            if (t_u > t_lim) then
+                call fill_rest(t_lim)
+                t = t_lim
+                call finish(ROCK_TIME_LIMIT)
+                return
+            end if
+            call fill_rest(t_u)
+            t = t_u
+            mode = 1
+            s = dir
+            sa = sim%alpha * real(s, dp)
+            y = 0.0_dp
+            from_zero = .true.
+            if (.not. ever_up) then
+                ever_up = .true.
+                run%t_uplift = t_u
+            end if
+        end subroutine rest_scan
+
+        !> Integrate the flight from (t, y) on side s up to t_stop, handling impacts
+        !> (restitution, rest), the outward crossings of alpha and |theta| = pi/2.
+        subroutine advance(t_stop, stop_on_impact, why)
+            real(dp), intent(in) :: t_stop
+            logical, intent(in) :: stop_on_impact
+            integer, intent(out) :: why
+            real(dp) :: hh, t_new, y_new(2), f_new(2), kst(2, 16), err, fac, u0, u1, w0, w1
+            real(dp) :: x_turn, u_turn, x_ev, x_end, u_end, xr, yv(2), acc0, tau, t_r, amp
+            real(dp) :: fa, rs_
+            integer :: ev, kk
+            logical :: turn, max_turn, need, rejected, clamped
+            type(dense_fn) :: df
+
+            why = R_REACHED
+            rs_ = real(s, dp)
+            f = rhs(sim, gr, sa, t, y)
+            rejected = .false.
+            do kk = 1, sim%max_steps
+                if (.not. t < t_stop) return
+                if (steps >= sim%max_steps) then
+                    why = R_LIMIT
+                    return
+                end if
+                steps = steps + 1
+                ! at most half the block's time scale: one turning point per step at most
+                h = min(h, 0.5_dp / sim%p)
+                clamped = .not. h < t_stop - t
+                if (clamped) then
+                    t_new = t_stop
+                else
+                    t_new = t + h
+                end if
+                hh = t_new - t
+                if (hh < min_step(sim, t)) then
+                    if (from_zero) then
+                        ! no flight of any length leaves the base: not an uplift
+                        why = R_TOUCH
+                        return
+                    else if (clamped) then
+                        ! a sliver of a piece below the time resolution: step over it
+                        t = t_new
+                        cycle
+                    end if
+                    why = R_LIMIT
+                    return
+                end if
+                call dop_step(sim, gr, sa, t, y, f, hh, t_new, y_new, f_new, kst, err)
+                if (.not. err <= 1.0_dp) then
+                    rejected = .true.
+                    h = hh * max(0.2_dp, 0.9_dp * err**(-0.125_dp))
+                    cycle
+                end if
+                u1 = rs_ * y_new(1)
+                if (from_zero .and. .not. u1 > 0.0_dp) then
+                    ! the first step of a flight must leave the base: shorter
+                    h = 0.25_dp * hh
+                    cycle
+                end if
+                if (err > 0.0_dp) then
+                    fac = min(10.0_dp, 0.9_dp * err**(-0.125_dp))
+                else
+                    fac = 10.0_dp
+                end if
+                if (rejected) fac = min(fac, 1.0_dp)
+                rejected = .false.
+                from_zero = .false.
+                u0 = rs_ * y(1)
+                w0 = rs_ * y(2)
+                w1 = rs_ * y_new(2)
+                ! turning point: a maximum of s theta (w from >= 0 to < 0) or a minimum
+                max_turn = w0 >= 0.0_dp .and. w1 < 0.0_dp
+                turn = max_turn .or. (w0 < 0.0_dp .and. w1 > 0.0_dp)
+                need = u1 <= 0.0_dp .or. u1 >= half_pi .or. (turn .and. .not. max_turn)
+                if (sim%track) need = need .or. turn .or. (u0 < sim%alpha .and. u1 >= sim%alpha)
+                if (ig <= ng) need = need .or. t_grid(ig) <= t_new
+                ev = 0
+                x_ev = 1.0_dp
+                x_turn = 0.0_dp
+                u_turn = u0
+                if (need) then
+                    call dense_setup(sim, gr, sa, t, y, f, hh, y_new, f_new, kst, df)
+                    df%sgn = rs_
+                    if (turn) then
+                        ! w0 = 0 only at an uplift, where the block starts outward
+                        fa = w0
+                        if (.not. abs(w0) > 0.0_dp) fa = tiny(fa)
+                        call locate(df, 2, 0.0_dp, 0.0_dp, 1.0_dp, fa, w1, x_turn)
+                        if (stat /= SEISPULSE_SUCCESS) return
+                        yv = dense_value(df, x_turn)
+                        u_turn = rs_ * yv(1)
+                    end if
+                    if (max_turn) then
+                        if (u_turn >= half_pi) then
+                            ev = R_CAP
+                            call locate(df, 1, half_pi, 0.0_dp, x_turn, u0 - half_pi, &
+                                        u_turn - half_pi, x_ev)
+                        else if (u1 <= 0.0_dp) then
+                            ev = R_IMPACT
+                            call locate(df, 1, 0.0_dp, x_turn, 1.0_dp, u_turn, u1, x_ev)
+                        end if
+                    else if (turn) then
+                        if (u_turn <= 0.0_dp) then
+                            ev = R_IMPACT
+                            call locate(df, 1, 0.0_dp, 0.0_dp, x_turn, u0, u_turn, x_ev)
+                        else if (u1 >= half_pi) then
+                            ev = R_CAP
+                            call locate(df, 1, half_pi, x_turn, 1.0_dp, u_turn - half_pi, &
+                                        u1 - half_pi, x_ev)
+                        end if
+                    else if (u1 <= 0.0_dp) then
+                        ev = R_IMPACT
+                        call locate(df, 1, 0.0_dp, 0.0_dp, 1.0_dp, u0, u1, x_ev)
+                    else if (u1 >= half_pi) then
+                        ev = R_CAP
+                        call locate(df, 1, half_pi, 0.0_dp, 1.0_dp, u0 - half_pi, &
+                                    u1 - half_pi, x_ev)
+                    end if
+                    if (stat /= SEISPULSE_SUCCESS) return
+                end if
+                x_end = x_ev
+                if (ev == R_IMPACT) then
+                    u_end = 0.0_dp
+                else if (ev == R_CAP) then
+                    u_end = half_pi
+                else
+                    u_end = u1
+                end if
+                if (sim%track) then
+                    ! extremes of theta and the last outward crossing of |theta| = alpha
+                    ! (not when the step ends in an impact: the block is then back at 0)
+                    if (turn .and. x_turn <= x_end) call extremes(rs_ * u_turn)
+                    call extremes(rs_ * u_end)
+                    if (ev /= R_IMPACT) then
+                        xr = -1.0_dp
+                        if (max_turn .and. x_turn <= x_end) then
+                            if (u0 < sim%alpha .and. u_turn >= sim%alpha) &
+                                call locate(df, 1, sim%alpha, 0.0_dp, x_turn, &
+                                            u0 - sim%alpha, u_turn - sim%alpha, xr)
+                        else if (turn .and. x_turn <= x_end) then
+                            if (u_turn < sim%alpha .and. u_end >= sim%alpha) &
+                                call locate(df, 1, sim%alpha, x_turn, x_end, &
+                                            u_turn - sim%alpha, u_end - sim%alpha, xr)
+                        else if (u0 < sim%alpha .and. u_end >= sim%alpha) then
+                            call locate(df, 1, sim%alpha, 0.0_dp, x_end, u0 - sim%alpha, &
+                                        u_end - sim%alpha, xr)
+                        end if
+                        if (stat /= SEISPULSE_SUCCESS) return
+                        if (xr >= 0.0_dp) t_cross = t + xr * hh
+                    end if
+                end if
+                ! grid points inside the step
+                do while (ig <= ng)
+                    if (ev == 0) then
+                        if (t_grid(ig) > t_new) exit
+                    else
+                        if (t_grid(ig) > t + x_ev * hh) exit
+                    end if
+                    yv = dense_value(df, min(max((t_grid(ig) - t) / hh, 0.0_dp), 1.0_dp))
+                    th_grid(ig) = yv(1)
+                    om_grid(ig) = yv(2)
+                    ig = ig + 1
+                end do
+                if (clamped) then
+                    h = max(h, hh * fac)
+                else
+                    h = hh * fac
+                end if
+                if (ev == 0) then
+                    t = t_new
+                    y = y_new
+                    f = f_new
+                    cycle
+                end if
+                ! an event ends the step
+                yv = dense_value(df, x_ev)
+                if (x_ev < 1.0_dp) then
+                    t = t + x_ev * hh
+                else
+                    t = t_new
+                end if
+                if (ev == R_CAP) then
+                    y = [rs_ * half_pi, yv(2)]
+                    why = R_CAP
+                    return
+                end if
+                ! impact (rocking.md 7): onto the other corner, theta' times e
+                n_imp = n_imp + 1
+                if (sim%track) call push_impact(t)
+                s = -s
+                rs_ = real(s, dp)
+                sa = sim%alpha * rs_
+                y = [0.0_dp, sim%e * yv(2)]
+                f = rhs(sim, gr, sa, t, y)
+                acc0 = f(2)
+                if (.not. rs_ * acc0 > 0.0_dp) then
+                    ! pushed back onto the base: the next flight rises theta'^2/(2|theta''|)
+                    if (abs(acc0) > 0.0_dp) then
+                        amp = 0.5_dp * y(2)**2 / abs(acc0)
+                    else if (abs(y(2)) > 0.0_dp) then
+                        amp = huge(amp)
+                    else
+                        amp = 0.0_dp
+                    end if
+                    if (amp <= sim%rest_amp) then
+                        ! rest (ends a Zeno sequence): flights tau, e tau, ... sum tau/(1-e)
+                        t_r = t
+                        if (abs(acc0) > 0.0_dp .and. sim%e < 1.0_dp) then
+                            tau = 2.0_dp * abs(y(2)) / abs(acc0)
+                            t_r = t + tau / (1.0_dp - sim%e)
+                        end if
+                        call set_rest(min(t_r, t_stop))
+                        why = R_REST
+                        return
+                    end if
+                    ! a flight of 2|theta'|/|theta''|: start with a quarter of it
+                    h = min(h, 0.5_dp * abs(y(2)) / abs(acc0))
+                end if
+                from_zero = .true.
+                if (stop_on_impact) then
+                    why = R_IMPACT
+                    return
+                end if
+            end do
+            why = R_LIMIT
+        end subroutine advance
+
+        !> Root of sgn * component - level of the dense output on [xa, xb], given the
+        !> values fa, fb at the ends (of opposite signs, or one of them 0).
+        subroutine locate(df, comp, level, xa, xb, fa, fb, x)
+            type(dense_fn), intent(inout) :: df
+            integer, intent(in) :: comp
+            real(dp), intent(in) :: level, xa, xb, fa, fb
+            real(dp), intent(out) :: x
+            df%comp = comp
+            df%level = level
+            if (.not. xb > xa) then
+                x = xa
+                return
+            end if
+            call find_root(df, xa, xb, x, stat, rmsg, fa_known=fa, fb_known=fb)
+            if (stat /= SEISPULSE_SUCCESS) then
+                call set_error(stat, errmsg, SEISPULSE_INTERNAL, 'rocking: event location ' &
+                               //'failed after t = '//real_str(t)//': '//trim(rmsg)//' (a bug)')
+                done = .true.
+                return
+            end if
+            x = min(max(x, xa), xb)
+        end subroutine locate
+
+        !> The block is back at rest at tt (grid points up to tt: 0).
+        subroutine set_rest(tt)
+            real(dp), intent(in) :: tt
+            call fill_rest(tt)
+            t = max(t, tt)
+            t_rest = t
+            mode = 0
+            s = 0
+            sa = 0.0_dp
+            y = 0.0_dp
+            from_zero = .false.
+        end subroutine set_rest
+
+        subroutine extremes(th)
+            real(dp), intent(in) :: th
+            run%theta_max = max(run%theta_max, th)
+            run%theta_min = min(run%theta_min, th)
+        end subroutine extremes
+
+        subroutine push_impact(tt)
+            real(dp), intent(in) :: tt
+            real(dp), allocatable :: tmp(:)
+            if (n_imp > size(imp)) then
+                allocate(tmp(2 * size(imp)))
+                tmp(1:size(imp)) = imp
+                call move_alloc(tmp, imp)
+            end if
+            imp(n_imp) = tt
+        end subroutine push_impact
+
+        !> Grid points up to tt while at rest.
+        subroutine fill_rest(tt)
+            real(dp), intent(in) :: tt
+            do while (ig <= ng)
+                if (t_grid(ig) > tt) exit
+                th_grid(ig) = 0.0_dp
+                om_grid(ig) = 0.0_dp
+                ig = ig + 1
+            end do
+        end subroutine fill_rest
+
+        !> Overturned (|theta| = pi/2, or certain once the excitation is over).
+        subroutine finish_overturn()
+            if (n_imp == 0) then
+                call finish(ROCK_OVERTURN_NO_IMPACT)
+            else if (n_imp == 1) then
+                call finish(ROCK_OVERTURN_ONE_IMPACT)
+            else
+                call finish(ROCK_OVERTURN_MANY)
+            end if
+        end subroutine finish_overturn
+
+        subroutine finish_rest()
+            if (ever_up) then
+                call finish(ROCK_REST)
+            else
+                call finish(ROCK_NO_UPLIFT)
+            end if
+        end subroutine finish_rest
+
+        !> Fill the run and the rest of the grid.
+        subroutine finish(outcome)
+            integer, intent(in) :: outcome
+            real(dp) :: th_after, om_after
+            done = .true.
+            run%outcome = outcome
+            run%n_impacts = n_imp
+            run%n_steps = steps
+            select case (outcome)
+            case (ROCK_NO_UPLIFT)
+                run%t_end = 0.0_dp
+                th_after = 0.0_dp
+                om_after = 0.0_dp
+            case (ROCK_REST)
+                run%t_end = t_rest
+                th_after = 0.0_dp
+                om_after = 0.0_dp
+            case (ROCK_TIME_LIMIT)
+                run%t_end = t
+                th_after = ieee_value(th_after, ieee_quiet_nan)
+                om_after = th_after
+            case default
+                ! overturned: on its side
+                run%t_end = t
+                run%t_overturn = t_cross
+                if (s < 0) then
+                    th_after = -half_pi
+                else
+                    th_after = half_pi
+                end if
+                om_after = 0.0_dp
+            end select
+            do while (ig <= ng)
+                th_grid(ig) = th_after
+                om_grid(ig) = om_after
+                ig = ig + 1
+            end do
+            if (sim%track) then
+                if (allocated(run%t_impacts)) deallocate(run%t_impacts)
+                allocate(run%t_impacts(n_imp))
+                run%t_impacts(:) = imp(1:n_imp)
+            end if
+        end subroutine finish
+
+    end subroutine simulate
+
+    !> Outcome known once the excitation is over (module notes; rocking.md 5): the energy
+    !> above the barrier, D, is kept by every flight and lowered by every impact.
+    pure function decide(sim, y, s) result(dec)
+        type(sim_t), intent(in) :: sim
+        real(dp), intent(in) :: y(2)
+        integer, intent(in) :: s
+        integer :: dec
+        real(dp) :: ath, d, outward
+        ath = abs(y(1))
+        outward = real(s, dp) * y(2)
+        if (sim%lin) then
+            d = 0.5_dp * y(2)**2 - 0.5_dp * sim%p2 * (sim%alpha - ath)**2
+        else
+            d = 0.5_dp * y(2)**2 - 2.0_dp * sim%p2 * sin(0.5_dp * (sim%alpha - ath))**2
+        end if
+        dec = DEC_OPEN
+        if (ath >= sim%alpha) then
+            ! beyond the barrier gravity pushes outward
+            if (outward >= 0.0_dp .or. d <= 0.0_dp) dec = DEC_OVERTURN
+        else if (d <= 0.0_dp) then
+            dec = DEC_SAFE
+        else if (outward > 0.0_dp) then
+            dec = DEC_OVERTURN
+        end if
+    end function decide
+
+    !> Smallest meaningful step at time t (a few ulps of t, or of 1e-3/p near t = 0).
+    pure function min_step(sim, t) result(h)
+        type(sim_t), intent(in) :: sim
+        real(dp), intent(in) :: t
+        real(dp) :: h
+        h = 16.0_dp * epsilon(t) * max(abs(t), 1.0e-3_dp / sim%p)
+    end function min_step
+
+    ! ------------------------------------------------------------------------------
+    ! Equation of motion and the DOP853 step
+    ! ------------------------------------------------------------------------------
+
+    !> (theta', theta'') on side s (sa = alpha s): Eqs. 2.5/2.6 or 2.7.
+    pure function rhs(sim, gr, sa, t, y) result(f)
+        type(sim_t), intent(in) :: sim
+        type(ground_t), intent(in) :: gr
+        real(dp), intent(in) :: sa, t, y(2)
+        real(dp) :: f(2)
+        real(dp) :: a, phi
+        a = ground_accel(gr, t) * sim%inv_g
+        f(1) = y(2)
+        if (sim%lin) then
+            f(2) = sim%p2 * (y(1) + a - sa)
+        else
+            phi = sa - y(1)
+            f(2) = -sim%p2 * (sin(phi) - a * cos(phi))
+        end if
+    end function rhs
+
+    !> One DOP853 step of size h from (t, y) with f = rhs(t, y) (Hairer, Norsett & Wanner,
+    !> Solving ODEs I, II.10): the 8th-order solution, rhs at its end, the stages (for the
+    !> dense output) and the error norm of the 5th/3rd-order estimators (<= 1: accept).
+    !> Stage 12 and the end are evaluated at t_new exactly (the piece end, if clamped).
+    pure subroutine dop_step(sim, gr, sa, t, y, f, h, t_new, y_new, f_new, k, err)
+        type(sim_t), intent(in) :: sim
+        type(ground_t), intent(in) :: gr
+        real(dp), intent(in) :: sa, t, y(2), f(2), h, t_new
+        real(dp), intent(out) :: y_new(2), f_new(2), k(2, 16), err
+        real(dp) :: ys(2), e5(2), e3(2), sc(2), n5, n3, tc
+        integer :: i, j
+        k = 0.0_dp
+        k(:, 1) = f
+        do i = 2, 12
+            ys = y
+            do j = 1, i - 1
+                ys = ys + (h * dop_a(i, j)) * k(:, j)
+            end do
+            if (i == 12) then
+                tc = t_new
+            else
+                tc = t + dop_c(i) * h
+            end if
+            k(:, i) = rhs(sim, gr, sa, tc, ys)
+        end do
+        ys = 0.0_dp
+        do j = 1, 12
+            ys = ys + dop_b(j) * k(:, j)
+        end do
+        y_new = y + h * ys
+        f_new = rhs(sim, gr, sa, t_new, y_new)
+        k(:, 13) = f_new
+        e5 = 0.0_dp
+        e3 = 0.0_dp
+        do j = 1, 13
+            e5 = e5 + dop_e5(j) * k(:, j)
+            e3 = e3 + dop_e3(j) * k(:, j)
+        end do
+        sc = sim%atol + sim%rtol * max(abs(y), abs(y_new))
+        e5 = e5 / sc
+        e3 = e3 / sc
+        n5 = e5(1)**2 + e5(2)**2
+        n3 = e3(1)**2 + e3(2)**2
+        if (n5 > 0.0_dp) then
+            err = abs(h) * n5 / sqrt(2.0_dp * (n5 + 0.01_dp * n3))
+        else
+            err = 0.0_dp
+        end if
+    end subroutine dop_step
+
+    !> The three extra stages and the coefficients of the 7th-order dense output of the
+    !> step just taken (y -> y_new over h; k holds stages 1-13).
+    pure subroutine dense_setup(sim, gr, sa, t, y, f, h, y_new, f_new, k, df)
+        type(sim_t), intent(in) :: sim
+        type(ground_t), intent(in) :: gr
+        real(dp), intent(in) :: sa, t, y(2), f(2), h, y_new(2), f_new(2)
+        real(dp), intent(inout) :: k(2, 16)
+        type(dense_fn), intent(inout) :: df
+        real(dp) :: ys(2), dy(2)
+        integer :: i, j, m
+        do i = 14, 16
+            ys = y
+            do j = 1, i - 1
+                ys = ys + (h * dop_a(i, j)) * k(:, j)
+            end do
+            k(:, i) = rhs(sim, gr, sa, t + dop_c(i) * h, ys)
+        end do
+        dy = y_new - y
+        df%f(1, :) = dy
+        df%f(2, :) = h * f - dy
+        df%f(3, :) = 2.0_dp * dy - h * (f_new + f)
+        do m = 1, 4
+            ys = 0.0_dp
+            do j = 1, 16
+                ys = ys + dop_d(m, j) * k(:, j)
+            end do
+            df%f(3 + m, :) = h * ys
+        end do
+        df%y0 = y
+    end subroutine dense_setup
+
+    !> Dense output (theta, theta') at the fraction x of the step.
+    pure function dense_value(df, x) result(y)
+        type(dense_fn), intent(in) :: df
+        real(dp), intent(in) :: x
+        real(dp) :: y(2)
+        real(dp) :: xm
+        xm = 1.0_dp - x
+        y = df%f(7, :) * x
+        y = (y + df%f(6, :)) * xm
+        y = (y + df%f(5, :)) * x
+        y = (y + df%f(4, :)) * xm
+        y = (y + df%f(3, :)) * x
+        y = (y + df%f(2, :)) * xm
+        y = (y + df%f(1, :)) * x
+        y = y + df%y0
+    end function dense_value
+
+    function dense_eval(self, x) result(y)
+        class(dense_fn), intent(inout) :: self
+        real(dp), intent(in) :: x
+        real(dp) :: y
+        real(dp) :: v(2)
+        v = dense_value(self, x)
+        y = self%sgn * v(self%comp) - self%level
+    end function dense_eval
+
+    ! ------------------------------------------------------------------------------
+    ! Ground acceleration
+    ! ------------------------------------------------------------------------------
+
+    !> a_g at t on the current piece; at and after its end the limit from inside.
+    pure function ground_accel(gr, t) result(a)
+        type(ground_t), intent(in) :: gr
+        real(dp), intent(in) :: t
+        real(dp) :: a
+        select case (gr%src)
+        case (GR_PULSE)
+            if (t >= gr%tb) then
+                a = gr%ab
+            else
+                a = pulse_accel(gr%p, gr%cexp, t)
+            end if
+        case (GR_RECORD)
+            if (t >= gr%tb) then
+                a = gr%ab
+            else
+                a = gr%a0 + gr%slope * (t - gr%ta)
+            end if
+        case default
+            a = 0.0_dp
+        end select
+    end function ground_accel
+
+    !> Make a piece of seispulse_pieces the current piece of gr: from its end on, a_g is
+    !> the limit from inside, ab; a record step is the line aa + slope (t - ta).
+    pure subroutine load_piece(gr, piece)
+        type(ground_t), intent(inout) :: gr
+        type(piece_t), intent(in) :: piece
+        gr%ta = piece%ta
+        gr%tb = piece%tb
+        gr%ab = piece%ab
+        if (gr%src == GR_RECORD) then
+            gr%a0 = piece%aa
+            gr%slope = piece%slope
+        end if
+    end subroutine load_piece
+
+    function ground_eval(self, x) result(y)
+        class(ground_t), intent(inout) :: self
+        real(dp), intent(in) :: x
+        real(dp) :: y
+        y = ground_accel(self, x) - self%level
+    end function ground_eval
+
+    !> Acceleration of a pulse inside one of its pieces (0 <= t < end): the common kinds
+    !> directly (one transcendental call: this is the inner loop), the others by pulse_at.
+    pure function pulse_accel(p, c, t) result(a)
+        type(pulse_t), intent(in) :: p
+        type(exp_consts_t), intent(in) :: c
+        real(dp), intent(in) :: t
+        real(dp) :: a
+        real(dp) :: v, d, w
+        select case (p%kind)
+        case (PULSE_SINE_CYCLE)
+            a = p%amp * sin(two_pi * (t / p%duration))
+        case (PULSE_COSINE_CYCLE)
+            a = p%amp * cos(two_pi * (t / p%duration))
+        case (PULSE_HALF_SINE)
+            a = p%amp * sin(pi * (t / p%duration))
+        case (PULSE_RECTANGULAR)
+            a = p%amp
+        case (PULSE_RICKER)
+            w = (pi * p%freq * (t - p%t0))**2
+            if (w < 750.0_dp) then
+                a = p%amp * (1.0_dp - 2.0_dp * w) * exp(-w)
+            else
+                a = 0.0_dp
+            end if
+        case default
+            call pulse_at(p, t, a, v, d, c)
+        end select
+    end function pulse_accel
+
+    ! ------------------------------------------------------------------------------
+    ! Small helpers
+    ! ------------------------------------------------------------------------------
+
+    !> a exceeds thr by more than rounding (two ulps of the larger): a threshold that
+    !> is only touched starts no rocking.
+    elemental logical function exceeds(a, thr)
+        real(dp), intent(in) :: a, thr
+        exceeds = a - thr > 2.0_dp * epsilon(a) * max(abs(a), abs(thr))
+    end function exceeds
+
+    !> x finite and > 0 (no ordered comparison with a NaN: it traps under
+    !> -ffpe-trap=invalid).
+    elemental logical function positive_finite(x)
+        real(dp), intent(in) :: x
+        if (ieee_is_finite(x)) then
+            positive_finite = x > 0.0_dp
+        else
+            positive_finite = .false.
+        end if
+    end function positive_finite
+
+    !> x finite and >= lo.
+    elemental logical function finite_at_least(x, lo)
+        real(dp), intent(in) :: x, lo
+        if (ieee_is_finite(x)) then
+            finite_at_least = x >= lo
+        else
+            finite_at_least = .false.
+        end if
+    end function finite_at_least
+
+    !> lo < x < hi, x not NaN.
+    elemental logical function in_open(x, lo, hi)
+        real(dp), intent(in) :: x, lo, hi
+        if (ieee_is_nan(x)) then
+            in_open = .false.
+        else
+            in_open = x > lo .and. x < hi
+        end if
+    end function in_open
+
+    !> lo <= x <= hi, x not NaN.
+    elemental logical function in_closed(x, lo, hi)
+        real(dp), intent(in) :: x, lo, hi
+        if (ieee_is_nan(x)) then
+            in_closed = .false.
+        else
+            in_closed = x >= lo .and. x <= hi
+        end if
+    end function in_closed
+
+end module seispulse_rocking_sim
