@@ -10,7 +10,7 @@ module seispulse_errors
 
     public :: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
               SEISPULSE_NO_CONVERGENCE, SEISPULSE_NO_BRACKET, SEISPULSE_INTERNAL
-    public :: set_error, status_name, real_str, outside
+    public :: set_error, status_name, real_str, outside, check_ascending_times
 
     integer, parameter :: SEISPULSE_SUCCESS = 0        !! no error
     integer, parameter :: SEISPULSE_INVALID_INPUT = 1  !! an argument is out of its domain
@@ -101,5 +101,34 @@ contains
             outside = x > hi
         end if
     end function outside
+
+    !> Output times of an integrator: finite and ascending (a message naming t(i)).
+    subroutine check_ascending_times(t, name, stat, errmsg)
+        use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+        use seispulse_kinds, only: dp
+        real(dp), intent(in) :: t(:)                          !! the times
+        character(len=*), intent(in) :: name                  !! their name in messages
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        integer :: i
+        character(len=24) :: idx
+        stat = SEISPULSE_SUCCESS
+        do i = 1, size(t)
+            if (.not. ieee_is_finite(t(i))) then
+                write(idx, '(i0)') i
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, name//'('//trim(idx) &
+                               //') = '//real_str(t(i))//': must be a finite number')
+                return
+            end if
+        end do
+        do i = 2, size(t)
+            if (t(i) < t(i - 1)) then
+                write(idx, '(i0)') i
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, name//'('//trim(idx) &
+                               //') = '//real_str(t(i))//': the times must be ascending')
+                return
+            end if
+        end do
+    end subroutine check_ascending_times
 
 end module seispulse_errors

@@ -39,7 +39,7 @@ module seispulse_stickslip
                                              ieee_positive_inf
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
-                                SEISPULSE_INTERNAL, set_error, real_str
+                                SEISPULSE_INTERNAL, set_error, real_str, check_ascending_times
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_pulses, only: pulse_t, pulse_validate, pulse_at, exp_consts_t, exp_consts, &
                                 PULSE_EXPONENTIAL
@@ -673,8 +673,6 @@ contains
         real(dp), intent(in), optional :: w_grid(:)
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
-        integer :: i
-        character(len=24) :: idx
         stat = SEISPULSE_SUCCESS
         if (.not. (present(t_grid) .or. present(u_grid) .or. present(w_grid))) return
         if (.not. present(t_grid)) then
@@ -702,22 +700,7 @@ contains
                            'w_grid: must have the size of t_grid')
             return
         end if
-        do i = 1, size(t_grid)
-            if (.not. ieee_is_finite(t_grid(i))) then
-                write(idx, '(i0)') i
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 't_grid('//trim(idx) &
-                               //') = '//real_str(t_grid(i))//': must be a finite number')
-                return
-            end if
-        end do
-        do i = 2, size(t_grid)
-            if (t_grid(i) < t_grid(i - 1)) then
-                write(idx, '(i0)') i
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 't_grid('//trim(idx) &
-                               //') = '//real_str(t_grid(i))//': the times must be ascending')
-                return
-            end if
-        end do
+        call check_ascending_times(t_grid, 't_grid', stat, errmsg)
     end subroutine check_grid
 
 end module seispulse_stickslip

@@ -161,14 +161,21 @@ def test_grid_closed_forms_against_linearized_integrator(beta):
             s = R.summary(f, eta, beta)
             block, pulse, td = linear_case(f, eta, beta)
             # rtol 1e-14: the tiny excursions near eta = 1 need the absolute accuracy
-            run = R.simulate(block, pulse, linearized=True, t_max=60 * td + 60, rtol=1e-14)
+            run = R.simulate(block, pulse, linearized=True, t_max=60 * td + 60, rtol=1e-14,
+                             t=[td])
             where = f"f={f}, eta={eta}, beta={beta}"
             assert run.t_uplift / td == pytest.approx(s.tau_up, rel=1e-9, abs=1e-12), where
+            # the integrator's own region: when theta reaches alpha (O1/O2/O3), or whether
+            # the block still rises at the end of the pulse (S2) or not (S1)
+            if run.outcome == "overturn_no_impact":
+                tc = run.t_overturn / td
+                region = "O1" if tc <= 0.5 else "O2" if tc <= 1 else "O3"
+            else:
+                region = "S2" if run.omega[0] > 0 else "S1"
+            assert region == s.region, where
             if s.region in ("O1", "O2", "O3"):
-                assert run.outcome == "overturn_no_impact", where
                 assert run.t_overturn / td == pytest.approx(s.tau_c, rel=1e-9), where
             else:
-                assert s.region in ("S1", "S2"), where
                 assert run.outcome == "rest" and run.n_impacts == 1, where   # e = 0
                 assert run.t_impacts[0] / td == pytest.approx(s.tau_i, rel=1e-9), where
                 assert run.theta_max / block.alpha == pytest.approx(s.psi_max, rel=1e-9), where
