@@ -23,7 +23,7 @@ module driver_rocking
     use seispulse_rocking, only: rocking_summary, rocking_region_name
     use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rectangular_block, &
                                      symmetric_block, rocking_block_validate, rock_pulse, &
-                                     overturning_map, ROCK_TIME_LIMIT
+                                     overturning_map, ROCK_RUN_TIME_LIMIT
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
@@ -589,7 +589,7 @@ contains
             else
                 pulse_end = pulse_end_time(pin%p)
             end if
-            if (run%outcome == ROCK_TIME_LIMIT .and. run%t_end > 0.0_dp) then
+            if (run%outcome == ROCK_RUN_TIME_LIMIT .and. run%t_end > 0.0_dp) then
                 t_last = run%t_end               ! no solution beyond it
             else
                 t_last = max(1.25_dp * run%t_end, pulse_end)

@@ -43,9 +43,9 @@ module seispulse
                                  rect_impact_time_normalized
     use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rectangular_block, &
                                      symmetric_block, rocking_block_validate, rock_pulse, &
-                                     rock_record, overturning_map, ROCK_REST, ROCK_NO_UPLIFT, &
-                                     ROCK_OVERTURN_NO_IMPACT, ROCK_OVERTURN_ONE_IMPACT, &
-                                     ROCK_OVERTURN_MANY, ROCK_TIME_LIMIT
+                                     rock_record, overturning_map, ROCK_RUN_REST, ROCK_RUN_NO_UPLIFT, &
+                                     ROCK_RUN_OVERTURN_NO_IMPACT, ROCK_RUN_OVERTURN_ONE_IMPACT, &
+                                     ROCK_RUN_OVERTURN_MANY, ROCK_RUN_TIME_LIMIT
     implicit none
     public
 

@@ -15,9 +15,9 @@ module test_rocking_sim
                                 PULSE_MP
     use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rectangular_block, &
                                      symmetric_block, rocking_block_validate, rock_pulse, &
-                                     rock_record, overturning_map, ROCK_REST, ROCK_NO_UPLIFT, &
-                                     ROCK_OVERTURN_NO_IMPACT, ROCK_OVERTURN_ONE_IMPACT, &
-                                     ROCK_OVERTURN_MANY, ROCK_TIME_LIMIT
+                                     rock_record, overturning_map, ROCK_RUN_REST, ROCK_RUN_NO_UPLIFT, &
+                                     ROCK_RUN_OVERTURN_NO_IMPACT, ROCK_RUN_OVERTURN_ONE_IMPACT, &
+                                     ROCK_RUN_OVERTURN_MANY, ROCK_RUN_TIME_LIMIT
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
     private
@@ -90,8 +90,8 @@ contains
 
     logical function overturned(run)
         type(rocking_run_t), intent(in) :: run
-        overturned = run%outcome == ROCK_OVERTURN_NO_IMPACT .or. &
-                     run%outcome == ROCK_OVERTURN_ONE_IMPACT .or. run%outcome == ROCK_OVERTURN_MANY
+        overturned = run%outcome == ROCK_RUN_OVERTURN_NO_IMPACT .or. &
+                     run%outcome == ROCK_RUN_OVERTURN_ONE_IMPACT .or. run%outcome == ROCK_RUN_OVERTURN_MANY
     end function overturned
 
     !> Gauss-Legendre nodes and weights on (-1, 1) (Newton on P_n).
@@ -225,7 +225,7 @@ contains
         blk = make_block(alpha, p, 1.0_dp, .false.)
         call run_ok(error, blk, none, run, 'nonlinear', tg, th, om, t_max=40.0_dp, theta0=th0)
         if (allocated(error)) return
-        call check(error, run%outcome, ROCK_TIME_LIMIT, 'perpetual rocking ends at t_max')
+        call check(error, run%outcome, ROCK_RUN_TIME_LIMIT, 'perpetual rocking ends at t_max')
         if (allocated(error)) return
         e0 = p * p * cos(alpha - th0)
         de = 0.0_dp
@@ -291,7 +291,7 @@ contains
             end do
             call run_ok(error, blk, pl, run, 'rectangle', tg, th, om)
             if (allocated(error)) return
-            call check(error, run%outcome, ROCK_REST, 'rectangle in region S comes to rest')
+            call check(error, run%outcome, ROCK_RUN_REST, 'rectangle in region S comes to rest')
             if (allocated(error)) return
             call check(error, run%t_uplift, 0.0_dp, message='uplift at once')
             if (allocated(error)) return
@@ -431,7 +431,7 @@ contains
         pl = exponential_pulse(g0 * alpha / eta, td, beta, .false.)
         call run_ok(error, blk, pl, run, 'exponential O3')
         if (allocated(error)) return
-        call check(error, run%outcome, ROCK_OVERTURN_NO_IMPACT, 'O3 overturns without impact')
+        call check(error, run%outcome, ROCK_RUN_OVERTURN_NO_IMPACT, 'O3 overturns without impact')
         if (allocated(error)) return
         call check(error, run%t_overturn / td, tau_c, rtol=1.0e-9_dp, &
                    message='t_overturn = tau_c t_d')
@@ -519,7 +519,7 @@ contains
         blk = make_block(alpha, p, e, .true.)
         call run_ok(error, blk, none, run, 'linearized decay', theta0=th0)
         if (allocated(error)) return
-        call check(error, run%outcome, ROCK_REST, 'comes to rest')
+        call check(error, run%outcome, ROCK_RUN_REST, 'comes to rest')
         if (allocated(error)) return
         w0 = sqrt(2.0_dp * p * p * (alpha * th0 - 0.5_dp * th0**2))
         n_rest = 0
@@ -552,7 +552,7 @@ contains
         blk = make_block(alpha, p, e, .false.)
         call run_ok(error, blk, none, run, 'nonlinear decay', theta0=th0)
         if (allocated(error)) return
-        call check(error, run%outcome, ROCK_REST, 'nonlinear: comes to rest')
+        call check(error, run%outcome, ROCK_RUN_REST, 'nonlinear: comes to rest')
         if (allocated(error)) return
         w = sqrt(2.0_dp * p * p * (cos(alpha - th0) - cos(alpha)))
         tk = quarter_period(alpha, p, th0)
@@ -621,9 +621,9 @@ contains
                 call run_ok(error, blk, pl, run, 'single run')
                 if (allocated(error)) return
                 if (cls(i, 1) == 1) then
-                    call check(error, run%outcome, ROCK_OVERTURN_NO_IMPACT, 'no-impact mode')
+                    call check(error, run%outcome, ROCK_RUN_OVERTURN_NO_IMPACT, 'no-impact mode')
                 else
-                    call check(error, run%outcome, ROCK_OVERTURN_ONE_IMPACT, 'one-impact mode')
+                    call check(error, run%outcome, ROCK_RUN_OVERTURN_ONE_IMPACT, 'one-impact mode')
                 end if
                 if (allocated(error)) return
             end do
@@ -667,7 +667,7 @@ contains
         pl = cosine_cycle_pulse(1.2_dp * a1, tp)
         call run_ok(error, blk, pl, run, 'cosine 1.2')
         if (allocated(error)) return
-        call check(error, run%outcome, ROCK_OVERTURN_MANY, 'overturns after several impacts')
+        call check(error, run%outcome, ROCK_RUN_OVERTURN_MANY, 'overturns after several impacts')
         if (allocated(error)) return
         call check(error, run%n_impacts, 4, 'impacts before overturning')
         if (allocated(error)) return
@@ -681,7 +681,7 @@ contains
         pl = cosine_cycle_pulse(2.5_dp * a1, tp)
         call run_ok(error, blk, pl, run, 'cosine 2.5')
         if (allocated(error)) return
-        call check(error, run%outcome, ROCK_REST, 'safe')
+        call check(error, run%outcome, ROCK_RUN_REST, 'safe')
         if (allocated(error)) return
         do k = 1, 6
             call check(error, run%t_impacts(k), ref2(k), rtol=1.0e-9_dp, message='impact times')
@@ -702,7 +702,7 @@ contains
         pl = sine_cycle_pulse(3.0_dp * a1, tp)
         call run_ok(error, blk, pl, run, 'sine 3')
         if (allocated(error)) return
-        call check(error, run%outcome, ROCK_OVERTURN_ONE_IMPACT, 'overturns after one impact')
+        call check(error, run%outcome, ROCK_RUN_OVERTURN_ONE_IMPACT, 'overturns after one impact')
         if (allocated(error)) return
         call check(error, run%t_impacts(1), 1.339201545722725_dp, rtol=1.0e-9_dp, &
                    message='impact time')
@@ -714,7 +714,7 @@ contains
         blk%e = 0.0_dp
         call run_ok(error, blk, rectangular_pulse(1.5_dp * a1, 0.3_dp), run, 'e = 0')
         if (allocated(error)) return
-        call check(error, run%outcome, ROCK_REST, 'e = 0: rest')
+        call check(error, run%outcome, ROCK_RUN_REST, 'e = 0: rest')
         if (allocated(error)) return
         call check(error, run%n_impacts, 1, 'e = 0: one impact')
         if (allocated(error)) return
@@ -884,11 +884,11 @@ contains
                 call run_ok(error, blk, pl, run, 'single run')
                 if (allocated(error)) return
                 select case (run%outcome)
-                case (ROCK_OVERTURN_NO_IMPACT)
+                case (ROCK_RUN_OVERTURN_NO_IMPACT)
                     expect = 1
-                case (ROCK_OVERTURN_ONE_IMPACT)
+                case (ROCK_RUN_OVERTURN_ONE_IMPACT)
                     expect = 2
-                case (ROCK_OVERTURN_MANY)
+                case (ROCK_RUN_OVERTURN_MANY)
                     expect = 3
                 case default
                     expect = 0
@@ -965,7 +965,7 @@ contains
         call run_ok(error, blk, sine_cycle_pulse(0.99_dp * g0 * tan(alpha), 1.0_dp), run, &
                     'no uplift')
         if (allocated(error)) return
-        call check(error, run%outcome, ROCK_NO_UPLIFT, 'no uplift')
+        call check(error, run%outcome, ROCK_RUN_NO_UPLIFT, 'no uplift')
         if (allocated(error)) return
         call check(error, ieee_is_nan(run%t_uplift) .and. ieee_is_nan(run%t_overturn), &
                    'NaN times without uplift')
@@ -975,7 +975,7 @@ contains
         call run_ok(error, blk, rectangular_pulse(3.0_dp * g0 * tan(alpha), 5.0_dp), run, &
                     'overturn', tg, th, om)
         if (allocated(error)) return
-        call check(error, run%outcome, ROCK_OVERTURN_NO_IMPACT, 'overturns')
+        call check(error, run%outcome, ROCK_RUN_OVERTURN_NO_IMPACT, 'overturns')
         if (allocated(error)) return
         call check(error, run%t_overturn < run%t_end .and. run%t_end < 30.0_dp, &
                    'alpha crossed before pi/2')
@@ -1000,14 +1000,14 @@ contains
         call run_ok(error, blk, rectangular_pulse(0.0_dp, 1.0_dp), run, 'released beyond', &
                     theta0=1.05_dp * alpha)
         if (allocated(error)) return
-        call check(error, run%outcome, ROCK_OVERTURN_NO_IMPACT, 'released beyond alpha')
+        call check(error, run%outcome, ROCK_RUN_OVERTURN_NO_IMPACT, 'released beyond alpha')
         if (allocated(error)) return
         ! released inside: comes to rest, grid 0 after t_end
         tg = [0.0_dp, 0.1_dp, 0.2_dp, 50.0_dp, 60.0_dp]
         call run_ok(error, blk, rectangular_pulse(0.0_dp, 1.0_dp), run, 'released inside', &
                     tg, th, om, theta0=0.9_dp * alpha)
         if (allocated(error)) return
-        call check(error, run%outcome, ROCK_REST, 'released inside: rest')
+        call check(error, run%outcome, ROCK_RUN_REST, 'released inside: rest')
         if (allocated(error)) return
         call check(error, th(1), 0.9_dp * alpha, message='initial state on the grid')
         if (allocated(error)) return
@@ -1020,7 +1020,7 @@ contains
         blk%e = 1.0_dp
         call run_ok(error, blk, sine_cycle_pulse(1.05_dp * g0 * tan(alpha), 1.0_dp), run, 'e = 1')
         if (allocated(error)) return
-        call check(error, run%outcome, ROCK_TIME_LIMIT, 'e = 1 safe: time limit')
+        call check(error, run%outcome, ROCK_RUN_TIME_LIMIT, 'e = 1 safe: time limit')
     end subroutine test_grid_outcomes
 
     subroutine test_bad_input(error)

@@ -21,6 +21,24 @@ def as_float_array(name, value):
     return arr.astype(np.float64, copy=False)
 
 
+def as_scalar(name, value):
+    """One real number as a Python float; InvalidInputError naming `name` for anything
+    else (arrays of more than one element, strings, None)."""
+    arr = as_float_array(name, value)
+    if arr.size != 1:
+        raise InvalidInputError(f"{name}: must be a single number")
+    return float(arr.reshape(-1)[0])
+
+
+def names(table, codes, shape):
+    """Integer codes from the Fortran layer as their names: a str for a 0-d result,
+    else an array of the given shape."""
+    out = np.asarray(table)[np.asarray(codes)]
+    if shape == ():
+        return str(out.reshape(-1)[0])
+    return out.reshape(shape)
+
+
 def broadcast(**arrays):
     """Broadcast named float arrays together like a numpy ufunc.
 

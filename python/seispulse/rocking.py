@@ -52,11 +52,6 @@ _CURVES = {"uplift": 1, "wall": 2, "wall_inverse": 3, "end": 4, "mid": 5, "end_i
            "mid_inverse": 7, "s1_s2": 8}
 
 
-def _names(codes, shape):
-    names = np.asarray(REGIONS)[np.asarray(codes)]
-    return str(names.reshape(-1)[0]) if shape == () else names.reshape(shape)
-
-
 def _curve(which, x_name, x, beta, rename=None):
     shape, arr = _core.broadcast(**{x_name: x, "beta": beta})
     y, stat, msg = sp_rocking_curve(_CURVES[which], _core.flat(arr[x_name], shape),
@@ -87,7 +82,7 @@ def summary(f, eta, beta):
                                                   for k in ("f", "eta", "beta")))
     _core.raise_for_status(stat, msg)
     cols = _core.shaped(shape, *(np.ascontiguousarray(out[:, j]) for j in range(5)))
-    return Summary(_names(region, shape), *cols)
+    return Summary(_core.names(REGIONS, region, shape), *cols)
 
 
 def extremes(f, eta, beta):
@@ -97,7 +92,7 @@ def extremes(f, eta, beta):
     region, psi_max, stat, msg = sp_rocking_extremes(*(_core.flat(arr[k], shape)
                                                        for k in ("f", "eta", "beta")))
     _core.raise_for_status(stat, msg)
-    return _names(region, shape), _core.shaped(shape, psi_max)[0]
+    return _core.names(REGIONS, region, shape), _core.shaped(shape, psi_max)[0]
 
 
 def classify(f, eta, beta):
@@ -210,7 +205,8 @@ def rectangular_block(b, h, g=STANDARD_GRAVITY, e=None):
     """Uniform rectangular block of half-width b and half-height h (m): alpha = atan(b/h),
     R = sqrt(b^2 + h^2), p = sqrt(3 g/(4 R)) and Housner's e = 1 - 1.5 sin^2(alpha)
     unless `e` is given."""
-    out, stat, msg = sp_rocking_block(1, float(b), float(h), 0.0, float(g))
+    out, stat, msg = sp_rocking_block(1, _core.as_scalar("b", b), _core.as_scalar("h", h), 0.0,
+                                       _core.as_scalar("g", g))
     _core.raise_for_status(stat, msg)
     blk = _block_tuple(out, g)
     return blk if e is None else blk._replace(e=_restitution(e))
@@ -221,14 +217,16 @@ def symmetric_block(r, alpha, io_over_mr2, g=STANDARD_GRAVITY, e=None):
     corner to the centre of mass, slenderness alpha (rad) and I_o = io_over_mr2 m R^2
     about the corner (4/3 for a uniform rectangle): p = sqrt(g/(io_over_mr2 R)) and
     Housner's e = 1 - (2/io_over_mr2) sin^2(alpha) unless `e` is given."""
-    out, stat, msg = sp_rocking_block(2, float(r), float(alpha), float(io_over_mr2), float(g))
+    out, stat, msg = sp_rocking_block(2, _core.as_scalar("r", r), _core.as_scalar("alpha", alpha),
+                                       _core.as_scalar("io_over_mr2", io_over_mr2),
+                                       _core.as_scalar("g", g))
     _core.raise_for_status(stat, msg)
     blk = _block_tuple(out, g)
     return blk if e is None else blk._replace(e=_restitution(e))
 
 
 def _restitution(e):
-    x = float(e)
+    x = _core.as_scalar("e", e)
     if not 0.0 <= x <= 1.0:
         raise InvalidInputError(f"e = {x!r}: the coefficient of restitution must be in [0, 1]")
     return x
@@ -238,8 +236,12 @@ def simulate(block, pulse=None, *, accel=None, dt=None, linearized=False, t=None
              t_max=None, theta0=0.0, omega0=0.0, rtol=1e-12):
     """Rocking of `block` (:class:`Block`) under a pulse (from
     :func:`seispulse.pulse.define`, SI) or a sampled accelerogram (accel in m/s^2 at
-    t = i dt, linear in between, zero after), from rest (or theta0, omega0) until rest,
-    overturning or t_max (s).
+    t = i dt, linear in between, zero after), from rest (or theta0 in rad, omega0 in
+    rad/s at t = 0) until rest, overturning or t_max (s).
+
+    Sign (rocking.md 2): a positive ground acceleration drives theta > 0 (rotation about
+    one base corner); Housner's and Makris' form has the opposite sign, which flipping
+    the sign of the excitation gives.
 
     Housner's nonlinear equations 2.5/2.6 (linearized=True: Eq. 2.7); uplift at
     |a_g| > g tan(alpha) (alpha when linearized); impacts at theta = 0 located exactly,
@@ -263,11 +265,12 @@ def simulate(block, pulse=None, *, accel=None, dt=None, linearized=False, t=None
         rec = np.ascontiguousarray(_core.as_float_array("accel", accel).reshape(-1))
         if dt is None:
             raise InvalidInputError("dt: the time step (> 0, s) of accel is required")
-        kind, params, step = 0, np.zeros(9), float(dt)
+        kind, params, step = 0, np.zeros(9), _core.as_scalar("dt", dt)
     grid = np.zeros(0) if t is None else np.ascontiguousarray(
         _core.as_float_array("t", t).reshape(-1))
     opts = np.array([-1.0 if t_max is None else _core.check_positive("t_max", t_max, " (s)"),
-                     float(theta0), float(omega0), float(rtol)])
+                     _core.as_scalar("theta0", theta0), _core.as_scalar("omega0", omega0),
+                     _core.as_scalar("rtol", rtol)])
     blkv = np.array([block.alpha, block.p, block.e, block.g])
     nmax = 256
     while True:
@@ -299,7 +302,7 @@ def overturning_map(kind, freq_ratio, amp_ratio, alpha, e=None, linearized=False
     linearized uplift amplitude g alpha: eta = alpha/(amp_ratio tan alpha).
     """
     _core.check_choice("method", method, ("integrator", "closed"))
-    alpha = float(alpha)
+    alpha = _core.as_scalar("alpha", alpha)
     if not 0.0 < alpha < np.pi / 2:
         raise InvalidInputError(f"alpha = {alpha!r}: must be in (0, pi/2) (rad)")
     freq = np.ascontiguousarray(_core.as_float_array("freq_ratio", freq_ratio).reshape(-1))
@@ -308,7 +311,7 @@ def overturning_map(kind, freq_ratio, amp_ratio, alpha, e=None, linearized=False
         if kind not in ("exponential", "exp") or shape.get("full", False):
             raise InvalidInputError("method = 'closed': the closed forms are for the "
                                     "half-cycle exponential pulse only")
-        beta = float(shape.get("beta", 0.0))
+        beta = _core.as_scalar("beta", shape.get("beta", 0.0))
         if np.any(~(freq > 0)):
             raise InvalidInputError("freq_ratio: must be > 0")
         if np.any(~(amp > 0)):
@@ -317,7 +320,8 @@ def overturning_map(kind, freq_ratio, amp_ratio, alpha, e=None, linearized=False
         eta = alpha / (amp[:, None] * np.tan(alpha))
         region = summary(f[None, :], eta, beta).region
         return np.isin(region, ("O1", "O2", "O3")).astype(np.int32)
-    e = 1.0 - 1.5 * np.sin(alpha) ** 2 if e is None else _restitution(e)
+    # Housner's e of a uniform rectangle (floored at 0), from the library's formula
+    e = symmetric_block(1.0, alpha, 4.0 / 3.0).e if e is None else _restitution(e)
     linearized = _core.check_bool("linearized", linearized)
     template = define(kind, **_template_params(kind, shape))
     classes, stat, msg = sp_overturning_map(alpha, e, template.code, template.params,

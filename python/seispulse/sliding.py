@@ -75,13 +75,6 @@ _EXACT, _REGRESSION = 0, 1
 _METHODS = ("closed", "integrator")
 
 
-def _names(table, codes, shape):
-    names = np.asarray(table)[np.asarray(codes)]
-    if shape == ():
-        return str(names.reshape(-1)[0])
-    return names.reshape(shape)
-
-
 def _flat_all(shape, arrays):
     return [_core.flat(arrays[k], shape) for k in arrays]
 
@@ -126,7 +119,7 @@ def half_cycle(eta, beta, static_factor=1.0, method="closed"):
     tau_y, tau_m, regime, um, dugm, vm, stat, msg = sp_half_cycle(*_flat_all(shape, arr), code)
     _core.raise_for_status(stat, msg)
     tau_y, tau_m, um, dugm, vm = _core.shaped(shape, tau_y, tau_m, um, dugm, vm)
-    return HalfCycle(tau_y, tau_m, _names(REGIMES, regime, shape), um, dugm, vm)
+    return HalfCycle(tau_y, tau_m, _core.names(REGIMES, regime, shape), um, dugm, vm)
 
 
 def full_cycle(eta1, beta, eta2=None, static_factor=1.0, static_reverse=False,
@@ -161,7 +154,7 @@ def full_cycle(eta1, beta, eta2=None, static_factor=1.0, static_reverse=False,
     mode, out, stat, msg = sp_full_cycle(*_flat_all(shape, arr), int(static_reverse), code)
     _core.raise_for_status(stat, msg)
     cols = _core.shaped(shape, *(np.ascontiguousarray(out[:, j]) for j in range(9)))
-    return FullCycle(_names(MODES, mode, shape), *cols)
+    return FullCycle(_core.names(MODES, mode, shape), *cols)
 
 
 def inclined_resistances(mu, ag_over_g, slope_deg, xi_deg=0.0):
@@ -169,7 +162,8 @@ def inclined_resistances(mu, ag_over_g, slope_deg, xi_deg=0.0):
 
     mu > 0 friction coefficient, ag_over_g = A_g/g > 0, slope_deg in [0, 90) (a slope
     steeper than the friction angle atan(mu) is an error: the block would slide without
-    any excitation), xi_deg in [-90, 90] the angle of the pulse to the horizontal.
+    any excitation), xi_deg in [-90, 90] the angle of the pulse to the horizontal,
+    measured in the same sense as the slope (xi = slope_deg: along the plane).
     Returns :class:`Resistances` (eta1 downhill, eta2 uphill, k1, k2).
     """
     shape, arr = _core.broadcast(mu=mu, ag_over_g=ag_over_g, slope_deg=slope_deg,
@@ -179,11 +173,16 @@ def inclined_resistances(mu, ag_over_g, slope_deg, xi_deg=0.0):
     return Resistances(*_core.shaped(shape, eta1, eta2, k1, k2))
 
 
-def block(mu, ag, td, beta, full=False, slope_deg=0.0, xi_deg=0.0, static_factor=1.0,
+def block(mu, ag_over_g, td, beta, full=False, slope_deg=0.0, xi_deg=0.0, static_factor=1.0,
           static_reverse=False, along_plane=True, g=STANDARD_GRAVITY):
-    """A block of friction mu on a plane of slope lambda hit by an exponential pulse of
-    amplitude A_g (in g) and half-duration t_d (s) at angle xi to the horizontal,
-    driving it downhill first. Returns :class:`BlockResponse` in s, m and m/s.
+    """A block of friction mu on a plane of slope lambda = slope_deg hit by an exponential
+    pulse of amplitude A_g = ag_over_g * g and lobe duration t_d = td (s; a full cycle
+    lasts 2 t_d). Returns :class:`BlockResponse` in s, m and m/s.
+
+    Sign conventions (sliding.md 1.2, 7.1): the first lobe drives the block downhill
+    (positive slips are downhill). xi_deg is the angle of the pulse to the horizontal,
+    measured in the same sense as the slope: xi = 0 horizontal, xi = slope_deg along the
+    plane, both pointing towards downhill.
 
     along_plane: slips and velocities along the plane, with the factors K of
     sliding.md 7.1 (False: without them, as the chapter's example 1.9.2 does).
@@ -193,15 +192,16 @@ def block(mu, ag, td, beta, full=False, slope_deg=0.0, xi_deg=0.0, static_factor
     static_reverse = _core.check_bool("static_reverse", static_reverse)
     along_plane = _core.check_bool("along_plane", along_plane)
     g = _core.check_positive("g", g, " (m/s^2)")
-    shape, arr = _core.broadcast(mu=mu, ag=ag, td=td, beta=beta, slope_deg=slope_deg,
-                                 xi_deg=xi_deg, static_factor=static_factor)
+    shape, arr = _core.broadcast(mu=mu, ag_over_g=ag_over_g, td=td, beta=beta,
+                                 slope_deg=slope_deg, xi_deg=xi_deg,
+                                 static_factor=static_factor)
     f = dict(zip(arr, _flat_all(shape, arr)))
-    mode, out, stat, msg = sp_block(f["mu"], f["ag"], f["td"], f["beta"], int(full),
+    mode, out, stat, msg = sp_block(f["mu"], f["ag_over_g"], f["td"], f["beta"], int(full),
                                     f["slope_deg"], f["xi_deg"], f["static_factor"],
                                     int(static_reverse), int(along_plane), g)
-    _core.raise_for_status(stat, msg)
+    _core.raise_for_status(stat, msg, rename={"ag": "ag_over_g"})
     cols = _core.shaped(shape, *(np.ascontiguousarray(out[:, j]) for j in range(11)))
-    return BlockResponse(_names(MODES, mode, shape), *cols)
+    return BlockResponse(_core.names(MODES, mode, shape), *cols)
 
 
 # ------------------------------------------------------------ stick/slip, regressions
@@ -284,7 +284,7 @@ def triangle_half(eta):
     0 < eta < 1: (tau_y, tau_m, um, vm, regime) in closed form (sliding.md 3.5)."""
     tau_y, tau_m, um, vm, code = _limit_form(3, eta, 5)
     shape = np.shape(tau_y)
-    return tau_y, tau_m, um, vm, _names(REGIMES, np.asarray(code, dtype=int), shape)
+    return tau_y, tau_m, um, vm, _core.names(REGIMES, np.asarray(code, dtype=int), shape)
 
 
 def spike_velocity_ratio(eta):
@@ -360,6 +360,11 @@ def simulate(pulse=None, ay=None, *, accel=None, dt=None, ay_rev=None, static_fa
     (sliding.md 13.7): onsets and stops are located by root finding on the analytic
     relative velocity, never on a fixed time step.
 
+    u is the slip of the block relative to the plane, positive in the sense a positive
+    ground acceleration drives it ("forward"; sliding.md 1.2). Results are in the units
+    of the input: times in the pulse's time unit (s for SI pulses, or of dt), u in
+    acceleration units x time^2 (m for SI), u' in acceleration units x time (m/s).
+
     Parameters
     ----------
     pulse : seispulse.pulse.Pulse, optional
@@ -388,9 +393,9 @@ def simulate(pulse=None, ay=None, *, accel=None, dt=None, ay_rev=None, static_fa
         raise InvalidInputError("pulse, accel: give exactly one of them")
     if ay is None:
         raise InvalidInputError("ay: the resistance to forward sliding is required")
-    ay = _scalar("ay", ay)
-    ay_rev = ay if ay_rev is None else _scalar("ay_rev", ay_rev)
-    static_factor = _scalar("static_factor", static_factor)
+    ay = _core.as_scalar("ay", ay)
+    ay_rev = ay if ay_rev is None else _core.as_scalar("ay_rev", ay_rev)
+    static_factor = _core.as_scalar("static_factor", static_factor)
     static_all = _core.check_bool("static_all", static_all)
     if pulse is not None:
         if not isinstance(pulse, Pulse):
@@ -401,8 +406,8 @@ def simulate(pulse=None, ay=None, *, accel=None, dt=None, ay_rev=None, static_fa
     else:
         rec = np.ascontiguousarray(_core.as_float_array("accel", accel).reshape(-1))
         if dt is None:
-            _raise_scalar("dt", "the time step (> 0) of accel")
-        step = _scalar("dt", dt)
+            raise InvalidInputError("dt: must be the time step (> 0) of accel")
+        step = _core.as_scalar("dt", dt)
         kind, params = 0, np.zeros(9)
         nmax = rec.size + 2
     grid = np.zeros(0) if t is None else np.ascontiguousarray(
@@ -418,13 +423,3 @@ def simulate(pulse=None, ay=None, *, accel=None, dt=None, ay_rev=None, static_fa
     hist = (None, None, None) if t is None else (grid.copy(), ug.copy(), wg.copy())
     return Simulation(out, *map(float, summary), *hist)
 
-
-def _scalar(name, value):
-    arr = _core.as_float_array(name, value)
-    if arr.size != 1:
-        _raise_scalar(name)
-    return float(arr.reshape(-1)[0])
-
-
-def _raise_scalar(name, what="a single number"):
-    raise InvalidInputError(f"{name}: must be {what}")

@@ -24,7 +24,7 @@ module seispulse_pulses
                                              ieee_positive_inf
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error, real_str
-    use seispulse_special, only: expm1, exp_phis, exp_phis_scaled, sin_pi, cos_pi, &
+    use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, sin_pi, cos_pi, &
                                  tau_minus_sinpi, pi
     implicit none
     private
@@ -32,7 +32,7 @@ module seispulse_pulses
     ! dimensionless exponential pulse
     public :: exp_pulse, exp_pulse_point, exp_pulse_peaks, exp_pulse_impulse_amplitude
     ! the same, unchecked, with the beta constants computed once (for solvers)
-    public :: exp_consts_t, exp_consts, exp_eval, check_beta
+    public :: exp_consts_t, exp_consts, exp_eval, check_beta, exp_rise_time
     ! SI pulses of every kind
     public :: pulse_t, pulse_validate, pulse_eval, pulse_at, pulse_breaks, pulse_end_time
     public :: pulse_kind_from_name, pulse_kind_name
@@ -208,6 +208,28 @@ contains
             amp = 1.0_dp / c%vg
         end if
     end subroutine exp_pulse_impulse_amplitude
+
+    !> Time tau = t/t_d at which the rising branch of the exponential pulse reaches `level`
+    !> (a fraction of A_g, 0 < level < 1): tau = ln(1 + level expm1(beta))/(2 beta), the
+    !> onset of sliding (seed 000 Eq. 1.12) and of rocking (Eq. 2.4); exact limits
+    !> level/2 (beta = 0), 0 (-inf) and 1/2 (+inf). Unchecked.
+    elemental function exp_rise_time(level, beta) result(tau)
+        real(dp), intent(in) :: level  !! a/A_g in (0, 1)
+        real(dp), intent(in) :: beta   !! pulse shape, not NaN
+        real(dp) :: tau
+        if (beta < -huge(beta)) then
+            tau = 0.0_dp
+        else if (beta > huge(beta)) then
+            tau = 0.5_dp
+        else if (beta > beta_scaled) then
+            ! e^beta overflows: ln(1 + l (e^beta - 1)) = beta + ln(l + (1 - l) e^-beta)
+            tau = 0.5_dp + log(level + (1.0_dp - level) * exp(-beta)) / (2.0_dp * beta)
+        else if (abs(beta) > 0.0_dp) then
+            tau = log1p(level * expm1(beta)) / (2.0_dp * beta)
+        else
+            tau = 0.5_dp * level
+        end if
+    end function exp_rise_time
 
     !> The beta-dependent constants, computed once per beta.
     elemental function exp_consts(beta) result(c)

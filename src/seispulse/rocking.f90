@@ -42,7 +42,7 @@ module seispulse_rocking
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error, real_str, &
                                 outside
     use seispulse_special, only: expm1, log1p
-    use seispulse_pulses, only: check_beta
+    use seispulse_pulses, only: check_beta, exp_rise_time
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
     implicit none
     private
@@ -188,21 +188,11 @@ contains
         real(dp), intent(out) :: tau_up                       !! t_up/t_d, or NaN
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp) :: d0, k
         tau_up = ieee_value(tau_up, ieee_quiet_nan)
         call check_eta(eta, stat, errmsg)
         if (stat == SEISPULSE_SUCCESS) call check_beta(beta, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (.not. (eta < 1.0_dp)) return
-        if (beta < -huge(beta)) then
-            tau_up = 0.0_dp
-        else if (beta > huge(beta)) then
-            tau_up = 0.5_dp
-        else if (.not. abs(beta) > 0.0_dp) then
-            tau_up = 0.5_dp * eta
-        else
-            call uplift_consts(eta, beta, tau_up, d0, k)
-        end if
+        if (eta < 1.0_dp) tau_up = exp_rise_time(eta, beta)
     end subroutine uplift_time
 
     !> Rotation psi = theta/alpha and angular velocity dpsi = (dtheta/dt)/(alpha p) of the
@@ -643,7 +633,9 @@ contains
     !> K = 2 beta Q/(eta (e^beta - 1)) = 2 Q/(eta phi_1(beta)) for finite beta /= 0,
     !> 0 < eta < 1, each without cancellation and from one expm1(beta):
     !> Q = 1 + eta expm1(beta) = (1 - eta) + eta e^beta, Q e^-beta = 1 + (1 - eta) expm1(-beta),
-    !> expm1(-beta) = -expm1(beta)/(1 + expm1(beta)).
+    !> expm1(-beta) = -expm1(beta)/(1 + expm1(beta)). tau_up equals exp_rise_time(eta, beta)
+    !> (the public uplift_time); it is formed here from the same logarithm as d0, which
+    !> needs its absolute accuracy even for huge beta.
     pure subroutine uplift_consts(eta, beta, tup, d0, k)
         real(dp), intent(in) :: eta, beta
         real(dp), intent(out) :: tup, d0, k

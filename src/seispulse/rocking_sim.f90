@@ -32,7 +32,7 @@
 !> impacts (e < 1) in finite time, estimated as the impact time plus tau/(1 - e), tau the
 !> flight time 2|theta'|/|theta''(0)| (e = 1: the impact time). With e = 1 a safe block
 !> rocks for ever once the excitation is over: without `t_max` the run stops at that
-!> decision with ROCK_TIME_LIMIT.
+!> decision with ROCK_RUN_TIME_LIMIT.
 !>
 !> Method. Dormand & Prince 8(5,3) (Hairer's DOP853: stages, error estimator and
 !> 7th-order dense output) with rtol = 1e-12 (absolute scales alpha and p alpha). The
@@ -49,7 +49,7 @@
 !> step (one turning point per step). Each flight integrates the branch s of the
 !> equation of motion, continued smoothly past theta = 0, so the root is that of the
 !> true motion. No allocation happens in the stepping loops; every loop is bounded
-!> (a step budget ends a run with ROCK_TIME_LIMIT).
+!> (a step budget ends a run with ROCK_RUN_TIME_LIMIT).
 module seispulse_rocking_sim
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
                                              ieee_quiet_nan
@@ -71,15 +71,15 @@ module seispulse_rocking_sim
     public :: rocking_block_t, rocking_run_t
     public :: rectangular_block, symmetric_block, rocking_block_validate
     public :: rock_pulse, rock_record, overturning_map
-    public :: ROCK_REST, ROCK_NO_UPLIFT, ROCK_OVERTURN_NO_IMPACT, ROCK_OVERTURN_ONE_IMPACT, &
-              ROCK_OVERTURN_MANY, ROCK_TIME_LIMIT
+    public :: ROCK_RUN_REST, ROCK_RUN_NO_UPLIFT, ROCK_RUN_OVERTURN_NO_IMPACT, ROCK_RUN_OVERTURN_ONE_IMPACT, &
+              ROCK_RUN_OVERTURN_MANY, ROCK_RUN_TIME_LIMIT
 
-    integer, parameter :: ROCK_REST = 0                 !! rocked, then came back to rest
-    integer, parameter :: ROCK_NO_UPLIFT = 1            !! never left the ground
-    integer, parameter :: ROCK_OVERTURN_NO_IMPACT = 2   !! overturned without any impact
-    integer, parameter :: ROCK_OVERTURN_ONE_IMPACT = 3  !! overturned after one impact
-    integer, parameter :: ROCK_OVERTURN_MANY = 4        !! overturned after two or more impacts
-    integer, parameter :: ROCK_TIME_LIMIT = 5           !! t_max or the step budget reached first
+    integer, parameter :: ROCK_RUN_REST = 0                 !! rocked, then came back to rest
+    integer, parameter :: ROCK_RUN_NO_UPLIFT = 1            !! never left the ground
+    integer, parameter :: ROCK_RUN_OVERTURN_NO_IMPACT = 2   !! overturned without any impact
+    integer, parameter :: ROCK_RUN_OVERTURN_ONE_IMPACT = 3  !! overturned after one impact
+    integer, parameter :: ROCK_RUN_OVERTURN_MANY = 4        !! overturned after two or more impacts
+    integer, parameter :: ROCK_RUN_TIME_LIMIT = 5           !! t_max or the step budget reached first
 
     !> A rigid block rocking on a rigid base (no sliding, no jumping; rocking.md 2).
     type :: rocking_block_t
@@ -92,7 +92,7 @@ module seispulse_rocking_sim
 
     !> Result of a run.
     type :: rocking_run_t
-        integer :: outcome = ROCK_NO_UPLIFT      !! one of the ROCK_* codes
+        integer :: outcome = ROCK_RUN_NO_UPLIFT      !! one of the ROCK_* codes
         real(dp) :: t_uplift = 0.0_dp            !! first uplift (s); NaN if none
         real(dp) :: t_overturn = 0.0_dp          !! last outward crossing of |theta| = alpha
                                                  !! before overturning (s); NaN if safe
@@ -302,8 +302,8 @@ contains
 
     !> Uniform rectangular block of half-width b and half-height h (rocking.md 2):
     !> R = sqrt(b^2 + h^2), alpha = atan(b/h), I_o = (4/3) m R^2 so p = sqrt(3 g/(4 R)),
-    !> and Housner's restitution e = 1 - 1.5 sin^2(alpha) (rocking.md 7; change blk%e
-    !> afterwards for another value).
+    !> and Housner's restitution e = max(0, 1 - 1.5 sin^2(alpha)) (rocking.md 7; 0 for
+    !> squat blocks, b/h > sqrt 2; change blk%e afterwards for another value).
     subroutine rectangular_block(b, h, g, blk, stat, errmsg)
         real(dp), intent(in) :: b                             !! half-width (m), > 0
         real(dp), intent(in) :: h                             !! half-height (m), > 0
@@ -311,7 +311,6 @@ contains
         type(rocking_block_t), intent(out) :: blk             !! the block
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp) :: r
         stat = SEISPULSE_SUCCESS
         if (.not. positive_finite(b)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'b = '//real_str(b) &
@@ -324,12 +323,9 @@ contains
                            //': must be a finite number > 0 (m/s^2)')
         end if
         if (stat /= SEISPULSE_SUCCESS) return
-        r = hypot(b, h)
-        blk%alpha = atan2(b, h)
-        blk%p = sqrt(0.75_dp * g / r)
-        blk%e = 1.0_dp - 1.5_dp * sin(blk%alpha)**2
-        blk%g = g
-        blk%linearized = .false.
+        ! the symmetric body with I_o = (4/3) m R^2: one formula for p and e (and the
+        ! floor e >= 0 of squat blocks, b/h > sqrt 2)
+        call symmetric_block(hypot(b, h), atan2(b, h), 4.0_dp / 3.0_dp, g, blk, stat, errmsg)
     end subroutine rectangular_block
 
     !> Block symmetric about the vertical through its centre of mass (rocking.md 2):
@@ -584,13 +580,13 @@ contains
                 call simulate(sim, gr, it, no_record, 0.0_dp, 0.0_dp, run, stat, errmsg)
                 if (stat /= SEISPULSE_SUCCESS) return
                 select case (run%outcome)
-                case (ROCK_REST, ROCK_NO_UPLIFT)
+                case (ROCK_RUN_REST, ROCK_RUN_NO_UPLIFT)
                     classes(i, j) = 0
-                case (ROCK_OVERTURN_NO_IMPACT)
+                case (ROCK_RUN_OVERTURN_NO_IMPACT)
                     classes(i, j) = 1
-                case (ROCK_OVERTURN_ONE_IMPACT)
+                case (ROCK_RUN_OVERTURN_ONE_IMPACT)
                     classes(i, j) = 2
-                case (ROCK_OVERTURN_MANY)
+                case (ROCK_RUN_OVERTURN_MANY)
                     classes(i, j) = 3
                 case default
                     classes(i, j) = -1
@@ -719,7 +715,7 @@ contains
         type(rocking_run_t), intent(inout) :: run
         if (allocated(run%t_impacts)) deallocate(run%t_impacts)
         allocate(run%t_impacts(0))
-        run%outcome = ROCK_NO_UPLIFT
+        run%outcome = ROCK_RUN_NO_UPLIFT
         run%t_uplift = ieee_value(run%t_uplift, ieee_quiet_nan)
         run%t_overturn = ieee_value(run%t_overturn, ieee_quiet_nan)
         run%n_impacts = 0
@@ -840,7 +836,7 @@ contains
             dec = decide(sim, y, s)
             if (sim%map_mode .and. dec /= DEC_OPEN) then
                 if (dec == DEC_SAFE) then
-                    call finish(ROCK_REST)
+                    call finish(ROCK_RUN_REST)
                 else
                     call finish_overturn()
                 end if
@@ -849,7 +845,7 @@ contains
             if (dec == DEC_SAFE) then
                 if (.not. (sim%has_t_max .or. sim%e < 1.0_dp)) then
                     ! e = 1: perpetual rocking, nothing more to learn without t_max
-                    call finish(ROCK_TIME_LIMIT)
+                    call finish(ROCK_RUN_TIME_LIMIT)
                     return
                 end if
                 call advance(t_lim, .false., reason)
@@ -865,11 +861,11 @@ contains
             case (R_CAP)
                 call finish_overturn()
             case default
-                call finish(ROCK_TIME_LIMIT)
+                call finish(ROCK_RUN_TIME_LIMIT)
             end select
             return
         end do free
-        call finish(ROCK_TIME_LIMIT)
+        call finish(ROCK_RUN_TIME_LIMIT)
 
     contains
 
@@ -880,7 +876,7 @@ contains
             do kk = 1, sim%max_steps
                 if (.not. t < t_stop) return
                 if (.not. t < t_lim) then
-                    call finish(ROCK_TIME_LIMIT)
+                    call finish(ROCK_RUN_TIME_LIMIT)
                     return
                 end if
                 if (mode == 0) then
@@ -905,12 +901,12 @@ contains
                         call finish_overturn()
                         return
                     case (R_LIMIT)
-                        call finish(ROCK_TIME_LIMIT)
+                        call finish(ROCK_RUN_TIME_LIMIT)
                         return
                     end select
                 end if
             end do
-            call finish(ROCK_TIME_LIMIT)
+            call finish(ROCK_RUN_TIME_LIMIT)
         end subroutine run_segment
 
         !> At rest on a monotone piece: find the uplift (rocking.md 2, Eq. 2.3), a root of
@@ -967,7 +963,7 @@ contains
             if (t_u > t_lim) then
                 call fill_rest(t_lim)
                 t = t_lim
-                call finish(ROCK_TIME_LIMIT)
+                call finish(ROCK_RUN_TIME_LIMIT)
                 return
             end if
             call fill_rest(t_u)
@@ -1276,19 +1272,19 @@ contains
         !> Overturned (|theta| = pi/2, or certain once the excitation is over).
         subroutine finish_overturn()
             if (n_imp == 0) then
-                call finish(ROCK_OVERTURN_NO_IMPACT)
+                call finish(ROCK_RUN_OVERTURN_NO_IMPACT)
             else if (n_imp == 1) then
-                call finish(ROCK_OVERTURN_ONE_IMPACT)
+                call finish(ROCK_RUN_OVERTURN_ONE_IMPACT)
             else
-                call finish(ROCK_OVERTURN_MANY)
+                call finish(ROCK_RUN_OVERTURN_MANY)
             end if
         end subroutine finish_overturn
 
         subroutine finish_rest()
             if (ever_up) then
-                call finish(ROCK_REST)
+                call finish(ROCK_RUN_REST)
             else
-                call finish(ROCK_NO_UPLIFT)
+                call finish(ROCK_RUN_NO_UPLIFT)
             end if
         end subroutine finish_rest
 
@@ -1301,15 +1297,15 @@ contains
             run%n_impacts = n_imp
             run%n_steps = steps
             select case (outcome)
-            case (ROCK_NO_UPLIFT)
+            case (ROCK_RUN_NO_UPLIFT)
                 run%t_end = 0.0_dp
                 th_after = 0.0_dp
                 om_after = 0.0_dp
-            case (ROCK_REST)
+            case (ROCK_RUN_REST)
                 run%t_end = t_rest
                 th_after = 0.0_dp
                 om_after = 0.0_dp
-            case (ROCK_TIME_LIMIT)
+            case (ROCK_RUN_TIME_LIMIT)
                 run%t_end = t
                 th_after = ieee_value(th_after, ieee_quiet_nan)
                 om_after = th_after

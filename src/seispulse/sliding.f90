@@ -14,7 +14,9 @@
 !> bracket; the displacement by Eq. 1.5 with the ground velocity and displacement of
 !> seispulse_pulses, never through the printed expansions 1.9/1.14/1.18/1.24, which
 !> cancel catastrophically for beta < 0 and small eta (section 3.5) and, for 1.24, are
-!> wrong (erratum 8).
+!> wrong (erratum 8). Eq. 1.5 itself carries an absolute error of a few ulps of the
+!> ground displacement over the slide: as eta -> 1 the slip (~ (1 - eta)^3) keeps that
+!> absolute, not a relative, accuracy (a Taylor-remainder form would be needed there).
 module seispulse_sliding
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
                                              ieee_quiet_nan, ieee_positive_inf
@@ -24,7 +26,7 @@ module seispulse_sliding
     use seispulse_special, only: expm1, log1p, pi
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
     use seispulse_pulses, only: exp_consts_t, exp_consts, exp_eval, exponential_pulse, &
-                                check_beta
+                                check_beta, exp_rise_time
     use seispulse_stickslip, only: friction_t, stickslip_result_t, stickslip_pulse
     implicit none
     private
@@ -138,27 +140,8 @@ contains
         if (stat == SEISPULSE_SUCCESS) call check_beta(beta, stat, errmsg)
         if (stat == SEISPULSE_SUCCESS) call check_static(static_factor, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (static_factor * eta < 1.0_dp) tau_y = onset_time(static_factor * eta, beta)
+        if (static_factor * eta < 1.0_dp) tau_y = exp_rise_time(static_factor * eta, beta)
     end subroutine yield_time
-
-    !> tau_y = ln(1 + eta expm1(beta))/(2 beta) (Eq. 1.12 with 1 - e^beta = -expm1(beta)),
-    !> for 0 < eta < 1; exact limits eta/2 (beta = 0), 0 (-inf) and 1/2 (+inf).
-    elemental function onset_time(eta, beta) result(tau)
-        real(dp), intent(in) :: eta, beta
-        real(dp) :: tau
-        if (beta < -huge(beta)) then
-            tau = 0.0_dp
-        else if (beta > huge(beta)) then
-            tau = 0.5_dp
-        else if (beta > 700.0_dp) then
-            ! e^beta overflows: ln(1 + eta (e^beta - 1)) = beta + ln(eta + (1 - eta) e^-beta)
-            tau = 0.5_dp + log(eta + (1.0_dp - eta) * exp(-beta)) / (2.0_dp * beta)
-        else if (abs(beta) > 0.0_dp) then
-            tau = log1p(eta * expm1(beta)) / (2.0_dp * beta)
-        else
-            tau = 0.5_dp * eta
-        end if
-    end function onset_time
 
     ! ------------------------------------------------------------------------------
     ! One slide
@@ -180,7 +163,7 @@ contains
         real(dp) :: a0, v0, d0, tau_k, a, v, d, w_k, w_hi, hi, h
         ! relative acceleration a - eta stays positive up to tau_k, where the falling
         ! branch comes down to eta (tau_k = 1 - tau_y(eta), section 3.4)
-        tau_k = 1.0_dp - onset_time(eta, c%beta)
+        tau_k = 1.0_dp - exp_rise_time(eta, c%beta)
         call exp_eval(c, tau0, full, a0, v0, d0)
         stat = SEISPULSE_SUCCESS
         if (.not. (tau_k > tau0)) then
@@ -211,7 +194,7 @@ contains
             ! Newton: the slope a_g - eta comes with the value)
             if (full) then
                 ! v_g(2 - tau_y) = v_g(tau_y) <= v_g(tau0): w(2 - tau_y) < 0 (section 4.2)
-                hi = 2.0_dp - onset_time(eta, c%beta)
+                hi = 2.0_dp - exp_rise_time(eta, c%beta)
             else
                 hi = 1.0_dp
             end if
@@ -284,7 +267,7 @@ contains
         res%tau_m = res%tau_y
         if (.not. (static_factor * eta < 1.0_dp)) return
         c = exp_consts(beta)
-        res%tau_y = onset_time(static_factor * eta, beta)
+        res%tau_y = exp_rise_time(static_factor * eta, beta)
         call one_slide(c, .false., res%tau_y, eta, res%tau_m, res%um, res%dugm, res%vm, &
                        res%regime, stat, errmsg)
         if (beta > huge(beta)) res%vm = spike_vm(static_factor * eta, eta)
@@ -327,13 +310,13 @@ contains
             ! no forward slide: the second lobe acts alone, as a half cycle (section 7.2)
             if (.not. (static_factor * eta2 < 1.0_dp)) return
             res%mode = MODE_REVERSE_ONLY
-            tbar0 = onset_time(static_factor * eta2, beta)
+            tbar0 = exp_rise_time(static_factor * eta2, beta)
             call reverse_slide(static_factor * eta2)
             return
         end if
 
         ! forward slide: onset 1.12/1.34, stop by the corrected 1.19 on [1 - tau_y, 2 - tau_y]
-        res%tau_y1 = onset_time(static_factor * eta1, beta)
+        res%tau_y1 = exp_rise_time(static_factor * eta1, beta)
         call one_slide(c, .true., res%tau_y1, eta1, res%tau_m1, res%um1, dug, res%vm1, &
                        regime, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
@@ -345,7 +328,7 @@ contains
         if (.not. (on2 < 1.0_dp)) return
 
         ! the second lobe exceeds on2 on (1 + tau_y(on2), 2 - tau_y(on2)) (section 7.3)
-        tbar0 = onset_time(on2, beta)
+        tbar0 = exp_rise_time(on2, beta)
         if (res%tau_m1 <= 1.0_dp + tbar0) then
             res%mode = MODE_STICK
         else if (res%tau_m1 < 2.0_dp - tbar0) then
@@ -533,7 +516,7 @@ contains
         real(dp) :: y
         real(dp) :: tau_y, tau_m, um, dug, vm
         integer :: regime, stat
-        tau_y = onset_time(x, self%c%beta)
+        tau_y = exp_rise_time(x, self%c%beta)
         call one_slide(self%c, .true., tau_y, x, tau_m, um, dug, vm, regime, stat)
         if (stat /= SEISPULSE_SUCCESS) self%stat = stat
         y = tau_m - 1.0_dp - tau_y

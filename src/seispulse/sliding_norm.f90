@@ -4,7 +4,8 @@
 module seispulse_sliding_norm
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error, real_str
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error, real_str, &
+                                outside
     use seispulse_pulses, only: exp_consts_t, exp_consts
     implicit none
     private
@@ -161,7 +162,7 @@ contains
     contains
         logical function positive(x)
             real(dp), intent(in) :: x
-            positive = ieee_is_finite(x) .and. x > 0.0_dp
+            positive = .not. outside(x, 0.0_dp, huge(x), .true., .false.)
         end function positive
     end subroutine check_scales
 

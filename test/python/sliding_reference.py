@@ -7,7 +7,9 @@ checks both. Symmetric friction, no static factor, finite beta != 0.
 """
 from mpmath import mp, mpf, exp, log
 
-mp.dps = 150   # e^(2 beta (1 - tau_m)) in 1.9 reaches 1e90 for beta = -2 pi, eta = 0.05
+# e^(2 beta (1 - tau_m)) in 1.9 reaches 1e90 for beta = -2 pi, eta = 0.05; every public
+# function works at this precision whatever other modules set mp.dps to
+DPS = 150
 
 
 def H(x):
@@ -95,6 +97,7 @@ def late_slide(tyb, eta, b):
     return tmb, u / (4 * b ** 2 * (1 - exp(b)))
 
 
+@mp.workdps(DPS)
 def printed_1_24(tyb, tmb, eta, b):
     """Eq. 1.24 as printed, with e^(beta (1 + 2 tyb)) (erratum 8)."""
     u = (-2 * b ** 2 * ((1 - tyb) * (1 + tyb - 2 * tmb) + eta * (tmb - tyb) ** 2)
@@ -103,6 +106,7 @@ def printed_1_24(tyb, tmb, eta, b):
     return u / (4 * b ** 2 * (1 - exp(b)))
 
 
+@mp.workdps(DPS)
 def half_cycle(eta, beta):
     eta, b = mpf(eta), mpf(beta)
     ty = tau_y(eta, b)
@@ -110,6 +114,7 @@ def half_cycle(eta, beta):
     return {"tau_y": ty, "tau_m": tm, "um": um, "vm": vm_ratio(eta, b)}
 
 
+@mp.workdps(DPS)
 def full_cycle(eta, beta):
     """Symmetric full cycle by Table 1.1 (stick/slip criterion 1.21)."""
     eta, b = mpf(eta), mpf(beta)

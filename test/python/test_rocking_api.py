@@ -89,6 +89,9 @@ def test_blocks():
     assert b.p == pytest.approx(math.sqrt(3 * G / (4 * b.r)))
     assert b.e == pytest.approx(1 - 1.5 * math.sin(alpha) ** 2)
     assert R.rectangular_block(0.2, 0.8, e=0.8).e == 0.8
+    # squat block, b/h > sqrt 2: Housner's 1 - 1.5 sin^2(alpha) < 0 is floored at 0
+    assert R.rectangular_block(2.0, 1.0).e == 0.0
+    assert R.overturning_map("half_sine", [1.0], [2.0], alpha=1.2).shape == (1, 1)
     s = R.symmetric_block(1.0, 0.2, 4.0 / 3.0)
     assert s.p == pytest.approx(math.sqrt(3 * G / 4))
 
@@ -134,6 +137,7 @@ def test_plot_needs_matplotlib_or_draws():
     (lambda: R.overturn_boundary(1.0, 0.0, at="start"), r"^at = 'start'"),
     (lambda: R.rectangular_block(-0.2, 0.8), r"^b = -0.2"),
     (lambda: R.rectangular_block(0.2, 0.8, e=1.5), r"^e = 1.5"),
+    (lambda: R.rectangular_block([0.2, 0.3], 0.8), r"^b: must be a single number"),
     (lambda: R.simulate(None, None), r"^block"),
     (lambda: R.simulate(R.rectangular_block(0.2, 0.8)), r"^pulse, accel"),
     (lambda: R.overturning_map("sine_cycle", [1.0], [1.0], alpha=2.0), r"^alpha = 2.0"),

@@ -65,6 +65,11 @@ def main():
     if len(rows) != len(ref_rows):
         print(f"FAIL {len(rows)} rows, reference has {len(ref_rows)}")
         return 1
+    # the text table must hold every cell too (zip below would silently stop short)
+    if len(txt_rows) != len(rows) or any(len(r) != len(ref_header) for r in rows + txt_rows):
+        print(f"FAIL the CSV and text tables do not both have {len(rows)} rows of "
+              f"{len(ref_header)} cells")
+        return 1
     scales = [max((abs(r[j]) for r in ref_rows if math.isfinite(r[j])), default=0.0) or 1.0
               for j in range(len(ref_header))]
     for i, (row, ref_row, txt_row) in enumerate(zip(rows, ref_rows, txt_rows)):
