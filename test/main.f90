@@ -11,6 +11,8 @@ program tester
     use test_sliding, only: collect_sliding
     use test_rocking, only: collect_rocking
     use test_rocking_sim, only: collect_rocking_sim
+    use test_records, only: collect_records
+    use test_newmark, only: collect_newmark
     implicit none
     character(len=64) :: wanted
     integer :: npass, nfail, nrun
@@ -52,6 +54,14 @@ program tester
     if (selected('rocking_sim')) then
         call collect_rocking_sim(tests)
         call run_suite('rocking_sim', tests, output_unit, npass, nfail)
+    end if
+    if (selected('records')) then
+        call collect_records(tests)
+        call run_suite('records', tests, output_unit, npass, nfail)
+    end if
+    if (selected('newmark')) then
+        call collect_newmark(tests)
+        call run_suite('newmark', tests, output_unit, npass, nfail)
     end if
     if (nrun == 0) then
         write(error_unit, '(a)') 'unknown suite: '//trim(wanted)

@@ -30,6 +30,11 @@ class InternalError(SeispulseError, RuntimeError):
     """A bug in seispulse: please report it with the input that caused it."""
 
 
+class FileError(SeispulseError, OSError):
+    """A file cannot be opened or read (missing, unreadable). A file that opens but
+    does not hold what its format promises raises InvalidInputError instead."""
+
+
 #: Fortran status code (module seispulse_errors) -> exception class.
 STATUS_ERRORS = {
     1: InvalidInputError,
@@ -37,4 +42,5 @@ STATUS_ERRORS = {
     3: ConvergenceError,
     4: NoBracketError,
     5: InternalError,
+    6: FileError,
 }

@@ -9,7 +9,7 @@ module seispulse_errors
     private
 
     public :: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
-              SEISPULSE_NO_CONVERGENCE, SEISPULSE_NO_BRACKET, SEISPULSE_INTERNAL
+              SEISPULSE_NO_CONVERGENCE, SEISPULSE_NO_BRACKET, SEISPULSE_INTERNAL, SEISPULSE_IO
     public :: set_error, status_name, real_str, outside, check_ascending_times
 
     integer, parameter :: SEISPULSE_SUCCESS = 0        !! no error
@@ -18,6 +18,7 @@ module seispulse_errors
     integer, parameter :: SEISPULSE_NO_CONVERGENCE = 3 !! iteration limit reached
     integer, parameter :: SEISPULSE_NO_BRACKET = 4     !! root finder: f(a), f(b) of one sign
     integer, parameter :: SEISPULSE_INTERNAL = 5       !! a bug: please report it
+    integer, parameter :: SEISPULSE_IO = 6             !! a file cannot be opened or read
 
 contains
 
@@ -48,6 +49,8 @@ contains
             name = 'no bracket'
         case (SEISPULSE_INTERNAL)
             name = 'internal error'
+        case (SEISPULSE_IO)
+            name = 'file error'
         case default
             name = 'unknown status'
         end select

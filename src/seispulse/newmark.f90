@@ -1,0 +1,5 @@
+!> Placeholder (work in progress).
+module seispulse_newmark
+    implicit none
+    private
+end module seispulse_newmark
