@@ -14,21 +14,37 @@ module driver_tables
 contains
 
     !> Write <prefix>_<name>.txt and <prefix>_<name>.csv.
-    subroutine write_tables(prefix, name, comments, names, units, data, files, stat, errmsg)
+    !>
+    !> With `labels` (one text per row) the first column is text: names(1) and units(1)
+    !> describe it and `data` holds the other columns. In the .txt it is left-adjusted
+    !> and padded to the longest label (at least the width of its name and unit); in the
+    !> .csv it is the first field, double-quoted (embedded quotes doubled).
+    subroutine write_tables(prefix, name, comments, names, units, data, files, stat, errmsg, &
+                            labels)
         character(len=*), intent(in) :: prefix          !! output prefix (may contain a directory)
         character(len=*), intent(in) :: name            !! table name, e.g. 'pulse'
         character(len=*), intent(in) :: comments(:)     !! lines for the text header
         character(len=*), intent(in) :: names(:)        !! column names
         character(len=*), intent(in) :: units(:)        !! column units
-        real(dp), intent(in) :: data(:, :)              !! rows x columns
+        real(dp), intent(in) :: data(:, :)              !! rows x columns (numeric columns)
         character(len=*), intent(out) :: files(2)       !! paths written (txt, csv)
         integer, intent(out) :: stat                    !! 0 or an iostat
         character(len=:), allocatable, intent(out) :: errmsg
+        character(len=*), intent(in), optional :: labels(:)  !! text of the first column, per row
         character(len=512) :: iomsg
-        integer :: ut, uc, i, j, ncol
-        character(len=:), allocatable :: row, line
+        integer :: ut, uc, i, j, ncol, j0, width
+        character(len=:), allocatable :: row, line, head
 
         ncol = size(names)
+        j0 = 1          ! first numeric column in names/units
+        width = 0       ! width of the text column (0: none)
+        if (present(labels)) then
+            j0 = 2
+            width = max(len_trim(names(1)), len_trim(units(1)) + 2)
+            do i = 1, size(labels)
+                width = max(width, len_trim(labels(i)))
+            end do
+        end if
         allocate(character(len=(column_len + 1) * ncol) :: line)
         errmsg = ''
         files(1) = trim(prefix)//'_'//trim(name)//'.txt'
@@ -52,10 +68,14 @@ contains
             write(ut, '(a)', iostat=stat, iomsg=iomsg) '# '//trim(comments(i))
             if (stat /= 0) exit
         end do
-        if (stat == 0) write(ut, '(a, *(a))', iostat=stat, iomsg=iomsg) '#', &
-            (adjustr(cell(names(j), column_len - 1)), j = 1, ncol)
-        if (stat == 0) write(ut, '(a, *(a))', iostat=stat, iomsg=iomsg) '#', &
-            (adjustr(cell('('//trim(units(j))//')', column_len - 1)), j = 1, ncol)
+        ! the text column of the header lines: left-adjusted, `width` wide
+        head = ''
+        if (width > 0) head = pad(names(1), width)
+        if (stat == 0) write(ut, '(a, *(a))', iostat=stat, iomsg=iomsg) '#'//head, &
+            (adjustr(cell(names(j), column_len - 1)), j = j0, ncol)
+        if (width > 0) head = pad('('//trim(units(1))//')', width)
+        if (stat == 0) write(ut, '(a, *(a))', iostat=stat, iomsg=iomsg) '#'//head, &
+            (adjustr(cell('('//trim(units(j))//')', column_len - 1)), j = j0, ncol)
         if (stat == 0) then
             row = trim(names(1))//' ('//trim(units(1))//')'
             do j = 2, ncol
@@ -65,11 +85,28 @@ contains
         end if
         do i = 1, size(data, 1)
             if (stat /= 0) exit
-            write(ut, '(*(1x, es24.16e3))', iostat=stat, iomsg=iomsg) data(i, :)
+            if (width > 0) then
+                write(line, '(*(1x, es24.16e3))', iostat=stat, iomsg=iomsg) data(i, :)
+                if (stat == 0) write(ut, '(a)', iostat=stat, iomsg=iomsg) ' ' &
+                    //pad(labels(i), width)//trim(line)
+            else
+                write(ut, '(*(1x, es24.16e3))', iostat=stat, iomsg=iomsg) data(i, :)
+            end if
             if (stat == 0) then
                 ! CSV: the same 17 significant digits, blanks squeezed out
                 write(line, '(*(es24.16e3, :, ","))', iostat=stat, iomsg=iomsg) data(i, :)
-                if (stat == 0) write(uc, '(a)', iostat=stat, iomsg=iomsg) squeeze(line)
+                if (stat == 0) then
+                    if (width > 0) then
+                        if (size(data, 2) > 0) then
+                            write(uc, '(a)', iostat=stat, iomsg=iomsg) &
+                                csv_quote(labels(i))//','//squeeze(line)
+                        else
+                            write(uc, '(a)', iostat=stat, iomsg=iomsg) csv_quote(labels(i))
+                        end if
+                    else
+                        write(uc, '(a)', iostat=stat, iomsg=iomsg) squeeze(line)
+                    end if
+                end if
             end if
         end do
         if (stat /= 0) then
@@ -108,6 +145,30 @@ contains
         end do
         r = buf(1:n)
     end function squeeze
+
+    !> text (trailing blanks dropped), then blanks up to `width` characters.
+    pure function pad(text, width) result(c)
+        character(len=*), intent(in) :: text
+        integer, intent(in) :: width
+        character(len=max(width, len_trim(text))) :: c
+        c = text
+    end function pad
+
+    !> "text" for CSV: trailing blanks dropped, embedded double quotes doubled.
+    pure function csv_quote(text) result(q)
+        character(len=*), intent(in) :: text
+        character(len=:), allocatable :: q
+        integer :: i
+        q = '"'
+        do i = 1, len_trim(text)
+            if (text(i:i) == '"') then
+                q = q//'""'
+            else
+                q = q//text(i:i)
+            end if
+        end do
+        q = q//'"'
+    end function csv_quote
 
     pure function cell(text, width) result(c)
         character(len=*), intent(in) :: text

@@ -46,6 +46,16 @@ module seispulse
                                      rock_record, overturning_map, ROCK_RUN_REST, ROCK_RUN_NO_UPLIFT, &
                                      ROCK_RUN_OVERTURN_NO_IMPACT, ROCK_RUN_OVERTURN_ONE_IMPACT, &
                                      ROCK_RUN_OVERTURN_MANY, ROCK_RUN_TIME_LIMIT
+    use seispulse_records, only: record_t, read_record, record_pga, pga_scale_factor, &
+                                 ground_motion, record_format_name, record_units_name, &
+                                 RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, &
+                                 RECORD_TIME_ACCEL, UNITS_G, UNITS_M_S2, UNITS_CM_S2, &
+                                 STANDARD_GRAVITY
+    use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, &
+                                 newmark_incline, newmark_block_validate, newmark_mode_name, &
+                                 newmark_method_name, newmark_mode_code, newmark_method_code, &
+                                 NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM, NEWMARK_EXACT, &
+                                 NEWMARK_SLAMMER
     implicit none
     public
 

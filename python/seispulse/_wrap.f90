@@ -651,3 +651,90 @@ subroutine sp_overturning_map(alpha, e, kind, params, linearized, nf, freq, na, 
     call overturning_map(alpha, e, kind, freq, amp, classes, stat, errmsg, &
                          linearized=linearized /= 0, template=pulse_from_params(kind, params))
 end subroutine sp_overturning_map
+
+! ---------------------------------------------------------------------------------
+! Newmark rigid-block sliding on records (seispulse_newmark)
+! ---------------------------------------------------------------------------------
+
+!> One analysis with histories and sliding intervals. nh = n for histories, else 1;
+!> the first min(nslides, nmax) intervals are returned (the caller asks again with a
+!> larger nmax when nslides > nmax). summary = max_disp, final_disp, u_max, u_min,
+!> max_vel, t_end.
+subroutine sp_newmark_rigid(n, accel, dt, mode, ky, ky_up, k_down, k_up, method, g, nh, &
+                            u_hist, w_hist, nmax, slides, nslides, summary, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid
+    implicit none
+    integer, intent(in) :: n, mode, method, nh, nmax
+    real(dp), intent(in) :: accel(n), dt, ky, ky_up, k_down, k_up, g
+    real(dp), intent(out) :: u_hist(nh), w_hist(nh), slides(nmax, 8), summary(6)
+    integer, intent(out) :: nslides, stat
+    character(len=256), intent(out) :: errmsg
+    type(newmark_result_t) :: res
+    integer :: i
+    errmsg = ''
+    u_hist = 0.0_dp
+    w_hist = 0.0_dp
+    slides = 0.0_dp
+    summary = 0.0_dp
+    nslides = 0
+    if (nh == n) then
+        call newmark_rigid(accel, dt, newmark_block_t(mode, ky, ky_up, k_down, k_up), method, g, &
+                           res, stat, errmsg, u_hist, w_hist)
+    else
+        call newmark_rigid(accel, dt, newmark_block_t(mode, ky, ky_up, k_down, k_up), method, g, &
+                           res, stat, errmsg)
+    end if
+    if (stat /= SEISPULSE_SUCCESS) return
+    summary = [res%max_disp, res%final_disp, res%u_max, res%u_min, res%max_vel, res%t_end]
+    nslides = size(res%slides)
+    do i = 1, min(nslides, nmax)
+        associate (s => res%slides(i))
+            slides(i, :) = [real(s%direction, dp), s%t_start, s%t_stop, s%u_start, s%u_stop, &
+                            s%w_peak, s%t_peak, merge(1.0_dp, 0.0_dp, s%from_slip)]
+        end associate
+    end do
+end subroutine sp_newmark_rigid
+
+!> Summaries for many blocks on one record (ky, ky_up, k_down, k_up of length nk).
+subroutine sp_newmark_rigid_many(n, accel, dt, mode, nk, ky, ky_up, k_down, k_up, method, g, &
+                                 summary, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid
+    implicit none
+    integer, intent(in) :: n, mode, nk, method
+    real(dp), intent(in) :: accel(n), dt, ky(nk), ky_up(nk), k_down(nk), k_up(nk), g
+    real(dp), intent(out) :: summary(nk, 6)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    type(newmark_result_t) :: res
+    integer :: i
+    errmsg = ''
+    summary = 0.0_dp
+    stat = SEISPULSE_SUCCESS
+    do i = 1, nk
+        call newmark_rigid(accel, dt, newmark_block_t(mode, ky(i), ky_up(i), k_down(i), k_up(i)), &
+                           method, g, res, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        summary(i, :) = [res%max_disp, res%final_disp, res%u_max, res%u_min, res%max_vel, &
+                         res%t_end]
+    end do
+end subroutine sp_newmark_rigid_many
+
+!> Yields and along-plane factors of a block on an incline (newmark_incline).
+subroutine sp_newmark_incline(mu, slope_deg, xi_deg, along_plane, out, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_newmark, only: newmark_block_t, newmark_incline
+    implicit none
+    real(dp), intent(in) :: mu, slope_deg, xi_deg
+    integer, intent(in) :: along_plane
+    real(dp), intent(out) :: out(4)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    type(newmark_block_t) :: blk
+    errmsg = ''
+    call newmark_incline(mu, slope_deg, xi_deg, along_plane /= 0, blk, stat, errmsg)
+    out = [blk%ky, blk%ky_up, blk%k_down, blk%k_up]
+end subroutine sp_newmark_incline

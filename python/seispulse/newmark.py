@@ -1,1 +1,195 @@
-"""Placeholder (work in progress)."""
+"""Newmark rigid-block sliding on accelerograms.
+
+:func:`rigid` slides a rigid block on a record: one way (downslope, as SLAMMER does),
+two ways with the same yield, or with different yields down and up the slope; with
+:func:`incline` the yields and along-plane factors come from the slope and friction of
+a real incline (sliding.md Eq. 1.31, section 7.1).
+
+Two integration rules: ``method='exact'`` (default) takes the acceleration as
+piecewise linear between samples and integrates each step exactly, with onsets and
+stops located inside the step (after the last sample the ground is at rest and a
+sliding block decelerates to a stop); ``method='slammer'`` is SLAMMER 1.1's rigorous
+rigid loop step for step (trapezoidal rule, g = 980.665 cm/s^2, the block stops when
+the relative velocity reaches zero, the record ends at its last sample).
+
+Units: accelerations and yields in g, time in s, displacements in m, velocities in
+m/s. Positive ground acceleration drives positive (downslope) sliding.
+"""
+
+import re
+from collections import namedtuple
+
+import numpy as np
+
+from . import _core
+from ._seispulse import sp_newmark_incline, sp_newmark_rigid, sp_newmark_rigid_many
+from .errors import InvalidInputError
+from .sliding import Slide
+
+__all__ = ["MODES", "METHODS", "STANDARD_GRAVITY", "Incline", "Rigid", "Slide", "incline",
+           "rigid"]
+
+#: Sliding modes: one way downslope, two ways alike, two ways with ky_up.
+MODES = ("down", "both", "asym")
+#: Integration rules.
+METHODS = ("exact", "slammer")
+#: Standard gravity (m/s^2), the default g.
+STANDARD_GRAVITY = 9.80665
+
+Incline = namedtuple("Incline", ["ky", "ky_up", "k_down", "k_up"])
+Incline.__doc__ = """A block on an incline (from :func:`incline`): yield accelerations
+downslope ky and upslope ky_up (g; +inf: no sliding that way) and the along-plane
+factors k_down, k_up (the slip along the plane is k times the slip of the yield
+problem). Pass it to :func:`rigid` as ``incline=``."""
+
+Rigid = namedtuple("Rigid", ["max_disp", "final_disp", "u_max", "u_min", "max_vel", "t_end",
+                             "time", "disp", "vel", "slides"])
+Rigid.__doc__ = """Result of :func:`rigid` (SI).
+
+max_disp: largest |u| over time (m); final_disp: u when the block is at rest at the
+end (m, signed, positive downslope); u_max >= 0 and u_min <= 0: the extremes of u (m);
+max_vel: largest |u'| (m/s); t_end: end of the last slide (s from the first sample).
+With ``history=True``: time (s), disp u (m) and vel u' (m/s) at the samples, else None.
+With ``intervals=True``: slides, a list of :class:`seispulse.sliding.Slide` (times s,
+u m, w_peak m/s), else None. For an array of ky the scalar fields are arrays."""
+
+
+def incline(mu, slope_deg, xi_deg=0.0, along_plane=True):
+    """Yields and along-plane factors of a block with friction coefficient mu on an
+    incline of slope_deg (degrees, below the friction angle atan(mu)) shaken at xi_deg
+    to the horizontal (the record is that component, positive downhill): Eq. 1.31
+    with A_g = 1 g. ``along_plane=False`` sets the factors to 1 (the yield problem's
+    slip, as SLAMMER reports it).
+
+    Returns
+    -------
+    Incline
+    """
+    mu = _core.as_scalar("mu", mu)
+    slope_deg = _core.as_scalar("slope_deg", slope_deg)
+    xi_deg = _core.as_scalar("xi_deg", xi_deg)
+    along_plane = _core.check_bool("along_plane", along_plane)
+    out, stat, msg = sp_newmark_incline(mu, slope_deg, xi_deg, int(along_plane))
+    _core.raise_for_status(stat, msg)
+    return Incline(*map(float, out))
+
+
+def _record_and_step(accel, dt):
+    """accel and dt from an array and a step, or from a seispulse.records.Record."""
+    if hasattr(accel, "accel") and hasattr(accel, "dt"):
+        if dt is not None and float(dt) != float(accel.dt):
+            raise InvalidInputError(f"dt = {dt!r}: differs from the record's dt = {accel.dt!r}"
+                                    " (leave dt out for a Record)")
+        dt = accel.dt
+        accel = accel.accel
+    rec = _core.as_float_array("accel", accel)
+    if rec.ndim != 1:
+        raise InvalidInputError(f"accel: must be a 1-d array of samples (got shape {rec.shape})")
+    if rec.size == 0:
+        raise InvalidInputError("accel: the record is empty")
+    if dt is None:
+        raise InvalidInputError("dt: the time step of accel (s, > 0) is required")
+    return np.ascontiguousarray(rec), _core.check_positive("dt", dt, " (s)")
+
+
+def _raise(stat, msg):
+    """raise_for_status, with the Fortran sample number accel(i) as Python's accel[i-1]."""
+    if stat != 0:
+        text = msg.decode("ascii", "replace") if isinstance(msg, bytes) else str(msg)
+        m = re.match(r"\s*accel\((\d+)\)", text)
+        if m:
+            text = f"accel[{int(m.group(1)) - 1}]" + text.strip()[m.end() - m.start():]
+        _core.raise_for_status(stat, text)
+
+
+def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
+          g=STANDARD_GRAVITY, *, k_down=1.0, k_up=1.0, incline=None, history=False,
+          intervals=False):
+    """Rigid-block (Newmark) sliding displacement on an accelerogram.
+
+    Parameters
+    ----------
+    accel : array or seispulse.records.Record
+        Ground acceleration (g), samples at t = 0, dt, 2 dt, ... (a Record carries dt).
+    dt : float
+        Time step (s) > 0.
+    ky : float or 1-d array
+        Yield acceleration for downslope sliding (g) > 0. An array gives one result per
+        value (scalar fields become arrays; no histories or intervals).
+    mode : {'down', 'both', 'asym'}
+        'down': one-way sliding (SLAMMER's rigid analysis); 'both': two-way with ky both
+        ways; 'asym': two-way with ky down and ky_up up (and factors k_down, k_up).
+    ky_up : float or array, optional
+        Upslope yield (g) > 0 or inf, for mode='asym' (required there).
+    method : {'exact', 'slammer'}
+        Exact piecewise-linear integration, or SLAMMER 1.1's loop step for step.
+    g : float
+        Gravity (m/s^2) > 0.
+    k_down, k_up : float
+        Along-plane factors for mode='asym' (> 0; 1 leaves them out).
+    incline : Incline, optional
+        From :func:`incline`: sets mode='asym' and ky, ky_up, k_down, k_up (give none
+        of them then).
+    history : bool
+        Return time, disp and vel at the samples.
+    intervals : bool
+        Return the sliding intervals.
+
+    Returns
+    -------
+    Rigid
+        max_disp (m), final_disp (m), u_max, u_min (m), max_vel (m/s), t_end (s), and the
+        optional histories and intervals.
+    """
+    rec, step = _record_and_step(accel, dt)
+    mode = _core.check_choice("mode", mode, MODES)
+    method = _core.check_choice("method", method, METHODS)
+    g = _core.check_positive("g", g, " (m/s^2)")
+    history = _core.check_bool("history", history)
+    intervals = _core.check_bool("intervals", intervals)
+    if incline is not None:
+        if not isinstance(incline, Incline):
+            raise InvalidInputError("incline: must be the result of seispulse.newmark.incline()")
+        if ky is not None or ky_up is not None or k_down != 1.0 or k_up != 1.0:
+            raise InvalidInputError("incline: give either incline or ky, ky_up, k_down, k_up")
+        if mode not in ("down", "asym"):
+            raise InvalidInputError(f"mode = {mode!r}: an incline is asymmetric, use 'asym'")
+        mode = "asym"
+        ky, ky_up, k_down, k_up = incline
+    if ky is None:
+        raise InvalidInputError("ky: the yield acceleration (g, > 0) is required")
+    if mode == "asym":
+        if ky_up is None:
+            raise InvalidInputError("ky_up: required for mode='asym' (g, > 0, inf: none)")
+    elif ky_up is not None:
+        raise InvalidInputError(f"ky_up: only for mode='asym' (mode is {mode!r})")
+    shape, arr = _core.broadcast(ky=ky, ky_up=np.inf if ky_up is None else ky_up,
+                                 k_down=k_down, k_up=k_up)
+    mode_code = MODES.index(mode) + 1
+    method_code = METHODS.index(method) + 1
+    if shape != ():
+        if history or intervals:
+            raise InvalidInputError("history, intervals: only for a single ky")
+        flat = [_core.flat(arr[k], shape) for k in ("ky", "ky_up", "k_down", "k_up")]
+        summary, stat, msg = sp_newmark_rigid_many(rec, step, mode_code, *flat, method_code, g)
+        _raise(stat, msg)
+        cols = [summary[:, j].reshape(shape) for j in range(6)]
+        return Rigid(*cols, None, None, None, None)
+    scalars = [float(arr[k]) for k in ("ky", "ky_up", "k_down", "k_up")]
+    nh = rec.size if history else 1
+    nmax = 64 if intervals else 0
+    while True:
+        u, w, slides, nslides, summary, stat, msg = sp_newmark_rigid(
+            rec, step, mode_code, *scalars, method_code, g, nh, nmax)
+        _raise(stat, msg)
+        if not intervals or nslides <= nmax:
+            break
+        nmax = nslides
+    out = None
+    if intervals:
+        out = [Slide(int(r[0]), *map(float, r[1:7]), bool(r[7])) for r in slides[:nslides]]
+    time = disp = vel = None
+    if history:
+        time = np.arange(rec.size) * step
+        disp, vel = u, w
+    return Rigid(*map(float, summary), time, disp, vel, out)

@@ -1,1 +1,304 @@
-"""Placeholder (work in progress)."""
+"""Accelerograms: reading record files, PGA scaling, ground velocity and displacement
+(Fortran module ``seispulse_records``).
+
+Accelerations are always held in g, times in s. :func:`read` reads
+
+* PEER NGA ``.AT2`` files (both header forms; the units of header line 3: g, cm/s^2
+  or m/s^2, converted to g),
+* SLAMMER / pySLAMMER CSV files (two ``#`` comment lines, then ``time_s, accel_g``),
+* two-column time/acceleration files (comments ``#``, commas and/or blanks; the time
+  step must be uniform within 1 % of dt),
+* single-column files (``dt`` given by the caller),
+
+strictly: a malformed file raises :class:`~seispulse.errors.InvalidInputError` (a
+ValueError) whose message names the file and the line, says what was expected and
+quotes what was found; a file that cannot be opened raises
+:class:`~seispulse.errors.FileError` (an OSError). Nothing is silently truncated.
+
+:class:`Record` holds the samples and the file's metadata; its methods return new
+records (:meth:`Record.scaled`, :meth:`Record.scaled_to_pga`, :meth:`Record.inverted`)
+or the exact ground velocity and displacement of the piecewise linear acceleration
+(:meth:`Record.velocity`, :meth:`Record.displacement`).
+"""
+
+import os
+import threading
+
+import numpy as np
+
+from . import _core
+from ._seispulse import sp_ground_motion, sp_pga_scale_factor, sp_record_fetch, sp_record_read
+from .errors import InvalidInputError
+
+__all__ = ["STANDARD_GRAVITY", "FORMATS", "UNITS", "Record", "read", "from_array"]
+
+#: Standard gravity (m/s^2): converts m/s^2 and cm/s^2 to g, default ``g`` of the
+#: velocity and displacement.
+STANDARD_GRAVITY = 9.80665
+
+#: Format names accepted by :func:`read`, in the order of the Fortran RECORD_* codes.
+FORMATS = ("auto", "at2", "slammer", "column", "time_accel")
+
+#: Units of the values in a file or array (aliases: 'm/s^2', 'cm/s^2', 'gal').
+UNITS = ("g", "m/s2", "cm/s2")
+
+_UNIT_CODES = {"g": 1, "m/s2": 2, "m/s^2": 2, "cm/s2": 3, "cm/s^2": 3, "gal": 3}
+_UNIT_TO_G = {1: 1.0, 2: STANDARD_GRAVITY, 3: 100.0 * STANDARD_GRAVITY}
+
+# sp_record_read keeps the record in Fortran until sp_record_fetch: one reader at a time.
+_READ_LOCK = threading.Lock()
+
+
+def _text(raw):
+    """A fixed-length Fortran string (bytes) as str."""
+    if isinstance(raw, bytes):
+        return raw.rstrip(b" \0").decode("utf-8", "replace")
+    return str(raw).rstrip(" \0")
+
+
+def _unit_code(units):
+    if not isinstance(units, str) or units.lower() not in _UNIT_CODES:
+        allowed = ", ".join(map(repr, _UNIT_CODES))
+        raise InvalidInputError(f"units = {units!r}: unknown units (allowed: {allowed})")
+    return _UNIT_CODES[units.lower()]
+
+
+class Record:
+    """An accelerogram sampled at a constant time step.
+
+    Attributes
+    ----------
+    accel : numpy.ndarray
+        Ground acceleration (g), float64, read-only; ``accel[i]`` at ``t = i * dt``
+        from the first sample.
+    dt : float
+        Time step (s).
+    npts : int
+        Number of samples.
+    pga : float
+        Peak ground acceleration max |accel| (g).
+    t0 : float
+        Time of the first sample in the file (s): 0 unless a time column says otherwise.
+        :attr:`time` and every result count time from the first sample.
+    name : str
+        File name without directory and extension ('record' for arrays by default).
+    title : str
+        AT2: line 2 of the header (event, station); text files: the first comment line
+        without '#'; '' otherwise. Read from a file, at most 256 bytes of it.
+    fmt : str
+        The format read: 'at2', 'slammer', 'column', 'time_accel', or 'array' for a
+        record built from an array.
+    path : str or None
+        The file read (None for an array).
+    scale_factor : float
+        Product of the factors applied since reading (1.0 initially; :meth:`inverted`
+        multiplies it by -1).
+
+    Parameters
+    ----------
+    accel : array_like
+        1-d, finite samples in g, at least one.
+    dt : float
+        Time step (s), finite and > 0.
+    name, title, fmt, path, t0, scale_factor
+        As the attributes (t0 in s, finite; scale_factor finite and non-zero).
+    """
+
+    __slots__ = ("accel", "dt", "npts", "pga", "t0", "name", "title", "fmt", "path",
+                 "scale_factor")
+
+    def __init__(self, accel, dt, name="record", title="", t0=0.0, fmt="array", path=None,
+                 scale_factor=1.0):
+        arr = _core.as_float_array("accel", accel)
+        if arr.ndim != 1:
+            raise InvalidInputError(
+                f"accel: must be a 1-d array of samples (got shape {arr.shape})")
+        if arr.size == 0:
+            raise InvalidInputError("accel: the record is empty (at least 1 sample needed)")
+        bad = ~np.isfinite(arr)
+        if bad.any():
+            i = int(np.argmax(bad))
+            raise InvalidInputError(f"accel[{i}] = {float(arr[i])!r}: must be finite (g)")
+        self._set(np.array(arr, dtype=np.float64, copy=True),
+                  _core.check_positive("dt", dt, " (s)"), name, title,
+                  self._finite("t0", t0, " (s)"), fmt, path,
+                  self._factor("scale_factor", scale_factor))
+
+    # -------------------------------------------------------------- construction
+
+    @staticmethod
+    def _finite(name, value, unit=""):
+        x = _core.as_scalar(name, value)
+        if not np.isfinite(x):
+            raise InvalidInputError(f"{name} = {x!r}: must be a finite number{unit}")
+        return x
+
+    @staticmethod
+    def _factor(name, value):
+        x = _core.as_scalar(name, value)
+        if not np.isfinite(x) or x == 0.0:
+            raise InvalidInputError(f"{name} = {x!r}: must be a finite non-zero number")
+        return x
+
+    def _set(self, accel, dt, name, title, t0, fmt, path, scale_factor):
+        """Fill the attributes from checked values (accel: a fresh float64 array)."""
+        for key, value in (("name", name), ("title", title), ("fmt", fmt)):
+            if not isinstance(value, str):
+                raise InvalidInputError(f"{key} = {value!r}: must be a string")
+        if path is not None and not isinstance(path, str):
+            raise InvalidInputError(f"path = {path!r}: must be a string or None")
+        accel.flags.writeable = False
+        self.accel = accel
+        self.dt = float(dt)
+        self.npts = int(accel.size)
+        self.pga = float(np.max(np.abs(accel)))
+        self.t0 = float(t0)
+        self.name = name
+        self.title = title
+        self.fmt = fmt
+        self.path = path
+        self.scale_factor = float(scale_factor)
+
+    @classmethod
+    def _trusted(cls, accel, dt, name, title, t0, fmt, path, scale_factor):
+        """A record from values already checked (by the Fortran reader or a method)."""
+        rec = cls.__new__(cls)
+        rec._set(accel, dt, name, title, t0, fmt, path, scale_factor)
+        return rec
+
+    def _with(self, accel, factor):
+        return Record._trusted(accel, self.dt, self.name, self.title, self.t0, self.fmt,
+                               self.path, self.scale_factor * factor)
+
+    # -------------------------------------------------------------- properties
+
+    @property
+    def time(self):
+        """Time of each sample from the first one, ``i * dt`` (s); add :attr:`t0` for
+        the times of the file."""
+        return np.arange(self.npts, dtype=np.float64) * self.dt
+
+    @property
+    def duration(self):
+        """Time from the first to the last sample, (npts - 1) dt (s)."""
+        return (self.npts - 1) * self.dt
+
+    def __len__(self):
+        return self.npts
+
+    def __repr__(self):
+        return (f"Record(name={self.name!r}, npts={self.npts}, dt={self.dt!r} s, "
+                f"pga={self.pga!r} g, fmt={self.fmt!r}, scale_factor={self.scale_factor!r})")
+
+    # -------------------------------------------------------------- new records
+
+    def scaled(self, factor):
+        """The record times ``factor`` (finite, non-zero; negative also inverts it).
+        :attr:`scale_factor` of the result is this record's times ``factor``."""
+        factor = self._factor("factor", factor)
+        return self._with(self.accel * factor, factor)
+
+    def scaled_to_pga(self, target_pga, rounding="exact"):
+        """The record scaled to a peak ground acceleration ``target_pga`` (g, > 0).
+
+        rounding='exact': factor target_pga / pga, the result's PGA is target_pga (to
+        rounding). rounding='slammer': SLAMMER's convention, target_pga / (pga rounded
+        to 0.001 g, half away from zero); the result's PGA then differs from target_pga
+        by the rounding (e.g. pga 0.184882 g, target 0.3 g: factor 0.3 / 0.185).
+        An error (InvalidInputError) when the PGA rounds to 0.000 g.
+        """
+        _core.check_choice("rounding", rounding, ("exact", "slammer"))
+        target = _core.as_scalar("target_pga", target_pga)
+        factor, stat, msg = sp_pga_scale_factor(self.pga, target, int(rounding == "slammer"))
+        _core.raise_for_status(stat, _text(msg))
+        return self._with(self.accel * factor, factor)
+
+    def inverted(self):
+        """The record with its sign reversed (:attr:`scale_factor` times -1)."""
+        return self._with(-self.accel, -1.0)
+
+    # -------------------------------------------------------------- integrals
+
+    def _ground_motion(self, g):
+        g = _core.check_positive("g", g, " (m/s^2)")
+        vel, disp, stat, msg = sp_ground_motion(self.accel, self.dt, g)
+        _core.raise_for_status(stat, _text(msg))
+        return vel, disp
+
+    def velocity(self, g=STANDARD_GRAVITY):
+        """Ground velocity (m/s) at the samples, from rest at the first sample: the exact
+        integral of the acceleration taken linear between samples (trapezoidal sums of
+        ``g * accel``). ``g`` (m/s^2) converts the accelerations from g."""
+        return self._ground_motion(g)[0]
+
+    def displacement(self, g=STANDARD_GRAVITY):
+        """Ground displacement (m) at the samples, from rest at the first sample: the
+        exact double integral of the piecewise linear acceleration,
+        ``d[i+1] = d[i] + v[i] dt + g dt^2 (2 a[i] + a[i+1]) / 6``."""
+        return self._ground_motion(g)[1]
+
+
+def read(path, fmt="auto", units=None, dt=None):
+    """Read an accelerogram file.
+
+    Parameters
+    ----------
+    path : str, bytes or os.PathLike
+        The file (any characters, spaces and non-ASCII included).
+    fmt : {'auto', 'at2', 'slammer', 'column', 'time_accel'}
+        The format; 'auto' takes AT2 for an ``.at2`` extension or a PEER header,
+        otherwise the first data line decides (2 numbers: time and acceleration,
+        reported as 'slammer' after exactly two comment lines; 1 number: a column).
+    units : {'g', 'm/s2', 'cm/s2'} or None
+        Units of the values in the file (aliases 'm/s^2', 'cm/s^2', 'gal'). None: as
+        the AT2 header says, g for the other formats. Given for an AT2 file whose
+        header names other units, it is an error.
+    dt : float, optional
+        Time step (s, > 0): required for a single column; for the other formats a
+        check (more than 1e-6 relative from the file's step is an error).
+
+    Returns
+    -------
+    Record
+        Accelerations in g, ``path`` the str path.
+
+    Raises
+    ------
+    InvalidInputError
+        A malformed file (the message starts with ``<path>, line <n>:``) or a bad
+        argument.
+    FileError
+        The file cannot be opened or read.
+    """
+    try:
+        fspath = os.fspath(path)
+    except TypeError as exc:
+        raise InvalidInputError(f"path = {path!r}: must be a str, bytes or os.PathLike") \
+            from exc
+    raw = os.fsencode(fspath)
+    if not raw:
+        raise InvalidInputError("path: empty")
+    if b"\0" in raw:
+        raise InvalidInputError(f"path = {fspath!r}: contains a NUL character")
+    code = FORMATS.index(_core.check_choice("fmt", fmt, FORMATS))
+    ucode = 0 if units is None else _unit_code(units)
+    step = 0.0 if dt is None else _core.check_positive("dt", dt, " (s)")
+    with _READ_LOCK:
+        npts, dt_out, t0, fmt_out, _, stat, msg = sp_record_read(raw, code, ucode, step)
+        accel, name, title = sp_record_fetch(npts if stat == 0 else 0)
+    _core.raise_for_status(stat, _text(msg))
+    if npts < 1:  # the reader reports an empty file itself; a guard, not a path
+        raise InvalidInputError(f"{os.fsdecode(fspath)}: no data")
+    return Record._trusted(accel, dt_out, _text(name), _text(title), t0, FORMATS[fmt_out],
+                           os.fsdecode(fspath), 1.0)
+
+
+def from_array(accel, dt, units="g", name="record"):
+    """A :class:`Record` from samples in ``units`` ('g', 'm/s2', 'cm/s2'; aliases
+    'm/s^2', 'cm/s^2', 'gal') at time step ``dt`` (s); stored in g (divided by
+    STANDARD_GRAVITY or 100 STANDARD_GRAVITY, as the reader does)."""
+    ucode = _unit_code(units)
+    arr = _core.as_float_array("accel", accel)
+    if ucode != 1:
+        arr = arr / _UNIT_TO_G[ucode]
+    return Record(arr, dt, name=name)

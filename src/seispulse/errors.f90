@@ -10,7 +10,7 @@ module seispulse_errors
 
     public :: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
               SEISPULSE_NO_CONVERGENCE, SEISPULSE_NO_BRACKET, SEISPULSE_INTERNAL, SEISPULSE_IO
-    public :: set_error, status_name, real_str, outside, check_ascending_times
+    public :: set_error, status_name, real_str, int_str, outside, check_ascending_times
 
     integer, parameter :: SEISPULSE_SUCCESS = 0        !! no error
     integer, parameter :: SEISPULSE_INVALID_INPUT = 1  !! an argument is out of its domain
@@ -79,6 +79,15 @@ contains
             text = trim(buf)
         end if
     end function real_str
+
+    !> An integer as text for messages ("42", "-1").
+    pure function int_str(i) result(text)
+        integer, intent(in) :: i  !! the number
+        character(len=:), allocatable :: text
+        character(len=16) :: buf
+        write(buf, '(i0)') i
+        text = trim(buf)
+    end function int_str
 
     !> x is NaN or outside [lo, hi] (an end excluded when open): the range check of every
     !> input. NaN is tested first: an ordered comparison on NaN raises the invalid flag

@@ -1,5 +1,682 @@
-!> Placeholder (work in progress).
+!> Newmark rigid-block sliding on accelerograms: one-way (downslope) sliding as
+!> SLAMMER does it, two-way sliding, and asymmetric yields with the along-plane
+!> factors of a real incline (sliding.md 7.1, Eq. 1.31).
+!>
+!> The block slides relative to the ground with (sliding.md Eq. 1.3)
+!>     u'' = K_dir g (a_g(t) - s ky_dir)        while sliding in direction s = sgn(u'),
+!> and sticks while -ky_up <= a_g <= ky. Positive a_g drives positive (downslope)
+!> sliding; K_dir = 1 except on an incline (newmark_incline).
+!>
+!> Two integration rules:
+!>  - NEWMARK_EXACT: a_g is linear between samples, so on each step the relative
+!>    velocity is a quadratic and the displacement a cubic in time; onsets (a_g
+!>    crossing a yield: linear) and stops (the velocity's first root: a stable
+!>    quadratic formula) are located inside the step. This is the exact solution
+!>    of the piecewise-linear record, the same problem the event-driven integrator
+!>    of seispulse_stickslip solves (a_g = 0 after the last sample, so a block still
+!>    sliding there decelerates to rest), but without root iterations: a few flops
+!>    per step.
+!>  - NEWMARK_SLAMMER: SLAMMER 1.1's rigorous rigid-block loop (Jibson et al. 2013,
+!>    RigidBlock.NewmarkRigorous), step for step: units of cm/s^2 with g = 100 g
+!>    (980.665 for standard gravity), the trapezoidal rule on y = a - n ky for the
+!>    velocity and on the velocity for the displacement, the block stopped when the
+!>    velocity reaches zero (one way) or changes sign (two ways, SLAMMER's dual-slope
+!>    test without its g sin(slope) shift). Each sample is one step from the state
+!>    after the previous one (the state before the first sample is zero), and the
+!>    record ends at the last sample. Not reproduced: SLAMMER skips samples that are
+!>    exactly 0 for a positive scale factor only (no effect unless such samples fall
+!>    inside a slide; the 18 records of its test set have none).
 module seispulse_newmark
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
+                                             ieee_positive_inf
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
+                                SEISPULSE_INTERNAL, set_error, real_str
+    use seispulse_stickslip, only: slide_t
+    use seispulse_pieces, only: record_pieces_check
+    use seispulse_sliding, only: inclined_resistances
     implicit none
     private
+
+    public :: newmark_block_t, newmark_result_t
+    public :: newmark_rigid, newmark_incline, newmark_block_validate
+    public :: newmark_mode_name, newmark_method_name, newmark_mode_code, newmark_method_code
+    public :: NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM, NEWMARK_EXACT, NEWMARK_SLAMMER
+
+    integer, parameter :: NEWMARK_DOWN = 1     !! one-way: downslope (positive) sliding only
+    integer, parameter :: NEWMARK_BOTH = 2     !! two-way, the same yield both ways
+    integer, parameter :: NEWMARK_ASYM = 3     !! two-way, ky down and ky_up up, factors K
+    integer, parameter :: NEWMARK_EXACT = 1    !! exact piecewise-linear integration
+    integer, parameter :: NEWMARK_SLAMMER = 2  !! SLAMMER 1.1's trapezoidal loop
+
+    character(len=*), parameter :: mode_names(3) = [character(len=4) :: 'down', 'both', 'asym']
+    character(len=*), parameter :: method_names(2) = [character(len=7) :: 'exact', 'slammer']
+
+    !> Events allowed in one step; a handful are possible (stop, reversal, stop,
+    !> onset), so reaching this is a bug, reported as such.
+    integer, parameter :: max_events = 8
+
+    !> SLAMMER's "at rest" test on the velocity (cm/s).
+    real(dp), parameter :: slammer_rest = 1.0e-15_dp
+
+    !> The sliding block: yield accelerations (g) and, for an incline, the factors that
+    !> turn the slip of the yield problem into the slip along the plane.
+    type :: newmark_block_t
+        integer :: mode = NEWMARK_DOWN   !! NEWMARK_DOWN, NEWMARK_BOTH or NEWMARK_ASYM
+        real(dp) :: ky = 0.1_dp          !! yield acceleration downslope (g), > 0 (+inf: never)
+        real(dp) :: ky_up = 0.1_dp       !! yield acceleration upslope (g), > 0 (ASYM only)
+        real(dp) :: k_down = 1.0_dp      !! along-plane factor downslope, > 0 (ASYM only)
+        real(dp) :: k_up = 1.0_dp        !! along-plane factor upslope, > 0 (ASYM only)
+    end type newmark_block_t
+
+    !> Result of one analysis (SI).
+    type :: newmark_result_t
+        real(dp) :: max_disp = 0.0_dp    !! largest |u| over time (m)
+        real(dp) :: final_disp = 0.0_dp  !! u when the block is finally at rest (m), signed
+        real(dp) :: u_max = 0.0_dp       !! largest u (m), >= 0
+        real(dp) :: u_min = 0.0_dp       !! smallest u (m), <= 0
+        real(dp) :: max_vel = 0.0_dp     !! largest |u'| (m/s)
+        real(dp) :: t_end = 0.0_dp       !! end of the last slide (s from the first sample)
+        type(slide_t), allocatable :: slides(:)  !! sliding intervals (times s, u m, u' m/s)
+    end type newmark_result_t
+
+contains
+
+    ! ------------------------------------------------------------------------------
+    ! Public API
+    ! ------------------------------------------------------------------------------
+
+    !> Check a block; the message names the offending parameter.
+    subroutine newmark_block_validate(blk, stat, errmsg)
+        type(newmark_block_t), intent(in) :: blk              !! the block
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        stat = SEISPULSE_SUCCESS
+        if (blk%mode < NEWMARK_DOWN .or. blk%mode > NEWMARK_ASYM) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'mode: unknown code (allowed:' &
+                           //' 1 down, 2 both, 3 asym)')
+        else if (.not. positive(blk%ky)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky = '//real_str(blk%ky) &
+                           //': must be > 0 (g)')
+        else if (blk%mode == NEWMARK_ASYM) then
+            if (.not. positive(blk%ky_up)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky_up = ' &
+                               //real_str(blk%ky_up)//': must be > 0 (g; +inf: no upslope sliding)')
+            else if (.not. factor_ok(blk%k_down, blk%ky)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'k_down = ' &
+                               //real_str(blk%k_down)//': must be a finite number > 0')
+            else if (.not. factor_ok(blk%k_up, blk%ky_up)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'k_up = ' &
+                               //real_str(blk%k_up)//': must be a finite number > 0')
+            end if
+        end if
+    end subroutine newmark_block_validate
+
+    !> The block on an incline of slope lambda with friction mu, shaken at angle xi to
+    !> the horizontal (the record is that component, positive downhill): yields and
+    !> along-plane factors of sliding.md Eq. 1.31 and section 7.1 (an asymmetric block).
+    !> Without along_plane the factors are 1 (the slip of the yield problem, as SLAMMER).
+    subroutine newmark_incline(mu, slope_deg, xi_deg, along_plane, blk, stat, errmsg)
+        real(dp), intent(in) :: mu                            !! friction coefficient > 0
+        real(dp), intent(in) :: slope_deg                     !! lambda in [0, 90) deg, < atan mu
+        real(dp), intent(in) :: xi_deg                        !! xi in [-90, 90] deg
+        logical, intent(in) :: along_plane                    !! apply K1, K2
+        type(newmark_block_t), intent(out) :: blk             !! mode NEWMARK_ASYM
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp) :: eta1, eta2, k1, k2
+        ! with A_g = 1 g the resistances over A_g are the yields in g
+        call inclined_resistances(mu, 1.0_dp, slope_deg, xi_deg, eta1, eta2, k1, k2, &
+                                  stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        blk%mode = NEWMARK_ASYM
+        blk%ky = eta1
+        blk%ky_up = eta2
+        blk%k_down = 1.0_dp
+        blk%k_up = 1.0_dp
+        if (along_plane) then
+            ! a direction that cannot slide (eta = +inf) has K = 0: keep 1, it is unused
+            if (k1 > 0.0_dp) blk%k_down = k1
+            if (k2 > 0.0_dp) blk%k_up = k2
+        end if
+    end subroutine newmark_incline
+
+    !> Rigid-block sliding on a record: accel(i) (g) at t = (i - 1) dt.
+    !>
+    !> Histories (optional, each of size(accel)): relative displacement u (m) and
+    !> velocity u' (m/s) at the sample times; for NEWMARK_SLAMMER the values after
+    !> SLAMMER's step of each sample.
+    subroutine newmark_rigid(accel, dt, blk, method, g, res, stat, errmsg, u_hist, w_hist)
+        real(dp), intent(in) :: accel(:)                      !! ground acceleration (g), finite
+        real(dp), intent(in) :: dt                            !! time step (s) > 0
+        type(newmark_block_t), intent(in) :: blk              !! yields and mode
+        integer, intent(in) :: method                         !! NEWMARK_EXACT or NEWMARK_SLAMMER
+        real(dp), intent(in) :: g                             !! gravity (m/s^2) > 0
+        type(newmark_result_t), intent(out) :: res            !! the result
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp), intent(out), optional :: u_hist(:)          !! u at the samples (m)
+        real(dp), intent(out), optional :: w_hist(:)          !! u' at the samples (m/s)
+        real(dp) :: ay_up, k_down, k_up
+
+        allocate(res%slides(0))
+        call newmark_block_validate(blk, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        if (method /= NEWMARK_EXACT .and. method /= NEWMARK_SLAMMER) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'method: unknown code ' &
+                           //'(allowed: 1 exact, 2 slammer)')
+            return
+        end if
+        if (.not. (positive(dt) .and. ieee_is_finite(dt))) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'dt = '//real_str(dt) &
+                           //': must be a finite number > 0 (s)')
+            return
+        end if
+        if (.not. (positive(g) .and. ieee_is_finite(g))) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(g) &
+                           //': must be a finite number > 0 (m/s^2)')
+            return
+        end if
+        call record_pieces_check(accel, stat, errmsg)   ! not empty, finite samples
+        if (stat /= SEISPULSE_SUCCESS) return
+        if (.not. (same_size(u_hist, 'u_hist') .and. same_size(w_hist, 'w_hist'))) return
+
+        k_down = 1.0_dp
+        k_up = 1.0_dp
+        select case (blk%mode)
+        case (NEWMARK_DOWN)
+            ay_up = ieee_value(ay_up, ieee_positive_inf)
+        case (NEWMARK_BOTH)
+            ay_up = blk%ky
+        case default
+            ay_up = blk%ky_up
+            k_down = blk%k_down
+            k_up = blk%k_up
+        end select
+
+        if (method == NEWMARK_EXACT) then
+            call rigid_exact(accel, dt, blk%ky, ay_up, k_down, k_up, g, res, stat, errmsg, &
+                             u_hist, w_hist)
+        else
+            call rigid_slammer(accel, dt, blk%ky, ay_up, k_down, k_up, blk%mode == NEWMARK_DOWN, &
+                               g, res, u_hist, w_hist)
+        end if
+    contains
+
+        !> An optional history has the size of accel (else an error naming it).
+        logical function same_size(hist, name)
+            real(dp), intent(in), optional :: hist(:)
+            character(len=*), intent(in) :: name
+            same_size = .true.
+            if (.not. present(hist)) return
+            same_size = size(hist) == size(accel)
+            if (.not. same_size) call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, name &
+                                                //': must have the size of accel')
+        end function same_size
+
+    end subroutine newmark_rigid
+
+    !> Name of a mode code ('down', 'both', 'asym'; '?' if unknown).
+    pure function newmark_mode_name(code) result(name)
+        integer, intent(in) :: code  !! NEWMARK_DOWN, NEWMARK_BOTH or NEWMARK_ASYM
+        character(len=:), allocatable :: name
+        if (code >= 1 .and. code <= size(mode_names)) then
+            name = trim(mode_names(code))
+        else
+            name = '?'
+        end if
+    end function newmark_mode_name
+
+    !> Name of a method code ('exact', 'slammer'; '?' if unknown).
+    pure function newmark_method_name(code) result(name)
+        integer, intent(in) :: code  !! NEWMARK_EXACT or NEWMARK_SLAMMER
+        character(len=:), allocatable :: name
+        if (code >= 1 .and. code <= size(method_names)) then
+            name = trim(method_names(code))
+        else
+            name = '?'
+        end if
+    end function newmark_method_name
+
+    !> Code of a mode name (0 if unknown).
+    pure integer function newmark_mode_code(name)
+        character(len=*), intent(in) :: name  !! 'down', 'both' or 'asym'
+        integer :: k
+        newmark_mode_code = 0
+        do k = 1, size(mode_names)
+            if (trim(name) == trim(mode_names(k))) newmark_mode_code = k
+        end do
+    end function newmark_mode_code
+
+    !> Code of a method name (0 if unknown).
+    pure integer function newmark_method_code(name)
+        character(len=*), intent(in) :: name  !! 'exact' or 'slammer'
+        integer :: k
+        newmark_method_code = 0
+        do k = 1, size(method_names)
+            if (trim(name) == trim(method_names(k))) newmark_method_code = k
+        end do
+    end function newmark_method_code
+
+    ! ------------------------------------------------------------------------------
+    ! Exact piecewise-linear integration
+    ! ------------------------------------------------------------------------------
+
+    !> The exact solution. Internally accelerations are in g, velocities in g s and
+    !> displacements in g s^2 (one multiplication by g at the end). While sliding in
+    !> direction s the speed z = s u'/K obeys z' = s a_g - ky_s; on a step where a_g
+    !> runs linearly from a_s to a_e over h, z(x) = z0 + b x + c x^2 with b = s a_s - ky_s,
+    !> c = s (a_e - a_s)/(2 h), and the slip is K (z0 x + b x^2/2 + c x^3/3).
+    subroutine rigid_exact(accel, dt, ay_dn, ay_up, k_dn, k_up, g, res, stat, errmsg, &
+                           u_hist, w_hist)
+        real(dp), intent(in) :: accel(:), dt, ay_dn, ay_up, k_dn, k_up, g
+        type(newmark_result_t), intent(inout) :: res
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        real(dp), intent(out), optional :: u_hist(:), w_hist(:)
+
+        type(slide_t), allocatable :: buf(:)
+        integer :: n, i, dir, nsl, nev, dnew, stopped_dir
+        real(dp) :: u, z, ay, kf, a0, a1, x, as, h, b, c, z1, xs, xv, xo, ao, sgn
+        real(dp) :: zpk, tpk, t0
+        logical :: stopped, want_u, want_w
+
+        stat = SEISPULSE_SUCCESS
+        n = size(accel)
+        want_u = present(u_hist)
+        want_w = present(w_hist)
+        allocate(buf(8))
+        nsl = 0
+        u = 0.0_dp
+        z = 0.0_dp
+        dir = 0
+        ay = 0.0_dp
+        kf = 0.0_dp
+        sgn = 0.0_dp
+        zpk = 0.0_dp
+        tpk = 0.0_dp
+        if (want_u) u_hist(1) = 0.0_dp
+        if (want_w) w_hist(1) = 0.0_dp
+
+        ! a slide may start at the first sample itself
+        if (exceeds(accel(1), ay_dn)) then
+            call start_slide(1, 0.0_dp, .false.)
+        else if (exceeds(-accel(1), ay_up)) then
+            call start_slide(-1, 0.0_dp, .false.)
+        end if
+
+        do i = 1, n - 1
+            a0 = accel(i)
+            a1 = accel(i + 1)
+            t0 = real(i - 1, dp) * dt
+            if (dir == 0) then
+                ! at rest with a_g inside the yields at both ends: nothing happens
+                if (a1 <= ay_dn .and. -a1 <= ay_up .and. a0 <= ay_dn .and. -a0 <= ay_up) then
+                    if (want_u) u_hist(i + 1) = u
+                    if (want_w) w_hist(i + 1) = 0.0_dp
+                    cycle
+                end if
+            end if
+            ! events inside the step: x is the time from the step start, as = a_g(x);
+            ! stopped_dir: direction of a slide that stopped at x (0: none)
+            x = 0.0_dp
+            as = a0
+            stopped_dir = 0
+            events: do nev = 1, max_events + 1
+                if (nev > max_events) then
+                    call set_error(stat, errmsg, SEISPULSE_INTERNAL, 'newmark: too many ' &
+                                   //'events in one step near t = '//real_str(t0)//' (a bug)')
+                    return
+                end if
+                h = dt - x
+                if (dir /= 0) then
+                    ! ---- sliding from x to dt, or to the stop
+                    if (.not. (h > 0.0_dp)) exit events   ! started at the step's end
+                    b = sgn * as - ay
+                    c = sgn * (a1 - as) / (2.0_dp * h)
+                    z1 = z + h * (sgn * 0.5_dp * (as + a1) - ay)
+                    stopped = .not. (z1 > 0.0_dp)
+                    if (.not. stopped .and. c > 0.0_dp .and. b < 0.0_dp) then
+                        ! convex: the minimum z - b^2/(4c) may reach zero inside the step
+                        xv = -b / (2.0_dp * c)
+                        if (xv < h) stopped = .not. (z + 0.5_dp * b * xv > 0.0_dp)
+                    end if
+                    if (c < 0.0_dp .and. b > 0.0_dp) then
+                        ! concave: the peak speed may be inside the step (before any stop)
+                        xv = -b / (2.0_dp * c)
+                        if (xv < h) call peak(z + 0.5_dp * b * xv, t0 + x + xv)
+                    end if
+                    if (.not. stopped) then
+                        u = u + sgn * kf * h * (z + h * (0.5_dp * b + h * c / 3.0_dp))
+                        z = z1
+                        call peak(z, t0 + dt)
+                        exit events
+                    end if
+                    xs = first_root(z, b, c, h)
+                    u = u + sgn * kf * xs * (z + xs * (0.5_dp * b + xs * c / 3.0_dp))
+                    x = x + xs
+                    as = as + (a1 - as) * (xs / h)
+                    stopped_dir = dir
+                    call stop_slide(t0 + x)
+                end if
+                ! ---- at rest from x: an onset now (the reverse at once after a stop is
+                ! the "slip" of sliding.md 5.1), or where a_g crosses a yield (a_g is
+                ! linear: one crossing). The direction that just stopped had
+                ! s a_g <= ky there: it may start again only by a crossing.
+                if (stopped_dir /= 1 .and. exceeds(as, ay_dn)) then
+                    call start_slide(1, t0 + x, stopped_dir /= 0)
+                    cycle events
+                else if (stopped_dir /= -1 .and. exceeds(-as, ay_up)) then
+                    call start_slide(-1, t0 + x, stopped_dir /= 0)
+                    cycle events
+                end if
+                if (.not. (x < dt)) exit events
+                if (exceeds(a1, ay_dn)) then
+                    xo = x
+                    if (a1 > as) xo = x + (dt - x) * (max(ay_dn - as, 0.0_dp) / (a1 - as))
+                    ao = ay_dn
+                    dnew = 1
+                else if (exceeds(-a1, ay_up)) then
+                    xo = x
+                    if (as > a1) xo = x + (dt - x) * (max(as + ay_up, 0.0_dp) / (as - a1))
+                    ao = -ay_up
+                    dnew = -1
+                else
+                    exit events
+                end if
+                if (.not. (xo < dt)) exit events   ! at the step's end: the next step starts it
+                x = max(xo, x)
+                as = ao
+                stopped_dir = 0
+                call start_slide(dnew, t0 + x, .false.)
+            end do events
+            if (want_u) u_hist(i + 1) = u
+            if (want_w) w_hist(i + 1) = sgn * kf * z * g
+        end do
+
+        ! after the record a_g = 0: a sliding block decelerates to rest in z/ky
+        t0 = real(n - 1, dp) * dt
+        if (dir /= 0) then
+            if (ay < z / huge(z)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky: too small for ' &
+                               //'the final sliding velocity (the stop time overflows)')
+                return
+            end if
+            xs = z / ay
+            u = u + sgn * kf * 0.5_dp * z * xs
+            call stop_slide(t0 + xs)
+        end if
+
+        ! to SI
+        res%final_disp = g * u
+        if (want_u) u_hist = g * u_hist
+        res%u_max = g * res%u_max
+        res%u_min = g * res%u_min
+        res%max_disp = max(res%u_max, -res%u_min)
+        deallocate(res%slides)
+        allocate(res%slides(nsl))
+        do i = 1, nsl
+            res%slides(i) = buf(i)
+            res%slides(i)%u_start = g * buf(i)%u_start
+            res%slides(i)%u_stop = g * buf(i)%u_stop
+            res%slides(i)%w_peak = g * buf(i)%w_peak
+            res%max_vel = max(res%max_vel, res%slides(i)%w_peak)
+        end do
+
+    contains
+
+        subroutine start_slide(d, t, from_slip)
+            integer, intent(in) :: d
+            real(dp), intent(in) :: t
+            logical, intent(in) :: from_slip
+            type(slide_t), allocatable :: grown(:)
+            dir = d
+            sgn = real(d, dp)
+            if (d > 0) then
+                ay = ay_dn
+                kf = k_dn
+            else
+                ay = ay_up
+                kf = k_up
+            end if
+            z = 0.0_dp
+            zpk = 0.0_dp
+            tpk = t
+            if (nsl == size(buf)) then
+                allocate(grown(2 * nsl))
+                grown(1:nsl) = buf
+                call move_alloc(grown, buf)
+            end if
+            nsl = nsl + 1
+            buf(nsl)%direction = d
+            buf(nsl)%t_start = t
+            buf(nsl)%u_start = u
+            buf(nsl)%from_slip = from_slip
+        end subroutine start_slide
+
+        subroutine stop_slide(t)
+            real(dp), intent(in) :: t
+            buf(nsl)%t_stop = t
+            buf(nsl)%u_stop = u
+            buf(nsl)%w_peak = kf * zpk
+            buf(nsl)%t_peak = tpk
+            res%u_max = max(res%u_max, u)
+            res%u_min = min(res%u_min, u)
+            res%t_end = t
+            dir = 0
+            z = 0.0_dp
+        end subroutine stop_slide
+
+        subroutine peak(zz, t)
+            real(dp), intent(in) :: zz, t
+            if (zz > zpk) then
+                zpk = zz
+                tpk = t
+            end if
+        end subroutine peak
+
+    end subroutine rigid_exact
+
+    !> First root in (0, h] of z0 + b x + c x^2 (z0 >= 0) when the speed is known to
+    !> reach zero by h; the rationalized forms avoid cancellation (no 0/0: the root
+    !> exists, so b < 0 or c < 0).
+    pure real(dp) function first_root(z0, b, c, h) result(x)
+        real(dp), intent(in) :: z0, b, c, h
+        real(dp) :: disc
+        disc = sqrt(max(b * b - 4.0_dp * c * z0, 0.0_dp))
+        if (b <= 0.0_dp) then
+            if (-b + disc > 0.0_dp) then
+                x = 2.0_dp * z0 / (-b + disc)
+            else
+                x = 0.0_dp   ! z0 = b = 0 and c <= 0: it stops at once
+            end if
+        else if (c < 0.0_dp) then
+            ! b > 0: the speed grows first, then falls (concave)
+            x = (b + disc) / (-2.0_dp * c)
+        else
+            x = h        ! no root in exact arithmetic: rounding at the step's end
+        end if
+        x = min(max(x, 0.0_dp), h)
+    end function first_root
+
+    ! ------------------------------------------------------------------------------
+    ! SLAMMER 1.1's rigid loop
+    ! ------------------------------------------------------------------------------
+
+    !> SLAMMER's rigorous rigid-block loop in cm and s (see the module header).
+    !> One way: at rest n = sgn(a) if |a| > ky else a/ky, y = a - n ky; sliding y = a - ky;
+    !> v = v_prev + dt/2 (y + y_prev), stopped (v = y = 0) when v <= 0. Two ways: the
+    !> yield of the direction of motion (or of the sign of a at rest), stopped when v
+    !> changes sign or reaches zero. u = u_prev + dt/2 (v + v_prev) K.
+    subroutine rigid_slammer(accel, dt, ay_dn, ay_up, k_dn, k_up, one_way, g, res, &
+                             u_hist, w_hist)
+        real(dp), intent(in) :: accel(:), dt, ay_dn, ay_up, k_dn, k_up, g
+        logical, intent(in) :: one_way
+        type(newmark_result_t), intent(inout) :: res
+        real(dp), intent(out), optional :: u_hist(:), w_hist(:)
+
+        type(slide_t), allocatable :: buf(:), grown(:)
+        real(dp) :: gcm, t_dn, t_up, a, nn, y, v, r, s, q, u, kf, tr
+        integer :: i, nsl, dir, dnew
+        logical :: want_u, want_w
+
+        gcm = 100.0_dp * g
+        t_dn = ay_dn * gcm
+        t_up = ay_up * gcm
+        want_u = present(u_hist)
+        want_w = present(w_hist)
+        allocate(buf(8))
+        nsl = 0
+        dir = 0
+        q = 0.0_dp
+        r = 0.0_dp
+        s = 0.0_dp
+        u = 0.0_dp
+        v = 0.0_dp
+        do i = 1, size(accel)
+            a = accel(i) * gcm
+            if (one_way) then
+                if (v < slammer_rest) then
+                    if (abs(a) > t_dn) then
+                        nn = sign(1.0_dp, a)
+                    else
+                        nn = a / t_dn
+                    end if
+                else
+                    nn = 1.0_dp
+                end if
+                y = a - nn * t_dn
+                v = r + 0.5_dp * dt * (y + s)
+                if (v <= 0.0_dp) then
+                    v = 0.0_dp
+                    y = 0.0_dp
+                end if
+            else
+                if (abs(v) < slammer_rest) then
+                    if (a > t_dn) then
+                        y = a - t_dn
+                    else if (-a > t_up) then
+                        y = a + t_up
+                    else
+                        ! inside the yields: a - (a/t) t, zero up to rounding (as SLAMMER)
+                        tr = t_dn
+                        if (a < 0.0_dp) tr = t_up
+                        y = 0.0_dp
+                        if (ieee_is_finite(tr)) y = a - (a / tr) * tr
+                    end if
+                else if (v > 0.0_dp) then
+                    y = a - t_dn
+                else
+                    y = a + t_up
+                end if
+                v = r + 0.5_dp * dt * (y + s)
+                ! SLAMMER: stop unless |r| < 1e-15 or v/r > 0 (no division by r = 0 here)
+                if (abs(r) >= slammer_rest) then
+                    if (.not. (v / r > 0.0_dp)) then
+                        v = 0.0_dp
+                        y = 0.0_dp
+                    end if
+                end if
+            end if
+            kf = k_dn
+            if (v + r < 0.0_dp) kf = k_up
+            u = q + 0.5_dp * dt * (v + r) * kf
+
+            ! bookkeeping: the slides, at sample resolution; SLAMMER itself treats
+            ! |v| < 1e-15 cm/s (the rounding of a - (a/ky) ky) as rest
+            dnew = 0
+            if (v >= slammer_rest) dnew = 1
+            if (v <= -slammer_rest) dnew = -1
+            if (dnew /= dir) then
+                if (dir /= 0) call close_slide(i)
+                if (dnew /= 0) then
+                    if (nsl == size(buf)) then
+                        allocate(grown(2 * nsl))
+                        grown(1:nsl) = buf
+                        call move_alloc(grown, buf)
+                    end if
+                    nsl = nsl + 1
+                    buf(nsl)%direction = dnew
+                    buf(nsl)%t_start = real(i - 1, dp) * dt
+                    buf(nsl)%u_start = q
+                    buf(nsl)%w_peak = 0.0_dp
+                    buf(nsl)%t_peak = real(i - 1, dp) * dt
+                    buf(nsl)%from_slip = dir /= 0
+                end if
+                dir = dnew
+            end if
+            if (dir /= 0) then
+                if (abs(v) * kf > buf(nsl)%w_peak) then
+                    buf(nsl)%w_peak = abs(v) * kf
+                    buf(nsl)%t_peak = real(i - 1, dp) * dt
+                end if
+            end if
+            res%u_max = max(res%u_max, u)
+            res%u_min = min(res%u_min, u)
+            q = u
+            r = v
+            s = y
+            if (want_u) u_hist(i) = u / 100.0_dp
+            if (want_w) w_hist(i) = v * kf / 100.0_dp
+        end do
+        if (dir /= 0) call close_slide(size(accel) + 1)
+
+        res%final_disp = u / 100.0_dp
+        res%u_max = res%u_max / 100.0_dp
+        res%u_min = res%u_min / 100.0_dp
+        res%max_disp = max(res%u_max, -res%u_min)
+        deallocate(res%slides)
+        allocate(res%slides(nsl))
+        do i = 1, nsl
+            res%slides(i) = buf(i)
+            res%slides(i)%u_start = buf(i)%u_start / 100.0_dp
+            res%slides(i)%u_stop = buf(i)%u_stop / 100.0_dp
+            res%slides(i)%w_peak = buf(i)%w_peak / 100.0_dp
+            res%max_vel = max(res%max_vel, res%slides(i)%w_peak)
+        end do
+
+    contains
+
+        !> The slide ends at sample i (v = 0 there; after the record: still sliding).
+        subroutine close_slide(k)
+            integer, intent(in) :: k
+            buf(nsl)%t_stop = real(min(k, size(accel)) - 1, dp) * dt
+            buf(nsl)%u_stop = u
+            if (k > size(accel)) buf(nsl)%u_stop = q
+            res%t_end = buf(nsl)%t_stop
+        end subroutine close_slide
+
+    end subroutine rigid_slammer
+
+    ! ------------------------------------------------------------------------------
+    ! Small helpers
+    ! ------------------------------------------------------------------------------
+
+    !> x > 0 (+inf allowed), not NaN (no ordered comparison with NaN: it traps).
+    elemental logical function positive(x)
+        real(dp), intent(in) :: x
+        if (ieee_is_nan(x)) then
+            positive = .false.
+        else
+            positive = x > 0.0_dp
+        end if
+    end function positive
+
+    !> a exceeds thr by more than rounding (four ulps of the larger): a_g computed at a
+    !> stop inside a step is exact only to a few ulps. Safe for thr = +inf.
+    elemental logical function exceeds(a, thr)
+        real(dp), intent(in) :: a, thr
+        exceeds = a - thr > 4.0_dp * epsilon(a) * max(abs(a), abs(thr))
+    end function exceeds
+
+    !> An along-plane factor: finite and > 0, unless its direction cannot slide.
+    elemental logical function factor_ok(k, ky)
+        real(dp), intent(in) :: k, ky
+        if (ieee_is_finite(ky)) then
+            factor_ok = positive(k) .and. ieee_is_finite(k)
+        else
+            factor_ok = .not. ieee_is_nan(k)
+        end if
+    end function factor_ok
+
 end module seispulse_newmark
