@@ -19,7 +19,7 @@ module driver_rocking
                          pulse_kind_name, pulse_kind_from_name, SEISPULSE_SUCCESS, &
                          PULSE_EXPONENTIAL, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
                          PULSE_RICKER, PULSE_MP
-    use seispulse_errors, only: real_str
+    use seispulse_errors, only: real_str, int_str
     use seispulse_rocking, only: rocking_summary, rocking_region_name
     use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rectangular_block, &
                                      symmetric_block, rocking_block_validate, rock_pulse, &
@@ -929,13 +929,5 @@ contains
         write(output_unit, nml=rocking)
         if (task == 'map') write(output_unit, nml=map)
     end subroutine echo
-
-    pure function int_str(i) result(text)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: text
-        character(len=16) :: buf
-        write(buf, '(i0)') i
-        text = trim(buf)
-    end function int_str
 
 end module driver_rocking

@@ -20,7 +20,8 @@ module driver_sliding
                                  inclined_resistances, summarize_slides, mode_name
     use seispulse_stickslip, only: friction_t, stickslip_result_t, stickslip_pulse
     use driver_namelist_scan, only: nml_group, lower
-    use driver_input, only: find_group, located, join, read_optional, given
+    use driver_input, only: find_group, located, join, read_optional, given, list_length, &
+                            list_item
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, finite_positive
     use driver_tables, only: write_tables
@@ -364,44 +365,6 @@ contains
             end if
         end do
     end subroutine check_block
-
-    !> Number of values given in a sweep (the first NaN ends it; no gaps allowed).
-    subroutine list_length(list, name, n, errmsg)
-        real(dp), intent(in) :: list(:)
-        character(len=*), intent(in) :: name
-        integer, intent(out) :: n
-        character(len=:), allocatable, intent(out) :: errmsg
-        integer :: i
-        errmsg = ''
-        n = 0
-        do i = size(list), 1, -1
-            if (.not. ieee_is_nan(list(i))) then
-                n = i
-                exit
-            end if
-        end do
-        if (n == 0) then
-            errmsg = name//': no value given'
-            return
-        end if
-        do i = 1, n
-            if (ieee_is_nan(list(i))) then
-                errmsg = list_item(name, i)//': missing or NaN (give every value, ' &
-                         //'without gaps)'
-                return
-            end if
-        end do
-    end subroutine list_length
-
-    !> "name(i)".
-    function list_item(name, i) result(item)
-        character(len=*), intent(in) :: name
-        integer, intent(in) :: i
-        character(len=:), allocatable :: item
-        character(len=16) :: num
-        write(num, '(i0)') i
-        item = name//'('//trim(num)//')'
-    end function list_item
 
     !> "mu_list(3): " for a row of a sweep, "" for a single case.
     function case_label(input_mode, i, n) result(label)

@@ -6,7 +6,7 @@ module driver_input
     private
 
     public :: group_reader, find_group, check_keys, read_group, located, join
-    public :: read_optional, given
+    public :: read_optional, given, list_length, list_item
 
     abstract interface
         !> Read one namelist group into the analysis' variables: from `unit`, or
@@ -136,6 +136,46 @@ contains
             end if
         end do
     end function given
+
+    !> Number of values given in a list key (defaults NaN): the last value that is not
+    !> NaN ends it; a NaN before it is a gap, an error.
+    subroutine list_length(list, name, n, errmsg)
+        use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+        use seispulse_kinds, only: dp
+        real(dp), intent(in) :: list(:)
+        character(len=*), intent(in) :: name
+        integer, intent(out) :: n
+        character(len=:), allocatable, intent(out) :: errmsg
+        integer :: i
+        errmsg = ''
+        n = 0
+        do i = size(list), 1, -1
+            if (.not. ieee_is_nan(list(i))) then
+                n = i
+                exit
+            end if
+        end do
+        if (n == 0) then
+            errmsg = name//': no value given'
+            return
+        end if
+        do i = 1, n
+            if (ieee_is_nan(list(i))) then
+                errmsg = list_item(name, i)//': missing or NaN (give every value, ' &
+                         //'without gaps)'
+                return
+            end if
+        end do
+    end subroutine list_length
+
+    !> "name(i)".
+    pure function list_item(name, i) result(item)
+        use seispulse_errors, only: int_str
+        character(len=*), intent(in) :: name
+        integer, intent(in) :: i
+        character(len=:), allocatable :: item
+        item = name//'('//int_str(i)//')'
+    end function list_item
 
     !> "file:line: &group: " prefix of a message.
     function located(path, group) result(prefix)

@@ -3,6 +3,8 @@
 !> Reads &run (analysis, output) and the groups of that analysis, echoes the
 !> effective input, writes the tables and says where they went. Any problem is one
 !> line on stderr naming file, line, group, key and problem, and exit status 2.
+!> Analysis 'newmark' goes on past a record that cannot be read: its rows fail, the
+!> table is written with all rows, and the exit status is 1.
 program seispulse_driver
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     use, intrinsic :: iso_c_binding, only: c_int
@@ -11,6 +13,7 @@ program seispulse_driver
     use driver_pulse, only: run_pulse, pulse_groups
     use driver_sliding, only: run_sliding, sliding_groups
     use driver_rocking, only: run_rocking, rocking_groups
+    use driver_newmark, only: run_newmark, newmark_groups, NEWMARK_ROWS_FAILED
     use driver_run_group, only: run_analysis, run_output, read_run, run_keys, write_run
     implicit none
 
@@ -22,11 +25,11 @@ program seispulse_driver
         end subroutine c_exit
     end interface
 
-    character(len=8), parameter :: analyses(3) = [character(len=8) :: 'pulse', 'sliding', &
-        'rocking']
+    character(len=8), parameter :: analyses(4) = [character(len=8) :: 'pulse', 'sliding', &
+        'rocking', 'newmark']
     !> Every group of any analysis (besides run), for the first check.
-    character(len=8), parameter :: all_groups(7) = [character(len=8) :: 'pulse', 'time', &
-        'block', 'method', 'history', 'rocking', 'map']
+    character(len=8), parameter :: all_groups(9) = [character(len=8) :: 'pulse', 'time', &
+        'block', 'method', 'history', 'rocking', 'map', 'records', 'newmark']
 
     character(len=:), allocatable :: path, errmsg
     character(len=4096) :: arg
@@ -76,6 +79,15 @@ program seispulse_driver
         call check_groups(rocking_groups)
         call write_run(output_unit)
         call run_rocking(path, groups, run_output(), stat, errmsg)
+    case ('newmark')
+        call check_groups(newmark_groups)
+        call write_run(output_unit)
+        call run_newmark(path, groups, run_output(), stat, errmsg)
+        if (stat == NEWMARK_ROWS_FAILED) then
+            ! the table is written; some rows failed (each already reported)
+            write(error_unit, '(a)') 'seispulse: error: '//errmsg
+            call finish(1)
+        end if
     case ('')
         call fail(located(path, groups(irun))//'analysis: missing (allowed: '//join(analyses)//')')
     case default

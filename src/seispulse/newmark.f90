@@ -179,7 +179,8 @@ contains
         end if
         call record_pieces_check(accel, stat, errmsg)   ! not empty, finite samples
         if (stat /= SEISPULSE_SUCCESS) return
-        if (.not. (same_size(u_hist, 'u_hist') .and. same_size(w_hist, 'w_hist'))) return
+        if (.not. same_size(u_hist, 'u_hist')) return
+        if (.not. same_size(w_hist, 'w_hist')) return
 
         k_down = 1.0_dp
         k_up = 1.0_dp
@@ -220,43 +221,50 @@ contains
     pure function newmark_mode_name(code) result(name)
         integer, intent(in) :: code  !! NEWMARK_DOWN, NEWMARK_BOTH or NEWMARK_ASYM
         character(len=:), allocatable :: name
-        if (code >= 1 .and. code <= size(mode_names)) then
-            name = trim(mode_names(code))
-        else
-            name = '?'
-        end if
+        name = name_of(code, mode_names)
     end function newmark_mode_name
 
     !> Name of a method code ('exact', 'slammer'; '?' if unknown).
     pure function newmark_method_name(code) result(name)
         integer, intent(in) :: code  !! NEWMARK_EXACT or NEWMARK_SLAMMER
         character(len=:), allocatable :: name
-        if (code >= 1 .and. code <= size(method_names)) then
-            name = trim(method_names(code))
-        else
-            name = '?'
-        end if
+        name = name_of(code, method_names)
     end function newmark_method_name
 
     !> Code of a mode name (0 if unknown).
     pure integer function newmark_mode_code(name)
         character(len=*), intent(in) :: name  !! 'down', 'both' or 'asym'
-        integer :: k
-        newmark_mode_code = 0
-        do k = 1, size(mode_names)
-            if (trim(name) == trim(mode_names(k))) newmark_mode_code = k
-        end do
+        newmark_mode_code = code_of(name, mode_names)
     end function newmark_mode_code
 
     !> Code of a method name (0 if unknown).
     pure integer function newmark_method_code(name)
         character(len=*), intent(in) :: name  !! 'exact' or 'slammer'
-        integer :: k
-        newmark_method_code = 0
-        do k = 1, size(method_names)
-            if (trim(name) == trim(method_names(k))) newmark_method_code = k
-        end do
+        newmark_method_code = code_of(name, method_names)
     end function newmark_method_code
+
+    !> table(code), '?' outside the table.
+    pure function name_of(code, table) result(name)
+        integer, intent(in) :: code
+        character(len=*), intent(in) :: table(:)
+        character(len=:), allocatable :: name
+        if (code >= 1 .and. code <= size(table)) then
+            name = trim(table(code))
+        else
+            name = '?'
+        end if
+    end function name_of
+
+    !> Index of name in table, 0 if absent.
+    pure integer function code_of(name, table)
+        character(len=*), intent(in) :: name
+        character(len=*), intent(in) :: table(:)
+        integer :: k
+        code_of = 0
+        do k = 1, size(table)
+            if (trim(table(k)) == trim(name)) code_of = k
+        end do
+    end function code_of
 
     ! ------------------------------------------------------------------------------
     ! Exact piecewise-linear integration
@@ -611,8 +619,6 @@ contains
                     buf(nsl)%t_peak = real(i - 1, dp) * dt
                 end if
             end if
-            res%u_max = max(res%u_max, u)
-            res%u_min = min(res%u_min, u)
             q = u
             r = v
             s = y
@@ -620,6 +626,9 @@ contains
             if (want_w) w_hist(i) = v * kf / 100.0_dp
         end do
         if (dir /= 0) call close_slide(size(accel) + 1)
+        ! u moves during slides only (and by rounding at rest): extremes at the stops
+        res%u_max = max(res%u_max, u)
+        res%u_min = min(res%u_min, u)
 
         res%final_disp = u / 100.0_dp
         res%u_max = res%u_max / 100.0_dp
@@ -644,6 +653,8 @@ contains
             buf(nsl)%u_stop = u
             if (k > size(accel)) buf(nsl)%u_stop = q
             res%t_end = buf(nsl)%t_stop
+            res%u_max = max(res%u_max, buf(nsl)%u_stop)
+            res%u_min = min(res%u_min, buf(nsl)%u_stop)
         end subroutine close_slide
 
     end subroutine rigid_slammer

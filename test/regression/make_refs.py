@@ -35,6 +35,24 @@ histories need restitution e = 0 (the block rests at its first impact; overturni
 blocks need none); maps use the wall alone (the rectangle's impacts come after the
 pulse, where a stable block cannot overturn: rocking.md 5.4), with cells at least 1e-6
 (relative) away from it.
+
+Analysis 'newmark' (never by running the driver): the record files are read here by a
+small parser of their own (AT2, SLAMMER CSV, two columns, one column; the decimals taken
+exactly), turned over by the polarity and scaled (scale, or target_pga over the PGA,
+optionally rounded to 0.001 g as SLAMMER does); then per ky (or mu) and for the record
+and its inverse (x -1):
+  * method 'exact': the exact rigid-block solution of the record taken as linear between
+    samples, event by event in mpmath (40 digits): while sliding in direction s the
+    speed z obeys z' = s a(t) - ky_s, a quadratic on each step, so the stop is the first
+    root of a quadratic; at rest an onset is where a crosses ky or -ky_up (linear);
+    after the last sample a = 0 and a sliding block decelerates at ky_s; the slip along
+    the plane is K_s times the integral of z;
+  * method 'slammer': SLAMMER's explicit one-way recurrence (sliding.md / the brief of
+    the driver): cm/s^2 with g = 100 g, at rest n = sign(a) if |a| > ky else a/ky,
+    y = a - n ky; sliding y = a - ky; v = v_prev + dt/2 (y + y_prev); v <= 0: v = y = 0;
+    u += dt/2 (v + v_prev).
+With mu the yields and factors are Eq. 1.31 and sliding.md 7.1 (resistances() above, A_g
+= 1 g). A record file that does not exist gives NaN results and status 1 in its rows.
 """
 import math
 import re
@@ -491,9 +509,234 @@ def make_rocking_ref(nml_path, nml):
     print(f"wrote {out} ({len(lines) - 1} rows)")
 
 
+# ---------------------------------------------------------------------------
+# Analysis 'newmark': rigid-block sliding on record files, event by event in mpmath
+# ---------------------------------------------------------------------------
+
+G_STANDARD = mpf("9.80665")
+TO_G = {"g": mpf(1), "m/s2": G_STANDARD, "m/s^2": G_STANDARD, "cm/s2": 100 * G_STANDARD,
+        "cm/s^2": 100 * G_STANDARD, "gal": 100 * G_STANDARD}
+
+
+def read_record(path, fmt, units, dt):
+    """(accel in g, dt) of a record file, values as the exact decimals written."""
+    lines = Path(path).read_text().splitlines()
+    if fmt == "auto" and Path(path).suffix.lower() == ".at2":
+        fmt = "at2"
+    if fmt == "at2":
+        line3 = lines[2].upper()
+        file_units = "cm/s2" if "CM/S" in line3 else "m/s2" if "M/S" in line3 else "g"
+        m = re.search(r"NPTS=\s*(\d+),\s*DT=\s*([0-9.]+)", lines[3].upper())
+        npts, step = int(m.group(1)), mpf(m.group(2))
+        values = [mpf(x) for line in lines[4:] for x in line.split()]
+        assert len(values) == npts
+        return [x / TO_G[file_units] for x in values], step
+    rows = [line.replace(",", " ").split() for line in lines
+            if line.strip() and not line.lstrip().startswith("#")]
+    if len(rows[0]) == 1:
+        values, step = [mpf(r[0]) for r in rows], mpf(dt)
+    else:
+        times = [mpf(r[0]) for r in rows]
+        values, step = [mpf(r[1]) for r in rows], (times[-1] - times[0]) / (len(rows) - 1)
+    scale = TO_G["g" if units == "auto" else units]
+    return [x / scale for x in values], step
+
+
+def first_stop(z, b, c, h):
+    """Smallest x in (0, h] with z + b x + c x^2 = 0 (z >= 0), or None."""
+    if z == 0:
+        roots = [-b / c] if c != 0 else []
+    elif c == 0:
+        roots = [-z / b] if b != 0 else []
+    else:
+        disc = b * b - 4 * c * z
+        if disc < 0:
+            return None
+        sq = mp.sqrt(disc)
+        roots = [(-b - sq) / (2 * c), (-b + sq) / (2 * c)]
+    roots = [x for x in roots if 0 < x <= h]
+    return min(roots) if roots else None
+
+
+def newmark_exact(acc, dt, ky, ky_up, k_dn, k_up):
+    """(max |u|, final u) in g s^2 of the block on the piecewise-linear record acc (g);
+    ky_up = inf: one way."""
+    u = umax = umin = z = mpf(0)
+    d = 0                                 # direction of the slide, 0 at rest
+
+    def yield_of(s):
+        return (ky, k_dn) if s > 0 else (ky_up, k_up)
+
+    for a0, a1 in zip(acc[:-1], acc[1:]):
+        slope = (a1 - a0) / dt
+        x, stopped = mpf(0), 0
+        while True:
+            ax = a0 + slope * x
+            h = dt - x
+            if d != 0:
+                ay, k = yield_of(d)
+                b, c = d * ax - ay, d * slope / 2
+                xs = first_stop(z, b, c, h)
+                if xs is None:            # slides to the end of the step
+                    u += d * k * (z * h + b * h**2 / 2 + c * h**3 / 3)
+                    z += b * h + c * h**2
+                    break
+                u += d * k * (z * xs + b * xs**2 / 2 + c * xs**3 / 3)
+                x, z, stopped, d = x + xs, mpf(0), d, 0
+                umax, umin = max(umax, u), min(umin, u)
+                continue
+            # at rest: an onset now (not the way it just stopped), or a crossing later
+            if stopped != 1 and ax > ky:
+                d = 1
+            elif stopped != -1 and -ax > ky_up:
+                d = -1
+            elif a1 > ky:
+                x, d, stopped = x + (ky - ax) / slope, 1, 0
+            elif -a1 > ky_up:
+                x, d, stopped = x + (-ky_up - ax) / slope, -1, 0
+            else:
+                break
+    if d != 0:                            # after the record a = 0: decelerates at ky
+        ay, k = yield_of(d)
+        u += d * k * z * z / (2 * ay)
+        umax, umin = max(umax, u), min(umin, u)
+    return max(umax, -umin), u
+
+
+def newmark_slammer(acc, dt, ky, g):
+    """(max u, final u) in cm of SLAMMER's one-way recurrence."""
+    gcm = 100 * g
+    t = ky * gcm
+    u_prev = v_prev = y_prev = mpf(0)
+    u_max = mpf(0)
+    for a_g in acc:
+        a = a_g * gcm
+        if v_prev < mpf("1e-15"):         # at rest: n = sign(a) if |a| > ky else a/ky
+            y = a - mp.sign(a) * t if abs(a) > t else mpf(0)
+        else:
+            y = a - t
+        v = v_prev + dt / 2 * (y + y_prev)
+        if v <= 0:
+            v = y = mpf(0)
+        u = u_prev + dt / 2 * (v + v_prev)
+        u_max = max(u_max, u)
+        u_prev, v_prev, y_prev = u, v, y
+    return u_max, u_prev
+
+
+def newmark_header(with_mu):
+    cols = ["record (-)", "pga (g)", "scale (-)"] + (["mu (-)"] if with_mu else [])
+    cols += ["ky (g)", "ky_up (g)"]
+    for which in ("normal", "inverse"):
+        for what in ("max", "final"):
+            cols += [f"{what}_{which} (m)", f"{what}_{which} (cm)"]
+    return ",".join(cols + ["status (-)"])
+
+
+def per_file(group, key, n, default):
+    values = _as_list(group.get(key, default))
+    return values if len(values) == n else values * n
+
+
+def newmark_blocks(nb):
+    """[(mu, ky, ky_up, k_down, k_up)] of &newmark and the mode."""
+    mode = nb.get("mode", "asym" if "mu" in nb else "down").lower()
+    if "mu" in nb:
+        along = bool(nb.get("along_plane", True))
+        blocks = []
+        for mu in _as_list(nb["mu"]):
+            eta1, eta2, k1, k2 = resistances(mu, 1, nb.get("slope_deg", 0.0),
+                                             nb.get("xi_deg", 0.0))
+            if not along:
+                k1 = k2 = mpf(1)
+            # a way that cannot slide (eta = inf, K = 0) keeps K = 1: never used
+            blocks.append((mpf(mu), eta1, eta2, k1 if k1 > 0 else mpf(1),
+                           k2 if k2 > 0 else mpf(1)))
+        return blocks, mode
+    kys = [mpf(k) for k in _as_list(nb["ky"])]
+    if mode == "down":
+        ups = [mp.inf] * len(kys)
+    elif mode == "both":
+        ups = kys
+    else:
+        ups = [mpf(k) for k in per_file(nb, "ky_up", len(kys), None)]
+    kd, ku = (mpf(nb.get("k_down", 1)), mpf(nb.get("k_up", 1))) if mode == "asym" else (1, 1)
+    return [(mp.nan, k, up, mpf(kd), mpf(ku)) for k, up in zip(kys, ups)], mode
+
+
+def newmark_rows(nml_path, nml):
+    nr, nb = nml["records"], nml["newmark"]
+    files = _as_list(nr["files"])
+    n = len(files)
+    fmts = [f.lower() for f in per_file(nr, "format", n, "auto")]
+    units = [u.lower() for u in per_file(nr, "units", n, "auto")]
+    dts = per_file(nr, "dt", n, 0.0)
+    scales = per_file(nr, "scale", n, 1.0)
+    targets = per_file(nr, "target_pga", n, 0.0)
+    pols = per_file(nr, "polarity", n, 1)
+    slammer_rounding = nr.get("pga_rounding", "exact").lower() == "slammer"
+    blocks, mode = newmark_blocks(nb)
+    method = nb.get("method", "exact").lower()
+    g = mpf(nb.get("g", G_STANDARD))
+    with_mu = "mu" in nb
+    rows = []
+    for i, file in enumerate(files):
+        name = Path(file).stem
+        try:
+            acc, dt = read_record(Path(nml_path).parent / file, fmts[i], units[i], dts[i])
+        except FileNotFoundError:
+            acc = None
+        factor = pga = mp.nan
+        if acc is not None:
+            pga_read = max(abs(x) for x in acc)
+            if targets[i] > 0:
+                ref_pga = mp.floor(pga_read * 1000 + mpf(1) / 2) / 1000 if slammer_rounding \
+                    else pga_read
+                factor = mpf(targets[i]) / ref_pga
+            else:
+                factor = mpf(scales[i])
+            factor *= pols[i]
+            acc = [x * factor for x in acc]
+            pga = pga_read * abs(factor)
+        for mu, ky, ky_up, kd, ku in blocks:
+            row = [name, pga, factor] + ([mu] if with_mu else []) + [ky, ky_up]
+            if acc is None:
+                rows.append(row + [mp.nan] * 8 + [mpf(1)])
+                continue
+            for sign in (1, -1):
+                signed = [sign * x for x in acc]
+                if method == "slammer":
+                    if mode != "down":
+                        raise ValueError("slammer references: mode 'down' only")
+                    mx, fin = (x / 100 for x in newmark_slammer(signed, dt, ky, g))
+                else:
+                    mx, fin = (x * g for x in newmark_exact(signed, dt, ky, ky_up, kd, ku))
+                row += [mx, 100 * mx, fin, 100 * fin]
+            rows.append(row + [mpf(0)])
+    return newmark_header(with_mu), rows
+
+
+def csv_cell(x):
+    if isinstance(x, str):
+        return '"' + x.replace('"', '""') + '"'
+    return repr(float(x))
+
+
+def make_newmark_ref(nml_path, nml):
+    with mp.workdps(40):
+        header, rows = newmark_rows(nml_path, nml)
+        lines = [header] + [",".join(csv_cell(x) for x in row) for row in rows]
+    out = Path(nml_path).with_suffix(".ref")
+    out.write_text("\n".join(lines) + "\n")
+    print(f"wrote {out} ({len(lines) - 1} rows)")
+
+
 def make_ref(nml_path):
     nml = parse_namelist(Path(nml_path).read_text())
     analysis = nml.get("run", {}).get("analysis", "pulse").lower()
+    if analysis == "newmark":
+        make_newmark_ref(nml_path, nml)
+        return
     if analysis == "sliding":
         make_sliding_ref(nml_path, nml)
         return
