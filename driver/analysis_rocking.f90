@@ -25,7 +25,8 @@ module driver_rocking
                                      symmetric_block, rocking_block_validate, rock_pulse, &
                                      overturning_map, ROCK_RUN_TIME_LIMIT
     use driver_namelist_scan, only: nml_group, lower
-    use driver_input, only: find_group, located, join, read_optional, given
+    use driver_input, only: find_group, located, join, read_optional, given, list_length, &
+                            list_item
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, finite_positive
     use driver_tables, only: write_tables
@@ -812,29 +813,15 @@ contains
                 errmsg = cname//': only with '//rname
                 return
             end if
-            n = 0
-            do i = size(list), 1, -1
-                if (.not. ieee_is_nan(list(i))) then
-                    n = i
-                    exit
-                end if
-            end do
-            if (n == 0) then
-                errmsg = lname//': no value given'
-                return
-            end if
+            call list_length(list, lname, n, errmsg)   ! no gaps, at least one value
+            if (len(errmsg) > 0) return
             do i = 1, n
                 ok = .false.
                 if (ieee_is_finite(list(i))) ok = list(i) > 0.0_dp .or. &
                     (.not. positive .and. .not. list(i) < 0.0_dp)
                 if (.not. ok) then
-                    if (ieee_is_nan(list(i))) then
-                        errmsg = lname//'('//int_str(i)//'): missing or NaN (give every ' &
-                                 //'value, without gaps)'
-                    else
-                        errmsg = lname//'('//int_str(i)//') = '//real_str(list(i)) &
-                                 //': must be a finite number '//trim(bound)
-                    end if
+                    errmsg = list_item(lname, i)//' = '//real_str(list(i)) &
+                             //': must be a finite number '//trim(bound)
                     return
                 end if
             end do

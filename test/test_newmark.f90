@@ -345,6 +345,8 @@ contains
                                //': half cycle, error ratio at halved dt ~ 4')
                     if (allocated(error)) return
                 end do
+                ! at second order, t_d/256 leaves up to ~2e-4 of the slip (the ratios above
+                ! are the real check; this only rules out converging to a wrong value)
                 call check(error, e_full(3) < 1.0e-3_dp * max(abs(fc%ures), fc%um1), &
                            trim(label)//': full cycle close at N = 256')
                 if (allocated(error)) return

@@ -10,7 +10,8 @@ module seispulse_errors
 
     public :: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
               SEISPULSE_NO_CONVERGENCE, SEISPULSE_NO_BRACKET, SEISPULSE_INTERNAL, SEISPULSE_IO
-    public :: set_error, status_name, real_str, int_str, outside, check_ascending_times
+    public :: set_error, status_name, real_str, int_str, outside, check_ascending_times, &
+              check_output_grid
 
     integer, parameter :: SEISPULSE_SUCCESS = 0        !! no error
     integer, parameter :: SEISPULSE_INVALID_INPUT = 1  !! an argument is out of its domain
@@ -142,5 +143,37 @@ contains
             end if
         end do
     end subroutine check_ascending_times
+
+    !> Optional output histories of an integrator: the times t_grid and the two grids
+    !> x_grid, y_grid all present or all absent, of one size, t_grid finite and ascending.
+    subroutine check_output_grid(x_name, y_name, stat, errmsg, t_grid, x_grid, y_grid)
+        use seispulse_kinds, only: dp
+        character(len=*), intent(in) :: x_name, y_name        !! names of the grids in messages
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp), intent(in), optional :: t_grid(:)           !! output times
+        real(dp), intent(in), optional :: x_grid(:)           !! first output grid
+        real(dp), intent(in), optional :: y_grid(:)           !! second output grid
+        character(len=:), allocatable :: together
+        stat = SEISPULSE_SUCCESS
+        if (.not. (present(t_grid) .or. present(x_grid) .or. present(y_grid))) return
+        together = ': missing (t_grid, '//x_name//' and '//y_name//' go together)'
+        if (.not. present(t_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 't_grid: missing (' &
+                           //x_name//' and '//y_name//' need the output times)')
+        else if (.not. present(x_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, x_name//together)
+        else if (.not. present(y_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, y_name//together)
+        else if (size(x_grid) /= size(t_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, x_name &
+                           //': must have the size of t_grid')
+        else if (size(y_grid) /= size(t_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, y_name &
+                           //': must have the size of t_grid')
+        else
+            call check_ascending_times(t_grid, 't_grid', stat, errmsg)
+        end if
+    end subroutine check_output_grid
 
 end module seispulse_errors

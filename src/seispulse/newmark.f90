@@ -437,7 +437,6 @@ contains
             integer, intent(in) :: d
             real(dp), intent(in) :: t
             logical, intent(in) :: from_slip
-            type(slide_t), allocatable :: grown(:)
             dir = d
             sgn = real(d, dp)
             if (d > 0) then
@@ -450,16 +449,8 @@ contains
             z = 0.0_dp
             zpk = 0.0_dp
             tpk = t
-            if (nsl == size(buf)) then
-                allocate(grown(2 * nsl))
-                grown(1:nsl) = buf
-                call move_alloc(grown, buf)
-            end if
-            nsl = nsl + 1
-            buf(nsl)%direction = d
-            buf(nsl)%t_start = t
-            buf(nsl)%u_start = u
-            buf(nsl)%from_slip = from_slip
+            call append_slide(buf, nsl, slide_t(direction=d, t_start=t, u_start=u, &
+                                                 t_peak=t, from_slip=from_slip))
         end subroutine start_slide
 
         subroutine stop_slide(t)
@@ -523,7 +514,7 @@ contains
         type(newmark_result_t), intent(inout) :: res
         real(dp), intent(out), optional :: u_hist(:), w_hist(:)
 
-        type(slide_t), allocatable :: buf(:), grown(:)
+        type(slide_t), allocatable :: buf(:)
         real(dp) :: gcm, t_dn, t_up, a, nn, y, v, r, s, q, u, kf, tr
         integer :: i, nsl, dir, dnew
         logical :: want_u, want_w
@@ -598,18 +589,9 @@ contains
             if (dnew /= dir) then
                 if (dir /= 0) call close_slide(i)
                 if (dnew /= 0) then
-                    if (nsl == size(buf)) then
-                        allocate(grown(2 * nsl))
-                        grown(1:nsl) = buf
-                        call move_alloc(grown, buf)
-                    end if
-                    nsl = nsl + 1
-                    buf(nsl)%direction = dnew
-                    buf(nsl)%t_start = real(i - 1, dp) * dt
-                    buf(nsl)%u_start = q
-                    buf(nsl)%w_peak = 0.0_dp
-                    buf(nsl)%t_peak = real(i - 1, dp) * dt
-                    buf(nsl)%from_slip = dir /= 0
+                    call append_slide(buf, nsl, slide_t(direction=dnew, &
+                        t_start=real(i - 1, dp) * dt, u_start=q, t_peak=real(i - 1, dp) * dt, &
+                        from_slip=dir /= 0))
                 end if
                 dir = dnew
             end if
@@ -662,6 +644,21 @@ contains
     ! ------------------------------------------------------------------------------
     ! Small helpers
     ! ------------------------------------------------------------------------------
+
+    !> Append a slide to buf(1:nsl), doubling buf when it is full.
+    pure subroutine append_slide(buf, nsl, slide)
+        type(slide_t), allocatable, intent(inout) :: buf(:)
+        integer, intent(inout) :: nsl
+        type(slide_t), intent(in) :: slide
+        type(slide_t), allocatable :: grown(:)
+        if (nsl == size(buf)) then
+            allocate(grown(2 * nsl))
+            grown(1:nsl) = buf
+            call move_alloc(grown, buf)
+        end if
+        nsl = nsl + 1
+        buf(nsl) = slide
+    end subroutine append_slide
 
     !> x > 0 (+inf allowed), not NaN (no ordered comparison with NaN: it traps).
     elemental logical function positive(x)

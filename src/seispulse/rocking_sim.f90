@@ -55,7 +55,7 @@ module seispulse_rocking_sim
                                              ieee_quiet_nan
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
-                                SEISPULSE_INTERNAL, set_error, real_str, check_ascending_times
+                                SEISPULSE_INTERNAL, set_error, real_str, check_output_grid
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_special, only: pi
     use seispulse_pulses, only: pulse_t, pulse_validate, pulse_at, &
@@ -681,33 +681,8 @@ contains
                 return
             end if
         end if
-        if (.not. (present(t_grid) .or. present(theta_grid) .or. present(omega_grid))) return
-        if (.not. present(t_grid)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
-                           't_grid: missing (theta_grid and omega_grid need the output times)')
-            return
-        end if
-        if (.not. present(theta_grid)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
-                           'theta_grid: missing (t_grid, theta_grid and omega_grid go together)')
-            return
-        end if
-        if (.not. present(omega_grid)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
-                           'omega_grid: missing (t_grid, theta_grid and omega_grid go together)')
-            return
-        end if
-        if (size(theta_grid) /= size(t_grid)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
-                           'theta_grid: must have the size of t_grid')
-            return
-        end if
-        if (size(omega_grid) /= size(t_grid)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
-                           'omega_grid: must have the size of t_grid')
-            return
-        end if
-        call check_ascending_times(t_grid, 't_grid', stat, errmsg)
+        call check_output_grid('theta_grid', 'omega_grid', stat, errmsg, t_grid, theta_grid, &
+                               omega_grid)
     end subroutine check_options
 
     !> A well-defined result for the error returns.

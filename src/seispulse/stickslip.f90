@@ -39,7 +39,7 @@ module seispulse_stickslip
                                              ieee_positive_inf
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
-                                SEISPULSE_INTERNAL, set_error, real_str, check_ascending_times
+                                SEISPULSE_INTERNAL, set_error, real_str, check_output_grid
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_pulses, only: pulse_t, pulse_validate, pulse_at, exp_consts_t, exp_consts, &
                                 PULSE_EXPONENTIAL
@@ -165,7 +165,7 @@ contains
         if (stat /= SEISPULSE_SUCCESS) return
         call pulse_pieces_check(p, 'stick-slip', stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call check_grid(t_grid, u_grid, w_grid, stat, errmsg)
+        call check_output_grid('u_grid', 'w_grid', stat, errmsg, t_grid, u_grid, w_grid)
         if (stat /= SEISPULSE_SUCCESS) return
 
         g%src = SRC_PULSE
@@ -201,7 +201,7 @@ contains
         end if
         call record_pieces_check(accel, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call check_grid(t_grid, u_grid, w_grid, stat, errmsg)
+        call check_output_grid('u_grid', 'w_grid', stat, errmsg, t_grid, u_grid, w_grid)
         if (stat /= SEISPULSE_SUCCESS) return
 
         g%src = SRC_RECORD
@@ -664,43 +664,5 @@ contains
         res%u_min = 0.0_dp
         res%t_end = 0.0_dp
     end subroutine empty_result
-
-    !> The output grid: t_grid, u_grid and w_grid all present or all absent, one
-    !> size, t_grid finite and ascending.
-    subroutine check_grid(t_grid, u_grid, w_grid, stat, errmsg)
-        real(dp), intent(in), optional :: t_grid(:)
-        real(dp), intent(in), optional :: u_grid(:)
-        real(dp), intent(in), optional :: w_grid(:)
-        integer, intent(out) :: stat
-        character(len=*), intent(inout), optional :: errmsg
-        stat = SEISPULSE_SUCCESS
-        if (.not. (present(t_grid) .or. present(u_grid) .or. present(w_grid))) return
-        if (.not. present(t_grid)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
-                           't_grid: missing (u_grid and w_grid need the output times)')
-            return
-        end if
-        if (.not. present(u_grid)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
-                           'u_grid: missing (t_grid, u_grid and w_grid go together)')
-            return
-        end if
-        if (.not. present(w_grid)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
-                           'w_grid: missing (t_grid, u_grid and w_grid go together)')
-            return
-        end if
-        if (size(u_grid) /= size(t_grid)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
-                           'u_grid: must have the size of t_grid')
-            return
-        end if
-        if (size(w_grid) /= size(t_grid)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
-                           'w_grid: must have the size of t_grid')
-            return
-        end if
-        call check_ascending_times(t_grid, 't_grid', stat, errmsg)
-    end subroutine check_grid
 
 end module seispulse_stickslip
