@@ -13,6 +13,8 @@ program tester
     use test_rocking_sim, only: collect_rocking_sim
     use test_records, only: collect_records
     use test_newmark, only: collect_newmark
+    use test_sdof, only: collect_sdof
+    use test_sdof_pulse, only: collect_sdof_pulse
     implicit none
     character(len=64) :: wanted
     integer :: npass, nfail, nrun
@@ -62,6 +64,14 @@ program tester
     if (selected('newmark')) then
         call collect_newmark(tests)
         call run_suite('newmark', tests, output_unit, npass, nfail)
+    end if
+    if (selected('sdof')) then
+        call collect_sdof(tests)
+        call run_suite('sdof', tests, output_unit, npass, nfail)
+    end if
+    if (selected('sdof_pulse')) then
+        call collect_sdof_pulse(tests)
+        call run_suite('sdof_pulse', tests, output_unit, npass, nfail)
     end if
     if (nrun == 0) then
         write(error_unit, '(a)') 'unknown suite: '//trim(wanted)

@@ -1,0 +1,1 @@
+"""Closed forms of the linear oscillator (issue 6, placeholder)."""
