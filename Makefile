@@ -19,7 +19,7 @@ VENV     := .venv
 VENV_BIN := $(CURDIR)/$(VENV)/bin
 VENV_PY  := $(VENV_BIN)/python
 STAMP    := $(VENV)/.seispulse-deps
-PIP_PKGS := 'numpy>=1.24' meson meson-python ninja pytest mpmath scipy matplotlib pyslammer
+PIP_PKGS := 'numpy>=1.24' meson meson-python ninja pytest mpmath scipy matplotlib pyslammer eqsig
 # meson and ninja from the venv (ninja is found on PATH)
 MESON    := PATH="$(VENV_BIN):$$PATH" $(VENV_BIN)/meson
 DRIVER   := $(BUILDDIR)/driver/seispulse

@@ -2,6 +2,7 @@
 broadcasting, and turning Fortran status codes into exceptions."""
 
 import numbers
+import re
 
 import numpy as np
 
@@ -115,3 +116,33 @@ def shaped(shape, *arrays):
     if shape == ():
         return tuple(float(a[0]) for a in arrays)
     return tuple(a.reshape(shape) for a in arrays)
+
+
+def record_and_step(accel, dt):
+    """accel and dt from an array and a step, or from a seispulse.records.Record."""
+    if hasattr(accel, "accel") and hasattr(accel, "dt"):
+        if dt is not None and float(dt) != float(accel.dt):
+            raise InvalidInputError(f"dt = {dt!r}: differs from the record's dt = {accel.dt!r}"
+                                    " (leave dt out for a Record)")
+        dt = accel.dt
+        accel = accel.accel
+    rec = as_float_array("accel", accel)
+    if rec.ndim != 1:
+        raise InvalidInputError(f"accel: must be a 1-d array of samples (got shape {rec.shape})")
+    if rec.size == 0:
+        raise InvalidInputError("accel: the record is empty")
+    if dt is None:
+        raise InvalidInputError("dt: the time step of accel (s, > 0) is required")
+    return np.ascontiguousarray(rec), check_positive("dt", dt, " (s)")
+
+
+def raise_record_status(stat, msg, names=None):
+    """raise_for_status, with Fortran element numbers name(i) turned into Python's
+    name[i-1] (accel always; `names` maps more Fortran array names to Python ones)."""
+    if stat != 0:
+        text = msg.decode("ascii", "replace") if isinstance(msg, bytes) else str(msg)
+        table = {"accel": "accel", **(names or {})}
+        pattern = r"\b(" + "|".join(map(re.escape, table)) + r")\((\d+)\)"
+        text = re.sub(pattern, lambda m: f"{table[m.group(1)]}[{int(m.group(2)) - 1}]",
+                      text.strip())
+        raise_for_status(stat, text)

@@ -16,7 +16,6 @@ Units: accelerations and yields in g, time in s, displacements in m, velocities 
 m/s. Positive ground acceleration drives positive (downslope) sliding.
 """
 
-import re
 from collections import namedtuple
 
 import numpy as np
@@ -74,34 +73,6 @@ def incline(mu, slope_deg, xi_deg=0.0, along_plane=True):
     return Incline(*map(float, out))
 
 
-def _record_and_step(accel, dt):
-    """accel and dt from an array and a step, or from a seispulse.records.Record."""
-    if hasattr(accel, "accel") and hasattr(accel, "dt"):
-        if dt is not None and float(dt) != float(accel.dt):
-            raise InvalidInputError(f"dt = {dt!r}: differs from the record's dt = {accel.dt!r}"
-                                    " (leave dt out for a Record)")
-        dt = accel.dt
-        accel = accel.accel
-    rec = _core.as_float_array("accel", accel)
-    if rec.ndim != 1:
-        raise InvalidInputError(f"accel: must be a 1-d array of samples (got shape {rec.shape})")
-    if rec.size == 0:
-        raise InvalidInputError("accel: the record is empty")
-    if dt is None:
-        raise InvalidInputError("dt: the time step of accel (s, > 0) is required")
-    return np.ascontiguousarray(rec), _core.check_positive("dt", dt, " (s)")
-
-
-def _raise(stat, msg):
-    """raise_for_status, with the Fortran sample number accel(i) as Python's accel[i-1]."""
-    if stat != 0:
-        text = msg.decode("ascii", "replace") if isinstance(msg, bytes) else str(msg)
-        m = re.match(r"\s*accel\((\d+)\)", text)
-        if m:
-            text = f"accel[{int(m.group(1)) - 1}]" + text.strip()[m.end() - m.start():]
-        _core.raise_for_status(stat, text)
-
-
 def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
           g=STANDARD_GRAVITY, *, k_down=1.0, k_up=1.0, incline=None, history=False,
           intervals=False):
@@ -141,7 +112,7 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
         max_disp (m), final_disp (m), u_max, u_min (m), max_vel (m/s), t_end (s), and the
         optional histories and intervals.
     """
-    rec, step = _record_and_step(accel, dt)
+    rec, step = _core.record_and_step(accel, dt)
     mode = _core.check_choice("mode", mode, MODES)
     method = _core.check_choice("method", method, METHODS)
     g = _core.check_positive("g", g, " (m/s^2)")
@@ -172,7 +143,7 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
             raise InvalidInputError("history, intervals: only for a single ky")
         flat = [_core.flat(arr[k], shape) for k in ("ky", "ky_up", "k_down", "k_up")]
         summary, stat, msg = sp_newmark_rigid_many(rec, step, mode_code, *flat, method_code, g)
-        _raise(stat, msg)
+        _core.raise_record_status(stat, msg)
         cols = [summary[:, j].reshape(shape) for j in range(6)]
         return Rigid(*cols, None, None, None, None)
     scalars = [float(arr[k]) for k in ("ky", "ky_up", "k_down", "k_up")]
@@ -181,7 +152,7 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
     while True:
         u, w, slides, nslides, summary, stat, msg = sp_newmark_rigid(
             rec, step, mode_code, *scalars, method_code, g, nh, nmax)
-        _raise(stat, msg)
+        _core.raise_record_status(stat, msg)
         if not intervals or nslides <= nmax:
             break
         nmax = nslides

@@ -1,5 +1,777 @@
-!> Linear oscillator on records (placeholder; issue 6).
+!> The linear oscillator on accelerograms: exact response histories and response
+!> spectra (oscillator.md 2.4, Eqs. 2.27-2.33), the design envelope and the
+!> normalized spectral shape of the spectral theory (СНиП II-7-81).
+!>
+!> The oscillator (natural period T, omega = 2 pi/T, viscous damping ratio zeta; the
+!> book's gamma = 2 zeta) starts from rest under the ground acceleration a_g:
+!>     z'' + 2 zeta omega z' + omega^2 z = -a_g(t),   z(0) = z'(0) = 0,
+!> with z the displacement relative to the ground and a_abs = a_g + z'' =
+!> -(2 zeta omega z' + omega^2 z) the absolute acceleration of the mass.
+!>
+!> Exact recurrence. The record is linear between samples (as everywhere in
+!> seispulse), so each step is solved exactly (Nigam & Jennings 1968): with the state
+!> x = (z, z'), x' = A x - e a_g, A = [0 1; -omega^2 -2 zeta omega], e = (0, 1),
+!>     x(h) = e^(hA) x(0) - h phi_1(hA) e a_n - h phi_2(hA) e (a_(n+1) - a_n),
+!> where phi_k are the exponential phi functions. A function f of the 2x2 matrix hA is
+!> f(hA) = alpha I + beta hA with beta = Im f(mu)/Im mu, alpha = Re f(mu) - beta Re mu
+!> at the eigenvalue mu = h(-zeta omega + i omega_d) (Cayley-Hamilton), and f(mu)
+!> comes from `complex_phis`: a series near 0, so no coefficient loses digits when
+!> h << T (the printed Nigam-Jennings coefficients lose ~ eps/(omega h)^2 there).
+!>
+!> True maxima between samples (SDOF_PEAKS_EXACT, the default). Within a step
+!> each response q in {z, z', a_abs} is a line plus a damped sinusoid, and q'' is a
+!> damped sinusoid e^(-zeta omega tau) (E cos omega_d tau + F sin omega_d tau), whose
+!> zeros are pi/omega_d apart. On a step shorter than T_d/2 (longer steps are split
+!> into equal sub-steps, still exact) q'' therefore has at most one zero, found from
+!> its phase, and q' is monotone on each side of it: every interior extremum of q is
+!> bracketed by a sign change of q' and found by safeguarded Newton (the bracket
+!> shrinks at every step, at most 100 steps). A step is examined only when the bound
+!> |q| <= max(|q_n|, |q_(n+1)|) + h^2 max|q''|/8 can beat the running maximum, so the
+!> cost is that of the recurrence except near peaks. SDOF_PEAKS_SAMPLES takes the
+!> maxima over the samples only (what eqsig, OpenSees and most programs report).
+!> Maxima are taken over the duration of the record (no free vibration after it);
+!> T = 0 is the ground itself: SD = SV = 0, SA = PGA.
+!>
+!> Spectra run one (period, damping) pair per OpenMP thread when the library is built
+!> with OpenMP; each pair is computed by the same serial code, so the results are
+!> identical to a serial run, bit for bit.
 module seispulse_sdof
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error, &
+                                real_str, int_str
+    use seispulse_special, only: complex_phis, pi
+    use seispulse_pieces, only: record_pieces_check
+    !$ use omp_lib, only: omp_set_num_threads, omp_get_max_threads
     implicit none
     private
+
+    public :: sdof_step_t, sdof_step, sdof_check, sdof_response, sdof_spectrum
+    public :: pseudo_spectra, design_envelope, spectral_shape, sdof_threads
+    public :: SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES
+
+    integer, parameter :: SDOF_PEAKS_EXACT = 1    !! true maxima, between samples too
+    integer, parameter :: SDOF_PEAKS_SAMPLES = 2  !! maxima over the samples only
+
+    !> Safeguarded Newton: iteration limit (each step at least halves the bracket or
+    !> converges quadratically, so 100 is never reached in double precision).
+    integer, parameter :: max_newton = 100
+
+    !> One exact step of length h for a given oscillator: the state after the step is
+    !>     z+ = e11 z + e12 v + b1 a_n + c1 a_(n+1)
+    !>     v+ = e21 z + e22 v + b2 a_n + c2 a_(n+1)      (a in the units the b, c expect).
+    type :: sdof_step_t
+        real(dp) :: omega = 0.0_dp  !! natural circular frequency (rad/s)
+        real(dp) :: zeta = 0.0_dp   !! damping ratio
+        real(dp) :: wd = 0.0_dp     !! damped circular frequency omega sqrt(1 - zeta^2) (rad/s)
+        real(dp) :: h = 0.0_dp      !! step (s)
+        real(dp) :: e11 = 1.0_dp, e12 = 0.0_dp, e21 = 0.0_dp, e22 = 1.0_dp
+        real(dp) :: b1 = 0.0_dp, b2 = 0.0_dp, c1 = 0.0_dp, c2 = 0.0_dp
+        real(dp) :: inv_h = 0.0_dp   !! 1/h (1/s)
+        real(dp) :: inv_wd = 0.0_dp  !! 1/omega_d (s)
+        real(dp) :: h4_64 = 0.0_dp   !! h^4/64 (s^4): the interior-peak filter of exact_step
+    end type sdof_step_t
+
+    !> The running maximum of one response quantity.
+    type :: peak_t
+        real(dp) :: value = 0.0_dp  !! largest |q| so far
+        real(dp) :: time = 0.0_dp   !! where it occurs (s)
+    end type peak_t
+
+contains
+
+    ! ------------------------------------------------------------------------------
+    ! Checks
+    ! ------------------------------------------------------------------------------
+
+    !> Check a period and a damping ratio: 0 <= T finite, 0 <= zeta < 1. `name` prefixes
+    !> the message (e.g. 'periods(3)').
+    subroutine sdof_check(period, damping, stat, errmsg, period_name, damping_name)
+        real(dp), intent(in) :: period                        !! natural period (s)
+        real(dp), intent(in) :: damping                       !! damping ratio
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        character(len=*), intent(in), optional :: period_name   !! name in messages
+        character(len=*), intent(in), optional :: damping_name  !! name in messages
+        character(len=:), allocatable :: pname, dname
+        stat = SEISPULSE_SUCCESS
+        pname = 'period'
+        if (present(period_name)) pname = period_name
+        dname = 'damping'
+        if (present(damping_name)) dname = damping_name
+        if (.not. ieee_is_finite(period)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, pname//' = ' &
+                           //real_str(period)//': the period must be finite and >= 0 (s)')
+        else if (period < 0.0_dp) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, pname//' = ' &
+                           //real_str(period)//': the period must be finite and >= 0 (s)')
+        else if (.not. ieee_is_finite(damping)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, dname//' = ' &
+                           //real_str(damping)//': the damping ratio must be in [0, 1)')
+        else if (damping < 0.0_dp .or. damping >= 1.0_dp) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, dname//' = ' &
+                           //real_str(damping)//': the damping ratio must be in [0, 1)')
+        end if
+    end subroutine sdof_check
+
+    !> Check a record, its step and gravity.
+    subroutine check_record(accel, dt, g, stat, errmsg)
+        real(dp), intent(in) :: accel(:), dt, g
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        call record_pieces_check(accel, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        if (.not. ieee_is_finite(dt)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'dt = '//real_str(dt) &
+                           //': the time step must be finite and > 0 (s)')
+        else if (dt <= 0.0_dp) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'dt = '//real_str(dt) &
+                           //': the time step must be finite and > 0 (s)')
+        else if (.not. ieee_is_finite(g)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(g) &
+                           //': gravity must be finite and > 0 (m/s^2)')
+        else if (g <= 0.0_dp) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(g) &
+                           //': gravity must be finite and > 0 (m/s^2)')
+        end if
+    end subroutine check_record
+
+    ! ------------------------------------------------------------------------------
+    ! The exact step
+    ! ------------------------------------------------------------------------------
+
+    !> Coefficients of one exact step of length h (s) for period T > 0 (s) and damping
+    !> 0 <= zeta < 1, for a_g in m/s^2 (multiply b, c by g for a_g in g). Unchecked.
+    pure function sdof_step(period, zeta, h) result(st)
+        real(dp), intent(in) :: period  !! natural period (s), > 0
+        real(dp), intent(in) :: zeta    !! damping ratio, in [0, 1)
+        real(dp), intent(in) :: h       !! step (s), > 0
+        type(sdof_step_t) :: st
+        real(dp) :: a0, bt0, a1, bt1, a2, bt2, aq, bq, zwh
+        st%omega = 2.0_dp * pi / period
+        st%zeta = zeta
+        st%wd = st%omega * sqrt((1.0_dp - zeta) * (1.0_dp + zeta))
+        st%h = h
+        st%inv_h = 1.0_dp / h
+        st%inv_wd = 1.0_dp / st%wd
+        st%h4_64 = h**4 / 64.0_dp
+        zwh = zeta * st%omega * h
+        call matrix_functions(st, h, a0, bt0, a1, bt1, a2, bt2)
+        ! e^(hA) = a0 I + bt0 hA
+        st%e11 = a0 + zwh * bt0
+        st%e12 = bt0 * h
+        st%e21 = -bt0 * st%omega**2 * h
+        st%e22 = a0 - zwh * bt0
+        ! forcing -a_g: -h (phi_1 - phi_2)(hA) e a_n - h phi_2(hA) e a_(n+1); F e = (b h, a - b zwh)
+        aq = a1 - a2
+        bq = bt1 - bt2
+        st%b1 = -h * (bq * h)
+        st%b2 = -h * (aq - zwh * bq)
+        st%c1 = -h * (bt2 * h)
+        st%c2 = -h * (a2 - zwh * bt2)
+    end function sdof_step
+
+    !> Re f(mu) and beta = Im f(mu)/Im mu for f = exp, phi_1, phi_2 at mu = tau lambda,
+    !> lambda = -zeta omega + i omega_d: f(tau A) = (Re f + beta zeta omega tau) I
+    !> + beta tau A. Returned as (a_k, b_k) with a_k = Re f(mu) (the zeta terms are
+    !> added by the callers, where they belong).
+    pure subroutine matrix_functions(st, tau, a0, b0, a1, b1, a2, b2)
+        type(sdof_step_t), intent(in) :: st
+        real(dp), intent(in) :: tau
+        real(dp), intent(out) :: a0, b0, a1, b1, a2, b2
+        complex(dp) :: mu, p0, p1, p2
+        real(dp) :: im_mu
+        mu = cmplx(-st%zeta * st%omega * tau, st%wd * tau, dp)
+        call complex_phis(mu, p0, p1, p2)
+        im_mu = st%wd * tau
+        if (im_mu > 0.0_dp) then
+            b0 = aimag(p0) / im_mu
+            b1 = aimag(p1) / im_mu
+            b2 = aimag(p2) / im_mu
+        else
+            ! tau = 0: f'(0)
+            b0 = 1.0_dp
+            b1 = 0.5_dp
+            b2 = 1.0_dp / 6.0_dp
+        end if
+        a0 = real(p0, dp)
+        a1 = real(p1, dp)
+        a2 = real(p2, dp)
+    end subroutine matrix_functions
+
+    !> The state (z, v) at tau inside a step that starts at (z0, v0) with a_g = a0 + s tau
+    !> (m/s^2): x(tau) = e^(tau A) x0 - tau phi_1(tau A) e a0 - tau^2 phi_2(tau A) e s.
+    pure subroutine state_at(st, z0, v0, a0, s, tau, z, v)
+        type(sdof_step_t), intent(in) :: st
+        real(dp), intent(in) :: z0, v0, a0, s, tau
+        real(dp), intent(out) :: z, v
+        real(dp) :: f0, g0, f1, g1, f2, g2, zwt, w1, w2
+        call matrix_functions(st, tau, f0, g0, f1, g1, f2, g2)
+        zwt = st%zeta * st%omega * tau
+        w1 = tau * a0
+        w2 = tau * tau * s
+        z = (f0 + zwt * g0) * z0 + g0 * tau * v0 - g1 * tau * w1 - g2 * tau * w2
+        v = -g0 * st%omega**2 * tau * z0 + (f0 - zwt * g0) * v0 &
+            - (f1 - zwt * g1) * w1 - (f2 - zwt * g2) * w2
+    end subroutine state_at
+
+    ! ------------------------------------------------------------------------------
+    ! Response history
+    ! ------------------------------------------------------------------------------
+
+    !> Response of the oscillator to a record, at the samples: relative displacement (m),
+    !> relative velocity (m/s) and absolute acceleration (g). T = 0 gives the ground
+    !> motion itself (z = z' = 0, a_abs = a_g).
+    subroutine sdof_response(accel, dt, period, damping, g, disp, vel, acc, stat, errmsg)
+        real(dp), intent(in) :: accel(:)                      !! ground acceleration (g), at t = (i-1) dt
+        real(dp), intent(in) :: dt                            !! time step (s), > 0
+        real(dp), intent(in) :: period                        !! natural period (s), >= 0
+        real(dp), intent(in) :: damping                       !! damping ratio, in [0, 1)
+        real(dp), intent(in) :: g                             !! gravity (m/s^2), > 0
+        real(dp), intent(out) :: disp(:)                      !! relative displacement (m), size(accel)
+        real(dp), intent(out) :: vel(:)                       !! relative velocity (m/s), size(accel)
+        real(dp), intent(out) :: acc(:)                       !! absolute acceleration (g), size(accel)
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        type(sdof_step_t) :: st
+        integer :: i, n
+        real(dp) :: z, v, zn, w2, zw2
+        call check_record(accel, dt, g, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        call sdof_check(period, damping, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        n = size(accel)
+        if (size(disp) /= n .or. size(vel) /= n .or. size(acc) /= n) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'disp, vel, acc: need ' &
+                           //int_str(n)//' elements each (the record length)')
+            return
+        end if
+        if (period <= 0.0_dp) then
+            disp = 0.0_dp
+            vel = 0.0_dp
+            acc = accel
+            return
+        end if
+        st = sdof_step(period, damping, dt)
+        w2 = st%omega**2
+        zw2 = 2.0_dp * damping * st%omega
+        z = 0.0_dp
+        v = 0.0_dp
+        disp(1) = 0.0_dp
+        vel(1) = 0.0_dp
+        acc(1) = 0.0_dp
+        do i = 1, n - 1
+            zn = st%e11 * z + st%e12 * v + g * (st%b1 * accel(i) + st%c1 * accel(i + 1))
+            v = st%e21 * z + st%e22 * v + g * (st%b2 * accel(i) + st%c2 * accel(i + 1))
+            z = zn
+            disp(i + 1) = z
+            vel(i + 1) = v
+            acc(i + 1) = -(zw2 * v + w2 * z) / g
+        end do
+    end subroutine sdof_response
+
+    ! ------------------------------------------------------------------------------
+    ! Spectra
+    ! ------------------------------------------------------------------------------
+
+    !> Response spectra of a record: for every period T_i and damping zeta_j the largest
+    !> |z| (sd, m), |z'| (sv, m/s) and |a_abs| (sa, g) over the record, optionally with
+    !> the times (s from the first sample) where they occur. Pseudo-spectra follow from
+    !> `pseudo_spectra`. `peaks` = SDOF_PEAKS_EXACT (default: true maxima between
+    !> samples too) or SDOF_PEAKS_SAMPLES. `threads` > 0 sets the OpenMP thread count
+    !> for this call (0 or absent: the OpenMP default); the results do not depend on it.
+    subroutine sdof_spectrum(accel, dt, periods, dampings, g, sd, sv, sa, stat, errmsg, &
+                             peaks, threads, t_sd, t_sv, t_sa)
+        real(dp), intent(in) :: accel(:)                      !! ground acceleration (g)
+        real(dp), intent(in) :: dt                            !! time step (s), > 0
+        real(dp), intent(in) :: periods(:)                    !! natural periods (s), >= 0
+        real(dp), intent(in) :: dampings(:)                   !! damping ratios, in [0, 1)
+        real(dp), intent(in) :: g                             !! gravity (m/s^2), > 0
+        real(dp), intent(out) :: sd(:, :)                     !! max |z| (m), (period, damping)
+        real(dp), intent(out) :: sv(:, :)                     !! max |z'| (m/s)
+        real(dp), intent(out) :: sa(:, :)                     !! max |a_abs| (g)
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        integer, intent(in), optional :: peaks                !! SDOF_PEAKS_EXACT or _SAMPLES
+        integer, intent(in), optional :: threads              !! OpenMP threads (0: default)
+        real(dp), intent(out), optional :: t_sd(:, :)         !! time of max |z| (s)
+        real(dp), intent(out), optional :: t_sv(:, :)         !! time of max |z'| (s)
+        real(dp), intent(out), optional :: t_sa(:, :)         !! time of max |a_abs| (s)
+        integer :: np, nd, k, i, j, mode
+        real(dp) :: tz(size(periods), size(dampings)), tv(size(periods), size(dampings)), &
+                    ta(size(periods), size(dampings))
+        type(peak_t) :: pz, pv, pa
+        call check_record(accel, dt, g, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        np = size(periods)
+        nd = size(dampings)
+        do i = 1, np
+            call sdof_check(periods(i), 0.0_dp, stat, errmsg, period_name='periods(' &
+                            //int_str(i)//')')
+            if (stat /= SEISPULSE_SUCCESS) return
+        end do
+        do j = 1, nd
+            call sdof_check(0.0_dp, dampings(j), stat, errmsg, damping_name='dampings(' &
+                            //int_str(j)//')')
+            if (stat /= SEISPULSE_SUCCESS) return
+        end do
+        if (any(shape(sd) /= [np, nd]) .or. any(shape(sv) /= [np, nd]) &
+            .or. any(shape(sa) /= [np, nd])) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'sd, sv, sa: need shape (' &
+                           //int_str(np)//', '//int_str(nd)//') (periods, dampings)')
+            return
+        end if
+        if (.not. times_fit(t_sd) .or. .not. times_fit(t_sv) .or. .not. times_fit(t_sa)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 't_sd, t_sv, t_sa: need ' &
+                           //'shape ('//int_str(np)//', '//int_str(nd)//') (periods, dampings)')
+            return
+        end if
+        mode = SDOF_PEAKS_EXACT
+        if (present(peaks)) mode = peaks
+        if (mode /= SDOF_PEAKS_EXACT .and. mode /= SDOF_PEAKS_SAMPLES) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'peaks = '//int_str(mode) &
+                           //': must be SDOF_PEAKS_EXACT (1) or SDOF_PEAKS_SAMPLES (2)')
+            return
+        end if
+        if (present(threads)) then
+            if (threads < 0) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'threads = ' &
+                               //int_str(threads)//': must be >= 0 (0: the OpenMP default)')
+                return
+            end if
+        end if
+        call run_spectrum()
+    contains
+        logical function times_fit(t)
+            real(dp), intent(in), optional :: t(:, :)
+            times_fit = .true.
+            if (present(t)) times_fit = all(shape(t) == [np, nd])
+        end function times_fit
+
+        subroutine run_spectrum()
+            integer :: nthreads
+            nthreads = 0
+            if (present(threads)) nthreads = threads
+            !$ if (nthreads == 0) nthreads = omp_get_max_threads()
+            ! one (period, damping) pair per iteration; dynamic: short periods cost more
+            !$omp parallel do schedule(dynamic, 1) num_threads(max(nthreads, 1)) &
+            !$omp default(shared) private(k, i, j, pz, pv, pa)
+            do k = 1, np * nd
+                i = mod(k - 1, np) + 1
+                j = (k - 1) / np + 1
+                call oscillator_peaks(accel, dt, periods(i), dampings(j), g, mode, pz, pv, pa)
+                sd(i, j) = pz%value
+                sv(i, j) = pv%value
+                sa(i, j) = pa%value
+                tz(i, j) = pz%time
+                tv(i, j) = pv%time
+                ta(i, j) = pa%time
+            end do
+            !$omp end parallel do
+            if (present(t_sd)) t_sd = tz
+            if (present(t_sv)) t_sv = tv
+            if (present(t_sa)) t_sa = ta
+        end subroutine run_spectrum
+    end subroutine sdof_spectrum
+
+    !> Number of OpenMP threads a spectrum uses by default (1 without OpenMP).
+    function sdof_threads() result(n)
+        integer :: n
+        n = 1
+        !$ n = omp_get_max_threads()
+    end function sdof_threads
+
+    !> Maxima of |z| (m), |z'| (m/s) and |a_abs| (g) for one oscillator on a valid record.
+    subroutine oscillator_peaks(accel, dt, period, zeta, g, mode, pz, pv, pa)
+        real(dp), intent(in) :: accel(:), dt, period, zeta, g
+        integer, intent(in) :: mode
+        type(peak_t), intent(out) :: pz, pv, pa
+        type(sdof_step_t) :: st
+        integer :: i, n, m
+        real(dp) :: z, v, zn, w2, zw2
+        n = size(accel)
+        if (period <= 0.0_dp) then
+            ! the ground itself: a_abs = a_g, linear between samples
+            pz = peak_t(0.0_dp, 0.0_dp)
+            pv = peak_t(0.0_dp, 0.0_dp)
+            pa = peak_t(abs(accel(1)), 0.0_dp)
+            do i = 2, n
+                if (abs(accel(i)) > pa%value) pa = peak_t(abs(accel(i)), (i - 1) * dt)
+            end do
+            return
+        end if
+        ! at t = 0 everything is zero (a_abs = -(2 zeta omega z' + omega^2 z) = 0)
+        pz = peak_t(0.0_dp, 0.0_dp)
+        pv = peak_t(0.0_dp, 0.0_dp)
+        pa = peak_t(0.0_dp, 0.0_dp)
+        if (mode == SDOF_PEAKS_SAMPLES) then
+            st = sdof_step(period, zeta, dt)
+            w2 = st%omega**2
+            zw2 = 2.0_dp * zeta * st%omega
+            z = 0.0_dp
+            v = 0.0_dp
+            do i = 1, n - 1
+                zn = st%e11 * z + st%e12 * v + g * (st%b1 * accel(i) + st%c1 * accel(i + 1))
+                v = st%e21 * z + st%e22 * v + g * (st%b2 * accel(i) + st%c2 * accel(i + 1))
+                z = zn
+                if (abs(z) > pz%value) pz = peak_t(abs(z), i * dt)
+                if (abs(v) > pv%value) pv = peak_t(abs(v), i * dt)
+                if (abs(zw2 * v + w2 * z) > pa%value) pa = peak_t(abs(zw2 * v + w2 * z), i * dt)
+            end do
+        else
+            ! sub-steps shorter than half a damped period (see the module header)
+            m = sub_steps(period, zeta, dt)
+            st = sdof_step(period, zeta, dt / m)
+            call exact_run(st, accel, g, dt, m, pz, pv, pa)
+        end if
+        pa%value = pa%value / g
+    end subroutine oscillator_peaks
+
+    !> Sub-steps per record step so that each is shorter than half a damped period.
+    pure function sub_steps(period, zeta, dt) result(m)
+        real(dp), intent(in) :: period, zeta, dt
+        integer :: m
+        real(dp) :: td, r
+        td = period / sqrt((1.0_dp - zeta) * (1.0_dp + zeta))
+        r = 2.0_dp * dt / td
+        if (r < 1.0_dp) then
+            m = 1
+        else if (r < 1.0e6_dp) then
+            m = int(r) + 1
+        else
+            m = 1000001  ! T below a millionth of dt: the response is the ground's
+        end if
+    end function sub_steps
+
+    !> The exact run with maxima between the samples (module header): m exact sub-steps
+    !> per record step (a_g is linear in the step, so sub-samples are exact). Maxima
+    !> of a_abs in m/s^2. The filter is written out per quantity, on local scalars:
+    !> this is the hot loop of every spectrum.
+    subroutine exact_run(st, accel, g, dt, m, pz, pv, pa)
+        type(sdof_step_t), intent(in) :: st
+        real(dp), intent(in) :: accel(:), g, dt
+        integer, intent(in) :: m
+        type(peak_t), intent(inout) :: pz, pv, pa
+        real(dp) :: z, v, z1, v1, a0, a1, s, t0, w2, zw, zw2, h, h4, d2_0, d2_1, d3_0, d3_1
+        real(dp) :: d4_0, q0, q1, dq0, dq1, ddq0, ddq1, f, gap, mz, mv, ma, qa, qb, bound2
+        integer :: j, i, k, nsteps
+        h = st%h
+        h4 = st%h4_64
+        w2 = st%omega**2
+        zw = st%zeta * st%omega
+        zw2 = 2.0_dp * zw
+        z = 0.0_dp
+        v = 0.0_dp
+        d2_1 = -g * accel(1)
+        mz = pz%value
+        mv = pv%value
+        ma = pa%value
+        nsteps = (size(accel) - 1) * m
+        do j = 1, nsteps
+            if (m == 1) then
+                i = j
+                a0 = g * accel(i)
+                a1 = g * accel(i + 1)
+                t0 = (i - 1) * dt
+            else
+                i = (j - 1) / m + 1
+                k = j - (i - 1) * m
+                qa = real(k - 1, dp) / m
+                qb = real(k, dp) / m
+                a0 = g * ((1.0_dp - qa) * accel(i) + qa * accel(i + 1))
+                a1 = g * ((1.0_dp - qb) * accel(i) + qb * accel(i + 1))
+                if (k == 1) a0 = g * accel(i)
+                if (k == m) a1 = g * accel(i + 1)
+                t0 = (i - 1) * dt + (k - 1) * h
+            end if
+            z1 = st%e11 * z + st%e12 * v + st%b1 * a0 + st%c1 * a1
+            v1 = st%e21 * z + st%e22 * v + st%b2 * a0 + st%c2 * a1
+            s = (a1 - a0) * st%inv_h
+            ! derivatives of z at both ends (z'' is continuous: carried over; the third and
+            ! fourth use this step's slope)
+            d2_0 = d2_1
+            d2_1 = -(a1 + zw2 * v1 + w2 * z1)
+            d3_0 = -(s + zw2 * d2_0 + w2 * v)
+            ! Inside the step z'' = e^(-zeta omega tau) (e cos(wd tau) + f sin(wd tau)) with
+            ! e = z''(0) and f = (z'''(0) + zeta omega e)/wd, so |z''| <= R = sqrt(e^2 + f^2).
+            ! The second derivatives of z' and of a_abs = a_g + z'' (a_g'' = 0) are the same
+            ! damped sinusoid differentiated once and twice, of amplitudes omega R and
+            ! omega^2 R. An interior |q| can exceed max(|q0|, |q1|) by h^2 max|q''|/8 at
+            ! most: look inside the step only when that can beat the running maximum.
+            f = (d3_0 + zw * d2_0) * st%inv_wd
+            bound2 = (d2_0 * d2_0 + f * f) * h4
+            ! q = z
+            if (abs(z1) > mz) then
+                mz = abs(z1)
+                pz = peak_t(mz, t0 + h)
+            end if
+            gap = mz - max(abs(z), abs(z1))
+            if (gap * gap < bound2) then
+                call search_step(st, z, v, a0, s, t0, 1, z, z1, v, v1, d2_0, d2_1, f, pz)
+                mz = pz%value
+            end if
+            ! q = z'
+            if (abs(v1) > mv) then
+                mv = abs(v1)
+                pv = peak_t(mv, t0 + h)
+            end if
+            gap = mv - max(abs(v), abs(v1))
+            if (gap * gap < w2 * bound2) then
+                d3_1 = -(s + zw2 * d2_1 + w2 * v1)
+                d4_0 = -(zw2 * d3_0 + w2 * d2_0)
+                f = (d4_0 + zw * d3_0) * st%inv_wd
+                call search_step(st, z, v, a0, s, t0, 2, v, v1, d2_0, d2_1, d3_0, d3_1, f, pv)
+                mv = pv%value
+            end if
+            ! q = a_abs = -(2 zeta omega z' + omega^2 z) = a_g + z''
+            q0 = a0 + d2_0
+            q1 = a1 + d2_1
+            if (abs(q1) > ma) then
+                ma = abs(q1)
+                pa = peak_t(ma, t0 + h)
+            end if
+            gap = ma - max(abs(q0), abs(q1))
+            if (gap * gap < w2 * w2 * bound2) then
+                d3_1 = -(s + zw2 * d2_1 + w2 * v1)
+                d4_0 = -(zw2 * d3_0 + w2 * d2_0)
+                dq0 = s + d3_0
+                dq1 = s + d3_1
+                ddq0 = d4_0
+                ddq1 = -(zw2 * d3_1 + w2 * d2_1)
+                f = (-(zw2 * d4_0 + w2 * d3_0) + zw * d4_0) * st%inv_wd
+                call search_step(st, z, v, a0, s, t0, 3, q0, q1, dq0, dq1, ddq0, ddq1, f, pa)
+                ma = pa%value
+            end if
+            z = z1
+            v = v1
+        end do
+    end subroutine exact_run
+
+    !> The interior maximum of quantity kq (1 z, 2 z', 3 a_abs) on a step that starts at
+    !> (z0, v0) with a_g = a0 + s tau, given q, q', q'' at both ends and f of q''
+    !> (see exact_step): split at the zero of q'' if there is one, then look for a sign
+    !> change of q' on each monotone side.
+    subroutine search_step(st, z0, v0, a0, s, t0, kq, qa, qb, dqa, dqb, ddqa, ddqb, f, p)
+        type(sdof_step_t), intent(in) :: st
+        real(dp), intent(in) :: z0, v0, a0, s, t0
+        integer, intent(in) :: kq
+        real(dp), intent(in) :: qa, qb, dqa, dqb, ddqa, ddqb, f
+        type(peak_t), intent(inout) :: p
+        real(dp) :: h, phase, tau_s, q_s, dq_s, ddq_s
+        h = st%h
+        if (ddqa * ddqb < 0.0_dp) then
+            ! one zero of q'' inside, where wd tau + atan2(f, e) = pi/2 (mod pi)
+            phase = modulo(atan2(f, ddqa) + 0.5_dp * pi, pi)
+            tau_s = min(max(phase * st%inv_wd, 0.0_dp), h)
+            call q_at(st, z0, v0, a0, s, kq, tau_s, q_s, dq_s, ddq_s)
+            call piece_peak(st, z0, v0, a0, s, t0, kq, 0.0_dp, tau_s, qa, dqa, q_s, dq_s, p)
+            call piece_peak(st, z0, v0, a0, s, t0, kq, tau_s, h, q_s, dq_s, qb, dqb, p)
+        else
+            call piece_peak(st, z0, v0, a0, s, t0, kq, 0.0_dp, h, qa, dqa, qb, dqb, p)
+        end if
+    end subroutine search_step
+
+    !> On [ta, tb] where q' is monotone: the interior extremum, if q' changes sign and
+    !> the extremum can beat the running maximum, by Newton steps kept in the bracket.
+    subroutine piece_peak(st, z0, v0, a0, s, t0, kq, ta, tb, qa, dqa, qb, dqb, p)
+        type(sdof_step_t), intent(in) :: st
+        real(dp), intent(in) :: z0, v0, a0, s, t0
+        integer, intent(in) :: kq
+        real(dp), intent(in) :: ta, tb, qa, dqa, qb, dqb
+        type(peak_t), intent(inout) :: p
+        real(dp) :: bound, lo, hi, x, dx, q, dq, ddq, dqlo
+        integer :: it
+        if (.not. (dqa * dqb < 0.0_dp)) return
+        ! |q'| <= max(|q'(ta)|, |q'(tb)|) on a monotone piece
+        bound = min(abs(qa) + (tb - ta) * abs(dqa), abs(qb) + (tb - ta) * abs(dqb))
+        if (bound <= p%value) return
+        lo = ta
+        hi = tb
+        dqlo = dqa
+        ! start from the secant root of q'
+        x = ta + (tb - ta) * dqa / (dqa - dqb)
+        do it = 1, max_newton
+            call q_at(st, z0, v0, a0, s, kq, x, q, dq, ddq)
+            if (.not. (abs(dq) > 0.0_dp)) exit
+            if ((dq < 0.0_dp) .eqv. (dqlo < 0.0_dp)) then
+                lo = x
+                dqlo = dq
+            else
+                hi = x
+            end if
+            ! Newton inside the bracket, else bisection
+            dx = 0.5_dp * (lo + hi) - x
+            if (abs(ddq) > 0.0_dp) then
+                if (x - dq / ddq > lo .and. x - dq / ddq < hi) dx = -dq / ddq
+            end if
+            x = x + dx
+            ! q is flat at its extremum, so its value is exact to rounding once x stops moving
+            if (abs(dx) <= 4.0_dp * epsilon(x) * st%h) exit
+            if (hi - lo <= 4.0_dp * epsilon(x) * st%h) exit
+        end do
+        call q_at(st, z0, v0, a0, s, kq, x, q, dq, ddq)
+        if (abs(q) > p%value) p = peak_t(abs(q), t0 + x)
+    end subroutine piece_peak
+
+    !> q, q', q'' of quantity kq at tau inside a step that starts at (z0, v0), a_g = a0 + s tau.
+    pure subroutine q_at(st, z0, v0, a0, s, kq, tau, q, dq, ddq)
+        type(sdof_step_t), intent(in) :: st
+        real(dp), intent(in) :: z0, v0, a0, s, tau
+        integer, intent(in) :: kq
+        real(dp), intent(out) :: q, dq, ddq
+        real(dp) :: zt, vt, d2, d3, w2, zw2
+        w2 = st%omega**2
+        zw2 = 2.0_dp * st%zeta * st%omega
+        call state_at(st, z0, v0, a0, s, tau, zt, vt)
+        d2 = -(a0 + s * tau + zw2 * vt + w2 * zt)
+        d3 = -(s + zw2 * d2 + w2 * vt)
+        select case (kq)
+        case (1)
+            q = zt
+            dq = vt
+            ddq = d2
+        case (2)
+            q = vt
+            dq = d2
+            ddq = d3
+        case default
+            q = -(zw2 * vt + w2 * zt)
+            dq = -(zw2 * d2 + w2 * vt)
+            ddq = -(zw2 * d3 + w2 * d2)
+        end select
+    end subroutine q_at
+
+    ! ------------------------------------------------------------------------------
+    ! Derived spectra
+    ! ------------------------------------------------------------------------------
+
+    !> Pseudo-spectra (Eq. 2.33): PSV = omega SD (m/s), PSA = omega^2 SD / g (g).
+    !> T = 0: PSV = 0 and PSA = the given PGA (the limit of omega^2 SD as T -> 0).
+    pure subroutine pseudo_spectra(periods, sd, g, pga, psv, psa)
+        real(dp), intent(in) :: periods(:)   !! periods (s), >= 0
+        real(dp), intent(in) :: sd(:, :)     !! spectral displacement (m), (period, damping)
+        real(dp), intent(in) :: g            !! gravity (m/s^2)
+        real(dp), intent(in) :: pga          !! peak ground acceleration (g), for T = 0
+        real(dp), intent(out) :: psv(:, :)   !! pseudo-velocity (m/s)
+        real(dp), intent(out) :: psa(:, :)   !! pseudo-acceleration (g)
+        integer :: i
+        real(dp) :: omega
+        do i = 1, size(periods)
+            if (periods(i) > 0.0_dp) then
+                omega = 2.0_dp * pi / periods(i)
+                psv(i, :) = omega * sd(i, :)
+                psa(i, :) = omega * omega * sd(i, :) / g
+            else
+                psv(i, :) = 0.0_dp
+                psa(i, :) = pga
+            end if
+        end do
+    end subroutine pseudo_spectra
+
+    !> Design envelope of several spectra on one period grid (oscillator.md 3): the
+    !> largest ordinate at each period; below `plateau_below` (s) the curve is held at
+    !> the largest ordinate at that or any longer period (the book's short-period
+    !> plateau, "peak values kept, not a decreasing branch"; 0 = no plateau).
+    subroutine design_envelope(periods, spectra, plateau_below, env, stat, errmsg)
+        real(dp), intent(in) :: periods(:)                    !! periods (s), ascending
+        real(dp), intent(in) :: spectra(:, :)                 !! ordinates, (period, spectrum)
+        real(dp), intent(in) :: plateau_below                 !! plateau limit (s), >= 0
+        real(dp), intent(out) :: env(:)                       !! envelope, size(periods)
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        integer :: i, np
+        real(dp) :: run
+        stat = SEISPULSE_SUCCESS
+        np = size(periods)
+        if (np < 1 .or. size(spectra, 2) < 1) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'spectra: at least one period and one spectrum are needed')
+            return
+        end if
+        if (size(spectra, 1) /= np .or. size(env) /= np) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'spectra, env: need ' &
+                           //int_str(np)//' periods (rows)')
+            return
+        end if
+        do i = 1, np
+            if (.not. ieee_is_finite(periods(i))) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'periods('//int_str(i) &
+                               //') = '//real_str(periods(i))//': must be finite and >= 0 (s)')
+                return
+            else if (periods(i) < 0.0_dp) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'periods('//int_str(i) &
+                               //') = '//real_str(periods(i))//': must be finite and >= 0 (s)')
+                return
+            end if
+            if (.not. all(ieee_is_finite(spectra(i, :)))) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'spectra(' &
+                               //int_str(i)//', :): every ordinate must be finite')
+                return
+            end if
+        end do
+        do i = 2, np
+            if (.not. (periods(i) > periods(i - 1))) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'periods('//int_str(i) &
+                               //') = '//real_str(periods(i)) &
+                               //': the periods must be strictly ascending')
+                return
+            end if
+        end do
+        if (.not. ieee_is_finite(plateau_below)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'plateau_below = ' &
+                           //real_str(plateau_below)//': must be finite and >= 0 (s)')
+            return
+        else if (plateau_below < 0.0_dp) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'plateau_below = ' &
+                           //real_str(plateau_below)//': must be finite and >= 0 (s)')
+            return
+        end if
+        do i = 1, np
+            env(i) = maxval(spectra(i, :))
+        end do
+        run = env(np)
+        do i = np, 1, -1
+            run = max(run, env(i))
+            if (periods(i) < plateau_below) env(i) = run
+        end do
+    end subroutine design_envelope
+
+    !> Normalized spectral shape of the spectral theory: beta(T) = C_W(T)/PGA (PSA over
+    !> the peak ground acceleration, same units), the period of its peak and the peak.
+    subroutine spectral_shape(periods, psa, pga, shape, t_peak, peak, stat, errmsg)
+        real(dp), intent(in) :: periods(:)                    !! periods (s)
+        real(dp), intent(in) :: psa(:)                        !! pseudo-acceleration (g)
+        real(dp), intent(in) :: pga                           !! peak ground acceleration (g), > 0
+        real(dp), intent(out) :: shape(:)                     !! PSA/PGA, size(periods)
+        real(dp), intent(out) :: t_peak                       !! period of the largest PSA/PGA (s)
+        real(dp), intent(out) :: peak                         !! largest PSA/PGA
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        integer :: k
+        stat = SEISPULSE_SUCCESS
+        t_peak = 0.0_dp
+        peak = 0.0_dp
+        if (size(psa) /= size(periods) .or. size(shape) /= size(periods) &
+            .or. size(periods) < 1) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'psa, shape: need one ' &
+                           //'value per period (at least one)')
+            return
+        end if
+        if (.not. ieee_is_finite(pga)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'pga = '//real_str(pga) &
+                           //': must be finite and > 0 (g)')
+            return
+        else if (pga <= 0.0_dp) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'pga = '//real_str(pga) &
+                           //': must be finite and > 0 (g)')
+            return
+        end if
+        shape = psa / pga
+        k = maxloc(shape, dim=1)
+        t_peak = periods(k)
+        peak = shape(k)
+    end subroutine spectral_shape
+
 end module seispulse_sdof
+
+
