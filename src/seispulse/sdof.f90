@@ -75,7 +75,8 @@ module seispulse_sdof
     !> The running maximum of one response quantity.
     type :: peak_t
         real(dp) :: value = 0.0_dp  !! largest |q| so far
-        real(dp) :: time = 0.0_dp   !! where it occurs (s)
+        real(dp) :: time = 0.0_dp   !! where it occurs (s): within the step `step`, or absolute
+        integer :: step = 0         !! exact runs: the (sub-)step the time is counted in, 0: absolute
     end type peak_t
 
 contains
@@ -350,6 +351,10 @@ contains
 
         subroutine run_spectrum()
             integer :: nthreads
+            real(dp), allocatable :: ga(:)
+            ! m/s^2 once for all oscillators
+            allocate(ga(size(accel)))
+            ga = g * accel
             nthreads = 0
             if (present(threads)) nthreads = threads
             !$ if (nthreads == 0) nthreads = omp_get_max_threads()
@@ -359,10 +364,10 @@ contains
             do k = 1, np * nd
                 i = mod(k - 1, np) + 1
                 j = (k - 1) / np + 1
-                call oscillator_peaks(accel, dt, periods(i), dampings(j), g, mode, pz, pv, pa)
+                call oscillator_peaks(ga, dt, periods(i), dampings(j), mode, pz, pv, pa)
                 sd(i, j) = pz%value
                 sv(i, j) = pv%value
-                sa(i, j) = pa%value
+                sa(i, j) = pa%value / g
                 tz(i, j) = pz%time
                 tv(i, j) = pv%time
                 ta(i, j) = pa%time
@@ -381,22 +386,23 @@ contains
         !$ n = omp_get_max_threads()
     end function sdof_threads
 
-    !> Maxima of |z| (m), |z'| (m/s) and |a_abs| (g) for one oscillator on a valid record.
-    subroutine oscillator_peaks(accel, dt, period, zeta, g, mode, pz, pv, pa)
-        real(dp), intent(in) :: accel(:), dt, period, zeta, g
+    !> Maxima of |z| (m), |z'| (m/s) and |a_abs| (m/s^2) for one oscillator on a valid
+    !> record ga (m/s^2).
+    subroutine oscillator_peaks(ga, dt, period, zeta, mode, pz, pv, pa)
+        real(dp), intent(in) :: ga(:), dt, period, zeta
         integer, intent(in) :: mode
         type(peak_t), intent(out) :: pz, pv, pa
         type(sdof_step_t) :: st
         integer :: i, n, m
         real(dp) :: z, v, zn, w2, zw2
-        n = size(accel)
+        n = size(ga)
         if (period <= 0.0_dp) then
             ! the ground itself: a_abs = a_g, linear between samples
             pz = peak_t(0.0_dp, 0.0_dp)
             pv = peak_t(0.0_dp, 0.0_dp)
-            pa = peak_t(abs(accel(1)), 0.0_dp)
+            pa = peak_t(abs(ga(1)), 0.0_dp)
             do i = 2, n
-                if (abs(accel(i)) > pa%value) pa = peak_t(abs(accel(i)), (i - 1) * dt)
+                if (abs(ga(i)) > pa%value) pa = peak_t(abs(ga(i)), (i - 1) * dt)
             end do
             return
         end if
@@ -411,8 +417,8 @@ contains
             z = 0.0_dp
             v = 0.0_dp
             do i = 1, n - 1
-                zn = st%e11 * z + st%e12 * v + g * (st%b1 * accel(i) + st%c1 * accel(i + 1))
-                v = st%e21 * z + st%e22 * v + g * (st%b2 * accel(i) + st%c2 * accel(i + 1))
+                zn = st%e11 * z + st%e12 * v + st%b1 * ga(i) + st%c1 * ga(i + 1)
+                v = st%e21 * z + st%e22 * v + st%b2 * ga(i) + st%c2 * ga(i + 1)
                 z = zn
                 if (abs(z) > pz%value) pz = peak_t(abs(z), i * dt)
                 if (abs(v) > pv%value) pv = peak_t(abs(v), i * dt)
@@ -422,9 +428,8 @@ contains
             ! sub-steps shorter than half a damped period (see the module header)
             m = sub_steps(period, zeta, dt)
             st = sdof_step(period, zeta, dt / m)
-            call exact_run(st, accel, g, dt, m, pz, pv, pa)
+            call exact_run(st, ga, m, pz, pv, pa)
         end if
-        pa%value = pa%value / g
     end subroutine oscillator_peaks
 
     !> Sub-steps per record step so that each is shorter than half a damped period.
@@ -447,12 +452,12 @@ contains
     !> per record step (a_g is linear in the step, so sub-samples are exact). Maxima
     !> of a_abs in m/s^2. The filter is written out per quantity, on local scalars:
     !> this is the hot loop of every spectrum.
-    subroutine exact_run(st, accel, g, dt, m, pz, pv, pa)
+    subroutine exact_run(st, ga, m, pz, pv, pa)
         type(sdof_step_t), intent(in) :: st
-        real(dp), intent(in) :: accel(:), g, dt
+        real(dp), intent(in) :: ga(:)  !! ground acceleration (m/s^2)
         integer, intent(in) :: m
         type(peak_t), intent(inout) :: pz, pv, pa
-        real(dp) :: z, v, z1, v1, a0, a1, s, t0, w2, zw, zw2, h, h4, d2_0, d2_1, d3_0, d3_1
+        real(dp) :: z, v, z1, v1, a0, a1, s, w2, zw, zw2, h, h4, d2_0, d2_1, d3_0, d3_1
         real(dp) :: d4_0, q0, q1, dq0, dq1, ddq0, ddq1, f, gap, mz, mv, ma, qa, qb, bound2
         integer :: j, i, k, nsteps
         h = st%h
@@ -462,27 +467,25 @@ contains
         zw2 = 2.0_dp * zw
         z = 0.0_dp
         v = 0.0_dp
-        d2_1 = -g * accel(1)
+        d2_1 = -ga(1)
         mz = pz%value
         mv = pv%value
         ma = pa%value
-        nsteps = (size(accel) - 1) * m
+        nsteps = (size(ga) - 1) * m
         do j = 1, nsteps
             if (m == 1) then
                 i = j
-                a0 = g * accel(i)
-                a1 = g * accel(i + 1)
-                t0 = (i - 1) * dt
+                a0 = ga(i)
+                a1 = ga(i + 1)
             else
                 i = (j - 1) / m + 1
                 k = j - (i - 1) * m
                 qa = real(k - 1, dp) / m
                 qb = real(k, dp) / m
-                a0 = g * ((1.0_dp - qa) * accel(i) + qa * accel(i + 1))
-                a1 = g * ((1.0_dp - qb) * accel(i) + qb * accel(i + 1))
-                if (k == 1) a0 = g * accel(i)
-                if (k == m) a1 = g * accel(i + 1)
-                t0 = (i - 1) * dt + (k - 1) * h
+                a0 = (1.0_dp - qa) * ga(i) + qa * ga(i + 1)
+                a1 = (1.0_dp - qb) * ga(i) + qb * ga(i + 1)
+                if (k == 1) a0 = ga(i)
+                if (k == m) a1 = ga(i + 1)
             end if
             z1 = st%e11 * z + st%e12 * v + st%b1 * a0 + st%c1 * a1
             v1 = st%e21 * z + st%e22 * v + st%b2 * a0 + st%c2 * a1
@@ -503,24 +506,24 @@ contains
             ! q = z
             if (abs(z1) > mz) then
                 mz = abs(z1)
-                pz = peak_t(mz, t0 + h)
+                pz = peak_t(mz, h, j)
             end if
             gap = mz - max(abs(z), abs(z1))
             if (gap * gap < bound2) then
-                call search_step(st, z, v, a0, s, t0, 1, z, z1, v, v1, d2_0, d2_1, f, pz)
+                call search_step(st, z, v, a0, s, j, 1, z, z1, v, v1, d2_0, d2_1, f, pz)
                 mz = pz%value
             end if
             ! q = z'
             if (abs(v1) > mv) then
                 mv = abs(v1)
-                pv = peak_t(mv, t0 + h)
+                pv = peak_t(mv, h, j)
             end if
             gap = mv - max(abs(v), abs(v1))
             if (gap * gap < w2 * bound2) then
                 d3_1 = -(s + zw2 * d2_1 + w2 * v1)
                 d4_0 = -(zw2 * d3_0 + w2 * d2_0)
                 f = (d4_0 + zw * d3_0) * st%inv_wd
-                call search_step(st, z, v, a0, s, t0, 2, v, v1, d2_0, d2_1, d3_0, d3_1, f, pv)
+                call search_step(st, z, v, a0, s, j, 2, v, v1, d2_0, d2_1, d3_0, d3_1, f, pv)
                 mv = pv%value
             end if
             ! q = a_abs = -(2 zeta omega z' + omega^2 z) = a_g + z''
@@ -528,7 +531,7 @@ contains
             q1 = a1 + d2_1
             if (abs(q1) > ma) then
                 ma = abs(q1)
-                pa = peak_t(ma, t0 + h)
+                pa = peak_t(ma, h, j)
             end if
             gap = ma - max(abs(q0), abs(q1))
             if (gap * gap < w2 * w2 * bound2) then
@@ -539,21 +542,26 @@ contains
                 ddq0 = d4_0
                 ddq1 = -(zw2 * d3_1 + w2 * d2_1)
                 f = (-(zw2 * d4_0 + w2 * d3_0) + zw * d4_0) * st%inv_wd
-                call search_step(st, z, v, a0, s, t0, 3, q0, q1, dq0, dq1, ddq0, ddq1, f, pa)
+                call search_step(st, z, v, a0, s, j, 3, q0, q1, dq0, dq1, ddq0, ddq1, f, pa)
                 ma = pa%value
             end if
             z = z1
             v = v1
         end do
+        ! times from (sub-)step numbers: t = (j - 1) h + offset
+        if (pz%step > 0) pz = peak_t(pz%value, (pz%step - 1) * h + pz%time, 0)
+        if (pv%step > 0) pv = peak_t(pv%value, (pv%step - 1) * h + pv%time, 0)
+        if (pa%step > 0) pa = peak_t(pa%value, (pa%step - 1) * h + pa%time, 0)
     end subroutine exact_run
 
     !> The interior maximum of quantity kq (1 z, 2 z', 3 a_abs) on a step that starts at
     !> (z0, v0) with a_g = a0 + s tau, given q, q', q'' at both ends and f of q''
     !> (see exact_step): split at the zero of q'' if there is one, then look for a sign
     !> change of q' on each monotone side.
-    subroutine search_step(st, z0, v0, a0, s, t0, kq, qa, qb, dqa, dqb, ddqa, ddqb, f, p)
+    subroutine search_step(st, z0, v0, a0, s, j, kq, qa, qb, dqa, dqb, ddqa, ddqb, f, p)
         type(sdof_step_t), intent(in) :: st
-        real(dp), intent(in) :: z0, v0, a0, s, t0
+        real(dp), intent(in) :: z0, v0, a0, s
+        integer, intent(in) :: j
         integer, intent(in) :: kq
         real(dp), intent(in) :: qa, qb, dqa, dqb, ddqa, ddqb, f
         type(peak_t), intent(inout) :: p
@@ -564,32 +572,36 @@ contains
             phase = modulo(atan2(f, ddqa) + 0.5_dp * pi, pi)
             tau_s = min(max(phase * st%inv_wd, 0.0_dp), h)
             call q_at(st, z0, v0, a0, s, kq, tau_s, q_s, dq_s, ddq_s)
-            call piece_peak(st, z0, v0, a0, s, t0, kq, 0.0_dp, tau_s, qa, dqa, q_s, dq_s, p)
-            call piece_peak(st, z0, v0, a0, s, t0, kq, tau_s, h, q_s, dq_s, qb, dqb, p)
+            call piece_peak(st, z0, v0, a0, s, j, kq, 0.0_dp, tau_s, qa, dqa, q_s, dq_s, p)
+            call piece_peak(st, z0, v0, a0, s, j, kq, tau_s, h, q_s, dq_s, qb, dqb, p)
         else
-            call piece_peak(st, z0, v0, a0, s, t0, kq, 0.0_dp, h, qa, dqa, qb, dqb, p)
+            call piece_peak(st, z0, v0, a0, s, j, kq, 0.0_dp, h, qa, dqa, qb, dqb, p)
         end if
     end subroutine search_step
 
     !> On [ta, tb] where q' is monotone: the interior extremum, if q' changes sign and
     !> the extremum can beat the running maximum, by Newton steps kept in the bracket.
-    subroutine piece_peak(st, z0, v0, a0, s, t0, kq, ta, tb, qa, dqa, qb, dqb, p)
+    subroutine piece_peak(st, z0, v0, a0, s, j, kq, ta, tb, qa, dqa, qb, dqb, p)
         type(sdof_step_t), intent(in) :: st
-        real(dp), intent(in) :: z0, v0, a0, s, t0
+        real(dp), intent(in) :: z0, v0, a0, s
+        integer, intent(in) :: j
         integer, intent(in) :: kq
         real(dp), intent(in) :: ta, tb, qa, dqa, qb, dqb
         type(peak_t), intent(inout) :: p
-        real(dp) :: bound, lo, hi, x, dx, q, dq, ddq, dqlo
+        real(dp) :: lo, hi, x, dx, q, dq, ddq, dqlo, xi, tangents
         integer :: it
+        logical :: newton
         if (.not. (dqa * dqb < 0.0_dp)) return
-        ! |q'| <= max(|q'(ta)|, |q'(tb)|) on a monotone piece
-        bound = min(abs(qa) + (tb - ta) * abs(dqa), abs(qb) + (tb - ta) * abs(dqb))
-        if (bound <= p%value) return
+        ! q' monotone: q is convex or concave on the piece, so it lies between its chord
+        ! and its two tangents; the extremum is between the ends' values and the value
+        ! where the tangents meet
+        xi = min(max((qb - qa + dqa * ta - dqb * tb) / (dqa - dqb), ta), tb)
+        tangents = qa + dqa * (xi - ta)
+        if (max(abs(tangents), abs(qa), abs(qb)) <= p%value) return
         lo = ta
         hi = tb
         dqlo = dqa
-        ! start from the secant root of q'
-        x = ta + (tb - ta) * dqa / (dqa - dqb)
+        x = xi
         do it = 1, max_newton
             call q_at(st, z0, v0, a0, s, kq, x, q, dq, ddq)
             if (.not. (abs(dq) > 0.0_dp)) exit
@@ -601,16 +613,24 @@ contains
             end if
             ! Newton inside the bracket, else bisection
             dx = 0.5_dp * (lo + hi) - x
+            newton = .false.
             if (abs(ddq) > 0.0_dp) then
-                if (x - dq / ddq > lo .and. x - dq / ddq < hi) dx = -dq / ddq
+                if (x - dq / ddq > lo .and. x - dq / ddq < hi) then
+                    dx = -dq / ddq
+                    newton = .true.
+                end if
+            end if
+            ! q is flat at its extremum: once the Newton step is below 1e-7 h, the
+            ! quadratic model q + dq dx/2 is the extremum to O(dx^3), far below rounding
+            if (newton .and. abs(dx) <= 1.0e-7_dp * st%h) then
+                q = q + 0.5_dp * dq * dx
+                x = x + dx
+                exit
             end if
             x = x + dx
-            ! q is flat at its extremum, so its value is exact to rounding once x stops moving
-            if (abs(dx) <= 4.0_dp * epsilon(x) * st%h) exit
             if (hi - lo <= 4.0_dp * epsilon(x) * st%h) exit
         end do
-        call q_at(st, z0, v0, a0, s, kq, x, q, dq, ddq)
-        if (abs(q) > p%value) p = peak_t(abs(q), t0 + x)
+        if (abs(q) > p%value) p = peak_t(abs(q), x, j)
     end subroutine piece_peak
 
     !> q, q', q'' of quantity kq at tau inside a step that starts at (z0, v0), a_g = a0 + s tau.
