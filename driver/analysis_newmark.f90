@@ -2,15 +2,15 @@
 !> record and yield acceleration, for the record as read ("normal") and turned over
 !> ("inverse", the record times -1).
 !>
-!> Groups: &records (the files and how to read and scale each one) and &newmark (the
-!> yield accelerations ky, or friction values mu on one incline, the mode and the
-!> integration rule). Table <output>_newmark. Everything is checked before any record
-!> is read. A record that cannot be read or scaled fails its rows (NaN results, status
-!> 1; the message goes to stderr and into the table's header) and the other records
-!> are still computed; run_newmark then returns NEWMARK_ROWS_FAILED and the driver
-!> exits with status 1 after writing the table. The numbers come from seispulse_records
-!> (reading, PGA scaling) and seispulse_newmark (the sliding block); the driver only
-!> reads, checks, converts units and writes.
+!> Groups: &records (driver_records, shared with analysis 'sdof': the files and how to
+!> read and scale each one) and &newmark (the yield accelerations ky, or friction values
+!> mu on one incline, the mode and the integration rule). Table <output>_newmark.
+!> Everything is checked before any record is read. A record that cannot be read or
+!> scaled fails its rows (NaN results, status 1; the message goes to stderr and into the
+!> table's header) and the other records are still computed; run_newmark then returns
+!> NEWMARK_ROWS_FAILED and the driver exits with status 1 after writing the table. The
+!> numbers come from seispulse_records (reading, PGA scaling) and seispulse_newmark (the
+!> sliding block); the driver only reads, checks, converts units and writes.
 module driver_newmark
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &

@@ -3,8 +3,8 @@
 !> Reads &run (analysis, output) and the groups of that analysis, echoes the
 !> effective input, writes the tables and says where they went. Any problem is one
 !> line on stderr naming file, line, group, key and problem, and exit status 2.
-!> Analysis 'newmark' goes on past a record that cannot be read: its rows fail, the
-!> table is written with all rows, and the exit status is 1.
+!> Analyses 'newmark' and 'sdof' go on past a record that cannot be read: its rows
+!> fail, the tables are written with all rows, and the exit status is 1.
 program seispulse_driver
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     use, intrinsic :: iso_c_binding, only: c_int
@@ -14,6 +14,8 @@ program seispulse_driver
     use driver_sliding, only: run_sliding, sliding_groups
     use driver_rocking, only: run_rocking, rocking_groups
     use driver_newmark, only: run_newmark, newmark_groups, NEWMARK_ROWS_FAILED
+    use driver_sdof, only: run_sdof, sdof_groups, SDOF_ROWS_FAILED, run_sdof_beta, &
+                           sdof_beta_groups, run_sdof_shock, sdof_shock_groups
     use driver_run_group, only: run_analysis, run_output, read_run, run_keys, write_run
     implicit none
 
@@ -25,11 +27,12 @@ program seispulse_driver
         end subroutine c_exit
     end interface
 
-    character(len=8), parameter :: analyses(4) = [character(len=8) :: 'pulse', 'sliding', &
-        'rocking', 'newmark']
+    character(len=10), parameter :: analyses(7) = [character(len=10) :: 'pulse', 'sliding', &
+        'rocking', 'newmark', 'sdof', 'sdof_beta', 'sdof_shock']
     !> Every group of any analysis (besides run), for the first check.
-    character(len=8), parameter :: all_groups(9) = [character(len=8) :: 'pulse', 'time', &
-        'block', 'method', 'history', 'rocking', 'map', 'records', 'newmark']
+    character(len=12), parameter :: all_groups(13) = [character(len=12) :: 'pulse', 'time', &
+        'block', 'method', 'history', 'rocking', 'map', 'records', 'newmark', 'sdof', &
+        'sdof_history', 'sdof_beta', 'sdof_shock']
 
     character(len=:), allocatable :: path, errmsg
     character(len=4096) :: arg
@@ -88,6 +91,23 @@ program seispulse_driver
             write(error_unit, '(a)') 'seispulse: error: '//errmsg
             call finish(1)
         end if
+    case ('sdof')
+        call check_groups(sdof_groups)
+        call write_run(output_unit)
+        call run_sdof(path, groups, run_output(), stat, errmsg)
+        if (stat == SDOF_ROWS_FAILED) then
+            ! the tables are written; some records failed (each already reported)
+            write(error_unit, '(a)') 'seispulse: error: '//errmsg
+            call finish(1)
+        end if
+    case ('sdof_beta')
+        call check_groups(sdof_beta_groups)
+        call write_run(output_unit)
+        call run_sdof_beta(path, groups, run_output(), stat, errmsg)
+    case ('sdof_shock')
+        call check_groups(sdof_shock_groups)
+        call write_run(output_unit)
+        call run_sdof_shock(path, groups, run_output(), stat, errmsg)
     case ('')
         call fail(located(path, groups(irun))//'analysis: missing (allowed: '//join(analyses)//')')
     case default

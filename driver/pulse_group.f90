@@ -104,6 +104,7 @@ contains
         logical, intent(in), optional :: g_used
         character(len=256) :: msg
         integer :: code, i
+        real(dp) :: amp_si
         logical :: g_always
 
         g_always = .false.
@@ -120,6 +121,7 @@ contains
             errmsg = located(path, pin%group)//'g: must be a finite number > 0 (m/s2)'
             return
         end if
+        amp_si = amp
         select case (lower(trim(amp_unit)))
         case ('m/s2')
             if (code /= PULSE_MP) pin%amp_g = amp / g
@@ -129,13 +131,15 @@ contains
                 return
             end if
             if (code /= PULSE_MP) pin%amp_g = amp
-            amp = amp * g
+            ! SI for the library; the namelist variable keeps the value as given, so the
+            ! echo reads back the same pulse
+            amp_si = amp * g
         case default
             errmsg = located(path, pin%group)//'amp_unit = '''//trim(amp_unit) &
                      //''': unknown unit (allowed: m/s2, g)'
             return
         end select
-        if (code == PULSE_MP) amp = vamp
+        if (code == PULSE_MP) amp_si = vamp
         if (ieee_is_nan(t0)) then
             if (code == PULSE_MP) then
                 t0 = 0.5_dp * gamma / freq
@@ -143,7 +147,7 @@ contains
                 t0 = 1.5_dp / freq
             end if
         end if
-        pin%p = pulse_t(kind=code, amp=amp, duration=duration, beta=beta, full=full, &
+        pin%p = pulse_t(kind=code, amp=amp_si, duration=duration, beta=beta, full=full, &
                         peak_frac=peak_frac, freq=freq, t0=t0, gamma=gamma, nu_deg=nu_deg)
         call pulse_validate(pin%p, i, msg)
         if (i /= SEISPULSE_SUCCESS) then

@@ -56,6 +56,12 @@ module seispulse
                                  newmark_method_name, newmark_mode_code, newmark_method_code, &
                                  NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM, NEWMARK_EXACT, &
                                  NEWMARK_SLAMMER
+    use seispulse_sdof_pulse, only: dynamic_coefficient, harmonic_response, rect_pulse_response, &
+                                    beta_pulse, impulse_max, impulse_response, &
+                                    sdof_pulse_response, sdof_pulse_peaks, sdof_pulse_spectrum, &
+                                    pulse_peak_accel, BETA_HYSTERETIC, BETA_VISCOUS, &
+                                    HARMONIC_SINE, HARMONIC_COSINE, BETA_PULSE_TEXTBOOK, &
+                                    BETA_PULSE_EXACT
     implicit none
     public
 

@@ -731,9 +731,286 @@ def make_newmark_ref(nml_path, nml):
     print(f"wrote {out} ({len(lines) - 1} rows)")
 
 
+# ---------------------------------------------------------------------------
+# Analyses 'sdof', 'sdof_beta', 'sdof_shock': the linear oscillator, in mpmath
+# ---------------------------------------------------------------------------
+
+def axis_grid(group, lname, stem):
+    """The driver's axis in double precision: the list `lname`, or `<stem>_range` with
+    `<stem>_count` and spacing (linear: a + (b - a) (i/(n-1)); log: exp(log a + (log b -
+    log a) (i/(n-1)))), both ends exact; None if neither is given."""
+    if lname in group:
+        return [float(x) for x in _as_list(group[lname])]
+    if f"{stem}_range" not in group:
+        return None
+    a, b = (float(x) for x in group[f"{stem}_range"])
+    n = int(group[f"{stem}_count"])
+    if group.get("spacing", "linear").lower() == "log":
+        values = [math.exp(math.log(a) + (math.log(b) - math.log(a)) * (i / (n - 1)))
+                  for i in range(n)]
+    else:
+        values = [a + (b - a) * (i / (n - 1)) for i in range(n)]
+    values[0], values[-1] = a, b
+    return values
+
+
+class Piece:
+    """The oscillator z'' + 2 zeta omega z' + omega^2 z = -(a0 + s tau) (m, s) on one
+    piece 0 <= tau <= h, from z(0) = z0, z'(0) = v0, written out by hand: the particular
+    solution A + B tau (omega^2 B = -s, omega^2 A = -a0 - 2 zeta omega B) plus the damped
+    free vibration e^(-zeta omega tau) (C1 cos omega_d tau + C2 sin omega_d tau)."""
+
+    def __init__(self, omega, zeta, z0, v0, a0, s):
+        self.w, self.zeta, self.a0, self.s = omega, zeta, a0, s
+        self.wd = omega * mp.sqrt(1 - zeta * zeta)
+        self.sig = zeta * omega
+        self.B = -s / omega**2
+        self.A = (-a0 - 2 * zeta * omega * self.B) / omega**2
+        c1 = z0 - self.A
+        c2 = (v0 - self.B + self.sig * c1) / self.wd
+        d1 = -self.sig * c1 + self.wd * c2          # z' = B + e (d1 cos + d2 sin)
+        d2 = -self.sig * c2 - self.wd * c1
+        e1 = -self.sig * d1 + self.wd * d2          # z'' = e (e1 cos + e2 sin)
+        e2 = -self.sig * d2 - self.wd * d1
+        self.c, self.d, self.e = (c1, c2), (d1, d2), (e1, e2)
+
+    def _osc(self, k, tau):
+        x = self.wd * tau
+        return mp.exp(-self.sig * tau) * (k[0] * mp.cos(x) + k[1] * mp.sin(x))
+
+    def z(self, tau):
+        return self.A + self.B * tau + self._osc(self.c, tau)
+
+    def v(self, tau):
+        return self.B + self._osc(self.d, tau)
+
+    def zdd(self, tau):
+        return self._osc(self.e, tau)
+
+    def a_abs(self, tau):
+        return -(2 * self.zeta * self.w * self.v(tau) + self.w**2 * self.z(tau))
+
+    def da_abs(self, tau):
+        return -(2 * self.zeta * self.w * self.zdd(tau) + self.w**2 * self.v(tau))
+
+    def peaks(self, h, k):
+        """Largest |z|, |z'|, |a_abs| on [0, h]: the ends and every zero of the
+        derivative, bracketed on a grid of k intervals and refined by bisection."""
+        out = []
+        for f, df in ((self.z, self.v), (self.v, self.zdd), (self.a_abs, self.da_abs)):
+            best = max(abs(f(mpf(0))), abs(f(h)))
+            grid = [h * i / k for i in range(k + 1)]
+            slopes = [df(x) for x in grid]
+            for x0, x1, d0, d1 in zip(grid[:-1], grid[1:], slopes[:-1], slopes[1:]):
+                if d0 == 0:
+                    best = max(best, abs(f(x0)))
+                elif d0 * d1 < 0:
+                    lo, hi, dlo = x0, x1, d0
+                    for _ in range(120):          # bisection to 40 digits
+                        mid = (lo + hi) / 2
+                        dm = df(mid)
+                        if dm * dlo > 0:
+                            lo, dlo = mid, dm
+                        else:
+                            hi = mid
+                    best = max(best, abs(f((lo + hi) / 2)))
+            out.append(best)
+        return out
+
+
+def sdof_record_response(acc, dt, period, zeta, g, exact):
+    """(peaks (max |z| m, |z'| m/s, |a_abs| g), samples [(z, z', a_abs g)]) of the oscillator
+    from rest on the record acc (g, linear between samples); exact: maxima between the
+    samples too (12 bisection brackets per step), else at the samples only."""
+    if period == 0:
+        pga = max(abs(x) for x in acc)
+        return (mpf(0), mpf(0), pga), [(mpf(0), mpf(0), x) for x in acc]
+    w = 2 * mp.pi / mpf(period)
+    z = v = mpf(0)
+    hist = [(z, v, mpf(0))]
+    top = [mpf(0)] * 3
+    for a0, a1 in zip(acc[:-1], acc[1:]):
+        piece = Piece(w, zeta, z, v, a0 * g, (a1 - a0) * g / dt)
+        if exact:
+            pz, pv, pa = piece.peaks(dt, 12)
+            top = [max(top[0], pz), max(top[1], pv), max(top[2], pa / g)]
+        z, v = piece.z(dt), piece.v(dt)
+        hist.append((z, v, -(2 * zeta * w * v + w * w * z) / g))
+    for z, v, a in hist:
+        top = [max(top[0], abs(z)), max(top[1], abs(v)), max(top[2], abs(a))]
+    return top, hist
+
+
+def sdof_records(nml_path, nr):
+    """[(name, acc (g) scaled or None, dt, pga after scaling)] of &records."""
+    files = _as_list(nr["files"])
+    n = len(files)
+    fmts = [f.lower() for f in per_file(nr, "format", n, "auto")]
+    units = [u.lower() for u in per_file(nr, "units", n, "auto")]
+    dts = per_file(nr, "dt", n, 0.0)
+    scales = per_file(nr, "scale", n, 1.0)
+    targets = per_file(nr, "target_pga", n, 0.0)
+    pols = per_file(nr, "polarity", n, 1)
+    slammer_rounding = nr.get("pga_rounding", "exact").lower() == "slammer"
+    out = []
+    for i, file in enumerate(files):
+        try:
+            acc, dt = read_record(Path(nml_path).parent / file, fmts[i], units[i], dts[i])
+        except FileNotFoundError:
+            out.append((Path(file).stem, None, None, mp.nan))
+            continue
+        pga_read = max(abs(x) for x in acc)
+        if targets[i] > 0:
+            ref_pga = mp.floor(pga_read * 1000 + mpf(1) / 2) / 1000 if slammer_rounding \
+                else pga_read
+            factor = mpf(targets[i]) / ref_pga
+        else:
+            factor = mpf(scales[i])
+        factor *= pols[i]
+        out.append((Path(file).stem, [x * factor for x in acc], dt, pga_read * abs(factor)))
+    return out
+
+
+def sdof_rows(nml_path, nml):
+    """The spectra table, or the history table when &sdof has no periods."""
+    ns, nh = nml.get("sdof", {}), nml.get("sdof_history")
+    g = mpf(ns.get("g", G_STANDARD))
+    dampings = [mpf(z) for z in _as_list(ns.get("damping", 0.05))]
+    periods = axis_grid(ns, "periods", "period")
+    exact = ns.get("peaks", "exact").lower() == "exact"
+    shape = bool(ns.get("shape", False))
+    recs = sdof_records(nml_path, nml["records"])
+    rows = []
+    if periods is None:
+        header = ("record (-),damping (-),T (s),t (s),a_g (g),z (m),z' (m/s),a_abs (g),"
+                  "status (-)")
+        hp = [float(x) for x in _as_list(nh["periods"])]
+        hz = [mpf(z) for z in _as_list(nh["damping"])] if "damping" in nh else dampings
+        for name, acc, dt, _ in recs:
+            for zeta in hz:
+                for period in hp:
+                    if acc is None:
+                        rows.append([name, zeta, period] + [mp.nan] * 5 + [mpf(1)])
+                        continue
+                    _, hist = sdof_record_response(acc, dt, period, zeta, g, False)
+                    for i, (z, v, a) in enumerate(hist):
+                        rows.append([name, zeta, period, float(dt) * i, acc[i], z, v, a,
+                                     mpf(0)])
+        return header, rows
+    header = ("record (-),damping (-),T (s),SD (m),SV (m/s),SA (g),PSV (m/s),PSA (g),"
+              + ("PSA/PGA (-)," if shape else "") + "status (-)")
+    for name, acc, dt, pga in recs:
+        for zeta in dampings:
+            for period in periods:
+                if acc is None:
+                    rows.append([name, zeta, period] + [mp.nan] * (6 if shape else 5)
+                                + [mpf(1)])
+                    continue
+                (sd, sv, sa), _ = sdof_record_response(acc, dt, period, zeta, g, exact)
+                if period == 0:
+                    psv, psa = mpf(0), pga
+                else:
+                    w = 2 * mp.pi / mpf(period)
+                    psv, psa = w * sd, w * w * sd / g
+                rows.append([name, zeta, period, sd, sv, sa, psv, psa]
+                            + ([psa / pga] if shape else []) + [mpf(0)])
+    return header, rows
+
+
+def sdof_beta_rows(nml):
+    """beta (Eq. 2.17, 2.20 with the square root, or viscous) and 2|beta|."""
+    nb = nml["sdof_beta"]
+    ratios = axis_grid(nb, "ratios", "ratio")
+    gammas = [mpf(x) for x in _as_list(nb.get("gamma", 0.1))]
+    viscous = nb.get("model", "hysteretic").lower() == "viscous"
+    rows = []
+    for gamma in gammas:
+        for r in ratios:
+            d = 1 - mpf(r)**2
+            if gamma == 0:
+                beta = 1 / d if d != 0 else mp.nan
+            else:
+                beta = 1 / mp.sqrt(d * d + (gamma * r)**2 if viscous else d * d + gamma**2)
+            rows.append([gamma, r, beta, 2 * abs(beta) if d != 0 or gamma != 0 else mp.inf])
+    return "gamma (-),theta/omega (-),beta (-),beta_cos (-)", rows
+
+
+def shock_peaks(pieces, period, zeta):
+    """Largest |z|, |z'|, |a_abs| (m, m/s, m/s2) over t >= 0 of the oscillator from rest
+    under the piecewise-linear ground acceleration [(a0, a1, length)], then free
+    vibration (its extrema decay, so one and a half periods after the pulse hold the
+    largest)."""
+    w = 2 * mp.pi / mpf(period)
+    z = v = mpf(0)
+    top = [mpf(0)] * 3
+    for a0, a1, h in pieces + [(mpf(0), mpf(0), 3 * mpf(period) / 2)]:
+        piece = Piece(w, zeta, z, v, a0, (a1 - a0) / h)
+        k = 64 * (1 + int(h / mpf(period)))
+        top = [max(p, q) for p, q in zip(top, piece.peaks(h, k))]
+        z, v = piece.z(h), piece.v(h)
+    return top
+
+
+def sdof_shock_rows(nml):
+    """Rectangular and triangular pulses (piecewise linear): the exact pieces above."""
+    pg, nk = nml["pulse"], nml["sdof_shock"]
+    kind = pg.get("kind", "exponential").lower()
+    g = float(pg.get("g", 9.80665))
+    amp = float(pg.get("amp", 1.0))
+    if pg.get("amp_unit", "m/s2").lower() == "g":
+        amp = amp * g                                # as the driver, in double
+    td = float(pg.get("duration", 1.0))
+    if kind in ("rectangular", "rect"):
+        pieces = [(mpf(amp), mpf(amp), mpf(td))]
+    elif kind in ("triangular", "triangle"):
+        tp = float(pg.get("peak_frac", 0.5)) * td
+        pieces = [(mpf(0), mpf(amp), mpf(tp)), (mpf(amp), mpf(0), mpf(td) - mpf(tp))]
+    else:
+        raise ValueError("sdof_shock references: rectangular or triangular pulses only")
+    ratios = axis_grid(nk, "ratios", "ratio")
+    if ratios is not None:
+        periods = [td / r for r in ratios]           # double, as the driver
+    else:
+        periods = axis_grid(nk, "periods", "period")
+        ratios = [td / t if t > 0 else math.inf for t in periods]
+    dampings = [mpf(z) for z in _as_list(nk.get("damping", 0.05))]
+    gm = mpf(g)
+    pga = abs(mpf(amp)) / gm
+    rows = []
+    for zeta in dampings:
+        for r, period in zip(ratios, periods):
+            if period == 0:
+                sd, sv, sa, psv, psa = mpf(0), mpf(0), pga, mpf(0), pga
+            else:
+                sd, sv, sa = shock_peaks(pieces, period, zeta)
+                sa = sa / gm
+                w = 2 * mp.pi / mpf(period)
+                psv, psa = w * sd, w * w * sd / gm
+            rows.append([zeta, r, period, sd, sv, sa, psv, psa, sa / pga, psa / pga])
+    return ("damping (-),t_d/T (-),T (s),SD (m),SV (m/s),SA (g),PSV (m/s),PSA (g),"
+            "SA/PGA (-),PSA/PGA (-)"), rows
+
+
+def make_sdof_ref(nml_path, nml, analysis):
+    with mp.workdps(40):
+        if analysis == "sdof":
+            header, rows = sdof_rows(nml_path, nml)
+        elif analysis == "sdof_beta":
+            header, rows = sdof_beta_rows(nml)
+        else:
+            header, rows = sdof_shock_rows(nml)
+        lines = [header] + [",".join(csv_cell(x) for x in row) for row in rows]
+    out = Path(nml_path).with_suffix(".ref")
+    out.write_text("\n".join(lines) + "\n")
+    print(f"wrote {out} ({len(lines) - 1} rows)")
+
+
 def make_ref(nml_path):
     nml = parse_namelist(Path(nml_path).read_text())
     analysis = nml.get("run", {}).get("analysis", "pulse").lower()
+    if analysis in ("sdof", "sdof_beta", "sdof_shock"):
+        make_sdof_ref(nml_path, nml, analysis)
+        return
     if analysis == "newmark":
         make_newmark_ref(nml_path, nml)
         return

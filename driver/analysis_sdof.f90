@@ -1,0 +1,1482 @@
+!> Analyses of the linear oscillator (oscillator.md): 'sdof' on accelerogram files,
+!> 'sdof_beta' (the dynamic coefficient of harmonic base motion) and 'sdof_shock' (the
+!> shock spectrum of one closed-form pulse).
+!>
+!> Analysis 'sdof', on accelerogram files:
+!> response spectra (SD, SV, SA and the pseudo-spectra PSV, PSA, optionally PSA/PGA),
+!> their envelope over the records with the short-period plateau of the design curve,
+!> and response histories.
+!>
+!> Groups: &records (driver_records: the files and how to read and scale each one, as
+!> in analysis 'newmark'), &sdof (the spectrum periods, the damping ratios, g, how
+!> peaks are taken, the envelope and the spectral shape) and &sdof_history (the
+!> periods of the response histories). Tables <output>_sdof (spectra, when &sdof gives
+!> periods), <output>_sdof_envelope (envelope = .true.) and <output>_sdof_history
+!> (with &sdof_history). Everything is checked before any record is read, and every
+!> table is computed before the first is written. A record that cannot be read,
+!> scaled or analysed fails its rows (NaN results, status 1; the message goes to
+!> stderr and into the headers) and the other records are still computed; run_sdof
+!> then returns SDOF_ROWS_FAILED and the driver exits with status 1 after writing the
+!> tables. The numbers come from seispulse_records and seispulse_sdof; the driver only
+!> reads, checks and writes.
+!>
+!> Analysis 'sdof_beta': group &sdof_beta (frequency ratios theta/omega as a list or a
+!> range, the damping parameters gamma = 2 zeta, the damping model); table
+!> <output>_sdof_beta, beta (Eq. 2.17/2.20) and the cosine law's 2|beta| (after Eq. 2.21)
+!> from seispulse_sdof_pulse's dynamic_coefficient.
+!>
+!> Analysis 'sdof_shock': groups &pulse (driver_pulse_group, as in 'pulse' and
+!> 'sliding') and &sdof_shock (t_d/T ratios or periods, damping ratios); table
+!> <output>_sdof_shock, the spectra of the closed-form response from rest (free
+!> vibration after the pulse included) from seispulse_sdof_pulse's sdof_pulse_spectrum,
+!> also divided by the pulse's peak ground acceleration.
+module driver_sdof
+    use, intrinsic :: iso_fortran_env, only: output_unit
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan, &
+                                             ieee_positive_inf
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_SINGULAR, int_str, outside
+    use seispulse_records, only: record_format_name
+    use seispulse_sdof, only: sdof_spectrum, pseudo_spectra, sdof_response, design_envelope, &
+                              spectral_shape, SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES
+    use seispulse_sdof_pulse, only: dynamic_coefficient, sdof_pulse_spectrum, &
+                                    pulse_peak_accel, BETA_HYSTERETIC, BETA_VISCOUS
+    use seispulse_pulses, only: pulse_kind_name, PULSE_RICKER, PULSE_MP
+    use driver_namelist_scan, only: nml_group
+    use driver_input, only: find_group, located, join, read_optional, given, list_length, &
+                            list_item
+    use driver_tables, only: write_tables
+    use driver_pulse_group, only: pulse_input_t, read_pulse_group, build_pulse, &
+                                  write_pulse_group
+    use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
+                              read_records, check_records, echo_records, load_record, report, &
+                              name_index, value_name, num
+    implicit none
+    private
+
+    public :: run_sdof, sdof_groups, SDOF_ROWS_FAILED
+    public :: run_sdof_beta, sdof_beta_groups, run_sdof_shock, sdof_shock_groups
+
+    !> Groups each analysis reads (besides &run): 'sdof', 'sdof_beta', 'sdof_shock'.
+    character(len=12), parameter :: sdof_groups(3) = [character(len=12) :: 'records', &
+        'sdof', 'sdof_history']
+    character(len=12), parameter :: sdof_beta_groups(1) = [character(len=12) :: 'sdof_beta']
+    character(len=12), parameter :: sdof_shock_groups(2) = [character(len=12) :: 'pulse', &
+        'sdof_shock']
+
+    !> stat of run_sdof when the tables are written but some rows failed (exit 1).
+    integer, parameter :: SDOF_ROWS_FAILED = -1
+
+    character(len=13), parameter :: sdof_keys(11) = [character(len=13) :: 'periods', &
+        'period_range', 'period_count', 'spacing', 'damping', 'g', 'peaks', 'threads', &
+        'envelope', 'plateau_below', 'shape']
+    character(len=8), parameter :: history_keys(2) = [character(len=8) :: 'periods', &
+        'damping']
+    character(len=12), parameter :: beta_keys(6) = [character(len=12) :: 'ratios', &
+        'ratio_range', 'ratio_count', 'spacing', 'gamma', 'model']
+    character(len=12), parameter :: shock_keys(8) = [character(len=12) :: 'ratios', &
+        'ratio_range', 'ratio_count', 'periods', 'period_range', 'period_count', 'spacing', &
+        'damping']
+    character(len=10), parameter :: model_names(2) = [character(len=10) :: 'hysteretic', &
+        'viscous']
+    character(len=7), parameter :: peaks_names(2) = [character(len=7) :: 'exact', 'samples']
+    character(len=6), parameter :: spacing_names(2) = [character(len=6) :: 'linear', 'log']
+
+    !> Most periods (list or range), most damping ratios.
+    integer, parameter :: max_periods = 1000, max_dampings = 100
+    !> Most rows of the spectra table (records x damping ratios x periods) and of the
+    !> history table (their samples x damping ratios x periods).
+    integer, parameter :: max_rows = 5000000, max_history_rows = 5000000
+    !> Most failed records named in the final message.
+    integer, parameter :: max_named = 20
+    !> Damping ratio when none is given; gamma = 2 zeta of &sdof_beta when none is given.
+    real(dp), parameter :: default_damping = 0.05_dp, default_gamma = 0.1_dp
+
+    ! namelist variables of &sdof (defaults are set in set_defaults; &records:
+    ! driver_records; &sdof_history: read_history, into hist_periods, hist_damping)
+    real(dp) :: periods(max_periods), period_range(2), damping(max_dampings), g, plateau_below
+    integer :: period_count, threads
+    character(len=32) :: spacing, peaks
+    logical :: envelope, shape
+    namelist /sdof/ periods, period_range, period_count, spacing, damping, g, peaks, threads, &
+        envelope, plateau_below, shape
+
+    real(dp) :: hist_periods(max_periods), hist_damping(max_dampings)
+
+    !> &sdof_beta and &sdof_shock (their readers have the namelists: the keys are named
+    !> like those of &sdof).
+    type :: axis_input_t
+        real(dp) :: ratios(max_periods), ratio_range(2), periods(max_periods), period_range(2)
+        integer :: ratio_count = 0, period_count = 0
+        character(len=32) :: spacing = 'linear', model = 'hysteretic'
+        real(dp) :: gamma(max_dampings), damping(max_dampings)
+    end type axis_input_t
+    type(axis_input_t) :: beta_in, shock_in
+
+    !> The validated input.
+    type :: config_t
+        type(record_in_t), allocatable :: recs(:)
+        logical :: slammer_rounding = .false.
+        logical :: spectra = .false.                !! spectrum periods given
+        real(dp), allocatable :: periods(:)         !! spectrum periods (s), ascending
+        character(len=:), allocatable :: grid       !! how they were given (for the header)
+        real(dp), allocatable :: dampings(:)        !! damping ratios of the spectra
+        real(dp) :: g = 9.80665_dp                  !! m/s2
+        integer :: peaks = SDOF_PEAKS_EXACT
+        integer :: threads = 0
+        logical :: envelope = .false.
+        real(dp) :: plateau_below = 0.0_dp          !! s
+        logical :: shape = .false.
+        logical :: history = .false.                !! &sdof_history given
+        real(dp), allocatable :: h_periods(:)       !! history periods (s)
+        real(dp), allocatable :: h_dampings(:)      !! history damping ratios
+    end type config_t
+
+    !> Results of one record.
+    type :: record_res_t
+        real(dp), allocatable :: sd(:, :), sv(:, :), sa(:, :), psv(:, :), psa(:, :)
+        real(dp), allocatable :: shp(:, :)          !! PSA/PGA (shape = .true.)
+        real(dp), allocatable :: t_peak(:), peak(:) !! per damping: peak of PSA/PGA
+        real(dp), allocatable :: hist(:, :)         !! history rows (numeric columns)
+    end type record_res_t
+
+contains
+
+    subroutine set_defaults()
+        real(dp) :: nan
+        nan = ieee_value(nan, ieee_quiet_nan)
+        call records_defaults()
+        periods = nan
+        period_range = nan
+        period_count = 0
+        spacing = 'linear'
+        damping = nan
+        g = 9.80665_dp
+        peaks = 'exact'
+        threads = 0
+        envelope = .false.
+        plateau_below = 0.0_dp
+        shape = .false.
+        hist_periods = nan
+        hist_damping = nan
+        call axis_defaults(beta_in)
+        call axis_defaults(shock_in)
+    end subroutine set_defaults
+
+    subroutine axis_defaults(a)
+        type(axis_input_t), intent(out) :: a
+        real(dp) :: nan
+        nan = ieee_value(nan, ieee_quiet_nan)
+        a%ratios = nan
+        a%ratio_range = nan
+        a%periods = nan
+        a%period_range = nan
+        a%gamma = nan
+        a%damping = nan
+    end subroutine axis_defaults
+
+    subroutine read_sdof(unit, text, ios, iomsg)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: text
+        integer, intent(out) :: ios
+        character(len=*), intent(inout) :: iomsg
+        if (len(text) > 0) then
+            read(text, nml=sdof, iostat=ios, iomsg=iomsg)
+        else
+            read(unit, nml=sdof, iostat=ios, iomsg=iomsg)
+        end if
+    end subroutine read_sdof
+
+    !> &sdof_history has keys named like those of &sdof: its own namelist, on local
+    !> variables copied to hist_periods, hist_damping.
+    subroutine read_history(unit, text, ios, iomsg)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: text
+        integer, intent(out) :: ios
+        character(len=*), intent(inout) :: iomsg
+        real(dp) :: periods(max_periods), damping(max_dampings)
+        namelist /sdof_history/ periods, damping
+        periods = hist_periods
+        damping = hist_damping
+        if (len(text) > 0) then
+            read(text, nml=sdof_history, iostat=ios, iomsg=iomsg)
+        else
+            read(unit, nml=sdof_history, iostat=ios, iomsg=iomsg)
+        end if
+        if (ios == 0) then
+            hist_periods = periods
+            hist_damping = damping
+        end if
+    end subroutine read_history
+
+    subroutine read_beta(unit, text, ios, iomsg)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: text
+        integer, intent(out) :: ios
+        character(len=*), intent(inout) :: iomsg
+        real(dp) :: ratios(max_periods), ratio_range(2), gamma(max_dampings)
+        integer :: ratio_count
+        character(len=32) :: spacing, model
+        namelist /sdof_beta/ ratios, ratio_range, ratio_count, spacing, gamma, model
+        ratios = beta_in%ratios
+        ratio_range = beta_in%ratio_range
+        ratio_count = beta_in%ratio_count
+        spacing = beta_in%spacing
+        gamma = beta_in%gamma
+        model = beta_in%model
+        if (len(text) > 0) then
+            read(text, nml=sdof_beta, iostat=ios, iomsg=iomsg)
+        else
+            read(unit, nml=sdof_beta, iostat=ios, iomsg=iomsg)
+        end if
+        if (ios /= 0) return
+        beta_in%ratios = ratios
+        beta_in%ratio_range = ratio_range
+        beta_in%ratio_count = ratio_count
+        beta_in%spacing = spacing
+        beta_in%gamma = gamma
+        beta_in%model = model
+    end subroutine read_beta
+
+    subroutine read_shock(unit, text, ios, iomsg)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: text
+        integer, intent(out) :: ios
+        character(len=*), intent(inout) :: iomsg
+        real(dp) :: ratios(max_periods), ratio_range(2), periods(max_periods), &
+                    period_range(2), damping(max_dampings)
+        integer :: ratio_count, period_count
+        character(len=32) :: spacing
+        namelist /sdof_shock/ ratios, ratio_range, ratio_count, periods, period_range, &
+            period_count, spacing, damping
+        ratios = shock_in%ratios
+        ratio_range = shock_in%ratio_range
+        ratio_count = shock_in%ratio_count
+        periods = shock_in%periods
+        period_range = shock_in%period_range
+        period_count = shock_in%period_count
+        spacing = shock_in%spacing
+        damping = shock_in%damping
+        if (len(text) > 0) then
+            read(text, nml=sdof_shock, iostat=ios, iomsg=iomsg)
+        else
+            read(unit, nml=sdof_shock, iostat=ios, iomsg=iomsg)
+        end if
+        if (ios /= 0) return
+        shock_in%ratios = ratios
+        shock_in%ratio_range = ratio_range
+        shock_in%ratio_count = ratio_count
+        shock_in%periods = periods
+        shock_in%period_range = period_range
+        shock_in%period_count = period_count
+        shock_in%spacing = spacing
+        shock_in%damping = damping
+    end subroutine read_shock
+
+    !> Read and check the groups, compute every table, write them; print where they
+    !> went. stat: 0, SDOF_ROWS_FAILED (tables written, errmsg says which records
+    !> failed), or > 0 for an input or output error (nothing written).
+    subroutine run_sdof(path, groups, prefix, stat, errmsg)
+        character(len=*), intent(in) :: path              !! input file (for messages)
+        type(nml_group), intent(in) :: groups(:)          !! scanned groups
+        character(len=*), intent(in) :: prefix            !! output prefix
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        type(nml_group) :: gr, gs, gh
+        type(config_t) :: cfg
+        type(record_out_t), allocatable :: outs(:)
+        type(record_res_t), allocatable :: res(:)
+        character(len=512) :: files_s(2), files_e(2), files_h(2)
+        character(len=:), allocatable :: failed
+        integer :: nfailed
+
+        call set_defaults()
+        call read_optional(path, groups, 'records', records_keys, read_records, gr, stat, &
+                           errmsg)
+        if (stat /= 0) return
+        call read_optional(path, groups, 'sdof', sdof_keys, read_sdof, gs, stat, errmsg)
+        if (stat /= 0) return
+        call read_optional(path, groups, 'sdof_history', history_keys, read_history, gh, &
+                           stat, errmsg)
+        if (stat /= 0) return
+        stat = 1
+        if (find_group(groups, 'records') == 0) then
+            errmsg = path//': &records: missing group (it lists the record files: files = ' &
+                     //'''a.AT2'', ...)'
+            return
+        end if
+        if (find_group(groups, 'sdof') == 0 .and. find_group(groups, 'sdof_history') == 0) &
+            then
+            errmsg = path//': &sdof: missing group (it gives the spectrum periods: periods ' &
+                     //'= a list, or period_range = min, max with period_count; and the ' &
+                     //'damping ratios)'
+            return
+        end if
+        call check_records(path, gr, cfg%recs, cfg%slammer_rounding, errmsg)
+        if (len(errmsg) > 0) return
+        call check_sdof(path, gs, find_group(groups, 'sdof_history') > 0, cfg, errmsg)
+        if (len(errmsg) > 0) return
+        cfg%history = find_group(groups, 'sdof_history') > 0
+        if (cfg%history) then
+            call check_history(path, gh, cfg, errmsg)
+            if (len(errmsg) > 0) return
+        end if
+        if (size(cfg%periods) * size(cfg%dampings) > max_rows / size(cfg%recs)) then
+            errmsg = located(path, gs)//'periods, damping: '//int_str(size(cfg%recs)) &
+                     //' records x '//int_str(size(cfg%dampings))//' damping ratios x ' &
+                     //int_str(size(cfg%periods))//' periods: more than ' &
+                     //int_str(max_rows)//' rows'
+            return
+        end if
+
+        ! --- echo the effective input
+        call echo_records(cfg%recs, cfg%slammer_rounding)
+        call echo_sdof(cfg)
+
+        ! --- compute every table (nothing is written before all of them are done)
+        call compute(path, gr, cfg, outs, res, nfailed, failed)
+
+        ! --- write
+        if (cfg%spectra) then
+            call write_spectra(path, prefix, cfg, outs, res, files_s, stat, errmsg)
+            if (stat /= 0) then
+                stat = 1
+                errmsg = path//': &run: output: '//errmsg
+                return
+            end if
+        end if
+        if (cfg%envelope) then
+            call write_envelope(path, prefix, cfg, outs, res, files_e, stat, errmsg)
+            if (stat /= 0) then
+                if (cfg%spectra) call delete_files(files_s)
+                stat = 1
+                errmsg = path//': &run: output: '//errmsg
+                return
+            end if
+        end if
+        if (cfg%history) then
+            call write_history(path, prefix, cfg, outs, res, files_h, stat, errmsg)
+            if (stat /= 0) then
+                if (cfg%spectra) call delete_files(files_s)
+                if (cfg%envelope) call delete_files(files_e)
+                stat = 1
+                errmsg = path//': &run: output: '//errmsg
+                return
+            end if
+        end if
+        if (cfg%spectra) write(output_unit, '(a)') 'sdof spectra written to ' &
+            //trim(files_s(1))//' and '//trim(files_s(2))
+        if (cfg%envelope) write(output_unit, '(a)') 'sdof envelope written to ' &
+            //trim(files_e(1))//' and '//trim(files_e(2))
+        if (cfg%history) write(output_unit, '(a)') 'sdof history written to ' &
+            //trim(files_h(1))//' and '//trim(files_h(2))
+        stat = 0
+        if (nfailed > 0) then
+            stat = SDOF_ROWS_FAILED
+            errmsg = int_str(nfailed)//' of '//int_str(size(outs))//' records failed (' &
+                     //failed//'): their rows hold NaN and status 1'
+        end if
+    end subroutine run_sdof
+
+    ! ------------------------------------------------------------------------------
+    ! Checks
+    ! ------------------------------------------------------------------------------
+
+    !> Check &sdof (possibly absent: then only the defaults) and fill cfg.
+    subroutine check_sdof(path, gs, with_history, cfg, errmsg)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gs
+        logical, intent(in) :: with_history               !! &sdof_history is given
+        type(config_t), intent(inout) :: cfg
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=13), parameter :: spectrum_keys(5) = [character(len=13) :: 'peaks', &
+            'threads', 'envelope', 'plateau_below', 'shape']
+        character(len=:), allocatable :: where
+        integer :: i
+
+        where = located(path, gs)
+        errmsg = ''
+        if (outside(g, 0.0_dp, huge(g), .true., .false.)) then
+            errmsg = where//'g = '//num(g)//': must be a finite number > 0 (m/s2)'
+            return
+        end if
+        cfg%g = g
+        call check_dampings(gs, damping, cfg%dampings, errmsg)
+        if (len(errmsg) > 0) then
+            errmsg = where//errmsg
+            return
+        end if
+
+        ! --- spectrum periods
+        call axis_values(gs, 'periods', 'period', periods, period_range, period_count, &
+                         spacing, .false., .true., max_periods, cfg%periods, cfg%grid, errmsg)
+        if (len(errmsg) > 0) then
+            errmsg = where//errmsg
+            return
+        end if
+        cfg%spectra = size(cfg%periods) > 0
+        if (.not. cfg%spectra) then
+            if (.not. with_history) then
+                errmsg = where//'periods: missing (give periods = a list, or period_range ' &
+                         //'= min, max with period_count; or only &sdof_history for ' &
+                         //'response histories)'
+                return
+            end if
+            do i = 1, size(spectrum_keys)
+                if (given(gs, trim(spectrum_keys(i)))) then
+                    errmsg = where//trim(spectrum_keys(i))//': only with spectra (give ' &
+                             //'periods or period_range)'
+                    return
+                end if
+            end do
+        end if
+
+        ! --- how the spectra are computed
+        cfg%peaks = name_index(peaks, peaks_names)
+        if (cfg%peaks == 0) then
+            errmsg = where//'peaks = '''//trim(peaks)//''': unknown peaks (allowed: ' &
+                     //join(peaks_names)//')'
+            return
+        end if
+        cfg%peaks = merge(SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES, cfg%peaks == 1)
+        if (threads < 0) then
+            errmsg = where//'threads = '//int_str(threads)//': must be >= 0 (0: the ' &
+                     //'OpenMP default)'
+            return
+        end if
+        cfg%threads = threads
+        cfg%envelope = envelope
+        cfg%shape = shape
+        if (given(gs, 'plateau_below') .and. .not. envelope) then
+            errmsg = where//'plateau_below: only with envelope = .true.'
+            return
+        end if
+        if (outside(plateau_below, 0.0_dp, huge(g), .false., .false.)) then
+            errmsg = where//'plateau_below = '//num(plateau_below)//': must be a finite ' &
+                     //'period >= 0 (s; 0: no plateau)'
+            return
+        end if
+        cfg%plateau_below = plateau_below
+    end subroutine check_sdof
+
+    !> Check &sdof_history and fill cfg%h_periods, cfg%h_dampings (default: the damping
+    !> ratios of &sdof).
+    subroutine check_history(path, gh, cfg, errmsg)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gh
+        type(config_t), intent(inout) :: cfg
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=:), allocatable :: where, grid
+        real(dp) :: no_range(2)
+        integer :: nrow
+
+        where = located(path, gh)
+        errmsg = ''
+        no_range = ieee_value(no_range, ieee_quiet_nan)
+        if (.not. given(gh, 'periods')) then
+            errmsg = where//'periods: missing (the periods of the response histories, s)'
+            return
+        end if
+        call axis_values(gh, 'periods', 'period', hist_periods, no_range, 0, 'linear', &
+                         .false., .false., max_periods, cfg%h_periods, grid, errmsg)
+        if (len(errmsg) > 0) then
+            errmsg = where//errmsg
+            return
+        end if
+        if (given(gh, 'damping')) then
+            call check_dampings(gh, hist_damping, cfg%h_dampings, errmsg)
+            if (len(errmsg) > 0) then
+                errmsg = where//errmsg
+                return
+            end if
+        else
+            cfg%h_dampings = cfg%dampings
+        end if
+        nrow = size(cfg%h_periods) * size(cfg%h_dampings)
+        if (nrow > max_history_rows / max(1, size(cfg%recs))) then
+            errmsg = where//'periods: too many histories ('//int_str(nrow)//' per record)'
+            return
+        end if
+    end subroutine check_history
+
+    !> The damping ratios of a `damping` list (default_damping when not given): each
+    !> finite, in [0, 1). errmsg (without the location) on failure.
+    subroutine check_dampings(group, list, values, errmsg)
+        type(nml_group), intent(in) :: group
+        real(dp), intent(in) :: list(:)
+        real(dp), allocatable, intent(out) :: values(:)
+        character(len=:), allocatable, intent(out) :: errmsg
+        integer :: n, i
+        errmsg = ''
+        if (.not. given(group, 'damping')) then
+            values = [default_damping]
+            return
+        end if
+        call list_length(list, 'damping', n, errmsg)
+        if (len(errmsg) > 0) return
+        do i = 1, n
+            if (outside(list(i), 0.0_dp, 1.0_dp, .false., .true.)) then
+                errmsg = value_name('damping', i, n)//' = '//num(list(i))//': must be a ' &
+                         //'damping ratio in [0, 1)'
+                return
+            end if
+        end do
+        values = list(1:n)
+    end subroutine check_dampings
+
+    !> The damping parameters of a `gamma` list (default_gamma when not given): each
+    !> finite and >= 0. errmsg (without the location) on failure.
+    subroutine check_gammas(group, list, values, errmsg)
+        type(nml_group), intent(in) :: group
+        real(dp), intent(in) :: list(:)
+        real(dp), allocatable, intent(out) :: values(:)
+        character(len=:), allocatable, intent(out) :: errmsg
+        integer :: n, i
+        errmsg = ''
+        if (.not. given(group, 'gamma')) then
+            values = [default_gamma]
+            return
+        end if
+        call list_length(list, 'gamma', n, errmsg)
+        if (len(errmsg) > 0) return
+        do i = 1, n
+            if (outside(list(i), 0.0_dp, huge(1.0_dp), .false., .false.)) then
+                errmsg = value_name('gamma', i, n)//' = '//num(list(i))//': must be a ' &
+                         //'finite number >= 0 (gamma = 2 zeta)'
+                return
+            end if
+        end do
+        values = list(1:n)
+    end subroutine check_gammas
+
+    !> Values of one axis: a list `<lname>` (strictly ascending if `ascending`), or a range
+    !> `<stem>_range` = min, max with `<stem>_count` points and `spacing` (linear | log;
+    !> log needs min > 0). Values >= 0 (> 0 with `positive`). Neither given: no values.
+    !> `grid` says how they were given (for the table header); errmsg (without the
+    !> location) on failure. Keys not given in `group` are not checked.
+    subroutine axis_values(group, lname, stem, list, range, count, spacing, positive, &
+                           ascending, max_count, values, grid, errmsg)
+        type(nml_group), intent(in) :: group
+        character(len=*), intent(in) :: lname             !! name of the list key
+        character(len=*), intent(in) :: stem              !! stem of <stem>_range, <stem>_count
+        real(dp), intent(in) :: list(:), range(2)
+        integer, intent(in) :: count
+        character(len=*), intent(in) :: spacing
+        logical, intent(in) :: positive                   !! values > 0 (else >= 0)
+        logical, intent(in) :: ascending                  !! a list must be strictly ascending
+        integer, intent(in) :: max_count
+        real(dp), allocatable, intent(out) :: values(:)
+        character(len=:), allocatable, intent(out) :: grid
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=:), allocatable :: rname, cname, bound
+        integer :: n, i, code
+        real(dp) :: a, b
+
+        errmsg = ''
+        grid = ''
+        rname = stem//'_range'
+        cname = stem//'_count'
+        bound = merge('> 0 ', '>= 0', positive)
+        allocate(values(0))
+        if (given(group, lname) .and. given(group, rname)) then
+            errmsg = lname//', '//rname//': give only one of them (a list, or a range with ' &
+                     //cname//')'
+            return
+        end if
+        if (.not. given(group, rname)) then
+            if (given(group, cname)) then
+                errmsg = cname//': only with '//rname
+                return
+            else if (given(group, 'spacing')) then
+                errmsg = 'spacing: only with '//rname
+                return
+            end if
+        end if
+        if (given(group, lname)) then
+            call list_length(list, lname, n, errmsg)   ! no gaps, at least one value
+            if (len(errmsg) > 0) return
+            do i = 1, n
+                if (outside(list(i), 0.0_dp, huge(a), positive, .false.)) then
+                    errmsg = value_name(lname, i, n)//' = '//num(list(i))//': must be a ' &
+                             //'finite number '//trim(bound)
+                    return
+                end if
+            end do
+            do i = 2, n
+                if (.not. ascending) exit
+                if (.not. list(i) > list(i - 1)) then
+                    errmsg = list_item(lname, i)//' = '//num(list(i))//': the values must ' &
+                             //'be strictly ascending'
+                    return
+                end if
+            end do
+            values = list(1:n)
+            grid = lname//' as listed'
+        else if (given(group, rname)) then
+            if (.not. (ieee_is_finite(range(1)) .and. ieee_is_finite(range(2)))) then
+                errmsg = rname//': give two finite numbers, '//rname//' = min, max'
+                return
+            end if
+            a = range(1)
+            b = range(2)
+            if (outside(a, 0.0_dp, huge(a), positive, .false.)) then
+                errmsg = list_item(rname, 1)//' = '//num(a)//': must be '//trim(bound)
+                return
+            end if
+            if (.not. b > a) then
+                errmsg = rname//' = '//num(a)//', '//num(b)//': the maximum must be above ' &
+                         //'the minimum'
+                return
+            end if
+            if (.not. given(group, cname)) then
+                errmsg = cname//': missing (the number of values in '//rname//', 2 .. ' &
+                         //int_str(max_count)//')'
+                return
+            end if
+            if (count < 2 .or. count > max_count) then
+                errmsg = cname//' = '//int_str(count)//': must be in 2 .. '//int_str(max_count)
+                return
+            end if
+            code = name_index(spacing, spacing_names)
+            if (code == 0) then
+                errmsg = 'spacing = '''//trim(spacing)//''': unknown spacing (allowed: ' &
+                         //join(spacing_names)//')'
+                return
+            end if
+            if (code == 2 .and. .not. a > 0.0_dp) then
+                errmsg = 'spacing = ''log'': needs '//list_item(rname, 1)//' > 0 (use ' &
+                         //'''linear'', or a list '//lname//' that starts with 0)'
+                return
+            end if
+            deallocate(values)
+            allocate(values(count))
+            do i = 1, count
+                if (code == 1) then
+                    values(i) = a + (b - a) * (real(i - 1, dp) / real(count - 1, dp))
+                else
+                    values(i) = exp(log(a) + (log(b) - log(a)) * (real(i - 1, dp) &
+                                                                 / real(count - 1, dp)))
+                end if
+            end do
+            values(1) = a
+            values(count) = b
+            grid = rname//' = '//num(a)//', '//num(b)//', '//cname//' = '//int_str(count) &
+                   //', spacing = '''//trim(spacing_names(code))//''''
+        end if
+    end subroutine axis_values
+
+    ! ------------------------------------------------------------------------------
+    ! Echo
+    ! ------------------------------------------------------------------------------
+
+    !> &sdof (and &sdof_history) with the values in use; the periods as a list.
+    subroutine echo_sdof(cfg)
+        type(config_t), intent(in) :: cfg
+        if (cfg%spectra) then
+            call echo_spectra(size(cfg%periods), size(cfg%dampings))
+        else
+            call echo_plain(size(cfg%dampings))
+        end if
+        if (cfg%history) call echo_history(size(cfg%h_periods), size(cfg%h_dampings))
+
+    contains
+
+        subroutine echo_spectra(np, nd)
+            integer, intent(in) :: np, nd
+            real(dp) :: periods(np), damping(nd), g, plateau_below
+            character(len=7) :: peaks
+            integer :: threads
+            logical :: envelope, shape
+            namelist /sdof/ periods, damping, g, peaks, threads, envelope, plateau_below, &
+                shape
+            periods = cfg%periods
+            damping = cfg%dampings
+            g = cfg%g
+            peaks = merge('exact  ', 'samples', cfg%peaks == SDOF_PEAKS_EXACT)
+            threads = cfg%threads
+            envelope = cfg%envelope
+            plateau_below = cfg%plateau_below
+            shape = cfg%shape
+            if (cfg%envelope) then
+                write(output_unit, nml=sdof)
+            else
+                call echo_no_envelope()
+            end if
+        end subroutine echo_spectra
+
+        subroutine echo_no_envelope()
+            real(dp) :: periods(size(cfg%periods)), damping(size(cfg%dampings)), g
+            character(len=7) :: peaks
+            integer :: threads
+            logical :: envelope, shape
+            namelist /sdof/ periods, damping, g, peaks, threads, envelope, shape
+            periods = cfg%periods
+            damping = cfg%dampings
+            g = cfg%g
+            peaks = merge('exact  ', 'samples', cfg%peaks == SDOF_PEAKS_EXACT)
+            threads = cfg%threads
+            envelope = .false.
+            shape = cfg%shape
+            write(output_unit, nml=sdof)
+        end subroutine echo_no_envelope
+
+        subroutine echo_plain(nd)
+            integer, intent(in) :: nd
+            real(dp) :: damping(nd), g
+            namelist /sdof/ damping, g
+            damping = cfg%dampings
+            g = cfg%g
+            write(output_unit, nml=sdof)
+        end subroutine echo_plain
+
+        subroutine echo_history(np, nd)
+            integer, intent(in) :: np, nd
+            real(dp) :: periods(np), damping(nd)
+            namelist /sdof_history/ periods, damping
+            periods = cfg%h_periods
+            damping = cfg%h_dampings
+            write(output_unit, nml=sdof_history)
+        end subroutine echo_history
+
+    end subroutine echo_sdof
+
+    ! ------------------------------------------------------------------------------
+    ! Computation
+    ! ------------------------------------------------------------------------------
+
+    !> Every record (read, polarity, scale), its spectra and histories. A record that
+    !> fails (reading, scaling or a library check) keeps o%ok = .false. and its message,
+    !> reported on stderr at once; failed: "2 'name', 5 'other'" of the failed records.
+    subroutine compute(path, gr, cfg, outs, res, nfailed, failed)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gr
+        type(config_t), intent(in) :: cfg
+        type(record_out_t), allocatable, intent(out) :: outs(:)
+        type(record_res_t), allocatable, intent(out) :: res(:)
+        integer, intent(out) :: nfailed
+        character(len=:), allocatable, intent(out) :: failed
+        real(dp), allocatable :: accel(:)
+        character(len=:), allocatable :: where
+        character(len=4096) :: msg
+        integer :: nrec, ir, st
+
+        where = located(path, gr)
+        nrec = size(cfg%recs)
+        allocate(outs(nrec), res(nrec))
+        nfailed = 0
+        failed = ''
+        do ir = 1, nrec
+            associate (r => cfg%recs(ir), o => outs(ir))
+                call load_record(where, r, ir, nrec, 'sdof', cfg%slammer_rounding, o, accel)
+                if (o%ok) then
+                    msg = ''
+                    call analyse(cfg, accel, o%dt, o%pga, res(ir), st, msg)
+                    if (st /= SEISPULSE_SUCCESS) then
+                        ! a failure of the oscillator itself: this record's rows
+                        o%ok = .false.
+                        o%message = trim(msg)
+                        call report(where//list_item('files', ir)//' = '''//r%file//''': ' &
+                                    //o%message)
+                    end if
+                end if
+                if (.not. o%ok) then
+                    nfailed = nfailed + 1
+                    if (nfailed <= max_named) then
+                        if (nfailed > 1) failed = failed//', '
+                        failed = failed//int_str(ir)//' '''//o%name//''''
+                    else if (nfailed == max_named + 1) then
+                        failed = failed//', ...'
+                    end if
+                end if
+            end associate
+        end do
+    end subroutine compute
+
+    !> Spectra (and PSA/PGA) and histories of one record (accel in g).
+    subroutine analyse(cfg, accel, dt, pga, q, stat, msg)
+        type(config_t), intent(in) :: cfg
+        real(dp), intent(in) :: accel(:), dt, pga
+        type(record_res_t), intent(out) :: q
+        integer, intent(out) :: stat
+        character(len=*), intent(inout) :: msg
+        real(dp), allocatable :: disp(:), vel(:), acc(:), t(:)
+        integer :: np, nd, j, k, i, n, row
+
+        stat = SEISPULSE_SUCCESS
+        np = size(cfg%periods)
+        nd = size(cfg%dampings)
+        if (cfg%spectra) then
+            allocate(q%sd(np, nd), q%sv(np, nd), q%sa(np, nd), q%psv(np, nd), q%psa(np, nd))
+            call sdof_spectrum(accel, dt, cfg%periods, cfg%dampings, cfg%g, q%sd, q%sv, q%sa, &
+                               stat, msg, peaks=cfg%peaks, threads=cfg%threads)
+            if (stat /= SEISPULSE_SUCCESS) return
+            call pseudo_spectra(cfg%periods, q%sd, cfg%g, pga, q%psv, q%psa)
+            if (cfg%shape) then
+                allocate(q%shp(np, nd), q%t_peak(nd), q%peak(nd))
+                do j = 1, nd
+                    call spectral_shape(cfg%periods, q%psa(:, j), pga, q%shp(:, j), &
+                                        q%t_peak(j), q%peak(j), stat, msg)
+                    if (stat /= SEISPULSE_SUCCESS) then
+                        msg = 'PSA/PGA (shape = .true.): '//trim(msg)
+                        return
+                    end if
+                end do
+            end if
+        end if
+        if (.not. cfg%history) return
+        n = size(accel)
+        if (n > max_history_rows / (size(cfg%h_periods) * size(cfg%h_dampings))) then
+            stat = 1
+            msg = 'the response histories ('//int_str(n)//' samples x ' &
+                  //int_str(size(cfg%h_periods) * size(cfg%h_dampings))//' oscillators) ' &
+                  //'would have more than '//int_str(max_history_rows)//' rows'
+            return
+        end if
+        allocate(q%hist(n * size(cfg%h_periods) * size(cfg%h_dampings), 8))
+        allocate(disp(n), vel(n), acc(n), t(n))
+        t = dt * [(real(i - 1, dp), i = 1, n)]
+        row = 0
+        do j = 1, size(cfg%h_dampings)
+            do k = 1, size(cfg%h_periods)
+                call sdof_response(accel, dt, cfg%h_periods(k), cfg%h_dampings(j), cfg%g, &
+                                   disp, vel, acc, stat, msg)
+                if (stat /= SEISPULSE_SUCCESS) return
+                q%hist(row + 1:row + n, 1) = cfg%h_dampings(j)
+                q%hist(row + 1:row + n, 2) = cfg%h_periods(k)
+                q%hist(row + 1:row + n, 3) = t
+                q%hist(row + 1:row + n, 4) = accel
+                q%hist(row + 1:row + n, 5) = disp
+                q%hist(row + 1:row + n, 6) = vel
+                q%hist(row + 1:row + n, 7) = acc
+                q%hist(row + 1:row + n, 8) = 0.0_dp
+                row = row + n
+            end do
+        end do
+    end subroutine analyse
+
+    ! ------------------------------------------------------------------------------
+    ! Output
+    ! ------------------------------------------------------------------------------
+
+    !> The first header lines of every table of this analysis: what, the input, then
+    !> `head`, then the records (one line each).
+    subroutine record_comments(path, what, head, cfg, outs, res, comments)
+        character(len=*), intent(in) :: path, what
+        character(len=*), intent(in) :: head(:)
+        type(config_t), intent(in) :: cfg
+        type(record_out_t), intent(in) :: outs(:)
+        type(record_res_t), intent(in) :: res(:)
+        character(len=4096), allocatable, intent(out) :: comments(:)
+        character(len=:), allocatable :: line
+        integer :: ir, j, nrec, nh
+
+        nrec = size(outs)
+        nh = size(head)
+        allocate(comments(3 + nh + nrec))
+        comments(1) = 'seispulse analysis sdof: '//what
+        comments(2) = 'input: '//trim(path)
+        comments(3:2 + nh) = head
+        comments(3 + nh) = 'records (index, file, format read, npts, dt (s), PGA as read ' &
+                           //'(g), scale factor, PGA after scaling (g)):'
+        do ir = 1, nrec
+            associate (o => outs(ir), r => cfg%recs(ir))
+                line = 'record '//int_str(ir)//': '//r%file//': '
+                if (o%ok) then
+                    line = line//'format '//record_format_name(o%fmt)//', npts ' &
+                           //int_str(o%npts)//', dt '//num(o%dt)//', PGA ' &
+                           //num(o%pga_read)//', scale factor '//num(o%factor)//', PGA ' &
+                           //num(o%pga)
+                    if (cfg%spectra .and. cfg%shape) then
+                        do j = 1, size(cfg%dampings)
+                            line = line//'; damping '//num(cfg%dampings(j))//': PSA/PGA ' &
+                                   //'peak '//num(res(ir)%peak(j))//' at T = ' &
+                                   //num(res(ir)%t_peak(j))//' s'
+                        end do
+                    end if
+                else
+                    line = line//'FAILED: '//o%message
+                end if
+                comments(3 + nh + ir) = line
+            end associate
+        end do
+    end subroutine record_comments
+
+    !> "periods: ...; g = ... m/s2; peaks = ..." of the spectrum tables.
+    function spectra_line(cfg) result(s)
+        type(config_t), intent(in) :: cfg
+        character(len=:), allocatable :: s
+        s = 'periods: '//cfg%grid//'; g = '//num(cfg%g)//' m/s2; peaks = '
+        if (cfg%peaks == SDOF_PEAKS_EXACT) then
+            s = s//'exact (true maxima, between samples too)'
+        else
+            s = s//'samples (maxima over the samples)'
+        end if
+    end function spectra_line
+
+    !> The spectra table: one row per record, damping and period.
+    subroutine write_spectra(path, prefix, cfg, outs, res, files_out, stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(config_t), intent(in) :: cfg
+        type(record_out_t), intent(in) :: outs(:)
+        type(record_res_t), intent(in) :: res(:)
+        character(len=*), intent(out) :: files_out(2)
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=4096), allocatable :: comments(:)
+        character(len=4096) :: head(4)
+        character(len=8), allocatable :: names(:), col_units(:)
+        character(len=label_len(outs)), allocatable :: labels(:)
+        real(dp), allocatable :: table(:, :)
+        real(dp) :: nan
+        integer :: np, nd, nrec, ncol, ir, j, i, row
+
+        nan = ieee_value(nan, ieee_quiet_nan)
+        np = size(cfg%periods)
+        nd = size(cfg%dampings)
+        nrec = size(outs)
+        ncol = merge(9, 8, cfg%shape)
+        allocate(table(nrec * nd * np, ncol))
+        allocate(labels(nrec * nd * np))
+        table = nan
+        do ir = 1, nrec
+            do j = 1, nd
+                do i = 1, np
+                    row = ((ir - 1) * nd + j - 1) * np + i
+                    labels(row) = outs(ir)%name
+                    table(row, 1) = cfg%dampings(j)
+                    table(row, 2) = cfg%periods(i)
+                    table(row, ncol) = 1.0_dp
+                    if (.not. outs(ir)%ok) cycle
+                    associate (q => res(ir))
+                        table(row, 3:7) = [q%sd(i, j), q%sv(i, j), q%sa(i, j), q%psv(i, j), &
+                                           q%psa(i, j)]
+                        if (cfg%shape) table(row, 8) = q%shp(i, j)
+                    end associate
+                    table(row, ncol) = 0.0_dp
+                end do
+            end do
+        end do
+
+        head(1) = spectra_line(cfg)
+        head(2) = 'SD, SV: largest |z|, |z''| (displacement and velocity of the mass ' &
+                  //'relative to the ground); SA: largest |a_g + z''''| (absolute ' &
+                  //'acceleration); PSV = omega SD, PSA = omega^2 SD / g (Eq. 2.33); ' &
+                  //'maxima over the record (no free vibration after it)'
+        head(3) = 'T = 0: the ground itself (SD = SV = PSV = 0, SA = PSA = the PGA after ' &
+                  //'scaling)'
+        if (cfg%shape) head(3) = trim(head(3))//'; PSA/PGA: the normalized spectral shape'
+        head(4) = 'status: 0 ok, 1 failed (NaN results; the reason is below and on ' &
+                  //'stderr); exit status 1 when a record failed (2: an input error, no table)'
+        call record_comments(path, 'response spectra of the linear oscillator on ' &
+                             //'accelerograms, one row per record, damping ratio and period', &
+                             head, cfg, outs, res, comments)
+        allocate(names(ncol + 1), col_units(ncol + 1))
+        names(1:8) = [character(len=8) :: 'record', 'damping', 'T', 'SD', 'SV', 'SA', 'PSV', &
+                      'PSA']
+        col_units(1:8) = [character(len=8) :: '-', '-', 's', 'm', 'm/s', 'g', 'm/s', 'g']
+        if (cfg%shape) then
+            names(9) = 'PSA/PGA'
+            col_units(9) = '-'
+        end if
+        names(ncol + 1) = 'status'
+        col_units(ncol + 1) = '-'
+        call write_tables(prefix, 'sdof', comments, names, col_units, table, files_out, &
+                          stat, errmsg, labels=labels)
+    end subroutine write_spectra
+
+    !> The envelope table: one row per damping and period, over the records computed.
+    subroutine write_envelope(path, prefix, cfg, outs, res, files_out, stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(config_t), intent(in) :: cfg
+        type(record_out_t), intent(in) :: outs(:)
+        type(record_res_t), intent(in) :: res(:)
+        character(len=*), intent(out) :: files_out(2)
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=4096), allocatable :: comments(:)
+        character(len=4096) :: head(3), msg
+        character(len=8), allocatable :: names(:), col_units(:)
+        real(dp), allocatable :: table(:, :), sa(:, :), psa(:, :), shp(:, :)
+        real(dp) :: nan
+        integer :: np, nd, nok, ncol, ir, j, k, r1, r2, st
+
+        nan = ieee_value(nan, ieee_quiet_nan)
+        np = size(cfg%periods)
+        nd = size(cfg%dampings)
+        nok = count(outs%ok)
+        ncol = merge(5, 4, cfg%shape)
+        allocate(table(nd * np, ncol), sa(np, nok), psa(np, nok), shp(np, nok))
+        table = nan
+        do j = 1, nd
+            r1 = (j - 1) * np + 1
+            r2 = j * np
+            table(r1:r2, 1) = cfg%dampings(j)
+            table(r1:r2, 2) = cfg%periods
+            if (nok == 0) cycle
+            k = 0
+            do ir = 1, size(outs)
+                if (.not. outs(ir)%ok) cycle
+                k = k + 1
+                sa(:, k) = res(ir)%sa(:, j)
+                psa(:, k) = res(ir)%psa(:, j)
+                if (cfg%shape) shp(:, k) = res(ir)%shp(:, j)
+            end do
+            msg = ''
+            call design_envelope(cfg%periods, sa, cfg%plateau_below, table(r1:r2, 3), st, msg)
+            if (st == SEISPULSE_SUCCESS) call design_envelope(cfg%periods, psa, &
+                cfg%plateau_below, table(r1:r2, 4), st, msg)
+            if (st == SEISPULSE_SUCCESS .and. cfg%shape) call design_envelope(cfg%periods, &
+                shp, cfg%plateau_below, table(r1:r2, 5), st, msg)
+            if (st /= SEISPULSE_SUCCESS) then
+                stat = 1
+                errmsg = 'envelope: '//trim(msg)
+                return
+            end if
+        end do
+
+        head(1) = spectra_line(cfg)
+        head(2) = 'the largest SA, PSA'
+        if (cfg%shape) head(2) = trim(head(2))//', PSA/PGA'
+        head(2) = trim(head(2))//' at each period over the '//int_str(nok)//' records ' &
+                  //'computed (of '//int_str(size(outs))//'; NaN: none was)'
+        if (cfg%plateau_below > 0.0_dp) then
+            head(3) = 'plateau: below T = '//num(cfg%plateau_below)//' s each curve is ' &
+                      //'held at its largest value at that or any longer period'
+        else
+            head(3) = 'no plateau (plateau_below = 0)'
+        end if
+        call record_comments(path, 'envelope of the response spectra over the records ' &
+                             //'(the design curve), one row per damping ratio and period', &
+                             head, cfg, outs, res, comments)
+        allocate(names(ncol), col_units(ncol))
+        names(1:4) = [character(len=8) :: 'damping', 'T', 'SA', 'PSA']
+        col_units(1:4) = [character(len=8) :: '-', 's', 'g', 'g']
+        if (cfg%shape) then
+            names(5) = 'PSA/PGA'
+            col_units(5) = '-'
+        end if
+        call write_tables(prefix, 'sdof_envelope', comments, names, col_units, table, &
+                          files_out, stat, errmsg)
+    end subroutine write_envelope
+
+    !> The history table: per record, damping and period the samples of the response.
+    subroutine write_history(path, prefix, cfg, outs, res, files_out, stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(config_t), intent(in) :: cfg
+        type(record_out_t), intent(in) :: outs(:)
+        type(record_res_t), intent(in) :: res(:)
+        character(len=*), intent(out) :: files_out(2)
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=4096), allocatable :: comments(:)
+        character(len=4096) :: head(3)
+        character(len=label_len(outs)), allocatable :: labels(:)
+        real(dp), allocatable :: table(:, :)
+        real(dp) :: nan
+        integer :: nrow, ir, j, k, row, n, nosc, nhp
+
+        nan = ieee_value(nan, ieee_quiet_nan)
+        nhp = size(cfg%h_periods)
+        nosc = nhp * size(cfg%h_dampings)
+        nrow = 0
+        do ir = 1, size(outs)
+            if (outs(ir)%ok) then
+                nrow = nrow + size(res(ir)%hist, 1)
+            else
+                nrow = nrow + nosc
+            end if
+            if (nrow > max_history_rows) then
+                stat = 1
+                errmsg = 'the history table would have more than '//int_str(max_history_rows) &
+                         //' rows (give fewer records, or fewer periods or damping ratios ' &
+                         //'in &sdof_history)'
+                return
+            end if
+        end do
+        allocate(table(nrow, 8))
+        allocate(labels(nrow))
+        row = 0
+        do ir = 1, size(outs)
+            if (outs(ir)%ok) then
+                n = size(res(ir)%hist, 1)
+                table(row + 1:row + n, :) = res(ir)%hist
+            else
+                n = nosc
+                table(row + 1:row + n, :) = nan
+                do j = 1, size(cfg%h_dampings)
+                    do k = 1, nhp
+                        table(row + (j - 1) * nhp + k, 1:2) = [cfg%h_dampings(j), &
+                                                               cfg%h_periods(k)]
+                    end do
+                end do
+                table(row + 1:row + n, 8) = 1.0_dp
+            end if
+            labels(row + 1:row + n) = outs(ir)%name
+            row = row + n
+        end do
+
+        head(1) = 'g = '//num(cfg%g)//' m/s2; the oscillator starts from rest; t = (i-1) dt ' &
+                  //'at the samples of the record'
+        head(2) = 'a_g: the ground acceleration (the record as scaled); z, z'': displacement ' &
+                  //'and velocity of the mass relative to the ground; a_abs = a_g + z'''': ' &
+                  //'absolute acceleration of the mass; T = 0: the ground (z = z'' = 0, ' &
+                  //'a_abs = a_g)'
+        head(3) = 'status: 0 ok, 1 failed (one row of NaN per damping and period; the ' &
+                  //'reason is below and on stderr)'
+        call record_comments(path, 'response histories of the linear oscillator on ' &
+                             //'accelerograms, one block of rows per record, damping ratio ' &
+                             //'and period', head, cfg, outs, res, comments)
+        call write_tables(prefix, 'sdof_history', comments, &
+            [character(len=8) :: 'record', 'damping', 'T', 't', 'a_g', 'z', 'z''', 'a_abs', &
+             'status'], &
+            [character(len=8) :: '-', '-', 's', 's', 'g', 'm', 'm/s', 'g', '-'], table, &
+            files_out, stat, errmsg, labels=labels)
+    end subroutine write_history
+
+    ! ------------------------------------------------------------------------------
+    ! Analysis 'sdof_beta'
+    ! ------------------------------------------------------------------------------
+
+    !> Read and check &sdof_beta, tabulate the dynamic coefficient, write the table;
+    !> print where it went. stat > 0 with errmsg on an input or output error.
+    subroutine run_sdof_beta(path, groups, prefix, stat, errmsg)
+        character(len=*), intent(in) :: path              !! input file (for messages)
+        type(nml_group), intent(in) :: groups(:)          !! scanned groups
+        character(len=*), intent(in) :: prefix            !! output prefix
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        type(nml_group) :: gb
+        character(len=:), allocatable :: where, grid
+        real(dp), allocatable :: ratios(:), gammas(:), table(:, :)
+        character(len=512) :: files(2)
+        character(len=1024) :: comments(6), msg
+        real(dp) :: nan, b, bc
+        integer :: model, nr, ng, i, j, row, st
+
+        call set_defaults()
+        call read_optional(path, groups, 'sdof_beta', beta_keys, read_beta, gb, stat, errmsg)
+        if (stat /= 0) return
+        stat = 1
+        if (find_group(groups, 'sdof_beta') == 0) then
+            errmsg = path//': &sdof_beta: missing group (it gives the frequency ratios ' &
+                     //'theta/omega: ratios = a list, or ratio_range = min, max with ' &
+                     //'ratio_count)'
+            return
+        end if
+        where = located(path, gb)
+        call axis_values(gb, 'ratios', 'ratio', beta_in%ratios, beta_in%ratio_range, &
+                         beta_in%ratio_count, beta_in%spacing, .false., .true., max_periods, &
+                         ratios, grid, errmsg)
+        if (len(errmsg) == 0 .and. size(ratios) == 0) errmsg = 'ratios: missing (give ' &
+            //'ratios = a list of theta/omega, or ratio_range = min, max with ratio_count)'
+        if (len(errmsg) > 0) then
+            errmsg = where//errmsg
+            return
+        end if
+        call check_gammas(gb, beta_in%gamma, gammas, errmsg)
+        if (len(errmsg) > 0) then
+            errmsg = where//errmsg
+            return
+        end if
+        select case (name_index(beta_in%model, model_names))
+        case (1)
+            model = BETA_HYSTERETIC
+        case (2)
+            model = BETA_VISCOUS
+        case default
+            errmsg = where//'model = '''//trim(beta_in%model)//''': unknown model (allowed: ' &
+                     //join(model_names)//')'
+            return
+        end select
+
+        ! --- echo the effective input
+        call echo_beta(ratios, gammas, model_names(model))
+
+        ! --- compute
+        nan = ieee_value(nan, ieee_quiet_nan)
+        nr = size(ratios)
+        ng = size(gammas)
+        allocate(table(nr * ng, 4))
+        do j = 1, ng
+            do i = 1, nr
+                row = (j - 1) * nr + i
+                msg = ''
+                call dynamic_coefficient(ratios(i), gammas(j), model, b, st, msg, beta_cos=bc)
+                if (st == SEISPULSE_SINGULAR) then
+                    ! undamped resonance: |beta| is infinite, its sign undefined
+                    b = nan
+                    bc = ieee_value(bc, ieee_positive_inf)
+                else if (st /= SEISPULSE_SUCCESS) then
+                    errmsg = where//trim(msg)
+                    return
+                end if
+                table(row, :) = [gammas(j), ratios(i), b, bc]
+            end do
+        end do
+
+        ! --- write
+        comments(1) = 'seispulse analysis sdof_beta: dynamic coefficient of harmonic base ' &
+                      //'motion against the frequency ratio theta/omega, one row per gamma ' &
+                      //'and ratio'
+        comments(2) = 'input: '//trim(path)
+        comments(3) = 'ratios: '//grid//'; model = '//trim(model_names(model))//'; gamma = ' &
+                      //'2 zeta (zeta: the viscous damping ratio)'
+        comments(4) = 'hysteretic (the book''s Eq. 2.20, square root restored): beta = ' &
+                      //'1/sqrt((1 - r^2)^2 + gamma^2); viscous: 1/sqrt((1 - r^2)^2 + ' &
+                      //'(gamma r)^2); both 1/gamma at r = 1'
+        comments(5) = 'gamma = 0: the signed 1/(1 - r^2) (Eq. 2.17, negative above ' &
+                      //'resonance); at r = 1 beta = nan (infinite, sign undefined) and ' &
+                      //'beta_cos = inf'
+        comments(6) = 'beta_cos = 2|beta|: the cosine law from rest (after Eq. 2.21); ' &
+                      //'max S = k_c beta Q (Eq. 2.19)'
+        call write_tables(prefix, 'sdof_beta', comments, &
+            [character(len=11) :: 'gamma', 'theta/omega', 'beta', 'beta_cos'], &
+            [character(len=11) :: '-', '-', '-', '-'], table, files, stat, errmsg)
+        if (stat /= 0) then
+            errmsg = path//': &run: output: '//errmsg
+            return
+        end if
+        write(output_unit, '(a)') 'sdof_beta table written to '//trim(files(1))//' and ' &
+            //trim(files(2))
+
+    end subroutine run_sdof_beta
+
+    ! ------------------------------------------------------------------------------
+    ! Analysis 'sdof_shock'
+    ! ------------------------------------------------------------------------------
+
+    !> Read and check &pulse and &sdof_shock, compute the shock spectrum of the pulse,
+    !> write the table; print where it went. stat > 0 with errmsg on an input or output
+    !> error.
+    subroutine run_sdof_shock(path, groups, prefix, stat, errmsg)
+        character(len=*), intent(in) :: path              !! input file (for messages)
+        type(nml_group), intent(in) :: groups(:)          !! scanned groups
+        character(len=*), intent(in) :: prefix            !! output prefix
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        type(pulse_input_t) :: pin
+        type(nml_group) :: gk
+        character(len=:), allocatable :: where, grid, td_text
+        real(dp), allocatable :: axis(:), ratios(:), periods(:), dampings(:), table(:, :), &
+                                 sd(:, :), sv(:, :), sa(:, :), psv(:, :), psa(:, :)
+        character(len=512) :: files(2)
+        character(len=1024) :: comments(7), msg
+        real(dp) :: td, apk, tpk, pga, inf, nan
+        integer :: np, nd, i, j, row, st
+        logical :: by_ratio, by_period
+
+        call set_defaults()
+        call read_pulse_group(path, groups, pin, stat, errmsg)
+        if (stat /= 0) return
+        call read_optional(path, groups, 'sdof_shock', shock_keys, read_shock, gk, stat, &
+                           errmsg)
+        if (stat /= 0) return
+        stat = 1
+        if (find_group(groups, 'sdof_shock') == 0) then
+            errmsg = path//': &sdof_shock: missing group (it gives the oscillators: ratios ' &
+                     //'t_d/T or periods, as a list or a range, and the damping ratios)'
+            return
+        end if
+        call build_pulse(path, pin, stat, errmsg, g_used=.true.)
+        if (stat /= 0) return
+        stat = 1
+        where = located(path, gk)
+
+        ! --- the oscillators: t_d/T ratios or periods
+        by_ratio = given(gk, 'ratios') .or. given(gk, 'ratio_range')
+        by_period = given(gk, 'periods') .or. given(gk, 'period_range')
+        if (by_ratio .and. by_period) then
+            errmsg = where//trim(merge('ratios     ', 'ratio_range', given(gk, 'ratios'))) &
+                     //', '//trim(merge('periods     ', 'period_range', given(gk, 'periods'))) &
+                     //': give only one of them (t_d/T ratios, or periods in s)'
+            return
+        end if
+        if (by_period) then
+            if (given(gk, 'ratio_count')) then
+                errmsg = where//'ratio_count: only with ratio_range'
+                return
+            end if
+            call axis_values(gk, 'periods', 'period', shock_in%periods, &
+                             shock_in%period_range, shock_in%period_count, shock_in%spacing, &
+                             .false., .true., max_periods, axis, grid, errmsg)
+        else
+            if (given(gk, 'period_count')) then
+                errmsg = where//'period_count: only with period_range'
+                return
+            end if
+            call axis_values(gk, 'ratios', 'ratio', shock_in%ratios, shock_in%ratio_range, &
+                             shock_in%ratio_count, shock_in%spacing, .true., .true., &
+                             max_periods, axis, grid, errmsg)
+            if (len(errmsg) == 0 .and. size(axis) == 0) errmsg = 'ratios: missing (give ' &
+                //'ratios = a list of t_d/T, or ratio_range = min, max with ratio_count; ' &
+                //'or periods in s)'
+        end if
+        if (len(errmsg) > 0) then
+            errmsg = where//errmsg
+            return
+        end if
+        call check_dampings(gk, shock_in%damping, dampings, errmsg)
+        if (len(errmsg) > 0) then
+            errmsg = where//errmsg
+            return
+        end if
+
+        ! --- t_d, T and t_d/T
+        if (pin%code == PULSE_RICKER .or. pin%code == PULSE_MP) then
+            td = 1.0_dp / pin%p%freq
+            td_text = 't_d = 1/freq = '//num(td)//' s (the pulse period)'
+        else
+            td = pin%p%duration
+            td_text = 't_d = duration = '//num(td)//' s'
+        end if
+        np = size(axis)
+        inf = ieee_value(inf, ieee_positive_inf)
+        nan = ieee_value(nan, ieee_quiet_nan)
+        allocate(ratios(np), periods(np))
+        if (by_period) then
+            periods = axis
+            do i = 1, np
+                ratios(i) = inf
+                if (periods(i) > 0.0_dp) ratios(i) = td / periods(i)
+            end do
+        else
+            ratios = axis
+            periods = td / ratios
+        end if
+
+        ! --- echo the effective input
+        call write_pulse_group(output_unit)
+        call echo_shock(by_period, axis, dampings)
+
+        ! --- compute
+        msg = ''
+        call pulse_peak_accel(pin%p, apk, tpk, st, msg)
+        if (st /= SEISPULSE_SUCCESS) then
+            errmsg = located(path, pin%group)//trim(msg)
+            return
+        end if
+        pga = apk / pin%g
+        nd = size(dampings)
+        allocate(table(np * nd, 10), sd(np, 1), sv(np, 1), sa(np, 1), psv(np, 1), psa(np, 1))
+        do j = 1, nd
+            do i = 1, np
+                ! one period at a time, so that a refusal names its value
+                msg = ''
+                call sdof_pulse_spectrum(pin%p, periods(i:i), dampings(j), sd(i:i, 1), &
+                                         sv(i:i, 1), sa(i:i, 1), st, msg)
+                if (st /= SEISPULSE_SUCCESS) then
+                    if (by_period) then
+                        errmsg = where//value_name('periods', i, np)//' = '//num(periods(i)) &
+                                 //': '//trim(msg)
+                    else
+                        errmsg = where//value_name('ratios', i, np)//' = '//num(ratios(i)) &
+                                 //' (T = t_d/ratio = '//num(periods(i))//' s, '//td_text &
+                                 //'): '//trim(msg)
+                    end if
+                    return
+                end if
+            end do
+            sa = sa / pin%g
+            call pseudo_spectra(periods, sd, pin%g, pga, psv, psa)
+            do i = 1, np
+                row = (j - 1) * np + i
+                table(row, 1:8) = [dampings(j), ratios(i), periods(i), sd(i, 1), sv(i, 1), &
+                                   sa(i, 1), psv(i, 1), psa(i, 1)]
+                table(row, 9:10) = nan
+                if (pga > 0.0_dp) table(row, 9:10) = [sa(i, 1), psa(i, 1)] / pga
+            end do
+        end do
+
+        ! --- write
+        comments(1) = 'seispulse analysis sdof_shock: shock spectrum of the linear ' &
+                      //'oscillator under one pulse (closed form, from rest), one row per ' &
+                      //'damping ratio and period'
+        comments(2) = 'input: '//trim(path)
+        comments(3) = 'pulse: '//pulse_kind_name(pin%code)//', '//td_text//', peak ground ' &
+                      //'acceleration PGA = '//num(apk)//' m/s2 = '//num(pga)//' g at t = ' &
+                      //num(tpk)//' s; g = '//num(pin%g)//' m/s2'
+        comments(4) = 'oscillators: '//grid
+        comments(5) = 'SD, SV: largest |z|, |z''| (relative to the ground); SA: largest ' &
+                      //'|a_g + z''''| (absolute acceleration); over all t >= 0, the free ' &
+                      //'vibration after the pulse included; PSV = omega SD, PSA = omega^2 SD / g'
+        comments(6) = 'SA/PGA, PSA/PGA: the dynamic coefficients (the shock spectrum ' &
+                      //'against t_d/T); T = 0 (t_d/T = inf): the ground, SA = PSA = PGA'
+        comments(7) = 'undamped rectangle: SA/PGA = 2 sin(pi t_d/T) for t_d/T <= 1/2, else 2 ' &
+                      //'(the book''s 1 + 2 pi t_d/T is an upper bound)'
+        call write_tables(prefix, 'sdof_shock', comments, &
+            [character(len=8) :: 'damping', 't_d/T', 'T', 'SD', 'SV', 'SA', 'PSV', 'PSA', &
+             'SA/PGA', 'PSA/PGA'], &
+            [character(len=8) :: '-', '-', 's', 'm', 'm/s', 'g', 'm/s', 'g', '-', '-'], table, &
+            files, stat, errmsg)
+        if (stat /= 0) then
+            errmsg = path//': &run: output: '//errmsg
+            return
+        end if
+        write(output_unit, '(a)') 'sdof_shock table written to '//trim(files(1))//' and ' &
+            //trim(files(2))
+
+    end subroutine run_sdof_shock
+
+    !> &sdof_beta with the values in use.
+    subroutine echo_beta(values, gammas, model_name)
+        real(dp), intent(in) :: values(:), gammas(:)
+        character(len=*), intent(in) :: model_name
+        real(dp) :: ratios(size(values)), gamma(size(gammas))
+        character(len=10) :: model
+        namelist /sdof_beta/ ratios, gamma, model
+        ratios = values
+        gamma = gammas
+        model = model_name
+        write(output_unit, nml=sdof_beta)
+    end subroutine echo_beta
+
+    !> &sdof_shock with the values in use (the ratios or the periods as a list).
+    subroutine echo_shock(by_period, values, dampings)
+        logical, intent(in) :: by_period
+        real(dp), intent(in) :: values(:), dampings(:)
+        if (by_period) then
+            call echo_shock_periods(values, dampings)
+        else
+            call echo_shock_ratios(values, dampings)
+        end if
+    end subroutine echo_shock
+
+    subroutine echo_shock_periods(values, dampings)
+        real(dp), intent(in) :: values(:), dampings(:)
+        real(dp) :: periods(size(values)), damping(size(dampings))
+        namelist /sdof_shock/ periods, damping
+        periods = values
+        damping = dampings
+        write(output_unit, nml=sdof_shock)
+    end subroutine echo_shock_periods
+
+    subroutine echo_shock_ratios(values, dampings)
+        real(dp), intent(in) :: values(:), dampings(:)
+        real(dp) :: ratios(size(values)), damping(size(dampings))
+        namelist /sdof_shock/ ratios, damping
+        ratios = values
+        damping = dampings
+        write(output_unit, nml=sdof_shock)
+    end subroutine echo_shock_ratios
+
+    !> Length of the longest record name (the label column).
+    pure integer function label_len(outs)
+        type(record_out_t), intent(in) :: outs(:)
+        integer :: i
+        label_len = 1
+        do i = 1, size(outs)
+            label_len = max(label_len, len(outs(i)%name))
+        end do
+    end function label_len
+
+    !> Remove tables already written (a later table failed).
+    subroutine delete_files(files)
+        character(len=*), intent(in) :: files(:)
+        integer :: i, u, ios
+        do i = 1, size(files)
+            open(newunit=u, file=trim(files(i)), status='old', iostat=ios)
+            if (ios == 0) close(u, status='delete', iostat=ios)
+        end do
+    end subroutine delete_files
+
+end module driver_sdof
