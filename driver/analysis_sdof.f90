@@ -45,7 +45,7 @@ module driver_sdof
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, given, list_length, &
                             list_item
-    use driver_tables, only: write_tables
+    use driver_tables, only: write_tables, delete_files
     use driver_pulse_group, only: pulse_input_t, read_pulse_group, build_pulse, &
                                   write_pulse_group
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
@@ -1468,15 +1468,5 @@ contains
             label_len = max(label_len, len(outs(i)%name))
         end do
     end function label_len
-
-    !> Remove tables already written (a later table failed).
-    subroutine delete_files(files)
-        character(len=*), intent(in) :: files(:)
-        integer :: i, u, ios
-        do i = 1, size(files)
-            open(newunit=u, file=trim(files(i)), status='old', iostat=ios)
-            if (ios == 0) close(u, status='delete', iostat=ios)
-        end do
-    end subroutine delete_files
 
 end module driver_sdof

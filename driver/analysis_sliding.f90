@@ -24,7 +24,7 @@ module driver_sliding
                             list_item
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, finite_positive
-    use driver_tables, only: write_tables
+    use driver_tables, only: write_tables, delete_files
     implicit none
     private
 
@@ -746,15 +746,5 @@ contains
             [character(len=4) :: '-', '-', '-', '-', '-', 's', 's', 'm', 's', 's', 'm', 'm', &
              'm/s', 'm/s'], table, files, stat, errmsg)
     end subroutine write_result
-
-    !> Remove tables already written (a later table failed).
-    subroutine delete_files(files)
-        character(len=*), intent(in) :: files(:)
-        integer :: i, u, ios
-        do i = 1, size(files)
-            open(newunit=u, file=trim(files(i)), status='old', iostat=ios)
-            if (ios == 0) close(u, status='delete', iostat=ios)
-        end do
-    end subroutine delete_files
 
 end module driver_sliding

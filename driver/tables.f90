@@ -6,7 +6,7 @@ module driver_tables
     implicit none
     private
 
-    public :: write_tables, column_len
+    public :: write_tables, column_len, delete_files
 
     !> Width of a text column: a blank, then es24.16e3 (a negative number fills all 24).
     integer, parameter :: column_len = 25
@@ -198,5 +198,16 @@ contains
         ! a failure shows up when the table is opened, with a better message
         call execute_command_line('mkdir -p -- '//quoted//' 2>/dev/null', exitstat=code)
     end subroutine make_parent_dir
+
+    !> Remove tables already written (a later table of the same run failed): no
+    !> half-written output is left behind.
+    subroutine delete_files(files)
+        character(len=*), intent(in) :: files(:)
+        integer :: i, u, ios
+        do i = 1, size(files)
+            open(newunit=u, file=trim(files(i)), status='old', iostat=ios)
+            if (ios == 0) close(u, status='delete', iostat=ios)
+        end do
+    end subroutine delete_files
 
 end module driver_tables

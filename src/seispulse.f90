@@ -7,7 +7,7 @@ module seispulse
                                 SEISPULSE_NO_CONVERGENCE, SEISPULSE_NO_BRACKET, &
                                 SEISPULSE_INTERNAL, SEISPULSE_IO, status_name
     use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, &
-                                 sin_pi, cos_pi
+                                 sin_pi, cos_pi, complex_phis
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
     use seispulse_lapack, only: solve_linear
     use seispulse_pulses, only: exp_pulse, exp_pulse_point, exp_pulse_peaks, &
@@ -56,6 +56,9 @@ module seispulse
                                  newmark_method_name, newmark_mode_code, newmark_method_code, &
                                  NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM, NEWMARK_EXACT, &
                                  NEWMARK_SLAMMER
+    use seispulse_sdof, only: sdof_step_t, sdof_step, sdof_check, sdof_response, sdof_spectrum, &
+                              pseudo_spectra, design_envelope, spectral_shape, sdof_threads, &
+                              SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES
     use seispulse_sdof_pulse, only: dynamic_coefficient, harmonic_response, rect_pulse_response, &
                                     beta_pulse, impulse_max, impulse_response, &
                                     sdof_pulse_response, sdof_pulse_peaks, sdof_pulse_spectrum, &

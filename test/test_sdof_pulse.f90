@@ -80,6 +80,8 @@ contains
                  new_unittest('exponential limits: beta -> 0, +-1, -inf, +inf, huge', &
                               test_exp_limits), &
                  new_unittest('zeta -> 0 is continuous', test_zeta_limit), &
+                 new_unittest('very long periods: z -> -d_g, z'' -> -v_g; tiny t', &
+                              test_long_periods), &
                  new_unittest('peaks >= dense samples, value at the reported time', &
                               test_peaks_dense), &
                  new_unittest('spectrum: = peaks, period 0, T -> 0 gives PGA', test_spectrum), &
@@ -287,14 +289,16 @@ contains
         call check(error, beta, 1.0_dp / sqrt(0.64_dp**2 + 0.04_dp), message='hysteretic r = 0.6')
         if (allocated(error)) return
         call dynamic_coefficient(0.6_dp, 0.2_dp, BETA_VISCOUS, bv, stat)
-        call check(error, bv, 1.0_dp / sqrt(0.64_dp**2 + 0.04_dp * 0.36_dp), message='viscous r = 0.6')
+        call check(error, bv, 1.0_dp / sqrt(0.64_dp**2 + 0.04_dp * 0.36_dp), &
+                   message='viscous r = 0.6')
         if (allocated(error)) return
         call check(error, bv > beta, 'viscous damping term is smaller below resonance')
         if (allocated(error)) return
         ! near resonance, (1 - r)(1 + r) keeps every digit: r = 1 - d gives 1/(d (2 - d))
         r = 1.0_dp - 2.0_dp**(-30)
         call dynamic_coefficient(r, 0.0_dp, BETA_HYSTERETIC, beta, stat)
-        call check(error, beta, 1.0_dp / (2.0_dp**(-30) * (2.0_dp - 2.0_dp**(-30))), rtol=4.0e-16_dp, &
+        call check(error, beta, 1.0_dp / (2.0_dp**(-30) * (2.0_dp - 2.0_dp**(-30))), &
+                   rtol=4.0e-16_dp, &
                    message='near resonance')
         if (allocated(error)) return
         ! singular: r = 1, gamma = 0
@@ -399,7 +403,8 @@ contains
         th = 0.5_dp * om
         beta = 1.0_dp / (1.0_dp - 0.25_dp)
         t = [0.3_dp * period, 1.0e-9_dp, period]
-        call harmonic_response(t, w0, period, 0.5_dp, 0.0_dp, HARMONIC_COSINE, .true., z, v, a, stat)
+        call harmonic_response(t, w0, period, 0.5_dp, 0.0_dp, HARMONIC_COSINE, .true., z, v, a, &
+                               stat)
         call check(error, stat, SEISPULSE_SUCCESS)
         if (allocated(error)) return
         corrected = w0 * beta / om**2 * (cos(th * t(1)) - cos(om * t(1)))
@@ -440,7 +445,8 @@ contains
         call check(error, z, w0 / (2.0_dp * om**2) * (sin(om * t) - om * t * cos(om * t)), &
                    atol=1.0e-14_dp * w0 * 20.0_dp / om, message='sine at resonance')
         if (allocated(error)) return
-        call harmonic_response(t, w0, period, 1.0_dp, 0.0_dp, HARMONIC_COSINE, .true., z, v, a, stat)
+        call harmonic_response(t, w0, period, 1.0_dp, 0.0_dp, HARMONIC_COSINE, .true., z, v, a, &
+                               stat)
         call check(error, z, w0 / (2.0_dp * om) * t * sin(om * t), &
                    atol=1.0e-14_dp * w0 * 20.0_dp / om, message='cosine at resonance')
         if (allocated(error)) return
@@ -574,10 +580,11 @@ contains
             ! Eq. 2.24 form, damped
             i = 1234
             call check(error, z(i), -jw * exp(-zetas(k) * om * t(i)) * sin(om * sqrt(1.0_dp &
-                       - zetas(k)**2) * t(i)) / (om * sqrt(1.0_dp - zetas(k)**2)), rtol=1.0e-14_dp, &
-                       message='impulse response')
+                       - zetas(k)**2) * t(i)) / (om * sqrt(1.0_dp - zetas(k)**2)), &
+                       rtol=1.0e-14_dp, message='impulse response')
             if (allocated(error)) return
-            call check(error, zmax >= maxval(abs(z)) .and. zmax < maxval(abs(z)) * (1.0_dp + 1.0e-7_dp), &
+            call check(error, zmax >= maxval(abs(z)) .and. &
+                       zmax < maxval(abs(z)) * (1.0_dp + 1.0e-7_dp), &
                        'impulse_max vs dense samples')
             if (allocated(error)) return
             ! the rectangle with t1 -> 0 at fixed J_W = W0 t1 tends to the impulse
@@ -619,7 +626,8 @@ contains
                   exponential_pulse(-2.0_dp, 0.7_dp, -2.5_dp, .true.), &
                   exponential_pulse(2.0_dp, 0.7_dp, 30.0_dp, .true.), &
                   exponential_pulse(2.0_dp, 0.7_dp, -30.0_dp, .false.), &
-                  exponential_pulse(2.0_dp, 0.7_dp, ieee_value(1.0_dp, ieee_negative_inf), .true.), &
+                  exponential_pulse(2.0_dp, 0.7_dp, ieee_value(1.0_dp, ieee_negative_inf), &
+                                    .true.), &
                   half_sine_pulse(1.5_dp, 0.45_dp), &
                   half_sine_pulse(1.5_dp, 0.45_dp), &
                   sine_cycle_pulse(-1.1_dp, 0.8_dp), &
@@ -673,7 +681,8 @@ contains
         wd = om * sqrt(1.0_dp - zeta**2)
         t = [0.05_dp, 0.2_dp, 0.35_dp, 0.5_dp, 0.7_dp, 0.9_dp, 1.05_dp, 1.3_dp, 2.0_dp, 3.7_dp]
         ! beta = 0 is the triangle; tiny beta too
-        call sdof_pulse_response(triangular_pulse(a0, td, 0.5_dp), period, zeta, t, zr, vr, ar, stat)
+        call sdof_pulse_response(triangular_pulse(a0, td, 0.5_dp), period, zeta, t, zr, vr, ar, &
+                                 stat)
         call sdof_pulse_response(exponential_pulse(a0, td, 0.0_dp, .false.), period, zeta, t, z, &
                                  v, a, stat)
         call check(error, z, zr, atol=1.0e-15_dp * maxval(abs(zr)), message='beta = 0: triangle')
@@ -758,12 +767,56 @@ contains
         real(dp) :: t(6), z0(6), v0(6), a0(6), z(6), v(6), a(6)
         integer :: stat
         t = [0.1_dp, 0.4_dp, 0.8_dp, 1.5_dp, 3.0_dp, 9.0_dp]
-        call sdof_pulse_response(half_sine_pulse(1.0_dp, 0.5_dp), 0.7_dp, 0.0_dp, t, z0, v0, a0, stat)
-        call sdof_pulse_response(half_sine_pulse(1.0_dp, 0.5_dp), 0.7_dp, 1.0e-12_dp, t, z, v, a, stat)
+        call sdof_pulse_response(half_sine_pulse(1.0_dp, 0.5_dp), 0.7_dp, 0.0_dp, t, z0, v0, a0, &
+                                 stat)
+        call sdof_pulse_response(half_sine_pulse(1.0_dp, 0.5_dp), 0.7_dp, 1.0e-12_dp, t, z, v, a, &
+                                 stat)
         call check(error, z, z0, atol=1.0e-10_dp * maxval(abs(z0)), message='zeta = 1e-12')
         if (allocated(error)) return
         call check(error, a, a0, atol=1.0e-10_dp * maxval(abs(a0)), message='zeta = 1e-12 a_abs')
     end subroutine test_zeta_limit
+
+    subroutine test_long_periods(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(pulse_t) :: pulses(6)
+        real(dp), parameter :: periods(2) = [1.0e100_dp, 1.0e8_dp]
+        real(dp) :: t(9), z(9), v(9), a(9), ag(9), vg(9), dg(9), om, h(1), zz(1), vv(1), aa(1)
+        integer :: k, j, i, stat
+        pulses = [half_sine_pulse(1.5_dp, 0.45_dp), &
+                  exponential_pulse(2.0_dp, 0.7_dp, 3.0_dp, .true.), &
+                  exponential_pulse(2.0_dp, 0.7_dp, 0.4_dp, .false.), &
+                  triangular_pulse(1.2_dp, 0.6_dp, 0.3_dp), &
+                  ricker_pulse(2.0_dp, 1.3_dp, 1.1_dp), &
+                  mp_pulse(0.4_dp, 0.9_dp, 2.3_dp, 40.0_dp, 1.5_dp)]
+        t = [0.01_dp, 0.1_dp, 0.3_dp, 0.5_dp, 0.9_dp, 1.3_dp, 1.9_dp, 2.6_dp, 3.1_dp]
+        ! the mass stays where it was: z = -d_g, z' = -v_g (to (omega t)^2, and to
+        ! zeta omega t with damping: undamped at T = 1e8 s)
+        do j = 1, 2
+            do k = 1, size(pulses)
+                call sdof_pulse_response(pulses(k), periods(j), merge(0.05_dp, 0.0_dp, j == 1), &
+                                         t, z, v, a, stat)
+                call check(error, stat, SEISPULSE_SUCCESS, 'long period')
+                if (allocated(error)) return
+                do i = 1, size(t)
+                    call pulse_at(pulses(k), t(i), ag(i), vg(i), dg(i))
+                end do
+                call check(error, z, -dg, atol=1.0e-12_dp * maxval(abs(dg)), message='z = -d_g')
+                if (allocated(error)) return
+                call check(error, v, -vg, atol=1.0e-12_dp * maxval(abs(vg)), message='v = -v_g')
+                if (allocated(error)) return
+            end do
+        end do
+        ! early in a pulse: the harmonic sine law from rest, z = -W0 theta t^3/6 (1 + O(t^2))
+        om = 2.0_dp * pi
+        h = 1.0e-7_dp
+        call harmonic_response(h, 1.0_dp, 1.0_dp, 0.5_dp, 0.0_dp, HARMONIC_SINE, .true., zz, vv, &
+                               aa, stat)
+        call check(error, zz(1), 0.5_dp * om * h(1)**3 / 6.0_dp, rtol=1.0e-12_dp, &
+                   message='z at t = 1e-7 T')
+        if (allocated(error)) return
+        call check(error, vv(1), 0.5_dp * om * h(1)**2 / 2.0_dp, rtol=1.0e-12_dp, &
+                   message='v at t = 1e-7 T')
+    end subroutine test_long_periods
 
     subroutine test_peaks_dense(error)
         type(test_error), allocatable, intent(out) :: error
@@ -828,7 +881,8 @@ contains
         integer :: stat, i
         p = half_sine_pulse(3.0_dp, 0.5_dp)
         periods = [0.0_dp, 1.0e-4_dp, 0.2_dp, 0.5_dp, 2.0_dp]
-        call sdof_pulse_spectrum(p, periods, 0.05_dp, sd, sv, sa, stat, t_sd=tsd, t_sv=tsv, t_sa=tsa)
+        call sdof_pulse_spectrum(p, periods, 0.05_dp, sd, sv, sa, stat, t_sd=tsd, t_sv=tsv, &
+                                 t_sa=tsa)
         call check(error, stat, SEISPULSE_SUCCESS, 'spectrum')
         if (allocated(error)) return
         call check(error, [sd(1), sv(1)], [0.0_dp, 0.0_dp], message='period 0')
@@ -840,8 +894,8 @@ contains
         call check(error, sa(2), 3.0_dp, rtol=1.0e-3_dp, message='T -> 0: PGA')
         if (allocated(error)) return
         do i = 3, 5
-            call sdof_pulse_peaks(p, periods(i), 0.05_dp, pk(1), pk(2), pk(3), pk(4), pk(5), pk(6), &
-                                  stat)
+            call sdof_pulse_peaks(p, periods(i), 0.05_dp, pk(1), pk(2), pk(3), pk(4), pk(5), &
+                                  pk(6), stat)
             call check(error, [sd(i), tsd(i), sv(i), tsv(i), sa(i), tsa(i)], pk, rtol=0.0_dp, &
                        message='spectrum = peaks')
             if (allocated(error)) return
@@ -892,7 +946,8 @@ contains
         call expect_error(error, stat, msg, 'duration')
         if (allocated(error)) return
         p%kind = 99
-        call sdof_pulse_peaks(p, 1.0_dp, 0.05_dp, pk(1), pk(2), pk(3), pk(4), pk(5), pk(6), stat, msg)
+        call sdof_pulse_peaks(p, 1.0_dp, 0.05_dp, pk(1), pk(2), pk(3), pk(4), pk(5), pk(6), stat, &
+                              msg)
         call expect_error(error, stat, msg, 'kind')
         if (allocated(error)) return
         p = half_sine_pulse(1.0_dp, 0.5_dp)

@@ -5,7 +5,8 @@
 The oscillator (natural period ``period`` = T, omega = 2 pi / T, viscous damping ratio
 ``damping`` = zeta, 0 <= zeta < 1; the book's gamma = 2 zeta) starts from rest::
 
-    z'' + 2 zeta omega z' + omega^2 z = -a_g(t),   a_abs = a_g + z'' = -(2 zeta omega z' + omega^2 z)
+    z'' + 2 zeta omega z' + omega^2 z = -a_g(t),
+    a_abs = a_g + z'' = -(2 zeta omega z' + omega^2 z)
 
 with ``z`` the displacement of the mass relative to the ground. Everything here is in
 SI units: accelerations in m/s^2, velocities in m/s, displacements in m, times and

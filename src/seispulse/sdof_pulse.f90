@@ -2,7 +2,8 @@
 !>
 !> Model: natural period T (omega = 2 pi/T), viscous damping ratio zeta (0 <= zeta < 1; the
 !> book's gamma = 2 zeta), relative displacement z, ground acceleration a_g, from rest:
-!>     z'' + 2 zeta omega z' + omega^2 z = -a_g(t),   a_abs = a_g + z'' = -(2 zeta omega z' + omega^2 z).
+!>     z'' + 2 zeta omega z' + omega^2 z = -a_g(t),
+!>     a_abs = a_g + z'' = -(2 zeta omega z' + omega^2 z).
 !> SI throughout: a_g, a_abs in m/s^2, z in m, z' in m/s, t and T in s.
 !>
 !> Book forms (undamped unless stated; equation numbers of oscillator.md):
@@ -30,6 +31,10 @@
 !>                                so that the exponent is <= 0 on the segment: no overflow)
 !>     Re(C e^(i kappa s))    ->  cos and sin parts, tau (e1 + e2)/2 and tau kappa s e[x, iks, -iks]
 !>     C s phi_1(R s)         ->  C tau s e[lambda sigma, R s, 0]   (the "expm1 ramp")
+!> Where sigma < 1, Re V (the displacement) is not taken from Im K (which would keep only
+!> ~sigma of its digits: very long periods, the start of a segment) but from divided
+!> differences over the conjugate pair, the impulse response being
+!> sigma e[lambda sigma, conj(lambda) sigma]: -C tau sigma e[x, conj(x), y] per term.
 !> Per kind:
 !> * exponential (seed 000 Eq. 1.1b), each half lobe: |beta| <= 1 the expm1 ramp with the
 !>   bounded factor 1/phi_1(beta) (beta = 0 is the triangle); beta > 1 the exponential
@@ -40,25 +45,30 @@
 !> * half_sine, sine_cycle, cosine_cycle, mavroeidis_papageorgiou: sums of sinusoids (M&P:
 !>   three, the derivative of (A/2)(1 + cos(2 pi f x/gamma)) cos(2 pi f x + nu)).
 !> * rectangular: a constant; triangular: two linear ramps.
-!> * ricker: no elementary closed form. Its Duhamel integral is evaluated by composite
-!>   20-node Gauss-Legendre on panels no longer than min(T, 1/f_p)/4 (rounding-level accurate:
-!>   the integrand is entire), the state carried exactly from panel to panel; the wavelet is
-!>   cut at x = pi f_p (t - t0) = -10 and +10 as in seispulse_pieces (|a_g| < 1e-40 a_p
-!>   outside). At most 2^16 panels: shorter periods are refused with a message.
+!> * ricker: no elementary closed form (the complex error function would be needed); its
+!>   Duhamel integral is evaluated by composite 20-node Gauss-Legendre on equal panels no
+!>   longer than min(T, 1/f_p)/32 (rounding-level accurate: the integrand is entire), the
+!>   state carried exactly from panel to panel; the wavelet is cut at
+!>   x = pi f_p (t - t0) = -10 and +10 as in seispulse_pieces (|a_g| < 1e-40 a_p outside).
+!>   At most 2^20 panels: periods below 32 (window)/2^20 are refused with a message.
 !> After the pulse the response is the free vibration V = e^(lambda sigma) V_end, at any t.
 !>
-!> Peaks (`sdof_pulse_peaks`): the maxima of |z|, |z'|, |a_abs| over all t >= 0. In each segment
-!> a scan brackets the sign changes of z' = Re(lambda V), z'' = omega Re(lambda^2 V) - a_g and
-!> d a_abs/dt = omega (omega Re(lambda^3 V) + 2 zeta a_g). Scan step: <= T/32, <= segment/64, <= 1/32 of
-!> the shortest period of a sinusoidal term, and for exponential half lobes with |beta| > 16 a
-!> scan graded from the sharp end (first step t_d/(8|beta|), then x1.25 per step; first step
-!> floored at 1e-12 of the half lobe); at most 2^20 steps per segment (Ricker panels: 8 steps).
-!> Each bracket's extremum is estimated by the cubic Hermite interpolant of the two scan
-!> points; brackets whose estimate is within 1% of the best value found are refined by
-!> Brent's method (seispulse_roots: proven bracket, guaranteed termination) and the value is
-!> taken at the root. Scan points and segment ends are candidates too (kinks where a_g jumps).
-!> After the pulse the maximum of a damped sinusoid on [t_end, inf) is at t_end or at its
-!> first stationary point, both closed form.
+!> Peaks (`sdof_pulse_peaks`): the maxima of |z|, |z'|, |a_abs| over all t >= 0. In each
+!> segment a scan brackets the sign changes of z' = Re(lambda V),
+!> z'' = omega Re(lambda^2 V) - a_g and d a_abs/dt = omega (omega Re(lambda^3 V) + 2 zeta a_g).
+!> Scan step: <= T/32, <= segment/64, <= 1/32 of the shortest period of a sinusoidal term,
+!> and for exponential half lobes with |beta| > 16 a scan graded from the sharp end (first
+!> step t_d/(8|beta|), then x1.25 per step; the first step is floored at 1e-12 of the half
+!> lobe, below which a spike is not resolved); at most 2^20 steps per segment (a cap reached
+!> only for T < ~3e-5 of the segment or M&P with gamma > ~3e4). The scan values come from
+!> the exact one-step recurrence (kernel constants cached per step length; cheap) and only
+!> steer the search. Ricker: the scan points are the panel ends. Each bracket's extremum is
+!> estimated by the cubic Hermite interpolant of its two scan points; brackets whose estimate
+!> is within 1% of the best value found are refined by Brent's method (seispulse_roots:
+!> proven bracket, guaranteed termination) and the value is taken at the root, evaluated
+!> directly. Segment ends (kinks where a_g jumps) and the best interior sample, evaluated
+!> directly, are candidates too. After the pulse the maximum of a damped sinusoid on
+!> [t_end, inf) is at t_end or at its first stationary point, both closed form.
 module seispulse_sdof_pulse
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use seispulse_kinds, only: dp
@@ -256,7 +266,7 @@ contains
     subroutine harmonic_response(t, w0, period, ratio, damping, law, transient, z, v, a_abs, &
                                  stat, errmsg)
         real(dp), intent(in) :: t(:)                          !! times (s), finite
-        real(dp), intent(in) :: w0                            !! W0, base acceleration amplitude (m/s^2)
+        real(dp), intent(in) :: w0                            !! W0, base acceleration (m/s^2)
         real(dp), intent(in) :: period                        !! natural period T (s), > 0
         real(dp), intent(in) :: ratio                         !! r = theta/omega, >= 0
         real(dp), intent(in) :: damping                       !! zeta in [0, 1)
@@ -416,8 +426,9 @@ contains
     end subroutine beta_pulse
 
     !> Largest |z| after an instantaneous acceleration impulse J_W (m/s) at t = 0, and its time:
-    !> undamped |J_W|/omega at T/4 (Eq. 2.25); damped, z = -J_W e^(-zeta omega t) sin(omega_d t)/omega_d
-    !> peaks at t* = atan2(sqrt(1 - zeta^2), zeta)/omega_d with |z| = (|J_W|/omega) e^(-zeta omega t*).
+    !> undamped |J_W|/omega at T/4 (Eq. 2.25); damped,
+    !> z = -J_W e^(-zeta omega t) sin(omega_d t)/omega_d peaks at
+    !> t* = atan2(sqrt(1 - zeta^2), zeta)/omega_d with |z| = (|J_W|/omega) e^(-zeta omega t*).
     subroutine impulse_max(jw, period, damping, z_max, t_max, stat, errmsg)
         real(dp), intent(in) :: jw                            !! J_W = W0 t1 (m/s)
         real(dp), intent(in) :: period                        !! natural period T (s), > 0
@@ -921,7 +932,7 @@ contains
             ! Re V = -Im(K/omega)/sqrt(1 - zeta^2) would keep only ~sigma of the digits of K;
             ! with the impulse response sigma e[lambda sigma, conj(lambda) sigma] it is a
             ! divided difference over the conjugate pair, with no cancellation
-            w = w + cmplx(forced_real(osc, seg, s, sigma, tau, x0), &
+            w = w + cmplx(forced_real(seg, s, sigma, tau, x0), &
                           real(k, dp) / osc%wd, dp)
         end if
     end subroutine seg_state
@@ -930,8 +941,7 @@ contains
     !> sigma < 1: each term C e^(y s) contributes -C tau sigma e[x, conj(x), y s] (x = lambda
     !> sigma, shifted for referenced exponentials), the expm1 ramp -C tau sigma s
     !> e[x, conj(x), R s, 0].
-    pure function forced_real(osc, seg, s, sigma, tau, x0) result(zr)
-        type(osc_t), intent(in) :: osc
+    pure function forced_real(seg, s, sigma, tau, x0) result(zr)
         type(seg_t), intent(in) :: seg
         real(dp), intent(in) :: s, sigma, tau
         complex(dp), intent(in) :: x0
@@ -950,7 +960,6 @@ contains
         zr = zr * (tau * sigma)
         if (seg%has_r) zr = zr - seg%cr * (tau * sigma) * s &
             * real(dd4_taylor(x0, conjg(x0), cmplx(seg%rr * s, 0.0_dp, dp), (0.0_dp, 0.0_dp)), dp)
-        if (.false.) zr = zr * osc%wd
     end function forced_real
 
     !> Third divided difference e[x1, x2, x3, x4] of exp for points in the unit disk:
@@ -1028,7 +1037,8 @@ contains
     end function seg_accel
 
     !> Advance V from s0 to s1 in a closed-form segment by one step of the exact
-    !> recurrence V1 = e^(lambda h L) V0 + (i/sqrt(1 - zeta^2)) dK/omega, with the kernel constants of
+    !> recurrence V1 = e^(lambda h L) V0 + (i/sqrt(1 - zeta^2)) dK/omega, with the kernel
+    !> constants of
     !> the step length cached in st (used by the scan only: rounding accumulates linearly
     !> with the number of steps, so every value that can become a result is re-evaluated
     !> directly). ag1 = a_g(s1).
@@ -1290,7 +1300,8 @@ contains
             call add_seg(m, p%t0 - 0.5_dp * gam / p%freq, gam / p%freq)
             do k = 1, 3
                 call add_sin(m%seg(1), a * p%freq * ww(k) * cmplx(0.0_dp, kk(k), dp) &
-                             * cmplx(cos(nu), sin(nu), dp) * cmplx(cos_pi(q(k)), -sin_pi(q(k)), dp), &
+                             * cmplx(cos(nu), sin(nu), dp) &
+                             * cmplx(cos_pi(q(k)), -sin_pi(q(k)), dp), &
                              kk(k) * gam)
             end do
         end select
@@ -1719,8 +1730,8 @@ contains
                 best = val
                 xbest = xb
             end if
-            if (j > 0 .and. ((ja > 0.0_dp .and. jb < 0.0_dp) .or. (ja < 0.0_dp .and. jb > 0.0_dp))) &
-                then
+            if (j > 0 .and. ((ja > 0.0_dp .and. jb < 0.0_dp) .or. &
+                             (ja < 0.0_dp .and. jb > 0.0_dp))) then
                 call find_root(f, xa, xb, xr, stat, fa_known=ja, fb_known=jb)
                 if (stat == SEISPULSE_SUCCESS) then
                     val = abs(mp_accel(f%k, f%w, f%nu, xr))

@@ -50,8 +50,8 @@ def make_accel(kind, **p):
                           else A * (d - t) / ((1 - r) * d))
     if kind == "ricker":
         f, t0 = p["freq"], p["t0"]
-        return lambda t: (A * (1 - 2 * (PI * f * (t - t0)) ** 2) * math.exp(-(PI * f * (t - t0)) ** 2)
-                          if t >= 0 else 0.0)
+        return lambda t: (A * (1 - 2 * (PI * f * (t - t0)) ** 2)
+                          * math.exp(-(PI * f * (t - t0)) ** 2) if t >= 0 else 0.0)
     if kind == "mavroeidis_papageorgiou":
         f, g, nu, t0 = p["freq"], p["gamma"], math.radians(p.get("nu_deg", 0.0)), p["t0"]
 
