@@ -33,7 +33,7 @@ module seispulse_newmark
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
                                 SEISPULSE_INTERNAL, set_error, real_str
     use seispulse_stickslip, only: slide_t
-    use seispulse_pieces, only: record_pieces_check
+    use seispulse_pieces, only: record_step_check
     use seispulse_sliding, only: inclined_resistances
     implicit none
     private
@@ -167,17 +167,7 @@ contains
                            //'(allowed: 1 exact, 2 slammer)')
             return
         end if
-        if (.not. (positive(dt) .and. ieee_is_finite(dt))) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'dt = '//real_str(dt) &
-                           //': must be a finite number > 0 (s)')
-            return
-        end if
-        if (.not. (positive(g) .and. ieee_is_finite(g))) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(g) &
-                           //': must be a finite number > 0 (m/s^2)')
-            return
-        end if
-        call record_pieces_check(accel, stat, errmsg)   ! not empty, finite samples
+        call record_step_check(accel, dt, g, stat, errmsg)   ! dt, g; not empty, finite
         if (stat /= SEISPULSE_SUCCESS) return
         if (.not. same_size(u_hist, 'u_hist')) return
         if (.not. same_size(w_hist, 'w_hist')) return

@@ -36,7 +36,7 @@ module seispulse_pieces
     implicit none
     private
 
-    public :: piece_t, piece_iter_t, pulse_pieces_check, record_pieces_check
+    public :: piece_t, piece_iter_t, pulse_pieces_check, record_pieces_check, record_step_check
     public :: pulse_pieces_init, record_pieces_init, next_piece
 
     !> M&P: largest gamma accepted (64 gamma coarse pieces are generated).
@@ -141,6 +141,33 @@ contains
             end if
         end do
     end subroutine record_pieces_check
+
+    !> A record with its time step and gravity, as every analysis on records takes them:
+    !> dt and g finite and > 0, then `record_pieces_check` on the samples.
+    subroutine record_step_check(accel, dt, g, stat, errmsg)
+        real(dp), intent(in) :: accel(:)                      !! ground acceleration samples (g)
+        real(dp), intent(in) :: dt                            !! time step (s)
+        real(dp), intent(in) :: g                             !! gravity (m/s^2)
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        stat = SEISPULSE_SUCCESS
+        if (.not. finite_positive(dt)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'dt = '//real_str(dt) &
+                           //': must be a finite number > 0 (s)')
+        else if (.not. finite_positive(g)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(g) &
+                           //': must be a finite number > 0 (m/s^2)')
+        else
+            call record_pieces_check(accel, stat, errmsg)
+        end if
+    contains
+        !> x finite and > 0, with no ordered comparison of a NaN (-ffpe-trap=invalid).
+        logical function finite_positive(x)
+            real(dp), intent(in) :: x
+            finite_positive = .false.
+            if (ieee_is_finite(x)) finite_positive = x > 0.0_dp
+        end function finite_positive
+    end subroutine record_step_check
 
     !> The pieces of a (valid) pulse: its break list, or the M&P generator state.
     subroutine pulse_pieces_init(it, p)

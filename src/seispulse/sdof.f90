@@ -41,7 +41,7 @@ module seispulse_sdof
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error, &
                                 real_str, int_str
     use seispulse_special, only: complex_phis, pi
-    use seispulse_pieces, only: record_pieces_check
+    use seispulse_pieces, only: record_step_check
     !$ use omp_lib, only: omp_set_num_threads, omp_get_max_threads
     implicit none
     private
@@ -115,27 +115,6 @@ contains
         end if
     end subroutine sdof_check
 
-    !> Check a record, its step and gravity.
-    subroutine check_record(accel, dt, g, stat, errmsg)
-        real(dp), intent(in) :: accel(:), dt, g
-        integer, intent(out) :: stat
-        character(len=*), intent(inout), optional :: errmsg
-        call record_pieces_check(accel, stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-        if (.not. ieee_is_finite(dt)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'dt = '//real_str(dt) &
-                           //': the time step must be finite and > 0 (s)')
-        else if (dt <= 0.0_dp) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'dt = '//real_str(dt) &
-                           //': the time step must be finite and > 0 (s)')
-        else if (.not. ieee_is_finite(g)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(g) &
-                           //': gravity must be finite and > 0 (m/s^2)')
-        else if (g <= 0.0_dp) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(g) &
-                           //': gravity must be finite and > 0 (m/s^2)')
-        end if
-    end subroutine check_record
 
     ! ------------------------------------------------------------------------------
     ! The exact step
@@ -148,7 +127,6 @@ contains
         real(dp), intent(in) :: zeta    !! damping ratio, in [0, 1)
         real(dp), intent(in) :: h       !! step (s), > 0
         type(sdof_step_t) :: st
-        real(dp) :: a0, bt0, a1, bt1, a2, bt2, aq, bq, zwh
         st%omega = 2.0_dp * pi / period
         st%zeta = zeta
         st%wd = st%omega * sqrt((1.0_dp - zeta) * (1.0_dp + zeta))
@@ -156,21 +134,31 @@ contains
         st%inv_h = 1.0_dp / h
         st%inv_wd = 1.0_dp / st%wd
         st%h4_64 = h**4 / 64.0_dp
-        zwh = zeta * st%omega * h
-        call matrix_functions(st, h, a0, bt0, a1, bt1, a2, bt2)
-        ! e^(hA) = a0 I + bt0 hA
+        call set_coefficients(st, h)
+    end function sdof_step
+
+    !> The coefficients e, b, c of st for a step of length tau (the oscillator fields of
+    !> st already set).
+    pure subroutine set_coefficients(st, tau)
+        type(sdof_step_t), intent(inout) :: st
+        real(dp), intent(in) :: tau
+        real(dp) :: a0, bt0, a1, bt1, a2, bt2, aq, bq, zwh
+        zwh = st%zeta * st%omega * tau
+        call matrix_functions(st, tau, a0, bt0, a1, bt1, a2, bt2)
+        ! e^(tau A) = a0 I + bt0 tau A
         st%e11 = a0 + zwh * bt0
-        st%e12 = bt0 * h
-        st%e21 = -bt0 * st%omega**2 * h
+        st%e12 = bt0 * tau
+        st%e21 = -bt0 * st%omega**2 * tau
         st%e22 = a0 - zwh * bt0
-        ! forcing -a_g: -h (phi_1 - phi_2)(hA) e a_n - h phi_2(hA) e a_(n+1); F e = (b h, a - b zwh)
+        ! forcing -a_g: -tau (phi_1 - phi_2)(tau A) e a_n - tau phi_2(tau A) e a_(n+1);
+        ! F e = (b tau, a - b zwh)
         aq = a1 - a2
         bq = bt1 - bt2
-        st%b1 = -h * (bq * h)
-        st%b2 = -h * (aq - zwh * bq)
-        st%c1 = -h * (bt2 * h)
-        st%c2 = -h * (a2 - zwh * bt2)
-    end function sdof_step
+        st%b1 = -tau * (bq * tau)
+        st%b2 = -tau * (aq - zwh * bq)
+        st%c1 = -tau * (bt2 * tau)
+        st%c2 = -tau * (a2 - zwh * bt2)
+    end subroutine set_coefficients
 
     !> Re f(mu) and beta = Im f(mu)/Im mu for f = exp, phi_1, phi_2 at mu = tau lambda,
     !> lambda = -zeta omega + i omega_d: f(tau A) = (Re f + beta zeta omega tau) I
@@ -201,19 +189,18 @@ contains
     end subroutine matrix_functions
 
     !> The state (z, v) at tau inside a step that starts at (z0, v0) with a_g = a0 + s tau
-    !> (m/s^2): x(tau) = e^(tau A) x0 - tau phi_1(tau A) e a0 - tau^2 phi_2(tau A) e s.
+    !> (m/s^2): the exact step of length tau, ending at a_g = a0 + s tau.
     pure subroutine state_at(st, z0, v0, a0, s, tau, z, v)
         type(sdof_step_t), intent(in) :: st
         real(dp), intent(in) :: z0, v0, a0, s, tau
         real(dp), intent(out) :: z, v
-        real(dp) :: f0, g0, f1, g1, f2, g2, zwt, w1, w2
-        call matrix_functions(st, tau, f0, g0, f1, g1, f2, g2)
-        zwt = st%zeta * st%omega * tau
-        w1 = tau * a0
-        w2 = tau * tau * s
-        z = (f0 + zwt * g0) * z0 + g0 * tau * v0 - g1 * tau * w1 - g2 * tau * w2
-        v = -g0 * st%omega**2 * tau * z0 + (f0 - zwt * g0) * v0 &
-            - (f1 - zwt * g1) * w1 - (f2 - zwt * g2) * w2
+        type(sdof_step_t) :: part
+        real(dp) :: a1
+        part = st
+        call set_coefficients(part, tau)
+        a1 = a0 + s * tau
+        z = part%e11 * z0 + part%e12 * v0 + part%b1 * a0 + part%c1 * a1
+        v = part%e21 * z0 + part%e22 * v0 + part%b2 * a0 + part%c2 * a1
     end subroutine state_at
 
     ! ------------------------------------------------------------------------------
@@ -237,7 +224,7 @@ contains
         type(sdof_step_t) :: st
         integer :: i, n
         real(dp) :: z, v, zn, w2, zw2
-        call check_record(accel, dt, g, stat, errmsg)
+        call record_step_check(accel, dt, g, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         call sdof_check(period, damping, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
@@ -302,7 +289,7 @@ contains
         real(dp) :: tz(size(periods), size(dampings)), tv(size(periods), size(dampings)), &
                     ta(size(periods), size(dampings))
         type(peak_t) :: pz, pv, pa
-        call check_record(accel, dt, g, stat, errmsg)
+        call record_step_check(accel, dt, g, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         np = size(periods)
         nd = size(dampings)

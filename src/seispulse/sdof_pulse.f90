@@ -76,6 +76,7 @@ module seispulse_sdof_pulse
                                 set_error, real_str, int_str, outside
     use seispulse_special, only: expm1, exp_phis, complex_phis, sin_pi, cos_pi, pi
     use seispulse_roots, only: scalar_function, find_root
+    use seispulse_sdof, only: sdof_check
     use seispulse_pulses, only: pulse_t, pulse_validate, PULSE_EXPONENTIAL, PULSE_HALF_SINE, &
                                 PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, &
                                 PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP
@@ -727,10 +728,8 @@ contains
         real(dp), intent(in) :: damping
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
-        stat = SEISPULSE_SUCCESS
-        if (outside(damping, 0.0_dp, 1.0_dp, .false., .true.)) &
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'damping = ' &
-                           //real_str(damping)//': must be in [0, 1) (viscous damping ratio zeta)')
+        ! the same check and message as for records (seispulse_sdof)
+        call sdof_check(0.0_dp, damping, stat, errmsg)
     end subroutine check_damping
 
     subroutine check_oscillator(period, damping, stat, errmsg)
