@@ -32,7 +32,8 @@ contains
                  new_unittest('true maxima: >= samples, = 256x upsampled, sub-steps', &
                               test_true_maxima), &
                  new_unittest('maxima of a free vibration: closed form', test_free_vibration), &
-                 new_unittest('OpenMP: 1 and 2 threads give identical spectra', test_threads), &
+                 new_unittest('1 and 2 threads, grouped and alone: identical spectra', &
+                              test_threads), &
                  new_unittest('envelope with plateau; normalized shape', test_envelope), &
                  new_unittest('bad input names the parameter', test_bad_input)]
     end subroutine collect_sdof
@@ -324,7 +325,8 @@ contains
         integer, parameter :: n = 2001, np = 40
         real(dp) :: a(n), per(np), sd1(np, 3), sv1(np, 3), sa1(np, 3), sd2(np, 3), &
                     sv2(np, 3), sa2(np, 3), t1(np, 3), t2(np, 3)
-        integer :: i, stat
+        real(dp), parameter :: dampings(3) = [0.0_dp, 0.05_dp, 0.2_dp]
+        integer :: i, j, stat
         a = synthetic(n, 0.01_dp)
         do i = 1, np
             per(i) = 0.005_dp * 1.2_dp**(i - 1)
@@ -337,6 +339,22 @@ contains
         call check(error, maxval(abs(sd1 - sd2)) + maxval(abs(sv1 - sv2)) &
                    + maxval(abs(sa1 - sa2)) + maxval(abs(t1 - t2)) < tiny(1.0_dp), &
                    '1 and 2 threads: bitwise identical')
+        if (allocated(error)) return
+        ! Groups of oscillators run side by side (mixed sub-step counts, a period 0 in the
+        ! middle, several dampings): each must equal the same oscillator run alone.
+        per(7) = 0.0_dp
+        call sdof_spectrum(a, 0.01_dp, per, [0.0_dp, 0.05_dp, 0.2_dp], g0, sd1, sv1, sa1, stat, &
+                           threads=1, t_sa=t1)
+        do j = 1, 3
+            do i = 1, np
+                call sdof_spectrum(a, 0.01_dp, per(i:i), [dampings(j)], g0, sd2(i:i, j:j), &
+                                   sv2(i:i, j:j), sa2(i:i, j:j), stat, threads=1, &
+                                   t_sa=t2(i:i, j:j))
+            end do
+        end do
+        call check(error, maxval(abs(sd1 - sd2)) + maxval(abs(sv1 - sv2)) &
+                   + maxval(abs(sa1 - sa2)) + maxval(abs(t1 - t2)) < tiny(1.0_dp), &
+                   'grouped = alone: bitwise identical')
     end subroutine test_threads
 
     subroutine test_envelope(error)
@@ -384,6 +402,11 @@ contains
         call sdof_response(a, 0.01_dp, nan, 0.05_dp, g0, d, v, c, stat, msg)
         call check(error, stat == SEISPULSE_INVALID_INPUT .and. index(msg, 'period') == 1, &
                    'NaN period: '//trim(msg))
+        if (allocated(error)) return
+        ! a subnormal period would make omega infinite (the answer is T = 0's, the ground)
+        call sdof_response(a, 0.01_dp, 1.0e-308_dp, 0.05_dp, g0, d, v, c, stat, msg)
+        call check(error, stat == SEISPULSE_INVALID_INPUT .and. index(msg, 'period') == 1 &
+                   .and. index(msg, '>=') > 0, 'period 1e-308: '//trim(msg))
         if (allocated(error)) return
         call sdof_response(a, 0.01_dp, 1.0_dp, 1.0_dp, g0, d, v, c, stat, msg)
         call check(error, stat == SEISPULSE_INVALID_INPUT .and. index(msg, 'damping') == 1 &

@@ -94,7 +94,8 @@ def response(accel, dt=None, period=None, damping=0.05, g=STANDARD_GRAVITY):
     dt : float
         Time step (s, > 0); leave out for a Record.
     period : float
-        Natural period T (s, >= 0). T = 0 gives the ground motion itself.
+        Natural period T (s): 0, or from 1e-60 s up. T = 0 gives the ground
+        motion itself.
     damping : float
         Viscous damping ratio zeta, 0 <= zeta < 1.
     g : float
@@ -127,7 +128,7 @@ def spectrum(accel, dt=None, periods=None, damping=0.05, g=STANDARD_GRAVITY, pea
     dt : float
         Time step (s, > 0); leave out for a Record.
     periods : array_like
-        Natural periods (s, >= 0; 0 is the ground itself), any order.
+        Natural periods (s): 0 (the ground itself) or from 1e-60 up, any order.
     damping : float or sequence of float
         Damping ratio(s), each 0 <= zeta < 1. A sequence gives 2-d results.
     g : float

@@ -32,9 +32,11 @@
 !> Maxima are taken over the duration of the record (no free vibration after it);
 !> T = 0 is the ground itself: SD = SV = 0, SA = PGA.
 !>
-!> Spectra run one (period, damping) pair per OpenMP thread when the library is built
-!> with OpenMP; each pair is computed by the same serial code, so the results are
-!> identical to a serial run, bit for bit.
+!> Spectra run up to four (period, damping) pairs side by side in one loop (independent
+!> recurrences fill the vector units and hide each other's latency), one such group per
+!> OpenMP thread when the library is built with OpenMP. Each pair's arithmetic is the
+!> same whatever its neighbours and the groups are formed before the threads start,
+!> so the results are identical to a serial run, bit for bit.
 module seispulse_sdof
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use seispulse_kinds, only: dp
@@ -56,6 +58,12 @@ module seispulse_sdof
     !> Safeguarded Newton: iteration limit (each step at least halves the bracket or
     !> converges quadratically, so 100 is never reached in double precision).
     integer, parameter :: max_newton = 100
+
+    !> The shortest positive period accepted (s): omega^2 and its powers stay finite.
+    real(dp), parameter, public :: min_period = 1.0e-60_dp
+
+    !> Oscillators run side by side in one spectrum loop (see oscillator_peaks).
+    integer, parameter :: lanes = 4
 
     !> One exact step of length h for a given oscillator: the state after the step is
     !>     z+ = e11 z + e12 v + b1 a_n + c1 a_(n+1)
@@ -85,8 +93,8 @@ contains
     ! Checks
     ! ------------------------------------------------------------------------------
 
-    !> Check a period and a damping ratio: 0 <= T finite, 0 <= zeta < 1. `name` prefixes
-    !> the message (e.g. 'periods(3)').
+    !> Check a period and a damping ratio: T = 0 or min_period <= T finite, 0 <= zeta < 1.
+    !> `period_name`, `damping_name` name them in the message (e.g. 'periods(3)').
     subroutine sdof_check(period, damping, stat, errmsg, period_name, damping_name)
         real(dp), intent(in) :: period                        !! natural period (s)
         real(dp), intent(in) :: damping                       !! damping ratio
@@ -106,6 +114,11 @@ contains
         else if (period < 0.0_dp) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, pname//' = ' &
                            //real_str(period)//': the period must be finite and >= 0 (s)')
+        else if (period > 0.0_dp .and. period < min_period) then
+            ! omega^2 must stay finite; T = 0 is the rigid limit
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, pname//' = ' &
+                           //real_str(period)//': a positive period must be >= ' &
+                           //real_str(min_period)//' s (0 for the rigid oscillator)')
         else if (.not. ieee_is_finite(damping)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, dname//' = ' &
                            //real_str(damping)//': the damping ratio must be in [0, 1)')
@@ -288,7 +301,6 @@ contains
         integer :: np, nd, k, i, j, mode
         real(dp) :: tz(size(periods), size(dampings)), tv(size(periods), size(dampings)), &
                     ta(size(periods), size(dampings))
-        type(peak_t) :: pz, pv, pa
         call record_step_check(accel, dt, g, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         np = size(periods)
@@ -337,27 +349,52 @@ contains
         end function times_fit
 
         subroutine run_spectrum()
-            integer :: nthreads
+            integer :: nthreads, ngroups, g1, g2, nl, ip(lanes), id(lanes)
+            integer, allocatable :: first(:), key(:)
             real(dp), allocatable :: ga(:)
+            type(peak_t) :: pz(lanes), pv(lanes), pa(lanes)
             ! m/s^2 once for all oscillators
             allocate(ga(size(accel)))
             ga = g * accel
+            ! groups of up to `lanes` consecutive (period, damping) pairs that share a
+            ! run (run_key); fixed before the threads start, so results do not depend
+            ! on them
+            allocate(key(np * nd), first(np * nd + 1))
+            do k = 1, np * nd
+                key(k) = run_key(periods(mod(k - 1, np) + 1), dampings((k - 1) / np + 1), &
+                                 dt, mode)
+            end do
+            ngroups = min(np * nd, 1)
+            first(1) = 1
+            do k = 2, np * nd
+                if (key(k) == 0 .or. key(k) /= key(k - 1) .or. k - first(ngroups) == lanes) then
+                    ngroups = ngroups + 1
+                    first(ngroups) = k
+                end if
+            end do
+            first(ngroups + 1) = np * nd + 1
             nthreads = 0
             if (present(threads)) nthreads = threads
             !$ if (nthreads == 0) nthreads = omp_get_max_threads()
-            ! one (period, damping) pair per iteration; dynamic: short periods cost more
+            ! one group per iteration; dynamic: short periods cost more
             !$omp parallel do schedule(dynamic, 1) num_threads(max(nthreads, 1)) &
-            !$omp default(shared) private(k, i, j, pz, pv, pa)
-            do k = 1, np * nd
-                i = mod(k - 1, np) + 1
-                j = (k - 1) / np + 1
-                call oscillator_peaks(ga, dt, periods(i), dampings(j), mode, pz, pv, pa)
-                sd(i, j) = pz%value
-                sv(i, j) = pv%value
-                sa(i, j) = pa%value / g
-                tz(i, j) = pz%time
-                tv(i, j) = pv%time
-                ta(i, j) = pa%time
+            !$omp default(shared) private(k, i, j, g1, g2, nl, ip, id, pz, pv, pa)
+            do k = 1, ngroups
+                g1 = first(k)
+                g2 = first(k + 1) - 1
+                nl = g2 - g1 + 1
+                ip(:nl) = mod([(i, i = g1, g2)] - 1, np) + 1
+                id(:nl) = ([(i, i = g1, g2)] - 1) / np + 1
+                call oscillator_peaks(ga, dt, periods(ip(:nl)), dampings(id(:nl)), mode, &
+                                      pz(:nl), pv(:nl), pa(:nl))
+                do j = 1, nl
+                    sd(ip(j), id(j)) = pz(j)%value
+                    sv(ip(j), id(j)) = pv(j)%value
+                    sa(ip(j), id(j)) = pa(j)%value / g
+                    tz(ip(j), id(j)) = pz(j)%time
+                    tv(ip(j), id(j)) = pv(j)%time
+                    ta(ip(j), id(j)) = pa(j)%time
+                end do
             end do
             !$omp end parallel do
             if (present(t_sd)) t_sd = tz
@@ -373,51 +410,58 @@ contains
         !$ n = omp_get_max_threads()
     end function sdof_threads
 
-    !> Maxima of |z| (m), |z'| (m/s) and |a_abs| (m/s^2) for one oscillator on a valid
-    !> record ga (m/s^2).
-    subroutine oscillator_peaks(ga, dt, period, zeta, mode, pz, pv, pa)
-        real(dp), intent(in) :: ga(:), dt, period, zeta
+    !> Maxima of |z| (m), |z'| (m/s) and |a_abs| (m/s^2) for up to `lanes` oscillators
+    !> on a valid record ga (m/s^2), run side by side (independent recurrences keep the
+    !> processor busy where a single one waits on its own latency). In exact mode all
+    !> of them take the same number of sub-steps (`run_key`); a period 0 runs alone.
+    !> Each oscillator's arithmetic is the same whatever its neighbours, so spectra do
+    !> not depend on the grouping or on the threads.
+    subroutine oscillator_peaks(ga, dt, periods, zetas, mode, pz, pv, pa)
+        real(dp), intent(in) :: ga(:), dt
+        real(dp), intent(in) :: periods(:)  !! 1 to `lanes` periods (s)
+        real(dp), intent(in) :: zetas(:)    !! their damping ratios
         integer, intent(in) :: mode
-        type(peak_t), intent(out) :: pz, pv, pa
-        type(sdof_step_t) :: st
-        integer :: i, n, m
-        real(dp) :: z, v, zn, w2, zw2
-        n = size(ga)
-        if (period <= 0.0_dp) then
+        type(peak_t), intent(out) :: pz(:), pv(:), pa(:)
+        type(sdof_step_t) :: st(lanes)
+        integer :: i, l, nl, m
+        nl = size(periods)
+        if (periods(1) <= 0.0_dp) then
             ! the ground itself: a_abs = a_g, linear between samples
-            pz = peak_t(0.0_dp, 0.0_dp)
-            pv = peak_t(0.0_dp, 0.0_dp)
-            pa = peak_t(abs(ga(1)), 0.0_dp)
-            do i = 2, n
-                if (abs(ga(i)) > pa%value) pa = peak_t(abs(ga(i)), (i - 1) * dt)
+            pz(1) = peak_t(0.0_dp, 0.0_dp)
+            pv(1) = peak_t(0.0_dp, 0.0_dp)
+            pa(1) = peak_t(abs(ga(1)), 0.0_dp)
+            do i = 2, size(ga)
+                if (abs(ga(i)) > pa(1)%value) pa(1) = peak_t(abs(ga(i)), (i - 1) * dt)
             end do
             return
         end if
-        ! at t = 0 everything is zero (a_abs = -(2 zeta omega z' + omega^2 z) = 0)
-        pz = peak_t(0.0_dp, 0.0_dp)
-        pv = peak_t(0.0_dp, 0.0_dp)
-        pa = peak_t(0.0_dp, 0.0_dp)
+        ! unused lanes repeat the first oscillator; their results are dropped
+        m = run_key(periods(1), zetas(1), dt, mode)
+        do l = 1, lanes
+            i = min(l, nl)
+            st(l) = sdof_step(periods(i), zetas(i), dt / m)
+        end do
         if (mode == SDOF_PEAKS_SAMPLES) then
-            st = sdof_step(period, zeta, dt)
-            w2 = st%omega**2
-            zw2 = 2.0_dp * zeta * st%omega
-            z = 0.0_dp
-            v = 0.0_dp
-            do i = 1, n - 1
-                zn = st%e11 * z + st%e12 * v + st%b1 * ga(i) + st%c1 * ga(i + 1)
-                v = st%e21 * z + st%e22 * v + st%b2 * ga(i) + st%c2 * ga(i + 1)
-                z = zn
-                if (abs(z) > pz%value) pz = peak_t(abs(z), i * dt)
-                if (abs(v) > pv%value) pv = peak_t(abs(v), i * dt)
-                if (abs(zw2 * v + w2 * z) > pa%value) pa = peak_t(abs(zw2 * v + w2 * z), i * dt)
-            end do
+            call samples_run(st, ga, pz(:nl), pv(:nl), pa(:nl))
         else
-            ! sub-steps shorter than half a damped period (see the module header)
-            m = sub_steps(period, zeta, dt)
-            st = sdof_step(period, zeta, dt / m)
-            call exact_run(st, ga, m, pz, pv, pa)
+            call exact_run(st, ga, m, pz(:nl), pv(:nl), pa(:nl))
         end if
     end subroutine oscillator_peaks
+
+    !> Which oscillators may share a run: 0 for a period 0 (the ground), else the number
+    !> of sub-steps per record step (1 for sample maxima).
+    pure function run_key(period, zeta, dt, mode) result(key)
+        real(dp), intent(in) :: period, zeta, dt
+        integer, intent(in) :: mode
+        integer :: key
+        if (period <= 0.0_dp) then
+            key = 0
+        else if (mode == SDOF_PEAKS_SAMPLES) then
+            key = 1
+        else
+            key = sub_steps(period, zeta, dt)
+        end if
+    end function run_key
 
     !> Sub-steps per record step so that each is shorter than half a damped period.
     pure function sub_steps(period, zeta, dt) result(m)
@@ -435,111 +479,238 @@ contains
         end if
     end function sub_steps
 
+    !> Maxima over the samples only (at t = 0 everything is zero).
+    subroutine samples_run(st, ga, pz, pv, pa)
+        type(sdof_step_t), intent(in) :: st(lanes)
+        real(dp), intent(in) :: ga(:)  !! ground acceleration (m/s^2)
+        type(peak_t), intent(out) :: pz(:), pv(:), pa(:)
+        real(dp), dimension(lanes) :: e11, e12, e21, e22, b1, b2, c1, c2, w2, zw2, z, v, zn, &
+                                      az, av, aa, mz, mv, ma, rise
+        integer :: i, l
+        call unpack_steps(st, e11, e12, e21, e22, b1, b2, c1, c2, w2, zw2)
+        z = 0.0_dp
+        v = 0.0_dp
+        mz = 0.0_dp
+        mv = 0.0_dp
+        ma = 0.0_dp
+        pz = peak_t(0.0_dp, 0.0_dp)
+        pv = peak_t(0.0_dp, 0.0_dp)
+        pa = peak_t(0.0_dp, 0.0_dp)
+        ! the unused lanes never rise
+        mz(size(pz) + 1:) = huge(1.0_dp)
+        mv(size(pz) + 1:) = huge(1.0_dp)
+        ma(size(pz) + 1:) = huge(1.0_dp)
+        do i = 1, size(ga) - 1
+            do l = 1, lanes
+                zn(l) = e11(l) * z(l) + e12(l) * v(l) + b1(l) * ga(i) + c1(l) * ga(i + 1)
+                v(l) = e21(l) * z(l) + e22(l) * v(l) + b2(l) * ga(i) + c2(l) * ga(i + 1)
+                z(l) = zn(l)
+                az(l) = abs(z(l))
+                av(l) = abs(v(l))
+                aa(l) = abs(zw2(l) * v(l) + w2(l) * z(l))
+                rise(l) = max(az(l) - mz(l), av(l) - mv(l), aa(l) - ma(l))
+            end do
+            if (maxval(rise) > 0.0_dp) then
+                do l = 1, size(pz)
+                    if (az(l) > mz(l)) then
+                        mz(l) = az(l)
+                        pz(l) = peak_t(az(l), i * st(l)%h)
+                    end if
+                    if (av(l) > mv(l)) then
+                        mv(l) = av(l)
+                        pv(l) = peak_t(av(l), i * st(l)%h)
+                    end if
+                    if (aa(l) > ma(l)) then
+                        ma(l) = aa(l)
+                        pa(l) = peak_t(aa(l), i * st(l)%h)
+                    end if
+                end do
+            end if
+        end do
+    end subroutine samples_run
+
+    !> The step coefficients of the lanes as arrays (the hot loops work lane by lane).
+    pure subroutine unpack_steps(st, e11, e12, e21, e22, b1, b2, c1, c2, w2, zw2)
+        type(sdof_step_t), intent(in) :: st(lanes)
+        real(dp), dimension(lanes), intent(out) :: e11, e12, e21, e22, b1, b2, c1, c2, w2, zw2
+        e11 = st%e11
+        e12 = st%e12
+        e21 = st%e21
+        e22 = st%e22
+        b1 = st%b1
+        b2 = st%b2
+        c1 = st%c1
+        c2 = st%c2
+        w2 = st%omega**2
+        zw2 = 2.0_dp * st%zeta * st%omega
+    end subroutine unpack_steps
+
     !> The exact run with maxima between the samples (module header): m exact sub-steps
     !> per record step (a_g is linear in the step, so sub-samples are exact). Maxima
-    !> of a_abs in m/s^2. The filter is written out per quantity, on local scalars:
-    !> this is the hot loop of every spectrum.
+    !> of a_abs in m/s^2. The lanes advance together; a step is looked at lane by lane
+    !> (`step_peaks`) only where a maximum can rise: this is the hot loop of every
+    !> spectrum.
     subroutine exact_run(st, ga, m, pz, pv, pa)
-        type(sdof_step_t), intent(in) :: st
+        type(sdof_step_t), intent(in) :: st(lanes)
         real(dp), intent(in) :: ga(:)  !! ground acceleration (m/s^2)
         integer, intent(in) :: m
+        type(peak_t), intent(out) :: pz(:), pv(:), pa(:)
+        real(dp), dimension(lanes) :: e11, e12, e21, e22, b1, b2, c1, c2, w2, zw2, zw, inv_w, &
+                                      inv_w2, inv_wd, z, v, z1, v1, q1, d2_0, d2_1, f, bound2, &
+                                      mz, mv, ma, az0, av0, aq0, az1, av1, aq1, gap, low
+        real(dp) :: a0, a1, qa, qb, s, inv_h, h4
+        integer :: i, j, k, l, n
+        call unpack_steps(st, e11, e12, e21, e22, b1, b2, c1, c2, w2, zw2)
+        zw = 0.5_dp * zw2
+        inv_w = 1.0_dp / st%omega
+        inv_w2 = inv_w * inv_w
+        inv_wd = st%inv_wd
+        ! the lanes share the step (same sub-steps)
+        inv_h = st(1)%inv_h
+        h4 = st(1)%h4_64
+        n = size(ga)
+        ! at t = 0 everything is zero (a_abs = -(2 zeta omega z' + omega^2 z) = 0)
+        pz = peak_t(0.0_dp, 0.0_dp)
+        pv = peak_t(0.0_dp, 0.0_dp)
+        pa = peak_t(0.0_dp, 0.0_dp)
+        mz = 0.0_dp
+        mv = 0.0_dp
+        ma = 0.0_dp
+        z = 0.0_dp
+        v = 0.0_dp
+        az0 = 0.0_dp
+        av0 = 0.0_dp
+        aq0 = 0.0_dp
+        d2_1 = -ga(1)
+        j = 0
+        do i = 1, n - 1
+            do k = 1, m
+                j = j + 1
+                if (m == 1) then
+                    a0 = ga(i)
+                    a1 = ga(i + 1)
+                else
+                    qa = real(k - 1, dp) / m
+                    qb = real(k, dp) / m
+                    a0 = (1.0_dp - qa) * ga(i) + qa * ga(i + 1)
+                    a1 = (1.0_dp - qb) * ga(i) + qb * ga(i + 1)
+                    if (k == 1) a0 = ga(i)
+                    if (k == m) a1 = ga(i + 1)
+                end if
+                s = (a1 - a0) * inv_h
+                do l = 1, lanes
+                    z1(l) = e11(l) * z(l) + e12(l) * v(l) + b1(l) * a0 + c1(l) * a1
+                    v1(l) = e21(l) * z(l) + e22(l) * v(l) + b2(l) * a0 + c2(l) * a1
+                    q1(l) = -(zw2(l) * v1(l) + w2(l) * z1(l))
+                    ! z'' at both ends (continuous: carried over)
+                    d2_0(l) = d2_1(l)
+                    d2_1(l) = q1(l) - a1
+                    ! Inside the step z'' = e^(-zeta omega tau) (e cos(wd tau) + f sin(wd tau))
+                    ! with e = z''(0) and f = (z'''(0) + zeta omega e)/wd, z''' = -(s +
+                    ! 2 zeta omega z'' + omega^2 z'), so |z''| <= R = sqrt(e^2 + f^2). The
+                    ! second derivatives of z' and of a_abs = a_g + z'' (a_g'' = 0) are the
+                    ! same damped sinusoid differentiated once and twice, of amplitudes
+                    ! omega R and omega^2 R. An interior |q| can exceed max(|q0|, |q1|) by
+                    ! h^2 max|q''|/8 at most: a step needs a look only when a sample beats
+                    ! the running maximum (gap < 0) or that bound can (gap^2 < bound^2),
+                    ! tested at once on the gaps scaled to z (gap_v/omega, gap_a/omega^2).
+                    f(l) = -(s + zw(l) * d2_0(l) + w2(l) * v(l)) * inv_wd(l)
+                    bound2(l) = (d2_0(l) * d2_0(l) + f(l) * f(l)) * h4
+                    az1(l) = abs(z1(l))
+                    av1(l) = abs(v1(l))
+                    aq1(l) = abs(q1(l))
+                    gap(l) = min(mz(l) - max(az0(l), az1(l)), &
+                                 (mv(l) - max(av0(l), av1(l))) * inv_w(l), &
+                                 (ma(l) - max(aq0(l), aq1(l))) * inv_w2(l))
+                    low(l) = min(gap(l), gap(l) * gap(l) - bound2(l))
+                end do
+                if (minval(low(:size(pz))) < 0.0_dp) then
+                    do l = 1, size(pz)
+                        if (low(l) < 0.0_dp) call step_peaks(st(l), j, z(l), v(l), z1(l), &
+                            v1(l), a0, a1, s, d2_0(l), d2_1(l), f(l), bound2(l), mz(l), &
+                            mv(l), ma(l), pz(l), pv(l), pa(l))
+                    end do
+                end if
+                z = z1
+                v = v1
+                az0 = az1
+                av0 = av1
+                aq0 = aq1
+            end do
+        end do
+        ! times from (sub-)step numbers: t = (j - 1) h + offset
+        do l = 1, size(pz)
+            call absolute_time(pz(l), st(l)%h)
+            call absolute_time(pv(l), st(l)%h)
+            call absolute_time(pa(l), st(l)%h)
+        end do
+    end subroutine exact_run
+
+    !> A peak's time counted from the first sample (s) instead of within its sub-step.
+    pure subroutine absolute_time(p, h)
+        type(peak_t), intent(inout) :: p
+        real(dp), intent(in) :: h
+        if (p%step > 0) p = peak_t(p%value, (p%step - 1) * h + p%time, 0)
+    end subroutine absolute_time
+
+    !> One step of one oscillator where a maximum can rise: the new samples against the
+    !> running maxima (mz, mv, ma), then the interior of the step for each quantity
+    !> whose bound h^2 max|q''|/8 can beat its maximum (see exact_run).
+    subroutine step_peaks(st, j, z, v, z1, v1, a0, a1, s, d2_0, d2_1, f_z, bound2, &
+                          mz, mv, ma, pz, pv, pa)
+        type(sdof_step_t), intent(in) :: st
+        integer, intent(in) :: j
+        real(dp), intent(in) :: z, v, z1, v1, a0, a1, s, d2_0, d2_1, f_z, bound2
+        real(dp), intent(inout) :: mz, mv, ma
         type(peak_t), intent(inout) :: pz, pv, pa
-        real(dp) :: z, v, z1, v1, a0, a1, s, w2, zw, zw2, h, h4, d2_0, d2_1, d3_0, d3_1
-        real(dp) :: d4_0, q0, q1, dq0, dq1, ddq0, ddq1, f, gap, mz, mv, ma, qa, qb, bound2
-        integer :: j, i, k, nsteps
-        h = st%h
-        h4 = st%h4_64
+        real(dp) :: w2, zw, zw2, gap, d3_0, d3_1, d4_0, f, q0, q1, dq0, dq1, ddq0, ddq1
         w2 = st%omega**2
         zw = st%zeta * st%omega
         zw2 = 2.0_dp * zw
-        z = 0.0_dp
-        v = 0.0_dp
-        d2_1 = -ga(1)
-        mz = pz%value
-        mv = pv%value
-        ma = pa%value
-        nsteps = (size(ga) - 1) * m
-        do j = 1, nsteps
-            if (m == 1) then
-                i = j
-                a0 = ga(i)
-                a1 = ga(i + 1)
-            else
-                i = (j - 1) / m + 1
-                k = j - (i - 1) * m
-                qa = real(k - 1, dp) / m
-                qb = real(k, dp) / m
-                a0 = (1.0_dp - qa) * ga(i) + qa * ga(i + 1)
-                a1 = (1.0_dp - qb) * ga(i) + qb * ga(i + 1)
-                if (k == 1) a0 = ga(i)
-                if (k == m) a1 = ga(i + 1)
-            end if
-            z1 = st%e11 * z + st%e12 * v + st%b1 * a0 + st%c1 * a1
-            v1 = st%e21 * z + st%e22 * v + st%b2 * a0 + st%c2 * a1
-            s = (a1 - a0) * st%inv_h
-            ! derivatives of z at both ends (z'' is continuous: carried over; the third and
-            ! fourth use this step's slope)
-            d2_0 = d2_1
-            d2_1 = -(a1 + zw2 * v1 + w2 * z1)
-            d3_0 = -(s + zw2 * d2_0 + w2 * v)
-            ! Inside the step z'' = e^(-zeta omega tau) (e cos(wd tau) + f sin(wd tau)) with
-            ! e = z''(0) and f = (z'''(0) + zeta omega e)/wd, so |z''| <= R = sqrt(e^2 + f^2).
-            ! The second derivatives of z' and of a_abs = a_g + z'' (a_g'' = 0) are the same
-            ! damped sinusoid differentiated once and twice, of amplitudes omega R and
-            ! omega^2 R. An interior |q| can exceed max(|q0|, |q1|) by h^2 max|q''|/8 at
-            ! most: look inside the step only when that can beat the running maximum.
-            f = (d3_0 + zw * d2_0) * st%inv_wd
-            bound2 = (d2_0 * d2_0 + f * f) * h4
-            ! q = z
-            if (abs(z1) > mz) then
-                mz = abs(z1)
-                pz = peak_t(mz, h, j)
-            end if
-            gap = mz - max(abs(z), abs(z1))
-            if (gap * gap < bound2) then
-                call search_step(st, z, v, a0, s, j, 1, z, z1, v, v1, d2_0, d2_1, f, pz)
-                mz = pz%value
-            end if
-            ! q = z'
-            if (abs(v1) > mv) then
-                mv = abs(v1)
-                pv = peak_t(mv, h, j)
-            end if
-            gap = mv - max(abs(v), abs(v1))
-            if (gap * gap < w2 * bound2) then
-                d3_1 = -(s + zw2 * d2_1 + w2 * v1)
-                d4_0 = -(zw2 * d3_0 + w2 * d2_0)
-                f = (d4_0 + zw * d3_0) * st%inv_wd
-                call search_step(st, z, v, a0, s, j, 2, v, v1, d2_0, d2_1, d3_0, d3_1, f, pv)
-                mv = pv%value
-            end if
-            ! q = a_abs = -(2 zeta omega z' + omega^2 z) = a_g + z''
-            q0 = a0 + d2_0
-            q1 = a1 + d2_1
-            if (abs(q1) > ma) then
-                ma = abs(q1)
-                pa = peak_t(ma, h, j)
-            end if
-            gap = ma - max(abs(q0), abs(q1))
-            if (gap * gap < w2 * w2 * bound2) then
-                d3_1 = -(s + zw2 * d2_1 + w2 * v1)
-                d4_0 = -(zw2 * d3_0 + w2 * d2_0)
-                dq0 = s + d3_0
-                dq1 = s + d3_1
-                ddq0 = d4_0
-                ddq1 = -(zw2 * d3_1 + w2 * d2_1)
-                f = (-(zw2 * d4_0 + w2 * d3_0) + zw * d4_0) * st%inv_wd
-                call search_step(st, z, v, a0, s, j, 3, q0, q1, dq0, dq1, ddq0, ddq1, f, pa)
-                ma = pa%value
-            end if
-            z = z1
-            v = v1
-        end do
-        ! times from (sub-)step numbers: t = (j - 1) h + offset
-        if (pz%step > 0) pz = peak_t(pz%value, (pz%step - 1) * h + pz%time, 0)
-        if (pv%step > 0) pv = peak_t(pv%value, (pv%step - 1) * h + pv%time, 0)
-        if (pa%step > 0) pa = peak_t(pa%value, (pa%step - 1) * h + pa%time, 0)
-    end subroutine exact_run
+        d3_0 = -(s + zw2 * d2_0 + w2 * v)
+        ! q = z
+        if (abs(z1) > mz) then
+            mz = abs(z1)
+            pz = peak_t(mz, st%h, j)
+        end if
+        gap = mz - max(abs(z), abs(z1))
+        if (gap * gap < bound2) then
+            call search_step(st, z, v, a0, s, j, 1, z, z1, v, v1, d2_0, d2_1, f_z, pz)
+            mz = pz%value
+        end if
+        ! q = z'
+        if (abs(v1) > mv) then
+            mv = abs(v1)
+            pv = peak_t(mv, st%h, j)
+        end if
+        gap = mv - max(abs(v), abs(v1))
+        if (gap * gap < w2 * bound2) then
+            d3_1 = -(s + zw2 * d2_1 + w2 * v1)
+            d4_0 = -(zw2 * d3_0 + w2 * d2_0)
+            f = (d4_0 + zw * d3_0) * st%inv_wd
+            call search_step(st, z, v, a0, s, j, 2, v, v1, d2_0, d2_1, d3_0, d3_1, f, pv)
+            mv = pv%value
+        end if
+        ! q = a_abs = -(2 zeta omega z' + omega^2 z) = a_g + z''
+        q0 = a0 + d2_0
+        q1 = a1 + d2_1
+        if (abs(q1) > ma) then
+            ma = abs(q1)
+            pa = peak_t(ma, st%h, j)
+        end if
+        gap = ma - max(abs(q0), abs(q1))
+        if (gap * gap < w2 * w2 * bound2) then
+            d3_1 = -(s + zw2 * d2_1 + w2 * v1)
+            d4_0 = -(zw2 * d3_0 + w2 * d2_0)
+            dq0 = s + d3_0
+            dq1 = s + d3_1
+            ddq0 = d4_0
+            ddq1 = -(zw2 * d3_1 + w2 * d2_1)
+            f = (-(zw2 * d4_0 + w2 * d3_0) + zw * d4_0) * st%inv_wd
+            call search_step(st, z, v, a0, s, j, 3, q0, q1, dq0, dq1, ddq0, ddq1, f, pa)
+            ma = pa%value
+        end if
+    end subroutine step_peaks
 
     !> The interior maximum of quantity kq (1 z, 2 z', 3 a_abs) on a step that starts at
     !> (z0, v0) with a_g = a0 + s tau, given q, q', q'' at both ends and f of q''
@@ -588,7 +759,9 @@ contains
         lo = ta
         hi = tb
         dqlo = dqa
-        x = xi
+        ! start at the root of the chord of q' (exact when q is a parabola), which
+        ! lies in the bracket as q' changes sign
+        x = min(max(ta - dqa * (tb - ta) / (dqb - dqa), ta), tb)
         do it = 1, max_newton
             call q_at(st, z0, v0, a0, s, kq, x, q, dq, ddq)
             if (.not. (abs(dq) > 0.0_dp)) exit

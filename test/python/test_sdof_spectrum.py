@@ -210,6 +210,8 @@ def test_response_bad_input():
         sdof.response([], 0.01, 1.0)
     with pytest.raises(InvalidInputError, match="period"):
         sdof.response([0.0, 0.1], 0.01, -1.0)
+    with pytest.raises(InvalidInputError, match=r"period = .*a positive period must be >="):
+        sdof.response([0.0, 0.1], 0.01, 1e-308)
     with pytest.raises(InvalidInputError, match="damping"):
         sdof.response([0.0, 0.1], 0.01, 1.0, damping=1.5)
     with pytest.raises(InvalidInputError, match="period"):
