@@ -22,7 +22,8 @@
 !>
 !> Analysis 'sdof_beta': group &sdof_beta (frequency ratios theta/omega as a list or a
 !> range, the damping parameters gamma = 2 zeta, the damping model); table
-!> <output>_sdof_beta, beta (Eq. 2.17/2.20) and the cosine law's 2|beta| (after Eq. 2.21)
+!> <output>_sdof_beta, beta (Eq. 2.17/2.20) and the cosine law's 2|beta| (after Eq. 2.21;
+!> the from-rest maximum only for gamma = 0)
 !> from seispulse_sdof_pulse's dynamic_coefficient.
 !>
 !> Analysis 'sdof_shock': groups &pulse (driver_pulse_group, as in 'pulse' and

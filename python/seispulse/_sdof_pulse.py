@@ -19,6 +19,7 @@ has a minus sign; Eq. 2.17 is the steady state, not the solution from rest; the 
 pulse coefficient 1 + 2 pi t1/T is an upper bound, the exact one is 2 sin(pi t1/T).
 """
 
+import re
 from collections import namedtuple
 
 import numpy as np
@@ -59,9 +60,9 @@ of |z| (m), |z'| (m/s), |a_abs| (m/s^2), and the times where they occur (s)."""
 
 PulseSpectrum = namedtuple("PulseSpectrum", ["periods", "sd", "sv", "sa", "psv", "psa"])
 PulseSpectrum.__doc__ = """Response spectra of a pulse: periods (s); sd = max|z| (m),
-sv = max|z'| (m/s), sa = max|a_abs| (m/s^2), true maxima over t >= 0; psv = omega sd (m/s)
-and psa = omega^2 sd (m/s^2), the pseudo-spectra of Eq. 2.33 (period 0: psv = 0,
-psa = sa = peak |a_g|)."""
+sv = max|z'| (m/s), sa = max|a_abs| (m/s^2), the maxima over t >= 0 found as in
+:func:`pulse_peaks`; psv = omega sd (m/s) and psa = omega^2 sd (m/s^2), the pseudo-spectra
+of Eq. 2.33 (period 0: psv = 0, psa = sa = peak |a_g|)."""
 
 SpectrumTimes = namedtuple("SpectrumTimes", ["t_sd", "t_sv", "t_sa"])
 SpectrumTimes.__doc__ = """Times (s) where sd, sv and sa are reached."""
@@ -71,6 +72,12 @@ ShockSpectrum = namedtuple("ShockSpectrum", ["ratios", "periods", "sd", "sv", "s
 ShockSpectrum.__doc__ = """Shock spectrum of a pulse against ratios = t_d / T: periods (s),
 sd (m), sv (m/s), sa (m/s^2), psv (m/s), psa (m/s^2) as in :class:`PulseSpectrum`, and
 amplification = psa / peak |a_g| (dimensionless)."""
+
+
+def _raise_indexed(stat, msg):
+    """raise_for_status with Fortran's element names t(i), periods(i) as the caller's
+    t[i - 1], periods[i - 1] (flat index for arrays of more than one dimension)."""
+    _core.raise_record_status(stat, msg, names={"t": "t", "periods": "periods"})
 
 
 def _choice_code(name, value, allowed):
@@ -121,8 +128,22 @@ def dynamic_coefficient(ratio, gamma=0.0, model="hysteretic"):
 
 def cosine_dynamic_coefficient(ratio, gamma=0.0, model="hysteretic"):
     """The cosine law's coefficient from rest, 2 |beta| (after Eq. 2.21): the largest
-    |z| omega^2 / W0 of (W0 beta / omega^2)(cos theta t - cos omega t). Arguments as in
-    :func:`dynamic_coefficient`."""
+    |z| omega^2 / W0 of the undamped (W0 beta / omega^2)(cos theta t - cos omega t).
+
+    Defined for the undamped oscillator only: ``gamma`` must be 0 (any other value raises
+    :class:`seispulse.InvalidInputError` naming it). With damping the from-rest maximum is
+    not 2 |beta| (zeta = 0.05, r = 1: |z| omega^2 / W0 tends to 1 / gamma = 10, not 20); use
+    :func:`harmonic_response` with ``law='cosine'`` and ``damping = gamma / 2`` for the
+    damped history. ``ratio`` and ``model`` as in :func:`dynamic_coefficient`.
+    """
+    _, arr = _core.broadcast(gamma=gamma)
+    g = arr["gamma"].reshape(-1)
+    bad = np.flatnonzero(~(g == 0.0))
+    if bad.size:
+        raise InvalidInputError(f"gamma = {float(g[bad[0]])!r}: must be 0; the cosine law's "
+                                "2|beta| is the from-rest maximum of the undamped oscillator "
+                                "only (use harmonic_response(..., law='cosine', damping=gamma/2) "
+                                "with damping)")
     return _dynamic(ratio, gamma, model)[1]
 
 
@@ -153,7 +174,8 @@ def harmonic_response(t, w0, period, ratio, damping=0.0, law="sine", transient=T
     ratio : float
         r = theta / omega (>= 0).
     damping : float
-        Viscous damping ratio zeta in [0, 1).
+        Viscous damping ratio zeta in [0, 1) of the oscillator (both for the history from
+        rest and for the steady state).
     law : {'sine', 'cosine'}
     transient : bool
         True (default): the exact solution from rest at t = 0 (zero before), e.g. for the
@@ -161,7 +183,10 @@ def harmonic_response(t, w0, period, ratio, damping=0.0, law="sine", transient=T
         law Eq. 2.21 (W0 beta / omega^2)(cos theta t - cos omega t); exact at resonance
         (t sin omega t growth) and without loss of digits near it. False: the steady state
         (Eq. 2.17 when undamped); the undamped steady state at r = 1 raises
-        :class:`seispulse.SingularError`.
+        :class:`seispulse.SingularError`. The damped steady state is that of viscous
+        damping zeta, amplitude (W0 / omega^2) / sqrt((1 - r^2)^2 + (2 zeta r)^2): it is
+        :func:`dynamic_coefficient` with ``gamma = 2 * damping`` and ``model='viscous'``,
+        not that function's default (the book's hysteretic Eq. 2.20).
 
     Returns
     -------
@@ -175,7 +200,7 @@ def harmonic_response(t, w0, period, ratio, damping=0.0, law="sine", transient=T
         tf, _core.as_scalar("w0", w0), _core.as_scalar("period", period),
         _core.as_scalar("ratio", ratio), _core.as_scalar("damping", damping), code,
         int(transient))
-    _core.raise_for_status(stat, msg)
+    _raise_indexed(stat, msg)
     return _motion(shape, z, v, a)
 
 
@@ -193,7 +218,7 @@ def rect_pulse_response(t, w0, t1, period):
     z, v, a, stat, msg = sp_rect_pulse_response(tf, _core.as_scalar("w0", w0),
                                                 _core.as_scalar("t1", t1),
                                                 _core.as_scalar("period", period))
-    _core.raise_for_status(stat, msg)
+    _raise_indexed(stat, msg)
     return _motion(shape, z, v, a)
 
 
@@ -237,7 +262,7 @@ def impulse_response(t, jw, period, damping=0.0):
     z, v, a, stat, msg = sp_impulse_response(tf, _core.as_scalar("jw", jw),
                                              _core.as_scalar("period", period),
                                              _core.as_scalar("damping", damping))
-    _core.raise_for_status(stat, msg)
+    _raise_indexed(stat, msg)
     return _motion(shape, z, v, a)
 
 
@@ -271,14 +296,19 @@ def pulse_response(pulse, period, damping=0.05, t=None):
     shape, tf = _times(t)
     z, v, a, stat, msg = sp_sdof_pulse_response(kind, params, _core.as_scalar("period", period),
                                                 _core.as_scalar("damping", damping), tf)
-    _core.raise_for_status(stat, msg)
+    _raise_indexed(stat, msg)
     return _motion(shape, z, v, a)
 
 
 def pulse_peaks(pulse, period, damping=0.05):
     """Maxima of |z| (m), |z'| (m/s) and |a_abs| (m/s^2) over all t >= 0 (free vibration
-    included) and their times (s). Stationary points are bracketed on a fine scan and
-    refined by Brent's method. Returns OscillatorPeaks."""
+    included) and their times (s). Stationary points are bracketed on a scan of at least
+    32 steps per natural period and per cycle of the pulse, at most 2^20 steps per segment
+    of the pulse, and refined by Brent's method. So a period shorter than 1/32768 of the
+    pulse's longest segment (e.g. 6.1e-5 s for a 2 s rectangle), or an M&P pulse with
+    gamma > 32767, raises :class:`seispulse.InvalidInputError` naming the period (or
+    gamma) and the shortest period allowed: a coarser scan would alias. Returns
+    OscillatorPeaks."""
     kind, params = _pulse_args(pulse)
     out, stat, msg = sp_sdof_pulse_peaks(kind, params, _core.as_scalar("period", period),
                                          _core.as_scalar("damping", damping))
@@ -302,9 +332,17 @@ def pulse_spectrum(pulse, periods, damping=0.05, return_times=False):
     Returns
     -------
     PulseSpectrum
-        periods (s), sd (m), sv (m/s), sa (m/s^2): true maxima over t >= 0; psv = omega sd
-        (m/s), psa = omega^2 sd (m/s^2). With ``return_times``: (PulseSpectrum,
-        SpectrumTimes).
+        periods (s), sd (m), sv (m/s), sa (m/s^2): the maxima over t >= 0 found as in
+        :func:`pulse_peaks`; psv = omega sd (m/s), psa = omega^2 sd (m/s^2). With
+        ``return_times``: (PulseSpectrum, SpectrumTimes).
+
+    Period 0 gives sa = the peak |a_g| (PGA). For a pulse whose acceleration jumps
+    ('rectangular', 'cosine_cycle', an 'exponential' with beta = -inf) the limit T -> 0+
+    of sa is larger than the PGA (the step overshoot: up to 2 PGA undamped, 1.8588 PGA at
+    T = 1e-4 s with damping 0.05), so sa is not continuous at T = 0 for those pulses.
+    Positive periods must be >= 1e-60 s and long enough for the peak search (see
+    :func:`pulse_peaks`); otherwise :class:`seispulse.InvalidInputError` names
+    ``periods[i]``.
     """
     kind, params = _pulse_args(pulse)
     return_times = _core.check_bool("return_times", return_times)
@@ -313,7 +351,7 @@ def pulse_spectrum(pulse, periods, damping=0.05, return_times=False):
     flat = np.ascontiguousarray(arr.reshape(-1))
     sd, sv, sa, tsd, tsv, tsa, stat, msg = sp_sdof_pulse_spectrum(
         kind, params, flat, _core.as_scalar("damping", damping))
-    _core.raise_for_status(stat, msg)
+    _raise_indexed(stat, msg)
     psv, psa = _pseudo(flat, sd, sa)
     spec = PulseSpectrum(*(x.reshape(shape) if shape != () else float(x[0])
                            for x in (flat, sd, sv, sa, psv, psa)))
@@ -368,22 +406,58 @@ def shock_spectrum(pulse, ratios, damping=0.05, time_scale=None):
     ShockSpectrum
         ratios, periods = t_d / ratios (s), sd (m), sv (m/s), sa (m/s^2), psv (m/s),
         psa (m/s^2), amplification = psa / peak |a_g| (0 when the pulse has no
-        acceleration).
+        acceleration); the maxima as in :func:`pulse_spectrum` (ratio +inf: the rigid
+        oscillator, sa = PGA; see there for the limit of jump pulses).
+
+    A ratio that is not > 0, so large that t_d / ratio is below 1e-60 s or too short for
+    the peak search, or so small that t_d / ratio overflows raises
+    :class:`seispulse.InvalidInputError` naming ``ratios[i]``, its value and the period
+    it gives.
     """
     kind, params = _pulse_args(pulse)
     td = _time_scale(pulse) if time_scale is None else _core.check_positive(
         "time_scale", time_scale, " (s)")
     arr = _core.as_float_array("ratios", ratios)
-    if np.any(np.isnan(arr)) or np.any(arr <= 0.0):
-        raise InvalidInputError("ratios: must be > 0 (t_d / T; +inf for T = 0)")
     shape = arr.shape
     flat = np.ascontiguousarray(arr.reshape(-1))
-    periods = np.where(np.isinf(flat), 0.0, td / flat)
+    bad = np.flatnonzero(np.isnan(flat) | (flat <= 0.0))
+    if bad.size:
+        raise InvalidInputError(f"{_ratio_name(shape, bad[0])} = {float(flat[bad[0]])!r}: "
+                                "must be > 0 (t_d / T; +inf for T = 0)")
+    with np.errstate(over="ignore"):
+        periods = np.where(np.isinf(flat), 0.0, td / flat)
+    bad = np.flatnonzero(np.isinf(periods))
+    if bad.size:
+        raise InvalidInputError(f"{_ratio_name(shape, bad[0])} = {float(flat[bad[0]])!r}: "
+                                f"too small, the period t_d / ratio overflows (t_d = {td!r} s; "
+                                f"must be >= {float(td / np.finfo(float).max)!r})")
     sd, sv, sa, tsd, tsv, tsa, stat, msg = sp_sdof_pulse_spectrum(
         kind, params, np.ascontiguousarray(periods), _core.as_scalar("damping", damping))
-    _core.raise_for_status(stat, msg, rename={"periods": "ratios"})
+    if stat != 0:
+        _raise_for_ratio(stat, msg, shape, flat, periods, td)
     psv, psa = _pseudo(periods, sd, sa)
     pga, _ = peak_ground_acceleration(pulse)
     amp = psa / pga if pga > 0.0 else np.zeros_like(psa)
     out = (flat, periods, sd, sv, sa, psv, psa, amp)
     return ShockSpectrum(*(x.reshape(shape) if shape != () else float(x[0]) for x in out))
+
+
+def _ratio_name(shape, k):
+    """ratios[k] (flat index k) as the user indexes the array: ratios[i, j] for 2-d."""
+    if len(shape) <= 1:
+        return f"ratios[{k}]" if shape else "ratios"
+    return "ratios[" + ", ".join(map(str, np.unravel_index(k, shape))) + "]"
+
+
+def _raise_for_ratio(stat, msg, shape, flat, periods, td):
+    """A refusal of periods(i) by the Fortran spectrum, restated for ratios[i - 1]: the
+    ratio the caller passed, the period it gave, then the Fortran reason."""
+    text = msg.decode("ascii", "replace") if isinstance(msg, bytes) else str(msg)
+    text = text.strip()
+    found = re.match(r"periods\((\d+)\) = [^:]*: ?(.*)", text, re.S)
+    if found:
+        k = int(found.group(1)) - 1
+        text = (f"{_ratio_name(shape, k)} = {float(flat[k])!r}: gives the period "
+                f"t_d / ratio = {float(periods[k])!r} s (t_d = {td!r} s), refused: "
+                f"{found.group(2)}")
+    _core.raise_for_status(stat, text)

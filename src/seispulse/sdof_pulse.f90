@@ -4,12 +4,14 @@
 !> book's gamma = 2 zeta), relative displacement z, ground acceleration a_g, from rest:
 !>     z'' + 2 zeta omega z' + omega^2 z = -a_g(t),
 !>     a_abs = a_g + z'' = -(2 zeta omega z' + omega^2 z).
-!> SI throughout: a_g, a_abs in m/s^2, z in m, z' in m/s, t and T in s.
+!> SI throughout: a_g, a_abs in m/s^2, z in m, z' in m/s, t and T in s. A positive period
+!> must be finite and >= min_period (1e-60 s, seispulse_sdof: omega^2 stays finite).
 !>
 !> Book forms (undamped unless stated; equation numbers of oscillator.md):
 !> * `dynamic_coefficient`: Eq. 2.17 (gamma = 0, signed 1/(1 - r^2)), Eq. 2.20 with the
 !>   square root restored (hysteretic, the default) or the viscous form; beta(r = 1) = 1/gamma;
-!>   the cosine law's coefficient 2|beta| (after Eq. 2.21).
+!>   the cosine law's coefficient 2|beta| (after Eq. 2.21), the from-rest maximum only when
+!>   gamma = 0 (with damping it is not: zeta = 0.05, r = 1 reaches 1/gamma = 10, not 20).
 !> * `harmonic_response`: Delta = Delta0 sin(theta t) or cos(theta t), W0 = Delta0 theta^2, so
 !>   a_g = -W0 sin(theta t) or -W0 cos(theta t); steady state (Eq. 2.17, viscous damped) or the
 !>   exact solution from rest (Eq. 2.21 with cos(omega t), the printed sin(omega t) is an erratum).
@@ -25,23 +27,30 @@
 !> the pulse (segments of duration d, L = omega d, fraction s in [0, 1], sigma = L s, tau = d s)
 !>     V(s) = e^(lambda sigma) V(0) + (i/sqrt(1 - zeta^2)) K(s)/omega,
 !>     K/omega = int_0^tau e^(lambda omega (tau - u)) a_g(u) du,
-!> and a_g is a sum of terms whose kernels are divided differences of exp (no cancellation,
-!> no overflow, exact at resonance):
+!> and a_g is a sum of terms whose kernels are divided differences of exp (each evaluated
+!> without cancellation or overflow, exact at resonance):
 !>     C e^(M (s - v))        ->  C tau e[lambda sigma - M v, M (s - v)]    (real C, M; v = 0 or 1
 !>                                so that the exponent is <= 0 on the segment: no overflow)
 !>     Re(C e^(i kappa s))    ->  cos and sin parts, tau (e1 + e2)/2 and tau kappa s e[x, iks, -iks]
 !>     C s phi_1(R s)         ->  C tau s e[lambda sigma, R s, 0]   (the "expm1 ramp")
-!> Where sigma < 1, Re V (the displacement) is not taken from Im K (which would keep only
-!> ~sigma of its digits: very long periods, the start of a segment) but from divided
-!> differences over the conjugate pair, the impulse response being
-!> sigma e[lambda sigma, conj(lambda) sigma]: -C tau sigma e[x, conj(x), y] per term.
+!> Where sqrt(1 - zeta^2) sigma = omega_d t < 1, Re V (the displacement) is not taken from
+!> Im K/sqrt(1 - zeta^2) (Im K keeps only ~omega_d t of the digits of K: very long periods,
+!> the start of a segment, and zeta -> 1, where the relative error would be
+!> eps/sqrt(1 - zeta^2)) but from divided differences over the conjugate pair, the impulse
+!> response being sigma e[lambda sigma, conj(lambda) sigma]: -C tau sigma e[x, conj(x), y]
+!> per term, -C tau sigma s e[x, conj(x), R s, 0] for the ramp (a general third divided
+!> difference: Taylor series in the unit disk, else the quotient over the farthest pair).
 !> Per kind:
 !> * exponential (seed 000 Eq. 1.1b), each half lobe: |beta| <= 1 the expm1 ramp with the
 !>   bounded factor 1/phi_1(beta) (beta = 0 is the triangle); beta > 1 the exponential
 !>   referenced at the peak, [e^(beta (s - 1)) - e^-beta]/(1 - e^-beta); beta < -1 referenced at
-!>   the start, [1 - e^(beta s)]/(1 - e^beta); the falling half mirrored, the second lobe
-!>   negated. beta = -inf is the box, beta = +inf the spike (no area: zero response); a huge
-!>   finite beta gives the impulse of area A t_d/beta at t_d/2 (and 3 t_d/2 negated).
+!>   the start, [1 - e^(beta s)]/(1 - e^beta); the falling half is the rising one with s -> 1 - s
+!>   (for |beta| <= 1 written as the constant A minus a ramp, A [1 - e^beta s phi_1(-beta s)/
+!>   phi_1(beta)]), the second lobe negated. Every term is bounded by a few |A|, but where
+!>   a_g -> 0 at the zero end of a half lobe the terms cancel: there a_g (and so K) is accurate
+!>   to ~eps |A| absolutely, not relative to the small a_g. beta = -inf is the box, beta = +inf
+!>   the spike (no area: zero response); a huge finite beta gives the impulse of area
+!>   A t_d/beta at t_d/2 (and 3 t_d/2 negated).
 !> * half_sine, sine_cycle, cosine_cycle, mavroeidis_papageorgiou: sums of sinusoids (M&P:
 !>   three, the derivative of (A/2)(1 + cos(2 pi f x/gamma)) cos(2 pi f x + nu)).
 !> * rectangular: a constant; triangular: two linear ramps.
@@ -53,14 +62,17 @@
 !>   At most 2^20 panels: periods below 32 (window)/2^20 are refused with a message.
 !> After the pulse the response is the free vibration V = e^(lambda sigma) V_end, at any t.
 !>
-!> Peaks (`sdof_pulse_peaks`): the maxima of |z|, |z'|, |a_abs| over all t >= 0. In each
-!> segment a scan brackets the sign changes of z' = Re(lambda V),
+!> Peaks (`sdof_pulse_peaks`, `sdof_pulse_spectrum`): the maxima of |z|, |z'|, |a_abs| over
+!> all t >= 0. In each segment a scan brackets the sign changes of z' = Re(lambda V),
 !> z'' = omega Re(lambda^2 V) - a_g and d a_abs/dt = omega (omega Re(lambda^3 V) + 2 zeta a_g).
 !> Scan step: <= T/32, <= segment/64, <= 1/32 of the shortest period of a sinusoidal term,
 !> and for exponential half lobes with |beta| > 16 a scan graded from the sharp end (first
 !> step t_d/(8|beta|), then x1.25 per step; the first step is floored at 1e-12 of the half
-!> lobe, below which a spike is not resolved); at most 2^20 steps per segment (a cap reached
-!> only for T < ~3e-5 of the segment or M&P with gamma > ~3e4). The scan values come from
+!> lobe, below which a spike is not resolved). At most 2^20 steps per segment: a period
+!> shorter than 32 (longest segment)/2^20 = segment/32768 (e.g. 6.1e-5 s for a 2 s rectangle)
+!> is refused with a message naming it and the shortest period allowed, as is an M&P pulse
+!> with gamma > 32767 (more than 32768 cycles in its window); a coarser scan would alias.
+!> The scan values come from
 !> the exact one-step recurrence (kernel constants cached per step length; cheap) and only
 !> steer the search. Ricker: the scan points are the panel ends. Each bracket's extremum is
 !> estimated by the cubic Hermite interpolant of its two scan points; brackets whose estimate
@@ -69,6 +81,10 @@
 !> directly. Segment ends (kinks where a_g jumps) and the best interior sample, evaluated
 !> directly, are candidates too. After the pulse the maximum of a damped sinusoid on
 !> [t_end, inf) is at t_end or at its first stationary point, both closed form.
+!> Period 0 in a spectrum is the rigid oscillator: sd = sv = 0, sa = the peak |a_g| (PGA).
+!> For a pulse whose a_g jumps (rectangular, cosine_cycle, the box) the limit T -> 0+ of sa
+!> is larger than the PGA: the step overshoot, up to 2 PGA undamped (1.8588 PGA at
+!> T = 1e-4 s, zeta = 0.05 for a rectangle); sa is not continuous at T = 0 for those pulses.
 module seispulse_sdof_pulse
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use seispulse_kinds, only: dp
@@ -76,7 +92,7 @@ module seispulse_sdof_pulse
                                 set_error, real_str, int_str, outside
     use seispulse_special, only: expm1, exp_phis, complex_phis, sin_pi, cos_pi, pi
     use seispulse_roots, only: scalar_function, find_root
-    use seispulse_sdof, only: sdof_check
+    use seispulse_sdof, only: sdof_check, min_period
     use seispulse_pulses, only: pulse_t, pulse_validate, PULSE_EXPONENTIAL, PULSE_HALF_SINE, &
                                 PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, &
                                 PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP
@@ -104,7 +120,10 @@ module seispulse_sdof_pulse
     integer, parameter :: max_ricker_panels = 2**20
     !> Ricker panels: at most min(T, 1/f_p)/ricker_panels_per long.
     real(dp), parameter :: ricker_panels_per = 32.0_dp
+    !> Peak scan: at most max_scan steps per segment, at least scan_per_cycle per period of
+    !> the oscillator and of every sinusoidal term (shorter periods are refused).
     integer, parameter :: max_scan = 2**20
+    real(dp), parameter :: scan_per_cycle = 32.0_dp
     real(dp), parameter :: grade_factor = 1.25_dp
     real(dp), parameter :: grade_floor = 1.0e-12_dp
     !> Brackets whose Hermite estimate is within this fraction of the best value are refined.
@@ -209,8 +228,12 @@ contains
     !> gamma = 2 zeta. gamma = 0: the signed 1/(1 - r^2) (negative above resonance);
     !> BETA_HYSTERETIC (the book's Eq. 2.20, square root restored): 1/sqrt((1 - r^2)^2 + gamma^2);
     !> BETA_VISCOUS: 1/sqrt((1 - r^2)^2 + gamma^2 r^2). Both give 1/gamma at r = 1.
-    !> r = 1 with gamma = 0 is SEISPULSE_SINGULAR. beta_cos = 2|beta|: the cosine law's
-    !> coefficient from rest (after Eq. 2.21).
+    !> r = 1 with gamma = 0 is SEISPULSE_SINGULAR. beta_cos = 2|beta|: for gamma = 0 the cosine
+    !> law's coefficient from rest (after Eq. 2.21), the supremum of |z| omega^2/W0 of
+    !> (W0 beta/omega^2)(cos theta t - cos omega t). For gamma > 0 it is only the book's rule
+    !> 2|beta| applied to the damped beta, NOT the damped from-rest maximum (zeta = 0.05, r = 1:
+    !> from rest |z| omega^2/W0 tends to 1/gamma = 10, while 2|beta| = 20); use
+    !> harmonic_response (HARMONIC_COSINE, transient) for the damped history.
     subroutine dynamic_coefficient(ratio, gamma, model, beta, stat, errmsg, beta_cos)
         real(dp), intent(in) :: ratio                         !! r = theta/omega, >= 0
         real(dp), intent(in) :: gamma                         !! damping parameter 2 zeta, >= 0
@@ -218,15 +241,13 @@ contains
         real(dp), intent(out) :: beta                         !! dynamic coefficient
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(out), optional :: beta_cos           !! 2 |beta| (cosine law)
+        real(dp), intent(out), optional :: beta_cos           !! 2 |beta| (cosine law; from rest
+                                                              !! only for gamma = 0)
         real(dp) :: d
         beta = 0.0_dp
         if (present(beta_cos)) beta_cos = 0.0_dp
-        if (outside(ratio, 0.0_dp, huge(1.0_dp), .false., .false.)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ratio = '//real_str(ratio) &
-                           //': must be a finite number >= 0 (theta/omega)')
-            return
-        end if
+        call check_ratio(ratio, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         if (outside(gamma, 0.0_dp, huge(1.0_dp), .false., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'gamma = '//real_str(gamma) &
                            //': must be a finite number >= 0 (gamma = 2 zeta)')
@@ -238,8 +259,7 @@ contains
             return
         end if
         stat = SEISPULSE_SUCCESS
-        ! 1 - r^2 as a product: no cancellation near resonance
-        d = (1.0_dp - ratio) * (1.0_dp + ratio)
+        d = one_minus_r2(ratio)
         if (.not. (gamma > 0.0_dp)) then
             if (.not. (abs(d) > 0.0_dp)) then
                 call set_error(stat, errmsg, SEISPULSE_SINGULAR, 'ratio = 1, gamma = 0: the ' &
@@ -285,18 +305,12 @@ contains
         integer :: i
         call check_sizes(t, z, v, a_abs, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        z = 0.0_dp
-        v = 0.0_dp
-        a_abs = 0.0_dp
         call check_amplitude(w0, 'w0', stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         call check_oscillator(period, damping, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (outside(ratio, 0.0_dp, huge(1.0_dp), .false., .false.)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ratio = '//real_str(ratio) &
-                           //': must be a finite number >= 0 (theta/omega)')
-            return
-        end if
+        call check_ratio(ratio, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         if (law /= HARMONIC_SINE .and. law /= HARMONIC_COSINE) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'law = '//int_str(law) &
                            //': must be 1 (sine) or 2 (cosine)')
@@ -313,7 +327,8 @@ contains
         end if
         if (.not. transient) then
             ! steady state Z = Re(zhat e^(i r sigma)): (1 - r^2 + 2 i zeta r) zhat = -c
-            d = (1.0_dp - ratio) * (1.0_dp + ratio)
+            ! (Eq. 2.17 when undamped, the viscous steady state when damped)
+            d = one_minus_r2(ratio)
             if (.not. (damping > 0.0_dp .or. abs(d) > 0.0_dp)) then
                 call set_error(stat, errmsg, SEISPULSE_SINGULAR, 'ratio = 1, damping = 0: the ' &
                                //'undamped steady state does not exist at resonance (use ' &
@@ -331,6 +346,8 @@ contains
             end do
             return
         end if
+        ! from rest (Eq. 2.21 with cos(omega t) for the undamped cosine law): the forcing
+        ! a_g = Re(c e^(i r sigma)) as one sinusoidal segment [0, t], exact at resonance
         seg%nsin = 1
         seg%cs(1) = c
         do i = 1, size(t)
@@ -361,9 +378,6 @@ contains
         integer :: i
         call check_sizes(t, z, v, a_abs, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        z = 0.0_dp
-        v = 0.0_dp
-        a_abs = 0.0_dp
         call check_amplitude(w0, 'w0', stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         if (outside(t1, 0.0_dp, huge(1.0_dp), .true., .false.)) then
@@ -378,19 +392,23 @@ contains
         om = two_pi / period
         ! sin(omega t1/2) = sin(pi t1/T) with exact argument reduction
         s1 = sin_pi(t1 / period)
+        ! W0/omega^2 alone is never formed (it overflows for T > ~1e154 while z is finite):
+        ! each sine is divided by omega first, a_abs = -omega^2 z is written without omega
         do i = 1, size(t)
             if (t(i) < 0.0_dp) cycle
             if (t(i) < t1) then
+                ! z = -(W0/omega^2)(1 - cos omega t) = -2 W0 (sin(pi t/T)/omega)^2
                 x = t(i) / period
-                z(i) = -2.0_dp * w0 / om / om * sin_pi(x)**2
-                v(i) = -w0 / om * sin_pi(2.0_dp * x)
+                z(i) = -2.0_dp * w0 * (sin_pi(x) / om)**2
+                v(i) = -w0 * (sin_pi(2.0_dp * x) / om)
+                a_abs(i) = 2.0_dp * w0 * sin_pi(x)**2
             else
                 ! Eq. 2.23: omega (t - t1/2) = 2 pi (t - t1/2)/T
                 x = 2.0_dp * (t(i) - 0.5_dp * t1) / period
-                z(i) = -2.0_dp * w0 / om / om * s1 * sin_pi(x)
-                v(i) = -2.0_dp * w0 / om * s1 * cos_pi(x)
+                z(i) = -2.0_dp * w0 * (s1 / om) * (sin_pi(x) / om)
+                v(i) = -2.0_dp * w0 * (s1 / om) * cos_pi(x)
+                a_abs(i) = 2.0_dp * w0 * s1 * sin_pi(x)
             end if
-            a_abs(i) = -om * om * z(i)
         end do
     end subroutine rect_pulse_response
 
@@ -447,6 +465,8 @@ contains
         call check_oscillator(period, damping, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         osc = make_osc(period, damping)
+        ! Eq. 2.25 (max z = J_W/omega at t = T/4) when undamped; damped, the first
+        ! stationary point of Eq. 2.24's damped form
         phi = atan2(osc%wd, damping)              ! omega_d t*; pi/2 when undamped
         t_max = phi / osc%wd / osc%omega
         z_max = abs(jw) / osc%omega * exp(-damping * phi / osc%wd)
@@ -470,9 +490,6 @@ contains
         integer :: i
         call check_sizes(t, z, v, a_abs, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        z = 0.0_dp
-        v = 0.0_dp
-        a_abs = 0.0_dp
         call check_amplitude(jw, 'jw', stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         call check_oscillator(period, damping, stat, errmsg)
@@ -482,7 +499,8 @@ contains
         osc = make_osc(period, damping)
         do i = 1, size(t)
             if (t(i) < 0.0_dp) cycle
-            ! a_g = J_W delta(t): K/omega = J_W e^(lambda sigma)
+            ! a_g = J_W delta(t): K/omega = J_W e^(lambda sigma); undamped this is Eq. 2.24,
+            ! z = -(J_W/omega) sin(omega t)
             w = cmplx(0.0_dp, jw / osc%wd, dp) * exp(osc%lam * (osc%omega * t(i)))
             call outputs(osc, w, z(i), v(i), a_abs(i))
         end do
@@ -511,9 +529,6 @@ contains
         integer :: i
         call check_sizes(t, z, v, a_abs, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        z = 0.0_dp
-        v = 0.0_dp
-        a_abs = 0.0_dp
         call check_pulse_oscillator(p, period, damping, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         call check_times(t, stat, errmsg)
@@ -528,7 +543,9 @@ contains
     !> Maxima over all t >= 0 of |z| (m), |z'| (m/s) and |a_abs| (m/s^2) under the pulse p from
     !> rest, free vibration included, and the (earliest) times where they occur. Zero response
     !> (the spike, amp = 0): zero maxima at t = 0. The scan and refinement are described in
-    !> the module documentation.
+    !> the module documentation; a period too short for the scan (below 32/2^20 of the
+    !> pulse's longest segment) or an M&P pulse with gamma > 32767 is refused
+    !> (SEISPULSE_INVALID_INPUT, the message names the shortest period allowed).
     subroutine sdof_pulse_peaks(p, period, damping, z_max, t_z, v_max, t_v, a_max, t_a, &
                                 stat, errmsg)
         type(pulse_t), intent(in) :: p                        !! the pulse (SI)
@@ -552,6 +569,8 @@ contains
         t_a = 0.0_dp
         call check_pulse_oscillator(p, period, damping, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
+        call check_scan_period(p, period, 'period', stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         call build_model(p, period, damping, m)
         call model_peaks(m, qmax, tmax)
         z_max = qmax(1)
@@ -562,9 +581,13 @@ contains
         t_a = tmax(3)
     end subroutine sdof_pulse_peaks
 
-    !> Response spectra of the pulse p (true maxima over t >= 0, free vibration included):
-    !> sd = max|z| (m), sv = max|z'| (m/s), sa = max|a_abs| (m/s^2) for each period; period 0 gives
-    !> sd = sv = 0 and sa = the peak |a_g| of the pulse. Optional: the times of the maxima.
+    !> Response spectra of the pulse p (maxima over t >= 0, free vibration included, found as
+    !> in sdof_pulse_peaks): sd = max|z| (m), sv = max|z'| (m/s), sa = max|a_abs| (m/s^2) for
+    !> each period; period 0 gives sd = sv = 0 and sa = the peak |a_g| of the pulse (the rigid
+    !> oscillator); for a pulse whose a_g jumps (rectangular, cosine_cycle, the box) the limit
+    !> T -> 0+ of sa is larger (up to 2 PGA undamped; see the module). Positive periods below
+    !> min_period, too short for the Ricker quadrature or for the peak scan are refused with a
+    !> message naming periods(i). Optional: the times of the maxima.
     subroutine sdof_pulse_spectrum(p, periods, damping, sd, sv, sa, stat, errmsg, t_sd, t_sv, &
                                    t_sa)
         type(pulse_t), intent(in) :: p                        !! the pulse (SI)
@@ -587,30 +610,12 @@ contains
                            'sd, sv, sa: must have the length of periods')
             return
         end if
-        if (present(t_sd)) then
-            if (size(t_sd) /= n) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
-                               't_sd: must have the length of periods')
-                return
-            end if
-            t_sd = 0.0_dp
-        end if
-        if (present(t_sv)) then
-            if (size(t_sv) /= n) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
-                               't_sv: must have the length of periods')
-                return
-            end if
-            t_sv = 0.0_dp
-        end if
-        if (present(t_sa)) then
-            if (size(t_sa) /= n) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
-                               't_sa: must have the length of periods')
-                return
-            end if
-            t_sa = 0.0_dp
-        end if
+        call check_optional_size(t_sd, 't_sd', n, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        call check_optional_size(t_sv, 't_sv', n, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        call check_optional_size(t_sa, 't_sa', n, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         sd = 0.0_dp
         sv = 0.0_dp
         sa = 0.0_dp
@@ -619,13 +624,14 @@ contains
         call check_damping(damping, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         do i = 1, n
-            if (outside(periods(i), 0.0_dp, huge(1.0_dp), .false., .false.)) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'periods('//int_str(i) &
-                               //') = '//real_str(periods(i))//': must be a finite number >= 0 (s)')
-                return
-            end if
+            ! T = 0 (rigid) or min_period <= T finite: the check and bound of seispulse_sdof
+            call sdof_check(periods(i), damping, stat, errmsg, &
+                            period_name='periods('//int_str(i)//')')
+            if (stat /= SEISPULSE_SUCCESS) return
             if (periods(i) > 0.0_dp) then
-                call check_ricker_period(p, periods(i), stat, errmsg)
+                call check_ricker_period(p, periods(i), 'periods('//int_str(i)//')', stat, errmsg)
+                if (stat /= SEISPULSE_SUCCESS) return
+                call check_scan_period(p, periods(i), 'periods('//int_str(i)//')', stat, errmsg)
                 if (stat /= SEISPULSE_SUCCESS) return
             end if
         end do
@@ -689,14 +695,21 @@ contains
     ! Validation
     ! ==================================================================================
 
+    !> The outputs z, v, a_abs must have the length of t; zeroed when they do.
     subroutine check_sizes(t, z, v, a, stat, errmsg)
-        real(dp), intent(in) :: t(:), z(:), v(:), a(:)
+        real(dp), intent(in) :: t(:)
+        real(dp), intent(out) :: z(:), v(:), a(:)
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
         stat = SEISPULSE_SUCCESS
-        if (size(z) /= size(t) .or. size(v) /= size(t) .or. size(a) /= size(t)) &
+        if (size(z) /= size(t) .or. size(v) /= size(t) .or. size(a) /= size(t)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
                            'z, v, a_abs: must have the length of t')
+            return
+        end if
+        z = 0.0_dp
+        v = 0.0_dp
+        a = 0.0_dp
     end subroutine check_sizes
 
     subroutine check_times(t, stat, errmsg)
@@ -732,18 +745,57 @@ contains
         call sdof_check(0.0_dp, damping, stat, errmsg)
     end subroutine check_damping
 
+    !> A positive period (finite, >= min_period of seispulse_sdof, so that both modules accept
+    !> the same periods and omega^2 stays finite) and a damping ratio in [0, 1).
     subroutine check_oscillator(period, damping, stat, errmsg)
         real(dp), intent(in) :: period, damping
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
         stat = SEISPULSE_SUCCESS
-        if (outside(period, 0.0_dp, huge(1.0_dp), .true., .false.)) then
+        if (outside(period, min_period, huge(1.0_dp), .false., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'period = ' &
-                           //real_str(period)//': must be a finite number > 0 (s)')
+                           //real_str(period)//': must be a finite number >= ' &
+                           //real_str(min_period)//' (s)')
             return
         end if
         call check_damping(damping, stat, errmsg)
     end subroutine check_oscillator
+
+    !> r = theta/omega: finite, >= 0.
+    subroutine check_ratio(ratio, stat, errmsg)
+        real(dp), intent(in) :: ratio
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        stat = SEISPULSE_SUCCESS
+        if (outside(ratio, 0.0_dp, huge(1.0_dp), .false., .false.)) &
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ratio = '//real_str(ratio) &
+                           //': must be a finite number >= 0 (theta/omega)')
+    end subroutine check_ratio
+
+    !> 1 - r^2 as the product (1 - r)(1 + r): no cancellation near resonance (r = 1 gives 0).
+    elemental function one_minus_r2(r) result(d)
+        real(dp), intent(in) :: r
+        real(dp) :: d
+        d = (1.0_dp - r) * (1.0_dp + r)
+    end function one_minus_r2
+
+    !> An optional output array must have length n; zeroed when present.
+    subroutine check_optional_size(x, name, n, stat, errmsg)
+        real(dp), intent(out), optional :: x(:)
+        character(len=*), intent(in) :: name
+        integer, intent(in) :: n
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        stat = SEISPULSE_SUCCESS
+        if (.not. present(x)) return
+        if (size(x) /= n) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, name &
+                           //': must have the length of periods ('//int_str(n)//'), not ' &
+                           //int_str(size(x)))
+            return
+        end if
+        x = 0.0_dp
+    end subroutine check_optional_size
 
     subroutine check_pulse_oscillator(p, period, damping, stat, errmsg)
         type(pulse_t), intent(in) :: p
@@ -754,13 +806,14 @@ contains
         if (stat /= SEISPULSE_SUCCESS) return
         call check_oscillator(period, damping, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call check_ricker_period(p, period, stat, errmsg)
+        call check_ricker_period(p, period, 'period', stat, errmsg)
     end subroutine check_pulse_oscillator
 
-    !> The Ricker quadrature needs at most max_ricker_panels panels of min(T, 1/f_p)/4.
-    subroutine check_ricker_period(p, period, stat, errmsg)
+    !> The Ricker quadrature needs at most max_ricker_panels panels of min(T, 1/f_p)/32.
+    subroutine check_ricker_period(p, period, name, stat, errmsg)
         type(pulse_t), intent(in) :: p
         real(dp), intent(in) :: period
+        character(len=*), intent(in) :: name     !! the period's name in the message
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
         real(dp) :: ts, te, tmin
@@ -768,10 +821,52 @@ contains
         if (p%kind /= PULSE_RICKER) return
         call ricker_window(p, ts, te)
         tmin = ricker_panels_per * (te - ts) / real(max_ricker_panels, dp)
-        if (period < tmin) call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'period = ' &
+        if (period < tmin) call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, name//' = ' &
             //real_str(period)//': too short for the Ricker quadrature (must be >= ' &
             //real_str(tmin)//' s for this wavelet)')
     end subroutine check_ricker_period
+
+    !> The peak scan takes at most max_scan steps per segment and at least scan_per_cycle per
+    !> period of the oscillator and of each sinusoidal term: a longest segment d needs
+    !> T >= scan_per_cycle d/max_scan (= d/32768), an M&P pulse gamma + 1 <= 32768 cycles
+    !> (its fastest term has gamma + 1 cycles in the window). A coarser scan would alias.
+    subroutine check_scan_period(p, period, name, stat, errmsg)
+        type(pulse_t), intent(in) :: p
+        real(dp), intent(in) :: period
+        character(len=*), intent(in) :: name     !! the period's name in the message
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        real(dp) :: dmax, tmin
+        stat = SEISPULSE_SUCCESS
+        if (p%kind == PULSE_MP) then
+            if (p%gamma + 1.0_dp > real(max_scan, dp) / scan_per_cycle) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'gamma = ' &
+                    //real_str(p%gamma)//': too many cycles for the peak search of an M&P ' &
+                    //'pulse (must be <= '//real_str(real(max_scan, dp) / scan_per_cycle &
+                    - 1.0_dp)//': at most 2^20 scan steps, 32 per cycle)')
+                return
+            end if
+        end if
+        dmax = longest_segment(p)
+        tmin = scan_per_cycle * dmax / real(max_scan, dp)
+        if (period < tmin) call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, name//' = ' &
+            //real_str(period)//': too short relative to the pulse for the peak search (its ' &
+            //'longest segment, '//real_str(dmax)//' s, is scanned in at most 2^20 steps of ' &
+            //'at most T/32; must be >= '//real_str(tmin)//' s for this pulse)')
+    end subroutine check_scan_period
+
+    !> Duration (s) of the longest closed-form segment of a valid pulse (0 for the Ricker
+    !> wavelet, whose scan points are its quadrature panels, and for the spike). The segments
+    !> do not depend on the oscillator.
+    function longest_segment(p) result(dmax)
+        type(pulse_t), intent(in) :: p
+        real(dp) :: dmax
+        type(model_t) :: m
+        dmax = 0.0_dp
+        if (p%kind == PULSE_RICKER) return
+        call build_model(p, 1.0_dp, 0.0_dp, m)
+        if (m%nseg > 0) dmax = maxval(m%seg(1:m%nseg)%dur)
+    end function longest_segment
 
     ! ==================================================================================
     ! Kernels: divided differences of exp
@@ -873,14 +968,38 @@ contains
         e = cmplx(cos(x), sin(x), dp)
     end function phase
 
-    !> Physical outputs of the state V.
-    elemental subroutine outputs(osc, w, z, v, a)
+    !> Physical outputs of the state V: z = Re V/omega (m), z' = Re(lambda V) (m/s),
+    !> a_abs = omega Re(lambda^2 V) (m/s^2); with a_g (m/s^2) also their time derivatives:
+    !> z', z'' = omega Re(lambda^2 V) - a_g, d a_abs/dt = omega (omega Re(lambda^3 V)
+    !> + 2 zeta a_g).
+    pure subroutine state_values(osc, w, q, ag, dq)
+        type(osc_t), intent(in) :: osc
+        complex(dp), intent(in) :: w
+        real(dp), intent(out) :: q(3)                 !! z, z', a_abs
+        real(dp), intent(in), optional :: ag          !! a_g at the same time
+        real(dp), intent(out), optional :: dq(3)      !! d/dt of q (needs ag)
+        real(dp) :: om
+        om = osc%omega
+        q(1) = real(w, dp) / om
+        q(2) = real(osc%lam * w, dp)
+        q(3) = real(osc%lam2 * w, dp) * om
+        if (present(dq) .and. present(ag)) then
+            dq(1) = q(2)
+            dq(2) = q(3) - ag
+            dq(3) = om * (real(osc%lam3 * w, dp) * om + 2.0_dp * osc%zeta * ag)
+        end if
+    end subroutine state_values
+
+    !> z, z', a_abs of the state V (state_values, one point).
+    pure subroutine outputs(osc, w, z, v, a)
         type(osc_t), intent(in) :: osc
         complex(dp), intent(in) :: w
         real(dp), intent(out) :: z, v, a
-        z = real(w, dp) / osc%omega
-        v = real(osc%lam * w, dp)
-        a = real(osc%lam2 * w, dp) * osc%omega
+        real(dp) :: q(3)
+        call state_values(osc, w, q)
+        z = q(1)
+        v = q(2)
+        a = q(3)
     end subroutine outputs
 
     !> State W and a_g at fraction s of a segment.
@@ -892,54 +1011,51 @@ contains
         complex(dp), intent(out) :: w
         real(dp), intent(out) :: ag
         complex(dp) :: x0, k, e, ey, kcos, ksin
-        real(dp) :: sigma, tau, p1, p2, p3
+        real(dp) :: sigma, tau
         integer :: i
         sigma = seg%len * s
         tau = seg%dur * s
         x0 = osc%lam * sigma
         k = (0.0_dp, 0.0_dp)
-        ag = 0.0_dp
         if (seg%quad) then
-            call ricker_kernel(osc, seg, p, s, sigma, tau, k, ag)
+            call ricker_kernel(osc, seg, p, sigma, tau, k)
         else
             do i = 1, seg%nexp
                 ! C e^(M (s - v)) -> C tau e[lambda sigma - M v, M (s - v)]
                 call dd1(x0 - seg%me(i) * seg%ve(i), &
                          cmplx(seg%me(i) * (s - seg%ve(i)), 0.0_dp, dp), e, ey)
                 k = k + seg%ce(i) * e
-                ag = ag + seg%ce(i) * real(ey, dp)
             end do
             do i = 1, seg%nsin
                 ! Re(C e^(i kappa s)) = Cr cos(kappa s) - Ci sin(kappa s)
                 call sin_kernels(x0, seg%ks(i) * s, kcos, ksin, ey)
                 k = k + real(seg%cs(i), dp) * kcos - aimag(seg%cs(i)) * ksin
-                ag = ag + real(seg%cs(i) * ey, dp)
             end do
             k = k * tau
-            if (seg%has_r) then
-                ! C s phi_1(R s) -> C tau s e[lambda sigma, R s, 0]
-                k = k + seg%cr * tau * s * dd3(x0, cmplx(seg%rr * s, 0.0_dp, dp), &
-                                                 (0.0_dp, 0.0_dp))
-                call exp_phis(seg%rr * s, p1, p2, p3)
-                ag = ag + seg%cr * s * p1
-            end if
+            ! C s phi_1(R s) -> C tau s e[lambda sigma, R s, 0]
+            if (seg%has_r) k = k + seg%cr * tau * s * dd3(x0, cmplx(seg%rr * s, 0.0_dp, dp), &
+                                                          (0.0_dp, 0.0_dp))
         end if
+        ag = seg_accel(p, seg, s)
         w = exp(x0) * seg%wa
-        if (seg%quad .or. .not. (sigma < 1.0_dp)) then
+        if (seg%quad .or. .not. (osc%wd * sigma < 1.0_dp)) then
             w = w + cmplx(0.0_dp, 1.0_dp / osc%wd, dp) * k
         else
-            ! Re V = -Im(K/omega)/sqrt(1 - zeta^2) would keep only ~sigma of the digits of K;
-            ! with the impulse response sigma e[lambda sigma, conj(lambda) sigma] it is a
-            ! divided difference over the conjugate pair, with no cancellation
+            ! Re V = -Im(K/omega)/sqrt(1 - zeta^2) would keep only ~omega_d t of the digits
+            ! of K (relative error eps/(omega_d t): long periods, the start of a segment,
+            ! zeta -> 1); with the impulse response sigma e[lambda sigma, conj(lambda) sigma]
+            ! it is a divided difference over the conjugate pair, with no cancellation.
+            ! (Ricker: each quadrature node's Im e^(lambda v) = e^(-zeta v) sin(omega_d v) is
+            ! accurate as it stands.)
             w = w + cmplx(forced_real(seg, s, sigma, tau, x0), &
                           real(k, dp) / osc%wd, dp)
         end if
     end subroutine seg_state
 
     !> omega z of the forced part at fraction s (from rest at the segment start), for
-    !> sigma < 1: each term C e^(y s) contributes -C tau sigma e[x, conj(x), y s] (x = lambda
-    !> sigma, shifted for referenced exponentials), the expm1 ramp -C tau sigma s
-    !> e[x, conj(x), R s, 0].
+    !> omega_d t < 1: each term C e^(y s) contributes -C tau sigma e[x, conj(x), y s]
+    !> (x = lambda sigma, shifted for referenced exponentials), the expm1 ramp
+    !> -C tau sigma s e[x, conj(x), R s, 0].
     pure function forced_real(seg, s, sigma, tau, x0) result(zr)
         type(seg_t), intent(in) :: seg
         real(dp), intent(in) :: s, sigma, tau
@@ -958,8 +1074,61 @@ contains
         end do
         zr = zr * (tau * sigma)
         if (seg%has_r) zr = zr - seg%cr * (tau * sigma) * s &
-            * real(dd4_taylor(x0, conjg(x0), cmplx(seg%rr * s, 0.0_dp, dp), (0.0_dp, 0.0_dp)), dp)
+            * real(dd4(x0, conjg(x0), cmplx(seg%rr * s, 0.0_dp, dp), (0.0_dp, 0.0_dp)), dp)
     end function forced_real
+
+    !> Third divided difference e[x1, x2, x3, x4] of exp, any points: the Taylor series when
+    !> all are in the unit disk; else e^c e[x1 - c, ..., x4 - c] with c the point of largest
+    !> real part (the shifted points have Re <= 0: no overflow), by the series when the
+    !> shifted points are in the unit disk, else by the quotient
+    !> (e[..without xb..] - e[..without xa..])/(xa - xb) over the farthest pair (one shifted
+    !> point is 0, so that pair is more than 1 apart: the numerator's rounding is not
+    !> amplified).
+    pure function dd4(x1, x2, x3, x4) result(e)
+        complex(dp), intent(in) :: x1, x2, x3, x4
+        complex(dp) :: e, x(4), y(4), q(3)
+        real(dp) :: dist, dmax
+        integer :: c, i, j, a, b, k
+        x = [x1, x2, x3, x4]
+        if (maxval(abs(x)) <= 1.0_dp) then
+            e = dd4_taylor(x1, x2, x3, x4)
+            return
+        end if
+        c = maxloc(real(x, dp), 1)
+        y = x - x(c)
+        if (maxval(abs(y)) <= 1.0_dp) then
+            e = exp(x(c)) * dd4_taylor(y(1), y(2), y(3), y(4))
+            return
+        end if
+        a = 1
+        b = 2
+        dmax = -1.0_dp
+        do i = 1, 3
+            do j = i + 1, 4
+                dist = abs(y(i) - y(j))
+                if (dist > dmax) then
+                    dmax = dist
+                    a = i
+                    b = j
+                end if
+            end do
+        end do
+        ! e[all] = (e[all but b] - e[all but a])/(y_a - y_b)
+        k = 0
+        do i = 1, 4
+            if (i == b) cycle
+            k = k + 1
+            q(k) = y(i)
+        end do
+        e = dd3(q(1), q(2), q(3))
+        k = 0
+        do i = 1, 4
+            if (i == a) cycle
+            k = k + 1
+            q(k) = y(i)
+        end do
+        e = exp(x(c)) * ((e - dd3(q(1), q(2), q(3))) / (y(a) - y(b)))
+    end function dd4
 
     !> Third divided difference e[x1, x2, x3, x4] of exp for points in the unit disk:
     !> sum_n h_n(x1..x4)/(n + 3)! (complete symmetric polynomials by the recurrence
@@ -1132,30 +1301,39 @@ contains
     end function seg_end_state
 
     !> Ricker panel: K/omega by 20-point Gauss-Legendre on [0, tau].
-    pure subroutine ricker_kernel(osc, seg, p, s, sigma, tau, k, ag)
+    pure subroutine ricker_kernel(osc, seg, p, sigma, tau, k)
         type(osc_t), intent(in) :: osc
         type(seg_t), intent(in) :: seg
         type(pulse_t), intent(in) :: p
-        real(dp), intent(in) :: s, sigma, tau
+        real(dp), intent(in) :: sigma, tau
         complex(dp), intent(out) :: k
-        real(dp), intent(out) :: ag
-        real(dp) :: half, tmid, hs
-        integer :: j
+        complex(dp) :: kp(10), km(10)
         k = (0.0_dp, 0.0_dp)
-        ag = ricker_accel(p, seg%ta + s * seg%dur)
         if (.not. (sigma > 0.0_dp)) return
-        half = 0.5_dp * sigma
-        hs = 0.5_dp * s * seg%dur
-        tmid = seg%ta + hs
-        do j = 1, 10
-            ! node u = half (1 + x): sigma - u = half (1 - x)
-            k = k + gl_w(j) * (exp(osc%lam * (half * (1.0_dp - gl_x(j)))) &
-                               * ricker_accel(p, tmid + hs * gl_x(j)) &
-                               + exp(osc%lam * (half * (1.0_dp + gl_x(j)))) &
-                               * ricker_accel(p, tmid - hs * gl_x(j)))
-        end do
-        k = k * (0.5_dp * tau)
+        call gl_weights(osc, sigma, tau, kp, km)
+        k = gl_panel(p, seg%ta + 0.5_dp * tau, tau, kp, km)
     end subroutine ricker_kernel
+
+    !> Weights of the 20-point Gauss-Legendre rule for K/omega = int_0^tau e^(lambda omega
+    !> (tau - u)) a_g(ta + u) du on one panel (phase length sig = omega tau): nodes
+    !> u = (tau/2)(1 +- x_j), so sigma - omega u = (sig/2)(1 -+ x_j).
+    pure subroutine gl_weights(osc, sig, tau, kp, km)
+        type(osc_t), intent(in) :: osc
+        real(dp), intent(in) :: sig, tau
+        complex(dp), intent(out) :: kp(10), km(10)   !! weights of the nodes right, left of mid
+        kp = (0.5_dp * tau) * gl_w * exp(osc%lam * ((0.5_dp * sig) * (1.0_dp - gl_x)))
+        km = (0.5_dp * tau) * gl_w * exp(osc%lam * ((0.5_dp * sig) * (1.0_dp + gl_x)))
+    end subroutine gl_weights
+
+    !> K/omega of the Ricker panel centred at tmid, of duration tau, with gl_weights' weights.
+    pure function gl_panel(p, tmid, tau, kp, km) result(k)
+        type(pulse_t), intent(in) :: p
+        real(dp), intent(in) :: tmid, tau
+        complex(dp), intent(in) :: kp(10), km(10)
+        complex(dp) :: k
+        k = sum(kp * ricker_accel(p, tmid + (0.5_dp * tau) * gl_x) &
+                + km * ricker_accel(p, tmid - (0.5_dp * tau) * gl_x))
+    end function gl_panel
 
     elemental function ricker_accel(p, t) result(a)
         type(pulse_t), intent(in) :: p
@@ -1217,7 +1395,7 @@ contains
         type(pulse_t), intent(in) :: p
         real(dp), intent(in) :: period, zeta
         type(model_t), intent(out) :: m
-        real(dp) :: a, td, r, ts, te, h, gam, kk(3), ww(3), q(3), nu, half, tmid
+        real(dp) :: a, td, r, ts, te, h, gam, kk(3), ww(3), q(3), nu, tmid
         complex(dp) :: w, eh, kern, kplus(10), kminus(10)
         real(dp) :: ag
         integer :: lobe, k, n
@@ -1269,18 +1447,13 @@ contains
             m%ts = ts
             m%hp = h
             allocate(m%wp(0:n))
-            half = 0.5_dp * m%osc%omega * h
-            do k = 1, 10
-                kplus(k) = 0.5_dp * h * gl_w(k) * exp(m%osc%lam * (half * (1.0_dp - gl_x(k))))
-                kminus(k) = 0.5_dp * h * gl_w(k) * exp(m%osc%lam * (half * (1.0_dp + gl_x(k))))
-            end do
-            eh = exp(m%osc%lam * (2.0_dp * half))
+            call gl_weights(m%osc, m%osc%omega * h, h, kplus, kminus)
+            eh = exp(m%osc%lam * (m%osc%omega * h))
             w = (0.0_dp, 0.0_dp)
             m%wp(0) = w
             do k = 1, n
                 tmid = ts + (real(k, dp) - 0.5_dp) * h
-                kern = sum(kplus * ricker_accel(p, tmid + 0.5_dp * h * gl_x) &
-                           + kminus * ricker_accel(p, tmid - 0.5_dp * h * gl_x))
+                kern = gl_panel(p, tmid, h, kplus, kminus)
                 w = eh * w + cmplx(0.0_dp, 1.0_dp / m%osc%wd, dp) * kern
                 m%wp(k) = w
             end do
@@ -1293,8 +1466,7 @@ contains
             ! -k sin(k x + nu) = Re(i k e^(i (nu - k gam/2)) e^(i k gam s))
             gam = p%gamma
             nu = p%nu_deg * (pi / 180.0_dp)
-            kk = two_pi * [1.0_dp, 1.0_dp + 1.0_dp / gam, 1.0_dp - 1.0_dp / gam]
-            ww = [0.5_dp, 0.25_dp, 0.25_dp]
+            call mp_terms(gam, kk, ww)
             q = [gam, gam + 1.0_dp, gam - 1.0_dp]      ! k gam/2 = pi q
             call add_seg(m, p%t0 - 0.5_dp * gam / p%freq, gam / p%freq)
             do k = 1, 3
@@ -1319,8 +1491,9 @@ contains
     end subroutine build_model
 
     !> One lobe of the exponential pulse (amplitude a, possibly negated) from t0: a rising
-    !> and a falling half of t_d/2 each (seed 000 Eq. 1.1b), in forms without cancellation
-    !> or overflow for every beta (see the module documentation).
+    !> and a falling half of t_d/2 each (seed 000 Eq. 1.1b), in forms without overflow for
+    !> every beta and with terms bounded by a few |A| (they cancel only where a_g -> 0 at a
+    !> half lobe's zero end: absolute accuracy there; see the module documentation).
     subroutine add_exp_lobe(m, t0, td, a, beta)
         type(model_t), intent(inout) :: m
         real(dp), intent(in) :: t0, td, a, beta
@@ -1422,7 +1595,7 @@ contains
     ! Peaks
     ! ==================================================================================
 
-    !> |z|, |z'|, |a_abs| and their slopes d/ds at fraction s of segment k (physical units).
+    !> z, z', a_abs and their time derivatives at fraction s of a segment.
     pure subroutine point_values(osc, seg, p, s, q, dq)
         type(osc_t), intent(in) :: osc
         type(seg_t), intent(in) :: seg
@@ -1432,25 +1605,8 @@ contains
         complex(dp) :: w
         real(dp) :: ag
         call seg_state(osc, seg, p, s, w, ag)
-        call state_values(osc, seg%dur, w, ag, q, dq)
+        call state_values(osc, w, q, ag, dq)
     end subroutine point_values
-
-    !> |z|, |z'|, |a_abs| (physical) and their slopes d/ds from the state V and a_g.
-    pure subroutine state_values(osc, dur, w, ag, q, dq)
-        type(osc_t), intent(in) :: osc
-        real(dp), intent(in) :: dur
-        complex(dp), intent(in) :: w
-        real(dp), intent(in) :: ag
-        real(dp), intent(out) :: q(3), dq(3)
-        real(dp) :: om
-        om = osc%omega
-        q(1) = real(w, dp) / om
-        q(2) = real(osc%lam * w, dp)
-        q(3) = real(osc%lam2 * w, dp) * om
-        dq(1) = dur * q(2)
-        dq(2) = dur * (real(osc%lam2 * w, dp) * om - ag)
-        dq(3) = dur * om * (real(osc%lam3 * w, dp) * om + 2.0_dp * osc%zeta * ag)
-    end subroutine state_values
 
     !> Keep the largest |q|; among values equal to rounding, the earliest time.
     pure subroutine update(best, tbest, q, t)
@@ -1515,7 +1671,8 @@ contains
                 else
                     call step_state(m%osc, seg, st, s(j - 1), s(j), w, ag)
                 end if
-                call state_values(m%osc, seg%dur, w, ag, q, dq)
+                call state_values(m%osc, w, q, ag, dq)
+                dq = seg%dur * dq          ! slopes d/ds
                 t = seg%ta + s(j) * seg%dur
                 do i = 1, 3
                     if (j == 0 .or. j == n) then
@@ -1626,10 +1783,12 @@ contains
         real(dp) :: h, h0, hk, d
         integer :: i, j
         h = seg%hmax
-        if (seg%len > 0.0_dp) h = min(h, two_pi / seg%len / 32.0_dp)
+        if (seg%len > 0.0_dp) h = min(h, two_pi / seg%len / scan_per_cycle)
         do i = 1, seg%nsin
-            if (abs(seg%ks(i)) > 0.0_dp) h = min(h, two_pi / abs(seg%ks(i)) / 32.0_dp)
+            if (abs(seg%ks(i)) > 0.0_dp) h = min(h, two_pi / abs(seg%ks(i)) / scan_per_cycle)
         end do
+        ! never reached for accepted input (check_scan_period refuses the periods and M&P
+        ! pulses that would need more steps); a guard on the step count only
         h = max(h, 1.0_dp / real(max_scan, dp))
         h0 = h
         if (seg%grade > 0.0_dp) h0 = max(0.25_dp / seg%grade, grade_floor)
@@ -1671,21 +1830,14 @@ contains
         end subroutine ensure
     end subroutine scan_points
 
+    !> d/dt of z, z' or a_abs (self%which) at fraction x of the segment.
     function slope_eval(self, x) result(y)
         class(slope_fn), intent(inout) :: self
         real(dp), intent(in) :: x
         real(dp) :: y
-        complex(dp) :: w
-        real(dp) :: ag
-        call seg_state(self%osc, self%seg, self%p, x, w, ag)
-        select case (self%which)
-        case (1)
-            y = real(self%osc%lam * w, dp)
-        case (2)
-            y = real(self%osc%lam2 * w, dp) * self%osc%omega - ag
-        case default
-            y = real(self%osc%lam3 * w, dp) * self%osc%omega + 2.0_dp * self%osc%zeta * ag
-        end select
+        real(dp) :: q(3), dq(3)
+        call point_values(self%osc, self%seg, self%p, x, q, dq)
+        y = dq(self%which)
     end function slope_eval
 
     ! ==================================================================================
@@ -1705,43 +1857,72 @@ contains
         y = -sum(self%w * self%k**2 * cos(self%k * x + self%nu))
     end function mp_jerk_eval
 
+    !> Wave numbers k (in x = f_p (t - t0)) and weights w of the three sinusoids of the M&P
+    !> acceleration, a = -A f_p sum w_j k_j sin(k_j x + nu): k = 2 pi (1, 1 + 1/gamma,
+    !> 1 - 1/gamma), w = (1/2, 1/4, 1/4).
+    pure subroutine mp_terms(gam, k, w)
+        real(dp), intent(in) :: gam
+        real(dp), intent(out) :: k(3), w(3)
+        k = two_pi * [1.0_dp, 1.0_dp + 1.0_dp / gam, 1.0_dp - 1.0_dp / gam]
+        w = [0.5_dp, 0.25_dp, 0.25_dp]
+    end subroutine mp_terms
+
+    !> Bound of |a|/(A f_p) of the M&P pulse at |x|: a = (A f_p/2)[env' cos(phi)
+    !> - 2 pi env sin(phi)], env = 1 + cos(2 pi x/gamma), so |a|/(A f_p) <= pi sqrt(
+    !> sin^2(u)/gamma^2 + (1 + cos u)^2), u = 2 pi x/gamma, decreasing in |x| for gamma >= 1.
+    pure function mp_bound(gam, x) result(b)
+        real(dp), intent(in) :: gam, x
+        real(dp) :: b
+        b = pi * hypot(sin_pi(2.0_dp * x / gam) / gam, 1.0_dp + cos_pi(2.0_dp * x / gam))
+    end function mp_bound
+
+    !> Peak |a_g| of the M&P pulse: a scan (step 1/64 in x) with Brent on the closed-form jerk,
+    !> first over |x| <= 4 (the envelope's peak is at x = 0), widened (doubling) until the
+    !> bound mp_bound at the window's edge is below the best value found, so that nothing
+    !> outside can be larger; at most the whole window |x| <= gamma/2. The work does not
+    !> grow with gamma for large gamma (the integer count cannot overflow).
     subroutine mp_peak_accel(p, a_max, t_max)
         type(pulse_t), intent(in) :: p
         real(dp), intent(out) :: a_max, t_max
         type(mp_jerk_fn) :: f
-        real(dp) :: x0, x1, xa, xb, ja, jb, best, xbest, xr, val
+        real(dp) :: xw, x0, x1, xa, xb, ja, jb, best, xbest, xr, val
         integer :: n, j, stat
-        f%k = two_pi * [1.0_dp, 1.0_dp + 1.0_dp / p%gamma, 1.0_dp - 1.0_dp / p%gamma]
-        f%w = [0.5_dp, 0.25_dp, 0.25_dp]
+        call mp_terms(p%gamma, f%k, f%w)
         f%nu = p%nu_deg * (pi / 180.0_dp)
-        x0 = -0.5_dp * p%gamma
-        x1 = 0.5_dp * p%gamma
-        n = min(max_scan, max(64, ceiling(64.0_dp * p%gamma)))
         best = -1.0_dp
-        xbest = x0
-        xa = x0
-        ja = f%eval(xa)
-        do j = 0, n
-            xb = x0 + (x1 - x0) * real(j, dp) / real(n, dp)
-            jb = f%eval(xb)
-            val = abs(mp_accel(f%k, f%w, f%nu, xb))
-            if (val > best) then
-                best = val
-                xbest = xb
-            end if
-            if (j > 0 .and. ((ja > 0.0_dp .and. jb < 0.0_dp) .or. &
-                             (ja < 0.0_dp .and. jb > 0.0_dp))) then
-                call find_root(f, xa, xb, xr, stat, fa_known=ja, fb_known=jb)
-                if (stat == SEISPULSE_SUCCESS) then
-                    val = abs(mp_accel(f%k, f%w, f%nu, xr))
-                    if (val > best) then
-                        best = val
-                        xbest = xr
+        xbest = 0.0_dp
+        xw = min(0.5_dp * p%gamma, 4.0_dp)
+        do
+            x0 = -xw
+            x1 = xw
+            n = int(min(real(max_scan, dp), max(64.0_dp, 128.0_dp * xw)))
+            xa = x0
+            ja = f%eval(xa)
+            do j = 0, n
+                xb = x0 + (x1 - x0) * real(j, dp) / real(n, dp)
+                jb = f%eval(xb)
+                val = abs(mp_accel(f%k, f%w, f%nu, xb))
+                if (val > best) then
+                    best = val
+                    xbest = xb
+                end if
+                if (j > 0 .and. ((ja > 0.0_dp .and. jb < 0.0_dp) .or. &
+                                 (ja < 0.0_dp .and. jb > 0.0_dp))) then
+                    call find_root(f, xa, xb, xr, stat, fa_known=ja, fb_known=jb)
+                    if (stat == SEISPULSE_SUCCESS) then
+                        val = abs(mp_accel(f%k, f%w, f%nu, xr))
+                        if (val > best) then
+                            best = val
+                            xbest = xr
+                        end if
                     end if
                 end if
-            end if
-            xa = xb
-            ja = jb
+                xa = xb
+                ja = jb
+            end do
+            if (xw >= 0.5_dp * p%gamma) exit
+            if (mp_bound(p%gamma, xw) <= best) exit
+            xw = min(0.5_dp * p%gamma, 2.0_dp * xw)
         end do
         a_max = abs(p%amp) * p%freq * best
         t_max = p%t0 + xbest / p%freq
