@@ -37,7 +37,7 @@ module seispulse_pieces
     private
 
     public :: piece_t, piece_iter_t, pulse_pieces_check, record_pieces_check, record_step_check
-    public :: pulse_pieces_init, record_pieces_init, next_piece
+    public :: pulse_pieces_init, record_pieces_init, next_piece, exceeds, onset_on_piece
 
     !> M&P: largest gamma accepted (64 gamma coarse pieces are generated).
     real(dp), parameter :: mp_gamma_max = 1.0e6_dp
@@ -437,5 +437,47 @@ contains
         y = -(f%k0**3 * sin(f%k0 * x + f%nu) &
               + 0.5_dp * (f%kp**3 * sin(f%kp * x + f%nu) + f%km**3 * sin(f%km * x + f%nu)))
     end function jerk_slope
+
+    ! ------------------------------------------------------------------------------
+    ! Onset from rest on a piece (sliding and rocking blocks alike)
+    ! ------------------------------------------------------------------------------
+
+    !> a exceeds thr by more than rounding (two ulps of the larger): a threshold that
+    !> is only touched starts no motion. Safe for thr = +inf (no inf - inf).
+    elemental logical function exceeds(a, thr)
+        real(dp), intent(in) :: a, thr
+        exceeds = a - thr > 2.0_dp * epsilon(a) * max(abs(a), abs(thr))
+    end function exceeds
+
+    !> Does a block at rest start moving on a piece where a_g is monotone, from a_start
+    !> at its start to a_end at its end (m/s^2)? Motion in +x starts when a_g exceeds
+    !> thr_pos, in -x when -a_g exceeds thr_neg; `blocked` (+1 or -1, 0: none) excludes
+    !> one direction. dir = +1, -1 or 0 (none on this piece); now: at the start of the
+    !> piece, else where a_g crosses lev (the root the caller locates).
+    pure subroutine onset_on_piece(a_start, a_end, thr_pos, thr_neg, blocked, dir, lev, now)
+        real(dp), intent(in) :: a_start, a_end, thr_pos, thr_neg
+        integer, intent(in) :: blocked
+        integer, intent(out) :: dir
+        real(dp), intent(out) :: lev
+        logical, intent(out) :: now
+        dir = 0
+        lev = 0.0_dp
+        now = .false.
+        if (blocked /= 1 .and. exceeds(a_start, thr_pos)) then
+            dir = 1
+            now = .true.
+        else if (blocked /= -1 .and. exceeds(-a_start, thr_neg)) then
+            dir = -1
+            now = .true.
+        else if (blocked /= 1 .and. exceeds(a_end, thr_pos)) then
+            dir = 1
+            lev = thr_pos
+            now = .not. (a_start < thr_pos)
+        else if (blocked /= -1 .and. exceeds(-a_end, thr_neg)) then
+            dir = -1
+            lev = -thr_neg
+            now = .not. (a_start > -thr_neg)
+        end if
+    end subroutine onset_on_piece
 
 end module seispulse_pieces

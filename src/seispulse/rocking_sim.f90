@@ -64,7 +64,8 @@ module seispulse_rocking_sim
                                 PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
                                 PULSE_RICKER
     use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_pieces_check, &
-                                pulse_pieces_init, record_pieces_init, next_piece
+                                pulse_pieces_init, record_pieces_init, next_piece, &
+                                exceeds, onset_on_piece
     implicit none
     private
 
@@ -899,24 +900,7 @@ contains
             thr = sim%thr
             a_c = ground_accel(gr, t)
             a_e = gr%ab
-            dir = 0
-            now = .false.
-            lev = 0.0_dp
-            if (blocked /= 1 .and. exceeds(a_c, thr)) then
-                dir = 1
-                now = .true.
-            else if (blocked /= -1 .and. exceeds(-a_c, thr)) then
-                dir = -1
-                now = .true.
-            else if (blocked /= 1 .and. exceeds(a_e, thr)) then
-                dir = 1
-                lev = thr
-                now = .not. (a_c < thr)
-            else if (blocked /= -1 .and. exceeds(-a_e, thr)) then
-                dir = -1
-                lev = -thr
-                now = .not. (a_c > -thr)
-            end if
+            call onset_on_piece(a_c, a_e, thr, thr, blocked, dir, lev, now)
             if (dir == 0) then
                 call fill_rest(t_stop)
                 t = t_stop
@@ -1551,13 +1535,6 @@ contains
     ! ------------------------------------------------------------------------------
     ! Small helpers
     ! ------------------------------------------------------------------------------
-
-    !> a exceeds thr by more than rounding (two ulps of the larger): a threshold that
-    !> is only touched starts no rocking.
-    elemental logical function exceeds(a, thr)
-        real(dp), intent(in) :: a, thr
-        exceeds = a - thr > 2.0_dp * epsilon(a) * max(abs(a), abs(thr))
-    end function exceeds
 
     !> x finite and > 0 (no ordered comparison with a NaN: it traps under
     !> -ffpe-trap=invalid).

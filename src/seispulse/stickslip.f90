@@ -44,7 +44,8 @@ module seispulse_stickslip
     use seispulse_pulses, only: pulse_t, pulse_validate, pulse_at, exp_consts_t, exp_consts, &
                                 PULSE_EXPONENTIAL
     use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_pieces_check, &
-                                pulse_pieces_init, record_pieces_init, next_piece
+                                pulse_pieces_init, record_pieces_init, next_piece, &
+                                exceeds, onset_on_piece
     implicit none
     private
 
@@ -285,23 +286,7 @@ contains
                     ! ---- at rest: onset on this piece? a_g is monotone, so the
                     ! largest excursion is at an end of [t, tb]
                     if (t >= tb) exit events
-                    dir = 0
-                    now = .false.
-                    if (blocked /= 1 .and. exceeds(a_c, thr_f)) then
-                        dir = 1
-                        now = .true.
-                    else if (blocked /= -1 .and. exceeds(-a_c, thr_r)) then
-                        dir = -1
-                        now = .true.
-                    else if (blocked /= 1 .and. exceeds(ab, thr_f)) then
-                        dir = 1
-                        lev = thr_f
-                        now = .not. (a_c < thr_f)
-                    else if (blocked /= -1 .and. exceeds(-ab, thr_r)) then
-                        dir = -1
-                        lev = -thr_r
-                        now = .not. (a_c > -thr_r)
-                    end if
+                    call onset_on_piece(a_c, ab, thr_f, thr_r, blocked, dir, lev, now)
                     if (dir == 0) then
                         call fill_rest(tb)
                         if (tb > t) just_stopped = .false.
@@ -596,13 +581,6 @@ contains
     ! ------------------------------------------------------------------------------
     ! Small helpers
     ! ------------------------------------------------------------------------------
-
-    !> a exceeds thr by more than rounding (two ulps of the larger): a threshold that
-    !> is only touched starts no slide. Safe for thr = +inf (no inf - inf).
-    elemental logical function exceeds(a, thr)
-        real(dp), intent(in) :: a, thr
-        exceeds = a - thr > 2.0_dp * epsilon(a) * max(abs(a), abs(thr))
-    end function exceeds
 
     !> x > 0 and not NaN (no ordered comparison with a NaN: it traps under
     !> -ffpe-trap=invalid).
