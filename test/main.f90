@@ -15,6 +15,9 @@ program tester
     use test_newmark, only: collect_newmark
     use test_sdof, only: collect_sdof
     use test_sdof_pulse, only: collect_sdof_pulse
+    use test_walls_vy, only: collect_walls_vy
+    use test_walls_one_term, only: collect_walls_one_term
+    use test_codes, only: collect_codes
     implicit none
     character(len=64) :: wanted
     integer :: npass, nfail, nrun
@@ -72,6 +75,18 @@ program tester
     if (selected('sdof_pulse')) then
         call collect_sdof_pulse(tests)
         call run_suite('sdof_pulse', tests, output_unit, npass, nfail)
+    end if
+    if (selected('walls_vy')) then
+        call collect_walls_vy(tests)
+        call run_suite('walls_vy', tests, output_unit, npass, nfail)
+    end if
+    if (selected('walls_one_term')) then
+        call collect_walls_one_term(tests)
+        call run_suite('walls_one_term', tests, output_unit, npass, nfail)
+    end if
+    if (selected('codes')) then
+        call collect_codes(tests)
+        call run_suite('codes', tests, output_unit, npass, nfail)
     end if
     if (nrun == 0) then
         write(error_unit, '(a)') 'unknown suite: '//trim(wanted)

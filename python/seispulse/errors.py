@@ -35,6 +35,11 @@ class FileError(SeispulseError, OSError):
     does not hold what its format promises raises InvalidInputError instead."""
 
 
+class NoSolutionError(SeispulseError, ValueError):
+    """The data are valid but the problem has no solution, e.g. a Mononobe-Okabe
+    backfill steeper than phi - theta (the soil wedge cannot be in equilibrium)."""
+
+
 #: Fortran status code (module seispulse_errors) -> exception class.
 STATUS_ERRORS = {
     1: InvalidInputError,
@@ -43,4 +48,5 @@ STATUS_ERRORS = {
     4: NoBracketError,
     5: InternalError,
     6: FileError,
+    7: NoSolutionError,
 }

@@ -9,7 +9,8 @@ module seispulse_errors
     private
 
     public :: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
-              SEISPULSE_NO_CONVERGENCE, SEISPULSE_NO_BRACKET, SEISPULSE_INTERNAL, SEISPULSE_IO
+              SEISPULSE_NO_CONVERGENCE, SEISPULSE_NO_BRACKET, SEISPULSE_INTERNAL, SEISPULSE_IO, &
+              SEISPULSE_NO_SOLUTION
     public :: set_error, status_name, real_str, int_str, outside, check_ascending_times, &
               check_output_grid
 
@@ -20,6 +21,9 @@ module seispulse_errors
     integer, parameter :: SEISPULSE_NO_BRACKET = 4     !! root finder: f(a), f(b) of one sign
     integer, parameter :: SEISPULSE_INTERNAL = 5       !! a bug: please report it
     integer, parameter :: SEISPULSE_IO = 6             !! a file cannot be opened or read
+    !> the problem has no solution for these (valid) data, e.g. a Mononobe-Okabe backfill
+    !> slope steeper than phi - theta: the wedge cannot be in equilibrium
+    integer, parameter :: SEISPULSE_NO_SOLUTION = 7
 
 contains
 
@@ -52,6 +56,8 @@ contains
             name = 'internal error'
         case (SEISPULSE_IO)
             name = 'file error'
+        case (SEISPULSE_NO_SOLUTION)
+            name = 'no solution'
         case default
             name = 'unknown status'
         end select

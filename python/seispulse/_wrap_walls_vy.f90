@@ -1,0 +1,1 @@
+! Placeholder (issue 7): f2py layer of seispulse_walls_vy.
