@@ -16,6 +16,7 @@ program seispulse_driver
     use driver_newmark, only: run_newmark, newmark_groups, NEWMARK_ROWS_FAILED
     use driver_sdof, only: run_sdof, sdof_groups, SDOF_ROWS_FAILED, run_sdof_beta, &
                            sdof_beta_groups, run_sdof_shock, sdof_shock_groups
+    use driver_walls, only: run_walls, walls_groups
     use driver_run_group, only: run_analysis, run_output, read_run, run_keys, write_run
     implicit none
 
@@ -27,12 +28,12 @@ program seispulse_driver
         end subroutine c_exit
     end interface
 
-    character(len=10), parameter :: analyses(7) = [character(len=10) :: 'pulse', 'sliding', &
-        'rocking', 'newmark', 'sdof', 'sdof_beta', 'sdof_shock']
+    character(len=10), parameter :: analyses(8) = [character(len=10) :: 'pulse', 'sliding', &
+        'rocking', 'newmark', 'sdof', 'sdof_beta', 'sdof_shock', 'walls']
     !> Every group of any analysis (besides run), for the first check.
-    character(len=12), parameter :: all_groups(13) = [character(len=12) :: 'pulse', 'time', &
+    character(len=12), parameter :: all_groups(16) = [character(len=12) :: 'pulse', 'time', &
         'block', 'method', 'history', 'rocking', 'map', 'records', 'newmark', 'sdof', &
-        'sdof_history', 'sdof_beta', 'sdof_shock']
+        'sdof_history', 'sdof_beta', 'sdof_shock', 'wall', 'backfill', 'seismic']
 
     character(len=:), allocatable :: path, errmsg
     character(len=4096) :: arg
@@ -108,6 +109,10 @@ program seispulse_driver
         call check_groups(sdof_shock_groups)
         call write_run(output_unit)
         call run_sdof_shock(path, groups, run_output(), stat, errmsg)
+    case ('walls')
+        call check_groups(walls_groups)
+        call write_run(output_unit)
+        call run_walls(path, groups, run_output(), stat, errmsg)
     case ('')
         call fail(located(path, groups(irun))//'analysis: missing (allowed: '//join(analyses)//')')
     case default

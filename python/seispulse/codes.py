@@ -1,2 +1,436 @@
-"""Placeholder (issue 7): EN 1998 seismic earth-pressure checks and spectra."""
-__all__ = []
+"""EN 1998 seismic earth-pressure checks and response spectra (Fortran module
+``seispulse_codes``, issue 7).
+
+* EN 1998-5 §7.3.2.2: seismic coefficients kh = alpha S / r (7.1), kv = 0.5 kh or
+  0.33 kh (7.2, 7.3), the r of Table 7.1 (:func:`seismic_coefficients`,
+  :func:`r_factor`).
+* EN 1998-5 Annex E: Mononobe-Okabe coefficients (:func:`mononobe_okabe`) and the thrust
+  on a yielding wall with the three water cases (:func:`earth_thrust`), the Westergaard
+  pressure of free water (:func:`westergaard_pressure`), the rigid-wall increment
+  alpha S gamma H^2 (:func:`rigid_wall_thrust`).
+* Seed & Whitman (1970) and Wood (1973) as quoted by UFC 3-220-20 (:func:`seed_whitman`,
+  :func:`wood`).
+* EN 1998-1 §3.2.2.2 and §3.2.2.5: ground parameters (Tables 3.2, 3.3), damping
+  correction, elastic and design spectra.
+
+Units: SI (unit weights kN/m^3, lengths m, thrusts kN/m, moments kNm/m), angles in
+DEGREES (theta is returned in radians), alpha = ag/g dimensionless, spectra in the units
+of ``ag``. ``kv`` is signed: kv > 0 is an upward inertia force, the effective gravity is
+g (1 - kv) and tan(theta) = kh / (1 - kv); check both signs of EN's kv.
+
+Geometry: ``psi_deg`` is the inclination of the back face to the horizontal (90 =
+vertical; psi < 90 sets the top of the back face back from the heel, away from the
+backfill, so that soil rests on it; psi > 90 overhangs the backfill); ``beta_deg`` is the
+backfill slope (> 0 rising away from the wall); the height H is vertical.
+
+Sources and what could not be verified
+--------------------------------------
+The EN texts themselves could not be read here (only their cover pages were
+reachable). Every formula and table value is taken from at least two agreeing secondary
+transcriptions (MIDAS design-guide components, GEO5 help, the xc project, eurocodepy,
+TCVN 9386:2012 for EN 1998-1 Type 1; Type 2 from MIDAS only plus the structure of the
+standard). The Westergaard 7/8 and 7/12 terms, Seed-Whitman's 3/8 kh gamma H^2 at 0.6 H
+and Wood's kh gamma H^2 at 0.6 H are from UFC 3-220-20 (2025) as transcribed; the
+primary reports (Seed & Whitman 1970, Wood 1973) were not read. The Annex E equation
+numbers E.5-E.17 and the clause of the rigid-wall rule are recollection, not verified.
+The published check phi = 30, delta = 0, vertical wall, flat backfill, kh = 0.24,
+kv = -0.12 (theta = 0.2110933 rad, K = 0.4856177, K_pd = 2.600) is reproduced (from the
+xc project's test, which cites eurocodeapplied.com).
+
+Table values (S, TB, TC, TD, avg/ag, beta = 0.2, gamma_phi = 1.25, r) are EN's
+RECOMMENDED values; a National Annex may change them.
+
+[TEXT ERROR?] The passive coefficient E.4 (delta = 0) as transcribed has the numerator
+sin^2(psi + phi_d - theta); a brute-force planar-wedge search gives sin^2(psi + theta -
+phi_d) (the same for a vertical wall, different otherwise). This module implements the
+wedge-consistent form, generalised to wall friction (tested against the wedge search).
+
+For a backfill steeper than phi_d - theta, EN prints E.3; no soil wedge is in
+equilibrium there, so :func:`mononobe_okabe` raises :class:`seispulse.NoSolutionError`
+unless ``beyond_limit="en1998"`` asks for EN's number.
+
+EAK 2000 (the Greek seismic code) is NOT implemented: its primary text could not be
+read, and its retaining-wall clause could not be located.
+"""
+
+import numbers
+from collections import namedtuple
+
+import numpy as np
+
+from . import _core
+from ._seispulse import (sp_ec8_damping_correction, sp_ec8_design_spectrum,
+                         sp_ec8_elastic_spectrum, sp_ec8_ground_parameters, sp_ec8_r_factor,
+                         sp_ec8_rigid_thrust, sp_ec8_seismic_coefficients, sp_ec8_thrust,
+                         sp_ec8_vertical_ratio, sp_mononobe_okabe, sp_seed_whitman_increment,
+                         sp_westergaard_pressure, sp_wood_thrust)
+from .errors import InvalidInputError
+
+__all__ = ["WALL_TYPES", "WATER_CASES", "GROUND_TYPES", "MononobeOkabe", "SeismicCoefficients",
+           "EarthThrust", "WallThrust", "GroundParameters", "mononobe_okabe",
+           "seismic_coefficients", "r_factor", "vertical_ratio", "earth_thrust",
+           "westergaard_pressure", "rigid_wall_thrust", "seed_whitman", "wood",
+           "ground_parameters", "damping_correction", "elastic_spectrum", "design_spectrum"]
+
+#: EN 1998-5 Table 7.1 wall types: r = 2 (free gravity wall, displacement up to
+#: 300 alpha S mm), 1.5 (up to 200 alpha S mm), 1 (flexural RC walls, anchored or braced
+#: walls, RC walls on vertical piles, restrained basement walls, bridge abutments).
+WALL_TYPES = ("gravity_300", "gravity_200", "restrained")
+#: EN 1998-5 Annex E water cases: dry (or water table below the wall); dynamically
+#: impervious soil below the water table; highly permeable soil below the water table.
+WATER_CASES = ("dry", "impervious", "permeable")
+#: EN 1998-1 Table 3.1 ground types.
+GROUND_TYPES = ("A", "B", "C", "D", "E")
+
+MononobeOkabe = namedtuple("MononobeOkabe", ["k", "theta"])
+MononobeOkabe.__doc__ = """Mononobe-Okabe coefficient K (dimensionless; the thrust is
+1/2 gamma (1 - kv) K H^2) and the seismic angle theta = atan(kh / (1 - kv)) (radians)."""
+
+SeismicCoefficients = namedtuple("SeismicCoefficients", ["kh", "kv"])
+SeismicCoefficients.__doc__ = """kh = alpha S / r and the magnitude of kv (dimensionless);
+check both signs of kv."""
+
+_THRUST_FIELDS = ["k", "theta", "e_soil", "e_static", "e_dynamic", "e_ws", "e_wd", "total",
+                  "z_static", "z_dynamic", "z_ws", "z_wd", "z_total", "m_base", "k_static"]
+EarthThrust = namedtuple("EarthThrust", _THRUST_FIELDS)
+EarthThrust.__doc__ = """Active seismic thrust on a yielding wall (EN 1998-5 Annex E).
+
+k: Mononobe-Okabe K with the theta of the water case; theta (rad); e_soil =
+1/2 gamma* (1 - kv) K H^2 (kN/m); e_static = 1/2 gamma* K_static H^2 (Coulomb, kh = kv = 0)
+at z_static = H/3; e_dynamic = e_soil - e_static at z_dynamic = H/2 (negative possible
+when kv > 0); e_ws = 1/2 gamma_w H^2 at z_ws = H/3 (water cases); e_wd = 7/12 kh gamma_w
+H^2 at z_wd = 0.4 H (permeable case); total = e_soil + e_ws + e_wd (kN/m); z_total =
+m_base / total (m above the base); m_base = sum of thrust x height (kNm/m, thrusts taken
+as horizontal forces: exact for a vertical back and delta = 0); k_static: the static K."""
+
+WallThrust = namedtuple("WallThrust", ["thrust", "height_of_application"])
+WallThrust.__doc__ = """A thrust (kN/m) and the height of its point of application above
+the base of the wall (m)."""
+
+GroundParameters = namedtuple("GroundParameters", ["s", "tb", "tc", "td"])
+GroundParameters.__doc__ = """Soil factor S and corner periods TB, TC, TD (s) of EN 1998-1
+Table 3.2 (Type 1) or 3.3 (Type 2), recommended values."""
+
+
+def _scalar(name, value):
+    return _core.as_scalar(name, value)
+
+
+def _spectrum_type(value):
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral) \
+            or int(value) not in (1, 2):
+        raise InvalidInputError(f"spectrum_type = {value!r}: must be 1 (Type 1, Ms > 5.5) or "
+                                "2 (Type 2, Ms <= 5.5)")
+    return int(value)
+
+
+def _ground(value):
+    if not isinstance(value, str) or value.strip().upper() not in GROUND_TYPES:
+        raise InvalidInputError(f"ground = {value!r}: unknown ground type (allowed: "
+                                "'A', 'B', 'C', 'D', 'E', EN 1998-1 Table 3.1)")
+    return GROUND_TYPES.index(value.strip().upper()) + 1
+
+
+def _raise(stat, msg):
+    _core.raise_record_status(stat, msg, names={"periods": "periods", "z": "z",
+                                                "xi_percent": "xi_percent"})
+
+
+# ------------------------------------------------------------------ EN 1998-5 §7.3.2.2
+
+def vertical_ratio(spectrum_type=1):
+    """avg / ag of EN 1998-1 Table 3.4 (recommended): 0.90 for Type 1, 0.45 for Type 2."""
+    return float(sp_ec8_vertical_ratio(_spectrum_type(spectrum_type)))
+
+
+def seismic_coefficients(alpha, s, r=1.0, spectrum_type=1):
+    """Seismic coefficients of EN 1998-5 §7.3.2.2.
+
+    Parameters
+    ----------
+    alpha : float
+        ag / g, with ag = gamma_I agR the design ground acceleration on ground type A
+        (>= 0).
+    s : float
+        Soil factor S (> 0), e.g. from :func:`ground_parameters`.
+    r : float
+        Wall factor of Table 7.1 (:func:`r_factor`), in [1, 2]; values between 1, 1.5 and 2
+        are accepted (for National Annexes), EN itself lists only those three.
+    spectrum_type : {1, 2}
+        Decides kv through avg / ag (Table 3.4): 0.90 > 0.6 for Type 1, so kv = 0.5 kh
+        (7.2); 0.45 for Type 2, so kv = 0.33 kh (7.3).
+
+    Returns
+    -------
+    SeismicCoefficients
+        kh = alpha S / r (7.1) and kv (a positive magnitude: check +kv and -kv).
+    """
+    ratio = vertical_ratio(spectrum_type)
+    kh, kv, stat, msg = sp_ec8_seismic_coefficients(_scalar("alpha", alpha), _scalar("s", s),
+                                                    _scalar("r", r), ratio)
+    _core.raise_for_status(stat, msg)
+    return SeismicCoefficients(float(kh), float(kv))
+
+
+def r_factor(wall_type):
+    """r of EN 1998-5 Table 7.1 for ``wall_type`` in :data:`WALL_TYPES`:
+    'gravity_300' -> 2.0 (free gravity wall accepting a displacement up to
+    300 alpha S mm), 'gravity_200' -> 1.5 (up to 200 alpha S mm), 'restrained' -> 1.0
+    (flexural RC walls, anchored or braced walls, RC walls on vertical piles, restrained
+    basement walls, bridge abutments)."""
+    code = WALL_TYPES.index(_core.check_choice("wall_type", wall_type, WALL_TYPES)) + 1
+    r, stat, msg = sp_ec8_r_factor(code)
+    _core.raise_for_status(stat, msg)
+    return float(r)
+
+
+# ------------------------------------------------------------------ Annex E
+
+def mononobe_okabe(phi_deg, kh, kv, delta_deg=0.0, psi_deg=90.0, beta_deg=0.0, passive=False,
+                   gamma_phi=1.0, beyond_limit="error"):
+    """Mononobe-Okabe earth-pressure coefficient, EN 1998-5 Annex E (dry backfill).
+
+    Parameters
+    ----------
+    phi_deg : float
+        Friction angle of the soil phi' (degrees, in (0, 90)).
+    kh : float
+        Horizontal seismic coefficient (>= 0).
+    kv : float
+        Vertical seismic coefficient, SIGNED (> 0 upward inertia, < 1).
+    delta_deg : float
+        Soil-wall friction angle (degrees, in [0, phi_deg]).
+    psi_deg : float
+        Inclination of the back face to the horizontal (degrees, in (0, 180); 90 vertical).
+    beta_deg : float
+        Backfill slope (degrees, in (-90, 90), > 0 rising; psi + beta in (0, 180)).
+    passive : bool
+        False: active coefficient E.2; True: passive coefficient (inertia away from the
+        wall), the wedge-consistent generalisation of E.4 with wall friction.
+    gamma_phi : float
+        Partial factor on tan(phi') and tan(delta) (>= 1; 1 = characteristic; the EN
+        1998-5 NOTE recommends 1.25, check the National Annex): phi_d = atan(tan(phi') /
+        gamma_phi), delta_d likewise (Annex E(4)).
+    beyond_limit : {'error', 'en1998'}
+        Active case with beta > phi_d - theta, where no soil wedge is in equilibrium:
+        'error' raises :class:`seispulse.NoSolutionError`; 'en1998' returns EN's E.3 value
+        sin^2(psi + phi_d - theta) / (cos(theta) sin^2(psi) sin(psi - theta - delta_d)).
+
+    Returns
+    -------
+    MononobeOkabe
+        k (dimensionless; thrust 1/2 gamma (1 - kv) K H^2) and theta (radians).
+
+    Raises :class:`seispulse.NoSolutionError` where no planar wedge is in equilibrium
+    (message says why), :class:`seispulse.InvalidInputError` for bad input.
+    """
+    mode = _core.check_choice("beyond_limit", beyond_limit, ("error", "en1998"))
+    is_passive = _core.check_bool("passive", passive)
+    k, theta, k_e3, stat, msg = sp_mononobe_okabe(
+        _scalar("phi_deg", phi_deg), _scalar("kh", kh), _scalar("kv", kv),
+        _scalar("delta_deg", delta_deg), _scalar("psi_deg", psi_deg),
+        _scalar("beta_deg", beta_deg), int(is_passive), _scalar("gamma_phi", gamma_phi))
+    if stat == 7 and mode == "en1998" and not is_passive and k_e3 > 0.0:
+        return MononobeOkabe(float(k_e3), float(theta))
+    _core.raise_for_status(stat, msg)
+    return MononobeOkabe(float(k), float(theta))
+
+
+def earth_thrust(height, gamma, phi_deg, kh, kv, delta_deg=0.0, psi_deg=90.0, beta_deg=0.0,
+                 water="dry", gamma_w=9.81, gamma_d=None, gamma_phi=1.0):
+    """Active seismic thrust on a yielding wall, EN 1998-5 Annex E (E.1 with the water
+    terms; equation numbers E.5-E.13 not verified).
+
+    Parameters
+    ----------
+    height : float
+        Vertical height H of the back face (m, > 0).
+    gamma : float
+        Unit weight of the soil (kN/m^3, > 0; saturated unit weight below the water table).
+    phi_deg, kh, kv, delta_deg, psi_deg, beta_deg, gamma_phi
+        As in :func:`mononobe_okabe` (kv signed).
+    water : {'dry', 'impervious', 'permeable'}
+        'dry': dry soil or water table below the wall, gamma* = gamma,
+        tan(theta) = kh / (1 - kv).
+        'impervious': dynamically impervious soil, water table at the surface,
+        gamma* = gamma - gamma_w, tan(theta) = gamma / (gamma - gamma_w) kh / (1 - kv),
+        plus the hydrostatic 1/2 gamma_w H^2.
+        'permeable': highly permeable soil, water table at the surface,
+        gamma* = gamma - gamma_w, tan(theta) = gamma_d / (gamma - gamma_w) kh / (1 - kv),
+        plus the hydrostatic thrust and the hydrodynamic 7/12 kh gamma_w H^2 (E.13) at
+        0.4 H.
+    gamma_w : float
+        Unit weight of water (kN/m^3, in (0, gamma) for the water cases).
+    gamma_d : float or None
+        Dry unit weight of the soil (kN/m^3, > 0): required for 'permeable'.
+
+    Returns
+    -------
+    EarthThrust
+        See :class:`EarthThrust` (static part at H/3, dynamic increment at H/2).
+
+    Active thrust only; passive thrusts: :func:`mononobe_okabe` with ``passive=True``.
+    Raises :class:`seispulse.NoSolutionError` when no wedge is in equilibrium.
+    """
+    case = WATER_CASES.index(_core.check_choice("water", water, WATER_CASES)) + 1
+    if case == 3:
+        if gamma_d is None:
+            raise InvalidInputError("gamma_d: the dry unit weight (kN/m^3, > 0) is required "
+                                    "for water='permeable'")
+        gd = _scalar("gamma_d", gamma_d)
+    else:
+        gd = 0.0 if gamma_d is None else _scalar("gamma_d", gamma_d)
+    out, stat, msg = sp_ec8_thrust(
+        _scalar("height", height), _scalar("gamma", gamma), _scalar("phi_deg", phi_deg),
+        _scalar("delta_deg", delta_deg), _scalar("psi_deg", psi_deg),
+        _scalar("beta_deg", beta_deg), _scalar("kh", kh), _scalar("kv", kv), case,
+        _scalar("gamma_w", gamma_w), gd, _scalar("gamma_phi", gamma_phi))
+    _core.raise_for_status(stat, msg, rename={"water_case": "water"})
+    return EarthThrust(*(float(x) for x in out))
+
+
+def westergaard_pressure(kh, gamma_w, h_water, z):
+    """Hydrodynamic pressure of free water on the outer face of a wall (Westergaard,
+    EN 1998-5 E.14, number not verified; UFC 3-220-20 eq. 4-19):
+    q = 7/8 kh gamma_w sqrt(h_water z), magnitude (it acts both ways).
+
+    Parameters
+    ----------
+    kh : float
+        Horizontal seismic coefficient (>= 0).
+    gamma_w : float
+        Unit weight of water (kN/m^3, > 0).
+    h_water : float
+        Water depth at the wall (m, > 0).
+    z : float or array
+        Depth below the free water surface (m, in [0, h_water]).
+
+    Returns
+    -------
+    float or array
+        q (kPa), shaped like ``z``. Its resultant is 7/12 kh gamma_w h_water^2 at
+        0.4 h_water above the base.
+    """
+    arr = _core.as_float_array("z", z)
+    flat = np.ascontiguousarray(arr.reshape(-1))
+    q, stat, msg = sp_westergaard_pressure(_scalar("kh", kh), _scalar("gamma_w", gamma_w),
+                                           _scalar("h_water", h_water), flat)
+    _raise(stat, msg)
+    return float(q[0]) if arr.shape == () else q.reshape(arr.shape)
+
+
+def _wall(fun, name, a, gamma, height):
+    thrust, z, stat, msg = fun(_scalar(name, a), _scalar("gamma", gamma),
+                               _scalar("height", height))
+    _core.raise_for_status(stat, msg)
+    return WallThrust(float(thrust), float(z))
+
+
+def rigid_wall_thrust(alpha_s, gamma, height):
+    """Dynamic thrust on a rigid (completely restrained) wall, EN 1998-5 Annex E rigid
+    structures (clause number not verified): alpha S gamma H^2 at H/2 (vertical wall,
+    horizontal backfill). ``alpha_s`` = ag S / g (no r, >= 0); gamma in kN/m^3; height H
+    in m. Returns :class:`WallThrust` (kN/m, m)."""
+    return _wall(sp_ec8_rigid_thrust, "alpha_s", alpha_s, gamma, height)
+
+
+def seed_whitman(kh, gamma, height):
+    """Seed & Whitman (1970) dynamic increment on a yielding wall as quoted by
+    UFC 3-220-20 eq. 4-17: dK = 3/4 kh, thrust 3/8 kh gamma H^2 at 0.6 H (vertical wall,
+    horizontal backfill; proposed for kh up to about 0.4, not enforced). Returns
+    :class:`WallThrust` (kN/m, m)."""
+    return _wall(sp_seed_whitman_increment, "kh", kh, gamma, height)
+
+
+def wood(kh, gamma, height):
+    """Wood (1973) non-yielding wall as commonly quoted (UFC 3-220-20 eq. 4-18):
+    kh gamma H^2 at 0.6 H, i.e. Wood's F_p = 1. Wood's own F_p depends on Poisson's ratio
+    and on L/H (distance to the next wall): see :mod:`seispulse.walls` for the elastic
+    solutions. ``kh`` is the ground acceleration over g (no r). Returns
+    :class:`WallThrust` (kN/m, m)."""
+    return _wall(sp_wood_thrust, "kh", kh, gamma, height)
+
+
+# ------------------------------------------------------------------ EN 1998-1 spectra
+
+def ground_parameters(spectrum_type, ground):
+    """S, TB, TC, TD (s) of EN 1998-1 Table 3.2 (Type 1) or 3.3 (Type 2) for ground
+    'A'..'E' (recommended values; a National Annex may change them)."""
+    s, tb, tc, td, stat, msg = sp_ec8_ground_parameters(_spectrum_type(spectrum_type),
+                                                        _ground(ground))
+    _core.raise_for_status(stat, msg)
+    return GroundParameters(float(s), float(tb), float(tc), float(td))
+
+
+def damping_correction(xi_percent):
+    """eta = sqrt(10 / (5 + xi)) >= 0.55 (EN 1998-1 (3.6)), xi in percent (>= 0): 1 at
+    5 %, the floor 0.55 from xi = 28.06 %. Float or array like ``xi_percent``."""
+    arr = _core.as_float_array("xi_percent", xi_percent)
+    eta, stat, msg = sp_ec8_damping_correction(np.ascontiguousarray(arr.reshape(-1)))
+    _raise(stat, msg)
+    return float(eta[0]) if arr.shape == () else eta.reshape(arr.shape)
+
+
+def _periods(periods):
+    arr = _core.as_float_array("periods", periods)
+    return arr.shape, np.ascontiguousarray(arr.reshape(-1))
+
+
+def elastic_spectrum(periods, ag, spectrum_type=1, ground="A", xi_percent=5.0):
+    """Horizontal elastic response spectrum Se(T), EN 1998-1 §3.2.2.2 (3.2)-(3.5).
+
+    Parameters
+    ----------
+    periods : float or array
+        T (s, >= 0). EN states the forms up to 4 s; (3.5) is applied beyond.
+    ag : float
+        Design ground acceleration on type A ground (>= 0); Se has its units.
+    spectrum_type : {1, 2}
+        Type 1 (Ms > 5.5) or Type 2.
+    ground : {'A', 'B', 'C', 'D', 'E'}
+        Ground type (Table 3.1); S, TB, TC, TD from :func:`ground_parameters`.
+    xi_percent : float
+        Viscous damping (percent, >= 0); eta of :func:`damping_correction`.
+
+    Returns
+    -------
+    float or array
+        Se, shaped like ``periods``: ag S [1 + T/TB (2.5 eta - 1)] up to TB, 2.5 eta ag S
+        up to TC, times TC/T up to TD, times TC TD / T^2 beyond.
+    """
+    shape, t = _periods(periods)
+    xi = _scalar("xi_percent", xi_percent)
+    se, stat, msg = sp_ec8_elastic_spectrum(t, _scalar("ag", ag), _spectrum_type(spectrum_type),
+                                            _ground(ground), xi)
+    _raise(stat, msg)
+    return float(se[0]) if shape == () else se.reshape(shape)
+
+
+def design_spectrum(periods, ag, spectrum_type=1, ground="A", q=1.5, beta=0.2):
+    """Design spectrum Sd(T) for elastic analysis, EN 1998-1 §3.2.2.5 (3.13)-(3.16).
+
+    Parameters
+    ----------
+    periods : float or array
+        T (s, >= 0).
+    ag : float
+        Design ground acceleration on type A ground (>= 0); Sd has its units.
+    spectrum_type, ground
+        As in :func:`elastic_spectrum`.
+    q : float
+        Behaviour factor (>= 1; the 2/3 ag S at T = 0 presumes q >= 1.5).
+    beta : float
+        Lower-bound factor (>= 0; 0.2 recommended, an NDP): Sd >= beta ag for T >= TC.
+
+    Returns
+    -------
+    float or array
+        Sd, shaped like ``periods``.
+    """
+    shape, t = _periods(periods)
+    sd, stat, msg = sp_ec8_design_spectrum(t, _scalar("ag", ag), _spectrum_type(spectrum_type),
+                                           _ground(ground), _scalar("q", q),
+                                           _scalar("beta", beta))
+    _raise(stat, msg)
+    return float(sd[0]) if shape == () else sd.reshape(shape)
+

@@ -10,7 +10,10 @@ Numbers are compared with a relative tolerance; NaN matches NaN only, an infinit
 same infinity only. A case whose .nml has a comment line "! expect exit status N"
 must end with that status (default 0) and still write its table.
 
-usage: compare.py DRIVER CASE.nml CASE.ref
+An analysis that writes several tables (analysis 'walls') names the one to compare:
+out/*_TABLE.csv.
+
+usage: compare.py DRIVER CASE.nml CASE.ref [TABLE]
 """
 import csv
 import math
@@ -80,6 +83,7 @@ def main():
     # meson may pass the driver relative to the build dir; the run happens elsewhere
     driver = str(Path(sys.argv[1]).resolve())
     case, ref = Path(sys.argv[2]).resolve(), Path(sys.argv[3])
+    pattern = f"out/*_{sys.argv[4]}.csv" if len(sys.argv) > 4 else "out/*.csv"
     ref_header, ref_rows = read_csv(ref)
     texts = text_columns(ref_rows)
     if texts - {0}:
@@ -93,7 +97,7 @@ def main():
             print(f"FAIL driver exited {proc.returncode} (expected {expected_status}): "
                   f"{proc.stderr.strip()}")
             return 1
-        outputs = sorted(Path(scratch).glob("out/*.csv"))
+        outputs = sorted(Path(scratch).glob(pattern))
         if len(outputs) != 1:
             print(f"FAIL expected one CSV table, found {[p.name for p in outputs]}")
             return 1

@@ -1005,6 +1005,206 @@ def make_sdof_ref(nml_path, nml, analysis):
     print(f"wrote {out} ({len(lines) - 1} rows)")
 
 
+
+# ---------------------------------------------------------------------------
+# Analysis 'walls': every row written out in mpmath from the formulas (never by
+# running the driver): Coulomb / Mononobe-Okabe (EN 1998-5 E.1, E.2, the water cases
+# of Annex E), Seed-Whitman, Wood, the EN 1998-5 rigid wall; Veletsos-Younan (walls.md
+# 2.32, 2.34, 2.35 with 1/n^4) summed with the static sums subtracted (lambda(3), beta(4),
+# and the static pressure through dilogarithms); the one-term solution in closed form
+# (Table 2.1 sine; 2.68-2.69 power law; 2.96 rotational spring; 2.105 wall pair).
+# EN 1998-1 Table 3.2/3.3 soil factors and EN 1998-5 Table 7.1 r are transcribed here.
+
+WALLS_HEADER = "method (-),thrust (kN/m),z (m),z/H (-),moment (kNm/m)"
+WALLS_PRESSURE_HEADER = ("depth (m),static (kPa),mo_dyn (kPa),ec8_rigid (kPa),vy (kPa),"
+                         "one_term (kPa)")
+WALL_LABELS = ("static active (Coulomb)", "Mononobe-Okabe total, EN 1998-5 E.1",
+               "Mononobe-Okabe dynamic increment", "Seed-Whitman increment (3/4 kh)",
+               "Wood (1973) rigid wall", "EN 1998-5 rigid wall", "Veletsos-Younan rigid wall",
+               "one-term solution")
+EC8_S = {1: dict(a=1.0, b=1.2, c=1.15, d=1.35, e=1.4), 2: dict(a=1.0, b=1.35, c=1.5, d=1.8, e=1.6)}
+EC8_R = {"gravity_300": 2.0, "gravity_200": 1.5, "restrained": 1.0}
+G_STD = mpf("9.80665")
+
+
+def mo_active_k(phi, delta, psi, beta, theta):
+    """EN 1998-5 E.2 (angles in radians)."""
+    s = mp.sin
+    root = mp.sqrt(s(phi + delta) * s(phi - beta - theta) / (s(psi - theta - delta) * s(psi + beta)))
+    return s(psi + phi - theta) ** 2 / (mp.cos(theta) * s(psi) ** 2 * s(psi - theta - delta)
+                                       * (1 + root) ** 2)
+
+
+def walls_case(nml):
+    w, b, s = nml["wall"], nml["backfill"], nml["seismic"]
+    c = dict(H=mpf(w["height"]), psi=mp.radians(w.get("psi_deg", 90)),
+             wdelta=mp.radians(w.get("wall_friction_deg", 0)), gamma=mpf(b["gamma"]),
+             phi=mp.radians(b["phi_deg"]), beta=mp.radians(b.get("beta_deg", 0)),
+             gphi=mpf(b.get("gamma_phi", 1)), nu=mpf(b.get("nu", 0.3)),
+             water=b.get("water", "dry").lower(), gw=mpf(b.get("gamma_w", 9.81)),
+             gd=mpf(b.get("gamma_d", 0)), n=mpf(b.get("stiffness_exponent", 0)),
+             shape=b.get("shape", "").lower(), npoints=int(s.get("npoints", 21)))
+    c["delta"] = 2 * mpf(b.get("damping_ratio", 0.05)) if "loss_factor" not in b \
+        else mpf(b["loss_factor"])
+    if not c["shape"]:
+        c["shape"] = "sine" if c["n"] == 0 else "power"
+    vs = mpf(b["vs"]) if "vs" in b else (mp.sqrt(mpf(b["g_modulus"]) * G_STD / c["gamma"])
+                                         if "g_modulus" in b else None)
+    f = mpf(b.get("frequency", 0))
+    c["ratio"] = 2 * mp.pi * f / (mp.pi * vs / (2 * c["H"])) if f > 0 else mpf(0)
+    c["d_theta"] = mpf(w.get("d_theta", 0))
+    if "k_rotation" in w:
+        g_base = c["gamma"] / G_STD * vs ** 2 if "vs" in b else mpf(b["g_modulus"])
+        c["d_theta"] = c["H"] ** 2 * g_base / mpf(w["k_rotation"])
+    c["l_over_h"] = mpf(w["spacing"]) / c["H"] if "spacing" in w else mp.inf
+    if s["code"].lower() == "ec8":
+        typ = int(s.get("spectrum_type", 1))
+        alpha = mpf(s.get("importance", 1)) * mpf(s["agr"])
+        S = mpf(s["soil_factor"]) if "soil_factor" in s else mpf(EC8_S[typ][s["ground"].lower()])
+        r = mpf(s["r"]) if "r" in s else mpf(EC8_R[s.get("wall_type", "restrained").lower()])
+        c["kh"] = alpha * S / r
+        c["kv"] = c["kh"] * (mpf("0.5") if typ == 1 else mpf("0.33"))
+        c["alpha_s"] = alpha * S
+    else:
+        c["kh"] = mpf(s["kh"])
+        c["kv"] = abs(mpf(s.get("kv", 0)))
+        c["alpha_s"] = mpf(s.get("alpha_s", s["kh"]))
+    return c
+
+
+def mo_thrust(c, kv):
+    """EN 1998-5 thrust (active, signed kv): static, dynamic increment, water terms."""
+    H, g, gw, kh = c["H"], c["gamma"], c["gw"], c["kh"]
+    phi = mp.atan(mp.tan(c["phi"]) / c["gphi"])
+    dl = mp.atan(mp.tan(c["wdelta"]) / c["gphi"])
+    if c["water"] == "dry":
+        gs, ratio, ews, ewd = g, mpf(1), mpf(0), mpf(0)
+    elif c["water"] == "impervious":
+        gs, ratio, ews, ewd = g - gw, g / (g - gw), gw * H ** 2 / 2, mpf(0)
+    else:
+        gs, ratio = g - gw, c["gd"] / (g - gw)
+        ews, ewd = gw * H ** 2 / 2, mpf(7) / 12 * kh * gw * H ** 2
+    theta = mp.atan(ratio * kh / (1 - kv))
+    K = mo_active_k(phi, dl, c["psi"], c["beta"], theta)
+    K0 = mo_active_k(phi, dl, c["psi"], c["beta"], mpf(0))
+    e_st = gs * K0 * H ** 2 / 2
+    e_d = gs * (1 - kv) * K * H ** 2 / 2
+    total = e_d + ews + ewd
+    mom = e_st * H / 3 + (e_d - e_st) * H / 2 + ews * H / 3 + ewd * H * mpf("0.4")
+    return dict(e_st=e_st, e_dyn=e_d - e_st, total=total, z_total=mom / total, K0=K0, gs=gs)
+
+
+def vy_sums(ratio, delta, y=None, terms=20000):
+    """Veletsos-Younan sums with the static parts in closed form: (sum r_n/n^3,
+    sum (-1)^k r_n/n^4) or, with y, sum r_n sin(n pi y/2)/n^2."""
+    lam3 = mpf(7) / 8 * mp.zeta(3)
+    beta4 = (mp.zeta(4, mpf(1) / 4) - mp.zeta(4, mpf(3) / 4)) / 256
+    if y is not None:
+        t = mp.pi * y / 2
+        z = mp.expj(t)
+        total = mp.im(mp.polylog(2, z) - mp.polylog(2, z ** 2) / 4)
+    else:
+        total_q, total_m = lam3, beta4
+    for k in range(terms):
+        n = 2 * k + 1
+        if ratio == 0:
+            break
+        zn = (ratio / n) ** 2 / (1 + 1j * delta)
+        arg = 1 - zn
+        root = mp.sqrt(arg) if (mp.im(arg) > 0 or mp.re(arg) >= 0) else 1j * mp.sqrt(-mp.re(arg))
+        rn1 = 1 / root - 1
+        if y is not None:
+            total += rn1 * mp.sin(n * t) / n ** 2
+        else:
+            total_q += rn1 / n ** 3
+            total_m += (-1) ** k * rn1 / n ** 4
+    if y is not None:
+        return total
+    if ratio != 0:     # leading tail: r_n - 1 ~ z_n/2, sum over odd n > 2 terms of 1/n^5
+        n0 = 2 * terms + 1
+        tail5 = (ratio ** 2 / (2 * (1 + 1j * delta))) * mp.zeta(5, mpf(n0) / 2) / 32
+        total_q += tail5
+    return total_q, total_m
+
+
+def one_term_consts(shape, n):
+    if shape == "sine":
+        return dict(aoc2=mp.pi ** 2 / 4, lf=4 / mp.pi, mf=mpf(1), s0=2 / mp.pi, h=2 / mp.pi)
+    if shape == "linear":
+        return dict(aoc2=mpf(3), lf=mpf(3) / 2, mf=mpf(1), s0=mpf(1) / 2, h=mpf(2) / 3)
+    if shape == "parabolic":
+        n = mpf(0)
+    aoc2 = mpf(3) / 2 * (5 - n) * (1 + n) / (3 - n)
+    return dict(aoc2=aoc2, lf=aoc2 / (2 - n), mf=2 * aoc2 / (5 - 2 * n),
+                s0=(2 - n) / (3 * (1 + n)), h=(5 + n) / (4 * (2 + n)))
+
+
+def one_term_q(c):
+    """|q| (rho Xg H^2), h/H and the complex factor p(y) = factor g(y) Phi(y)."""
+    k = one_term_consts(c["shape"], c["n"])
+    psi_e = mp.sqrt((2 - c["nu"]) / (1 - c["nu"]))
+    psi_s = 2 / mp.sqrt((1 - c["nu"]) * (2 - c["nu"]))
+    a0 = mp.pi / 2 * c["ratio"]
+    s = mp.sqrt(k["aoc2"] - a0 ** 2 * k["mf"] / (1 + 1j * c["delta"]))
+    factor = psi_s * k["lf"] / s
+    if c["d_theta"] > 0:
+        factor /= 1 + psi_s * s * k["s0"] * k["h"] * (1 + 1j * c["delta"]) * c["d_theta"]
+    if c["l_over_h"] != mp.inf:
+        factor *= mp.tanh(s * c["l_over_h"] / psi_e / 2)
+    return abs(factor * k["s0"]), k["h"], factor
+
+
+def one_term_shape_value(c, y):
+    if c["shape"] == "sine":
+        return mp.sin(mp.pi * y / 2)
+    if c["shape"] == "linear":
+        return y
+    n = mpf(0) if c["shape"] == "parabolic" else c["n"]
+    return (1 - y) ** n * (1 - (1 - y) ** (2 - n))
+
+
+def walls_rows(nml):
+    c = walls_case(nml)
+    H, g = c["H"], c["gamma"]
+    mo = mo_thrust(c, c["kv"])
+    if c["kv"] != 0:
+        other = mo_thrust(c, -c["kv"])
+        if other["total"] > mo["total"]:
+            mo = other
+    psi_s = 2 / mp.sqrt((1 - c["nu"]) * (2 - c["nu"]))
+    scale = g * c["alpha_s"] * H ** 2
+    sq, sm = vy_sums(c["ratio"], c["delta"])
+    q_vy = 16 * psi_s / mp.pi ** 3 * sq
+    m_vy = 32 * psi_s / mp.pi ** 4 * sm
+    q_ot, h_ot, factor = one_term_q(c)
+    rows = [(mo["e_st"], H / 3), (mo["total"], mo["z_total"]), (mo["e_dyn"], H / 2),
+            (mpf(3) / 8 * c["kh"] * g * H ** 2, mpf("0.6") * H),
+            (c["alpha_s"] * g * H ** 2, mpf("0.6") * H), (c["alpha_s"] * g * H ** 2, H / 2),
+            (abs(q_vy) * scale, abs(m_vy) / abs(q_vy) * H), (q_ot * scale, h_ot * H)]
+    table = [(WALL_LABELS[i], p, z, z / H, p * z) for i, (p, z) in enumerate(rows)]
+    depths = [H * i / (c["npoints"] - 1) for i in range(c["npoints"])]
+    pres = []
+    for d in depths:
+        y = 1 - d / H
+        p_vy = 8 * psi_s / mp.pi ** 2 * vy_sums(c["ratio"], c["delta"], y=y)
+        pres.append((d, 2 * mo["e_st"] / H ** 2 * d, mo["e_dyn"] / H, c["alpha_s"] * g * H,
+                     abs(p_vy) * g * c["alpha_s"] * H,
+                     abs(factor * one_term_shape_value(c, y)) * g * c["alpha_s"] * H))
+    return table, pres
+
+
+def make_walls_ref(nml_path, nml):
+    with mp.workdps(30):
+        table, pres = walls_rows(nml)
+        main = [WALLS_HEADER] + [",".join(csv_cell(x) for x in row) for row in table]
+        prof = [WALLS_PRESSURE_HEADER] + [",".join(csv_cell(x) for x in row) for row in pres]
+    out = Path(nml_path).with_suffix(".ref")
+    out.write_text("\n".join(main) + "\n")
+    out2 = Path(nml_path).with_suffix(".pressure.ref")
+    out2.write_text("\n".join(prof) + "\n")
+    print(f"wrote {out} ({len(main) - 1} rows) and {out2} ({len(prof) - 1} rows)")
+
+
 def make_ref(nml_path):
     nml = parse_namelist(Path(nml_path).read_text())
     analysis = nml.get("run", {}).get("analysis", "pulse").lower()
@@ -1019,6 +1219,9 @@ def make_ref(nml_path):
         return
     if analysis == "rocking":
         make_rocking_ref(nml_path, nml)
+        return
+    if analysis == "walls":
+        make_walls_ref(nml_path, nml)
         return
     func, g = pulse_function(nml["pulse"])
     lines = [HEADER]
