@@ -1,24 +1,30 @@
 !> Thin f2py layer of seispulse_wall_table (the comparison table of one wall): the case
 !> arrives as plain scalars, in the order of wall_case_t.
 
-!> Build a wall_case_t from the scalars of the wrappers below.
-subroutine sp_wall_case(height, gamma, phi_deg, wall_friction_deg, psi_deg, beta_deg, gamma_phi, &
-                        water, gamma_w, gamma_d, kh, kv, alpha_s, nu, delta, omega_ratio, shape, &
-                        expo, d_theta, l_over_h, c)
+!> The case of the wrappers below, built from plain scalars in one place.
+module wrap_wall_case
     use seispulse_kinds, only: dp
     use seispulse_wall_table, only: wall_case_t
     implicit none
-    real(dp), intent(in) :: height, gamma, phi_deg, wall_friction_deg, psi_deg, beta_deg, &
-                            gamma_phi, gamma_w, gamma_d, kh, kv, alpha_s, nu, delta, omega_ratio, &
-                            expo, d_theta, l_over_h
-    integer, intent(in) :: water, shape
-    type(wall_case_t), intent(out) :: c
-    c = wall_case_t(height=height, gamma=gamma, phi_deg=phi_deg, &
-                    wall_friction_deg=wall_friction_deg, psi_deg=psi_deg, beta_deg=beta_deg, &
-                    gamma_phi=gamma_phi, water=water, gamma_w=gamma_w, gamma_d=gamma_d, kh=kh, &
-                    kv=kv, alpha_s=alpha_s, nu=nu, delta=delta, omega_ratio=omega_ratio, &
-                    shape=shape, n=expo, d_theta=d_theta, l_over_h=l_over_h)
-end subroutine sp_wall_case
+    private
+    public :: sp_wall_case
+contains
+    !> Build a wall_case_t from the scalars of the wrappers.
+    subroutine sp_wall_case(height, gamma, phi_deg, wall_friction_deg, psi_deg, beta_deg, &
+                            gamma_phi, water, gamma_w, gamma_d, kh, kv, alpha_s, nu, delta, &
+                            omega_ratio, shape, expo, d_theta, l_over_h, c)
+        real(dp), intent(in) :: height, gamma, phi_deg, wall_friction_deg, psi_deg, beta_deg, &
+                                gamma_phi, gamma_w, gamma_d, kh, kv, alpha_s, nu, delta, &
+                                omega_ratio, expo, d_theta, l_over_h
+        integer, intent(in) :: water, shape
+        type(wall_case_t), intent(out) :: c
+        c = wall_case_t(height=height, gamma=gamma, phi_deg=phi_deg, &
+                        wall_friction_deg=wall_friction_deg, psi_deg=psi_deg, beta_deg=beta_deg, &
+                        gamma_phi=gamma_phi, water=water, gamma_w=gamma_w, gamma_d=gamma_d, kh=kh, &
+                        kv=kv, alpha_s=alpha_s, nu=nu, delta=delta, omega_ratio=omega_ratio, &
+                        shape=shape, n=expo, d_theta=d_theta, l_over_h=l_over_h)
+    end subroutine sp_wall_case
+end module wrap_wall_case
 
 !> The comparison rows (thrust kN/m, z m, moment kNm/m) and the signed kv used.
 subroutine sp_wall_comparison(height, gamma, phi_deg, wall_friction_deg, psi_deg, beta_deg, &
@@ -27,6 +33,7 @@ subroutine sp_wall_comparison(height, gamma, phi_deg, wall_friction_deg, psi_deg
                               kv_used, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_wall_table, only: wall_case_t, wall_comparison, WALL_ROWS
+    use wrap_wall_case, only: sp_wall_case
     implicit none
     real(dp), intent(in) :: height, gamma, phi_deg, wall_friction_deg, psi_deg, beta_deg, &
                             gamma_phi, gamma_w, gamma_d, kh, kv, alpha_s, nu, delta, omega_ratio, &
@@ -36,18 +43,6 @@ subroutine sp_wall_comparison(height, gamma, phi_deg, wall_friction_deg, psi_deg
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg
     type(wall_case_t) :: c
-    interface
-        subroutine sp_wall_case(height, gamma, phi_deg, wall_friction_deg, psi_deg, beta_deg, &
-                                gamma_phi, water, gamma_w, gamma_d, kh, kv, alpha_s, nu, delta, &
-                                omega_ratio, shape, expo, d_theta, l_over_h, c)
-            import :: dp, wall_case_t
-            real(dp), intent(in) :: height, gamma, phi_deg, wall_friction_deg, psi_deg, &
-                                    beta_deg, gamma_phi, gamma_w, gamma_d, kh, kv, alpha_s, nu, &
-                                    delta, omega_ratio, expo, d_theta, l_over_h
-            integer, intent(in) :: water, shape
-            type(wall_case_t), intent(out) :: c
-        end subroutine sp_wall_case
-    end interface
     errmsg = ''
     call sp_wall_case(height, gamma, phi_deg, wall_friction_deg, psi_deg, beta_deg, gamma_phi, &
                       water, gamma_w, gamma_d, kh, kv, alpha_s, nu, delta, omega_ratio, shape, &
@@ -62,6 +57,7 @@ subroutine sp_wall_pressure(height, gamma, phi_deg, wall_friction_deg, psi_deg, 
                             errmsg)
     use seispulse_kinds, only: dp
     use seispulse_wall_table, only: wall_case_t, wall_pressure_profile, WALL_PROFILE_COLUMNS
+    use wrap_wall_case, only: sp_wall_case
     implicit none
     real(dp), intent(in) :: height, gamma, phi_deg, wall_friction_deg, psi_deg, beta_deg, &
                             gamma_phi, gamma_w, gamma_d, kh, kv, alpha_s, nu, delta, omega_ratio, &
@@ -72,18 +68,6 @@ subroutine sp_wall_pressure(height, gamma, phi_deg, wall_friction_deg, psi_deg, 
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg
     type(wall_case_t) :: c
-    interface
-        subroutine sp_wall_case(height, gamma, phi_deg, wall_friction_deg, psi_deg, beta_deg, &
-                                gamma_phi, water, gamma_w, gamma_d, kh, kv, alpha_s, nu, delta, &
-                                omega_ratio, shape, expo, d_theta, l_over_h, c)
-            import :: dp, wall_case_t
-            real(dp), intent(in) :: height, gamma, phi_deg, wall_friction_deg, psi_deg, &
-                                    beta_deg, gamma_phi, gamma_w, gamma_d, kh, kv, alpha_s, nu, &
-                                    delta, omega_ratio, expo, d_theta, l_over_h
-            integer, intent(in) :: water, shape
-            type(wall_case_t), intent(out) :: c
-        end subroutine sp_wall_case
-    end interface
     errmsg = ''
     call sp_wall_case(height, gamma, phi_deg, wall_friction_deg, psi_deg, beta_deg, gamma_phi, &
                       water, gamma_w, gamma_d, kh, kv, alpha_s, nu, delta, omega_ratio, shape, &
