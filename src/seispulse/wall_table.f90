@@ -28,7 +28,7 @@ module seispulse_wall_table
 
     !> Rows of the comparison, in this order.
     integer, parameter :: ROW_STATIC = 1        !! static active thrust (Coulomb, kh = kv = 0)
-    integer, parameter :: ROW_MO_TOTAL = 2      !! EN 1998-5 E.1 total (soil + water), critical sign of kv
+    integer, parameter :: ROW_MO_TOTAL = 2      !! EN 1998-5 E.1 total (soil + water), critical kv
     integer, parameter :: ROW_MO_INCREMENT = 3  !! its dynamic soil increment
     integer, parameter :: ROW_SEED_WHITMAN = 4  !! Seed & Whitman (1970) increment, 3/8 kh gamma H^2
     integer, parameter :: ROW_WOOD = 5          !! Wood (1973) rigid wall, alpha_s gamma H^2
@@ -48,21 +48,21 @@ module seispulse_wall_table
         real(dp) :: gamma = 0.0_dp             !! unit weight of the backfill, kN/m3 (> 0)
         real(dp) :: phi_deg = 0.0_dp           !! friction angle phi', degrees, (0, 90)
         real(dp) :: wall_friction_deg = 0.0_dp !! soil-wall friction angle delta, degrees
-        real(dp) :: psi_deg = 90.0_dp          !! back face to the horizontal, degrees (90 = vertical)
+        real(dp) :: psi_deg = 90.0_dp          !! back face to the horizontal, deg (90 = vertical)
         real(dp) :: beta_deg = 0.0_dp          !! backfill slope, degrees
         real(dp) :: gamma_phi = 1.0_dp         !! partial factor on tan(phi') and tan(delta)
         integer :: water = WATER_DRY           !! EN 1998-5 water case (seispulse_codes WATER_*)
         real(dp) :: gamma_w = 9.81_dp          !! unit weight of water, kN/m3
         real(dp) :: gamma_d = 0.0_dp           !! dry unit weight (permeable case), kN/m3
         real(dp) :: kh = 0.0_dp                !! horizontal seismic coefficient (yielding rows)
-        real(dp) :: kv = 0.0_dp                !! vertical coefficient magnitude; both signs are checked
-        real(dp) :: alpha_s = 0.0_dp           !! ag S/g, ground acceleration of the non-yielding rows
+        real(dp) :: kv = 0.0_dp                !! |kv|, vertical coefficient; both signs checked
+        real(dp) :: alpha_s = 0.0_dp           !! ag S/g, acceleration of the non-yielding rows
         real(dp) :: nu = 0.3_dp                !! Poisson's ratio of the soil, [0, 0.5)
         real(dp) :: delta = 0.1_dp             !! loss factor of the soil, G* = G(1 + i delta)
-        real(dp) :: omega_ratio = 0.0_dp       !! omega/omega_ref of the elastic rows (0: pseudo-static)
-        integer :: shape = 0                   !! one-term shape (SHAPE_*; 0: sine if n = 0, else power)
+        real(dp) :: omega_ratio = 0.0_dp       !! omega/omega_ref, elastic rows (0: pseudo-static)
+        integer :: shape = 0                   !! SHAPE_*; 0: sine if n = 0, else power
         real(dp) :: n = 0.0_dp                 !! stiffness exponent, G = G_H (depth/H)^n
-        real(dp) :: d_theta = 0.0_dp           !! rotational base flexibility H^2 G_H/K_R (one-term row)
+        real(dp) :: d_theta = 0.0_dp           !! base flexibility H^2 G_H/K_R (one-term row)
         real(dp) :: l_over_h = huge(1.0_dp)    !! distance to a second wall over H (one-term row)
     end type wall_case_t
 
@@ -159,7 +159,7 @@ contains
     subroutine wall_pressure_profile(c, depth, p, stat, errmsg)
         type(wall_case_t), intent(in) :: c                  !! the wall
         real(dp), intent(in) :: depth(:)                    !! depth below the top, m, in [0, H]
-        real(dp), intent(out) :: p(:, :)                    !! size(depth) x WALL_PROFILE_COLUMNS, kPa
+        real(dp), intent(out) :: p(:, :)                    !! size(depth) x 5, kPa
         integer, intent(out) :: stat                        !! SEISPULSE_* status
         character(len=*), intent(inout), optional :: errmsg !! message naming the parameter
         type(ec8_thrust_t) :: mo
@@ -190,7 +190,8 @@ contains
         p(:, 3) = c%alpha_s*c%gamma*c%height
         scale = c%gamma*c%alpha_s*c%height
         allocate(y(size(depth)), pc(size(depth)))
-        y = min(max(1.0_dp - depth/c%height, 0.0_dp), 1.0_dp)   ! the solutions measure y up from the base
+        ! the solutions measure y up from the base
+        y = min(max(1.0_dp - depth/c%height, 0.0_dp), 1.0_dp)
         call vy_pressure(c%omega_ratio, c%delta, c%nu, y, vy_table_tol, pc, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         p(:, 4) = abs(pc)*scale
@@ -230,8 +231,8 @@ contains
         character(len=*), intent(inout), optional :: errmsg
         stat = SEISPULSE_SUCCESS
         if (outside(c%height, 0.0_dp, huge(1.0_dp), .true., .false.)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'height = '//real_str(c%height)// &
-                           ': the wall height H (m) must be finite and > 0')
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'height = '// &
+                           real_str(c%height)//': the wall height H (m) must be finite and > 0')
         else if (outside(c%gamma, 0.0_dp, huge(1.0_dp), .true., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'gamma = '//real_str(c%gamma)// &
                            ': the unit weight (kN/m3) must be finite and > 0')
