@@ -440,6 +440,9 @@ contains
         call wall_comparison(c, thrust, z, moment, kv_used, st, msg)
         if (st /= SEISPULSE_SUCCESS) then
             errmsg = path//': '//trim(msg)
+            ! a resonance comes from &backfill frequency; a missing active wedge from beta
+            if (index(msg, 'omega_ratio') == 1) errmsg = located(path, gb)//'frequency = ' &
+                //real_str(frequency)//' Hz: '//trim(msg)
             return
         end if
         allocate(depth(npoints), p(npoints, WALL_PROFILE_COLUMNS))

@@ -66,6 +66,27 @@ module seispulse
                                     pulse_peak_accel, BETA_HYSTERETIC, BETA_VISCOUS, &
                                     HARMONIC_SINE, HARMONIC_COSINE, BETA_PULSE_TEXTBOOK, &
                                     BETA_PULSE_EXACT
+    use seispulse_walls_common, only: wall_psi_t, wall_psi, free_field_frequencies
+    use seispulse_walls_vy, only: vy_default_tol, vy_min_tol, vy_max_tol, vy_max_omega_ratio, &
+                                  vy_rigid, vy_rigid_sweep, vy_pressure, vy_fields
+    use seispulse_walls_one_term, only: SHAPE_LINEAR, SHAPE_SINE, SHAPE_PARABOLIC, SHAPE_POWER, &
+                                        one_term_shape_t, one_term_t, one_term_shape, one_term, &
+                                        one_term_sweep, one_term_pressure, one_term_displacement, &
+                                        power_law_fundamental, power_law_cutoff, &
+                                        winkler_one_term, winkler_dashpot, winkler_scott, &
+                                        winkler_vy
+    use seispulse_codes, only: ec8_seismic_coefficients, ec8_vertical_ratio, ec8_r_factor, &
+                               mononobe_okabe, ec8_thrust_t, ec8_thrust, westergaard_pressure, &
+                               ec8_rigid_thrust, seed_whitman_increment, wood_thrust, &
+                               ec8_ground_parameters, ec8_damping_correction, ec8_check_damping, &
+                               ec8_elastic_spectrum, ec8_design_spectrum, EC8_WALL_GRAVITY_300, &
+                               EC8_WALL_GRAVITY_200, EC8_WALL_RESTRAINED, WATER_DRY, &
+                               WATER_IMPERVIOUS, WATER_PERMEABLE, EC8_SPECTRUM_TYPE_1, &
+                               EC8_SPECTRUM_TYPE_2, EC8_GROUND_A, EC8_GROUND_B, EC8_GROUND_C, &
+                               EC8_GROUND_D, EC8_GROUND_E
+    use seispulse_wall_table, only: wall_case_t, wall_case_default, wall_comparison, &
+                                    wall_pressure_profile, wall_row_label, WALL_ROWS, &
+                                    WALL_PROFILE_COLUMNS
     implicit none
     public
 
