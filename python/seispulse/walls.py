@@ -120,20 +120,16 @@ def comparison(height, gamma, phi_deg, kh, kv=0.0, alpha_s=None, *, wall_frictio
     return Comparison(COMPARISON_ROWS, thrust.copy(), z.copy(), moment.copy(), float(kv_used))
 
 
-def pressure_profile(depth, height, gamma, phi_deg, kh, kv=0.0, alpha_s=None, **kwargs):
-    """Pressures on the wall against depth below the top; arguments as :func:`comparison`
-    (``depth`` in m, within [0, height]). Returns :class:`PressureProfile` (kPa)."""
+def pressure_profile(depth, height, gamma, phi_deg, kh, kv=0.0, alpha_s=None, *,
+                     wall_friction_deg=0.0, psi_deg=90.0, beta_deg=0.0, gamma_phi=1.0,
+                     water="dry", gamma_w=9.81, gamma_d=None, nu=0.3, delta=0.1,
+                     omega_ratio=0.0, shape=None, n=0.0, d_theta=0.0, l_over_h=np.inf):
+    """Pressures on the wall against ``depth`` below the top (m, within [0, height]);
+    the other arguments as :func:`comparison`. Returns :class:`PressureProfile` (kPa)."""
     depth = np.ascontiguousarray(_core.as_float_array("depth", depth).reshape(-1))
-    keys = ("wall_friction_deg", "psi_deg", "beta_deg", "gamma_phi", "water", "gamma_w",
-            "gamma_d", "nu", "delta", "omega_ratio", "shape", "n", "d_theta", "l_over_h")
-    unknown = set(kwargs) - set(keys)
-    if unknown:
-        raise TypeError(f"pressure_profile: unknown argument(s) {sorted(unknown)}")
-    defaults = dict(wall_friction_deg=0.0, psi_deg=90.0, beta_deg=0.0, gamma_phi=1.0,
-                    water="dry", gamma_w=9.81, gamma_d=None, nu=0.3, delta=0.1,
-                    omega_ratio=0.0, shape=None, n=0.0, d_theta=0.0, l_over_h=np.inf)
-    defaults.update(kwargs)
-    args = _case(height, gamma, phi_deg, kh, kv, alpha_s, *(defaults[k] for k in keys))
+    args = _case(height, gamma, phi_deg, kh, kv, alpha_s, wall_friction_deg, psi_deg, beta_deg,
+                 gamma_phi, water, gamma_w, gamma_d, nu, delta, omega_ratio, shape, n, d_theta,
+                 l_over_h)
     p, stat, msg = sp_wall_pressure(*args, depth)
     _core.raise_for_status(stat, msg)
     return PressureProfile(depth, *(p[:, j].copy() for j in range(5)))

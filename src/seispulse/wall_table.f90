@@ -63,7 +63,9 @@ module seispulse_wall_table
         integer :: shape = 0                   !! SHAPE_*; 0: sine if n = 0, else power
         real(dp) :: n = 0.0_dp                 !! stiffness exponent, G = G_H (depth/H)^n
         real(dp) :: d_theta = 0.0_dp           !! base flexibility H^2 G_H/K_R (one-term row)
-        real(dp) :: l_over_h = huge(1.0_dp)    !! distance to a second wall over H (one-term row)
+        !> distance to a second wall over H (one-term row); a single wall is +Infinity, which
+        !> a default initializer cannot write: start from wall_case_default()
+        real(dp) :: l_over_h = huge(1.0_dp)
     end type wall_case_t
 
 contains

@@ -21,11 +21,12 @@ module seispulse_walls_common
 
     !> Compressibility factors of walls.md §1 (dimensionless).
     type :: wall_psi_t
-        real(dp) :: e = 0.0_dp      !! psi_e = sqrt((2 - nu)/(1 - nu)), x-decay of the reduced wave equation (2.10)
-        real(dp) :: o = 0.0_dp      !! psi_o = sqrt(2/(1 - nu)), sigma_x = psi_o^2 G* du/dx (after 2.47)
-        real(dp) :: sigma = 0.0_dp  !! psi_sigma = psi_o^2/psi_e = 2/sqrt((1 - nu)(2 - nu)): wall stresses, thrust, moment
-        real(dp) :: v = 0.0_dp      !! psi_v = nu/sqrt((1 - nu)(2 - nu)): vertical displacement (2.31)
-        real(dp) :: t = 0.0_dp      !! psi_t = sqrt(2(1 - nu)/(1 - 2 nu)): the Matsuo-Ohara/Tajimi (v = 0) factor
+        real(dp) :: e = 0.0_dp      !! psi_e = sqrt((2 - nu)/(1 - nu)): decay along x (2.10)
+        real(dp) :: o = 0.0_dp      !! psi_o = sqrt(2/(1 - nu)): sigma_x = psi_o^2 G* du/dx
+        !> psi_sigma = psi_o^2/psi_e = 2/sqrt((1 - nu)(2 - nu)): wall stresses, thrust, moment
+        real(dp) :: sigma = 0.0_dp
+        real(dp) :: v = 0.0_dp      !! psi_v = nu/sqrt((1 - nu)(2 - nu)): v (2.31)
+        real(dp) :: t = 0.0_dp      !! psi_t = sqrt(2(1 - nu)/(1 - 2 nu)): Matsuo-Ohara (v = 0)
     end type wall_psi_t
 
 contains
@@ -33,7 +34,7 @@ contains
     !> nu must lie in [0, 0.5): the message names `nu` and the range.
     pure subroutine check_nu(nu, stat, errmsg)
         real(dp), intent(in) :: nu                         !! Poisson's ratio of the soil
-        integer, intent(out) :: stat                       !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
+        integer, intent(out) :: stat !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
         character(len=*), intent(inout), optional :: errmsg !! "nu: ..." on error
         stat = SEISPULSE_SUCCESS
         if (outside(nu, 0.0_dp, 0.5_dp, .false., .true.)) &
@@ -44,7 +45,7 @@ contains
     !> delta must be finite and >= 0 (a loss factor; G* = G(1 + i delta)).
     pure subroutine check_delta(delta, stat, errmsg)
         real(dp), intent(in) :: delta                      !! soil loss factor
-        integer, intent(out) :: stat                       !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
+        integer, intent(out) :: stat !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
         character(len=*), intent(inout), optional :: errmsg !! "delta: ..." on error
         stat = SEISPULSE_SUCCESS
         if (outside(delta, 0.0_dp, huge(1.0_dp), .false., .false.)) &
@@ -56,7 +57,7 @@ contains
     !> must be finite and >= 0.
     pure subroutine check_omega_ratio(omega_ratio, stat, errmsg)
         real(dp), intent(in) :: omega_ratio                !! excitation over reference frequency
-        integer, intent(out) :: stat                       !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
+        integer, intent(out) :: stat !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
         character(len=*), intent(inout), optional :: errmsg !! "omega_ratio: ..." on error
         stat = SEISPULSE_SUCCESS
         if (outside(omega_ratio, 0.0_dp, huge(1.0_dp), .false., .false.)) &
@@ -80,7 +81,7 @@ contains
     pure subroutine wall_psi(nu, psi, stat, errmsg)
         real(dp), intent(in) :: nu                         !! Poisson's ratio, 0 <= nu < 0.5
         type(wall_psi_t), intent(out) :: psi               !! the five factors
-        integer, intent(out) :: stat                       !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
+        integer, intent(out) :: stat !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
         character(len=*), intent(inout), optional :: errmsg !! message on error
         call check_nu(nu, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
@@ -96,8 +97,8 @@ contains
     pure subroutine free_field_frequencies(height, vs, omegas, stat, errmsg)
         real(dp), intent(in) :: height                     !! layer (wall) height H, m, > 0
         real(dp), intent(in) :: vs                         !! shear-wave velocity Vs, m/s, > 0
-        real(dp), intent(out) :: omegas(:)                 !! omega_1, omega_3/3 ... : (2k - 1) pi Vs/(2H), rad/s
-        integer, intent(out) :: stat                       !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
+        real(dp), intent(out) :: omegas(:) !! omega_1, omega_3/3 ... : (2k - 1) pi Vs/(2H), rad/s
+        integer, intent(out) :: stat !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
         character(len=*), intent(inout), optional :: errmsg !! message on error
         integer :: k
         omegas = 0.0_dp

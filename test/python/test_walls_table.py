@@ -69,17 +69,22 @@ def test_alpha_s_defaults_to_kh_and_elastic_rows_follow_the_routines():
 def test_pressure_profile_resultants():
     H, gamma, kh = 8.0, 19.0, 0.25
     depth = np.linspace(0.0, H, 4001)
-    pr = walls.pressure_profile(depth, H, gamma, 32.0, kh, 0.1, 0.3, omega_ratio=0.6)
-    t = walls.comparison(H, gamma, 32.0, kh, 0.1, 0.3, omega_ratio=0.6)
     w = np.full(depth.size, depth[1] - depth[0])
-    w[[0, -1]] /= 2                                     # trapezoid
+    w[[0, -1]] /= 2                                     # trapezoid: error ~ h^2 log h, < 1e-7
+    # static: every pressure is real and positive, so each column integrates to its thrust
+    pr = walls.pressure_profile(depth, H, gamma, 32.0, kh, 0.1, 0.3)
+    t = walls.comparison(H, gamma, 32.0, kh, 0.1, 0.3)
     np.testing.assert_allclose(w @ pr.static, t.thrust[0], rtol=1e-12)
     np.testing.assert_allclose(w @ pr.mo_dynamic, t.thrust[2], rtol=1e-12)
     np.testing.assert_allclose(w @ pr.ec8_rigid, t.thrust[5], rtol=1e-12)
-    # |p| integrates to at least |Q| (equal when the pressure is in phase along the wall)
-    assert w @ pr.vy >= t.thrust[6] * (1 - 1e-6)
-    np.testing.assert_allclose(w @ pr.vy, t.thrust[6], rtol=2e-3)
-    np.testing.assert_allclose(w @ pr.one_term, t.thrust[7], rtol=1e-6)   # one phase: exact
+    np.testing.assert_allclose(w @ pr.vy, t.thrust[6], rtol=2e-7)
+    np.testing.assert_allclose(w @ pr.one_term, t.thrust[7], rtol=2e-7)
+    # dynamic: the one-term pressure keeps one phase along the wall (exact again); the
+    # Veletsos-Younan phase varies with depth, so |p| integrates to more than |Q|
+    pr = walls.pressure_profile(depth, H, gamma, 32.0, kh, 0.1, 0.3, omega_ratio=0.6)
+    t = walls.comparison(H, gamma, 32.0, kh, 0.1, 0.3, omega_ratio=0.6)
+    np.testing.assert_allclose(w @ pr.one_term, t.thrust[7], rtol=2e-7)
+    assert w @ pr.vy > t.thrust[6] * (1 + 1e-6)
     assert pr.vy[0] > 0 and pr.vy[-1] == 0.0 and pr.one_term[-1] == 0.0
 
 
@@ -171,20 +176,12 @@ def case(**groups):
           seismic="code = 'direct', kh = 0.3"), r"beta"),
     (dict(backfill="gamma = 20.0, phi_deg = 30.0, water = 'permeable'"), r"gamma_d: missing"),
     (dict(backfill="gamma = 20.0, phi_deg = 30.0, damping = 0.05"), r"damping"),
+    # undamped, at omega_1 = pi Vs/(2H) exactly (2 pi f = pi 100/12): a resonance
     (dict(backfill="gamma = 20.0, phi_deg = 30.0, loss_factor = 0.0, vs = 100.0, "
-                   "frequency = 4.166666666666667"), None),
+                   "frequency = 4.166666666666667"), r"&backfill: frequency = .*resonance"),
 ])
 def test_driver_errors_one_line_exit_2_no_output(driver, tmp_path, groups, pattern):
     proc = run(driver, tmp_path, case(**groups))
-    if pattern is None:
-        # undamped, exactly at omega_1 = pi Vs/(2H): 2 pi f = pi 100/12 (to rounding) is
-        # either refused as a resonance or finite; never inf or NaN in the table
-        if proc.returncode == 0:
-            _, rows = read_csv(tmp_path / "out" / "w_walls.csv")
-            assert np.isfinite(np.array([r[1:] for r in rows])).all()
-        else:
-            assert "resonance" in proc.stderr and not (tmp_path / "out").exists()
-        return
     assert proc.returncode == 2, proc.stderr
     lines = proc.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("seispulse: error: case.nml"), proc.stderr
