@@ -117,16 +117,16 @@ subroutine sp_seed_whitman_increment(kh, gamma, height, thrust, z, stat, errmsg)
 end subroutine sp_seed_whitman_increment
 
 !> Wood (as quoted): kh gamma H^2 at 0.6 H.
-subroutine sp_wood_thrust(kh, gamma, height, thrust, z, stat, errmsg)
+subroutine sp_wood_thrust(alpha_s, gamma, height, thrust, z, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_codes, only: wood_thrust
     implicit none
-    real(dp), intent(in) :: kh, gamma, height
+    real(dp), intent(in) :: alpha_s, gamma, height
     real(dp), intent(out) :: thrust, z
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg
     errmsg = ''
-    call wood_thrust(kh, gamma, height, thrust, z, stat, errmsg)
+    call wood_thrust(alpha_s, gamma, height, thrust, z, stat, errmsg)
 end subroutine sp_wood_thrust
 
 !> S, TB, TC, TD of EN 1998-1 Tables 3.2/3.3; ground 1..5 = A..E.

@@ -37,8 +37,9 @@ The published check phi = 30, delta = 0, vertical wall, flat backfill, kh = 0.24
 kv = -0.12 (theta = 0.2110933 rad, K = 0.4856177, K_pd = 2.600) is reproduced (from the
 xc project's test, which cites eurocodeapplied.com).
 
-Table values (S, TB, TC, TD, avg/ag, beta = 0.2, gamma_phi = 1.25, r) are EN's
-RECOMMENDED values; a National Annex may change them.
+Table values (S, TB, TC, TD, avg/ag, beta = 0.2, r) are EN's RECOMMENDED values; a
+National Annex may change them. gamma_phi = 1.25 is recalled as EN 1998-5's recommended
+value (its NOTE was not verified); the default here is 1.0.
 
 [TEXT ERROR?] The passive coefficient E.4 (delta = 0) as transcribed has the numerator
 sin^2(psi + phi_d - theta); a brute-force planar-wedge search gives sin^2(psi + theta -
@@ -64,7 +65,7 @@ from ._seispulse import (sp_ec8_damping_correction, sp_ec8_design_spectrum,
                          sp_ec8_rigid_thrust, sp_ec8_seismic_coefficients, sp_ec8_thrust,
                          sp_ec8_vertical_ratio, sp_mononobe_okabe, sp_seed_whitman_increment,
                          sp_westergaard_pressure, sp_wood_thrust)
-from .errors import InvalidInputError
+from .errors import STATUS_ERRORS, InvalidInputError, NoSolutionError
 
 __all__ = ["WALL_TYPES", "WATER_CASES", "GROUND_TYPES", "MononobeOkabe", "SeismicCoefficients",
            "EarthThrust", "WallThrust", "GroundParameters", "mononobe_okabe",
@@ -208,8 +209,8 @@ def mononobe_okabe(phi_deg, kh, kv, delta_deg=0.0, psi_deg=90.0, beta_deg=0.0, p
         False: active coefficient E.2; True: passive coefficient (inertia away from the
         wall), the wedge-consistent generalisation of E.4 with wall friction.
     gamma_phi : float
-        Partial factor on tan(phi') and tan(delta) (>= 1; 1 = characteristic; the EN
-        1998-5 NOTE recommends 1.25, check the National Annex): phi_d = atan(tan(phi') /
+        Partial factor on tan(phi') and tan(delta) (>= 1; 1 = characteristic; EN
+        1998-5 recommends 1.25 (not verified), check the National Annex): phi_d = atan(tan(phi') /
         gamma_phi), delta_d likewise (Annex E(4)).
     beyond_limit : {'error', 'en1998'}
         Active case with beta > phi_d - theta, where no soil wedge is in equilibrium:
@@ -230,7 +231,7 @@ def mononobe_okabe(phi_deg, kh, kv, delta_deg=0.0, psi_deg=90.0, beta_deg=0.0, p
         _scalar("phi_deg", phi_deg), _scalar("kh", kh), _scalar("kv", kv),
         _scalar("delta_deg", delta_deg), _scalar("psi_deg", psi_deg),
         _scalar("beta_deg", beta_deg), int(is_passive), _scalar("gamma_phi", gamma_phi))
-    if stat == 7 and mode == "en1998" and not is_passive and k_e3 > 0.0:
+    if STATUS_ERRORS.get(int(stat)) is NoSolutionError and mode == "en1998" and not is_passive and k_e3 > 0.0:
         return MononobeOkabe(float(k_e3), float(theta))
     _core.raise_for_status(stat, msg)
     return MononobeOkabe(float(k), float(theta))
@@ -337,18 +338,19 @@ def rigid_wall_thrust(alpha_s, gamma, height):
 def seed_whitman(kh, gamma, height):
     """Seed & Whitman (1970) dynamic increment on a yielding wall as quoted by
     UFC 3-220-20 eq. 4-17: dK = 3/4 kh, thrust 3/8 kh gamma H^2 at 0.6 H (vertical wall,
-    horizontal backfill; proposed for kh up to about 0.4, not enforced). Returns
-    :class:`WallThrust` (kN/m, m)."""
+    horizontal backfill; proposed for kh up to about 0.4, not enforced). Seed & Whitman's
+    kh is the peak ground acceleration over g; in an EN 1998-5 check it is the code's
+    kh = alpha S/r. Returns :class:`WallThrust` (kN/m, m)."""
     return _wall(sp_seed_whitman_increment, "kh", kh, gamma, height)
 
 
-def wood(kh, gamma, height):
+def wood(alpha_s, gamma, height):
     """Wood (1973) non-yielding wall as commonly quoted (UFC 3-220-20 eq. 4-18):
-    kh gamma H^2 at 0.6 H, i.e. Wood's F_p = 1. Wood's own F_p depends on Poisson's ratio
-    and on L/H (distance to the next wall): see :mod:`seispulse.walls` for the elastic
-    solutions. ``kh`` is the ground acceleration over g (no r). Returns
-    :class:`WallThrust` (kN/m, m)."""
-    return _wall(sp_wood_thrust, "kh", kh, gamma, height)
+    alpha_s gamma H^2 at 0.6 H, i.e. Wood's F_p = 1. Wood's own F_p depends on Poisson's
+    ratio and on L/H (distance to the next wall): see :mod:`seispulse.walls` for the
+    elastic solutions. ``alpha_s`` = ag S/g is the ground acceleration over g (no r), as
+    in :func:`rigid_wall_thrust`. Returns :class:`WallThrust` (kN/m, m)."""
+    return _wall(sp_wood_thrust, "alpha_s", alpha_s, gamma, height)
 
 
 # ------------------------------------------------------------------ EN 1998-1 spectra

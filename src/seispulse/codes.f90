@@ -48,15 +48,18 @@
 !> beta = -25..25, delta = 0 and 2/3 phi, phi = 30 and 38, kh = 0 and 0.2, kv = +-0.1
 !> (test/test_codes.f90 repeats it on 5 cases): E.2 and the passive form above match it
 !> to 1e-9 (relative) wherever they are defined, and where a condition below fails the
-!> wedge has no critical (interior, P > 0) wedge either. A one-off random sample of 1500
-!> cases over psi = 20..170 (not kept as a test) agreed in the same way.
+!> wedge has no critical (interior, P > 0) wedge either; the tests also cover backs
+!> flatter than phi_d (psi = 25..40 deg, where the square root exceeds 1).
 !> Conditions (each failure is SEISPULSE_NO_SOLUTION with a message saying why):
 !>   active: psi - theta - delta_d > 0; beta <= phi_d - theta (else E.3, above);
 !>     psi + phi_d - theta < 180 (else the wedge maximum lies on the overhanging back
 !>     face itself, not inside the soil, and E.2 does not apply);
 !>   passive: psi + theta + delta_d < 180; phi_d + beta - theta >= 0 (else the slope in
-!>     front of the wall fails under the inertia); the square root < 1 (else no planar
-!>     wedge limits the resistance: K unbounded).
+!>     front of the wall fails under the inertia); psi + phi_d + beta + delta_d < 180
+!>     (else no planar wedge limits the resistance: K unbounded). The passive K is
+!>     evaluated in the equivalent form (1 + root)^2 sin^2(psi + beta) sin(psi + theta +
+!>     delta_d)/(cos theta sin^2 psi sin^2(psi + phi_d + beta + delta_d)), which stays
+!>     finite where the square root reaches 1 (psi + theta = phi_d).
 !> The planar passive wedge is the classical Coulomb one: with wall friction delta_d
 !> above about phi_d/3 it overestimates the passive resistance (log-spiral surfaces give
 !> less); this is EN's model, not a correction of it.
@@ -291,8 +294,8 @@ contains
         else if (outside(gamma_phi, 1.0_dp, big, .false., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'gamma_phi = '// &
                            real_str(gamma_phi)//': the partial factor on tan(phi) must be '// &
-                           'finite and >= 1 (1 = characteristic; the EN 1998-5 NOTE recommends '// &
-                           '1.25, check the National Annex)')
+                           'finite and >= 1 (1 = characteristic; EN 1998-5 recommends 1.25, '// &
+                           'not verified: check the National Annex)')
         end if
     end subroutine mo_check
 
@@ -346,14 +349,19 @@ contains
             else if (a < 0.0_dp) then
                 code = MO_SLOPE_UNSTABLE
             else
-                root = sqrt(sin(phi + delta)*sin(a)/(sin(psi + beta)*sin(s1)))
-                ! 1 - root at rounding level: K would be ~1/eps, i.e. unbounded
-                if (.not. (root < 1.0_dp - 64.0_dp*epsilon(1.0_dp))) then
+                if (.not. (psi + phi + beta + delta < pi)) then
                     code = MO_UNBOUNDED
                 else
-                    ! E.4 generalised (wedge-consistent numerator, see the module notes)
-                    k = sin(psi + theta - phi)**2/(cos(theta)*sin(psi)**2*sin(s1)* &
-                                                   (1.0_dp - root)**2)
+                    ! E.4 generalised: sin^2(psi + theta - phi)/(cos theta sin^2 psi sin(s1)
+                    ! (1 - root)^2). Since 1 - root^2 = sin(psi + theta - phi)
+                    ! sin(psi + phi + beta + delta)/(sin(psi + beta) sin(s1)), the factor
+                    ! sin(psi + theta - phi) cancels: the form below has no 0/0 at
+                    ! psi + theta = phi (root = 1 there, K finite) and no cancellation in
+                    ! 1 - root; its only pole, psi + phi + beta + delta = 180, is the
+                    ! geometric limit of the passive wedge.
+                    root = sqrt(sin(phi + delta)*sin(a)/(sin(psi + beta)*sin(s1)))
+                    k = (1.0_dp + root)**2*sin(psi + beta)**2*sin(s1)/ &
+                        (cos(theta)*sin(psi)**2*sin(psi + phi + beta + delta)**2)
                 end if
             end if
         end if
@@ -371,6 +379,15 @@ contains
         th = 'theta = '//ang(theta)//' deg'//context
         select case (code)
         case (MO_BEYOND_LIMIT)
+            if (phi - theta < 0.0_dp .and. .not. (beta > 0.0_dp)) then
+                ! the inertia alone, not the slope, leaves no wedge in equilibrium
+                call set_error(stat, errmsg, SEISPULSE_NO_SOLUTION, 'kh: '//th// &
+                               ' exceeds phi_d = '//ang(phi)//' deg: no soil wedge is in '// &
+                               'equilibrium even behind a level backfill, no finite active '// &
+                               'thrust (EN 1998-5 E.3 gives K = '// &
+                               real_str(anint(ke3*1.0e6_dp)/1.0e6_dp)//')')
+                return
+            end if
             call set_error(stat, errmsg, SEISPULSE_NO_SOLUTION, 'beta_deg = '//ang(beta)// &
                            ': the backfill slope exceeds phi_d - theta = '//ang(phi - theta)// &
                            ' deg ('//th//'): no soil wedge is in equilibrium, no finite active '// &
@@ -391,8 +408,9 @@ contains
                            th//'): the ground in front of the wall slides, no passive wedge '// &
                            'is in equilibrium')
         case (MO_UNBOUNDED)
-            call set_error(stat, errmsg, SEISPULSE_NO_SOLUTION, 'delta_deg = '//ang(delta)// &
-                           ' (design value): the passive square root reaches 1 ('//th// &
+            call set_error(stat, errmsg, SEISPULSE_NO_SOLUTION, 'psi_deg = '//ang(psi)// &
+                           ': psi + phi_d + beta + delta_d = '// &
+                           ang(psi + phi + beta + delta)//' deg >= 180 ('//th// &
                            '): no planar wedge limits the passive resistance (K unbounded)')
         case default
             call set_error(stat, errmsg, SEISPULSE_NO_SOLUTION, 'psi_deg = '//ang(psi)// &
@@ -526,14 +544,14 @@ contains
     !> q(z) = 7/8 kh gamma_w sqrt(h_water z), z the depth below the free water surface.
     !> Its resultant is 7/12 kh gamma_w h_water^2 at 0.4 h_water above the base. q acts
     !> in either direction (EN's +-); the magnitude is returned. Invalid input: q = NaN, and
-    !> stat (when present) says why.
+    !> stat says why.
     pure subroutine westergaard_pressure(kh, gamma_w, h_water, z, q, stat, errmsg)
         real(dp), intent(in) :: kh        !! horizontal seismic coefficient, >= 0
         real(dp), intent(in) :: gamma_w   !! unit weight of water, kN/m3, > 0
         real(dp), intent(in) :: h_water   !! depth of the free water at the wall, m, > 0
         real(dp), intent(in) :: z(:)      !! depths below the free water surface, m, in [0, h_water]
         real(dp), intent(out) :: q(:)     !! pressures, kPa (size of z)
-        integer, intent(out), optional :: stat  !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
+        integer, intent(out) :: stat  !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
         character(len=*), intent(inout), optional :: errmsg  !! message naming the parameter
         integer :: st, i
         st = SEISPULSE_SUCCESS
@@ -559,7 +577,7 @@ contains
                 end if
             end do
         end if
-        if (present(stat)) stat = st
+        stat = st
         if (st /= SEISPULSE_SUCCESS) then
             q = ieee_value(1.0_dp, ieee_quiet_nan)
             return
@@ -572,14 +590,14 @@ contains
     !> Rigid (completely restrained, non-yielding) wall, EN 1998-5 Annex E (rigid
     !> structures; clause/equation number, E.17?, not verified): dynamic increment
     !> thrust dP = alpha S gamma H^2 at H/2, for a vertical wall with horizontal backfill.
-    !> Invalid input: thrust = z = NaN, and stat (when present) says why.
+    !> Invalid input: thrust = z = NaN, and stat says why.
     pure subroutine ec8_rigid_thrust(alpha_s, gamma, height, thrust, z, stat, errmsg)
         real(dp), intent(in) :: alpha_s  !! alpha S = ag S/g (no r), >= 0
         real(dp), intent(in) :: gamma    !! unit weight of the soil, kN/m3, > 0
         real(dp), intent(in) :: height   !! wall height H, m, > 0
         real(dp), intent(out) :: thrust  !! dynamic thrust increment, kN/m
         real(dp), intent(out) :: z       !! its height above the base, m
-        integer, intent(out), optional :: stat  !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
+        integer, intent(out) :: stat  !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
         character(len=*), intent(inout), optional :: errmsg  !! message naming the parameter
         call simple_thrust('alpha_s', alpha_s, gamma, height, 1.0_dp, 0.5_dp, thrust, z, stat, &
                            errmsg)
@@ -588,32 +606,35 @@ contains
     !> Seed & Whitman (1970) dynamic increment on a yielding wall, as quoted by UFC
     !> 3-220-20 eq. 4-17: dK = 3/4 kh, dP = 3/8 kh gamma H^2 at 0.6 H (vertical wall,
     !> horizontal backfill, delta = 0; proposed for kh up to about 0.4, not enforced).
-    !> Invalid input: thrust = z = NaN, and stat (when present) says why.
+    !> Seed & Whitman's kh is the peak ground acceleration over g; in an EN 1998-5 check
+    !> it is the code's kh = alpha S/r of the yielding wall (seispulse_wall_table does so).
+    !> Invalid input: thrust = z = NaN, and stat says why.
     pure subroutine seed_whitman_increment(kh, gamma, height, thrust, z, stat, errmsg)
         real(dp), intent(in) :: kh       !! horizontal seismic coefficient, >= 0
         real(dp), intent(in) :: gamma    !! unit weight of the soil, kN/m3, > 0
         real(dp), intent(in) :: height   !! wall height H, m, > 0
         real(dp), intent(out) :: thrust  !! dynamic thrust increment, kN/m
         real(dp), intent(out) :: z       !! its height above the base, m
-        integer, intent(out), optional :: stat  !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
+        integer, intent(out) :: stat  !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
         character(len=*), intent(inout), optional :: errmsg  !! message naming the parameter
         call simple_thrust('kh', kh, gamma, height, 0.375_dp, 0.6_dp, thrust, z, stat, errmsg)
     end subroutine seed_whitman_increment
 
     !> Wood (1973) non-yielding wall, as commonly quoted (UFC 3-220-20 eq. 4-18):
-    !> dP = kh gamma H^2 at 0.6 H, i.e. Wood's factor F_p taken as 1. Wood's own F_p
+    !> dP = (ag S/g) gamma H^2 at 0.6 H, i.e. Wood's factor F_p taken as 1. Wood's own F_p
     !> depends on Poisson's ratio and on L/H (the distance to the next wall); the elastic
     !> solutions (seispulse_walls_vy, seispulse_walls_one_term) give it. Invalid input:
-    !> thrust = z = NaN, and stat (when present) says why.
-    pure subroutine wood_thrust(kh, gamma, height, thrust, z, stat, errmsg)
-        real(dp), intent(in) :: kh       !! ground acceleration/g (no r), >= 0
+    !> thrust = z = NaN, and stat says why.
+    pure subroutine wood_thrust(alpha_s, gamma, height, thrust, z, stat, errmsg)
+        real(dp), intent(in) :: alpha_s  !! ground acceleration ag S/g (no r), >= 0
         real(dp), intent(in) :: gamma    !! unit weight of the soil, kN/m3, > 0
         real(dp), intent(in) :: height   !! wall height H, m, > 0
         real(dp), intent(out) :: thrust  !! dynamic thrust, kN/m
         real(dp), intent(out) :: z       !! its height above the base, m
-        integer, intent(out), optional :: stat  !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
+        integer, intent(out) :: stat  !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
         character(len=*), intent(inout), optional :: errmsg  !! message naming the parameter
-        call simple_thrust('kh', kh, gamma, height, 1.0_dp, 0.6_dp, thrust, z, stat, errmsg)
+        call simple_thrust('alpha_s', alpha_s, gamma, height, 1.0_dp, 0.6_dp, thrust, z, stat, &
+                           errmsg)
     end subroutine wood_thrust
 
     !> thrust = factor a gamma H^2 at zfrac H, with the checks of the three rules above.
@@ -621,7 +642,7 @@ contains
         character(len=*), intent(in) :: name
         real(dp), intent(in) :: a, gamma, height, factor, zfrac
         real(dp), intent(out) :: thrust, z
-        integer, intent(out), optional :: stat
+        integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
         integer :: st
         st = SEISPULSE_SUCCESS
@@ -635,7 +656,7 @@ contains
             call set_error(st, errmsg, SEISPULSE_INVALID_INPUT, 'height = '//real_str(height)// &
                            ': the wall height H (m) must be finite and > 0')
         end if
-        if (present(stat)) stat = st
+        stat = st
         if (st /= SEISPULSE_SUCCESS) then
             thrust = ieee_value(1.0_dp, ieee_quiet_nan)
             z = thrust

@@ -135,10 +135,14 @@ contains
         thrust(ROW_MO_INCREMENT) = mo%e_dynamic
         z(ROW_MO_INCREMENT) = mo%z_dynamic
         call seed_whitman_increment(c%kh, c%gamma, c%height, thrust(ROW_SEED_WHITMAN), &
-                                    z(ROW_SEED_WHITMAN))
-        call wood_thrust(c%alpha_s, c%gamma, c%height, thrust(ROW_WOOD), z(ROW_WOOD))
+                                    z(ROW_SEED_WHITMAN), stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        call wood_thrust(c%alpha_s, c%gamma, c%height, thrust(ROW_WOOD), z(ROW_WOOD), stat, &
+                         errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         call ec8_rigid_thrust(c%alpha_s, c%gamma, c%height, thrust(ROW_EC8_RIGID), &
-                              z(ROW_EC8_RIGID))
+                              z(ROW_EC8_RIGID), stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
 
         ! elastic rows: q in rho Xg H^2 with rho Xg = gamma alpha_s
         scale = c%gamma*c%alpha_s*c%height**2

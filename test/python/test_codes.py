@@ -87,7 +87,7 @@ GRID = [(phi, delta_frac, beta, kh, kv)
 
 
 @pytest.mark.parametrize("passive", [False, True])
-@pytest.mark.parametrize("psi", [80.0, 90.0, 100.0, 110.0])
+@pytest.mark.parametrize("psi", [30.0, 35.0, 80.0, 90.0, 100.0, 110.0])
 def test_mononobe_okabe_matches_wedge_search(psi, passive):
     solved = 0
     for phi, delta_frac, beta, kh, kv in GRID:
@@ -102,6 +102,16 @@ def test_mononobe_okabe_matches_wedge_search(psi, passive):
         assert k == pytest.approx(ref, rel=1e-9), (phi, delta, beta, kh, kv)
         solved += 1
     assert solved >= len(GRID) // 2      # the grid is mostly inside the domain
+
+
+@pytest.mark.parametrize("psi", [30.0, 39.9, 40.0, 40.1])
+def test_passive_back_flatter_than_phi(psi):
+    """psi + theta <= phi: the square root of E.4 reaches or passes 1, yet K is finite and
+    continuous (Coulomb, static, phi = 40); the wedge search and Das agree."""
+    k = C.mononobe_okabe(40.0, 0.0, 0.0, 0.0, psi, 0.0, passive=True).k
+    assert k == pytest.approx(wedge_k(40.0, 0.0, 0.0, 0.0, psi, 0.0, True), rel=1e-9)
+    if psi != 40.0:                      # Das's form is 0/0 at psi = phi
+        assert k == pytest.approx(das_coulomb(40.0, 0.0, psi, 0.0, True), rel=1e-12)
 
 
 def transcribed_e4(phi, kh, kv, psi, beta):
@@ -212,7 +222,7 @@ def test_beyond_limit():
     ((30, 0.1, 0.0, 15, 20, 0), False, "psi_deg = 20"),       # psi - theta - delta <= 0
     ((30, 0.0, 0.0, 0, 160, 0), False, "psi_deg = 160"),      # overhang: psi + phi >= 180
     ((25, 0.3, 0.0, 0, 90, -20), True, "beta_deg = -20"),     # ground in front slides
-    ((45, 0.0, 0.0, 45, 90, 0), True, "delta_deg = 45"),      # passive unbounded
+    ((45, 0.0, 0.0, 45, 90, 0), True, "psi_deg = 90"),        # psi + phi + delta = 180
     ((30, 0.0, 0.0, 15, 170, 0), True, "psi_deg = 170"),      # psi + theta + delta >= 180
 ])
 def test_no_solution_branches(args, passive, start):
@@ -466,3 +476,9 @@ def test_design_floor_and_damping():
 def test_spectra_bad_input(call, start):
     with pytest.raises(InvalidInputError, match="^" + start):
         call()
+
+
+def test_inertia_beyond_friction_names_kh():
+    """theta > phi' behind a level backfill: the message blames kh, not the slope."""
+    with pytest.raises(NoSolutionError, match=r"^kh: theta = 38\.6598 deg exceeds phi_d = 30"):
+        C.mononobe_okabe(30.0, 0.8, 0.0)
