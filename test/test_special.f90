@@ -4,7 +4,7 @@
 module test_special
     use, intrinsic :: iso_fortran_env, only: qp => real128
     use seispulse_kinds, only: dp
-    use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, &
+    use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, exp_expm1, &
                                  sin_pi, cos_pi, tau_minus_sinpi
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
@@ -26,7 +26,8 @@ contains
                  new_unittest('phi and chi wrappers', test_phi_chi), &
                  new_unittest('expm1 and log1p', test_expm1_log1p), &
                  new_unittest('sin_pi and cos_pi exact zeros', test_sincos_pi), &
-                 new_unittest('tau - sin(pi tau)/pi near 0', test_tau_minus_sinpi)]
+                 new_unittest('tau - sin(pi tau)/pi near 0', test_tau_minus_sinpi), &
+                 new_unittest('complex exp and expm1 near 2 pi i and 0', test_exp_expm1)]
     end subroutine collect_special
 
     !> phi_k(x) in quad precision: printed form, or the series where even 113 bits cancel.
@@ -138,6 +139,33 @@ contains
         if (allocated(error)) return
         call check(error, phi(3.3_dp), real(ref_phi(2, 3.3_dp), dp), rtol=4.0e-15_dp)
     end subroutine test_phi_chi
+
+    !> e^z and e^z - 1 against mpmath (40 digits) at the exact double z: near 2 pi i, where
+    !> exp(z) - 1 would lose 9 digits of the real part, near 0 and at a plain point.
+    subroutine test_exp_expm1(error)
+        type(test_error), allocatable, intent(out) :: error
+        complex(dp) :: z(3), e(3), em1(3)
+        complex(dp), parameter :: e_ref(3) = [ &
+            (0.9999999999_dp, 9.99999837711011e-10_dp), &
+            (0.04369226300728118_dp, 0.02386919206778745_dp), &
+            (0.999999999999_dp, -9.99999999999e-13_dp)]
+        complex(dp), parameter :: em1_ref(3) = [ &
+            (-1.0000000049499984e-10_dp, 9.99999837711011e-10_dp), &
+            (-0.9563077369927189_dp, 0.02386919206778745_dp), &
+            (-1e-12_dp, -9.99999999999e-13_dp)]
+        integer :: i
+        z = [(-1e-10_dp, 6.283185308179586_dp), (-3.0_dp, 0.5_dp), (-1e-12_dp, -1e-12_dp)]
+        call exp_expm1(z, e, em1)
+        do i = 1, 3
+            call check(error, [real(e(i), dp), aimag(e(i))], &
+                       [real(e_ref(i), dp), aimag(e_ref(i))], rtol=1.0e-14_dp, message='e^z')
+            if (allocated(error)) return
+            call check(error, [real(em1(i), dp), aimag(em1(i))], &
+                       [real(em1_ref(i), dp), aimag(em1_ref(i))], rtol=1.0e-14_dp, &
+                       message='e^z - 1')
+            if (allocated(error)) return
+        end do
+    end subroutine test_exp_expm1
 
     subroutine test_expm1_log1p(error)
         type(test_error), allocatable, intent(out) :: error

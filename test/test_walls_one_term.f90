@@ -451,9 +451,6 @@ contains
             bracket = 1.0_dp + psi_sigma(nu)*r%s*(2.0_dp/pi)*(2.0_dp/pi)*cmplx(1.0_dp, 0.1_dp, dp)
             call check_c(error, r%q*bracket, r0%q, 1.0e-13_dp, '(2.95) corrected')
             if (allocated(error)) return
-            call check(error, abs(r%q*bracket - r0%q*cmplx(1.0_dp, 0.1_dp, dp)) > &
-                       0.05_dp*abs(r0%q), '(2.95) printed differs')
-            if (allocated(error)) return
         end do
     end subroutine test_rot_dynamic
 
@@ -521,13 +518,15 @@ contains
         character(len=256) :: msg
         do k = 1, 6
             call one_term(0.0_dp, 0.0_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, lh(k), r, stat, msg)
-            call check(error, real(r%lambda, dp), st(k), atol=6.0e-5_dp, message='static Lambda')
+            call check(error, real(r%lambda, dp), st(k), atol=merge(5.0e-6_dp, 5.0e-5_dp, k == 6), &
+                       message='static Lambda')
             if (allocated(error)) return
             call one_term(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, lh(k), r, stat, msg)
-            call check(error, abs(r%lambda), d5(k), atol=6.0e-5_dp, message='|Lambda| 0.5')
+            call check(error, abs(r%lambda), d5(k), atol=merge(5.0e-6_dp, 5.0e-5_dp, k == 6), &
+                       message='|Lambda| 0.5')
             if (allocated(error)) return
             call one_term(1.0_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, lh(k), r, stat, msg)
-            call check(error, abs(r%lambda), d10(k), atol=6.0e-5_dp, message='|Lambda| 1.0')
+            call check(error, abs(r%lambda), d10(k), atol=5.0e-5_dp, message='|Lambda| 1.0')
             if (allocated(error)) return
             ! (2.105) as printed: (cosh mL - 1)/sinh mL, and q = q_single Lambda (2.107)
             ml = r%s*lh(k)/psi_e(0.3_dp)
@@ -920,9 +919,10 @@ contains
         call power_law_fundamental(-0.999_dp, w, stat, msg)
         call check(error, w, 1.8642994420640624_dp, rtol=1.0e-14_dp, message='n = -0.999')
         if (allocated(error)) return
-        ! near n = 2: inside the Qu-Wong bounds, tending to 1/2
+        ! near n = 2 (q = 1e3, 1e5: computed, not the q > 1e6 asymptote): inside the Qu-Wong
+        ! bounds, decreasing towards 1/2
         w_prev = huge(1.0_dp)
-        do k = 1, 4
+        do k = 1, 2
             n = 2.0_dp - 10.0_dp**(-2*k - 1)
             call power_law_fundamental(n, w, stat, msg)
             call check(error, stat, SEISPULSE_SUCCESS, 'status near 2')
@@ -937,8 +937,6 @@ contains
             if (allocated(error)) return
             w_prev = w
         end do
-        call check(error, w, 0.5_dp, rtol=2.0e-5_dp, message='-> 1/2')
-        if (allocated(error)) return
         call power_law_fundamental(2.0_dp, w, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'n', 'n = 2')
         if (allocated(error)) return

@@ -57,7 +57,8 @@ ShapeConstants = namedtuple("ShapeConstants", ["shape", "n", "a_oc", "l_factor",
                                                "s0", "s1", "h_ratio"])
 ShapeConstants.__doc__ = """Constants of a shape function (dimensionless, real; integrals over
 eta = y/H from 0 to 1, g = G/G_H): a_oc = sqrt(int g Phi'^2 / int g Phi^2), the cut-off
-(Eq. 2.43b/2.64a); l_factor = L (1 + i delta) = int Phi / int g Phi^2 (Eq. 2.43c/2.64c);
+(Eq. 2.43b/2.64a); l_factor = int Phi / int g Phi^2 (the source's L of Eq. 2.43c for
+homogeneous soil, L (1 + i delta) of Eq. 2.64c for the power law);
 mass_factor = int Phi^2 / int g Phi^2, so that a_o^2 = (omega H/V_SH)^2 mass_factor /
 (1 + i delta); s0 = int g Phi and s1 = int g Phi eta (Eq. 2.50/2.73 divided by G_H);
 h_ratio = s1 / s0, the height of the resultant over H (frequency independent)."""
@@ -271,7 +272,7 @@ def power_law_fundamental(n):
 def power_law_cutoff(n):
     """Cut-off omega_c H / V_SH = sqrt((5 - 2n)/2) of the one-term power-law model (Eq. 2.69).
 
-    About 1-2 % above :func:`power_law_fundamental` for 0 <= n <= 1 (exact for none: at n = 0
+    0.7 % (n = 0) to 1.9 % (n = 1) above :func:`power_law_fundamental` (at n = 0
     sqrt(5/2) = 1.58114 versus pi/2).
 
     Parameters

@@ -14,7 +14,7 @@ module seispulse_special
     implicit none
     private
 
-    public :: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, sin_pi, cos_pi, &
+    public :: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, sin_pi, cos_pi, exp_expm1, &
               tau_minus_sinpi, pi, complex_phis
 
     real(dp), parameter :: pi = 3.141592653589793238462643383279502884_dp  !! pi
@@ -227,5 +227,22 @@ contains
             p2 = (p1 - 1.0_dp) / z
         end if
     end subroutine complex_phis
+
+    !> e^z and e^z - 1 of a complex z with Re z <= 0, the second without cancellation:
+    !> expm1(x + i y) = expm1(x) cos y - 2 sin^2(y/2) + i e^x sin y (complex_phis' e^z - 1
+    !> loses relative accuracy near z = 2 pi i k). Used by the wall solutions for the
+    !> decay exp(-a x) and 1 - exp(-a x) of a mode.
+    elemental subroutine exp_expm1(z, e, em1)
+        complex(dp), intent(in) :: z    !! argument, Re z <= 0 (no overflow guard)
+        complex(dp), intent(out) :: e   !! e^z
+        complex(dp), intent(out) :: em1 !! e^z - 1
+        real(dp) :: ex, c, s, h
+        ex = exp(real(z, dp))
+        c = cos(aimag(z))
+        s = sin(aimag(z))
+        h = sin(0.5_dp*aimag(z))
+        e = ex*cmplx(c, s, dp)
+        em1 = cmplx(expm1(real(z, dp))*c - 2.0_dp*h*h, ex*s, dp)
+    end subroutine exp_expm1
 
 end module seispulse_special

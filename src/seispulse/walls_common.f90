@@ -15,7 +15,7 @@ module seispulse_walls_common
     private
 
     public :: wall_psi_t, wall_psi, free_field_frequencies, check_nu, check_delta, &
-              check_omega_ratio, sqrt_branch, resonance_error, wall_pi
+              check_omega_ratio, sqrt_branch, resonance_error, wall_pi, inv_one_plus_i
 
     real(dp), parameter :: wall_pi = 3.14159265358979323846264338327950288_dp
 
@@ -135,5 +135,21 @@ contains
             w = sqrt(cmplx(real(z, dp), 0.0_dp, dp))
         end if
     end function sqrt_branch
+
+    !> 1/(1 + i delta), the damping factor of G* = G(1 + i delta), without overflow of
+    !> delta^2 for large delta.
+    elemental function inv_one_plus_i(delta) result(w)
+        real(dp), intent(in) :: delta
+        complex(dp) :: w
+        real(dp) :: r, d
+        if (delta <= 1.0_dp) then
+            d = 1.0_dp + delta*delta
+            w = cmplx(1.0_dp/d, -delta/d, dp)
+        else
+            r = 1.0_dp/delta
+            d = 1.0_dp + r*r
+            w = cmplx(r*r/d, -r/d, dp)
+        end if
+    end function inv_one_plus_i
 
 end module seispulse_walls_common

@@ -12,7 +12,8 @@
 !>
 !> Per shape (eta = y/H, integrals over 0..1):
 !>     a_oc^2 = int g Phi'^2 / int g Phi^2            (2.43b, 2.64a)
-!>     l_factor = L (1 + i delta) = int Phi / int g Phi^2 (real; 2.43c, 2.64c)
+!>     l_factor = int Phi / int g Phi^2 (real): the source's L of 2.43c for homogeneous
+!>         soil (Table 2.1: 3/2, 4/pi, 5/4), and L (1 + i delta) of 2.64c for the power law
 !>     mass_factor = int Phi^2 / int g Phi^2, a_o^2 = (omega H/V_SH)^2 mass_factor/(1 + i delta)
 !>     s0 = int g Phi, s1 = int g Phi eta              (2.50, 2.73 [RECON]: divided by G_H)
 !>     s = sqrt(a_oc^2 - a_o^2) with Re s >= 0 (the delta -> 0+ branch: +i sqrt above cut-off)
@@ -39,10 +40,11 @@ module seispulse_walls_one_term
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
                                 SEISPULSE_NO_BRACKET, SEISPULSE_NO_CONVERGENCE, set_error, &
                                 real_str, int_str, outside
-    use seispulse_special, only: expm1, log1p
+    use seispulse_special, only: expm1, log1p, exp_expm1
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_walls_common, only: wall_psi_t, wall_psi, check_nu, check_delta, &
-                                      check_omega_ratio, sqrt_branch, resonance_error, wall_pi
+                                      check_omega_ratio, sqrt_branch, resonance_error, wall_pi, &
+                                      inv_one_plus_i
     implicit none
     private
 
@@ -79,7 +81,7 @@ module seispulse_walls_one_term
         real(dp) :: n = 0.0_dp                 !! stiffness exponent (0 for shapes 1-3)
         real(dp) :: a_oc = 0.0_dp              !! cut-off frequency a_oc (2.43b/2.64a/2.69a)
         real(dp) :: l_factor = 0.0_dp
-            !! L (1 + i delta) = int Phi/int g Phi^2 (2.43c/2.69c)
+            !! int Phi/int g Phi^2: L of 2.43c (homogeneous), L (1 + i delta) of 2.64c/2.69c
         real(dp) :: mass_factor = 0.0_dp
             !! int Phi^2/int g Phi^2: a_o^2 = (omega H/V_SH)^2 mass_factor/(1 + i delta)
         real(dp) :: s0 = 0.0_dp                !! int_0^1 g Phi d(y/H) (2.50/2.73 [RECON])
@@ -144,8 +146,8 @@ contains
         case (SHAPE_LINEAR, SHAPE_SINE, SHAPE_PARABOLIC)
             if (outside(n, 0.0_dp, 0.0_dp, .false., .false.)) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'n = '//real_str(n)// &
-                               ': shape = '//int_str(shape)//' (linear, sine, parabolic) is '// &
-                               'for homogeneous soil, n = 0; use shape = 4 (power law) for n /= 0')
+                               ': the linear, sine and parabolic shapes are for homogeneous '// &
+                               'soil (n = 0); use the power-law shape for n different from 0')
                 return
             end if
         case (SHAPE_POWER)
@@ -214,8 +216,10 @@ contains
         real(dp) :: g
         if (.not. outside(n, 0.0_dp, 0.0_dp, .false., .false.)) then
             g = 1.0_dp
-        else if (eta >= 1.0_dp) then
+        else if (eta >= 1.0_dp .and. n > 0.0_dp) then
             g = 0.0_dp
+        else if (eta >= 1.0_dp) then
+            g = huge(1.0_dp)     ! n < 0: G is unbounded at the surface (callers refuse it)
         else
             g = (1.0_dp - eta)**n
         end if
@@ -389,16 +393,17 @@ contains
         call solve(omega_ratio, delta, psi, c, d_theta, l_over_h, res, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         if (pair) then
-            call decay(res%s, psi%e, l_over_h, e_l, em1_l, stat, errmsg)
+            call decay(res%s, psi%e, l_over_h, 'l_over_h', e_l, em1_l, stat, errmsg)
             if (stat /= SEISPULSE_SUCCESS) return
         end if
         do i = 1, size(x)
-            call decay(res%s, psi%e, x(i), e_x, em1_x, stat, errmsg)
+            call decay(res%s, psi%e, x(i), 'x('//int_str(i)//')', e_x, em1_x, stat, errmsg)
             if (stat /= SEISPULSE_SUCCESS) return
             if (pair) then
                 ! (2.103), corrected B: the product form has no cancellation for small m L and
                 ! only exponentials with Re <= 0 (no overflow for huge L/H)
-                call decay(res%s, psi%e, l_over_h - x(i), e_r, em1_r, stat, errmsg)
+                call decay(res%s, psi%e, l_over_h - x(i), 'x('//int_str(i)//')', e_r, em1_r, &
+                           stat, errmsg)
                 if (stat /= SEISPULSE_SUCCESS) return
                 u(i) = res%u_ff0*(em1_x*em1_r/(1.0_dp + e_l))
             else
@@ -471,21 +476,6 @@ contains
         end if
     end subroutine validate
 
-    !> 1/(1 + i delta) without overflow for large delta.
-    elemental function inv_one_plus_i(delta) result(w)
-        real(dp), intent(in) :: delta
-        complex(dp) :: w
-        real(dp) :: r, d
-        if (delta <= 1.0_dp) then
-            d = 1.0_dp + delta*delta
-            w = cmplx(1.0_dp/d, -delta/d, dp)
-        else
-            r = 1.0_dp/delta
-            d = 1.0_dp + r*r
-            w = cmplx(r*r/d, -r/d, dp)
-        end if
-    end function inv_one_plus_i
-
     !> s = sqrt(a_oc^2 - a_o^2) on the delta -> 0+ branch (Re s >= 0; +i sqrt above the
     !> cut-off when delta = 0). The argument's imaginary part W^2 mf delta/(1 + delta^2) >= 0.
     elemental function decay_root(omega_ratio, delta, c) result(s)
@@ -533,7 +523,7 @@ contains
         res%u0 = (0.0_dp, 0.0_dp)
         if (ieee_is_finite(l_over_h)) then
             ! (2.105)-(2.107): Lambda = tanh(mL/2) = -expm1(-mL)/(1 + exp(-mL)), overflow-safe
-            call decay(res%s, psi%e, l_over_h, e_l, em1_l, stat, errmsg)
+            call decay(res%s, psi%e, l_over_h, 'l_over_h', e_l, em1_l, stat, errmsg)
             if (stat /= SEISPULSE_SUCCESS) return
             if (.not. (abs(1.0_dp + e_l) > 0.0_dp)) then
                 call set_error(stat, errmsg, SEISPULSE_SINGULAR, 'l_over_h = '// &
@@ -575,9 +565,10 @@ contains
     !> e = exp(-w), em1 = expm1(-w) for w = s xlen/psi_e (Re w >= 0), overflow-safe: e = 0 once
     !> Re w is past the exponent range; an undamped wave (Re w = 0) whose phase overflows is
     !> refused.
-    pure subroutine decay(s, psi_e, xlen, e, em1, stat, errmsg)
+    pure subroutine decay(s, psi_e, xlen, name, e, em1, stat, errmsg)
         complex(dp), intent(in) :: s
         real(dp), intent(in) :: psi_e, xlen
+        character(len=*), intent(in) :: name   !! the argument that gave xlen, for messages
         complex(dp), intent(out) :: e, em1
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
@@ -591,13 +582,11 @@ contains
         else if (.not. ieee_is_finite(wi)) then
             e = (0.0_dp, 0.0_dp)
             em1 = (0.0_dp, 0.0_dp)
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'l_over_h: the phase of the '// &
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, name//': the phase of the '// &
                            'undamped wave over '//real_str(xlen)//' H overflows; give a '// &
-                           'smaller l_over_h (or x) or delta > 0')
+                           'smaller '//name//' or delta > 0')
         else
-            e = exp(cmplx(-wr, -wi, dp))
-            ! expm1(-wr - i wi) = expm1(-wr) cos(wi) - 2 sin^2(wi/2) - i exp(-wr) sin(wi)
-            em1 = cmplx(expm1(-wr)*cos(wi) - 2.0_dp*sin(0.5_dp*wi)**2, -exp(-wr)*sin(wi), dp)
+            call exp_expm1(cmplx(-wr, -wi, dp), e, em1)
         end if
     end subroutine decay
 
@@ -730,8 +719,8 @@ contains
     ! ------------------------------------------------------------------ power-law layer frequency
 
     !> Cut-off of the one-term power-law model, omega_c H/V_SH = sqrt((5 - 2n)/2) (from 2.69a,b);
-    !> assumes -1 < n < 2 (see check_exponent). About 1-2 % above the exact fundamental
-    !> frequency for 0 <= n <= 1 (power_law_fundamental).
+    !> assumes -1 < n < 2 (see check_exponent). 0.7 % (n = 0) to 1.9 % (n = 1) above the
+    !> exact fundamental frequency (power_law_fundamental).
     pure function power_law_cutoff(n) result(w)
         real(dp), intent(in) :: n  !! stiffness exponent, -1 < n < 2
         real(dp) :: w              !! omega_c H/V_SH

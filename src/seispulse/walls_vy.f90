@@ -37,9 +37,10 @@ module seispulse_walls_vy
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
                                 SEISPULSE_NO_CONVERGENCE, set_error, real_str, int_str, outside
-    use seispulse_special, only: expm1
+    use seispulse_special, only: expm1, exp_expm1
     use seispulse_walls_common, only: wall_psi_t, wall_psi, check_delta, &
-                                      check_omega_ratio, sqrt_branch, resonance_error, wall_pi
+                                      check_omega_ratio, sqrt_branch, resonance_error, wall_pi, &
+                                      inv_one_plus_i
     implicit none
     private
 
@@ -396,19 +397,13 @@ contains
     pure subroutine freq_setup(w, delta, f)
         real(dp), intent(in) :: w, delta
         type(vy_freq_t), intent(out) :: f
-        real(dp) :: e
+        complex(dp) :: c
         f%w = abs(w)            ! abs: -0.0 -> +0.0
         f%w2 = f%w*f%w
-        if (delta <= 1.0_dp) then
-            f%cr = 1.0_dp/(1.0_dp + delta*delta)
-            f%ci = abs(delta)*f%cr
-            f%omc = delta*delta*f%cr
-        else
-            e = 1.0_dp/delta
-            f%cr = e*e/(1.0_dp + e*e)
-            f%ci = e/(1.0_dp + e*e)
-            f%omc = 1.0_dp/(1.0_dp + e*e)
-        end if
+        c = inv_one_plus_i(abs(delta))
+        f%cr = real(c, dp)
+        f%ci = -aimag(c)
+        f%omc = abs(delta)*f%ci     ! delta^2/(1 + delta^2)
         f%zeta = f%w2*cmplx(f%cr, -f%ci, dp)
         f%azeta = f%w2*sqrt(f%cr)
     end subroutine freq_setup
@@ -676,7 +671,7 @@ contains
         integer, intent(out) :: stat
         complex(dp) :: s, r, r2, z, zk, ax, ee, ome, p2m1, p1, o, op, om, oi
         complex(dp) :: cs_, cu, cv, ct
-        real(dp) :: t, ax_, rn, sh, ch, sn, cn, omcos, en, omen, ea, sb, cb, hb, ninv
+        real(dp) :: t, ax_, rn, sh, ch, sn, cn, omcos, en, omen, ninv
         real(dp) :: asig, au, scal(4), n0scal(4)
         logical :: at_wall, cmp
         integer :: n, k, ncap, nchk
@@ -765,13 +760,8 @@ contains
                 end if
             else
                 ax = (rn*ax_)*s
-                ea = exp(-real(ax, dp))
-                hb = sin(-0.5_dp*aimag(ax))
-                sb = sin(-aimag(ax))
-                cb = cos(-aimag(ax))
-                ee = ea*cmplx(cb, sb, dp)
-                ! 1 - E = -expm1(-a x), complex: -(expm1(a) cos b - 2 sin^2(b/2) + i e^a sin b)
-                ome = -cmplx(expm1(-real(ax, dp))*cb - 2.0_dp*hb*hb, ea*sb, dp)
+                call exp_expm1(-ax, ee, ome)          ! E = exp(-a x), 1 - E = -expm1(-a x)
+                ome = -ome
                 if (cmp) then
                     en = exp(-rn*ax_)
                     omen = -expm1(-rn*ax_)
