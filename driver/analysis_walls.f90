@@ -17,7 +17,7 @@ module driver_walls
     use seispulse_codes, only: ec8_ground_parameters, ec8_r_factor, ec8_seismic_coefficients, &
                                ec8_vertical_ratio, WATER_DRY, WATER_IMPERVIOUS, WATER_PERMEABLE, &
                                EC8_WALL_GRAVITY_300, EC8_WALL_GRAVITY_200, EC8_WALL_RESTRAINED
-    use seispulse_walls_common, only: wall_pi
+    use seispulse_special, only: pi
     use seispulse_walls_one_term, only: SHAPE_LINEAR, SHAPE_SINE, SHAPE_PARABOLIC, SHAPE_POWER
     use seispulse_wall_table, only: wall_case_t, wall_case_default, wall_comparison, &
                                     wall_pressure_profile, wall_row_label, WALL_ROWS, &
@@ -316,8 +316,8 @@ contains
                 return
             end if
             if (height > 0.0_dp) then
-                omega_ref = wall_pi*vs_base/(2.0_dp*height)     ! omega_1 of the layer, rad/s
-                c%omega_ratio = 2.0_dp*wall_pi*frequency/omega_ref
+                omega_ref = pi*vs_base/(2.0_dp*height)     ! omega_1 of the layer, rad/s
+                c%omega_ratio = 2.0_dp*pi*frequency/omega_ref
             end if
         end if
         if (given(gw, 'd_theta')) then

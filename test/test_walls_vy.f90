@@ -45,7 +45,6 @@ contains
             new_unittest('fields_at_wall', test_fields_wall), &
             new_unittest('fields_free_field', test_free_field), &
             new_unittest('fields_mpmath', test_fields_mpmath), &
-            new_unittest('erratum_2_30_damping', test_erratum_230), &
             new_unittest('branch_delta_zero', test_branch), &
             new_unittest('signed_zero', test_signed_zero), &
             new_unittest('resonance', test_resonance), &
@@ -507,22 +506,6 @@ contains
             if (allocated(error)) return
         end do
     end subroutine test_fields_mpmath
-
-    !> (2.30) as printed divides by (1 + i delta) twice: u_printed = u/(1 + i delta), 10%
-    !> off at delta = 0.1. The corrected u matches the independent sum, not the printed.
-    subroutine test_erratum_230(error)
-        type(test_error), allocatable, intent(out) :: error
-        complex(dp), parameter :: uref = (0.026533567902015887_dp, 0.07391143064427397_dp)
-        complex(dp) :: u(1), v(1), sx(1), tau(1), printed
-        integer :: stat
-        call vy_fields(2.0_dp, 0.1_dp, 0.3_dp, [0.3_dp], [0.7_dp], 1.0e-12_dp, u, v, sx, tau, stat)
-        printed = uref/(1.0_dp, 0.1_dp)
-        call check(error, abs(printed - uref) > 0.05_dp*abs(uref), 'the printed form differs')
-        if (allocated(error)) return
-        call check_c(error, u(1), uref, atol=1.0e-11_dp, message='u (2.30) corrected')
-        if (allocated(error)) return
-        call check(error, abs(u(1) - printed) > 0.05_dp*abs(uref), 'u must not be the printed')
-    end subroutine test_erratum_230
 
     !> delta = 0 above resonance (radiating) equals the delta -> 0+ limit.
     subroutine test_branch(error)

@@ -76,7 +76,8 @@ VYSweep.__doc__ = """A frequency sweep: omega_ratio (omega/omega_1); q (rho Xg H
 def _raise(stat, msg, omega_name="omega_ratio"):
     """Status to exception, Fortran's name(i) as Python's name[i - 1] (flat index);
     the sweep's omega_ratios(i) becomes omega_name[i - 1]."""
-    _core.raise_record_status(stat, msg, names={"x": "x", "y": "y",
+    _core.raise_record_status(stat, msg, names={"x": "x", "y": "y", "omega_ratio": "omega_ratio",
+                                                "delta": "delta", "nu": "nu",
                                                 "omega_ratios": omega_name})
 
 
@@ -197,13 +198,14 @@ def vy_fields(omega_ratio, delta, nu, x, y, tol=VY_DEFAULT_TOL):
     At the wall u = 0, sigma_x = -p and tau = -nu/(2 - nu) y exactly; far from it u and
     tau tend to the free-field shear-beam response (u(H) = -1/(2(1 + i delta)) statically).
 
-    Parameters: ``x`` = x/H (finite, >= 0), ``y`` = y/H in [0, 1]; ``tol`` bounds each
+    Parameters: ``x`` = x/H in [0, 1e6], ``y`` = y/H in [0, 1]; ``tol`` bounds each
     field's truncation error relative to the sum of its absolute modal amplitudes.
     Returns :class:`VYFields` of complex values of the broadcast shape (u, v in
     rho Xg H^2/G; sigma_x, tau in rho Xg H). Points next to the wall (x -> 0+) converge
     like the wall itself. A tolerance too tight for a large omega_ratio (more than 2
-    million terms, e.g. tol = 1e-15 at omega_ratio = 500) raises
-    :class:`seispulse.ConvergenceError` naming ``tol``; so does :func:`vy_pressure`.
+    million terms: tol = 1e-15 at omega_ratio = 500, or the default 1e-10 above
+    omega_ratio = 7000 or so) raises :class:`seispulse.ConvergenceError` naming ``tol``;
+    so does :func:`vy_pressure`.
     """
     tol = _tol(tol)
     shape, arr = _core.broadcast(x=x, y=y)

@@ -50,7 +50,7 @@ end subroutine sp_free_field_frequencies
 !> vy_rigid element by element: omega_ratio(i), delta(i), nu(i).
 subroutine sp_vy_rigid(n, omega_ratio, delta, nu, tol, q, m, h_ratio, nterms, stat, errmsg)
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_errors, only: SEISPULSE_SUCCESS, int_str
     use seispulse_walls_vy, only: vy_rigid
     implicit none
     integer, intent(in) :: n
@@ -60,7 +60,7 @@ subroutine sp_vy_rigid(n, omega_ratio, delta, nu, tol, q, m, h_ratio, nterms, st
     integer, intent(out) :: nterms(n)
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg
-    integer :: i
+    integer :: i, k
     errmsg = ''
     stat = SEISPULSE_SUCCESS
     q = (0.0_dp, 0.0_dp)
@@ -70,7 +70,14 @@ subroutine sp_vy_rigid(n, omega_ratio, delta, nu, tol, q, m, h_ratio, nterms, st
     do i = 1, n
         call vy_rigid(omega_ratio(i), delta(i), nu(i), tol, q(i), m(i), h_ratio(i), stat, &
                       errmsg, nterms(i))
-        if (stat /= SEISPULSE_SUCCESS) return
+        if (stat /= SEISPULSE_SUCCESS) then
+            ! "omega_ratio = ..." -> "omega_ratio(i) = ..." for arrays, as the sweep path says
+            ! (Python turns it into omega_ratio[i - 1]); tol is one value for all elements
+            k = index(errmsg, ' = ')
+            if (n > 1 .and. k > 1 .and. errmsg(1:4) /= 'tol ') &
+                errmsg = errmsg(1:k - 1)//'('//int_str(i)//')'//errmsg(k:)
+            return
+        end if
     end do
 end subroutine sp_vy_rigid
 

@@ -9,15 +9,14 @@
 !> solutions give the dynamic increment only, never the geostatic thrust.
 module seispulse_walls_common
     use seispulse_kinds, only: dp
+    use seispulse_special, only: pi
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
                                 set_error, real_str, int_str, outside
     implicit none
     private
 
     public :: wall_psi_t, wall_psi, free_field_frequencies, check_nu, check_delta, &
-              check_omega_ratio, sqrt_branch, resonance_error, wall_pi, inv_one_plus_i
-
-    real(dp), parameter :: wall_pi = 3.14159265358979323846264338327950288_dp
+              check_omega_ratio, sqrt_branch, resonance_error, inv_one_plus_i
 
     !> Compressibility factors of walls.md §1 (dimensionless).
     type :: wall_psi_t
@@ -114,7 +113,7 @@ contains
             return
         end if
         do k = 1, size(omegas)
-            omegas(k) = real(2*k - 1, dp)*(wall_pi*vs/(2.0_dp*height))
+            omegas(k) = real(2*k - 1, dp)*(pi*vs/(2.0_dp*height))
         end do
         if (size(omegas) > 0) then
             if (.not. (omegas(size(omegas)) <= huge(1.0_dp))) &

@@ -40,10 +40,10 @@ module seispulse_walls_one_term
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
                                 SEISPULSE_NO_BRACKET, SEISPULSE_NO_CONVERGENCE, set_error, &
                                 real_str, int_str, outside
-    use seispulse_special, only: expm1, log1p, exp_expm1
+    use seispulse_special, only: expm1, log1p, exp_expm1, pi
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_walls_common, only: wall_psi_t, wall_psi, check_nu, check_delta, &
-                                      check_omega_ratio, sqrt_branch, resonance_error, wall_pi, &
+                                      check_omega_ratio, sqrt_branch, resonance_error, &
                                       inv_one_plus_i
     implicit none
     private
@@ -171,12 +171,12 @@ contains
             c%h_ratio = 2.0_dp/3.0_dp
         case (SHAPE_SINE)
             ! Table 2.1: int Phi'^2 = pi^2/8, int Phi^2 = 1/2, int Phi = 2/pi, int Phi eta = 4/pi^2
-            c%a_oc = 0.5_dp*wall_pi
-            c%l_factor = 4.0_dp/wall_pi
+            c%a_oc = 0.5_dp*pi
+            c%l_factor = 4.0_dp/pi
             c%mass_factor = 1.0_dp
-            c%s0 = 2.0_dp/wall_pi
-            c%s1 = 4.0_dp/wall_pi**2
-            c%h_ratio = 2.0_dp/wall_pi
+            c%s0 = 2.0_dp/pi
+            c%s1 = 4.0_dp/pi**2
+            c%h_ratio = 2.0_dp/pi
         case default
             ! (2.69a-c) with the power-law shape (2.68); SHAPE_PARABOLIC is n = 0 exactly
             a2 = 1.5_dp*(5.0_dp - n)*(1.0_dp + n)/(3.0_dp - n)
@@ -199,7 +199,7 @@ contains
         case (SHAPE_LINEAR)
             phi = eta
         case (SHAPE_SINE)
-            phi = sin(0.5_dp*wall_pi*eta)
+            phi = sin(0.5_dp*pi*eta)
         case default
             ! (2.68) 1 - (1 - eta)^(2 - n), as -expm1 near the base (small eta)
             if (eta >= 1.0_dp) then
@@ -483,7 +483,7 @@ contains
         type(one_term_shape_t), intent(in) :: c
         complex(dp) :: s
         real(dp) :: w
-        w = 0.5_dp*wall_pi*omega_ratio     ! omega H/V_SH (omega_ref convention)
+        w = 0.5_dp*pi*omega_ratio     ! omega H/V_SH (omega_ref convention)
         if (w <= big_w) then
             ! a_oc^2 and W^2 rounded alike: exactly 0 at the sine cut-off omega_ratio = 1
             s = sqrt_branch(cmplx(c%a_oc**2, 0.0_dp, dp) - &
@@ -638,14 +638,14 @@ contains
         if (stat /= SEISPULSE_SUCCESS) return
         call check_omega_ratio(omega_ratio, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        w = 0.5_dp*wall_pi*omega_ratio
+        w = 0.5_dp*pi*omega_ratio
         if (w <= big_w) then
             d = w*w*sc%mass_factor - sc%a_oc**2
         else
             d = sc%mass_factor - (sc%a_oc**2/w)/w
         end if
         if (d < 0.0_dp .or. .not. (w > 0.0_dp)) then
-            ratio_c = sc%a_oc/sqrt(sc%mass_factor)/(0.5_dp*wall_pi)
+            ratio_c = sc%a_oc/sqrt(sc%mass_factor)/(0.5_dp*pi)
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'omega_ratio = '// &
                            real_str(omega_ratio)//': the dashpot (2.111) holds above the '// &
                            'cut-off omega_ratio = '//real_str(ratio_c)//'; below it use the '// &
@@ -707,12 +707,12 @@ contains
         phi = omega_ratio/odd
         if (phi <= 1.0_dp) then
             root = sqrt_branch(cmplx((1.0_dp - phi)*(1.0_dp + phi), delta, dp))
-            k = (odd*0.5_dp*wall_pi*psi%o)*(sqrt(cmplx(1.0_dp, delta, dp))*root)
+            k = (odd*0.5_dp*pi*psi%o)*(sqrt(cmplx(1.0_dp, delta, dp))*root)
         else
             ! phi sqrt((1/phi - 1)(1/phi + 1) + i delta/phi^2): no overflow of phi^2
             r = 1.0_dp/phi
             root = sqrt_branch(cmplx((r - 1.0_dp)*(r + 1.0_dp), (delta*r)*r, dp))
-            k = (0.5_dp*wall_pi*psi%o*omega_ratio)*(sqrt(cmplx(1.0_dp, delta, dp))*root)
+            k = (0.5_dp*pi*psi%o*omega_ratio)*(sqrt(cmplx(1.0_dp, delta, dp))*root)
         end if
     end subroutine winkler_vy
 

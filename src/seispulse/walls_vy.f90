@@ -31,15 +31,16 @@
 !> few 1e-16 A. The number of terms is bounded before summing (q, m: from the tail bound
 !> with |partial sum| >= |r_1|, about 1.3e5 at worst: omega_ratio 1e4, tol 1e-15). The
 !> pressure and field series stop at 4 million (2 million odd terms) and return
-!> SEISPULSE_NO_CONVERGENCE if that is not enough (only for a tight tol with a large
-!> omega_ratio, e.g. tol 1e-15 at omega_ratio 500; tol 1e-12 is fine there).
+!> SEISPULSE_NO_CONVERGENCE if that is not enough: a tight tol with a large omega_ratio
+!> (tol 1e-15 at omega_ratio 500; tol 1e-12 is fine there), and even the default tol
+!> 1e-10 above omega_ratio of about 7000 (q and m go to 1e4).
 module seispulse_walls_vy
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
                                 SEISPULSE_NO_CONVERGENCE, set_error, real_str, int_str, outside
-    use seispulse_special, only: expm1, exp_expm1
+    use seispulse_special, only: expm1, exp_expm1, pi
     use seispulse_walls_common, only: wall_psi_t, wall_psi, check_delta, &
-                                      check_omega_ratio, sqrt_branch, resonance_error, wall_pi, &
+                                      check_omega_ratio, sqrt_branch, resonance_error, &
                                       inv_one_plus_i
     implicit none
     private
@@ -54,12 +55,12 @@ module seispulse_walls_vy
     !> expansion applies.
     real(dp), parameter :: vy_max_omega_ratio = 1.0e4_dp
 
-    real(dp), parameter :: pi = wall_pi
     real(dp), parameter :: ln2 = 0.6931471805599453094172321214581766_dp
     !> Floor of |sum_M| relative to |sum_Q| in the tolerance on m (see module doc).
     real(dp), parameter :: m_floor = 1.0e-3_dp
     !> Hard cap on the last mode number of the pressure and field series.
     integer, parameter :: n_hard = 4000001
+    real(dp), parameter :: vy_max_x = 1.0e6_dp   !! largest x/H of vy_fields
 
     !> Coefficients c_k of (1 - z)^(-1/2) = sum_k c_k z^k, c_k = binom(2k, k)/4^k (k = 0..3);
     !> they decrease, so |sum_{k>=K} c_k z^k| <= c_K |z|^K/(1 - |z|).
@@ -240,7 +241,8 @@ contains
             if (stat /= SEISPULSE_SUCCESS) then
                 call set_error(stat, errmsg, SEISPULSE_NO_CONVERGENCE, 'tol = '// &
                                real_str(tol)//': the pressure series at y('//int_str(i)// &
-                               ') needs more than '//int_str(n_hard)//' terms; raise tol')
+                               ') needs modes beyond n = '//int_str(n_hard)// &
+                               ' (2 million terms); raise tol')
                 return
             end if
             p(i) = (8.0_dp*psi%sigma/pi**2)*ss + (0.0_dp, 0.0_dp)
@@ -298,19 +300,15 @@ contains
             if (stat /= SEISPULSE_SUCCESS) then
                 call set_error(stat, errmsg, SEISPULSE_NO_CONVERGENCE, 'tol = '// &
                                real_str(tol)//': the field series at x('//int_str(i)// &
-                               ') need more than '//int_str(n_hard)//' terms; raise tol')
+                               ') need modes beyond n = '//int_str(n_hard)// &
+                               ' (2 million terms); raise tol')
                 return
             end if
             sigma_x(i) = -(8.0_dp*psi%sigma/pi**2)*ss
             v(i) = (16.0_dp*psi%v/pi**3)*gfac*sv
-            if (x(i) > 0.0_dp) then
-                u(i) = -(16.0_dp/pi**3)*gfac*su
-                tau(i) = -(8.0_dp/pi**2)*st
-            else
-                ! at the wall: u = 0, tau = -(8/pi^2) kappa pi^2 y/8 = -kappa y (2.33)
-                u(i) = (0.0_dp, 0.0_dp)
-                tau(i) = cmplx(0.0_dp - pt%kappa*abs(y(i)), 0.0_dp, dp)
-            end if
+            ! at the wall point_sums gives su = 0 and st = kappa pi t/4: u = 0, tau = -kappa y
+            u(i) = -(16.0_dp/pi**3)*gfac*su
+            tau(i) = -(8.0_dp/pi**2)*st
             ! + (0, 0) turns a -0.0 (products with zero sums at y = 0) into +0.0
             u(i) = u(i) + (0.0_dp, 0.0_dp)
             v(i) = v(i) + (0.0_dp, 0.0_dp)
@@ -377,9 +375,10 @@ contains
         stat = SEISPULSE_SUCCESS
         do i = 1, size(y)
             if (with_x) then
-                if (outside(x(i), 0.0_dp, huge(1.0_dp), .false., .false.)) then
+                ! beyond 1e6 H the undamped radiating phase is meaningless and a_n x overflows
+                if (outside(x(i), 0.0_dp, vy_max_x, .false., .false.)) then
                     call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'x('//int_str(i)// &
-                                   ') = '//real_str(x(i))//': x/H must be finite and >= 0')
+                                   ') = '//real_str(x(i))//': x/H must lie in [0, 1e6]')
                     return
                 end if
             end if

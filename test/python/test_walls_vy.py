@@ -497,6 +497,11 @@ def test_bad_input_rigid(kwargs, name):
 def test_bad_input_arrays():
     with pytest.raises(InvalidInputError, match=r"^omega_ratio\[1\]"):
         W.vy_rigid([0.5, NAN], 0.1, NU)
+    # element by element (arrays of delta): the same index in the message
+    with pytest.raises(InvalidInputError, match=r"^omega_ratio\[1\] = NaN"):
+        W.vy_rigid([0.5, NAN], [0.1, 0.1], NU)
+    with pytest.raises(InvalidInputError, match=r"^delta\[0\] = -0.1"):
+        W.vy_rigid([0.5, 1.0], [-0.1, 0.1], NU)
     with pytest.raises(InvalidInputError, match=r"^omega_ratios\[2\]"):
         W.vy_sweep([0.5, 1.0, -2.0], 0.1, NU)
     with pytest.raises(InvalidInputError, match=r"^y\[1\]"):
@@ -511,6 +516,10 @@ def test_bad_input_arrays():
         W.vy_fields(1.0, 0.1, NU, math.inf, 0.5)
     with pytest.raises(InvalidInputError, match=r"^x\[0\]"):
         W.vy_fields(1.0, 0.1, NU, NAN, 0.5)
+    # far beyond 1e6 H, a_n x would overflow (NaN fields with no error before the cap)
+    with pytest.raises(InvalidInputError, match=r"^x\[0\].*\[0, 1e6\]"):
+        W.vy_fields(2.5, 0.0, NU, 1e308, 0.5)
+    assert np.isfinite(W.vy_fields(2.5, 0.0, NU, 1e6, 0.5).u)
     with pytest.raises(InvalidInputError, match=r"^y\[1\]"):
         W.vy_fields(1.0, 0.1, NU, 0.5, [0.5, 2.0])
     with pytest.raises(InvalidInputError, match=r"x \(2,\), y \(3,\)"):
