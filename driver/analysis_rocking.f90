@@ -8,7 +8,7 @@
 !> addition: it will be a group of its own, used instead of &pulse.
 !> Tables <output>_rocking (what = 'summary'), <output>_rocking_history ('history') or
 !> <output>_rocking_map ('map'). The numbers come from seispulse_rocking_sim (the
-!> integrator, any pulse) and seispulse_rocking (the linearized closed forms of the
+!> integrator, any pulse) and seispulse_rocking_closed (the linearized closed forms of the
 !> half-cycle exponential pulse, shown side by side); the driver only reads, checks,
 !> converts units and writes.
 module driver_rocking
@@ -20,7 +20,7 @@ module driver_rocking
                          PULSE_EXPONENTIAL, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
                          PULSE_RICKER, PULSE_MP
     use seispulse_errors, only: real_str, int_str
-    use seispulse_rocking, only: rocking_summary, rocking_region_name
+    use seispulse_rocking_closed, only: rocking_summary, rocking_region_name
     use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rectangular_block, &
                                      symmetric_block, rocking_block_validate, rock_pulse, &
                                      overturning_map, ROCK_RUN_TIME_LIMIT
@@ -500,7 +500,7 @@ contains
         comments(7) = region_legend()
         if (cf) then
             comments(8) = 'closed forms (_cf): linearized model (rocking.md 2.4-2.35, ' &
-                          //'seispulse_rocking), half-cycle exponential pulse, beta = ' &
+                          //'seispulse_rocking_closed), half-cycle exponential pulse, beta = ' &
                           //real_str(beta_cf)//', f = p t_d, eta = alpha/(A_g/g)'
         else
             comments(8) = 'closed forms (_cf): NaN, they exist for the half-cycle ' &

@@ -17,19 +17,19 @@
 !> scaled or analysed fails its rows (NaN results, status 1; the message goes to
 !> stderr and into the headers) and the other records are still computed; run_sdof
 !> then returns SDOF_ROWS_FAILED and the driver exits with status 1 after writing the
-!> tables. The numbers come from seispulse_records and seispulse_sdof; the driver only
+!> tables. The numbers come from seispulse_records and seispulse_sdof_sim; the driver only
 !> reads, checks and writes.
 !>
 !> Analysis 'sdof_beta': group &sdof_beta (frequency ratios theta/omega as a list or a
 !> range, the damping parameters gamma = 2 zeta, the damping model); table
 !> <output>_sdof_beta, beta (Eq. 2.17/2.20) and the cosine law's 2|beta| (after Eq. 2.21;
 !> the from-rest maximum only for gamma = 0)
-!> from seispulse_sdof_pulse's dynamic_coefficient.
+!> from seispulse_sdof_closed's dynamic_coefficient.
 !>
 !> Analysis 'sdof_shock': groups &pulse (driver_pulse_group, as in 'pulse' and
 !> 'sliding') and &sdof_shock (t_d/T ratios or periods, damping ratios); table
 !> <output>_sdof_shock, the spectra of the closed-form response from rest (free
-!> vibration after the pulse included) from seispulse_sdof_pulse's sdof_pulse_spectrum,
+!> vibration after the pulse included) from seispulse_sdof_closed's sdof_pulse_spectrum,
 !> also divided by the pulse's peak ground acceleration.
 module driver_sdof
     use, intrinsic :: iso_fortran_env, only: output_unit
@@ -38,9 +38,9 @@ module driver_sdof
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_SINGULAR, int_str, outside
     use seispulse_records, only: record_format_name
-    use seispulse_sdof, only: sdof_spectrum, pseudo_spectra, sdof_response, design_envelope, &
+    use seispulse_sdof_sim, only: sdof_spectrum, pseudo_spectra, sdof_response, design_envelope, &
                               spectral_shape, SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES
-    use seispulse_sdof_pulse, only: dynamic_coefficient, sdof_pulse_spectrum, &
+    use seispulse_sdof_closed, only: dynamic_coefficient, sdof_pulse_spectrum, &
                                     pulse_peak_accel, BETA_HYSTERETIC, BETA_VISCOUS
     use seispulse_pulses, only: pulse_kind_name, PULSE_RICKER, PULSE_MP
     use driver_namelist_scan, only: nml_group

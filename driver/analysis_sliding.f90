@@ -5,8 +5,8 @@
 !> Groups: &pulse (driver_pulse_group), &block (friction, slope, sweeps), &method
 !> (closed forms or the event-driven integrator) and &history (optional time
 !> histories). Tables <output>_sliding and, with &history, <output>_sliding_history.
-!> The numbers come from seispulse_sliding (closed forms, exponential pulse) and
-!> seispulse_stickslip (any pulse); the driver only reads, checks, converts units
+!> The numbers come from seispulse_sliding_closed (closed forms, exponential pulse) and
+!> seispulse_sliding_sim (any pulse); the driver only reads, checks, converts units
 !> and writes.
 module driver_sliding
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
@@ -16,9 +16,9 @@ module driver_sliding
                          SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, &
                          PULSE_RICKER, PULSE_MP
     use seispulse_errors, only: real_str
-    use seispulse_sliding, only: block_t, full_cycle_t, block_response, block_response_eta, &
-                                 inclined_resistances, summarize_slides, mode_name
-    use seispulse_stickslip, only: friction_t, stickslip_result_t, stickslip_pulse
+    use seispulse_sliding_closed, only: sliding_block_t, full_cycle_t, block_response, block_response_eta, &
+                                 inclined_resistances, summarize_slides, sliding_mode_name
+    use seispulse_sliding_sim, only: friction_t, stickslip_result_t, stickslip_pulse
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, list_length, &
                             list_item
@@ -75,7 +75,7 @@ module driver_sliding
         real(dp) :: mu = 0.0_dp        !! friction coefficient (NaN: eta given)
         real(dp) :: eta1 = 0.0_dp      !! forward (downhill) resistance / A_g
         real(dp) :: eta2 = 0.0_dp      !! reverse (uphill) resistance / A_g
-        type(block_t) :: r             !! the response (eta1, eta2 of r unused)
+        type(sliding_block_t) :: r             !! the response (eta1, eta2 of r unused)
     end type case_t
 
 contains
@@ -464,7 +464,7 @@ contains
     ! Solvers
     ! ------------------------------------------------------------------------------
 
-    !> Closed forms of seispulse_sliding (exponential pulse, amp > 0).
+    !> Closed forms of seispulse_sliding_closed (exponential pulse, amp > 0).
     subroutine solve_closed(pin, input_mode, c, errmsg)
         type(pulse_input_t), intent(in) :: pin
         integer, intent(in) :: input_mode
@@ -537,7 +537,7 @@ contains
         fr%static_all = static_reverse
     end subroutine integrator_friction
 
-    !> The event-driven integrator of seispulse_stickslip (any pulse).
+    !> The event-driven integrator of seispulse_sliding_sim (any pulse).
     subroutine solve_integrator(pin, input_mode, c, errmsg)
         type(pulse_input_t), intent(in) :: pin
         integer, intent(in) :: input_mode
@@ -565,7 +565,7 @@ contains
             reverse_possible = fr%ay_rev * merge(fr%static_factor, 1.0_dp, fr%static_all) &
                                < abs(pin%p%amp)
         call summarize_slides(res, reverse_possible, f)
-        c%r = block_t(mode=f%mode, eta1=c%eta1, eta2=c%eta2, t_y1=f%tau_y1, t_m1=f%tau_m1, &
+        c%r = sliding_block_t(mode=f%mode, eta1=c%eta1, eta2=c%eta2, t_y1=f%tau_y1, t_m1=f%tau_m1, &
                       u_m1=k1 * f%um1, t_y2=f%tau_y2, t_m2=f%tau_m2, u_m2=k2 * f%um2, &
                       u_res=res%u_final, v_m1=k1 * f%vm1, v_m2=k2 * f%vm2)
         ! u_res along the plane: u_final plus (K - 1) x each slide
@@ -714,7 +714,7 @@ contains
         end do
         legend = 'mode:'
         do m = 0, 5
-            legend = legend//' '//achar(iachar('0') + m)//' '//mode_name(m)
+            legend = legend//' '//achar(iachar('0') + m)//' '//sliding_mode_name(m)
             if (m < 5) legend = legend//','
         end do
         if (input_mode == INPUT_MU .and. along_plane) then
@@ -725,10 +725,10 @@ contains
         end if
         if (closed) then
             comments(1) = 'seispulse analysis sliding: '//pulse_kind_name(pin%code) &
-                          //' pulse, closed forms (seispulse_sliding)'
+                          //' pulse, closed forms (seispulse_sliding_closed)'
         else
             comments(1) = 'seispulse analysis sliding: '//pulse_kind_name(pin%code) &
-                          //' pulse, event-driven integrator (seispulse_stickslip)'
+                          //' pulse, event-driven integrator (seispulse_sliding_sim)'
         end if
         comments(2) = 'input: '//trim(path)
         comments(3) = legend

@@ -20,21 +20,21 @@ module seispulse
                                 PULSE_EXPONENTIAL, PULSE_HALF_SINE, PULSE_SINE_CYCLE, &
                                 PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
                                 PULSE_RICKER, PULSE_MP
-    use seispulse_stickslip, only: friction_t, slide_t, stickslip_result_t, friction_validate, &
+    use seispulse_sliding_sim, only: friction_t, slide_t, stickslip_result_t, friction_validate, &
                                    stickslip_pulse, stickslip_record
-    use seispulse_sliding, only: half_cycle_t, full_cycle_t, block_t, yield_time, half_cycle, &
+    use seispulse_sliding_closed, only: half_cycle_t, full_cycle_t, sliding_block_t, yield_time, half_cycle, &
                                  full_cycle, inclined_resistances, block_response, &
                                  block_response_eta, half_cycle_integrated, &
                                  full_cycle_integrated, summarize_slides, &
                                  eta_critical, eta_critical_regression, &
                                  full_cycle_peak_regression, rectangle_half, rectangle_full, &
-                                 triangle_half, spike_velocity_ratio, regime_name, mode_name, &
-                                 REGIME_NONE, REGIME_FORCED, REGIME_FREE, MODE_NO_SLIDING, &
-                                 MODE_UNILATERAL, MODE_STICK, MODE_SLIP, MODE_STUCK, &
-                                 MODE_REVERSE_ONLY
+                                 triangle_half, spike_velocity_ratio, sliding_regime_name, sliding_mode_name, &
+                                 SLIDING_REGIME_NONE, SLIDING_REGIME_FORCED, SLIDING_REGIME_FREE, SLIDING_MODE_NO_SLIDING, &
+                                 SLIDING_MODE_UNILATERAL, SLIDING_MODE_STICK, SLIDING_MODE_SLIP, SLIDING_MODE_STUCK, &
+                                 SLIDING_MODE_REVERSE_ONLY
     use seispulse_sliding_norm, only: characteristic_length, basic_lengths, &
                                       table_1_2_exponents, table_1_3
-    use seispulse_rocking, only: ROCK_NONE, ROCK_O1, ROCK_O2, ROCK_O3, ROCK_S1, ROCK_S2, &
+    use seispulse_rocking_closed, only: ROCK_NONE, ROCK_O1, ROCK_O2, ROCK_O3, ROCK_S1, ROCK_S2, &
                                  rocking_region_name, uplift_time, rocking_response, &
                                  stability_wall, stability_wall_inverse, overturn_boundary, &
                                  overturn_boundary_inverse, s1_s2_boundary, rocking_classify, &
@@ -57,10 +57,10 @@ module seispulse
                                  newmark_method_name, newmark_mode_code, newmark_method_code, &
                                  NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM, NEWMARK_EXACT, &
                                  NEWMARK_SLAMMER
-    use seispulse_sdof, only: sdof_step_t, sdof_step, sdof_check, sdof_response, sdof_spectrum, &
+    use seispulse_sdof_sim, only: sdof_step_t, sdof_step, sdof_validate, sdof_response, sdof_spectrum, &
                               pseudo_spectra, design_envelope, spectral_shape, sdof_threads, &
                               SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES
-    use seispulse_sdof_pulse, only: dynamic_coefficient, harmonic_response, rect_pulse_response, &
+    use seispulse_sdof_closed, only: dynamic_coefficient, harmonic_response, rect_pulse_response, &
                                     beta_pulse, impulse_max, impulse_response, &
                                     sdof_pulse_response, sdof_pulse_peaks, sdof_pulse_spectrum, &
                                     pulse_peak_accel, BETA_HYSTERETIC, BETA_VISCOUS, &

@@ -7,14 +7,14 @@ program tester
     use test_roots, only: collect_roots
     use test_lapack, only: collect_lapack
     use test_pulses, only: collect_pulses
-    use test_stickslip, only: collect_stickslip
-    use test_sliding, only: collect_sliding
-    use test_rocking, only: collect_rocking
+    use test_sliding_sim, only: collect_sliding_sim
+    use test_sliding_closed, only: collect_sliding_closed
+    use test_rocking_closed, only: collect_rocking_closed
     use test_rocking_sim, only: collect_rocking_sim
     use test_records, only: collect_records
     use test_newmark, only: collect_newmark
-    use test_sdof, only: collect_sdof
-    use test_sdof_pulse, only: collect_sdof_pulse
+    use test_sdof_sim, only: collect_sdof_sim
+    use test_sdof_closed, only: collect_sdof_closed
     use test_walls_vy, only: collect_walls_vy
     use test_walls_one_term, only: collect_walls_one_term
     use test_codes, only: collect_codes
@@ -44,17 +44,17 @@ program tester
         call collect_pulses(tests)
         call run_suite('pulses', tests, output_unit, npass, nfail)
     end if
-    if (selected('stickslip')) then
-        call collect_stickslip(tests)
-        call run_suite('stickslip', tests, output_unit, npass, nfail)
+    if (selected('sliding_sim')) then
+        call collect_sliding_sim(tests)
+        call run_suite('sliding_sim', tests, output_unit, npass, nfail)
     end if
-    if (selected('sliding')) then
-        call collect_sliding(tests)
-        call run_suite('sliding', tests, output_unit, npass, nfail)
+    if (selected('sliding_closed')) then
+        call collect_sliding_closed(tests)
+        call run_suite('sliding_closed', tests, output_unit, npass, nfail)
     end if
-    if (selected('rocking')) then
-        call collect_rocking(tests)
-        call run_suite('rocking', tests, output_unit, npass, nfail)
+    if (selected('rocking_closed')) then
+        call collect_rocking_closed(tests)
+        call run_suite('rocking_closed', tests, output_unit, npass, nfail)
     end if
     if (selected('rocking_sim')) then
         call collect_rocking_sim(tests)
@@ -68,13 +68,13 @@ program tester
         call collect_newmark(tests)
         call run_suite('newmark', tests, output_unit, npass, nfail)
     end if
-    if (selected('sdof')) then
-        call collect_sdof(tests)
-        call run_suite('sdof', tests, output_unit, npass, nfail)
+    if (selected('sdof_sim')) then
+        call collect_sdof_sim(tests)
+        call run_suite('sdof_sim', tests, output_unit, npass, nfail)
     end if
-    if (selected('sdof_pulse')) then
-        call collect_sdof_pulse(tests)
-        call run_suite('sdof_pulse', tests, output_unit, npass, nfail)
+    if (selected('sdof_closed')) then
+        call collect_sdof_closed(tests)
+        call run_suite('sdof_closed', tests, output_unit, npass, nfail)
     end if
     if (selected('walls_vy')) then
         call collect_walls_vy(tests)

@@ -1,7 +1,7 @@
 !> Newmark rigid-block sliding on records: the exact rule against the event-driven
-!> integrator of seispulse_stickslip (slides, extremes, histories), exactness on
+!> integrator of seispulse_sliding_sim (slides, extremes, histories), exactness on
 !> piecewise-linear input (triangles, linear upsampling), second-order convergence to
-!> the exponential-pulse closed forms of seispulse_sliding, SLAMMER's loop against its
+!> the exponential-pulse closed forms of seispulse_sliding_closed, SLAMMER's loop against its
 !> closed form for constant acceleration and its first-order convergence to the exact
 !> answer, the incline factors, and bad input. (SLAMMER 1.1's own 180 results are
 !> checked in test/python/test_newmark_slammer.py, with the records of pyslammer.)
@@ -10,9 +10,9 @@ module test_newmark
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT
     use seispulse_pulses, only: pulse_eval, triangular_pulse, exp_pulse
-    use seispulse_stickslip, only: friction_t, stickslip_result_t, stickslip_record, &
+    use seispulse_sliding_sim, only: friction_t, stickslip_result_t, stickslip_record, &
                                    stickslip_pulse
-    use seispulse_sliding, only: full_cycle_t, half_cycle_t, full_cycle, half_cycle, &
+    use seispulse_sliding_closed, only: full_cycle_t, half_cycle_t, full_cycle, half_cycle, &
                                  inclined_resistances
     use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, &
                                  newmark_incline, NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM, &
@@ -300,7 +300,7 @@ contains
 
     !> Full-cycle exponential pulse (A_g = 1 g, t_d = 1 s, g = 1: u in A_g t_d^2) sampled
     !> at t_d/N: the peak and residual slips of mode 'both' and the peak of mode 'down'
-    !> under one lobe converge to the closed forms of seispulse_sliding at second order.
+    !> under one lobe converge to the closed forms of seispulse_sliding_closed at second order.
     subroutine test_exp_convergence(error)
         type(test_error), allocatable, intent(out) :: error
         real(dp) :: betas(3) = [-pi, 0.4_dp, 2.0_dp], etas(2) = [0.3_dp, 0.55_dp]

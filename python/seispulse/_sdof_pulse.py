@@ -1,5 +1,5 @@
 """Closed forms of the linear oscillator under base motion (Fortran module
-``seispulse_sdof_pulse``; oscillator.md, seed 003). Users reach these functions as
+``seispulse_sdof_closed``; oscillator.md, seed 003). Users reach these functions as
 ``seispulse.sdof.<name>``.
 
 The oscillator (natural period ``period`` = T, omega = 2 pi / T, viscous damping ratio

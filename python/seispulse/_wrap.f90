@@ -94,14 +94,14 @@ subroutine sp_pulse_kind(name, kind, stat, errmsg)
 end subroutine sp_pulse_kind
 
 ! ---------------------------------------------------------------------------------
-! Sliding block (seispulse_sliding); every array has length n (broadcast in Python)
+! Sliding block (seispulse_sliding_closed); every array has length n (broadcast in Python)
 ! ---------------------------------------------------------------------------------
 
 !> Onset time (Eq. 1.12, 1.34).
 subroutine sp_yield_time(n, eta, beta, sfac, tau_y, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding, only: yield_time
+    use seispulse_sliding_closed, only: yield_time
     implicit none
     integer, intent(in) :: n
     real(dp), intent(in) :: eta(n), beta(n), sfac(n)
@@ -122,7 +122,7 @@ subroutine sp_half_cycle(n, eta, beta, sfac, method, tau_y, tau_m, regime, um, d
                          stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding, only: half_cycle, half_cycle_integrated, half_cycle_t
+    use seispulse_sliding_closed, only: half_cycle, half_cycle_integrated, half_cycle_t
     implicit none
     integer, intent(in) :: n, method
     real(dp), intent(in) :: eta(n), beta(n), sfac(n)
@@ -156,7 +156,7 @@ subroutine sp_full_cycle(n, eta1, eta2, beta, sfac, static_reverse, method, mode
                          errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding, only: full_cycle, full_cycle_integrated, full_cycle_t
+    use seispulse_sliding_closed, only: full_cycle, full_cycle_integrated, full_cycle_t
     implicit none
     integer, intent(in) :: n, static_reverse, method
     real(dp), intent(in) :: eta1(n), eta2(n), beta(n), sfac(n)
@@ -186,7 +186,7 @@ end subroutine sp_full_cycle
 subroutine sp_inclined(n, mu, ag, slope, xi, eta1, eta2, k1, k2, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding, only: inclined_resistances
+    use seispulse_sliding_closed, only: inclined_resistances
     implicit none
     integer, intent(in) :: n
     real(dp), intent(in) :: mu(n), ag(n), slope(n), xi(n)
@@ -207,7 +207,7 @@ end subroutine sp_inclined
 subroutine sp_eta_critical(n, beta, method, eta_cr, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding, only: eta_critical, eta_critical_regression
+    use seispulse_sliding_closed, only: eta_critical, eta_critical_regression
     implicit none
     integer, intent(in) :: n, method
     real(dp), intent(in) :: beta(n)
@@ -232,7 +232,7 @@ end subroutine sp_eta_critical
 !> 4 spike (vm), 5 regression 1.30 (um/D_g; beta in out(:, 1) on entry). eta in (0, 1).
 subroutine sp_limit_form(n, which, eta, out)
     use seispulse_kinds, only: dp
-    use seispulse_sliding, only: rectangle_half, rectangle_full, triangle_half, &
+    use seispulse_sliding_closed, only: rectangle_half, rectangle_full, triangle_half, &
                                  spike_velocity_ratio, full_cycle_peak_regression
     implicit none
     integer, intent(in) :: n, which
@@ -260,7 +260,7 @@ subroutine sp_block(n, mu, ag, td, beta, full, slope, xi, sfac, static_reverse, 
                     g, mode, out, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding, only: block_response, block_t
+    use seispulse_sliding_closed, only: block_response, sliding_block_t
     implicit none
     integer, intent(in) :: n, full, static_reverse, along_plane
     real(dp), intent(in) :: mu(n), ag(n), td(n), beta(n), slope(n), xi(n), sfac(n), g
@@ -268,7 +268,7 @@ subroutine sp_block(n, mu, ag, td, beta, full, slope, xi, sfac, static_reverse, 
     real(dp), intent(out) :: out(n, 11)
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg
-    type(block_t) :: r
+    type(sliding_block_t) :: r
     integer :: i
     errmsg = ''
     stat = SEISPULSE_SUCCESS
@@ -374,7 +374,7 @@ subroutine sp_table_1_3(n, beta, full, ratios, stat, errmsg)
 end subroutine sp_table_1_3
 
 ! ---------------------------------------------------------------------------------
-! Stick-slip integrator (seispulse_stickslip)
+! Stick-slip integrator (seispulse_sliding_sim)
 ! ---------------------------------------------------------------------------------
 
 !> One run under a pulse (kind > 0, params packed as in pulse_from_params) or a record
@@ -386,7 +386,7 @@ subroutine sp_stickslip(kind, params, nrec, accel, dt, ay_fwd, ay_rev, sfac, sta
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_pulses, only: pulse_from_params
-    use seispulse_stickslip, only: friction_t, stickslip_result_t, stickslip_pulse, &
+    use seispulse_sliding_sim, only: friction_t, stickslip_result_t, stickslip_pulse, &
                                    stickslip_record
     implicit none
     integer, intent(in) :: kind, nrec, static_all, ngrid, nmax
@@ -429,14 +429,14 @@ subroutine sp_stickslip(kind, params, nrec, accel, dt, ay_fwd, ay_rev, sfac, sta
 end subroutine sp_stickslip
 
 ! ---------------------------------------------------------------------------------
-! Rocking blocks: linearized closed forms (seispulse_rocking)
+! Rocking blocks: linearized closed forms (seispulse_rocking_closed)
 ! ---------------------------------------------------------------------------------
 
 !> Everything of the first excursion per case: region, tau_up, tau_c, tau_m, psi_max, tau_i.
 subroutine sp_rocking_summary(n, f, eta, beta, region, out, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_rocking, only: rocking_summary
+    use seispulse_rocking_closed, only: rocking_summary
     implicit none
     integer, intent(in) :: n
     real(dp), intent(in) :: f(n), eta(n), beta(n)
@@ -458,7 +458,7 @@ end subroutine sp_rocking_summary
 subroutine sp_rocking_extremes(n, f, eta, beta, region, psi_max, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_rocking, only: rocking_extremes
+    use seispulse_rocking_closed, only: rocking_extremes
     implicit none
     integer, intent(in) :: n
     real(dp), intent(in) :: f(n), eta(n), beta(n)
@@ -479,7 +479,7 @@ end subroutine sp_rocking_extremes
 subroutine sp_rocking_response(n, tau, f, eta, beta, psi, dpsi, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_rocking, only: rocking_response
+    use seispulse_rocking_closed, only: rocking_response
     implicit none
     integer, intent(in) :: n
     real(dp), intent(in) :: tau(n), f(n), eta(n), beta(n)
@@ -501,7 +501,7 @@ end subroutine sp_rocking_response
 subroutine sp_rocking_curve(n, which, x, beta, y, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_rocking, only: uplift_time, stability_wall, stability_wall_inverse, &
+    use seispulse_rocking_closed, only: uplift_time, stability_wall, stability_wall_inverse, &
                                  overturn_boundary, overturn_boundary_inverse, s1_s2_boundary
     implicit none
     integer, intent(in) :: n, which
@@ -538,7 +538,7 @@ end subroutine sp_rocking_curve
 !> Normalized rectangle forms (2.27, corrected 2.30, corrected 2.35); 0 < fbar < 1, 0 < eta < 1.
 subroutine sp_rocking_rect_normalized(n, fbar, eta, out)
     use seispulse_kinds, only: dp
-    use seispulse_rocking, only: rect_time_of_max_normalized, rect_max_rotation_normalized, &
+    use seispulse_rocking_closed, only: rect_time_of_max_normalized, rect_max_rotation_normalized, &
                                  rect_impact_time_normalized
     implicit none
     integer, intent(in) :: n

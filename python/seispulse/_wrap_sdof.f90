@@ -5,7 +5,7 @@
 !> Response history at the samples: z (m), z' (m/s), a_abs (g).
 subroutine sp_sdof_response(n, accel, dt, period, damping, g, disp, vel, acc, stat, errmsg)
     use seispulse_kinds, only: dp
-    use seispulse_sdof, only: sdof_response
+    use seispulse_sdof_sim, only: sdof_response
     implicit none
     integer, intent(in) :: n
     real(dp), intent(in) :: accel(n), dt, period, damping, g
@@ -21,7 +21,7 @@ end subroutine sp_sdof_response
 subroutine sp_sdof_spectrum(n, accel, dt, np, periods, nd, dampings, g, peaks, threads, &
                             sd, sv, sa, psv, psa, t_sd, t_sv, t_sa, stat, errmsg)
     use seispulse_kinds, only: dp
-    use seispulse_sdof, only: sdof_spectrum, pseudo_spectra
+    use seispulse_sdof_sim, only: sdof_spectrum, pseudo_spectra
     implicit none
     integer, intent(in) :: n, np, nd
     real(dp), intent(in) :: accel(n), dt, periods(np), dampings(nd), g
@@ -47,7 +47,7 @@ end subroutine sp_sdof_spectrum
 
 !> Default number of OpenMP threads of a spectrum (1 without OpenMP).
 subroutine sp_sdof_threads(n)
-    use seispulse_sdof, only: sdof_threads
+    use seispulse_sdof_sim, only: sdof_threads
     implicit none
     integer, intent(out) :: n
     n = sdof_threads()
@@ -56,7 +56,7 @@ end subroutine sp_sdof_threads
 !> Design envelope (period, spectrum) -> env, with the short-period plateau.
 subroutine sp_design_envelope(np, ns, periods, spectra, plateau_below, env, stat, errmsg)
     use seispulse_kinds, only: dp
-    use seispulse_sdof, only: design_envelope
+    use seispulse_sdof_sim, only: design_envelope
     implicit none
     integer, intent(in) :: np, ns
     real(dp), intent(in) :: periods(np), spectra(np, ns), plateau_below
@@ -71,7 +71,7 @@ end subroutine sp_design_envelope
 !> Normalized shape PSA/PGA, the period of its peak and the peak.
 subroutine sp_spectral_shape(np, periods, psa, pga, shape, t_peak, peak, stat, errmsg)
     use seispulse_kinds, only: dp
-    use seispulse_sdof, only: spectral_shape
+    use seispulse_sdof_sim, only: spectral_shape
     implicit none
     integer, intent(in) :: np
     real(dp), intent(in) :: periods(np), psa(np), pga

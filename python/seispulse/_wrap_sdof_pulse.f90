@@ -1,4 +1,4 @@
-!> Thin f2py layer of seispulse_sdof_pulse (linear oscillator closed forms): plain external
+!> Thin f2py layer of seispulse_sdof_closed (linear oscillator closed forms): plain external
 !> subroutines, explicit-shape arrays, int flags, `stat` + `errmsg` out, no numerics.
 !> Pulses arrive as (kind, params(9)) packed as in pulse_from_params.
 
@@ -6,7 +6,7 @@
 subroutine sp_dynamic_coefficient(n, ratio, gamma, model, beta, beta_cos, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sdof_pulse, only: dynamic_coefficient
+    use seispulse_sdof_closed, only: dynamic_coefficient
     implicit none
     integer, intent(in) :: n, model
     real(dp), intent(in) :: ratio(n), gamma(n)
@@ -28,7 +28,7 @@ end subroutine sp_dynamic_coefficient
 subroutine sp_harmonic_response(n, t, w0, period, ratio, damping, law, transient, z, v, a, &
                                 stat, errmsg)
     use seispulse_kinds, only: dp
-    use seispulse_sdof_pulse, only: harmonic_response
+    use seispulse_sdof_closed, only: harmonic_response
     implicit none
     integer, intent(in) :: n, law, transient
     real(dp), intent(in) :: t(n), w0, period, ratio, damping
@@ -43,7 +43,7 @@ end subroutine sp_harmonic_response
 !> Undamped rectangular pulse, book forms.
 subroutine sp_rect_pulse_response(n, t, w0, t1, period, z, v, a, stat, errmsg)
     use seispulse_kinds, only: dp
-    use seispulse_sdof_pulse, only: rect_pulse_response
+    use seispulse_sdof_closed, only: rect_pulse_response
     implicit none
     integer, intent(in) :: n
     real(dp), intent(in) :: t(n), w0, t1, period
@@ -58,7 +58,7 @@ end subroutine sp_rect_pulse_response
 subroutine sp_beta_pulse(n, x, variant, beta, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sdof_pulse, only: beta_pulse
+    use seispulse_sdof_closed, only: beta_pulse
     implicit none
     integer, intent(in) :: n, variant
     real(dp), intent(in) :: x(n)
@@ -79,7 +79,7 @@ end subroutine sp_beta_pulse
 subroutine sp_impulse_max(n, jw, period, damping, zmax, tmax, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sdof_pulse, only: impulse_max
+    use seispulse_sdof_closed, only: impulse_max
     implicit none
     integer, intent(in) :: n
     real(dp), intent(in) :: jw(n), period(n), damping(n)
@@ -100,7 +100,7 @@ end subroutine sp_impulse_max
 !> Response to an instantaneous acceleration impulse.
 subroutine sp_impulse_response(n, t, jw, period, damping, z, v, a, stat, errmsg)
     use seispulse_kinds, only: dp
-    use seispulse_sdof_pulse, only: impulse_response
+    use seispulse_sdof_closed, only: impulse_response
     implicit none
     integer, intent(in) :: n
     real(dp), intent(in) :: t(n), jw, period, damping
@@ -115,7 +115,7 @@ end subroutine sp_impulse_response
 subroutine sp_sdof_pulse_response(kind, params, period, damping, n, t, z, v, a, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_pulses, only: pulse_from_params
-    use seispulse_sdof_pulse, only: sdof_pulse_response
+    use seispulse_sdof_closed, only: sdof_pulse_response
     implicit none
     integer, intent(in) :: kind, n
     real(dp), intent(in) :: params(9), period, damping, t(n)
@@ -131,7 +131,7 @@ end subroutine sp_sdof_pulse_response
 subroutine sp_sdof_pulse_peaks(kind, params, period, damping, out, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_pulses, only: pulse_from_params
-    use seispulse_sdof_pulse, only: sdof_pulse_peaks
+    use seispulse_sdof_closed, only: sdof_pulse_peaks
     implicit none
     integer, intent(in) :: kind
     real(dp), intent(in) :: params(9), period, damping
@@ -148,7 +148,7 @@ subroutine sp_sdof_pulse_spectrum(kind, params, n, periods, damping, sd, sv, sa,
                                   stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_pulses, only: pulse_from_params
-    use seispulse_sdof_pulse, only: sdof_pulse_spectrum
+    use seispulse_sdof_closed, only: sdof_pulse_spectrum
     implicit none
     integer, intent(in) :: kind, n
     real(dp), intent(in) :: params(9), periods(n), damping
@@ -164,7 +164,7 @@ end subroutine sp_sdof_pulse_spectrum
 subroutine sp_pulse_peak_accel(kind, params, amax, tmax, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_pulses, only: pulse_from_params
-    use seispulse_sdof_pulse, only: pulse_peak_accel
+    use seispulse_sdof_closed, only: pulse_peak_accel
     implicit none
     integer, intent(in) :: kind
     real(dp), intent(in) :: params(9)

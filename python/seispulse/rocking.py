@@ -1,5 +1,5 @@
 """Rocking and overturning of free-standing rigid blocks (seed 000, chapter 2,
-corrected; Fortran modules ``seispulse_rocking`` and ``seispulse_rocking_sim``).
+corrected; Fortran modules ``seispulse_rocking_closed`` and ``seispulse_rocking_sim``).
 
 Linearized closed forms under the half-cycle exponential pulse, dimensionless as in the
 chapter: ``f = p t_d`` (the printed ``f = p/t_d`` is an erratum), ``eta = alpha /

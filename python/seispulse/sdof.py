@@ -1,6 +1,6 @@
 """The linear oscillator: closed forms under base motion, exact response histories
-and response spectra of records (Fortran modules ``seispulse_sdof`` and
-``seispulse_sdof_pulse``; oscillator.md).
+and response spectra of records (Fortran modules ``seispulse_sdof_sim`` and
+``seispulse_sdof_closed``; oscillator.md).
 
 The oscillator (natural period ``T``, viscous damping ratio ``damping`` = zeta; the
 book's gamma = 2 zeta) starts from rest under the ground acceleration a_g::

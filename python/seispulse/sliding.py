@@ -1,6 +1,6 @@
 """Rigid block sliding on a frictional plane under the exponential pulse (seed 000,
-chapter 1, corrected; Fortran modules ``seispulse_sliding``, ``seispulse_sliding_norm``
-and ``seispulse_stickslip``).
+chapter 1, corrected; Fortran modules ``seispulse_sliding_closed``, ``seispulse_sliding_norm``
+and ``seispulse_sliding_sim``).
 
 Dimensionless, as in the chapter: ``tau = t / t_d``, ``eta = a_y / A_g`` (``mu g / A_g``
 on a horizontal plane), velocities in ``A_g t_d`` or ``V_g``, displacements in

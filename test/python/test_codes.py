@@ -6,7 +6,7 @@ against computations that do not use the library:
   gravity g (1 - kv), inertia kh g; scipy's bounded minimiser refines the best grid
   point) for the active (E.2) and the passive coefficient on a grid psi = 80..110,
   beta = -25..25, delta = 0 and 2/3 phi, kh = 0, 0.2, kv = -0.1, 0.1, phi = 30, 38.
-  Result (recorded in src/seispulse/codes.f90): E.2 and the passive form
+  Result (recorded in src/seispulse/codes/codes.f90): E.2 and the passive form
   sin^2(psi + theta - phi_d) / {cos(theta) sin^2(psi) sin(psi + theta + delta_d)
   [1 - sqrt(sin(phi_d + delta_d) sin(phi_d + beta - theta) / (sin(psi + beta)
   sin(psi + theta + delta_d)))]^2} match the wedge to 1e-9 wherever they are defined;

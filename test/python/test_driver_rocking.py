@@ -418,7 +418,7 @@ EXPONENTIAL = [
 def test_linearized_exponential_integrator_equals_closed_forms(driver, tmp_path, beta, f,
                                                                eta):
     """Half-cycle exponential pulse, linearized model: the integrator's uplift, critical
-    time, maximum and first impact equal the closed forms of seispulse_rocking to 1e-9
+    time, maximum and first impact equal the closed forms of seispulse_rocking_closed to 1e-9
     (two independent methods side by side in one row)."""
     p = math.sqrt(G)                               # r = 1, io_over_mr2 = 1
     td, amp = f / p, 0.1 / eta

@@ -1,4 +1,4 @@
-"""seispulse.sdof closed forms (Fortran seispulse_sdof_pulse) against computations that do
+"""seispulse.sdof closed forms (Fortran seispulse_sdof_closed) against computations that do
 not use the library: scipy.integrate.quad and mpmath quadrature of Duhamel's integral,
 scipy's solve_ivp (DOP853, rtol 1e-12), the ground accelerations written here from their
 definitions; the book's numbers with its errata corrected (oscillator.md); bad input."""

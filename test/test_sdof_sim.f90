@@ -1,21 +1,21 @@
-!> The linear oscillator on records (seispulse_sdof): the exact step against Gauss-
+!> The linear oscillator on records (seispulse_sdof_sim): the exact step against Gauss-
 !> Legendre quadrature of Duhamel's integral over T/dt from 0.05 to 1e5 and damping
 !> 0 to 0.95; the limits T -> 0 (PSA -> PGA) and T -> inf (SD -> peak ground
 !> displacement); the true maxima between samples against a 256x linear upsampling
 !> (which leaves the problem unchanged) and never below the sample maxima; identical
 !> results with 1 and 2 OpenMP threads; the envelope, the shape and bad input.
-module test_sdof
+module test_sdof_sim
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT
-    use seispulse_sdof, only: sdof_response, sdof_spectrum, pseudo_spectra, design_envelope, &
+    use seispulse_sdof_sim, only: sdof_response, sdof_spectrum, pseudo_spectra, design_envelope, &
                               spectral_shape, SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES
     use seispulse_records, only: ground_motion
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
     private
 
-    public :: collect_sdof
+    public :: collect_sdof_sim
 
     real(dp), parameter :: pi = 3.141592653589793238462643383279502884_dp
     real(dp), parameter :: g0 = 9.80665_dp
@@ -23,7 +23,7 @@ module test_sdof
 
 contains
 
-    subroutine collect_sdof(tests)
+    subroutine collect_sdof_sim(tests)
         type(unit_test), allocatable, intent(out) :: tests(:)
         tests = [new_unittest('exact step = Duhamel quadrature (T/dt 0.05..1e5)', &
                               test_duhamel), &
@@ -36,7 +36,7 @@ contains
                               test_threads), &
                  new_unittest('envelope with plateau; normalized shape', test_envelope), &
                  new_unittest('bad input names the parameter', test_bad_input)]
-    end subroutine collect_sdof
+    end subroutine collect_sdof_sim
 
     ! ---------------------------------------------------------------- helpers
 
@@ -456,4 +456,4 @@ contains
                    'infinite period: '//trim(msg))
     end subroutine test_bad_input
 
-end module test_sdof
+end module test_sdof_sim

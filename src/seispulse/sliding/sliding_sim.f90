@@ -34,7 +34,7 @@
 !> `w_grid` all present or all absent, of one size, `t_grid` finite and ascending
 !> (any times: u = 0 before the first onset, u = u_final and u' = 0 after `t_end`);
 !> values come from the same closed forms as the events, not from interpolation.
-module seispulse_stickslip
+module seispulse_sliding_sim
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
                                              ieee_positive_inf
     use seispulse_kinds, only: dp
@@ -643,4 +643,4 @@ contains
         res%t_end = 0.0_dp
     end subroutine empty_result
 
-end module seispulse_stickslip
+end module seispulse_sliding_sim

@@ -6,7 +6,7 @@
 !> one root there, and a sign check at the ends proves whether there is one. Every root
 !> an event-driven integrator looks for in a_g (the onset of sliding, the uplift of a
 !> rocking block, the split where u'' = a_g - s ay changes sign) is then bracketed
-!> by proof, and Brent's method (seispulse_roots) finds the only one. seispulse_stickslip
+!> by proof, and Brent's method (seispulse_roots) finds the only one. seispulse_sliding_sim
 !> and seispulse_rocking_sim both run over these pieces; each loads a piece into its own
 !> ground object, so this module knows nothing of sliding or rocking.
 !>
@@ -248,7 +248,7 @@ contains
     !> (a_g there comes from the closed form). The piece comes back as one derived type,
     !> not as five scalars: gfortran (12, -O2) then stores ta, tb and aa, ab in pairs, as
     !> the callers load them; a pair loaded from two scalar stores misses store-to-load
-    !> forwarding, which made a long record 1.6 times slower in seispulse_stickslip.
+    !> forwarding, which made a long record 1.6 times slower in seispulse_sliding_sim.
     subroutine next_piece(it, accel, caller, piece, found, stat, errmsg)
         type(piece_iter_t), intent(inout) :: it  !! the generator
         real(dp), intent(in) :: accel(:)         !! the record's samples (any size for a pulse)

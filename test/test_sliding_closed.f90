@@ -1,24 +1,24 @@
-!> Sliding-block closed forms (seispulse_sliding, seispulse_sliding_norm): published
+!> Sliding-block closed forms (seispulse_sliding_closed, seispulse_sliding_norm): published
 !> values, the limit shapes in closed form, the corrected equations at points where the
 !> printed ones differ, and the whole grid against the event-driven integrator.
-module test_sliding
+module test_sliding_closed
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, &
                                              ieee_negative_inf, ieee_is_nan
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, real_str
     use seispulse_special, only: pi
     use seispulse_pulses, only: exp_pulse_peaks
-    use seispulse_sliding
+    use seispulse_sliding_closed
     use seispulse_sliding_norm
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
     private
 
-    public :: collect_sliding
+    public :: collect_sliding_closed
 
 contains
 
-    subroutine collect_sliding(tests)
+    subroutine collect_sliding_closed(tests)
         type(unit_test), allocatable, intent(out) :: tests(:)
         tests = [new_unittest('onset 1.12/1.34 and its limits', test_onset), &
                  new_unittest('half cycle: published values', test_half_published), &
@@ -35,7 +35,7 @@ contains
                  new_unittest('normalization: 1.25-1.29, Tables 1.2 and 1.3', test_norm), &
                  new_unittest('bad input names the parameter', test_bad_input), &
                  new_unittest('closed forms = event-driven integrator on the grid', test_grid)]
-    end subroutine collect_sliding
+    end subroutine collect_sliding_closed
 
     subroutine test_onset(error)
         type(test_error), allocatable, intent(out) :: error
@@ -191,7 +191,7 @@ contains
         do i = 1, 5
             call half_cycle(thresholds(i) - 1.0e-4_dp, betas(i), 1.0_dp, lo, stat)
             call half_cycle(thresholds(i) + 1.0e-4_dp, betas(i), 1.0_dp, hi, stat)
-            call check(error, lo%regime == REGIME_FREE .and. hi%regime == REGIME_FORCED, &
+            call check(error, lo%regime == SLIDING_REGIME_FREE .and. hi%regime == SLIDING_REGIME_FORCED, &
                        'regime change at eta* for beta = '//real_str(betas(i)))
             if (allocated(error)) return
             call check(error, lo%tau_m, 1.0_dp, atol=1.0e-3_dp)
@@ -213,7 +213,7 @@ contains
         if (allocated(error)) return
         ! eta >= 1: no sliding, not an error
         call half_cycle(1.0_dp, 0.0_dp, 1.0_dp, r, stat)
-        call check(error, stat == SEISPULSE_SUCCESS .and. r%regime == REGIME_NONE .and. &
+        call check(error, stat == SEISPULSE_SUCCESS .and. r%regime == SLIDING_REGIME_NONE .and. &
                    ieee_is_nan(r%tau_y), 'eta = 1: none')
     end subroutine test_half_threshold
 
@@ -224,7 +224,7 @@ contains
         real(dp) :: b, eta, x3
         integer :: stat
         call full_cycle(0.5_dp, 0.5_dp, -pi, 1.0_dp, .false., r, stat)
-        call check(error, r%mode == MODE_SLIP, 'mode slip')
+        call check(error, r%mode == SLIDING_MODE_SLIP, 'mode slip')
         if (allocated(error)) return
         call check(error, r%tau_y1, 0.1035846_dp, atol=5.0e-8_dp)
         if (allocated(error)) return
@@ -262,7 +262,7 @@ contains
             eta = 0.05_dp * i
             call full_cycle(eta, eta, inf, 1.0_dp, .false., r, stat)
             call rectangle_full(eta, tau_m1, um1, tau_m2, um2, ures)
-            call check(error, r%mode == MODE_SLIP, 'rectangle always slips')
+            call check(error, r%mode == SLIDING_MODE_SLIP, 'rectangle always slips')
             if (allocated(error)) return
             call check(error, r%tau_m1, tau_m1, rtol=1.0e-14_dp)
             if (allocated(error)) return
@@ -284,14 +284,14 @@ contains
         integer :: stat
         ! stick with a forced reverse stop: the reverse slide mirrors the forward one
         call full_cycle(0.7_dp, 0.7_dp, 0.0_dp, 1.0_dp, .false., r, stat)
-        call check(error, r%mode == MODE_STICK, 'stick')
+        call check(error, r%mode == SLIDING_MODE_STICK, 'stick')
         if (allocated(error)) return
         call check(error, r%ures, 0.0_dp, atol=1.0e-16_dp, message='forced stick: no residual')
         if (allocated(error)) return
         ! stick with a free reverse stop: u_m2 is the half-cycle slip (section 5.5)
         call full_cycle(0.5_dp, 0.5_dp, pi, 1.0_dp, .false., r, stat)
         call half_cycle(0.5_dp, pi, 1.0_dp, h, stat)
-        call check(error, r%mode == MODE_STICK, 'stick at beta = pi, eta = 0.5')
+        call check(error, r%mode == SLIDING_MODE_STICK, 'stick at beta = pi, eta = 0.5')
         if (allocated(error)) return
         call check(error, r%um2, h%um, rtol=1.0e-13_dp)
         if (allocated(error)) return
@@ -299,12 +299,12 @@ contains
         if (allocated(error)) return
         ! stuck (section 7.3): beta = 0.4, eta1 = 0.05, eta2 = 0.7
         call full_cycle(0.05_dp, 0.7_dp, 0.4_dp, 1.0_dp, .false., r, stat)
-        call check(error, r%mode == MODE_STUCK .and. same(r%um2, 0.0_dp) .and. same(r%ures, r%um1), &
+        call check(error, r%mode == SLIDING_MODE_STUCK .and. same(r%um2, 0.0_dp) .and. same(r%ures, r%um1), &
                    'stuck')
         if (allocated(error)) return
         ! late slip with a forced reverse stop (section 7.4)
         call full_cycle(0.05_dp, 0.7_dp, -pi, 1.0_dp, .false., r, stat)
-        call check(error, r%mode == MODE_SLIP, 'slip')
+        call check(error, r%mode == SLIDING_MODE_SLIP, 'slip')
         if (allocated(error)) return
         call check(error, r%tau_m2 - 1.0_dp, 0.84597_dp, atol=5.0e-6_dp)
         if (allocated(error)) return
@@ -312,12 +312,12 @@ contains
         if (allocated(error)) return
         ! unilateral and reverse only
         call full_cycle(0.3_dp, 1.2_dp, -pi, 1.0_dp, .false., r, stat)
-        call check(error, r%mode == MODE_UNILATERAL .and. ieee_is_nan(r%tau_y2) .and. &
+        call check(error, r%mode == SLIDING_MODE_UNILATERAL .and. ieee_is_nan(r%tau_y2) .and. &
                    same(r%ures, r%um1), 'unilateral')
         if (allocated(error)) return
         call full_cycle(1.5_dp, 0.3_dp, -pi, 1.0_dp, .false., r, stat)
         call half_cycle(0.3_dp, -pi, 1.0_dp, h, stat)
-        call check(error, r%mode == MODE_REVERSE_ONLY .and. ieee_is_nan(r%tau_y1), 'reverse only')
+        call check(error, r%mode == SLIDING_MODE_REVERSE_ONLY .and. ieee_is_nan(r%tau_y1), 'reverse only')
         if (allocated(error)) return
         call check(error, r%um2, h%um, rtol=1.0e-14_dp)
         if (allocated(error)) return
@@ -326,7 +326,7 @@ contains
         call check(error, r%tau_y2, 1.0_dp + h%tau_y, rtol=1.0e-15_dp)
         if (allocated(error)) return
         call full_cycle(1.5_dp, 1.1_dp, -pi, 1.0_dp, .false., r, stat)
-        call check(error, r%mode == MODE_NO_SLIDING .and. same(r%ures, 0.0_dp), 'no sliding')
+        call check(error, r%mode == SLIDING_MODE_NO_SLIDING .and. same(r%ures, 0.0_dp), 'no sliding')
         if (allocated(error)) return
         ! static friction at the reverse onset delays it (stick case)
         call full_cycle(0.7_dp, 0.7_dp, 0.0_dp, 1.2_dp, .true., r, stat)
@@ -355,7 +355,7 @@ contains
                             .false., lo, stat)
             call full_cycle(eta_cr * (1 + 1.0e-6_dp), eta_cr * (1 + 1.0e-6_dp), beta, 1.0_dp, &
                             .false., hi, stat)
-            call check(error, lo%mode == MODE_SLIP .and. hi%mode == MODE_STICK, &
+            call check(error, lo%mode == SLIDING_MODE_SLIP .and. hi%mode == SLIDING_MODE_STICK, &
                        'slip/stick on each side at beta = '//real_str(beta))
             if (allocated(error)) return
         end do
@@ -406,7 +406,7 @@ contains
 
     subroutine test_block(error)
         type(test_error), allocatable, intent(out) :: error
-        type(block_t) :: b
+        type(sliding_block_t) :: b
         type(full_cycle_t) :: f
         real(dp) :: eta1, eta2, k1, k2, ag, vg, dg
         integer :: stat
@@ -567,8 +567,8 @@ contains
             call check(error, same(h%um, 0.0_dp) .and. same(g%um, 0.0_dp), 'spike: no slip')
             return
         end if
-        call check(error, g%regime == h%regime, 'regime '//regime_name(h%regime)//' vs ' &
-                   //regime_name(g%regime)//' at eta = '//real_str(eta)//', beta = ' &
+        call check(error, g%regime == h%regime, 'regime '//sliding_regime_name(h%regime)//' vs ' &
+                   //sliding_regime_name(g%regime)//' at eta = '//real_str(eta)//', beta = ' &
                    //real_str(beta)//', a = '//real_str(a))
         if (allocated(error)) return
         call agree(error, h%tau_y, g%tau_y, 'tau_y', eta, eta, beta, a)
@@ -597,8 +597,8 @@ contains
                        same(g%ures, 0.0_dp), 'spike: no slip')
             return
         end if
-        call check(error, g%mode == f%mode, 'mode '//mode_name(f%mode)//' vs ' &
-                   //mode_name(g%mode)//' at eta1 = '//real_str(eta1)//', eta2 = ' &
+        call check(error, g%mode == f%mode, 'mode '//sliding_mode_name(f%mode)//' vs ' &
+                   //sliding_mode_name(g%mode)//' at eta1 = '//real_str(eta1)//', eta2 = ' &
                    //real_str(eta2)//', beta = '//real_str(beta)//', a = '//real_str(a))
         if (allocated(error)) return
         call agree(error, f%tau_y1, g%tau_y1, 'tau_y1', eta1, eta2, beta, a)
@@ -630,4 +630,4 @@ contains
         end if
     end function same
 
-end module test_sliding
+end module test_sliding_closed

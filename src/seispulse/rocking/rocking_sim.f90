@@ -38,7 +38,7 @@
 !> 7th-order dense output) with rtol = 1e-12 (absolute scales alpha and p alpha). The
 !> time axis is cut into pieces on which a_g is smooth and monotone (the breaks of
 !> the pulse and its extrema, each sample step of a record: seispulse_pieces, shared
-!> with seispulse_stickslip),
+!> with seispulse_sliding_sim),
 !> and every step ends exactly on a piece end, evaluating a_g there as the limit from
 !> inside the piece, so the right-hand side is smooth inside each step. While at rest,
 !> uplift is the root of a_g -+ g tan(alpha) on a monotone piece (Brent). Impacts,
@@ -375,7 +375,7 @@ contains
     !> +-pi/2 and 0 after overturning, NaN after a time limit). The spike (beta = +inf)
     !> exceeds any threshold at one instant only: the block never uplifts. Ricker
     !> wavelets end at pi f_p (t - t0) = 10 (|a_g| < 1e-40 a_p) and M&P pulses need
-    !> gamma <= 1e6, as in seispulse_stickslip.
+    !> gamma <= 1e6, as in seispulse_sliding_sim.
     subroutine rock_pulse(blk, p, run, stat, errmsg, t_grid, theta_grid, omega_grid, t_max, &
                           theta0, omega0, rtol)
         type(rocking_block_t), intent(in) :: blk              !! the block

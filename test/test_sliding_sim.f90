@@ -1,7 +1,7 @@
 !> Stick-slip integrator: closed forms of sliding.md (rectangle, triangle), published
 !> values (Sections 8.2, 10.1, 7.4), records against pulses, convergence of sampled
 !> pulses, grid output, degenerate cases and bad input.
-module test_stickslip
+module test_sliding_sim
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, &
                                              ieee_negative_inf, ieee_is_finite
     use seispulse_kinds, only: dp
@@ -9,19 +9,19 @@ module test_stickslip
     use seispulse_pulses, only: pulse_t, pulse_at, exponential_pulse, half_sine_pulse, &
                                 sine_cycle_pulse, cosine_cycle_pulse, rectangular_pulse, &
                                 triangular_pulse, ricker_pulse, mp_pulse
-    use seispulse_stickslip, only: friction_t, slide_t, stickslip_result_t, &
+    use seispulse_sliding_sim, only: friction_t, slide_t, stickslip_result_t, &
                                    friction_validate, stickslip_pulse, stickslip_record
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
     private
 
-    public :: collect_stickslip
+    public :: collect_sliding_sim
 
     real(dp), parameter :: pi = 3.141592653589793238462643383279502884_dp
 
 contains
 
-    subroutine collect_stickslip(tests)
+    subroutine collect_sliding_sim(tests)
         type(unit_test), allocatable, intent(out) :: tests(:)
         tests = [new_unittest('rectangular full cycle: stop, slip, ((1-eta)/(1+eta))^2', &
                               test_rect_full), &
@@ -50,7 +50,7 @@ contains
                  new_unittest('spike, eta >= 1, one-way friction, short records', &
                               test_degenerate), &
                  new_unittest('bad input is a status naming the parameter', test_bad_input)]
-    end subroutine collect_stickslip
+    end subroutine collect_sliding_sim
 
     ! ---------------------------------------------------------------- helpers
 
@@ -994,4 +994,4 @@ contains
 
     end subroutine test_bad_input
 
-end module test_stickslip
+end module test_sliding_sim

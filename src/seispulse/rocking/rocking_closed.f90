@@ -35,7 +35,7 @@
 !> evaluations, with find_root_newton as the guaranteed fallback. Boundaries in eta or f
 !> (2.16, S1/S2, inverses) use find_root (Brent) on brackets found by halving/doubling.
 !> rocking_summary computes the state psi(1/2), psi(1), psi'(1), A, B once for everything.
-module seispulse_rocking
+module seispulse_rocking_closed
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
                                              ieee_quiet_nan, ieee_positive_inf
     use seispulse_kinds, only: dp
@@ -1831,4 +1831,4 @@ contains
     end subroutine check_eta
 
 
-end module seispulse_rocking
+end module seispulse_rocking_closed

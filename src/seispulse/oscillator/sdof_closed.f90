@@ -5,7 +5,7 @@
 !>     z'' + 2 zeta omega z' + omega^2 z = -a_g(t),
 !>     a_abs = a_g + z'' = -(2 zeta omega z' + omega^2 z).
 !> SI throughout: a_g, a_abs in m/s^2, z in m, z' in m/s, t and T in s. A positive period
-!> must be finite and >= min_period (1e-60 s, seispulse_sdof: omega^2 stays finite).
+!> must be finite and >= min_period (1e-60 s, seispulse_sdof_sim: omega^2 stays finite).
 !>
 !> Book forms (undamped unless stated; equation numbers of oscillator.md):
 !> * `dynamic_coefficient`: Eq. 2.17 (gamma = 0, signed 1/(1 - r^2)), Eq. 2.20 with the
@@ -85,14 +85,14 @@
 !> For a pulse whose a_g jumps (rectangular, cosine_cycle, the box) the limit T -> 0+ of sa
 !> is larger than the PGA: the step overshoot, up to 2 PGA undamped (1.8588 PGA at
 !> T = 1e-4 s, zeta = 0.05 for a rectangle); sa is not continuous at T = 0 for those pulses.
-module seispulse_sdof_pulse
+module seispulse_sdof_closed
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
                                 set_error, real_str, int_str, outside
     use seispulse_special, only: expm1, exp_phis, complex_phis, sin_pi, cos_pi, pi
     use seispulse_roots, only: scalar_function, find_root
-    use seispulse_sdof, only: sdof_check, min_period
+    use seispulse_sdof_sim, only: sdof_validate, min_period
     use seispulse_pulses, only: pulse_t, pulse_validate, PULSE_EXPONENTIAL, PULSE_HALF_SINE, &
                                 PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, &
                                 PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP
@@ -624,8 +624,8 @@ contains
         call check_damping(damping, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         do i = 1, n
-            ! T = 0 (rigid) or min_period <= T finite: the check and bound of seispulse_sdof
-            call sdof_check(periods(i), damping, stat, errmsg, &
+            ! T = 0 (rigid) or min_period <= T finite: the check and bound of seispulse_sdof_sim
+            call sdof_validate(periods(i), damping, stat, errmsg, &
                             period_name='periods('//int_str(i)//')')
             if (stat /= SEISPULSE_SUCCESS) return
             if (periods(i) > 0.0_dp) then
@@ -741,11 +741,11 @@ contains
         real(dp), intent(in) :: damping
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
-        ! the same check and message as for records (seispulse_sdof)
-        call sdof_check(0.0_dp, damping, stat, errmsg)
+        ! the same check and message as for records (seispulse_sdof_sim)
+        call sdof_validate(0.0_dp, damping, stat, errmsg)
     end subroutine check_damping
 
-    !> A positive period (finite, >= min_period of seispulse_sdof, so that both modules accept
+    !> A positive period (finite, >= min_period of seispulse_sdof_sim, so that both modules accept
     !> the same periods and omega^2 stays finite) and a damping ratio in [0, 1).
     subroutine check_oscillator(period, damping, stat, errmsg)
         real(dp), intent(in) :: period, damping
@@ -1928,4 +1928,4 @@ contains
         t_max = p%t0 + xbest / p%freq
     end subroutine mp_peak_accel
 
-end module seispulse_sdof_pulse
+end module seispulse_sdof_closed

@@ -13,7 +13,7 @@
 !>    crossing a yield: linear) and stops (the velocity's first root: a stable
 !>    quadratic formula) are located inside the step. This is the exact solution
 !>    of the piecewise-linear record, the same problem the event-driven integrator
-!>    of seispulse_stickslip solves (a_g = 0 after the last sample, so a block still
+!>    of seispulse_sliding_sim solves (a_g = 0 after the last sample, so a block still
 !>    sliding there decelerates to rest), but without root iterations: a few flops
 !>    per step.
 !>  - NEWMARK_SLAMMER: SLAMMER 1.1's rigorous rigid-block loop (Jibson et al. 2013,
@@ -32,9 +32,9 @@ module seispulse_newmark
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
                                 SEISPULSE_INTERNAL, set_error, real_str
-    use seispulse_stickslip, only: slide_t
+    use seispulse_sliding_sim, only: slide_t
     use seispulse_pieces, only: record_step_check
-    use seispulse_sliding, only: inclined_resistances
+    use seispulse_sliding_closed, only: inclined_resistances
     implicit none
     private
 

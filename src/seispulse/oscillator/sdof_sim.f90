@@ -37,7 +37,7 @@
 !> OpenMP thread when the library is built with OpenMP. Each pair's arithmetic is the
 !> same whatever its neighbours and the groups are formed before the threads start,
 !> so the results are identical to a serial run, bit for bit.
-module seispulse_sdof
+module seispulse_sdof_sim
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error, &
@@ -48,7 +48,7 @@ module seispulse_sdof
     implicit none
     private
 
-    public :: sdof_step_t, sdof_step, sdof_check, sdof_response, sdof_spectrum
+    public :: sdof_step_t, sdof_step, sdof_validate, sdof_response, sdof_spectrum
     public :: pseudo_spectra, design_envelope, spectral_shape, sdof_threads
     public :: SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES
 
@@ -95,7 +95,7 @@ contains
 
     !> Check a period and a damping ratio: T = 0 or min_period <= T finite, 0 <= zeta < 1.
     !> `period_name`, `damping_name` name them in the message (e.g. 'periods(3)').
-    subroutine sdof_check(period, damping, stat, errmsg, period_name, damping_name)
+    subroutine sdof_validate(period, damping, stat, errmsg, period_name, damping_name)
         real(dp), intent(in) :: period                        !! natural period (s)
         real(dp), intent(in) :: damping                       !! damping ratio
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
@@ -126,7 +126,7 @@ contains
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, dname//' = ' &
                            //real_str(damping)//': the damping ratio must be in [0, 1)')
         end if
-    end subroutine sdof_check
+    end subroutine sdof_validate
 
 
     ! ------------------------------------------------------------------------------
@@ -239,7 +239,7 @@ contains
         real(dp) :: z, v, zn, w2, zw2
         call record_step_check(accel, dt, g, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call sdof_check(period, damping, stat, errmsg)
+        call sdof_validate(period, damping, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         n = size(accel)
         if (size(disp) /= n .or. size(vel) /= n .or. size(acc) /= n) then
@@ -306,12 +306,12 @@ contains
         np = size(periods)
         nd = size(dampings)
         do i = 1, np
-            call sdof_check(periods(i), 0.0_dp, stat, errmsg, period_name='periods(' &
+            call sdof_validate(periods(i), 0.0_dp, stat, errmsg, period_name='periods(' &
                             //int_str(i)//')')
             if (stat /= SEISPULSE_SUCCESS) return
         end do
         do j = 1, nd
-            call sdof_check(0.0_dp, dampings(j), stat, errmsg, damping_name='dampings(' &
+            call sdof_validate(0.0_dp, dampings(j), stat, errmsg, damping_name='dampings(' &
                             //int_str(j)//')')
             if (stat /= SEISPULSE_SUCCESS) return
         end do
@@ -952,6 +952,6 @@ contains
         peak = shape(k)
     end subroutine spectral_shape
 
-end module seispulse_sdof
+end module seispulse_sdof_sim
 
 

@@ -17,7 +17,7 @@
 !> wrong (erratum 8). Eq. 1.5 itself carries an absolute error of a few ulps of the
 !> ground displacement over the slide: as eta -> 1 the slip (~ (1 - eta)^3) keeps that
 !> absolute, not a relative, accuracy (a Taylor-remainder form would be needed there).
-module seispulse_sliding
+module seispulse_sliding_closed
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
                                              ieee_quiet_nan, ieee_positive_inf
     use seispulse_kinds, only: dp
@@ -27,32 +27,32 @@ module seispulse_sliding
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
     use seispulse_pulses, only: exp_consts_t, exp_consts, exp_eval, exponential_pulse, &
                                 check_beta, exp_rise_time
-    use seispulse_stickslip, only: friction_t, stickslip_result_t, stickslip_pulse
+    use seispulse_sliding_sim, only: friction_t, stickslip_result_t, stickslip_pulse
     implicit none
     private
 
-    public :: half_cycle_t, full_cycle_t, block_t
+    public :: half_cycle_t, full_cycle_t, sliding_block_t
     public :: yield_time, half_cycle, full_cycle, inclined_resistances, block_response, &
               block_response_eta
     public :: half_cycle_integrated, full_cycle_integrated, summarize_slides
     public :: eta_critical, eta_critical_regression, full_cycle_peak_regression
     public :: rectangle_half, rectangle_full, triangle_half, spike_velocity_ratio
-    public :: regime_name, mode_name
-    public :: REGIME_NONE, REGIME_FORCED, REGIME_FREE
-    public :: MODE_NO_SLIDING, MODE_UNILATERAL, MODE_STICK, MODE_SLIP, MODE_STUCK, &
-              MODE_REVERSE_ONLY
+    public :: sliding_regime_name, sliding_mode_name
+    public :: SLIDING_REGIME_NONE, SLIDING_REGIME_FORCED, SLIDING_REGIME_FREE
+    public :: SLIDING_MODE_NO_SLIDING, SLIDING_MODE_UNILATERAL, SLIDING_MODE_STICK, SLIDING_MODE_SLIP, SLIDING_MODE_STUCK, &
+              SLIDING_MODE_REVERSE_ONLY
 
-    integer, parameter :: REGIME_NONE = 0    !! no sliding (eta >= 1)
-    integer, parameter :: REGIME_FORCED = 1  !! the slide stops during the pulse, tau_m <= 1
-    integer, parameter :: REGIME_FREE = 2    !! the slide stops after the pulse, tau_m > 1
+    integer, parameter :: SLIDING_REGIME_NONE = 0    !! no sliding (eta >= 1)
+    integer, parameter :: SLIDING_REGIME_FORCED = 1  !! the slide stops during the pulse, tau_m <= 1
+    integer, parameter :: SLIDING_REGIME_FREE = 2    !! the slide stops after the pulse, tau_m > 1
 
-    integer, parameter :: MODE_NO_SLIDING = 0    !! neither lobe starts a slide
-    integer, parameter :: MODE_UNILATERAL = 1    !! forward slide only: eta2 >= 1
-    integer, parameter :: MODE_STICK = 2         !! the block sticks, then slides back (1.21a)
-    integer, parameter :: MODE_SLIP = 3          !! it slides back at once (1.21b)
-    integer, parameter :: MODE_STUCK = 4         !! eta2 < 1, but the forward slide outlasts
+    integer, parameter :: SLIDING_MODE_NO_SLIDING = 0    !! neither lobe starts a slide
+    integer, parameter :: SLIDING_MODE_UNILATERAL = 1    !! forward slide only: eta2 >= 1
+    integer, parameter :: SLIDING_MODE_STICK = 2         !! the block sticks, then slides back (1.21a)
+    integer, parameter :: SLIDING_MODE_SLIP = 3          !! it slides back at once (1.21b)
+    integer, parameter :: SLIDING_MODE_STUCK = 4         !! eta2 < 1, but the forward slide outlasts
                                                  !! the reverse window (section 7.3)
-    integer, parameter :: MODE_REVERSE_ONLY = 5  !! eta1 >= 1 > eta2: the second lobe only
+    integer, parameter :: SLIDING_MODE_REVERSE_ONLY = 5  !! eta1 >= 1 > eta2: the second lobe only
 
     character(len=*), parameter :: regime_names(0:2) = [character(len=6) :: &
         'none', 'forced', 'free']
@@ -63,7 +63,7 @@ module seispulse_sliding
     type :: half_cycle_t
         real(dp) :: tau_y = 0.0_dp         !! onset t_y/t_d (NaN without sliding)
         real(dp) :: tau_m = 0.0_dp         !! stop = time of the peak slip t_m/t_d (NaN without)
-        integer :: regime = REGIME_NONE    !! REGIME_*
+        integer :: regime = SLIDING_REGIME_NONE    !! REGIME_*
         real(dp) :: um = 0.0_dp            !! peak (= residual) slip u_m/(A_g t_d^2)
         real(dp) :: dugm = 0.0_dp          !! ground displacement during the slide / (A_g t_d^2)
         real(dp) :: vm = 0.0_dp            !! peak sliding velocity V_m/V_g
@@ -71,7 +71,7 @@ module seispulse_sliding
 
     !> Full-cycle response (sections 4, 5, 7), dimensionless; times from the pulse start.
     type :: full_cycle_t
-        integer :: mode = MODE_NO_SLIDING  !! MODE_*
+        integer :: mode = SLIDING_MODE_NO_SLIDING  !! MODE_*
         real(dp) :: tau_y1 = 0.0_dp        !! forward onset (NaN without a forward slide)
         real(dp) :: tau_m1 = 0.0_dp        !! forward stop = time of the peak slip
         real(dp) :: um1 = 0.0_dp           !! forward (peak) slip / (A_g t_d^2), >= 0
@@ -84,8 +84,8 @@ module seispulse_sliding
     end type full_cycle_t
 
     !> A block on an incline hit by a pulse, in SI (section 7.1): along-plane slips.
-    type :: block_t
-        integer :: mode = MODE_NO_SLIDING  !! MODE_* (a half cycle: no_sliding or unilateral)
+    type :: sliding_block_t
+        integer :: mode = SLIDING_MODE_NO_SLIDING  !! MODE_* (a half cycle: no_sliding or unilateral)
         real(dp) :: eta1 = 0.0_dp          !! resistance to downhill sliding / A_g
         real(dp) :: eta2 = 0.0_dp          !! resistance to uphill sliding / A_g
         real(dp) :: t_y1 = 0.0_dp          !! downhill onset (s from the pulse start)
@@ -97,7 +97,7 @@ module seispulse_sliding
         real(dp) :: u_res = 0.0_dp         !! residual (m), downhill positive
         real(dp) :: v_m1 = 0.0_dp          !! peak downhill sliding velocity (m/s)
         real(dp) :: v_m2 = 0.0_dp          !! peak uphill sliding velocity (m/s)
-    end type block_t
+    end type sliding_block_t
 
     !> Relative velocity of a forward slide from rest at tau0, the left side of Eq. 1.8
     !> (half cycle) or of the corrected Eq. 1.19 (full cycle), in the form of Eq. 1.4:
@@ -172,7 +172,7 @@ contains
             um = 0.0_dp
             dug = 0.0_dp
             vm = 0.0_dp
-            regime = REGIME_FORCED
+            regime = SLIDING_REGIME_FORCED
             return
         end if
         w%c = c
@@ -186,7 +186,7 @@ contains
         ! block stops at tau0 + (V_g - v_g(tau0))/eta, if that is after the lobe
         h = (c%vg - v0) / eta
         if (.not. full .and. tau0 + h > 1.0_dp) then
-            regime = REGIME_FREE
+            regime = SLIDING_REGIME_FREE
             tau_m = tau0 + h
         else
             ! forced stop, Eq. 1.8 / corrected 1.19 / section 7.4: w > 0 at tau_k and falls
@@ -207,8 +207,8 @@ contains
                 ! on the free/forced boundary (tau_m = 1 up to rounding)
                 tau_m = hi
             end if
-            regime = REGIME_FORCED
-            if (tau_m > 1.0_dp) regime = REGIME_FREE
+            regime = SLIDING_REGIME_FORCED
+            if (tau_m > 1.0_dp) regime = SLIDING_REGIME_FREE
         end if
         ! Eq. 1.5: u_m = u_g(tau_m) - u_g(tau0) - (tau_m - tau0) v_g(tau0)
         !                - eta (tau_m - tau0)^2/2
@@ -250,7 +250,7 @@ contains
     ! ------------------------------------------------------------------------------
 
     !> Response to a half-cycle pulse (section 3; static friction: section 8).
-    !> Sliding needs static_factor*eta < 1; otherwise regime = REGIME_NONE with zero slip.
+    !> Sliding needs static_factor*eta < 1; otherwise regime = SLIDING_REGIME_NONE with zero slip.
     subroutine half_cycle(eta, beta, static_factor, res, stat, errmsg)
         real(dp), intent(in) :: eta                           !! kinetic a_y/A_g > 0
         real(dp), intent(in) :: beta                          !! pulse shape, not NaN
@@ -309,7 +309,7 @@ contains
         if (.not. (static_factor * eta1 < 1.0_dp)) then
             ! no forward slide: the second lobe acts alone, as a half cycle (section 7.2)
             if (.not. (static_factor * eta2 < 1.0_dp)) return
-            res%mode = MODE_REVERSE_ONLY
+            res%mode = SLIDING_MODE_REVERSE_ONLY
             tbar0 = exp_rise_time(static_factor * eta2, beta)
             call reverse_slide(static_factor * eta2)
             return
@@ -322,7 +322,7 @@ contains
         if (stat /= SEISPULSE_SUCCESS) return
         if (beta > huge(beta)) res%vm1 = spike_vm(static_factor * eta1, eta1)
         res%ures = res%um1
-        res%mode = MODE_UNILATERAL
+        res%mode = SLIDING_MODE_UNILATERAL
         on2 = eta2
         if (static_reverse) on2 = static_factor * eta2
         if (.not. (on2 < 1.0_dp)) return
@@ -330,12 +330,12 @@ contains
         ! the second lobe exceeds on2 on (1 + tau_y(on2), 2 - tau_y(on2)) (section 7.3)
         tbar0 = exp_rise_time(on2, beta)
         if (res%tau_m1 <= 1.0_dp + tbar0) then
-            res%mode = MODE_STICK
+            res%mode = SLIDING_MODE_STICK
         else if (res%tau_m1 < 2.0_dp - tbar0) then
-            res%mode = MODE_SLIP
+            res%mode = SLIDING_MODE_SLIP
             tbar0 = res%tau_m1 - 1.0_dp
         else
-            res%mode = MODE_STUCK
+            res%mode = SLIDING_MODE_STUCK
             return
         end if
         call reverse_slide(on2)
@@ -361,7 +361,7 @@ contains
     ! The same quantities from the event-driven integrator (the check of the above)
     ! ------------------------------------------------------------------------------
 
-    !> `half_cycle` computed by the stick-slip integrator of seispulse_stickslip on the
+    !> `half_cycle` computed by the stick-slip integrator of seispulse_sliding_sim on the
     !> dimensionless pulse (A_g = 1, t_d = 1) instead of the closed forms.
     subroutine half_cycle_integrated(eta, beta, static_factor, res, stat, errmsg)
         real(dp), intent(in) :: eta                           !! kinetic a_y/A_g > 0
@@ -379,10 +379,10 @@ contains
         res%tau_m = f%tau_m1
         res%um = f%um1
         res%vm = f%vm1
-        res%regime = REGIME_NONE
-        if (f%mode /= MODE_NO_SLIDING) then
-            res%regime = REGIME_FORCED
-            if (res%tau_m > 1.0_dp) res%regime = REGIME_FREE
+        res%regime = SLIDING_REGIME_NONE
+        if (f%mode /= SLIDING_MODE_NO_SLIDING) then
+            res%regime = SLIDING_REGIME_FORCED
+            if (res%tau_m > 1.0_dp) res%regime = SLIDING_REGIME_FREE
             d0 = ground_displacement(res%tau_y)
             d1 = ground_displacement(res%tau_m)
             res%dugm = d1 - d0
@@ -467,16 +467,16 @@ contains
         end if
         res%ures = ss%u_final
         if (ifwd == 0 .and. irev == 0) then
-            res%mode = MODE_NO_SLIDING
+            res%mode = SLIDING_MODE_NO_SLIDING
         else if (ifwd == 0) then
-            res%mode = MODE_REVERSE_ONLY
+            res%mode = SLIDING_MODE_REVERSE_ONLY
         else if (irev == 0) then
-            res%mode = MODE_UNILATERAL
-            if (reverse_possible) res%mode = MODE_STUCK
+            res%mode = SLIDING_MODE_UNILATERAL
+            if (reverse_possible) res%mode = SLIDING_MODE_STUCK
         else if (ss%slides(irev)%from_slip) then
-            res%mode = MODE_SLIP
+            res%mode = SLIDING_MODE_SLIP
         else
-            res%mode = MODE_STICK
+            res%mode = SLIDING_MODE_STICK
         end if
     end subroutine summarize_slides
 
@@ -594,11 +594,11 @@ contains
         tau_y = 0.5_dp * eta
         vm = (1.0_dp - eta)**2
         if (eta <= 2.0_dp - sqrt2) then
-            regime = REGIME_FREE
+            regime = SLIDING_REGIME_FREE
             tau_m = (eta * eta + 2.0_dp) / (4.0_dp * eta)
             um = (12.0_dp - 24.0_dp * eta + 12.0_dp * eta**2 - eta**4) / (96.0_dp * eta)
         else
-            regime = REGIME_FORCED
+            regime = SLIDING_REGIME_FORCED
             tau_m = 1.0_dp - 0.5_dp * eta + (1.0_dp - eta) / sqrt2
             um = (3.0_dp + 2.0_dp * sqrt2) * (1.0_dp - eta)**3 / 12.0_dp
         end if
@@ -692,7 +692,7 @@ contains
         logical, intent(in) :: static_reverse                 !! a also at the reverse onset
         logical, intent(in) :: along_plane                    !! apply K1, K2
         real(dp), intent(in) :: g                             !! gravity (m/s^2) > 0
-        type(block_t), intent(out) :: res                     !! the response (SI)
+        type(sliding_block_t), intent(out) :: res                     !! the response (SI)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         real(dp) :: eta1, eta2, k1, k2
@@ -722,7 +722,7 @@ contains
         real(dp), intent(in) :: static_factor                 !! a >= 1
         logical, intent(in) :: static_reverse                 !! a also at the reverse onset
         real(dp), intent(in) :: g                             !! gravity (m/s^2) > 0
-        type(block_t), intent(out) :: res                     !! the response (SI)
+        type(sliding_block_t), intent(out) :: res                     !! the response (SI)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         real(dp) :: ag, ulen, vlen
@@ -746,8 +746,8 @@ contains
         else
             ! a half cycle drives the block one way only
             call half_cycle(eta1, beta, static_factor, h, stat, errmsg)
-            f%mode = MODE_NO_SLIDING
-            if (h%regime /= REGIME_NONE) f%mode = MODE_UNILATERAL
+            f%mode = SLIDING_MODE_NO_SLIDING
+            if (h%regime /= SLIDING_REGIME_NONE) f%mode = SLIDING_MODE_UNILATERAL
             f%tau_y1 = h%tau_y
             f%tau_m1 = h%tau_m
             f%um1 = h%um
@@ -780,7 +780,7 @@ contains
     ! ------------------------------------------------------------------------------
 
     !> 'none', 'forced' or 'free'.
-    pure function regime_name(regime) result(name)
+    pure function sliding_regime_name(regime) result(name)
         integer, intent(in) :: regime  !! REGIME_*
         character(len=:), allocatable :: name
         if (regime >= 0 .and. regime <= 2) then
@@ -788,10 +788,10 @@ contains
         else
             name = 'unknown'
         end if
-    end function regime_name
+    end function sliding_regime_name
 
     !> 'no_sliding', 'unilateral', 'stick', 'slip', 'stuck' or 'reverse_only'.
-    pure function mode_name(mode) result(name)
+    pure function sliding_mode_name(mode) result(name)
         integer, intent(in) :: mode  !! MODE_*
         character(len=:), allocatable :: name
         if (mode >= 0 .and. mode <= 5) then
@@ -799,7 +799,7 @@ contains
         else
             name = 'unknown'
         end if
-    end function mode_name
+    end function sliding_mode_name
 
     subroutine check_eta(eta, name, stat, errmsg)
         real(dp), intent(in) :: eta
@@ -823,4 +823,4 @@ contains
             //': must be a finite number >= 1 (static over kinetic friction)')
     end subroutine check_static
 
-end module seispulse_sliding
+end module seispulse_sliding_closed

@@ -1,21 +1,21 @@
-!> Rocking closed forms (seispulse_rocking): the whole first excursion and every derived
+!> Rocking closed forms (seispulse_rocking_closed): the whole first excursion and every derived
 !> quantity against an independent reference (the Duhamel integral of the linearized
 !> equation of motion by adaptive Gauss-Legendre quadrature, roots and boundaries found on
 !> it by safeguarded Newton and bisection), the oracle values of rocking.md, the limit
 !> equations, each corrected equation at a point where the printed form differs, the
 !> monotonicity claims of section 5.3 and the input checks.
-module test_rocking
+module test_rocking_closed
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, &
                                              ieee_negative_inf, ieee_is_nan, ieee_is_finite
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, real_str
     use seispulse_special, only: pi
-    use seispulse_rocking
+    use seispulse_rocking_closed
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
     private
 
-    public :: collect_rocking
+    public :: collect_rocking_closed
 
     !> Reference problem psi'' - f^2 psi = f^2 (s(tau)/eta - 1) from rest at tau_up.
     type :: ref_t
@@ -45,7 +45,7 @@ module test_rocking
 
 contains
 
-    subroutine collect_rocking(tests)
+    subroutine collect_rocking_closed(tests)
         type(unit_test), allocatable, intent(out) :: tests(:)
         tests = [new_unittest('uplift time Eq. 2.4 and its limits', test_uplift), &
                  new_unittest('region names and no-rocking cases', test_names_none), &
@@ -72,7 +72,7 @@ contains
                  new_unittest('response and derived quantities = reference on the grid', &
                               test_grid), &
                  new_unittest('boundaries = reference bisection', test_boundaries_ref)]
-    end subroutine collect_rocking
+    end subroutine collect_rocking_closed
 
     ! ------------------------------------------------------------------------------
     ! Oracles and corrected equations
@@ -1505,4 +1505,4 @@ contains
         end subroutine value
     end function ref_root
 
-end module test_rocking
+end module test_rocking_closed

@@ -1,4 +1,4 @@
-!> Linear oscillator closed forms (seispulse_sdof_pulse) against independent computations:
+!> Linear oscillator closed forms (seispulse_sdof_closed) against independent computations:
 !> adaptive Gauss-Kronrod (G7/K15) quadrature of Duhamel's integral written here, using
 !> pulse_at for a_g; the book's numbers and each corrected equation of oscillator.md (2.17
 !> steady state vs 1.299 from rest, 2.20 square root, 2.21 cos omega t, 2.23 sign, beta_pulse);
@@ -6,17 +6,17 @@
 !> T -> inf, where z = -d_g, and T -> 0, where z = -a_g/omega^2; the step overshoot);
 !> peaks against dense sampling and the half sine's residual closed form; spectra; the
 !> peak-scan limit; bad input.
-module test_sdof_pulse
+module test_sdof_closed
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, &
                                              ieee_negative_inf
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR
-    use seispulse_sdof, only: min_period
+    use seispulse_sdof_sim, only: min_period
     use seispulse_pulses, only: pulse_t, pulse_at, pulse_breaks, exp_consts_t, exp_consts, &
                                 exponential_pulse, half_sine_pulse, sine_cycle_pulse, &
                                 cosine_cycle_pulse, rectangular_pulse, triangular_pulse, &
                                 ricker_pulse, mp_pulse, PULSE_RICKER, PULSE_EXPONENTIAL
-    use seispulse_sdof_pulse, only: dynamic_coefficient, harmonic_response, &
+    use seispulse_sdof_closed, only: dynamic_coefficient, harmonic_response, &
                                     rect_pulse_response, beta_pulse, impulse_max, &
                                     impulse_response, sdof_pulse_response, sdof_pulse_peaks, &
                                     sdof_pulse_spectrum, pulse_peak_accel, BETA_HYSTERETIC, &
@@ -26,7 +26,7 @@ module test_sdof_pulse
     implicit none
     private
 
-    public :: collect_sdof_pulse
+    public :: collect_sdof_closed
 
     real(dp), parameter :: pi = 3.141592653589793238462643383279502884_dp
 
@@ -60,7 +60,7 @@ module test_sdof_pulse
 
 contains
 
-    subroutine collect_sdof_pulse(tests)
+    subroutine collect_sdof_closed(tests)
         type(unit_test), allocatable, intent(out) :: tests(:)
         tests = [new_unittest('dynamic coefficient: Eq. 2.17, 2.20 (sqrt), viscous, 2|beta|', &
                               test_dynamic_coefficient), &
@@ -102,7 +102,7 @@ contains
                  new_unittest('tiny periods: 1e-308 refused, 2e-60 quasi-static', &
                               test_tiny_periods), &
                  new_unittest('bad input is a status naming the parameter', test_bad_input)]
-    end subroutine collect_sdof_pulse
+    end subroutine collect_sdof_closed
 
     ! ---------------------------------------------------------------- reference quadrature
 
@@ -1166,7 +1166,7 @@ contains
         character(len=256) :: msg
         p = half_sine_pulse(1.0_dp, 0.5_dp)
         t = [0.1_dp, 0.2_dp]
-        ! omega = 2 pi/1e-308 overflows: refused, as seispulse_sdof refuses it
+        ! omega = 2 pi/1e-308 overflows: refused, as seispulse_sdof_sim refuses it
         call sdof_pulse_response(p, 1.0e-308_dp, 0.05_dp, t, z, v, a, stat, msg)
         call expect_error(error, stat, msg, 'period')
         if (allocated(error)) return
@@ -1349,4 +1349,4 @@ contains
         call check(error, index(msg, name) == 1, 'message must start with '//name//': '//trim(msg))
     end subroutine expect_error
 
-end module test_sdof_pulse
+end module test_sdof_closed
