@@ -16,7 +16,8 @@ module driver_newmark
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
                                              ieee_quiet_nan, ieee_positive_inf
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, int_str
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_format, only: int_str
     use seispulse_records, only: record_format_name
     use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, &
                                  newmark_incline, newmark_block_validate, newmark_mode_code, &

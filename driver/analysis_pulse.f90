@@ -8,7 +8,7 @@ module driver_pulse
                                              ieee_quiet_nan
     use seispulse, only: dp, pulse_eval, pulse_end_time, pulse_kind_name, SEISPULSE_SUCCESS, &
                          PULSE_RICKER
-    use seispulse_errors, only: real_str
+    use seispulse_format, only: real_str
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, check_keys, read_group, located
     use driver_pulse_group, only: pulse_input_t, read_pulse_group, build_pulse, &

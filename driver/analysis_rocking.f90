@@ -19,7 +19,7 @@ module driver_rocking
                          pulse_kind_name, pulse_kind_from_name, SEISPULSE_SUCCESS, &
                          PULSE_EXPONENTIAL, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
                          PULSE_RICKER, PULSE_MP
-    use seispulse_errors, only: real_str, int_str
+    use seispulse_format, only: real_str, int_str
     use seispulse_rocking_closed, only: rocking_summary, rocking_region_name
     use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rectangular_block, &
                                      symmetric_block, rocking_block_validate, rock_pulse, &

@@ -36,7 +36,9 @@ module driver_sdof
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan, &
                                              ieee_positive_inf
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_SINGULAR, int_str, outside
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_SINGULAR
+    use seispulse_checks, only: outside
+    use seispulse_format, only: int_str
     use seispulse_records, only: record_format_name
     use seispulse_sdof_sim, only: sdof_spectrum, pseudo_spectra, sdof_response, design_envelope, &
                               spectral_shape, SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES

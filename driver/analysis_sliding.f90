@@ -15,7 +15,7 @@ module driver_sliding
     use seispulse, only: dp, pulse_eval, pulse_end_time, pulse_kind_name, &
                          SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, &
                          PULSE_RICKER, PULSE_MP
-    use seispulse_errors, only: real_str
+    use seispulse_format, only: real_str
     use seispulse_sliding_closed, only: sliding_block_t, full_cycle_t, block_response, block_response_eta, &
                                  inclined_resistances, summarize_slides, sliding_mode_name
     use seispulse_sliding_sim, only: friction_t, stickslip_result_t, stickslip_pulse

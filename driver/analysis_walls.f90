@@ -12,7 +12,8 @@ module driver_walls
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, real_str, int_str
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_format, only: real_str, int_str
     use seispulse_records, only: STANDARD_GRAVITY
     use seispulse_codes, only: ec8_ground_parameters, ec8_r_factor, ec8_seismic_coefficients, &
                                ec8_vertical_ratio, WATER_DRY, WATER_IMPERVIOUS, WATER_PERMEABLE, &

@@ -170,7 +170,7 @@ contains
 
     !> "name(i)".
     pure function list_item(name, i) result(item)
-        use seispulse_errors, only: int_str
+        use seispulse_format, only: int_str
         character(len=*), intent(in) :: name
         integer, intent(in) :: i
         character(len=:), allocatable :: item

@@ -4,9 +4,8 @@
 module seispulse
     use seispulse_kinds, only: dp, ik
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
-                                SEISPULSE_NO_CONVERGENCE, SEISPULSE_NO_BRACKET, &
-                                SEISPULSE_INTERNAL, SEISPULSE_IO, SEISPULSE_NO_SOLUTION, &
-                                status_name
+                                SEISPULSE_NO_CONVERGENCE, SEISPULSE_NO_BRACKET, SEISPULSE_INTERNAL, &
+                                SEISPULSE_IO, SEISPULSE_NO_SOLUTION, status_name
     use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, &
                                  sin_pi, cos_pi, complex_phis
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton

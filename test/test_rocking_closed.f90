@@ -8,7 +8,8 @@ module test_rocking_closed
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, &
                                              ieee_negative_inf, ieee_is_nan, ieee_is_finite
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, real_str
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT
+    use seispulse_format, only: real_str
     use seispulse_special, only: pi
     use seispulse_rocking_closed
     use testing, only: test_error, unit_test, new_unittest, check

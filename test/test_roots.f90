@@ -2,8 +2,8 @@
 module test_roots
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_NO_BRACKET, &
-                                SEISPULSE_INVALID_INPUT, SEISPULSE_NO_CONVERGENCE
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_NO_BRACKET, SEISPULSE_INVALID_INPUT, &
+                                SEISPULSE_NO_CONVERGENCE
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none

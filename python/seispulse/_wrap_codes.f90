@@ -145,7 +145,8 @@ end subroutine sp_ec8_ground_parameters
 !> eta(xi) per element; stops at the first bad xi (xi_percent(i) in the message).
 subroutine sp_ec8_damping_correction(n, xi_percent, eta, stat, errmsg)
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, int_str
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_format, only: int_str
     use seispulse_codes, only: ec8_damping_correction, ec8_check_damping
     implicit none
     integer, intent(in) :: n

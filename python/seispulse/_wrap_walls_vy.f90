@@ -50,7 +50,8 @@ end subroutine sp_free_field_frequencies
 !> vy_rigid element by element: omega_ratio(i), delta(i), nu(i).
 subroutine sp_vy_rigid(n, omega_ratio, delta, nu, tol, q, m, h_ratio, nterms, stat, errmsg)
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, int_str
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_format, only: int_str
     use seispulse_walls_vy, only: vy_rigid
     implicit none
     integer, intent(in) :: n

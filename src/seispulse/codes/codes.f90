@@ -67,7 +67,9 @@ module seispulse_codes
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_NO_SOLUTION, &
-                                set_error, real_str, int_str, outside
+                                set_error
+    use seispulse_checks, only: outside
+    use seispulse_format, only: real_str, int_str
     use seispulse_special, only: pi
     implicit none
     private

@@ -1,8 +1,8 @@
 !> LAPACK interfaces (all of them, in one place) and the mapping of `info`.
 module seispulse_lapack
     use seispulse_kinds, only: dp, ik
-    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
-                                SEISPULSE_SINGULAR, SEISPULSE_INTERNAL, set_error
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
+                                SEISPULSE_INTERNAL, set_error
     implicit none
     private
 

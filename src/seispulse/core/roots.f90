@@ -6,8 +6,8 @@
 module seispulse_roots
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
-                                SEISPULSE_NO_BRACKET, SEISPULSE_NO_CONVERGENCE, set_error
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_NO_BRACKET, &
+                                SEISPULSE_NO_CONVERGENCE, set_error
     implicit none
     private
 

@@ -25,8 +25,10 @@
 module seispulse_pieces
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
-                                SEISPULSE_INTERNAL, set_error, real_str
+    use seispulse_checks, only: finite_positive
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
+                                set_error
+    use seispulse_format, only: real_str
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_special, only: pi
     use seispulse_pulses, only: pulse_t, pulse_at, pulse_breaks, exp_consts_t, exp_consts, &
@@ -160,13 +162,6 @@ contains
         else
             call record_pieces_check(accel, stat, errmsg)
         end if
-    contains
-        !> x finite and > 0, with no ordered comparison of a NaN (-ffpe-trap=invalid).
-        logical function finite_positive(x)
-            real(dp), intent(in) :: x
-            finite_positive = .false.
-            if (ieee_is_finite(x)) finite_positive = x > 0.0_dp
-        end function finite_positive
     end subroutine record_step_check
 
     !> The pieces of a (valid) pulse: its break list, or the M&P generator state.

@@ -23,7 +23,8 @@ module seispulse_pulses
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
                                              ieee_positive_inf
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error, real_str
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error
+    use seispulse_format, only: real_str
     use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, sin_pi, cos_pi, &
                                  tau_minus_sinpi, pi
     implicit none

@@ -41,8 +41,9 @@ module seispulse_records
     use, intrinsic :: iso_fortran_env, only: int64
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_IO, &
-                                set_error, real_str, int_str
+    use seispulse_checks, only: finite_positive
+    use seispulse_format, only: num_str, quote, upper, real_str, int_str
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_IO, set_error
     implicit none
     private
 
@@ -78,9 +79,6 @@ module seispulse_records
     end type record_t
 
     character(len=*), parameter :: LF = achar(10), CR = achar(13), TAB = achar(9)
-
-    !> Longest quotation of a token or line in a message (bytes).
-    integer, parameter :: QUOTE_MAX = 40
 
     !> Exact powers of ten (10**22 is the largest exactly representable one).
     real(dp), parameter :: P10(0:22) = [1.0e0_dp, 1.0e1_dp, 1.0e2_dp, 1.0e3_dp, 1.0e4_dp, &
@@ -1311,48 +1309,6 @@ contains
     ! Small helpers
     ! ------------------------------------------------------------------------------
 
-    !> x is finite and > 0 (NaN-safe: no ordered comparison on a NaN).
-    elemental logical function finite_positive(x)
-        real(dp), intent(in) :: x
-        finite_positive = .false.
-        if (ieee_is_finite(x)) finite_positive = x > 0.0_dp
-    end function finite_positive
-
-    !> A number for messages: fixed notation with up to 15 significant digits for
-    !> 1e-5 <= |x| < 1e15 ("0.01", "133.895", "-0.35"), real_str's form otherwise.
-    pure function num_str(x) result(s)
-        real(dp), intent(in) :: x
-        character(len=:), allocatable :: s
-        character(len=64) :: buf
-        integer :: nd, k
-        if (.not. ieee_is_finite(x)) then
-            s = real_str(x)
-            return
-        end if
-        if (.not. abs(x) > 0.0_dp) then
-            s = '0.0'
-            return
-        end if
-        if (abs(x) < 1.0e-5_dp .or. abs(x) >= 1.0e15_dp) then
-            s = real_str(x)
-            return
-        end if
-        nd = max(1, 14 - floor(log10(abs(x))))
-        write(buf, '(f0.'//int_str(nd)//')') x
-        buf = adjustl(buf)
-        k = len_trim(buf)
-        do while (k > 2)
-            if (buf(k:k) /= '0' .or. buf(k - 1:k - 1) == '.') exit
-            k = k - 1
-        end do
-        s = buf(1:k)
-        if (s(1:1) == '.') then
-            s = '0'//s
-        else if (len(s) > 1) then
-            if (s(1:2) == '-.') s = '-0'//s(2:)
-        end if
-    end function num_str
-
     !> "line a" or "lines a-b".
     pure function line_range(a, b) result(s)
         integer, intent(in) :: a, b
@@ -1370,39 +1326,6 @@ contains
         character(len=:), allocatable :: s
         s = path//', line '//int_str(lnum)//': '
     end function at_line
-
-    !> 'text' for a message, cut to QUOTE_MAX bytes (at a UTF-8 character boundary)
-    !> with '...' when longer.
-    pure function quote(text) result(s)
-        character(len=*), intent(in) :: text
-        character(len=:), allocatable :: s
-        integer :: k
-        if (len(text) <= QUOTE_MAX) then
-            s = "'"//text//"'"
-            return
-        end if
-        ! cut at a UTF-8 character boundary: not before a continuation byte 10xxxxxx
-        k = QUOTE_MAX
-        do while (k > 1)
-            if (iachar(text(k + 1:k + 1)) < 128 .or. iachar(text(k + 1:k + 1)) >= 192) exit
-            k = k - 1
-        end do
-        s = "'"//text(1:k)//"...'"
-    end function quote
-
-    pure function upper(s) result(u)
-        character(len=*), intent(in) :: s
-        character(len=len(s)) :: u
-        integer :: i, c
-        do i = 1, len(s)
-            c = iachar(s(i:i))
-            if (c >= iachar('a') .and. c <= iachar('z')) then
-                u(i:i) = achar(c - 32)
-            else
-                u(i:i) = s(i:i)
-            end if
-        end do
-    end function upper
 
     !> The file name of a path, without the directory.
     pure function base_with_ext(path) result(b)

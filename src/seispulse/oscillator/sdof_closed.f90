@@ -89,7 +89,9 @@ module seispulse_sdof_closed
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
-                                set_error, real_str, int_str, outside
+                                set_error
+    use seispulse_checks, only: outside
+    use seispulse_format, only: real_str, int_str
     use seispulse_special, only: expm1, exp_phis, complex_phis, sin_pi, cos_pi, pi
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_sdof_sim, only: sdof_validate, min_period

@@ -40,8 +40,8 @@
 module seispulse_sdof_sim
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error, &
-                                real_str, int_str
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error
+    use seispulse_format, only: real_str, int_str
     use seispulse_special, only: complex_phis, pi
     use seispulse_pieces, only: record_step_check
     !$ use omp_lib, only: omp_set_num_threads, omp_get_max_threads

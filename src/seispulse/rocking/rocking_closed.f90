@@ -39,8 +39,9 @@ module seispulse_rocking_closed
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
                                              ieee_quiet_nan, ieee_positive_inf
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error, real_str, &
-                                outside
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error
+    use seispulse_checks, only: outside
+    use seispulse_format, only: real_str
     use seispulse_special, only: expm1, log1p
     use seispulse_pulses, only: check_beta, exp_rise_time
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton

@@ -54,8 +54,11 @@ module seispulse_rocking_sim
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
                                              ieee_quiet_nan
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
-                                SEISPULSE_INTERNAL, set_error, real_str, check_output_grid
+    use seispulse_checks, only: finite_positive, finite_at_least, in_open, in_closed, &
+                                check_output_grid
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
+                                set_error
+    use seispulse_format, only: real_str
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_special, only: pi
     use seispulse_pulses, only: pulse_t, pulse_validate, pulse_at, &
@@ -289,13 +292,13 @@ contains
         if (.not. in_open(blk%alpha, 0.0_dp, half_pi)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'alpha = ' &
                            //real_str(blk%alpha)//': must be a number in (0, pi/2) (rad)')
-        else if (.not. positive_finite(blk%p)) then
+        else if (.not. finite_positive(blk%p)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'p = '//real_str(blk%p) &
                            //': must be a finite number > 0 (rad/s)')
         else if (.not. in_closed(blk%e, 0.0_dp, 1.0_dp)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'e = '//real_str(blk%e) &
                            //': the coefficient of restitution must be in [0, 1]')
-        else if (.not. positive_finite(blk%g)) then
+        else if (.not. finite_positive(blk%g)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(blk%g) &
                            //': must be a finite number > 0 (m/s^2)')
         end if
@@ -313,13 +316,13 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         stat = SEISPULSE_SUCCESS
-        if (.not. positive_finite(b)) then
+        if (.not. finite_positive(b)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'b = '//real_str(b) &
                            //': the half-width must be a finite number > 0 (m)')
-        else if (.not. positive_finite(h)) then
+        else if (.not. finite_positive(h)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'h = '//real_str(h) &
                            //': the half-height must be a finite number > 0 (m)')
-        else if (.not. positive_finite(g)) then
+        else if (.not. finite_positive(g)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(g) &
                            //': must be a finite number > 0 (m/s^2)')
         end if
@@ -344,7 +347,7 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         stat = SEISPULSE_SUCCESS
-        if (.not. positive_finite(r)) then
+        if (.not. finite_positive(r)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'r = '//real_str(r) &
                            //': must be a finite number > 0 (m)')
         else if (.not. in_open(alpha, 0.0_dp, half_pi)) then
@@ -354,7 +357,7 @@ contains
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'io_over_mr2 = ' &
                            //real_str(io_over_mr2)//': I_o/(m R^2) must be a finite number' &
                            //' >= 1 (I_o = I_cm + m R^2)')
-        else if (.not. positive_finite(g)) then
+        else if (.not. finite_positive(g)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(g) &
                            //': must be a finite number > 0 (m/s^2)')
         end if
@@ -440,7 +443,7 @@ contains
         call empty_run(run)
         call rocking_block_validate(blk, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (.not. positive_finite(dt)) then
+        if (.not. finite_positive(dt)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'dt = '//real_str(dt) &
                            //': must be a finite number > 0 (s)')
             return
@@ -522,7 +525,7 @@ contains
             return
         end if
         do j = 1, size(freq_ratio)
-            if (.not. positive_finite(freq_ratio(j))) then
+            if (.not. finite_positive(freq_ratio(j))) then
                 write(idx, '(i0)') j
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'freq_ratio(' &
                                //trim(idx)//') = '//real_str(freq_ratio(j)) &
@@ -1531,50 +1534,5 @@ contains
             call pulse_at(p, t, a, v, d, c)
         end select
     end function pulse_accel
-
-    ! ------------------------------------------------------------------------------
-    ! Small helpers
-    ! ------------------------------------------------------------------------------
-
-    !> x finite and > 0 (no ordered comparison with a NaN: it traps under
-    !> -ffpe-trap=invalid).
-    elemental logical function positive_finite(x)
-        real(dp), intent(in) :: x
-        if (ieee_is_finite(x)) then
-            positive_finite = x > 0.0_dp
-        else
-            positive_finite = .false.
-        end if
-    end function positive_finite
-
-    !> x finite and >= lo.
-    elemental logical function finite_at_least(x, lo)
-        real(dp), intent(in) :: x, lo
-        if (ieee_is_finite(x)) then
-            finite_at_least = x >= lo
-        else
-            finite_at_least = .false.
-        end if
-    end function finite_at_least
-
-    !> lo < x < hi, x not NaN.
-    elemental logical function in_open(x, lo, hi)
-        real(dp), intent(in) :: x, lo, hi
-        if (ieee_is_nan(x)) then
-            in_open = .false.
-        else
-            in_open = x > lo .and. x < hi
-        end if
-    end function in_open
-
-    !> lo <= x <= hi, x not NaN.
-    elemental logical function in_closed(x, lo, hi)
-        real(dp), intent(in) :: x, lo, hi
-        if (ieee_is_nan(x)) then
-            in_closed = .false.
-        else
-            in_closed = x >= lo .and. x <= hi
-        end if
-    end function in_closed
 
 end module seispulse_rocking_sim

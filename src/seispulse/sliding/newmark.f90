@@ -30,8 +30,10 @@ module seispulse_newmark
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
                                              ieee_positive_inf
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
-                                SEISPULSE_INTERNAL, set_error, real_str
+    use seispulse_checks, only: positive
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
+                                set_error
+    use seispulse_format, only: real_str
     use seispulse_sliding_sim, only: slide_t
     use seispulse_pieces, only: record_step_check
     use seispulse_sliding_closed, only: inclined_resistances
@@ -649,16 +651,6 @@ contains
         nsl = nsl + 1
         buf(nsl) = slide
     end subroutine append_slide
-
-    !> x > 0 (+inf allowed), not NaN (no ordered comparison with NaN: it traps).
-    elemental logical function positive(x)
-        real(dp), intent(in) :: x
-        if (ieee_is_nan(x)) then
-            positive = .false.
-        else
-            positive = x > 0.0_dp
-        end if
-    end function positive
 
     !> a exceeds thr by more than rounding (four ulps of the larger): a_g computed at a
     !> stop inside a step is exact only to a few ulps. Safe for thr = +inf.

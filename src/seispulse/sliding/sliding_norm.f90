@@ -4,8 +4,9 @@
 module seispulse_sliding_norm
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error, real_str, &
-                                outside
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error
+    use seispulse_checks, only: outside
+    use seispulse_format, only: real_str
     use seispulse_pulses, only: exp_consts_t, exp_consts
     implicit none
     private

@@ -38,8 +38,10 @@ module seispulse_sliding_sim
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
                                              ieee_positive_inf
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
-                                SEISPULSE_INTERNAL, set_error, real_str, check_output_grid
+    use seispulse_checks, only: positive, finite_at_least, check_output_grid
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
+                                set_error
+    use seispulse_format, only: real_str
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_pulses, only: pulse_t, pulse_validate, pulse_at, exp_consts_t, exp_consts, &
                                 PULSE_EXPONENTIAL
@@ -581,27 +583,6 @@ contains
     ! ------------------------------------------------------------------------------
     ! Small helpers
     ! ------------------------------------------------------------------------------
-
-    !> x > 0 and not NaN (no ordered comparison with a NaN: it traps under
-    !> -ffpe-trap=invalid).
-    elemental logical function positive(x)
-        real(dp), intent(in) :: x
-        if (ieee_is_nan(x)) then
-            positive = .false.
-        else
-            positive = x > 0.0_dp
-        end if
-    end function positive
-
-    !> x finite and >= lo.
-    elemental logical function finite_at_least(x, lo)
-        real(dp), intent(in) :: x, lo
-        if (ieee_is_finite(x)) then
-            finite_at_least = x >= lo
-        else
-            finite_at_least = .false.
-        end if
-    end function finite_at_least
 
     !> True while the block still moves in direction `mode` with velocity w.
     elemental logical function moving(mode, w)

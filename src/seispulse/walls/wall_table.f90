@@ -12,8 +12,9 @@
 module seispulse_wall_table
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_is_finite
     use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error, real_str, &
-                                int_str, outside
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error
+    use seispulse_checks, only: outside
+    use seispulse_format, only: real_str, int_str
     use seispulse_walls_vy, only: vy_rigid, vy_pressure
     use seispulse_walls_one_term, only: one_term, one_term_t, one_term_pressure, SHAPE_SINE, &
                                         SHAPE_POWER

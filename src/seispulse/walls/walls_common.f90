@@ -11,7 +11,9 @@ module seispulse_walls_common
     use seispulse_kinds, only: dp
     use seispulse_special, only: pi
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
-                                set_error, real_str, int_str, outside
+                                set_error
+    use seispulse_checks, only: outside
+    use seispulse_format, only: real_str, int_str
     implicit none
     private
 

@@ -38,8 +38,9 @@ module seispulse_walls_one_term
                                              ieee_positive_inf
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
-                                SEISPULSE_NO_BRACKET, SEISPULSE_NO_CONVERGENCE, set_error, &
-                                real_str, int_str, outside
+                                SEISPULSE_NO_BRACKET, SEISPULSE_NO_CONVERGENCE, set_error
+    use seispulse_checks, only: outside
+    use seispulse_format, only: real_str, int_str
     use seispulse_special, only: expm1, log1p, exp_expm1, pi
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_walls_common, only: wall_psi_t, wall_psi, check_nu, check_delta, &

@@ -37,7 +37,9 @@
 module seispulse_walls_vy
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
-                                SEISPULSE_NO_CONVERGENCE, set_error, real_str, int_str, outside
+                                SEISPULSE_NO_CONVERGENCE, set_error
+    use seispulse_checks, only: outside
+    use seispulse_format, only: real_str, int_str
     use seispulse_special, only: expm1, exp_expm1, pi
     use seispulse_walls_common, only: wall_psi_t, wall_psi, check_delta, &
                                       check_omega_ratio, sqrt_branch, resonance_error, &

@@ -1,0 +1,134 @@
+!> Argument checks shared by every model: NaN-safe range tests (an ordered
+!> comparison on a NaN raises the invalid flag and traps in checked builds) and the
+!> checks of output grids. Messages name the argument first, like every library message.
+module seispulse_checks
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error
+    use seispulse_format, only: real_str
+    implicit none
+    private
+
+    public :: outside, finite_positive, finite_at_least, positive, in_open, in_closed, &
+              check_ascending_times, check_output_grid
+
+contains
+
+    !> x is finite and > 0.
+    elemental logical function finite_positive(x)
+        real(dp), intent(in) :: x  !! the value
+        finite_positive = .false.
+        if (ieee_is_finite(x)) finite_positive = x > 0.0_dp
+    end function finite_positive
+
+    !> x is finite and >= lo.
+    elemental logical function finite_at_least(x, lo)
+        real(dp), intent(in) :: x   !! the value
+        real(dp), intent(in) :: lo  !! the least allowed value
+        finite_at_least = .false.
+        if (ieee_is_finite(x)) finite_at_least = x >= lo
+    end function finite_at_least
+
+    !> x > 0 (+inf allowed) and not NaN.
+    elemental logical function positive(x)
+        real(dp), intent(in) :: x  !! the value
+        positive = .false.
+        if (.not. ieee_is_nan(x)) positive = x > 0.0_dp
+    end function positive
+
+    !> lo < x < hi, x not NaN.
+    elemental logical function in_open(x, lo, hi)
+        real(dp), intent(in) :: x       !! the value
+        real(dp), intent(in) :: lo, hi  !! the open range
+        in_open = .not. outside(x, lo, hi, .true., .true.)
+    end function in_open
+
+    !> lo <= x <= hi, x not NaN.
+    elemental logical function in_closed(x, lo, hi)
+        real(dp), intent(in) :: x       !! the value
+        real(dp), intent(in) :: lo, hi  !! the closed range
+        in_closed = .not. outside(x, lo, hi, .false., .false.)
+    end function in_closed
+
+    !> x is NaN or outside [lo, hi] (an end excluded when open): the range check of every
+    !> input. NaN is tested first: an ordered comparison on NaN raises the invalid flag
+    !> (and traps in checked builds).
+    elemental logical function outside(x, lo, hi, open_lo, open_hi)
+        real(dp), intent(in) :: x        !! the value
+        real(dp), intent(in) :: lo, hi   !! the range
+        logical, intent(in) :: open_lo   !! lo itself is outside
+        logical, intent(in) :: open_hi   !! hi itself is outside
+        if (ieee_is_nan(x)) then
+            outside = .true.
+        else if (open_lo) then
+            outside = .not. (x > lo)
+        else
+            outside = x < lo
+        end if
+        if (outside) return
+        if (open_hi) then
+            outside = .not. (x < hi)
+        else
+            outside = x > hi
+        end if
+    end function outside
+
+    !> Output times of an integrator: finite and ascending (a message naming t(i)).
+    subroutine check_ascending_times(t, name, stat, errmsg)
+        real(dp), intent(in) :: t(:)                          !! the times
+        character(len=*), intent(in) :: name                  !! their name in messages
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        integer :: i
+        character(len=24) :: idx
+        stat = SEISPULSE_SUCCESS
+        do i = 1, size(t)
+            if (.not. ieee_is_finite(t(i))) then
+                write(idx, '(i0)') i
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, name//'('//trim(idx) &
+                               //') = '//real_str(t(i))//': must be a finite number')
+                return
+            end if
+        end do
+        do i = 2, size(t)
+            if (t(i) < t(i - 1)) then
+                write(idx, '(i0)') i
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, name//'('//trim(idx) &
+                               //') = '//real_str(t(i))//': the times must be ascending')
+                return
+            end if
+        end do
+    end subroutine check_ascending_times
+
+    !> Optional output histories of an integrator: the times t_grid and the two grids
+    !> x_grid, y_grid all present or all absent, of one size, t_grid finite and ascending.
+    subroutine check_output_grid(x_name, y_name, stat, errmsg, t_grid, x_grid, y_grid)
+        character(len=*), intent(in) :: x_name, y_name        !! names of the grids in messages
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp), intent(in), optional :: t_grid(:)           !! output times
+        real(dp), intent(in), optional :: x_grid(:)           !! first output grid
+        real(dp), intent(in), optional :: y_grid(:)           !! second output grid
+        character(len=:), allocatable :: together
+        stat = SEISPULSE_SUCCESS
+        if (.not. (present(t_grid) .or. present(x_grid) .or. present(y_grid))) return
+        together = ': missing (t_grid, '//x_name//' and '//y_name//' go together)'
+        if (.not. present(t_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 't_grid: missing (' &
+                           //x_name//' and '//y_name//' need the output times)')
+        else if (.not. present(x_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, x_name//together)
+        else if (.not. present(y_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, y_name//together)
+        else if (size(x_grid) /= size(t_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, x_name &
+                           //': must have the size of t_grid')
+        else if (size(y_grid) /= size(t_grid)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, y_name &
+                           //': must have the size of t_grid')
+        else
+            call check_ascending_times(t_grid, 't_grid', stat, errmsg)
+        end if
+    end subroutine check_output_grid
+
+end module seispulse_checks
