@@ -2,15 +2,11 @@
 normal and inverse polarity) on the 18 records shipped in the PyPI package pyslammer,
 and the spread between the exact rule and SLAMMER's loop on the same cases.
 
-Neither the records nor the results are in this repository: the records come from an
-installed pyslammer (a test dependency of `make test`), the results from
-../shared/validation/slammer-1.1-results.json.gz next to the source tree (or the
-directory named by SEISPULSE_VALIDATION_DIR). Without either, the tests skip and say
-which is missing.
+The published results are in this repository, test/data/slammer/rigid-results.csv
+(provenance and licence in test/data/slammer/README.md); the records come from an
+installed pyslammer (a test dependency of `make test`), without which the tests skip.
 """
-import gzip
-import json
-import os
+import csv
 from pathlib import Path
 
 import numpy as np
@@ -18,32 +14,30 @@ import pytest
 
 from seispulse import newmark, records
 
-RESULTS_NAME = "slammer-1.1-results.json.gz"
+RESULTS = Path(__file__).resolve().parents[1] / "data" / "slammer" / "rigid-results.csv"
 
 
-def _results_path(source_root):
-    candidates = []
-    if os.environ.get("SEISPULSE_VALIDATION_DIR"):
-        candidates.append(Path(os.environ["SEISPULSE_VALIDATION_DIR"]) / RESULTS_NAME)
-    candidates += [source_root.parent / "shared" / "validation" / RESULTS_NAME,
-                   Path("/work/shared/validation") / RESULTS_NAME]
-    for path in candidates:
-        if path.is_file():
-            return path
-    pytest.skip("SLAMMER 1.1 results not found (looked for "
-                + ", ".join(str(p) for p in candidates)
-                + "; set SEISPULSE_VALIDATION_DIR to the folder holding " + RESULTS_NAME + ")")
+def _rigid_analyses():
+    """The 90 rigid analyses, in the layout of SLAMMER's exported results."""
+    with open(RESULTS, newline="") as f:
+        return [{"analysis_id": row["analysis_id"],
+                 "analysis": {"method": "rigid"},
+                 "ground_motion_parameters": {
+                     "ground_motion_file": row["ground_motion_file"],
+                     "target_pga_g": float(row["target_pga_g"])},
+                 "site_parameters": {"ky_g": float(row["ky_g"])},
+                 "results": {key: float(row[key]) for key in
+                             ("normal_displacement_cm", "inverse_displacement_cm")}}
+                for row in csv.DictReader(f)]
 
 
 @pytest.fixture(scope="module")
-def slammer_cases(source_root):
+def slammer_cases():
     """The 90 rigid analyses and the pyslammer records they use, read by seispulse."""
     pyslammer = pytest.importorskip(
         "pyslammer", reason="pyslammer (PyPI) is not installed: it ships the 18 records "
         "SLAMMER's results were computed on (`make test` installs it)")
-    with gzip.open(_results_path(source_root), "rt") as f:
-        data = json.load(f)
-    rigid = [a for a in data["analyses"] if a["analysis"]["method"] == "rigid"]
+    rigid = _rigid_analyses()
     folder = Path(pyslammer.__file__).parent / "sample_ground_motions"
     recs = {}
     for a in rigid:
