@@ -38,14 +38,14 @@ module seispulse_sliding_sim
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
                                              ieee_positive_inf
     use seispulse_kinds, only: dp
-    use seispulse_checks, only: positive, finite_positive, finite_at_least, check_output_grid
+    use seispulse_checks, only: positive, finite_at_least, check_output_grid
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
                                 set_error
     use seispulse_format, only: real_str, int_str
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_pulses, only: pulse_t, pulse_validate, pulse_at, exp_consts_t, exp_consts, &
                                 PULSE_EXPONENTIAL
-    use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_pieces_check, &
+    use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_step_check, &
                                 pulse_pieces_init, record_pieces_init, next_piece, &
                                 exceeds, onset_on_piece
     implicit none
@@ -206,17 +206,7 @@ contains
         call empty_result(res)
         call friction_validate(fr, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (.not. (positive(dt) .and. ieee_is_finite(dt))) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'dt = '//real_str(dt) &
-                           //': must be a finite number > 0')
-            return
-        end if
-        if (.not. finite_positive(g)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(g) &
-                           //': must be a finite number > 0 (m/s^2)')
-            return
-        end if
-        call record_pieces_check(accel, stat, errmsg)
+        call record_step_check(accel, dt, g, stat, errmsg)   ! dt, g; not empty, finite
         if (stat /= SEISPULSE_SUCCESS) return
         call check_output_grid('u_grid', 'w_grid', stat, errmsg, t_grid, u_grid, w_grid)
         if (stat /= SEISPULSE_SUCCESS) return
