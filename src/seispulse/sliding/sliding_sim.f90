@@ -201,6 +201,7 @@ contains
         type(piece_iter_t) :: it
         type(friction_t) :: fr_si
         real(dp), allocatable :: accel_si(:)
+        real(dp) :: big
         integer :: i
 
         call empty_result(res)
@@ -211,19 +212,25 @@ contains
         call check_output_grid('u_grid', 'w_grid', stat, errmsg, t_grid, u_grid, w_grid)
         if (stat /= SEISPULSE_SUCCESS) return
 
-        ! to m/s^2: one product per value (ay g = +inf, no sliding that way, if it overflows)
+        ! to m/s^2: one product per value; the overflow is tested before it happens (a
+        ! product below huge can only overflow for g > 1); ay g = +inf if it would overflow
+        ! (no sliding that way)
+        big = huge(g)
+        if (g > 1.0_dp) big = huge(g) / g
         allocate(accel_si(size(accel)))
         do i = 1, size(accel)
-            accel_si(i) = accel(i) * g
-            if (.not. ieee_is_finite(accel_si(i))) then
+            if (abs(accel(i)) > big) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel('//int_str(i) &
                                //') = '//real_str(accel(i))//': accel g overflows')
                 return
             end if
+            accel_si(i) = accel(i) * g
         end do
         fr_si = fr
-        fr_si%ay_fwd = fr%ay_fwd * g
-        fr_si%ay_rev = fr%ay_rev * g
+        fr_si%ay_fwd = ieee_value(g, ieee_positive_inf)
+        fr_si%ay_rev = fr_si%ay_fwd
+        if (fr%ay_fwd <= big) fr_si%ay_fwd = fr%ay_fwd * g
+        if (fr%ay_rev <= big) fr_si%ay_rev = fr%ay_rev * g
 
         gf%src = SRC_RECORD
         call record_pieces_init(it, size(accel_si), dt)
