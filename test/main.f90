@@ -12,6 +12,7 @@ program tester
     use test_rocking_closed, only: collect_rocking_closed
     use test_rocking_sim, only: collect_rocking_sim
     use test_records, only: collect_records
+    use test_number_reader, only: collect_number_reader
     use test_newmark, only: collect_newmark
     use test_sdof_sim, only: collect_sdof_sim
     use test_sdof_closed, only: collect_sdof_closed
@@ -63,6 +64,10 @@ program tester
     if (selected('records')) then
         call collect_records(tests)
         call run_suite('records', tests, output_unit, npass, nfail)
+    end if
+    if (selected('number_reader')) then
+        call collect_number_reader(tests)
+        call run_suite('number_reader', tests, output_unit, npass, nfail)
     end if
     if (selected('newmark')) then
         call collect_newmark(tests)

@@ -111,9 +111,9 @@ contains
 
     ! ---------------------------------------------------------------- tests
 
-    !> The exact rule solves the same problem as stickslip_record (accel in g, g = 9.80665:
-    !> the integrator's u in g s^2 times g): slides, extremes and histories agree to
-    !> rounding.
+    !> The exact rule solves the same problem as stickslip_record (accel in g; run with
+    !> g = 1, so its u in g s^2 times g = 9.80665): slides, extremes and histories agree
+    !> to rounding.
     subroutine test_against_stickslip(error)
         type(test_error), allocatable, intent(out) :: error
         integer, parameter :: n = 2400
@@ -147,7 +147,8 @@ contains
                     if (allocated(error)) return
                     fr%ay_fwd = ky
                     fr%ay_rev = ky_up
-                    call stickslip_record(a, dt, fr, ref, stat, t_grid=tg, u_grid=ug, w_grid=wg)
+                    call stickslip_record(a, dt, fr, 1.0_dp, ref, stat, t_grid=tg, u_grid=ug, &
+                                          w_grid=wg)
                     call check(error, stat, SEISPULSE_SUCCESS, trim(label)//': stickslip')
                     if (allocated(error)) return
                     scale = g0 * max(ref%u_max, -ref%u_min, 1.0e-6_dp)

@@ -18,6 +18,10 @@ module test_sliding_sim
     public :: collect_sliding_sim
 
     real(dp), parameter :: pi = 3.141592653589793238462643383279502884_dp
+    !> stickslip_record takes accel and ay in g with g in m/s^2; the records here are
+    !> samples of pulses in the pulse's own units, so g = 1 (u in those units times s^2)
+    real(dp), parameter :: g_unit = 1.0_dp
+    real(dp), parameter :: g0 = 9.80665_dp
 
 contains
 
@@ -49,7 +53,9 @@ contains
                               test_mp_ricker_records), &
                  new_unittest('spike, eta >= 1, one-way friction, short records', &
                               test_degenerate), &
-                 new_unittest('bad input is a status naming the parameter', test_bad_input)]
+                 new_unittest('bad input is a status naming the parameter', test_bad_input), &
+                 new_unittest('record in g with g: m and m/s, the products accel g, ay g', &
+                              test_record_in_g)]
     end subroutine collect_sliding_sim
 
     ! ---------------------------------------------------------------- helpers
@@ -523,7 +529,7 @@ contains
             do i = 1, size(etas)
                 call run_pulse(error, p, fric(etas(i), etas(i)), 1, rp, 'triangle pulse')
                 if (allocated(error)) return
-                call stickslip_record(acc, dt, fric(etas(i), etas(i)), rr, stat)
+                call stickslip_record(acc, dt, fric(etas(i), etas(i)), g_unit, rr, stat)
                 call check(error, stat, SEISPULSE_SUCCESS, 'record status')
                 if (allocated(error)) return
                 call check_same_slides(error, rr, rp, 1.0e-12_dp, 'triangle record')
@@ -531,7 +537,7 @@ contains
             end do
             ! rectangle of length 1: n samples of 1
             acc(:) = 1.0_dp
-            call stickslip_record(acc, dt, fric(0.4_dp, 0.4_dp), rr, stat)
+            call stickslip_record(acc, dt, fric(0.4_dp, 0.4_dp), g_unit, rr, stat)
             call check(error, stat, SEISPULSE_SUCCESS, 'record status')
             if (allocated(error)) return
             call check(error, size(rr%slides), 1, 'one slide')
@@ -561,7 +567,7 @@ contains
             do k = 1, 3
                 dt = 1.0_dp / real(2**(k + 4), dp)
                 call sample_pulse(p, dt, c * 2**(k + 4) + 1, acc)
-                call stickslip_record(acc, dt, fric(0.3_dp, 0.3_dp), rr, stat)
+                call stickslip_record(acc, dt, fric(0.3_dp, 0.3_dp), g_unit, rr, stat)
                 call check(error, stat, SEISPULSE_SUCCESS, 'record status')
                 if (allocated(error)) return
                 call check(error, size(rr%slides), c, 'record: number of slides')
@@ -771,7 +777,7 @@ contains
             do k = 1, 2
                 dt = 1.0_dp / real(2**(8 + k), dp)
                 call sample_pulse(p, dt, nint(tend / dt) + 1, acc)
-                call stickslip_record(acc, dt, fric(ay, ay), rr, stat)
+                call stickslip_record(acc, dt, fric(ay, ay), g_unit, rr, stat)
                 call check(error, stat, SEISPULSE_SUCCESS, 'record status')
                 if (allocated(error)) return
                 call check(error, size(rr%slides), 3, 'record: same number of slides')
@@ -873,11 +879,11 @@ contains
         ! and no sliding at all
         call run_pulse(error, sine_cycle_pulse(1.0_dp, 1.0_dp), fric(inf, inf), 0, res, 'locked')
         if (allocated(error)) return
-        call stickslip_record([5.0_dp], 0.01_dp, fric(0.1_dp, 0.1_dp), res, stat)
+        call stickslip_record([5.0_dp], 0.01_dp, fric(0.1_dp, 0.1_dp), g_unit, res, stat)
         call check(error, stat == SEISPULSE_SUCCESS .and. size(res%slides) == 0, &
                    'one sample: an instant, no slide')
         if (allocated(error)) return
-        call stickslip_record([1.0_dp, 1.0_dp], 1.0_dp, fric(0.5_dp, 0.5_dp), res, stat)
+        call stickslip_record([1.0_dp, 1.0_dp], 1.0_dp, fric(0.5_dp, 0.5_dp), g_unit, res, stat)
         call check(error, stat == SEISPULSE_SUCCESS .and. size(res%slides) == 1, 'two samples')
         if (allocated(error)) return
         call check(error, res%slides(1)%t_stop, 2.0_dp, rtol=1.0e-15_dp, message='t_m = 1/eta')
@@ -920,24 +926,43 @@ contains
         if (allocated(error)) return
         ! records
         msg = ''
-        call stickslip_record([1.0_dp, 2.0_dp], 0.0_dp, fric(0.1_dp, 0.1_dp), res, stat, msg)
+        call stickslip_record([1.0_dp, 2.0_dp], 0.0_dp, fric(0.1_dp, 0.1_dp), &
+                              g_unit, res, stat, msg)
         call expect_status('dt = 0')
         if (allocated(error)) return
         msg = ''
-        call stickslip_record([1.0_dp, 2.0_dp], nan, fric(0.1_dp, 0.1_dp), res, stat, msg)
+        call stickslip_record([1.0_dp, 2.0_dp], nan, fric(0.1_dp, 0.1_dp), g_unit, res, stat, msg)
         call expect_status('dt = NaN')
         if (allocated(error)) return
         msg = ''
-        call stickslip_record([real(dp) ::], 0.01_dp, fric(0.1_dp, 0.1_dp), res, stat, msg)
+        call stickslip_record([real(dp) ::], 0.01_dp, fric(0.1_dp, 0.1_dp), g_unit, res, stat, msg)
         call expect_status('accel')
         if (allocated(error)) return
         msg = ''
-        call stickslip_record([1.0_dp, nan, 2.0_dp], 0.01_dp, fric(0.1_dp, 0.1_dp), res, stat, msg)
+        call stickslip_record([1.0_dp, nan, 2.0_dp], 0.01_dp, fric(0.1_dp, 0.1_dp), &
+                              g_unit, res, stat, msg)
         call expect_status('accel(2) = NaN')
         if (allocated(error)) return
         msg = ''
-        call stickslip_record([1.0_dp, 2.0_dp], 0.01_dp, fric(-0.1_dp, 0.1_dp), res, stat, msg)
+        call stickslip_record([1.0_dp, 2.0_dp], 0.01_dp, fric(-0.1_dp, 0.1_dp), &
+                              g_unit, res, stat, msg)
         call expect_status('ay_fwd')
+        if (allocated(error)) return
+        msg = ''
+        call stickslip_record([1.0_dp, 2.0_dp], 0.01_dp, fric(0.1_dp, 0.1_dp), 0.0_dp, res, stat, &
+                              msg)
+        call expect_status('g = 0.0')
+        if (allocated(error)) return
+        msg = ''
+        call stickslip_record([1.0_dp, 2.0_dp], 0.01_dp, fric(0.1_dp, 0.1_dp), nan, res, stat, msg)
+        call expect_status('g = NaN')
+        if (allocated(error)) return
+        msg = ''
+        call stickslip_record([1.0_dp, -huge(1.0_dp)], 0.01_dp, fric(0.1_dp, 0.1_dp), g0, res, &
+                              stat, msg)
+        call expect_status('accel(2) = ')
+        if (allocated(error)) return
+        call check(error, index(msg, 'overflows') > 0, 'overflow in message: '//trim(msg))
         if (allocated(error)) return
         ! grids
         tg = [0.0_dp, 1.0_dp, 2.0_dp]
@@ -956,13 +981,15 @@ contains
         if (allocated(error)) return
         tg = [0.0_dp, 2.0_dp, 1.0_dp]
         msg = ''
-        call stickslip_record([1.0_dp, 2.0_dp], 0.01_dp, fric(0.1_dp, 0.1_dp), res, stat, msg, &
+        call stickslip_record([1.0_dp, 2.0_dp], 0.01_dp, fric(0.1_dp, 0.1_dp), &
+                              g_unit, res, stat, msg, &
                               t_grid=tg, u_grid=ug, w_grid=wg3)
         call expect_status('t_grid(3)')
         if (allocated(error)) return
         tg = [0.0_dp, nan, 1.0_dp]
         msg = ''
-        call stickslip_record([1.0_dp, 2.0_dp], 0.01_dp, fric(0.1_dp, 0.1_dp), res, stat, msg, &
+        call stickslip_record([1.0_dp, 2.0_dp], 0.01_dp, fric(0.1_dp, 0.1_dp), &
+                              g_unit, res, stat, msg, &
                               t_grid=tg, u_grid=ug, w_grid=wg3)
         call expect_status('t_grid(2) = NaN')
         if (allocated(error)) return
@@ -993,5 +1020,47 @@ contains
         end subroutine expect_status
 
     end subroutine test_bad_input
+
+    !> A record in g and its g: the run on accel g, ay g (bit for bit the run on the
+    !> caller's products with g = 1), u in m; the closed form of a constant record.
+    subroutine test_record_in_g(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(stickslip_result_t) :: rg, r1
+        real(dp), allocatable :: acc(:)
+        real(dp) :: dt
+        integer :: stat
+        type(pulse_t) :: p
+        ! 1 g during 1 s, ay = 0.5 g: slides to t = 2 s, u = (1 - eta)/(2 eta) g s^2 = g/2 m
+        call stickslip_record([1.0_dp, 1.0_dp], 1.0_dp, fric(0.5_dp, 0.5_dp), g0, rg, stat)
+        call check(error, stat, SEISPULSE_SUCCESS, 'constant record status')
+        if (allocated(error)) return
+        call check(error, size(rg%slides), 1, 'constant record: one slide')
+        if (allocated(error)) return
+        call check(error, rg%slides(1)%t_stop, 2.0_dp, rtol=1.0e-15_dp, message='t_stop (s)')
+        if (allocated(error)) return
+        call check(error, rg%u_final, 0.5_dp * g0, rtol=1.0e-15_dp, message='u_final (m)')
+        if (allocated(error)) return
+        call check(error, rg%slides(1)%w_peak, 0.5_dp * g0, rtol=1.0e-15_dp, &
+                   message='w_peak (m/s)')
+        if (allocated(error)) return
+        ! a full exponential cycle, two slides: identical to the run on the products
+        p = exponential_pulse(1.0_dp, 1.0_dp, -pi, .true.)
+        dt = 1.0_dp / 64.0_dp
+        call sample_pulse(p, dt, 129, acc)
+        call stickslip_record(acc, dt, fric(0.3_dp, 0.2_dp, 1.2_dp), g0, rg, stat)
+        call check(error, stat, SEISPULSE_SUCCESS, 'record in g status')
+        if (allocated(error)) return
+        call stickslip_record(acc * g0, dt, fric(0.3_dp * g0, 0.2_dp * g0, 1.2_dp), g_unit, r1, &
+                              stat)
+        call check(error, stat, SEISPULSE_SUCCESS, 'record in m/s^2 status')
+        if (allocated(error)) return
+        call check(error, size(rg%slides) >= 2, 'two slides at least')
+        if (allocated(error)) return
+        call check_same_slides(error, rg, r1, 0.0_dp, 'g0 against the products')
+        if (allocated(error)) return
+        call check(error, rg%u_max, r1%u_max, rtol=0.0_dp, message='u_max')
+        if (allocated(error)) return
+        call check(error, rg%u_min, r1%u_min, rtol=0.0_dp, message='u_min')
+    end subroutine test_record_in_g
 
 end module test_sliding_sim

@@ -411,10 +411,11 @@ subroutine sp_stickslip(kind, params, nrec, accel, dt, ay_fwd, ay_rev, sfac, sta
             call stickslip_pulse(pulse_from_params(kind, params), fr, res, stat, errmsg)
         end if
     else
+        ! accel and ay in the caller's units (any, the same for both): g = 1
         if (ngrid > 0) then
-            call stickslip_record(accel, dt, fr, res, stat, errmsg, tg, ug, wg)
+            call stickslip_record(accel, dt, fr, 1.0_dp, res, stat, errmsg, tg, ug, wg)
         else
-            call stickslip_record(accel, dt, fr, res, stat, errmsg)
+            call stickslip_record(accel, dt, fr, 1.0_dp, res, stat, errmsg)
         end if
     end if
     if (stat /= SEISPULSE_SUCCESS) return

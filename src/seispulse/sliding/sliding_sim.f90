@@ -41,11 +41,11 @@ module seispulse_sliding_sim
     use seispulse_checks, only: positive, finite_at_least, check_output_grid
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
                                 set_error
-    use seispulse_format, only: real_str
+    use seispulse_format, only: real_str, int_str
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_pulses, only: pulse_t, pulse_validate, pulse_at, exp_consts_t, exp_consts, &
                                 PULSE_EXPONENTIAL
-    use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_pieces_check, &
+    use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_step_check, &
                                 pulse_pieces_init, record_pieces_init, next_piece, &
                                 exceeds, onset_on_piece
     implicit none
@@ -54,8 +54,9 @@ module seispulse_sliding_sim
     public :: friction_t, slide_t, stickslip_result_t
     public :: friction_validate, stickslip_pulse, stickslip_record
 
-    !> Friction of the block, as yield accelerations in the caller's units
-    !> (A_g units for the dimensionless problem: ay = eta).
+    !> Friction of the block, as yield accelerations in the units of the ground
+    !> acceleration: the pulse's for `stickslip_pulse` (A_g units for the dimensionless
+    !> problem: ay = eta), g for `stickslip_record` (like the record).
     type :: friction_t
         real(dp) :: ay_fwd = 0.1_dp         !! resistance to forward (u' > 0) sliding, > 0, or +inf
         real(dp) :: ay_rev = 0.1_dp         !! resistance to reverse sliding, > 0, or +inf
@@ -178,38 +179,62 @@ contains
         call integrate(g, it, fr, no_record, res, stat, errmsg, t_grid, u_grid, w_grid)
     end subroutine stickslip_pulse
 
-    !> Stick-slip response to an accelerogram: accel(i) at t = (i - 1) dt, linear in
-    !> between (each step is a piece), at rest before t = 0 and a_g = 0 after the
-    !> last sample (a sliding block then decelerates to rest).
-    subroutine stickslip_record(accel, dt, fr, res, stat, errmsg, t_grid, u_grid, w_grid)
-        real(dp), intent(in) :: accel(:)                      !! ground acceleration samples, finite
-        real(dp), intent(in) :: dt                            !! sampling interval, > 0
-        type(friction_t), intent(in) :: fr                    !! friction of the block
-        type(stickslip_result_t), intent(out) :: res          !! slides and summary
+    !> Stick-slip response to an accelerogram in g (like `newmark_rigid` and
+    !> `sdof_response`): accel(i) at t = (i - 1) dt, linear in between (each step is a
+    !> piece), at rest before t = 0 and a_g = 0 after the last sample (a sliding block
+    !> then decelerates to rest). The yield accelerations of `fr` are in g too; the run
+    !> is made on accel(i) g and ay g (m/s^2), so u is in m and u' in m/s. g = 1 keeps
+    !> any consistent units (accel and ay in the same units, u in those times s^2).
+    subroutine stickslip_record(accel, dt, fr, g, res, stat, errmsg, t_grid, u_grid, w_grid)
+        real(dp), intent(in) :: accel(:)                      !! ground acceleration (g), finite
+        real(dp), intent(in) :: dt                            !! time step (s), > 0
+        type(friction_t), intent(in) :: fr                    !! friction of the block (g)
+        real(dp), intent(in) :: g                             !! gravity (m/s^2), > 0
+        type(stickslip_result_t), intent(out) :: res          !! slides (u in m, u' in m/s)
+                                                              !! and summary
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: t_grid(:)           !! output times, ascending
-        real(dp), intent(out), optional :: u_grid(:)          !! u at t_grid
-        real(dp), intent(out), optional :: w_grid(:)          !! u' at t_grid
-        type(ground_fn) :: g
+        real(dp), intent(in), optional :: t_grid(:)           !! output times (s), ascending
+        real(dp), intent(out), optional :: u_grid(:)          !! u at t_grid (m)
+        real(dp), intent(out), optional :: w_grid(:)          !! u' at t_grid (m/s)
+        type(ground_fn) :: gf
         type(piece_iter_t) :: it
+        type(friction_t) :: fr_si
+        real(dp), allocatable :: accel_si(:)
+        real(dp) :: big
+        integer :: i
 
         call empty_result(res)
         call friction_validate(fr, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (.not. (positive(dt) .and. ieee_is_finite(dt))) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'dt = '//real_str(dt) &
-                           //': must be a finite number > 0')
-            return
-        end if
-        call record_pieces_check(accel, stat, errmsg)
+        call record_step_check(accel, dt, g, stat, errmsg)   ! dt, g; not empty, finite
         if (stat /= SEISPULSE_SUCCESS) return
         call check_output_grid('u_grid', 'w_grid', stat, errmsg, t_grid, u_grid, w_grid)
         if (stat /= SEISPULSE_SUCCESS) return
 
-        g%src = SRC_RECORD
-        call record_pieces_init(it, size(accel), dt)
-        call integrate(g, it, fr, accel, res, stat, errmsg, t_grid, u_grid, w_grid)
+        ! to m/s^2: one product per value; the overflow is tested before it happens (a
+        ! product below huge can only overflow for g > 1); ay g = +inf if it would overflow
+        ! (no sliding that way)
+        big = huge(g)
+        if (g > 1.0_dp) big = huge(g) / g
+        allocate(accel_si(size(accel)))
+        do i = 1, size(accel)
+            if (abs(accel(i)) > big) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel('//int_str(i) &
+                               //') = '//real_str(accel(i))//': accel g overflows')
+                return
+            end if
+            accel_si(i) = accel(i) * g
+        end do
+        fr_si = fr
+        fr_si%ay_fwd = ieee_value(g, ieee_positive_inf)
+        fr_si%ay_rev = fr_si%ay_fwd
+        if (fr%ay_fwd <= big) fr_si%ay_fwd = fr%ay_fwd * g
+        if (fr%ay_rev <= big) fr_si%ay_rev = fr%ay_rev * g
+
+        gf%src = SRC_RECORD
+        call record_pieces_init(it, size(accel_si), dt)
+        call integrate(gf, it, fr_si, accel_si, res, stat, errmsg, t_grid, u_grid, w_grid)
     end subroutine stickslip_record
 
     ! ------------------------------------------------------------------------------
