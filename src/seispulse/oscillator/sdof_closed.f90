@@ -97,13 +97,14 @@ module seispulse_sdof_closed
     use seispulse_sdof_sim, only: sdof_validate, min_period
     use seispulse_pulses, only: pulse_t, pulse_validate, PULSE_EXPONENTIAL, PULSE_HALF_SINE, &
                                 PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, &
-                                PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP
+                                PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP, pulse_peak_accel, &
+                                ricker_accel, ricker_window, mp_terms
     implicit none
     private
 
     public :: dynamic_coefficient, harmonic_response, rect_pulse_response, beta_pulse, &
               impulse_max, impulse_response
-    public :: sdof_pulse_response, sdof_pulse_peaks, sdof_pulse_spectrum, pulse_peak_accel
+    public :: sdof_pulse_response, sdof_pulse_peaks, sdof_pulse_spectrum
     public :: BETA_HYSTERETIC, BETA_VISCOUS, HARMONIC_SINE, HARMONIC_COSINE, &
               BETA_PULSE_TEXTBOOK, BETA_PULSE_EXACT
 
@@ -117,8 +118,6 @@ module seispulse_sdof_closed
     real(dp), parameter :: two_pi = 2.0_dp * pi
     !> Half lobes with |beta| at most this use the expm1-ramp form (no 1/beta blow-up).
     real(dp), parameter :: beta_small = 1.0_dp
-    !> Ricker cut: |x| = pi f_p |t - t0| <= 10 (as seispulse_pieces).
-    real(dp), parameter :: ricker_x_cut = 10.0_dp
     integer, parameter :: max_ricker_panels = 2**20
     !> Ricker panels: at most min(T, 1/f_p)/ricker_panels_per long.
     real(dp), parameter :: ricker_panels_per = 32.0_dp
@@ -207,13 +206,6 @@ module seispulse_sdof_closed
     contains
         procedure :: eval => slope_eval
     end type slope_fn
-
-    !> Jerk of the M&P pulse in x = f_p (t - t0), up to the factor A f_p^2.
-    type, extends(scalar_function) :: mp_jerk_fn
-        real(dp) :: k(3) = 0.0_dp, w(3) = 0.0_dp, nu = 0.0_dp
-    contains
-        procedure :: eval => mp_jerk_eval
-    end type mp_jerk_fn
 
     type :: bracket_t
         integer :: seg = 0, which = 0
@@ -656,42 +648,6 @@ contains
             if (present(t_sa)) t_sa(i) = tmax(3)
         end do
     end subroutine sdof_pulse_spectrum
-
-    !> Peak |a_g| (m/s^2) of the pulse and its time (s): |amp| at the peak of each kind;
-    !> Mavroeidis & Papageorgiou by a scan (step 1/(64 f_p)) and Brent on the closed-form jerk.
-    !> The spike (beta = +inf) reports |amp| at t_d/2 although it has no area.
-    subroutine pulse_peak_accel(p, a_max, t_max, stat, errmsg)
-        type(pulse_t), intent(in) :: p                        !! the pulse (SI)
-        real(dp), intent(out) :: a_max                        !! max |a_g| (m/s^2)
-        real(dp), intent(out) :: t_max                        !! its time (s)
-        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
-        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        a_max = 0.0_dp
-        t_max = 0.0_dp
-        call pulse_validate(p, stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-        a_max = abs(p%amp)
-        select case (p%kind)
-        case (PULSE_EXPONENTIAL)
-            if (p%beta < -huge(1.0_dp)) then
-                t_max = 0.0_dp
-            else
-                t_max = 0.5_dp * p%duration
-            end if
-        case (PULSE_HALF_SINE)
-            t_max = 0.5_dp * p%duration
-        case (PULSE_SINE_CYCLE)
-            t_max = 0.25_dp * p%duration
-        case (PULSE_TRIANGULAR)
-            t_max = p%peak_frac * p%duration
-        case (PULSE_RICKER)
-            t_max = p%t0
-        case (PULSE_MP)
-            call mp_peak_accel(p, a_max, t_max)
-        case default
-            t_max = 0.0_dp
-        end select
-    end subroutine pulse_peak_accel
 
     ! ==================================================================================
     ! Validation
@@ -1337,25 +1293,6 @@ contains
                 + km * ricker_accel(p, tmid - (0.5_dp * tau) * gl_x))
     end function gl_panel
 
-    elemental function ricker_accel(p, t) result(a)
-        type(pulse_t), intent(in) :: p
-        real(dp), intent(in) :: t
-        real(dp) :: a, x
-        x = pi * p%freq * (t - p%t0)
-        if (abs(x) < 30.0_dp) then
-            a = p%amp * (1.0_dp - 2.0_dp * x * x) * exp(-x * x)
-        else
-            a = 0.0_dp
-        end if
-    end function ricker_accel
-
-    pure subroutine ricker_window(p, ts, te)
-        type(pulse_t), intent(in) :: p
-        real(dp), intent(out) :: ts, te
-        ts = max(0.0_dp, p%t0 - ricker_x_cut / (pi * p%freq))
-        te = p%t0 + ricker_x_cut / (pi * p%freq)
-    end subroutine ricker_window
-
     !> Append a segment [ta, ta + dur] (dur > 0).
     subroutine add_seg(m, ta, dur)
         type(model_t), intent(inout) :: m
@@ -1841,93 +1778,5 @@ contains
         call point_values(self%osc, self%seg, self%p, x, q, dq)
         y = dq(self%which)
     end function slope_eval
-
-    ! ==================================================================================
-    ! Mavroeidis & Papageorgiou: peak ground acceleration
-    ! ==================================================================================
-
-    pure function mp_accel(k, w, nu, x) result(a)
-        real(dp), intent(in) :: k(3), w(3), nu, x
-        real(dp) :: a
-        a = -sum(w * k * sin(k * x + nu))
-    end function mp_accel
-
-    function mp_jerk_eval(self, x) result(y)
-        class(mp_jerk_fn), intent(inout) :: self
-        real(dp), intent(in) :: x
-        real(dp) :: y
-        y = -sum(self%w * self%k**2 * cos(self%k * x + self%nu))
-    end function mp_jerk_eval
-
-    !> Wave numbers k (in x = f_p (t - t0)) and weights w of the three sinusoids of the M&P
-    !> acceleration, a = -A f_p sum w_j k_j sin(k_j x + nu): k = 2 pi (1, 1 + 1/gamma,
-    !> 1 - 1/gamma), w = (1/2, 1/4, 1/4).
-    pure subroutine mp_terms(gam, k, w)
-        real(dp), intent(in) :: gam
-        real(dp), intent(out) :: k(3), w(3)
-        k = two_pi * [1.0_dp, 1.0_dp + 1.0_dp / gam, 1.0_dp - 1.0_dp / gam]
-        w = [0.5_dp, 0.25_dp, 0.25_dp]
-    end subroutine mp_terms
-
-    !> Bound of |a|/(A f_p) of the M&P pulse at |x|: a = (A f_p/2)[env' cos(phi)
-    !> - 2 pi env sin(phi)], env = 1 + cos(2 pi x/gamma), so |a|/(A f_p) <= pi sqrt(
-    !> sin^2(u)/gamma^2 + (1 + cos u)^2), u = 2 pi x/gamma, decreasing in |x| for gamma >= 1.
-    pure function mp_bound(gam, x) result(b)
-        real(dp), intent(in) :: gam, x
-        real(dp) :: b
-        b = pi * hypot(sin_pi(2.0_dp * x / gam) / gam, 1.0_dp + cos_pi(2.0_dp * x / gam))
-    end function mp_bound
-
-    !> Peak |a_g| of the M&P pulse: a scan (step 1/64 in x) with Brent on the closed-form jerk,
-    !> first over |x| <= 4 (the envelope's peak is at x = 0), widened (doubling) until the
-    !> bound mp_bound at the window's edge is below the best value found, so that nothing
-    !> outside can be larger; at most the whole window |x| <= gamma/2. The work does not
-    !> grow with gamma for large gamma (the integer count cannot overflow).
-    subroutine mp_peak_accel(p, a_max, t_max)
-        type(pulse_t), intent(in) :: p
-        real(dp), intent(out) :: a_max, t_max
-        type(mp_jerk_fn) :: f
-        real(dp) :: xw, x0, x1, xa, xb, ja, jb, best, xbest, xr, val
-        integer :: n, j, stat
-        call mp_terms(p%gamma, f%k, f%w)
-        f%nu = p%nu_deg * (pi / 180.0_dp)
-        best = -1.0_dp
-        xbest = 0.0_dp
-        xw = min(0.5_dp * p%gamma, 4.0_dp)
-        do
-            x0 = -xw
-            x1 = xw
-            n = int(min(real(max_scan, dp), max(64.0_dp, 128.0_dp * xw)))
-            xa = x0
-            ja = f%eval(xa)
-            do j = 0, n
-                xb = x0 + (x1 - x0) * real(j, dp) / real(n, dp)
-                jb = f%eval(xb)
-                val = abs(mp_accel(f%k, f%w, f%nu, xb))
-                if (val > best) then
-                    best = val
-                    xbest = xb
-                end if
-                if (j > 0 .and. ((ja > 0.0_dp .and. jb < 0.0_dp) .or. &
-                                 (ja < 0.0_dp .and. jb > 0.0_dp))) then
-                    call find_root(f, xa, xb, xr, stat, fa_known=ja, fb_known=jb)
-                    if (stat == SEISPULSE_SUCCESS) then
-                        val = abs(mp_accel(f%k, f%w, f%nu, xr))
-                        if (val > best) then
-                            best = val
-                            xbest = xr
-                        end if
-                    end if
-                end if
-                xa = xb
-                ja = jb
-            end do
-            if (xw >= 0.5_dp * p%gamma) exit
-            if (mp_bound(p%gamma, xw) <= best) exit
-            xw = min(0.5_dp * p%gamma, 2.0_dp * xw)
-        end do
-        a_max = abs(p%amp) * p%freq * best
-        t_max = p%t0 + xbest / p%freq
-    end subroutine mp_peak_accel
 
 end module seispulse_sdof_closed
