@@ -92,7 +92,8 @@ module seispulse_sdof_closed
                                 set_error
     use seispulse_checks, only: outside
     use seispulse_format, only: real_str, int_str
-    use seispulse_special, only: expm1, exp_phis, complex_phis, sin_pi, cos_pi, pi
+    use seispulse_special, only: expm1, exp_phis, phi1, sin_pi, cos_pi, pi
+    use seispulse_divided_differences, only: cexp_dd1, cexp_dd2, cexp_dd3
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_sdof_sim, only: sdof_validate, min_period
     use seispulse_pulses, only: pulse_t, pulse_validate, PULSE_EXPONENTIAL, PULSE_HALF_SINE, &
@@ -827,84 +828,6 @@ contains
     end function longest_segment
 
     ! ==================================================================================
-    ! Kernels: divided differences of exp
-    ! ==================================================================================
-
-    !> e[x, y] = (e^x - e^y)/(x - y) (e^x at x = y) and e^y. Written e^u phi_1(w - u) with u the
-    !> argument of larger real part: phi_1 is taken where Re <= 0 (no overflow), exact at x = y.
-    elemental subroutine dd1(x, y, e, ey)
-        complex(dp), intent(in) :: x, y
-        complex(dp), intent(out) :: e   !! e[x, y]
-        complex(dp), intent(out) :: ey  !! e^y
-        complex(dp) :: p0, p1, p2, ex
-        if (real(x, dp) >= real(y, dp)) then
-            call complex_phis(y - x, p0, p1, p2)
-            ex = exp(x)
-            e = ex * p1
-            ey = ex * p0
-        else
-            call complex_phis(x - y, p0, p1, p2)
-            ey = exp(y)
-            e = ey * p1
-        end if
-    end subroutine dd1
-
-    pure function phi1c(z) result(p1)
-        complex(dp), intent(in) :: z
-        complex(dp) :: p1, p0, p2
-        call complex_phis(z, p0, p1, p2)
-    end function phi1c
-
-    !> Second divided difference e[x, y, 0] for Re x, Re y <= 1: Taylor series
-    !> sum_n h_n(x, y)/(n + 2)! (h_n the complete symmetric polynomials) when |x|, |y| <= 1;
-    !> otherwise the difference quotient over the farthest pair of the three points (divisor
-    !> >= 1, so the numerator's rounding is not amplified).
-    pure function dd2(x, y) result(e)
-        complex(dp), intent(in) :: x, y
-        complex(dp) :: e, xn, h, e1, ey
-        real(dp) :: f, dxy, dx, dy
-        integer :: n
-        if (abs(x) <= 1.0_dp .and. abs(y) <= 1.0_dp) then
-            xn = (1.0_dp, 0.0_dp)
-            h = (1.0_dp, 0.0_dp)
-            f = 0.5_dp
-            e = 0.5_dp * h
-            do n = 1, 20
-                xn = xn * x
-                h = y * h + xn
-                f = f / real(n + 2, dp)
-                e = e + f * h
-            end do
-        else
-            dxy = abs(x - y)
-            dx = abs(x)
-            dy = abs(y)
-            if (dxy >= dx .and. dxy >= dy) then
-                e = (phi1c(x) - phi1c(y)) / (x - y)
-            else if (dx >= dy) then
-                call dd1(x, y, e1, ey)
-                e = (e1 - phi1c(y)) / x
-            else
-                call dd1(y, x, e1, ey)
-                e = (e1 - phi1c(x)) / y
-            end if
-        end if
-    end function dd2
-
-    !> e[a, b, c] = e^c e[a - c, b - c, 0] with c the point of largest real part.
-    pure function dd3(a, b, c) result(e)
-        complex(dp), intent(in) :: a, b, c
-        complex(dp) :: e
-        if (real(a, dp) >= real(b, dp) .and. real(a, dp) >= real(c, dp)) then
-            e = exp(a) * dd2(b - a, c - a)
-        else if (real(b, dp) >= real(c, dp)) then
-            e = exp(b) * dd2(a - b, c - b)
-        else
-            e = exp(c) * dd2(a - c, b - c)
-        end if
-    end function dd3
-
-    ! ==================================================================================
     ! The model: segments, states, outputs
     ! ==================================================================================
 
@@ -980,7 +903,7 @@ contains
         else
             do i = 1, seg%nexp
                 ! C e^(M (s - v)) -> C tau e[lambda sigma - M v, M (s - v)]
-                call dd1(x0 - seg%me(i) * seg%ve(i), &
+                call cexp_dd1(x0 - seg%me(i) * seg%ve(i), &
                          cmplx(seg%me(i) * (s - seg%ve(i)), 0.0_dp, dp), e, ey)
                 k = k + seg%ce(i) * e
             end do
@@ -991,8 +914,8 @@ contains
             end do
             k = k * tau
             ! C s phi_1(R s) -> C tau s e[lambda sigma, R s, 0]
-            if (seg%has_r) k = k + seg%cr * tau * s * dd3(x0, cmplx(seg%rr * s, 0.0_dp, dp), &
-                                                          (0.0_dp, 0.0_dp))
+            if (seg%has_r) k = k + seg%cr * tau * s * cexp_dd2(x0, cmplx(seg%rr * s, 0.0_dp, dp), &
+                                                               (0.0_dp, 0.0_dp))
         end if
         ag = seg_accel(p, seg, s)
         w = exp(x0) * seg%wa
@@ -1024,98 +947,17 @@ contains
         zr = 0.0_dp
         do i = 1, seg%nexp
             sh = cmplx(seg%me(i) * seg%ve(i), 0.0_dp, dp)
-            zr = zr - seg%ce(i) * real(dd3(x0 - sh, conjg(x0) - sh, &
-                                           cmplx(seg%me(i) * (s - seg%ve(i)), 0.0_dp, dp)), dp)
+            zr = zr - seg%ce(i) * real(cexp_dd2(x0 - sh, conjg(x0) - sh, &
+                                                cmplx(seg%me(i) * (s - seg%ve(i)), 0.0_dp, dp)), dp)
         end do
         do i = 1, seg%nsin
-            zr = zr - real(seg%cs(i) * dd3(x0, conjg(x0), cmplx(0.0_dp, seg%ks(i) * s, dp)), dp)
+            zr = zr - real(seg%cs(i) * cexp_dd2(x0, conjg(x0), &
+                                                cmplx(0.0_dp, seg%ks(i) * s, dp)), dp)
         end do
         zr = zr * (tau * sigma)
         if (seg%has_r) zr = zr - seg%cr * (tau * sigma) * s &
-            * real(dd4(x0, conjg(x0), cmplx(seg%rr * s, 0.0_dp, dp), (0.0_dp, 0.0_dp)), dp)
+            * real(cexp_dd3(x0, conjg(x0), cmplx(seg%rr * s, 0.0_dp, dp), (0.0_dp, 0.0_dp)), dp)
     end function forced_real
-
-    !> Third divided difference e[x1, x2, x3, x4] of exp, any points: the Taylor series when
-    !> all are in the unit disk; else e^c e[x1 - c, ..., x4 - c] with c the point of largest
-    !> real part (the shifted points have Re <= 0: no overflow), by the series when the
-    !> shifted points are in the unit disk, else by the quotient
-    !> (e[..without xb..] - e[..without xa..])/(xa - xb) over the farthest pair (one shifted
-    !> point is 0, so that pair is more than 1 apart: the numerator's rounding is not
-    !> amplified).
-    pure function dd4(x1, x2, x3, x4) result(e)
-        complex(dp), intent(in) :: x1, x2, x3, x4
-        complex(dp) :: e, x(4), y(4), q(3)
-        real(dp) :: dist, dmax
-        integer :: c, i, j, a, b, k
-        x = [x1, x2, x3, x4]
-        if (maxval(abs(x)) <= 1.0_dp) then
-            e = dd4_taylor(x1, x2, x3, x4)
-            return
-        end if
-        c = maxloc(real(x, dp), 1)
-        y = x - x(c)
-        if (maxval(abs(y)) <= 1.0_dp) then
-            e = exp(x(c)) * dd4_taylor(y(1), y(2), y(3), y(4))
-            return
-        end if
-        a = 1
-        b = 2
-        dmax = -1.0_dp
-        do i = 1, 3
-            do j = i + 1, 4
-                dist = abs(y(i) - y(j))
-                if (dist > dmax) then
-                    dmax = dist
-                    a = i
-                    b = j
-                end if
-            end do
-        end do
-        ! e[all] = (e[all but b] - e[all but a])/(y_a - y_b)
-        k = 0
-        do i = 1, 4
-            if (i == b) cycle
-            k = k + 1
-            q(k) = y(i)
-        end do
-        e = dd3(q(1), q(2), q(3))
-        k = 0
-        do i = 1, 4
-            if (i == a) cycle
-            k = k + 1
-            q(k) = y(i)
-        end do
-        e = exp(x(c)) * ((e - dd3(q(1), q(2), q(3))) / (y(a) - y(b)))
-    end function dd4
-
-    !> Third divided difference e[x1, x2, x3, x4] of exp for points in the unit disk:
-    !> sum_n h_n(x1..x4)/(n + 3)! (complete symmetric polynomials by the recurrence
-    !> h_n(x1..xk) = h_n(x1..xk-1) + xk h_(n-1)(x1..xk); 23 terms, below 1e-20).
-    pure function dd4_taylor(x1, x2, x3, x4) result(e)
-        complex(dp), intent(in) :: x1, x2, x3, x4
-        complex(dp) :: e, h(0:22)
-        real(dp) :: f
-        integer :: n
-        h(0) = (1.0_dp, 0.0_dp)
-        do n = 1, 22
-            h(n) = x1 * h(n - 1)
-        end do
-        do n = 1, 22
-            h(n) = h(n) + x2 * h(n - 1)
-        end do
-        do n = 1, 22
-            h(n) = h(n) + x3 * h(n - 1)
-        end do
-        do n = 1, 22
-            h(n) = h(n) + x4 * h(n - 1)
-        end do
-        f = 1.0_dp / 6.0_dp
-        e = f * h(0)
-        do n = 1, 22
-            f = f / real(n + 3, dp)
-            e = e + f * h(n)
-        end do
-    end function dd4_taylor
 
     !> Kernels of cos(kappa s) and sin(kappa s) over [0, s] divided by sigma:
     !> (e1 + e2)/2 and (e1 - e2)/(2i) with e1,2 = e[x, +-i ks]; for |ks| < 1 the difference is
@@ -1126,13 +968,13 @@ contains
         complex(dp), intent(out) :: kcos, ksin, ey
         complex(dp) :: y, e, e2, ey2, d
         y = cmplx(0.0_dp, ks, dp)
-        call dd1(x, y, e, ey)
+        call cexp_dd1(x, y, e, ey)
         if (abs(ks) < 1.0_dp) then
-            d = dd3(x, y, conjg(y))
+            d = cexp_dd2(x, y, conjg(y))
             ksin = ks * d
             kcos = e - cmplx(0.0_dp, ks, dp) * d
         else
-            call dd1(x, conjg(y), e2, ey2)
+            call cexp_dd1(x, conjg(y), e2, ey2)
             kcos = 0.5_dp * (e + e2)
             ksin = cmplx(0.0_dp, -0.5_dp, dp) * (e - e2)
         end if
@@ -1187,7 +1029,7 @@ contains
             st%eh = exp(x)
             do i = 1, seg%nexp
                 if (abs(seg%me(i) * h) <= 40.0_dp) then
-                    call dd1(x, cmplx(seg%me(i) * h, 0.0_dp, dp), e, ey)
+                    call cexp_dd1(x, cmplx(seg%me(i) * h, 0.0_dp, dp), e, ey)
                     st%kexp(i) = ht * e
                 end if
             end do
@@ -1197,8 +1039,8 @@ contains
                 st%ksin(i) = ht * st%ksin(i)
             end do
             if (seg%has_r) then
-                st%kra = ht * h * dd3(x, cmplx(seg%rr * h, 0.0_dp, dp), (0.0_dp, 0.0_dp))
-                st%krb = ht * phi1c(x)
+                st%kra = ht * h * cexp_dd2(x, cmplx(seg%rr * h, 0.0_dp, dp), (0.0_dp, 0.0_dp))
+                st%krb = ht * phi1(x)
             end if
         end if
         k = (0.0_dp, 0.0_dp)
@@ -1209,7 +1051,7 @@ contains
             if (abs(seg%me(i) * h) <= 40.0_dp) then
                 k = k + seg%ce(i) * exp(seg%me(i) * (s0 - seg%ve(i))) * st%kexp(i)
             else
-                call dd1(x + seg%me(i) * (s0 - seg%ve(i)), &
+                call cexp_dd1(x + seg%me(i) * (s0 - seg%ve(i)), &
                          cmplx(seg%me(i) * (s1 - seg%ve(i)), 0.0_dp, dp), e, ey)
                 k = k + seg%ce(i) * ht * e
             end if
