@@ -7,7 +7,9 @@ module seispulse
                                 SEISPULSE_NO_CONVERGENCE, SEISPULSE_NO_BRACKET, SEISPULSE_INTERNAL, &
                                 SEISPULSE_IO, SEISPULSE_NO_SOLUTION, status_name
     use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, &
-                                 sin_pi, cos_pi, complex_phis
+                                 sin_pi, cos_pi, complex_phis, phi1, phi1_taylor, phi1_from_exp
+    use seispulse_divided_differences, only: exp_dd1, exp_dd2, exp_dd_pack, cexp_dd1, &
+                                             cexp_dd2_at0, cexp_dd2, cexp_dd3
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
     use seispulse_lapack, only: solve_linear
     use seispulse_pulses, only: exp_pulse, exp_pulse_point, exp_pulse_peaks, &
