@@ -6,7 +6,8 @@ module test_special
     use seispulse_kinds, only: dp
     use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, exp_expm1, &
                                  sin_pi, cos_pi, tau_minus_sinpi, phi1, phi1_taylor, &
-                                 phi1_from_exp, inv_factorial, complex_phis
+                                 phi1_from_exp, inv_factorial, complex_phis, log1p_over_x, &
+                                 sinh_minus_x, x_minus_asinh
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
     private
@@ -30,7 +31,8 @@ contains
                  new_unittest('tau - sin(pi tau)/pi near 0', test_tau_minus_sinpi), &
                  new_unittest('complex exp and expm1 near 2 pi i and 0', test_exp_expm1), &
                  new_unittest('phi_1 forms: real, Taylor, from e^x, complex', test_phi1_forms), &
-                 new_unittest('1/m! table', test_inv_factorial)]
+                 new_unittest('1/m! table', test_inv_factorial), &
+                 new_unittest('log1p(x)/x, sinh x - x, x - asinh x', test_elementary)]
     end subroutine collect_special
 
     !> phi_k(x) in quad precision: printed form, or the series where even 113 bits cancel.
@@ -270,6 +272,71 @@ contains
             if (allocated(error)) return
         end do
     end subroutine test_inv_factorial
+
+    !> ln(1 + x)/x, sinh(x) - x and x - asinh(x) against quad precision (the printed forms,
+    !> or their series where even 113 bits cancel), on the grid and its mirror, both sides of
+    !> the series switches (1 and 1/4). Above a switch the printed form cancels a little:
+    !> sinh x - x keeps ~1 - log10(6) digits less at |x| = 1, x - asinh x about 2 digits less
+    !> at |x| = 1/4 (the tolerances say so).
+    subroutine test_elementary(error)
+        type(test_error), allocatable, intent(out) :: error
+        real(dp), parameter :: xs(*) = [1.0e-300_dp, 1.0e-12_dp, 1.0e-6_dp, 1.0e-3_dp, 0.1_dp, &
+            0.2499_dp, 0.25_dp, 0.2501_dp, 0.5_dp, 0.9999_dp, 1.0_dp, 1.0001_dp, 3.0_dp, 40.0_dp, &
+            700.0_dp]
+        real(dp) :: x
+        real(qp) :: xq, ref
+        integer :: i, sgn
+        call check(error, log1p_over_x(0.0_dp), 1.0_dp, rtol=0.0_dp, message='log1p(x)/x at 0')
+        if (allocated(error)) return
+        call check(error, sinh_minus_x(0.0_dp), 0.0_dp, rtol=0.0_dp, message='sinh x - x at 0')
+        if (allocated(error)) return
+        call check(error, x_minus_asinh(0.0_dp), 0.0_dp, rtol=0.0_dp, message='x - asinh x at 0')
+        if (allocated(error)) return
+        do i = 1, size(xs)
+            do sgn = -1, 1, 2
+                x = real(sgn, dp) * xs(i)
+                xq = real(x, qp)
+                if (x > -1.0_dp) then
+                    if (abs(xq) < 1.0e-6_qp) then
+                        ref = 1 - xq / 2 + xq * xq / 3 - xq**3 / 4
+                    else
+                        ref = log(1 + xq) / xq
+                    end if
+                    call check(error, log1p_over_x(x), real(ref, dp), rtol=4.0e-16_dp, &
+                               message='log1p(x)/x at '//num(x))
+                    if (allocated(error)) return
+                end if
+                if (abs(xq) < 1.0e-6_qp) then
+                    ref = xq**3 / 6 + xq**5 / 120
+                else
+                    ref = sinh(xq) - xq
+                end if
+                call check(error, sinh_minus_x(x), real(ref, dp), rtol=3.0e-15_dp, &
+                           message='sinh x - x at '//num(x))
+                if (allocated(error)) return
+                if (abs(xq) < 1.0e-6_qp) then
+                    ref = xq**3 / 6 - 3 * xq**5 / 40
+                else
+                    ref = xq - asinh(xq)
+                end if
+                call check(error, x_minus_asinh(x), real(ref, dp), rtol=tol_asinh(x), &
+                           message='x - asinh x at '//num(x))
+                if (allocated(error)) return
+            end do
+        end do
+    end subroutine test_elementary
+
+    !> x - asinh x: series below |x| = 1/4 (a few ulps); the printed form above it loses
+    !> log10(x/(x - asinh x)) digits, at most about 2 at |x| = 1/4.
+    pure function tol_asinh(x) result(tol)
+        real(dp), intent(in) :: x
+        real(dp) :: tol
+        if (abs(x) < 0.25_dp) then
+            tol = 1.0e-15_dp
+        else
+            tol = 4.0_dp * epsilon(x) * abs(x) / abs(x - asinh(x))
+        end if
+    end function tol_asinh
 
     function num(x) result(s)
         real(dp), intent(in) :: x

@@ -17,6 +17,7 @@ module seispulse_special
     public :: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, sin_pi, cos_pi, exp_expm1, &
               tau_minus_sinpi, pi, complex_phis
     public :: phi1, phi1_taylor, phi1_from_exp, inv_factorial
+    public :: log1p_over_x, sinh_minus_x, x_minus_asinh
 
     real(dp), parameter :: pi = 3.141592653589793238462643383279502884_dp  !! pi
 
@@ -173,6 +174,57 @@ contains
             y = phi1_taylor(x)
         end if
     end function phi1_from_exp
+
+    !> ln(1 + x)/x, 1 at x = 0 (x > -1).
+    elemental function log1p_over_x(x) result(y)
+        real(dp), intent(in) :: x  !! argument, x > -1
+        real(dp) :: y
+        if (abs(x) > 0.0_dp) then
+            y = log1p(x) / x
+        else
+            y = 1.0_dp
+        end if
+    end function log1p_over_x
+
+    !> sinh(x) - x (Taylor series for |x| < 1, to x^19/19!).
+    elemental function sinh_minus_x(x) result(y)
+        real(dp), intent(in) :: x  !! argument
+        real(dp) :: y
+        real(dp) :: x2
+        integer :: k
+        if (abs(x) < 1.0_dp) then
+            x2 = x * x
+            y = 1.0_dp
+            do k = 9, 2, -1
+                y = 1.0_dp + y * x2 / real((2 * k) * (2 * k + 1), dp)
+            end do
+            y = x * x2 / 6.0_dp * y
+        else
+            y = sinh(x) - x
+        end if
+    end function sinh_minus_x
+
+    !> x - asinh(x) (series sum_n (-1)^(n+1) t_n x^(2n+1)/(2n+1), t_n = (2n)!/(4^n n!^2),
+    !> for |x| < 1/4).
+    elemental function x_minus_asinh(x) result(y)
+        real(dp), intent(in) :: x  !! argument
+        real(dp) :: y
+        real(dp) :: x2, t, term
+        integer :: n
+        if (abs(x) < 0.25_dp) then
+            x2 = x * x
+            t = 1.0_dp
+            term = x
+            y = 0.0_dp
+            do n = 1, 14
+                t = t * real(2 * n - 1, dp) / real(2 * n, dp)
+                term = -term * x2
+                y = y - t * term / real(2 * n + 1, dp)
+            end do
+        else
+            y = x - asinh(x)
+        end if
+    end function x_minus_asinh
 
     !> phi(x) = (e^x - 1 - x)/x^2, phi(0) = 1/2 (x <= 700).
     elemental function phi(x) result(y)

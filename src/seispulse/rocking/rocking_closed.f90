@@ -43,7 +43,8 @@ module seispulse_rocking_closed
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error
     use seispulse_checks, only: outside
     use seispulse_format, only: real_str
-    use seispulse_special, only: expm1, log1p, phi1, phi1_from_exp
+    use seispulse_special, only: expm1, log1p, phi1, phi1_from_exp, log1p_over_x, sinh_minus_x, &
+                                 x_minus_asinh
     use seispulse_divided_differences, only: exp_dd_pack
     use seispulse_pulses, only: check_beta, exp_rise_time
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
@@ -1535,59 +1536,6 @@ contains
         y = sinh_minus_x(y1) - 2.0_dp * sinh_minus_x(y2)
         dy = self%f * (2.0_dp * sinh(0.5_dp * y1)**2 - 4.0_dp * sinh(0.5_dp * y2)**2)
     end subroutine tri_impact_slope
-
-    ! ------------------------------------------------------------------------------
-    ! Elementary functions without cancellation
-    ! ------------------------------------------------------------------------------
-
-    !> ln(1 + x)/x, 1 at 0.
-    elemental function log1p_over_x(x) result(y)
-        real(dp), intent(in) :: x
-        real(dp) :: y
-        if (abs(x) > 0.0_dp) then
-            y = log1p(x) / x
-        else
-            y = 1.0_dp
-        end if
-    end function log1p_over_x
-
-    !> sinh(x) - x (Taylor series for |x| < 1, to x^19/19!).
-    elemental function sinh_minus_x(x) result(y)
-        real(dp), intent(in) :: x
-        real(dp) :: y, x2
-        integer :: k
-        if (abs(x) < 1.0_dp) then
-            x2 = x * x
-            y = 1.0_dp
-            do k = 9, 2, -1
-                y = 1.0_dp + y * x2 / real((2 * k) * (2 * k + 1), dp)
-            end do
-            y = x * x2 / 6.0_dp * y
-        else
-            y = sinh(x) - x
-        end if
-    end function sinh_minus_x
-
-    !> x - asinh(x) (series sum_n (-1)^(n+1) t_n x^(2n+1)/(2n+1), t_n = (2n)!/(4^n n!^2),
-    !> for |x| < 1/4).
-    elemental function x_minus_asinh(x) result(y)
-        real(dp), intent(in) :: x
-        real(dp) :: y, x2, t, term
-        integer :: n
-        if (abs(x) < 0.25_dp) then
-            x2 = x * x
-            t = 1.0_dp
-            term = x
-            y = 0.0_dp
-            do n = 1, 14
-                t = t * real(2 * n - 1, dp) / real(2 * n, dp)
-                term = -term * x2
-                y = y - t * term / real(2 * n + 1, dp)
-            end do
-        else
-            y = x - asinh(x)
-        end if
-    end function x_minus_asinh
 
     ! ------------------------------------------------------------------------------
     ! Checks
