@@ -43,8 +43,8 @@ module driver_sdof
     use seispulse_sdof_sim, only: sdof_spectrum, pseudo_spectra, sdof_response, design_envelope, &
                               spectral_shape, SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES
     use seispulse_sdof_closed, only: dynamic_coefficient, sdof_pulse_spectrum, &
-                                    pulse_peak_accel, BETA_HYSTERETIC, BETA_VISCOUS
-    use seispulse_pulses, only: pulse_kind_name, PULSE_RICKER, PULSE_MP
+                                    BETA_HYSTERETIC, BETA_VISCOUS
+    use seispulse_pulses, only: pulse_kind_name, pulse_peak_accel, PULSE_RICKER, PULSE_MP
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, given, list_length, &
                             list_item

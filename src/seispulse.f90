@@ -7,7 +7,10 @@ module seispulse
                                 SEISPULSE_NO_CONVERGENCE, SEISPULSE_NO_BRACKET, SEISPULSE_INTERNAL, &
                                 SEISPULSE_IO, SEISPULSE_NO_SOLUTION, status_name
     use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, &
-                                 sin_pi, cos_pi, complex_phis
+                                 sin_pi, cos_pi, complex_phis, phi1, phi1_taylor, phi1_from_exp, &
+                                 log1p_over_x, sinh_minus_x, x_minus_asinh
+    use seispulse_divided_differences, only: exp_dd1, exp_dd2, exp_dd_pack, cexp_dd1, &
+                                             cexp_dd2_at0, cexp_dd2, cexp_dd3
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
     use seispulse_lapack, only: solve_linear
     use seispulse_pulses, only: exp_pulse, exp_pulse_point, exp_pulse_peaks, &
@@ -18,7 +21,8 @@ module seispulse
                                 rectangular_pulse, triangular_pulse, ricker_pulse, mp_pulse, &
                                 PULSE_EXPONENTIAL, PULSE_HALF_SINE, PULSE_SINE_CYCLE, &
                                 PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
-                                PULSE_RICKER, PULSE_MP
+                                PULSE_RICKER, PULSE_MP, pulse_peak_accel, pulse_accel, &
+                                ricker_accel, ricker_window
     use seispulse_sliding_sim, only: friction_t, slide_t, stickslip_result_t, friction_validate, &
                                    stickslip_pulse, stickslip_record
     use seispulse_sliding_closed, only: half_cycle_t, full_cycle_t, sliding_block_t, yield_time, half_cycle, &
@@ -62,7 +66,7 @@ module seispulse
     use seispulse_sdof_closed, only: dynamic_coefficient, harmonic_response, rect_pulse_response, &
                                     beta_pulse, impulse_max, impulse_response, &
                                     sdof_pulse_response, sdof_pulse_peaks, sdof_pulse_spectrum, &
-                                    pulse_peak_accel, BETA_HYSTERETIC, BETA_VISCOUS, &
+                                    BETA_HYSTERETIC, BETA_VISCOUS, &
                                     HARMONIC_SINE, HARMONIC_COSINE, BETA_PULSE_TEXTBOOK, &
                                     BETA_PULSE_EXACT
     use seispulse_walls_common, only: wall_psi_t, wall_psi, free_field_frequencies

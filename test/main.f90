@@ -4,6 +4,7 @@ program tester
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use testing, only: unit_test, run_suite
     use test_special, only: collect_special
+    use test_divided_differences, only: collect_divided_differences
     use test_roots, only: collect_roots
     use test_lapack, only: collect_lapack
     use test_pulses, only: collect_pulses
@@ -32,6 +33,10 @@ program tester
     if (selected('special')) then
         call collect_special(tests)
         call run_suite('special', tests, output_unit, npass, nfail)
+    end if
+    if (selected('divided_differences')) then
+        call collect_divided_differences(tests)
+        call run_suite('divided_differences', tests, output_unit, npass, nfail)
     end if
     if (selected('roots')) then
         call collect_roots(tests)

@@ -1,7 +1,7 @@
 !> Pulses: closed forms against quad-precision printed formulas, published values,
 !> exact limits, and adaptive Gauss-Legendre quadrature of a and v.
 module test_pulses
-    use, intrinsic :: iso_fortran_env, only: qp => real128
+    use, intrinsic :: iso_fortran_env, only: qp => real128, int64
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, &
                                              ieee_negative_inf, ieee_is_finite
     use seispulse_kinds, only: dp
@@ -11,7 +11,9 @@ module test_pulses
         pulse_breaks, pulse_end_time, pulse_kind_from_name, pulse_kind_name, &
         exponential_pulse, half_sine_pulse, sine_cycle_pulse, cosine_cycle_pulse, &
         rectangular_pulse, triangular_pulse, ricker_pulse, mp_pulse, PULSE_NKINDS, &
-        PULSE_EXPONENTIAL, PULSE_MP
+        PULSE_EXPONENTIAL, PULSE_MP, pulse_accel, pulse_peak_accel, ricker_accel, &
+        ricker_window, ricker_x_cut, mp_terms, mp_jerk_t, mp_jerk_of, mp_jerk, mp_jerk_slope, &
+        exp_consts_t, exp_consts
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
     private
@@ -50,7 +52,11 @@ contains
                  new_unittest('SI scaling and equivalent forms', test_si_equivalences), &
                  new_unittest('breaks and end times', test_breaks), &
                  new_unittest('names and kinds', test_names), &
-                 new_unittest('bad input is a status naming the parameter', test_bad_input)]
+                 new_unittest('bad input is a status naming the parameter', test_bad_input), &
+                 new_unittest('pulse_accel = pulse_at acceleration', test_pulse_accel), &
+                 new_unittest('Ricker: one underflow rule, window', test_ricker_cutoff), &
+                 new_unittest('M&P jerk vs product-form derivatives', test_mp_jerk), &
+                 new_unittest('peak acceleration vs a dense sample', test_peak_accel)]
     end subroutine collect_pulses
 
     ! ---------------------------------------------------------------- references
@@ -665,6 +671,211 @@ contains
         end subroutine expect
 
     end subroutine test_bad_input
+
+    ! ---------------------------------------------------------------- acceleration only
+
+    !> pulse_accel agrees with pulse_at to rounding inside every pulse (the fast forms use
+    !> sin(2 pi t/T) and x = pi f (t - t0)), and is pulse_at's value before t = 0 and
+    !> from the end of a timed pulse on.
+    subroutine test_pulse_accel(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(pulse_t) :: ps(10)
+        type(exp_consts_t) :: c
+        real(dp) :: t, a, v, d, a1, a2, t_end
+        integer :: k, i
+        ps = [exponential_pulse(2.0_dp, 0.8_dp, 1.5_dp, .true.), half_sine_pulse(3.0_dp, 0.6_dp), &
+              sine_cycle_pulse(-2.0_dp, 0.7_dp), cosine_cycle_pulse(1.5_dp, 0.9_dp), &
+              rectangular_pulse(2.5_dp, 0.4_dp), triangular_pulse(1.0_dp, 1.1_dp, 0.3_dp), &
+              ricker_pulse(4.0_dp, 1.7_dp, 1.1_dp), ricker_pulse(-1.0_dp, 0.3_dp, 0.0_dp), &
+              mp_pulse(0.6_dp, 1.2_dp, 2.4_dp, 40.0_dp, 1.5_dp), &
+              exponential_pulse(1.0_dp, 0.5_dp, -3.0_dp, .false.)]
+        do k = 1, size(ps)
+            c = exp_consts(ps(k)%beta)
+            t_end = pulse_end_time(ps(k))
+            do i = -20, 400
+                t = 0.00731_dp * real(i, dp)
+                call pulse_at(ps(k), t, a, v, d)
+                a1 = pulse_accel(ps(k), t)
+                a2 = pulse_accel(ps(k), t, c)
+                call check(error, same(a2, a1), 'consts changes pulse_accel, kind ' &
+                           //pulse_kind_name(ps(k)%kind)//' t = '//num(t))
+                if (allocated(error)) return
+                if (t < 0.0_dp .or. t >= t_end) then
+                    call check(error, same(a1, a), 'pulse_accel /= pulse_at outside the pulse, ' &
+                               //pulse_kind_name(ps(k)%kind)//' t = '//num(t))
+                else
+                    call check(error, a1, a, rtol=1.0e-14_dp, atol=1.0e-14_dp * abs(ps(k)%amp), &
+                               message=pulse_kind_name(ps(k)%kind)//' t = '//num(t))
+                end if
+                if (allocated(error)) return
+            end do
+            ! exactly at the end of a timed pulse: the ground is at rest
+            if (t_end < huge(t_end)) then
+                call check(error, .not. abs(pulse_accel(ps(k), t_end)) > 0.0_dp, &
+                           'a(t_end) /= 0, '//pulse_kind_name(ps(k)%kind))
+                if (allocated(error)) return
+            end if
+        end do
+    end subroutine test_pulse_accel
+
+    !> The Ricker cut-off is the underflow of e^(-w), w = (pi f (t - t0))^2: e^(-745.2) is
+    !> already 0 in double precision, so the formula itself is 0 for every w >= 750 (the
+    !> branch only makes it +0 and keeps w = +inf from giving NaN), and the |x| < 30 cut of
+    !> the former quadrature copy (w < 900) changed nothing but the sign of a zero.
+    !> Values against quad precision; the window ends where |a| < 1e-40 a_p.
+    subroutine test_ricker_cutoff(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(pulse_t) :: p
+        real(dp) :: t, w, a, x, ts, te, v, d, big
+        real(qp) :: xq, aq
+        integer :: i
+        p = ricker_pulse(3.0_dp, 1.3_dp, 2.0_dp)
+        w = 745.2_dp
+        call check(error, .not. exp(-w) > 0.0_dp, 'exp(-745.2) should underflow to 0')
+        if (allocated(error)) return
+        w = 745.0_dp
+        call check(error, exp(-w) > 0.0_dp, 'exp(-745) should be subnormal, not 0')
+        if (allocated(error)) return
+        do i = 0, 300
+            ! w from 700 to 1000: the formula and ricker_accel agree as numbers
+            w = 700.0_dp + real(i, dp)
+            t = p%t0 + sqrt(w) / (piq_dp() * p%freq)
+            x = piq_dp() * p%freq * (t - p%t0)
+            a = ricker_accel(p, t)
+            call check(error, a, p%amp * (1.0_dp - 2.0_dp * x * x) * exp(-x * x), rtol=0.0_dp, &
+                       message='ricker_accel /= formula at w = '//num(w))
+            if (allocated(error)) return
+            if (x * x >= 750.0_dp) then
+                call check(error, same(a, 0.0_dp), 'expected +0 at w = '//num(w))
+                if (allocated(error)) return
+            end if
+        end do
+        big = 1.0e150_dp   ! w ~ 1e300: finite (an infinite w is caught by the same branch)
+        a = ricker_accel(p, big)
+        call check(error, same(a, 0.0_dp), 'a(1e150) should be +0')
+        if (allocated(error)) return
+        call pulse_at(p, big, a, v, d)
+        call check(error, .not. abs(a) > 0.0_dp .and. ieee_is_finite(v) .and. ieee_is_finite(d), &
+                   'pulse_at(1e150) should be a = 0, v and d finite')
+        if (allocated(error)) return
+        ! against quad precision inside the wavelet
+        do i = -40, 40
+            t = p%t0 + 0.05_dp * real(i, dp) / p%freq
+            xq = piq * real(p%freq, qp) * (real(t, qp) - real(p%t0, qp))
+            aq = real(p%amp, qp) * (1 - 2 * xq * xq) * exp(-xq * xq)
+            call check(error, ricker_accel(p, t), real(aq, dp), rtol=1.0e-13_dp, &
+                       atol=1.0e-15_dp, message='Ricker vs quad, t = '//num(t))
+            if (allocated(error)) return
+        end do
+        ! the window: |x| <= ricker_x_cut, clipped at t = 0
+        p = ricker_pulse(3.0_dp, 1.3_dp, 5.0_dp)
+        call ricker_window(p, ts, te)
+        call check(error, te, p%t0 + ricker_x_cut / (piq_dp() * p%freq), rtol=1.0e-15_dp)
+        if (allocated(error)) return
+        call check(error, ts, p%t0 - ricker_x_cut / (piq_dp() * p%freq), rtol=1.0e-15_dp)
+        if (allocated(error)) return
+        call check(error, abs(ricker_accel(p, te)) < 1.0e-40_dp * p%amp .and. &
+                   abs(ricker_accel(p, te)) > 0.0_dp, '|a(te)| should be in (0, 1e-40 a_p)')
+        if (allocated(error)) return
+        call ricker_window(ricker_pulse(1.0_dp, 1.0_dp, 0.5_dp), ts, te)
+        call check(error, same(ts, 0.0_dp), 'window should start at t = 0')
+    end subroutine test_ricker_cutoff
+
+    !> mp_terms, and mp_jerk, mp_jerk_slope against the second and third derivatives of the
+    !> printed product form v/A = (1 + cos(2 pi x/gamma)) cos(2 pi x + nu)/2, in quad precision.
+    subroutine test_mp_jerk(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(mp_jerk_t) :: f
+        type(pulse_t) :: p
+        real(dp) :: k(3), w(3), x, gam
+        real(qp) :: u, e0, e1, e2, e3, c0, c1, c2, c3, j2, j3, tp, xq, nuq
+        integer :: i, m
+        real(dp), parameter :: gammas(3) = [1.05_dp, 2.3_dp, 17.0_dp]
+        call mp_terms(2.0_dp, k, w)
+        call check(error, k, [1.0_dp, 1.5_dp, 0.5_dp] * real(2 * piq, dp), rtol=1.0e-15_dp)
+        if (allocated(error)) return
+        call check(error, w, [0.5_dp, 0.25_dp, 0.25_dp], rtol=0.0_dp)
+        if (allocated(error)) return
+        do m = 1, size(gammas)
+            gam = gammas(m)
+            p = mp_pulse(0.7_dp, 1.3_dp, gam, -65.0_dp + 50.0_dp * m, gam)
+            f = mp_jerk_of(p)
+            nuq = real(p%nu_deg, qp) * piq / 180
+            tp = 2 * piq
+            u = tp / real(gam, qp)
+            do i = -50, 50
+                x = 0.5_dp * gam * real(i, dp) / 50.0_dp
+                xq = real(x, qp)
+                e0 = 1 + cos(u * xq)
+                e1 = -u * sin(u * xq)
+                e2 = -u * u * cos(u * xq)
+                e3 = u**3 * sin(u * xq)
+                c0 = cos(tp * xq + nuq)
+                c1 = -tp * sin(tp * xq + nuq)
+                c2 = -tp * tp * cos(tp * xq + nuq)
+                c3 = tp**3 * sin(tp * xq + nuq)
+                j2 = (e2 * c0 + 2 * e1 * c1 + e0 * c2) / 2
+                j3 = (e3 * c0 + 3 * e2 * c1 + 3 * e1 * c2 + e0 * c3) / 2
+                call check(error, mp_jerk(f, x), real(j2, dp), rtol=1.0e-12_dp, &
+                           atol=1.0e-12_dp * 160.0_dp * (1.0_dp + abs(x)), &
+                           message='jerk, gamma = '//num(gam)//' x = '//num(x))
+                if (allocated(error)) return
+                call check(error, mp_jerk_slope(f, x), real(j3, dp), rtol=1.0e-12_dp, &
+                           atol=1.0e-12_dp * 1000.0_dp * (1.0_dp + abs(x)), &
+                           message='jerk slope, gamma = '//num(gam)//' x = '//num(x))
+                if (allocated(error)) return
+                call check(error, same(f%eval(x), mp_jerk(f, x)), 'eval /= mp_jerk')
+                if (allocated(error)) return
+            end do
+        end do
+    end subroutine test_mp_jerk
+
+    !> pulse_peak_accel is at least the largest |a| of a dense sample of pulse_at and
+    !> exceeds it by no more than the curvature allows; its time gives that value.
+    subroutine test_peak_accel(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(pulse_t) :: ps(5)
+        real(dp) :: amax, tmax, t, a, v, d, best, t0, t1
+        integer :: k, i, stat
+        integer, parameter :: n = 200000
+        ps = [mp_pulse(0.6_dp, 1.2_dp, 2.4_dp, 40.0_dp, 1.5_dp), &
+              mp_pulse(0.3_dp, 0.5_dp, 1.2_dp, -120.0_dp, 1.3_dp), &
+              mp_pulse(1.0_dp, 2.0_dp, 9.0_dp, 75.0_dp, 2.5_dp), &
+              half_sine_pulse(-2.0_dp, 0.6_dp), ricker_pulse(2.0_dp, 1.0_dp, 1.0_dp)]
+        do k = 1, size(ps)
+            call pulse_peak_accel(ps(k), amax, tmax, stat)
+            call check(error, stat == SEISPULSE_SUCCESS, 'pulse_peak_accel failed')
+            if (allocated(error)) return
+            call pulse_at(ps(k), tmax, a, v, d)
+            call check(error, abs(a), amax, rtol=1.0e-13_dp, &
+                       message='|a(t_max)| /= a_max, '//pulse_kind_name(ps(k)%kind))
+            if (allocated(error)) return
+            t0 = 0.0_dp
+            t1 = 3.0_dp * max(ps(k)%t0, ps(k)%duration)
+            if (ps(k)%kind == PULSE_MP) t1 = ps(k)%t0 + 0.5_dp * ps(k)%gamma / ps(k)%freq
+            best = 0.0_dp
+            do i = 0, n
+                t = t0 + (t1 - t0) * real(i, dp) / real(n, dp)
+                call pulse_at(ps(k), t, a, v, d)
+                best = max(best, abs(a))
+            end do
+            call check(error, amax >= best * (1.0_dp - 1.0e-14_dp) .and. &
+                       amax <= best * (1.0_dp + 1.0e-6_dp), 'a_max = '//num(amax) &
+                       //' vs sample max '//num(best)//', '//pulse_kind_name(ps(k)%kind))
+            if (allocated(error)) return
+        end do
+    end subroutine test_peak_accel
+
+    !> Bitwise equality (+0 and -0 differ).
+    pure logical function same(a, b)
+        real(dp), intent(in) :: a, b
+        same = transfer(a, 1_int64) == transfer(b, 1_int64)
+    end function same
+
+    pure function piq_dp() result(y)
+        real(dp) :: y
+        y = real(piq, dp)
+    end function piq_dp
 
     function num(x) result(s)
         real(dp), intent(in) :: x

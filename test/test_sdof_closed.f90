@@ -15,11 +15,12 @@ module test_sdof_closed
     use seispulse_pulses, only: pulse_t, pulse_at, pulse_breaks, exp_consts_t, exp_consts, &
                                 exponential_pulse, half_sine_pulse, sine_cycle_pulse, &
                                 cosine_cycle_pulse, rectangular_pulse, triangular_pulse, &
-                                ricker_pulse, mp_pulse, PULSE_RICKER, PULSE_EXPONENTIAL
+                                ricker_pulse, mp_pulse, PULSE_RICKER, PULSE_EXPONENTIAL, &
+                                pulse_peak_accel
     use seispulse_sdof_closed, only: dynamic_coefficient, harmonic_response, &
                                     rect_pulse_response, beta_pulse, impulse_max, &
                                     impulse_response, sdof_pulse_response, sdof_pulse_peaks, &
-                                    sdof_pulse_spectrum, pulse_peak_accel, BETA_HYSTERETIC, &
+                                    sdof_pulse_spectrum, BETA_HYSTERETIC, &
                                     BETA_VISCOUS, HARMONIC_SINE, HARMONIC_COSINE, &
                                     BETA_PULSE_TEXTBOOK, BETA_PULSE_EXACT
     use testing, only: test_error, unit_test, new_unittest, check

@@ -5,7 +5,9 @@ module test_special
     use, intrinsic :: iso_fortran_env, only: qp => real128
     use seispulse_kinds, only: dp
     use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, exp_expm1, &
-                                 sin_pi, cos_pi, tau_minus_sinpi
+                                 sin_pi, cos_pi, tau_minus_sinpi, phi1, phi1_taylor, &
+                                 phi1_from_exp, inv_factorial, complex_phis, log1p_over_x, &
+                                 sinh_minus_x, x_minus_asinh
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
     private
@@ -27,7 +29,10 @@ contains
                  new_unittest('expm1 and log1p', test_expm1_log1p), &
                  new_unittest('sin_pi and cos_pi exact zeros', test_sincos_pi), &
                  new_unittest('tau - sin(pi tau)/pi near 0', test_tau_minus_sinpi), &
-                 new_unittest('complex exp and expm1 near 2 pi i and 0', test_exp_expm1)]
+                 new_unittest('complex exp and expm1 near 2 pi i and 0', test_exp_expm1), &
+                 new_unittest('phi_1 forms: real, Taylor, from e^x, complex', test_phi1_forms), &
+                 new_unittest('1/m! table', test_inv_factorial), &
+                 new_unittest('log1p(x)/x, sinh x - x, x - asinh x', test_elementary)]
     end subroutine collect_special
 
     !> phi_k(x) in quad precision: printed form, or the series where even 113 bits cancel.
@@ -211,6 +216,127 @@ contains
             if (allocated(error)) return
         end do
     end subroutine test_tau_minus_sinpi
+
+    !> The phi_1 forms against phi_1 in quad precision (ref_phi): phi1 (expm1/x) on the whole
+    !> grid and its mirror, phi1_taylor for |x| <= 1/2, phi1_from_exp from exp(x); the
+    !> complex phi1 against the quad-precision quotient (e^z - 1)/z away from 0 and the
+    !> real values on the real axis.
+    subroutine test_phi1_forms(error)
+        type(test_error), allocatable, intent(out) :: error
+        real(dp) :: x, ref
+        complex(dp) :: z, p0, p1, p2
+        complex(qp) :: zq
+        integer :: i, sgn, k
+        do i = 1, size(grid)
+            do sgn = -1, 1, 2
+                x = real(sgn, dp) * grid(i)
+                ref = real(ref_phi(1, x), dp)
+                call check(error, phi1(x), ref, rtol=4.0e-16_dp, message='phi1('//num(x)//')')
+                if (allocated(error)) return
+                call check(error, phi1_from_exp(x, exp(x)), ref, rtol=2.0e-15_dp, &
+                           message='phi1_from_exp('//num(x)//')')
+                if (allocated(error)) return
+                if (abs(x) <= 0.5_dp) then
+                    call check(error, phi1_taylor(x), ref, rtol=4.0e-16_dp, &
+                               message='phi1_taylor('//num(x)//')')
+                    if (allocated(error)) return
+                end if
+                call check(error, real(phi1(cmplx(x, 0.0_dp, dp)), dp), ref, rtol=2.0e-15_dp, &
+                           message='complex phi1('//num(x)//')')
+                if (allocated(error)) return
+            end do
+        end do
+        do k = 0, 40
+            z = cmplx(-3.0_dp + 0.15_dp * real(k, dp), 1.7_dp - 0.09_dp * real(k, dp), dp)
+            zq = cmplx(real(z, qp), aimag(z), qp)
+            call complex_phis(z, p0, p1, p2)
+            call check(error, abs(phi1(z) - cmplx((exp(zq) - 1) / zq, kind=dp)) &
+                       <= 2.0e-15_dp * abs(phi1(z)), 'complex phi1 at '//num(real(z, dp)) &
+                       //' + i '//num(aimag(z)))
+            if (allocated(error)) return
+            call check(error, abs(phi1(z) - p1) <= 0.0_dp, 'phi1 /= p1 of complex_phis')
+            if (allocated(error)) return
+        end do
+    end subroutine test_phi1_forms
+
+    !> inv_factorial(m) = 1/m! to rounding (m! exact in quad precision up to 26!).
+    subroutine test_inv_factorial(error)
+        type(test_error), allocatable, intent(out) :: error
+        real(qp) :: f
+        integer :: m
+        f = 1
+        do m = 0, 26
+            if (m > 0) f = f * m
+            call check(error, inv_factorial(m), real(1 / f, dp), rtol=2.0e-16_dp, &
+                       message='1/'//num(real(m, dp))//'!')
+            if (allocated(error)) return
+        end do
+    end subroutine test_inv_factorial
+
+    !> ln(1 + x)/x, sinh(x) - x and x - asinh(x) against quad precision (the printed forms,
+    !> or their series where even 113 bits cancel), on the grid and its mirror, both sides of
+    !> the series switches (1 and 1/4). Above a switch the printed form cancels a little:
+    !> sinh x - x keeps ~1 - log10(6) digits less at |x| = 1, x - asinh x about 2 digits less
+    !> at |x| = 1/4 (the tolerances say so).
+    subroutine test_elementary(error)
+        type(test_error), allocatable, intent(out) :: error
+        real(dp), parameter :: xs(*) = [1.0e-300_dp, 1.0e-12_dp, 1.0e-6_dp, 1.0e-3_dp, 0.1_dp, &
+            0.2499_dp, 0.25_dp, 0.2501_dp, 0.5_dp, 0.9999_dp, 1.0_dp, 1.0001_dp, 3.0_dp, 40.0_dp, &
+            700.0_dp]
+        real(dp) :: x
+        real(qp) :: xq, ref
+        integer :: i, sgn
+        call check(error, log1p_over_x(0.0_dp), 1.0_dp, rtol=0.0_dp, message='log1p(x)/x at 0')
+        if (allocated(error)) return
+        call check(error, sinh_minus_x(0.0_dp), 0.0_dp, rtol=0.0_dp, message='sinh x - x at 0')
+        if (allocated(error)) return
+        call check(error, x_minus_asinh(0.0_dp), 0.0_dp, rtol=0.0_dp, message='x - asinh x at 0')
+        if (allocated(error)) return
+        do i = 1, size(xs)
+            do sgn = -1, 1, 2
+                x = real(sgn, dp) * xs(i)
+                xq = real(x, qp)
+                if (x > -1.0_dp) then
+                    if (abs(xq) < 1.0e-6_qp) then
+                        ref = 1 - xq / 2 + xq * xq / 3 - xq**3 / 4
+                    else
+                        ref = log(1 + xq) / xq
+                    end if
+                    call check(error, log1p_over_x(x), real(ref, dp), rtol=4.0e-16_dp, &
+                               message='log1p(x)/x at '//num(x))
+                    if (allocated(error)) return
+                end if
+                if (abs(xq) < 1.0e-6_qp) then
+                    ref = xq**3 / 6 + xq**5 / 120
+                else
+                    ref = sinh(xq) - xq
+                end if
+                call check(error, sinh_minus_x(x), real(ref, dp), rtol=3.0e-15_dp, &
+                           message='sinh x - x at '//num(x))
+                if (allocated(error)) return
+                if (abs(xq) < 1.0e-6_qp) then
+                    ref = xq**3 / 6 - 3 * xq**5 / 40
+                else
+                    ref = xq - asinh(xq)
+                end if
+                call check(error, x_minus_asinh(x), real(ref, dp), rtol=tol_asinh(x), &
+                           message='x - asinh x at '//num(x))
+                if (allocated(error)) return
+            end do
+        end do
+    end subroutine test_elementary
+
+    !> x - asinh x: series below |x| = 1/4 (a few ulps); the printed form above it loses
+    !> log10(x/(x - asinh x)) digits, at most about 2 at |x| = 1/4.
+    pure function tol_asinh(x) result(tol)
+        real(dp), intent(in) :: x
+        real(dp) :: tol
+        if (abs(x) < 0.25_dp) then
+            tol = 1.0e-15_dp
+        else
+            tol = 4.0_dp * epsilon(x) * abs(x) / abs(x - asinh(x))
+        end if
+    end function tol_asinh
 
     function num(x) result(s)
         real(dp), intent(in) :: x

@@ -163,8 +163,7 @@ end subroutine sp_sdof_pulse_spectrum
 !> Peak |a_g| of a pulse and its time.
 subroutine sp_pulse_peak_accel(kind, params, amax, tmax, stat, errmsg)
     use seispulse_kinds, only: dp
-    use seispulse_pulses, only: pulse_from_params
-    use seispulse_sdof_closed, only: pulse_peak_accel
+    use seispulse_pulses, only: pulse_from_params, pulse_peak_accel
     implicit none
     integer, intent(in) :: kind
     real(dp), intent(in) :: params(9)

@@ -16,6 +16,8 @@ module seispulse_special
 
     public :: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, sin_pi, cos_pi, exp_expm1, &
               tau_minus_sinpi, pi, complex_phis
+    public :: phi1, phi1_taylor, phi1_from_exp, inv_factorial
+    public :: log1p_over_x, sinh_minus_x, x_minus_asinh
 
     real(dp), parameter :: pi = 3.141592653589793238462643383279502884_dp  !! pi
 
@@ -23,9 +25,10 @@ module seispulse_special
     real(dp), parameter :: series_limit = 2.0_dp
     !> Above this argument e^x overflows soon: switch to the scaled recurrence.
     real(dp), parameter :: scaled_limit = 700.0_dp
-    !> 1/(j+3)!, j = 0..23: Taylor coefficients of chi = phi_3.
-    integer, parameter :: nchi = 23
-    real(dp), parameter :: chi_coef(0:nchi) = [ &
+    !> 1/m!, m = 0..26: Taylor coefficients of exp, of the phi functions and of the divided
+    !> differences of exp (seispulse_divided_differences).
+    real(dp), parameter :: inv_factorial(0:26) = [ &
+        1.0_dp / 1.0_dp, 1.0_dp / 1.0_dp, 1.0_dp / 2.0_dp, &
         1.0_dp / 6.0_dp, 1.0_dp / 24.0_dp, 1.0_dp / 120.0_dp, 1.0_dp / 720.0_dp, &
         1.0_dp / 5040.0_dp, 1.0_dp / 40320.0_dp, 1.0_dp / 362880.0_dp, &
         1.0_dp / 3628800.0_dp, 1.0_dp / 39916800.0_dp, 1.0_dp / 479001600.0_dp, &
@@ -36,6 +39,16 @@ module seispulse_special
         1.0_dp / 51090942171709440000.0_dp, 1.0_dp / 1124000727777607680000.0_dp, &
         1.0_dp / 25852016738884976640000.0_dp, 1.0_dp / 620448401733239439360000.0_dp, &
         1.0_dp / 15511210043330985984000000.0_dp, 1.0_dp / 403291461126605635584000000.0_dp]
+    !> 1/(j+3)!, j = 0..23: Taylor coefficients of chi = phi_3.
+    integer, parameter :: nchi = 23
+    real(dp), parameter :: chi_coef(0:nchi) = inv_factorial(3:nchi + 3)
+
+    !> phi_1(z) = (e^z - 1)/z, real or complex, 1 at z = 0: real `phi1_real` (expm1(x)/x),
+    !> complex `phi1_complex` (complex_phis).
+    interface phi1
+        module procedure phi1_real
+        module procedure phi1_complex
+    end interface phi1
 
     interface
         pure function c_expm1(x) bind(c, name='expm1') result(y)
@@ -114,6 +127,104 @@ contains
             q3 = (q2 - 0.5_dp * emx) / x
         end if
     end subroutine exp_phis_scaled
+
+    !> phi_1(x) = (e^x - 1)/x = expm1(x)/x, 1 at x = 0, any real x (one division: relative
+    !> error about 1 ulp; +inf past x = 709.78 where e^x overflows). exp_phis gives the same
+    !> function from its series/recurrence, to a few ulps, together with phi_2 and phi_3.
+    elemental function phi1_real(x) result(y)
+        real(dp), intent(in) :: x  !! argument
+        real(dp) :: y
+        if (abs(x) > 0.0_dp) then
+            y = expm1(x) / x
+        else
+            y = 1.0_dp
+        end if
+    end function phi1_real
+
+    !> phi_1(z) = (e^z - 1)/z of a complex z, 1 at z = 0 (the p1 of complex_phis: series for
+    !> |Re z| + |Im z| <= 1, else the quotient on e^z; Re z below 709).
+    elemental function phi1_complex(z) result(p1)
+        complex(dp), intent(in) :: z  !! argument
+        complex(dp) :: p1
+        complex(dp) :: p0, p2
+        call complex_phis(z, p0, p1, p2)
+    end function phi1_complex
+
+    !> phi_1(z) for |z| <= 1/2: Taylor polynomial sum_{k=0}^{14} z^k/(k+1)! by Horner
+    !> (truncation below 2^-53 relative there; usable but less accurate up to |z| ~ 1).
+    elemental function phi1_taylor(z) result(y)
+        real(dp), intent(in) :: z  !! argument, |z| <= 1/2
+        real(dp) :: y
+        integer :: k
+        y = inv_factorial(15)
+        do k = 13, 0, -1
+            y = inv_factorial(k + 1) + z * y
+        end do
+    end function phi1_taylor
+
+    !> phi_1(x) = (e^x - 1)/x from ex = e^x computed by the caller: the quotient for
+    !> |x| >= 1/2 (e^x - 1 loses at most about one bit there), phi1_taylor closer to 0.
+    elemental function phi1_from_exp(x, ex) result(y)
+        real(dp), intent(in) :: x   !! argument
+        real(dp), intent(in) :: ex  !! e^x
+        real(dp) :: y
+        if (abs(x) >= 0.5_dp) then
+            y = (ex - 1.0_dp) / x
+        else
+            y = phi1_taylor(x)
+        end if
+    end function phi1_from_exp
+
+    !> ln(1 + x)/x, 1 at x = 0 (x > -1).
+    elemental function log1p_over_x(x) result(y)
+        real(dp), intent(in) :: x  !! argument, x > -1
+        real(dp) :: y
+        if (abs(x) > 0.0_dp) then
+            y = log1p(x) / x
+        else
+            y = 1.0_dp
+        end if
+    end function log1p_over_x
+
+    !> sinh(x) - x (Taylor series for |x| < 1, to x^19/19!).
+    elemental function sinh_minus_x(x) result(y)
+        real(dp), intent(in) :: x  !! argument
+        real(dp) :: y
+        real(dp) :: x2
+        integer :: k
+        if (abs(x) < 1.0_dp) then
+            x2 = x * x
+            y = 1.0_dp
+            do k = 9, 2, -1
+                y = 1.0_dp + y * x2 / real((2 * k) * (2 * k + 1), dp)
+            end do
+            y = x * x2 / 6.0_dp * y
+        else
+            y = sinh(x) - x
+        end if
+    end function sinh_minus_x
+
+    !> x - asinh(x) (series sum_n (-1)^(n+1) t_n x^(2n+1)/(2n+1), t_n = (2n)!/(4^n n!^2),
+    !> for |x| < 1/4).
+    elemental function x_minus_asinh(x) result(y)
+        real(dp), intent(in) :: x  !! argument
+        real(dp) :: y
+        real(dp) :: x2, t, term
+        integer :: n
+        if (abs(x) < 0.25_dp) then
+            x2 = x * x
+            t = 1.0_dp
+            term = x
+            y = 0.0_dp
+            do n = 1, 14
+                t = t * real(2 * n - 1, dp) / real(2 * n, dp)
+                term = -term * x2
+                y = y - t * term / real(2 * n + 1, dp)
+            end do
+        else
+            y = x - asinh(x)
+        end if
+    end function x_minus_asinh
 
     !> phi(x) = (e^x - 1 - x)/x^2, phi(0) = 1/2 (x <= 700).
     elemental function phi(x) result(y)

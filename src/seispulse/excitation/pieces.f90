@@ -34,7 +34,8 @@ module seispulse_pieces
     use seispulse_pulses, only: pulse_t, pulse_at, pulse_breaks, exp_consts_t, exp_consts, &
                                 PULSE_EXPONENTIAL, PULSE_HALF_SINE, PULSE_SINE_CYCLE, &
                                 PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
-                                PULSE_RICKER, PULSE_MP
+                                PULSE_RICKER, PULSE_MP, ricker_x_cut, mp_jerk_t, mp_jerk_of, &
+                                mp_jerk_slope
     implicit none
     private
 
@@ -47,18 +48,8 @@ module seispulse_pieces
     integer, parameter :: mp_per_period = 64
     !> M&P: bisection depth of the jerk-root search below one coarse piece.
     integer, parameter :: mp_max_depth = 48
-    !> Ricker: the last piece ends at x = pi f (t - t0) = 10, where |a| < 1e-40 a_p.
-    real(dp), parameter :: ricker_x_cut = 10.0_dp
 
     integer, parameter :: SRC_PULSE = 1, SRC_RECORD = 2
-
-    !> Second derivative of the M&P velocity in x = f_p (t - t0), up to a factor -A/2:
-    !> J(x) = k0^2 cos(k0 x + nu) + (kp^2 cos(kp x + nu) + km^2 cos(km x + nu))/2.
-    type, extends(scalar_function) :: jerk_fn
-        real(dp) :: k0 = 0.0_dp, kp = 0.0_dp, km = 0.0_dp, nu = 0.0_dp
-    contains
-        procedure :: eval => jerk_eval
-    end type jerk_fn
 
     !> One piece: a_g is continuous and monotone on [ta, tb].
     type :: piece_t
@@ -97,7 +88,7 @@ module seispulse_pieces
         logical :: from_root = .false.      !! x_lo is a root of J found before
         real(dp) :: j_lo = 0.0_dp           !! J(x_lo) when x_lo is not a root
         real(dp) :: a_lo = 0.0_dp           !! a_g(t_lo), carried: a_g is continuous
-        type(jerk_fn) :: jerk
+        type(mp_jerk_t) :: jerk             !! J = mp_jerk of seispulse_pulses
     end type piece_iter_t
 
 contains
@@ -213,12 +204,12 @@ contains
             it%t_lo = p%t0 + it%x_lo / p%freq
             it%from_root = .false.
             call pulse_at(p, it%t_lo, it%a_lo, v, d)
-            it%jerk%k0 = 2.0_dp * pi
-            it%jerk%kp = 2.0_dp * pi * (1.0_dp + 1.0_dp / gam)
-            it%jerk%km = 2.0_dp * pi * (1.0_dp - 1.0_dp / gam)
-            it%jerk%nu = p%nu_deg * (pi / 180.0_dp)
-            it%m1 = it%jerk%k0**3 + 0.5_dp * (it%jerk%kp**3 + it%jerk%km**3)
-            it%m2 = it%jerk%k0**4 + 0.5_dp * (it%jerk%kp**4 + it%jerk%km**4)
+            it%jerk = mp_jerk_of(p)
+            ! J = -sum w_j k_j^2 cos(k_j x + nu): |J'| <= sum w_j k_j^3, |J''| <= sum w_j k_j^4
+            associate (k => it%jerk%k)
+                it%m1 = 0.5_dp * (k(1)**3 + 0.5_dp * (k(2)**3 + k(3)**3))
+                it%m2 = 0.5_dp * (k(1)**4 + 0.5_dp * (k(2)**4 + k(3)**4))
+            end associate
             it%j_lo = it%jerk%eval(it%x_lo)
         case default
             ! rectangular 0, T; triangular 0, rT, T
@@ -340,7 +331,8 @@ contains
     !>
     !> v = (A/2)[cos(k0 x + nu) + (cos(kp x + nu) + cos(km x + nu))/2] with x = f_p (t - t0),
     !> k0 = 2 pi, kp, km = 2 pi (1 +- 1/gamma) (product-to-sum form of Eq. 1 of M&P 2003),
-    !> so J ~ d^2 v/dx^2 is a sum of three cosines with |J'| <= m1, |J''| <= m2.
+    !> so J = (d^2 v/dx^2)/A (mp_jerk of seispulse_pulses) is a sum of three cosines with
+    !> |J'| <= m1, |J''| <= m2.
     !> An interval [lo, hi] of midpoint m and width h has no root when |J(m)| > m1 h/2,
     !> and J is monotone on it (one root at most, found by Brent if J changes sign)
     !> when |J'(m)| > m2 h/2; otherwise it is halved. Only a tangency of J (a double
@@ -381,7 +373,7 @@ contains
             done = .false.
             if (abs(jm) > 0.5_dp * it%m1 * h) then
                 done = .true.
-            else if (abs(jerk_slope(it%jerk, xm)) > 0.5_dp * it%m2 * h &
+            else if (abs(mp_jerk_slope(it%jerk, xm)) > 0.5_dp * it%m2 * h &
                      .or. n > mp_max_depth) then
                 if ((jlo < 0.0_dp .and. jhi > 0.0_dp) .or. (jlo > 0.0_dp .and. jhi < 0.0_dp)) then
                     call find_root(it%jerk, lo, hi, xb, stat, rmsg, fa_known=jlo, fb_known=jhi)
@@ -413,25 +405,6 @@ contains
         call set_error(stat, errmsg, SEISPULSE_INTERNAL, &
                        caller//': M&P jerk roots: search did not end (a bug)')
     end subroutine mp_next_break
-
-    !> J(x).
-    function jerk_eval(self, x) result(y)
-        class(jerk_fn), intent(inout) :: self
-        real(dp), intent(in) :: x
-        real(dp) :: y
-        y = self%k0**2 * cos(self%k0 * x + self%nu) &
-            + 0.5_dp * (self%kp**2 * cos(self%kp * x + self%nu) &
-                        + self%km**2 * cos(self%km * x + self%nu))
-    end function jerk_eval
-
-    !> dJ/dx.
-    pure function jerk_slope(f, x) result(y)
-        type(jerk_fn), intent(in) :: f
-        real(dp), intent(in) :: x
-        real(dp) :: y
-        y = -(f%k0**3 * sin(f%k0 * x + f%nu) &
-              + 0.5_dp * (f%kp**3 * sin(f%kp * x + f%nu) + f%km**3 * sin(f%km * x + f%nu)))
-    end function jerk_slope
 
     ! ------------------------------------------------------------------------------
     ! Onset from rest on a piece (sliding and rocking blocks alike)

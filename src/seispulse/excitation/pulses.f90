@@ -27,6 +27,7 @@ module seispulse_pulses
     use seispulse_format, only: real_str
     use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, sin_pi, cos_pi, &
                                  tau_minus_sinpi, pi
+    use seispulse_roots, only: scalar_function, find_root
     implicit none
     private
 
@@ -40,6 +41,10 @@ module seispulse_pulses
     public :: exponential_pulse, half_sine_pulse, sine_cycle_pulse, cosine_cycle_pulse, &
               rectangular_pulse, triangular_pulse, ricker_pulse, mp_pulse
     public :: pulse_from_params, PULSE_NPARAM
+    ! acceleration only (inner loops), peak acceleration, and the formulas solvers share
+    public :: pulse_accel, pulse_peak_accel
+    public :: ricker_accel, ricker_window, ricker_x_cut
+    public :: mp_terms, mp_jerk_t, mp_jerk_of, mp_jerk, mp_jerk_slope
     public :: PULSE_EXPONENTIAL, PULSE_HALF_SINE, PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE, &
               PULSE_RECTANGULAR, PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP, PULSE_NKINDS
 
@@ -62,6 +67,31 @@ module seispulse_pulses
 
     !> Above this beta the phi functions are used in e^(-x)-scaled form.
     real(dp), parameter :: beta_scaled = 700.0_dp
+
+    real(dp), parameter :: two_pi = 2.0_dp * pi
+
+    !> Ricker wavelet, the one underflow rule of every evaluation: where
+    !> w = pi^2 f_p^2 (t - t0)^2 >= ricker_w_max the acceleration is +0 exactly. Not a
+    !> truncation: e^(-w) rounds to 0 for w > 745.14 (below half the least subnormal,
+    !> 2^-1075), so the formula (1 - 2 w) e^(-w) is already zero there; the branch only
+    !> keeps the zero positive and avoids (1 - 2 w) * e^(-w) = -inf * 0 = NaN when w
+    !> overflows to +inf.
+    real(dp), parameter :: ricker_w_max = 750.0_dp
+    !> Ricker wavelet: the support used by the piecewise solvers (seispulse_pieces,
+    !> seispulse_sdof_closed), |x| = pi f_p |t - t0| <= ricker_x_cut; outside,
+    !> |a| < 199 e^(-100) a_p < 1e-40 a_p and the solvers take a_g = 0 (see ricker_window).
+    real(dp), parameter :: ricker_x_cut = 10.0_dp
+    !> M&P peak search: at most this many scan steps over the window.
+    integer, parameter :: mp_max_scan = 2**20
+
+    !> Jerk of the Mavroeidis & Papageorgiou pulse in x = f_p (t - t0), in units of
+    !> A f_p^2 (m/s^3 per m/s Hz^2): see `mp_jerk`. A scalar_function for find_root.
+    type, extends(scalar_function) :: mp_jerk_t
+        real(dp) :: k(3) = 0.0_dp   !! wave numbers of `mp_terms`
+        real(dp) :: nu = 0.0_dp     !! phase (rad)
+    contains
+        procedure :: eval => mp_jerk_eval
+    end type mp_jerk_t
 
     !> A pulse in SI units. Components not used by a kind are ignored.
     !>
@@ -440,7 +470,7 @@ contains
         x = tau - tau0
         w = pi * pi * x * x
         e0 = exp(-pi * pi * tau0 * tau0)
-        if (w < 750.0_dp) then
+        if (w < ricker_w_max) then
             a = (1.0_dp - 2.0_dp * w) * exp(-w)
             ! v = [x e^(-pi^2 x^2)] from -tau0 to x
             v = x * exp(-w) + tau0 * e0
@@ -504,6 +534,232 @@ contains
             y = 2.0_dp * cos(0.5_dp * k * (x0 + x1) + nu) * sin(h) / k
         end if
     end function cos_integral
+
+    ! ------------------------------------------------------------------------------
+    ! Acceleration only, peak acceleration, and the pieces of formulas that solvers
+    ! share (Ricker support, M&P wave numbers and jerk)
+    ! ------------------------------------------------------------------------------
+
+    !> Acceleration (m/s^2) of a valid pulse at time t (s), without v and d: the inner loop
+    !> of the integrators (seispulse_rocking_sim). Inside the pulse, the sine and cosine
+    !> cycles, the half sine and the rectangle take one transcendental call,
+    !> sin(2 pi t/T) etc. (pulse_at reduces the argument exactly with sin_pi: the two
+    !> agree to a few ulps, not bitwise), and the Ricker wavelet is `ricker_accel`; every
+    !> other case, and t < 0 or t >= T (rest, end of the pulse), is pulse_at's value.
+    !> `consts` as in pulse_at.
+    elemental function pulse_accel(p, t, consts) result(a)
+        type(pulse_t), intent(in) :: p                          !! a valid pulse
+        real(dp), intent(in) :: t                               !! time (s)
+        type(exp_consts_t), intent(in), optional :: consts      !! exp_consts(p%beta)
+        real(dp) :: a                                           !! a_g(t) (m/s^2)
+        real(dp) :: v, d
+        select case (p%kind)
+        case (PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE, PULSE_HALF_SINE, PULSE_RECTANGULAR)
+            if (t >= 0.0_dp .and. t < p%duration) then
+                select case (p%kind)
+                case (PULSE_SINE_CYCLE)
+                    a = p%amp * sin(two_pi * (t / p%duration))
+                case (PULSE_COSINE_CYCLE)
+                    a = p%amp * cos(two_pi * (t / p%duration))
+                case (PULSE_HALF_SINE)
+                    a = p%amp * sin(pi * (t / p%duration))
+                case default
+                    a = p%amp
+                end select
+                return
+            end if
+        case (PULSE_RICKER)
+            if (t >= 0.0_dp) then
+                a = ricker_accel(p, t)
+                return
+            end if
+        end select
+        if (present(consts)) then
+            call pulse_at(p, t, a, v, d, consts)
+        else
+            call pulse_at(p, t, a, v, d)
+        end if
+    end function pulse_accel
+
+    !> Ricker acceleration a = a_p (1 - 2 x^2) e^(-x^2), x = pi f_p (t - t0) (m/s^2), the
+    !> wavelet continued to t < 0 (pulse_at and pulse_accel give 0 there). +0 where
+    !> x^2 >= ricker_w_max (e^(-x^2) underflows: see ricker_w_max). Agrees with pulse_at,
+    !> which forms x from f_p t - f_p t0, to a few ulps (not bitwise).
+    elemental function ricker_accel(p, t) result(a)
+        type(pulse_t), intent(in) :: p   !! a Ricker pulse (amp, freq, t0 used)
+        real(dp), intent(in) :: t        !! time (s)
+        real(dp) :: a                    !! acceleration (m/s^2)
+        real(dp) :: w
+        w = (pi * p%freq * (t - p%t0))**2
+        if (w < ricker_w_max) then
+            a = p%amp * (1.0_dp - 2.0_dp * w) * exp(-w)
+        else
+            a = 0.0_dp
+        end if
+    end function ricker_accel
+
+    !> Support [ts, te] (s) of the Ricker wavelet for the piecewise solvers:
+    !> |pi f_p (t - t0)| <= ricker_x_cut, starting no earlier than t = 0.
+    pure subroutine ricker_window(p, ts, te)
+        type(pulse_t), intent(in) :: p   !! a valid Ricker pulse
+        real(dp), intent(out) :: ts      !! max(0, t0 - ricker_x_cut/(pi f_p)) (s)
+        real(dp), intent(out) :: te      !! t0 + ricker_x_cut/(pi f_p) (s)
+        ts = max(0.0_dp, p%t0 - ricker_x_cut / (pi * p%freq))
+        te = p%t0 + ricker_x_cut / (pi * p%freq)
+    end subroutine ricker_window
+
+    !> Wave numbers k (in x = f_p (t - t0), rad) and weights w of the M&P velocity in
+    !> product-to-sum form, v = A sum_j w_j cos(k_j x + nu) on the window:
+    !> k = 2 pi (1, 1 + 1/gamma, 1 - 1/gamma), w = (1/2, 1/4, 1/4); so
+    !> a = -A f_p sum w_j k_j sin(k_j x + nu) and the jerk -A f_p^2 sum w_j k_j^2 cos(...).
+    pure subroutine mp_terms(gamma, k, w)
+        real(dp), intent(in) :: gamma   !! oscillatory character, > 1
+        real(dp), intent(out) :: k(3)   !! wave numbers (rad per unit x)
+        real(dp), intent(out) :: w(3)   !! weights
+        k = two_pi * [1.0_dp, 1.0_dp + 1.0_dp / gamma, 1.0_dp - 1.0_dp / gamma]
+        w = [0.5_dp, 0.25_dp, 0.25_dp]
+    end subroutine mp_terms
+
+    !> The jerk function of a valid M&P pulse (wave numbers of mp_terms, nu in radians).
+    pure function mp_jerk_of(p) result(f)
+        type(pulse_t), intent(in) :: p   !! a valid M&P pulse
+        type(mp_jerk_t) :: f
+        real(dp) :: w(3)
+        call mp_terms(p%gamma, f%k, w)
+        f%nu = p%nu_deg * (pi / 180.0_dp)
+    end function mp_jerk_of
+
+    !> M&P jerk in units of A f_p^2 at x = f_p (t - t0) inside the window (d^2 v/dx^2 / A):
+    !> -[k1^2 cos(k1 x + nu) + (k2^2 cos(k2 x + nu) + k3^2 cos(k3 x + nu))/2]/2.
+    pure function mp_jerk(f, x) result(y)
+        type(mp_jerk_t), intent(in) :: f   !! wave numbers and phase
+        real(dp), intent(in) :: x          !! f_p (t - t0)
+        real(dp) :: y
+        y = -0.5_dp * (f%k(1)**2 * cos(f%k(1) * x + f%nu) &
+                       + 0.5_dp * (f%k(2)**2 * cos(f%k(2) * x + f%nu) &
+                                   + f%k(3)**2 * cos(f%k(3) * x + f%nu)))
+    end function mp_jerk
+
+    !> d/dx of mp_jerk (units A f_p^2 per unit x).
+    pure function mp_jerk_slope(f, x) result(y)
+        type(mp_jerk_t), intent(in) :: f   !! wave numbers and phase
+        real(dp), intent(in) :: x          !! f_p (t - t0)
+        real(dp) :: y
+        y = 0.5_dp * (f%k(1)**3 * sin(f%k(1) * x + f%nu) &
+                      + 0.5_dp * (f%k(2)**3 * sin(f%k(2) * x + f%nu) &
+                                  + f%k(3)**3 * sin(f%k(3) * x + f%nu)))
+    end function mp_jerk_slope
+
+    function mp_jerk_eval(self, x) result(y)
+        class(mp_jerk_t), intent(inout) :: self
+        real(dp), intent(in) :: x
+        real(dp) :: y
+        y = mp_jerk(self, x)
+    end function mp_jerk_eval
+
+    !> Peak |a_g| (m/s^2) of the pulse and its time (s): |amp| at the peak of each kind;
+    !> Mavroeidis & Papageorgiou by a scan (step 1/(64 f_p)) and Brent on the closed-form jerk.
+    !> The spike (beta = +inf) reports |amp| at t_d/2 although it has no area.
+    subroutine pulse_peak_accel(p, a_max, t_max, stat, errmsg)
+        type(pulse_t), intent(in) :: p                        !! the pulse (SI)
+        real(dp), intent(out) :: a_max                        !! max |a_g| (m/s^2)
+        real(dp), intent(out) :: t_max                        !! its time (s)
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        a_max = 0.0_dp
+        t_max = 0.0_dp
+        call pulse_validate(p, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        a_max = abs(p%amp)
+        select case (p%kind)
+        case (PULSE_EXPONENTIAL)
+            if (p%beta < -huge(1.0_dp)) then
+                t_max = 0.0_dp
+            else
+                t_max = 0.5_dp * p%duration
+            end if
+        case (PULSE_HALF_SINE)
+            t_max = 0.5_dp * p%duration
+        case (PULSE_SINE_CYCLE)
+            t_max = 0.25_dp * p%duration
+        case (PULSE_TRIANGULAR)
+            t_max = p%peak_frac * p%duration
+        case (PULSE_RICKER)
+            t_max = p%t0
+        case (PULSE_MP)
+            call mp_peak_accel(p, a_max, t_max)
+        case default
+            t_max = 0.0_dp
+        end select
+    end subroutine pulse_peak_accel
+
+    !> a/(A f_p) of the M&P pulse at x inside the window (mp_terms' k, w).
+    pure function mp_accel(k, w, nu, x) result(a)
+        real(dp), intent(in) :: k(3), w(3), nu, x
+        real(dp) :: a
+        a = -sum(w * k * sin(k * x + nu))
+    end function mp_accel
+
+    !> Bound of |a|/(A f_p) of the M&P pulse at |x|: a = (A f_p/2)[env' cos(phi)
+    !> - 2 pi env sin(phi)], env = 1 + cos(2 pi x/gamma), so |a|/(A f_p) <= pi sqrt(
+    !> sin^2(u)/gamma^2 + (1 + cos u)^2), u = 2 pi x/gamma, decreasing in |x| for gamma >= 1.
+    pure function mp_bound(gam, x) result(b)
+        real(dp), intent(in) :: gam, x
+        real(dp) :: b
+        b = pi * hypot(sin_pi(2.0_dp * x / gam) / gam, 1.0_dp + cos_pi(2.0_dp * x / gam))
+    end function mp_bound
+
+    !> Peak |a_g| of the M&P pulse: a scan (step 1/64 in x) with Brent on the closed-form jerk,
+    !> first over |x| <= 4 (the envelope's peak is at x = 0), widened (doubling) until the
+    !> bound mp_bound at the window's edge is below the best value found, so that nothing
+    !> outside can be larger; at most the whole window |x| <= gamma/2. The work does not
+    !> grow with gamma for large gamma (the integer count cannot overflow).
+    subroutine mp_peak_accel(p, a_max, t_max)
+        type(pulse_t), intent(in) :: p
+        real(dp), intent(out) :: a_max, t_max
+        type(mp_jerk_t) :: f
+        real(dp) :: xw, x0, x1, xa, xb, ja, jb, best, xbest, xr, val, w(3)
+        integer :: n, j, stat
+        f = mp_jerk_of(p)
+        call mp_terms(p%gamma, f%k, w)
+        best = -1.0_dp
+        xbest = 0.0_dp
+        xw = min(0.5_dp * p%gamma, 4.0_dp)
+        do
+            x0 = -xw
+            x1 = xw
+            n = int(min(real(mp_max_scan, dp), max(64.0_dp, 128.0_dp * xw)))
+            xa = x0
+            ja = f%eval(xa)
+            do j = 0, n
+                xb = x0 + (x1 - x0) * real(j, dp) / real(n, dp)
+                jb = f%eval(xb)
+                val = abs(mp_accel(f%k, w, f%nu, xb))
+                if (val > best) then
+                    best = val
+                    xbest = xb
+                end if
+                if (j > 0 .and. ((ja > 0.0_dp .and. jb < 0.0_dp) .or. &
+                                 (ja < 0.0_dp .and. jb > 0.0_dp))) then
+                    call find_root(f, xa, xb, xr, stat, fa_known=ja, fb_known=jb)
+                    if (stat == SEISPULSE_SUCCESS) then
+                        val = abs(mp_accel(f%k, w, f%nu, xr))
+                        if (val > best) then
+                            best = val
+                            xbest = xr
+                        end if
+                    end if
+                end if
+                xa = xb
+                ja = jb
+            end do
+            if (xw >= 0.5_dp * p%gamma) exit
+            if (mp_bound(p%gamma, xw) <= best) exit
+            xw = min(0.5_dp * p%gamma, 2.0_dp * xw)
+        end do
+        a_max = abs(p%amp) * p%freq * best
+        t_max = p%t0 + xbest / p%freq
+    end subroutine mp_peak_accel
 
     ! ------------------------------------------------------------------------------
     ! SI pulses

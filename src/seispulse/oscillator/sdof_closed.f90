@@ -92,18 +92,20 @@ module seispulse_sdof_closed
                                 set_error
     use seispulse_checks, only: outside
     use seispulse_format, only: real_str, int_str
-    use seispulse_special, only: expm1, exp_phis, complex_phis, sin_pi, cos_pi, pi
+    use seispulse_special, only: expm1, exp_phis, phi1, sin_pi, cos_pi, pi
+    use seispulse_divided_differences, only: cexp_dd1, cexp_dd2, cexp_dd3
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_sdof_sim, only: sdof_validate, min_period
     use seispulse_pulses, only: pulse_t, pulse_validate, PULSE_EXPONENTIAL, PULSE_HALF_SINE, &
                                 PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, &
-                                PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP
+                                PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP, pulse_peak_accel, &
+                                ricker_accel, ricker_window, mp_terms
     implicit none
     private
 
     public :: dynamic_coefficient, harmonic_response, rect_pulse_response, beta_pulse, &
               impulse_max, impulse_response
-    public :: sdof_pulse_response, sdof_pulse_peaks, sdof_pulse_spectrum, pulse_peak_accel
+    public :: sdof_pulse_response, sdof_pulse_peaks, sdof_pulse_spectrum
     public :: BETA_HYSTERETIC, BETA_VISCOUS, HARMONIC_SINE, HARMONIC_COSINE, &
               BETA_PULSE_TEXTBOOK, BETA_PULSE_EXACT
 
@@ -117,8 +119,6 @@ module seispulse_sdof_closed
     real(dp), parameter :: two_pi = 2.0_dp * pi
     !> Half lobes with |beta| at most this use the expm1-ramp form (no 1/beta blow-up).
     real(dp), parameter :: beta_small = 1.0_dp
-    !> Ricker cut: |x| = pi f_p |t - t0| <= 10 (as seispulse_pieces).
-    real(dp), parameter :: ricker_x_cut = 10.0_dp
     integer, parameter :: max_ricker_panels = 2**20
     !> Ricker panels: at most min(T, 1/f_p)/ricker_panels_per long.
     real(dp), parameter :: ricker_panels_per = 32.0_dp
@@ -207,13 +207,6 @@ module seispulse_sdof_closed
     contains
         procedure :: eval => slope_eval
     end type slope_fn
-
-    !> Jerk of the M&P pulse in x = f_p (t - t0), up to the factor A f_p^2.
-    type, extends(scalar_function) :: mp_jerk_fn
-        real(dp) :: k(3) = 0.0_dp, w(3) = 0.0_dp, nu = 0.0_dp
-    contains
-        procedure :: eval => mp_jerk_eval
-    end type mp_jerk_fn
 
     type :: bracket_t
         integer :: seg = 0, which = 0
@@ -657,42 +650,6 @@ contains
         end do
     end subroutine sdof_pulse_spectrum
 
-    !> Peak |a_g| (m/s^2) of the pulse and its time (s): |amp| at the peak of each kind;
-    !> Mavroeidis & Papageorgiou by a scan (step 1/(64 f_p)) and Brent on the closed-form jerk.
-    !> The spike (beta = +inf) reports |amp| at t_d/2 although it has no area.
-    subroutine pulse_peak_accel(p, a_max, t_max, stat, errmsg)
-        type(pulse_t), intent(in) :: p                        !! the pulse (SI)
-        real(dp), intent(out) :: a_max                        !! max |a_g| (m/s^2)
-        real(dp), intent(out) :: t_max                        !! its time (s)
-        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
-        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        a_max = 0.0_dp
-        t_max = 0.0_dp
-        call pulse_validate(p, stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-        a_max = abs(p%amp)
-        select case (p%kind)
-        case (PULSE_EXPONENTIAL)
-            if (p%beta < -huge(1.0_dp)) then
-                t_max = 0.0_dp
-            else
-                t_max = 0.5_dp * p%duration
-            end if
-        case (PULSE_HALF_SINE)
-            t_max = 0.5_dp * p%duration
-        case (PULSE_SINE_CYCLE)
-            t_max = 0.25_dp * p%duration
-        case (PULSE_TRIANGULAR)
-            t_max = p%peak_frac * p%duration
-        case (PULSE_RICKER)
-            t_max = p%t0
-        case (PULSE_MP)
-            call mp_peak_accel(p, a_max, t_max)
-        case default
-            t_max = 0.0_dp
-        end select
-    end subroutine pulse_peak_accel
-
     ! ==================================================================================
     ! Validation
     ! ==================================================================================
@@ -871,84 +828,6 @@ contains
     end function longest_segment
 
     ! ==================================================================================
-    ! Kernels: divided differences of exp
-    ! ==================================================================================
-
-    !> e[x, y] = (e^x - e^y)/(x - y) (e^x at x = y) and e^y. Written e^u phi_1(w - u) with u the
-    !> argument of larger real part: phi_1 is taken where Re <= 0 (no overflow), exact at x = y.
-    elemental subroutine dd1(x, y, e, ey)
-        complex(dp), intent(in) :: x, y
-        complex(dp), intent(out) :: e   !! e[x, y]
-        complex(dp), intent(out) :: ey  !! e^y
-        complex(dp) :: p0, p1, p2, ex
-        if (real(x, dp) >= real(y, dp)) then
-            call complex_phis(y - x, p0, p1, p2)
-            ex = exp(x)
-            e = ex * p1
-            ey = ex * p0
-        else
-            call complex_phis(x - y, p0, p1, p2)
-            ey = exp(y)
-            e = ey * p1
-        end if
-    end subroutine dd1
-
-    pure function phi1c(z) result(p1)
-        complex(dp), intent(in) :: z
-        complex(dp) :: p1, p0, p2
-        call complex_phis(z, p0, p1, p2)
-    end function phi1c
-
-    !> Second divided difference e[x, y, 0] for Re x, Re y <= 1: Taylor series
-    !> sum_n h_n(x, y)/(n + 2)! (h_n the complete symmetric polynomials) when |x|, |y| <= 1;
-    !> otherwise the difference quotient over the farthest pair of the three points (divisor
-    !> >= 1, so the numerator's rounding is not amplified).
-    pure function dd2(x, y) result(e)
-        complex(dp), intent(in) :: x, y
-        complex(dp) :: e, xn, h, e1, ey
-        real(dp) :: f, dxy, dx, dy
-        integer :: n
-        if (abs(x) <= 1.0_dp .and. abs(y) <= 1.0_dp) then
-            xn = (1.0_dp, 0.0_dp)
-            h = (1.0_dp, 0.0_dp)
-            f = 0.5_dp
-            e = 0.5_dp * h
-            do n = 1, 20
-                xn = xn * x
-                h = y * h + xn
-                f = f / real(n + 2, dp)
-                e = e + f * h
-            end do
-        else
-            dxy = abs(x - y)
-            dx = abs(x)
-            dy = abs(y)
-            if (dxy >= dx .and. dxy >= dy) then
-                e = (phi1c(x) - phi1c(y)) / (x - y)
-            else if (dx >= dy) then
-                call dd1(x, y, e1, ey)
-                e = (e1 - phi1c(y)) / x
-            else
-                call dd1(y, x, e1, ey)
-                e = (e1 - phi1c(x)) / y
-            end if
-        end if
-    end function dd2
-
-    !> e[a, b, c] = e^c e[a - c, b - c, 0] with c the point of largest real part.
-    pure function dd3(a, b, c) result(e)
-        complex(dp), intent(in) :: a, b, c
-        complex(dp) :: e
-        if (real(a, dp) >= real(b, dp) .and. real(a, dp) >= real(c, dp)) then
-            e = exp(a) * dd2(b - a, c - a)
-        else if (real(b, dp) >= real(c, dp)) then
-            e = exp(b) * dd2(a - b, c - b)
-        else
-            e = exp(c) * dd2(a - c, b - c)
-        end if
-    end function dd3
-
-    ! ==================================================================================
     ! The model: segments, states, outputs
     ! ==================================================================================
 
@@ -1024,7 +903,7 @@ contains
         else
             do i = 1, seg%nexp
                 ! C e^(M (s - v)) -> C tau e[lambda sigma - M v, M (s - v)]
-                call dd1(x0 - seg%me(i) * seg%ve(i), &
+                call cexp_dd1(x0 - seg%me(i) * seg%ve(i), &
                          cmplx(seg%me(i) * (s - seg%ve(i)), 0.0_dp, dp), e, ey)
                 k = k + seg%ce(i) * e
             end do
@@ -1035,8 +914,8 @@ contains
             end do
             k = k * tau
             ! C s phi_1(R s) -> C tau s e[lambda sigma, R s, 0]
-            if (seg%has_r) k = k + seg%cr * tau * s * dd3(x0, cmplx(seg%rr * s, 0.0_dp, dp), &
-                                                          (0.0_dp, 0.0_dp))
+            if (seg%has_r) k = k + seg%cr * tau * s * cexp_dd2(x0, cmplx(seg%rr * s, 0.0_dp, dp), &
+                                                               (0.0_dp, 0.0_dp))
         end if
         ag = seg_accel(p, seg, s)
         w = exp(x0) * seg%wa
@@ -1068,98 +947,17 @@ contains
         zr = 0.0_dp
         do i = 1, seg%nexp
             sh = cmplx(seg%me(i) * seg%ve(i), 0.0_dp, dp)
-            zr = zr - seg%ce(i) * real(dd3(x0 - sh, conjg(x0) - sh, &
-                                           cmplx(seg%me(i) * (s - seg%ve(i)), 0.0_dp, dp)), dp)
+            zr = zr - seg%ce(i) * real(cexp_dd2(x0 - sh, conjg(x0) - sh, &
+                                                cmplx(seg%me(i) * (s - seg%ve(i)), 0.0_dp, dp)), dp)
         end do
         do i = 1, seg%nsin
-            zr = zr - real(seg%cs(i) * dd3(x0, conjg(x0), cmplx(0.0_dp, seg%ks(i) * s, dp)), dp)
+            zr = zr - real(seg%cs(i) * cexp_dd2(x0, conjg(x0), &
+                                                cmplx(0.0_dp, seg%ks(i) * s, dp)), dp)
         end do
         zr = zr * (tau * sigma)
         if (seg%has_r) zr = zr - seg%cr * (tau * sigma) * s &
-            * real(dd4(x0, conjg(x0), cmplx(seg%rr * s, 0.0_dp, dp), (0.0_dp, 0.0_dp)), dp)
+            * real(cexp_dd3(x0, conjg(x0), cmplx(seg%rr * s, 0.0_dp, dp), (0.0_dp, 0.0_dp)), dp)
     end function forced_real
-
-    !> Third divided difference e[x1, x2, x3, x4] of exp, any points: the Taylor series when
-    !> all are in the unit disk; else e^c e[x1 - c, ..., x4 - c] with c the point of largest
-    !> real part (the shifted points have Re <= 0: no overflow), by the series when the
-    !> shifted points are in the unit disk, else by the quotient
-    !> (e[..without xb..] - e[..without xa..])/(xa - xb) over the farthest pair (one shifted
-    !> point is 0, so that pair is more than 1 apart: the numerator's rounding is not
-    !> amplified).
-    pure function dd4(x1, x2, x3, x4) result(e)
-        complex(dp), intent(in) :: x1, x2, x3, x4
-        complex(dp) :: e, x(4), y(4), q(3)
-        real(dp) :: dist, dmax
-        integer :: c, i, j, a, b, k
-        x = [x1, x2, x3, x4]
-        if (maxval(abs(x)) <= 1.0_dp) then
-            e = dd4_taylor(x1, x2, x3, x4)
-            return
-        end if
-        c = maxloc(real(x, dp), 1)
-        y = x - x(c)
-        if (maxval(abs(y)) <= 1.0_dp) then
-            e = exp(x(c)) * dd4_taylor(y(1), y(2), y(3), y(4))
-            return
-        end if
-        a = 1
-        b = 2
-        dmax = -1.0_dp
-        do i = 1, 3
-            do j = i + 1, 4
-                dist = abs(y(i) - y(j))
-                if (dist > dmax) then
-                    dmax = dist
-                    a = i
-                    b = j
-                end if
-            end do
-        end do
-        ! e[all] = (e[all but b] - e[all but a])/(y_a - y_b)
-        k = 0
-        do i = 1, 4
-            if (i == b) cycle
-            k = k + 1
-            q(k) = y(i)
-        end do
-        e = dd3(q(1), q(2), q(3))
-        k = 0
-        do i = 1, 4
-            if (i == a) cycle
-            k = k + 1
-            q(k) = y(i)
-        end do
-        e = exp(x(c)) * ((e - dd3(q(1), q(2), q(3))) / (y(a) - y(b)))
-    end function dd4
-
-    !> Third divided difference e[x1, x2, x3, x4] of exp for points in the unit disk:
-    !> sum_n h_n(x1..x4)/(n + 3)! (complete symmetric polynomials by the recurrence
-    !> h_n(x1..xk) = h_n(x1..xk-1) + xk h_(n-1)(x1..xk); 23 terms, below 1e-20).
-    pure function dd4_taylor(x1, x2, x3, x4) result(e)
-        complex(dp), intent(in) :: x1, x2, x3, x4
-        complex(dp) :: e, h(0:22)
-        real(dp) :: f
-        integer :: n
-        h(0) = (1.0_dp, 0.0_dp)
-        do n = 1, 22
-            h(n) = x1 * h(n - 1)
-        end do
-        do n = 1, 22
-            h(n) = h(n) + x2 * h(n - 1)
-        end do
-        do n = 1, 22
-            h(n) = h(n) + x3 * h(n - 1)
-        end do
-        do n = 1, 22
-            h(n) = h(n) + x4 * h(n - 1)
-        end do
-        f = 1.0_dp / 6.0_dp
-        e = f * h(0)
-        do n = 1, 22
-            f = f / real(n + 3, dp)
-            e = e + f * h(n)
-        end do
-    end function dd4_taylor
 
     !> Kernels of cos(kappa s) and sin(kappa s) over [0, s] divided by sigma:
     !> (e1 + e2)/2 and (e1 - e2)/(2i) with e1,2 = e[x, +-i ks]; for |ks| < 1 the difference is
@@ -1170,13 +968,13 @@ contains
         complex(dp), intent(out) :: kcos, ksin, ey
         complex(dp) :: y, e, e2, ey2, d
         y = cmplx(0.0_dp, ks, dp)
-        call dd1(x, y, e, ey)
+        call cexp_dd1(x, y, e, ey)
         if (abs(ks) < 1.0_dp) then
-            d = dd3(x, y, conjg(y))
+            d = cexp_dd2(x, y, conjg(y))
             ksin = ks * d
             kcos = e - cmplx(0.0_dp, ks, dp) * d
         else
-            call dd1(x, conjg(y), e2, ey2)
+            call cexp_dd1(x, conjg(y), e2, ey2)
             kcos = 0.5_dp * (e + e2)
             ksin = cmplx(0.0_dp, -0.5_dp, dp) * (e - e2)
         end if
@@ -1231,7 +1029,7 @@ contains
             st%eh = exp(x)
             do i = 1, seg%nexp
                 if (abs(seg%me(i) * h) <= 40.0_dp) then
-                    call dd1(x, cmplx(seg%me(i) * h, 0.0_dp, dp), e, ey)
+                    call cexp_dd1(x, cmplx(seg%me(i) * h, 0.0_dp, dp), e, ey)
                     st%kexp(i) = ht * e
                 end if
             end do
@@ -1241,8 +1039,8 @@ contains
                 st%ksin(i) = ht * st%ksin(i)
             end do
             if (seg%has_r) then
-                st%kra = ht * h * dd3(x, cmplx(seg%rr * h, 0.0_dp, dp), (0.0_dp, 0.0_dp))
-                st%krb = ht * phi1c(x)
+                st%kra = ht * h * cexp_dd2(x, cmplx(seg%rr * h, 0.0_dp, dp), (0.0_dp, 0.0_dp))
+                st%krb = ht * phi1(x)
             end if
         end if
         k = (0.0_dp, 0.0_dp)
@@ -1253,7 +1051,7 @@ contains
             if (abs(seg%me(i) * h) <= 40.0_dp) then
                 k = k + seg%ce(i) * exp(seg%me(i) * (s0 - seg%ve(i))) * st%kexp(i)
             else
-                call dd1(x + seg%me(i) * (s0 - seg%ve(i)), &
+                call cexp_dd1(x + seg%me(i) * (s0 - seg%ve(i)), &
                          cmplx(seg%me(i) * (s1 - seg%ve(i)), 0.0_dp, dp), e, ey)
                 k = k + seg%ce(i) * ht * e
             end if
@@ -1336,25 +1134,6 @@ contains
         k = sum(kp * ricker_accel(p, tmid + (0.5_dp * tau) * gl_x) &
                 + km * ricker_accel(p, tmid - (0.5_dp * tau) * gl_x))
     end function gl_panel
-
-    elemental function ricker_accel(p, t) result(a)
-        type(pulse_t), intent(in) :: p
-        real(dp), intent(in) :: t
-        real(dp) :: a, x
-        x = pi * p%freq * (t - p%t0)
-        if (abs(x) < 30.0_dp) then
-            a = p%amp * (1.0_dp - 2.0_dp * x * x) * exp(-x * x)
-        else
-            a = 0.0_dp
-        end if
-    end function ricker_accel
-
-    pure subroutine ricker_window(p, ts, te)
-        type(pulse_t), intent(in) :: p
-        real(dp), intent(out) :: ts, te
-        ts = max(0.0_dp, p%t0 - ricker_x_cut / (pi * p%freq))
-        te = p%t0 + ricker_x_cut / (pi * p%freq)
-    end subroutine ricker_window
 
     !> Append a segment [ta, ta + dur] (dur > 0).
     subroutine add_seg(m, ta, dur)
@@ -1841,93 +1620,5 @@ contains
         call point_values(self%osc, self%seg, self%p, x, q, dq)
         y = dq(self%which)
     end function slope_eval
-
-    ! ==================================================================================
-    ! Mavroeidis & Papageorgiou: peak ground acceleration
-    ! ==================================================================================
-
-    pure function mp_accel(k, w, nu, x) result(a)
-        real(dp), intent(in) :: k(3), w(3), nu, x
-        real(dp) :: a
-        a = -sum(w * k * sin(k * x + nu))
-    end function mp_accel
-
-    function mp_jerk_eval(self, x) result(y)
-        class(mp_jerk_fn), intent(inout) :: self
-        real(dp), intent(in) :: x
-        real(dp) :: y
-        y = -sum(self%w * self%k**2 * cos(self%k * x + self%nu))
-    end function mp_jerk_eval
-
-    !> Wave numbers k (in x = f_p (t - t0)) and weights w of the three sinusoids of the M&P
-    !> acceleration, a = -A f_p sum w_j k_j sin(k_j x + nu): k = 2 pi (1, 1 + 1/gamma,
-    !> 1 - 1/gamma), w = (1/2, 1/4, 1/4).
-    pure subroutine mp_terms(gam, k, w)
-        real(dp), intent(in) :: gam
-        real(dp), intent(out) :: k(3), w(3)
-        k = two_pi * [1.0_dp, 1.0_dp + 1.0_dp / gam, 1.0_dp - 1.0_dp / gam]
-        w = [0.5_dp, 0.25_dp, 0.25_dp]
-    end subroutine mp_terms
-
-    !> Bound of |a|/(A f_p) of the M&P pulse at |x|: a = (A f_p/2)[env' cos(phi)
-    !> - 2 pi env sin(phi)], env = 1 + cos(2 pi x/gamma), so |a|/(A f_p) <= pi sqrt(
-    !> sin^2(u)/gamma^2 + (1 + cos u)^2), u = 2 pi x/gamma, decreasing in |x| for gamma >= 1.
-    pure function mp_bound(gam, x) result(b)
-        real(dp), intent(in) :: gam, x
-        real(dp) :: b
-        b = pi * hypot(sin_pi(2.0_dp * x / gam) / gam, 1.0_dp + cos_pi(2.0_dp * x / gam))
-    end function mp_bound
-
-    !> Peak |a_g| of the M&P pulse: a scan (step 1/64 in x) with Brent on the closed-form jerk,
-    !> first over |x| <= 4 (the envelope's peak is at x = 0), widened (doubling) until the
-    !> bound mp_bound at the window's edge is below the best value found, so that nothing
-    !> outside can be larger; at most the whole window |x| <= gamma/2. The work does not
-    !> grow with gamma for large gamma (the integer count cannot overflow).
-    subroutine mp_peak_accel(p, a_max, t_max)
-        type(pulse_t), intent(in) :: p
-        real(dp), intent(out) :: a_max, t_max
-        type(mp_jerk_fn) :: f
-        real(dp) :: xw, x0, x1, xa, xb, ja, jb, best, xbest, xr, val
-        integer :: n, j, stat
-        call mp_terms(p%gamma, f%k, f%w)
-        f%nu = p%nu_deg * (pi / 180.0_dp)
-        best = -1.0_dp
-        xbest = 0.0_dp
-        xw = min(0.5_dp * p%gamma, 4.0_dp)
-        do
-            x0 = -xw
-            x1 = xw
-            n = int(min(real(max_scan, dp), max(64.0_dp, 128.0_dp * xw)))
-            xa = x0
-            ja = f%eval(xa)
-            do j = 0, n
-                xb = x0 + (x1 - x0) * real(j, dp) / real(n, dp)
-                jb = f%eval(xb)
-                val = abs(mp_accel(f%k, f%w, f%nu, xb))
-                if (val > best) then
-                    best = val
-                    xbest = xb
-                end if
-                if (j > 0 .and. ((ja > 0.0_dp .and. jb < 0.0_dp) .or. &
-                                 (ja < 0.0_dp .and. jb > 0.0_dp))) then
-                    call find_root(f, xa, xb, xr, stat, fa_known=ja, fb_known=jb)
-                    if (stat == SEISPULSE_SUCCESS) then
-                        val = abs(mp_accel(f%k, f%w, f%nu, xr))
-                        if (val > best) then
-                            best = val
-                            xbest = xr
-                        end if
-                    end if
-                end if
-                xa = xb
-                ja = jb
-            end do
-            if (xw >= 0.5_dp * p%gamma) exit
-            if (mp_bound(p%gamma, xw) <= best) exit
-            xw = min(0.5_dp * p%gamma, 2.0_dp * xw)
-        end do
-        a_max = abs(p%amp) * p%freq * best
-        t_max = p%t0 + xbest / p%freq
-    end subroutine mp_peak_accel
 
 end module seispulse_sdof_closed

@@ -22,8 +22,9 @@
 !> have no f^2 - 4 beta^2 denominator (f = 2|beta| is merely a double node: item 1), no
 !> 1/(1 - e^beta) (item 2), and all nodes but the decaying -2 beta h stay below
 !> |ln eta| + |ln(1 - eta)| for any beta (item 3). Divided differences are evaluated
-!> without cancellation: Taylor series of the complete symmetric polynomials for clustered
-!> nodes, the recurrence on sorted nodes otherwise (a few ulps either way). After the pulse
+!> without cancellation (seispulse_divided_differences): Taylor series of the complete
+!> symmetric polynomials for clustered nodes, the recurrence on sorted nodes otherwise (a few
+!> ulps either way). After the pulse
 !> the state transition psi - 1 = A e^(f(tau-1)) + B e^(-f(tau-1)) (section 4.1, phase 3).
 !> beta = 0 and -inf use the triangle (2.14, 2.15) and rectangle (2.12, 2.13) forms and
 !> their limit equations; a large negative beta is never substituted for the rectangle
@@ -42,7 +43,9 @@ module seispulse_rocking_closed
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error
     use seispulse_checks, only: outside
     use seispulse_format, only: real_str
-    use seispulse_special, only: expm1, log1p
+    use seispulse_special, only: expm1, log1p, phi1, phi1_from_exp, log1p_over_x, sinh_minus_x, &
+                                 x_minus_asinh
+    use seispulse_divided_differences, only: exp_dd_pack
     use seispulse_pulses, only: check_beta, exp_rise_time
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
     implicit none
@@ -87,20 +90,6 @@ module seispulse_rocking_closed
         1.0_dp / 342.0_dp, 1.0_dp / 380.0_dp]
     real(dp), parameter :: inv_int(1:6) = [1.0_dp, 0.5_dp, 1.0_dp / 3.0_dp, 0.25_dp, 0.2_dp, &
                                            1.0_dp / 6.0_dp]
-    !> Node spread below which divided differences of exp use the Taylor series.
-    real(dp), parameter :: dd_spread = 1.0_dp
-    !> 1/m!, m = 0..24.
-    real(dp), parameter :: inv_fact(0:24) = [ &
-        1.0_dp / 1.0_dp, 1.0_dp / 1.0_dp, 1.0_dp / 2.0_dp, 1.0_dp / 6.0_dp, 1.0_dp / 24.0_dp, &
-        1.0_dp / 120.0_dp, 1.0_dp / 720.0_dp, 1.0_dp / 5040.0_dp, 1.0_dp / 40320.0_dp, &
-        1.0_dp / 362880.0_dp, 1.0_dp / 3628800.0_dp, 1.0_dp / 39916800.0_dp, &
-        1.0_dp / 479001600.0_dp, 1.0_dp / 6227020800.0_dp, 1.0_dp / 87178291200.0_dp, &
-        1.0_dp / 1307674368000.0_dp, 1.0_dp / 20922789888000.0_dp, &
-        1.0_dp / 355687428096000.0_dp, 1.0_dp / 6402373705728000.0_dp, &
-        1.0_dp / 121645100408832000.0_dp, 1.0_dp / 2432902008176640000.0_dp, &
-        1.0_dp / 51090942171709440000.0_dp, 1.0_dp / 1124000727777607680000.0_dp, &
-        1.0_dp / 25852016738884976640000.0_dp, 1.0_dp / 620448401733239439360000.0_dp]
-
     !> Everything the first excursion needs, computed once per (f, eta, beta).
     type :: rock_state
         real(dp) :: f = 1.0_dp        ! p t_d
@@ -786,7 +775,7 @@ contains
         real(dp), intent(out) :: psi, q
         real(dp) :: ey, dplus, dminus, d3
         ey = exp(y)
-        call dd_pack(x, ex, 0.0_dp, 1.0_dp, y, ey, dplus, dminus, d3)
+        call exp_dd_pack(x, ex, 0.0_dp, 1.0_dp, y, ey, dplus, dminus, d3)
         psi = st%k * y * y * h * d3
         q = 0.5_dp * st%k * y * h * (dplus + dminus)
     end subroutine phase1
@@ -821,7 +810,7 @@ contains
             cm1 = 0.5_dp * (ey + 1.0_dp / ey) - 1.0_dp
         end if
         ch = 1.0_dp + cm1
-        call dd_pack(n0, en0, st%d0, st%ed0, y, ey, dplus, dminus, d3)
+        call exp_dd_pack(n0, en0, st%d0, st%ed0, y, ey, dplus, dminus, d3)
         psi = st%p_half * ch + st%q_half * sh + st%c0 * cm1 - st%k * y * y * h * d3
         q = st%p_half * sh + st%q_half * ch + st%c0 * sh - 0.5_dp * st%k * y * h * (dplus + dminus)
     end subroutine phase2
@@ -1163,12 +1152,12 @@ contains
             h = x - st%tup
             kap = 2.0_dp * st%beta
             ge = st%k * ee                    ! C kappa e^e
-            g = st%k * h * phi1e(e, ee)
+            g = st%k * h * phi1_from_exp(e, ee)
         else
             h = x - (1.0_dp - st%tup)
             kap = -2.0_dp * st%beta
             ge = -st%k * ee
-            g = -st%k * h * phi1e(e, ee)
+            g = -st%k * h * phi1_from_exp(e, ee)
         end if
         if (st%shape == SHAPE_RECTANGLE) then
             g = st%c0
@@ -1232,17 +1221,6 @@ contains
              .and. t * y * abs(m(3)) <= 1.0e-6_dp .and. t * y * y * abs(m(4)) <= 1.0e-9_dp &
              .and. t * y**3 * abs(m(5)) <= 1.0e-12_dp
     end function small_step
-
-    !> (e^x - 1)/x from ex = e^x.
-    pure function phi1e(x, ex) result(y)
-        real(dp), intent(in) :: x, ex
-        real(dp) :: y
-        if (abs(x) >= 0.5_dp) then
-            y = (ex - 1.0_dp) / x
-        else
-            y = phi1_small(x)
-        end if
-    end function phi1e
 
     !> Root of fn on [lo, hi] (a sign change) given its values and slopes at both ends:
     !> up to two evaluations at the root of the cubic Hermite interpolant (which shrink the
@@ -1558,244 +1536,6 @@ contains
         y = sinh_minus_x(y1) - 2.0_dp * sinh_minus_x(y2)
         dy = self%f * (2.0_dp * sinh(0.5_dp * y1)**2 - 4.0_dp * sinh(0.5_dp * y2)**2)
     end subroutine tri_impact_slope
-
-    ! ------------------------------------------------------------------------------
-    ! Elementary functions without cancellation
-    ! ------------------------------------------------------------------------------
-
-    !> phi_1(x) = (e^x - 1)/x, 1 at 0.
-    elemental function phi1(x) result(y)
-        real(dp), intent(in) :: x
-        real(dp) :: y
-        if (abs(x) > 0.0_dp) then
-            y = expm1(x) / x
-        else
-            y = 1.0_dp
-        end if
-    end function phi1
-
-    !> ln(1 + x)/x, 1 at 0.
-    elemental function log1p_over_x(x) result(y)
-        real(dp), intent(in) :: x
-        real(dp) :: y
-        if (abs(x) > 0.0_dp) then
-            y = log1p(x) / x
-        else
-            y = 1.0_dp
-        end if
-    end function log1p_over_x
-
-    !> sinh(x) - x (Taylor series for |x| < 1, to x^19/19!).
-    elemental function sinh_minus_x(x) result(y)
-        real(dp), intent(in) :: x
-        real(dp) :: y, x2
-        integer :: k
-        if (abs(x) < 1.0_dp) then
-            x2 = x * x
-            y = 1.0_dp
-            do k = 9, 2, -1
-                y = 1.0_dp + y * x2 / real((2 * k) * (2 * k + 1), dp)
-            end do
-            y = x * x2 / 6.0_dp * y
-        else
-            y = sinh(x) - x
-        end if
-    end function sinh_minus_x
-
-    !> x - asinh(x) (series sum_n (-1)^(n+1) t_n x^(2n+1)/(2n+1), t_n = (2n)!/(4^n n!^2),
-    !> for |x| < 1/4).
-    elemental function x_minus_asinh(x) result(y)
-        real(dp), intent(in) :: x
-        real(dp) :: y, x2, t, term
-        integer :: n
-        if (abs(x) < 0.25_dp) then
-            x2 = x * x
-            t = 1.0_dp
-            term = x
-            y = 0.0_dp
-            do n = 1, 14
-                t = t * real(2 * n - 1, dp) / real(2 * n, dp)
-                term = -term * x2
-                y = y - t * term / real(2 * n + 1, dp)
-            end do
-        else
-            y = x - asinh(x)
-        end if
-    end function x_minus_asinh
-
-    !> phi_1(z) = (e^z - 1)/z for |z| <= 1/2 (Taylor polynomial to z^14/15!).
-    pure function phi1_small(z) result(y)
-        real(dp), intent(in) :: z
-        real(dp) :: y
-        integer :: k
-        y = inv_fact(15)
-        do k = 13, 0, -1
-            y = inv_fact(k + 1) + z * y
-        end do
-    end function phi1_small
-
-    !> (e^a - e^b)/(a - b) from ea = e^a, eb = e^b: the quotient for |a - b| >= 1/2 (at most
-    !> 1.4 bits lost), e^max phi_1(-|a - b|) closer (e^a at a = b).
-    pure function dd1e(a, ea, b, eb) result(y)
-        real(dp), intent(in) :: a, ea, b, eb
-        real(dp) :: y, d
-        d = a - b
-        if (abs(d) >= 0.5_dp) then
-            y = (ea - eb) / d
-        else if (d >= 0.0_dp) then
-            y = ea * phi1_small(-d)
-        else
-            y = eb * phi1_small(d)
-        end if
-    end function dd1e
-
-    !> Second divided difference of exp at three nodes (any order, repeats allowed), given
-    !> the exponentials of the nodes: the series below a spread of 2, else the recurrence on
-    !> sorted nodes (exp is convex: the difference of positive terms loses a few bits at most).
-    pure function dd2e(x1, e1, x2, e2, x3, e3) result(y)
-        real(dp), intent(in) :: x1, e1, x2, e2, x3, e3
-        real(dp) :: y, a, ea, b, eb, c, ec
-        a = x1
-        ea = e1
-        b = x2
-        eb = e2
-        c = x3
-        ec = e3
-        call order(a, ea, b, eb)
-        call order(b, eb, c, ec)
-        call order(a, ea, b, eb)
-        if (c - a < dd_spread) then
-            y = dd_series3(a, b, c, sqrt(ea) * sqrt(ec))
-        else
-            y = (dd1e(b, eb, c, ec) - dd1e(a, ea, b, eb)) / (c - a)
-        end if
-    end function dd2e
-
-    !> The divided differences of exp the phases need, at the nodes p, c, c + y, c - y
-    !> (y >= 0; ep = e^p, ec = e^c, ey = e^y): dplus = exp[p, c, c + y],
-    !> dminus = exp[p, c, c - y], d3 = exp[p, c, c + y, c - y]. Clustered nodes (spread < 2):
-    !> one Taylor series for all three; otherwise the recurrence on sorted nodes, whose two
-    !> second differences are dplus (p >= c - y) and dminus (p <= c + y).
-    pure subroutine dd_pack(p, ep, c, ec, y, ey, dplus, dminus, d3)
-        real(dp), intent(in) :: p, ep, c, ec, y, ey
-        real(dp), intent(out) :: dplus, dminus, d3
-        real(dp) :: lo, hi, elo, ehi, m, zp, zc, zu, zl, h1, h2, h3p, h3m, h4, sp, sm, s4, &
-                    eu, el, upper, lower
-        integer :: k
-        eu = ec * ey
-        el = ec / ey
-        if (p < c - y) then
-            lo = p
-            elo = ep
-        else
-            lo = c - y
-            elo = el
-        end if
-        if (p > c + y) then
-            hi = p
-            ehi = ep
-        else
-            hi = c + y
-            ehi = eu
-        end if
-        if (hi - lo < dd_spread) then
-            m = 0.5_dp * (lo + hi)
-            zp = p - m
-            zc = c - m
-            zu = c + y - m
-            zl = c - y - m
-            h1 = 1.0_dp
-            h2 = 1.0_dp
-            h3p = 1.0_dp
-            h3m = 1.0_dp
-            h4 = 1.0_dp
-            sp = inv_fact(2)
-            sm = inv_fact(2)
-            s4 = inv_fact(3)
-            do k = 1, series_terms(0.5_dp * (hi - lo))
-                h1 = zp * h1
-                h2 = h1 + zc * h2
-                h3p = h2 + zu * h3p
-                h3m = h2 + zl * h3m
-                h4 = h3p + zl * h4
-                sp = sp + h3p * inv_fact(k + 2)
-                sm = sm + h3m * inv_fact(k + 2)
-                s4 = s4 + h4 * inv_fact(k + 3)
-            end do
-            m = sqrt(elo) * sqrt(ehi)
-            dplus = m * sp
-            dminus = m * sm
-            d3 = m * s4
-        else
-            if (p >= c - y) then
-                upper = dd2e(p, ep, c, ec, c + y, eu)
-                dplus = upper
-            else
-                upper = dd2e(c - y, el, c, ec, c + y, eu)
-                dplus = dd2e(p, ep, c, ec, c + y, eu)
-            end if
-            if (p <= c + y) then
-                lower = dd2e(p, ep, c, ec, c - y, el)
-                dminus = lower
-            else
-                lower = dd2e(c - y, el, c, ec, c + y, eu)
-                dminus = dd2e(p, ep, c, ec, c - y, el)
-            end if
-            d3 = (upper - lower) / (hi - lo)
-        end if
-    end subroutine dd_pack
-
-    !> Number of Taylor terms for nodes within hw of their midpoint (hw <= 1): truncation
-    !> below 1e-17 relative.
-    pure integer function series_terms(hw) result(nt)
-        real(dp), intent(in) :: hw
-        if (hw > 0.5_dp) then
-            nt = 20
-        else if (hw > 0.125_dp) then
-            nt = 16
-        else if (hw > 0.01_dp) then
-            nt = 11
-        else
-            nt = 7
-        end if
-    end function series_terms
-
-    !> exp[a, b, c] for sorted nodes of spread < 2: e^m sum_k h_k(a-m, b-m, c-m)/(k + 2)!,
-    !> m the midpoint (em = e^m), h_k the complete symmetric polynomials.
-    pure function dd_series3(a, b, c, em) result(y)
-        real(dp), intent(in) :: a, b, c, em
-        real(dp) :: y, m, za, zb, zc, ha, hab, habc, s
-        integer :: k
-        m = 0.5_dp * (a + c)
-        za = a - m
-        zb = b - m
-        zc = c - m
-        ha = 1.0_dp
-        hab = 1.0_dp
-        habc = 1.0_dp
-        s = inv_fact(2)
-        do k = 1, series_terms(0.5_dp * (c - a))
-            ha = za * ha
-            hab = ha + zb * hab
-            habc = hab + zc * habc
-            s = s + habc * inv_fact(k + 2)
-        end do
-        y = em * s
-    end function dd_series3
-
-    !> Swap the pairs (a, ea), (b, eb) unless a <= b.
-    pure subroutine order(a, ea, b, eb)
-        real(dp), intent(inout) :: a, ea, b, eb
-        real(dp) :: t
-        if (a > b) then
-            t = a
-            a = b
-            b = t
-            t = ea
-            ea = eb
-            eb = t
-        end if
-    end subroutine order
 
     ! ------------------------------------------------------------------------------
     ! Checks

@@ -61,7 +61,7 @@ module seispulse_rocking_sim
     use seispulse_format, only: real_str
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_special, only: pi
-    use seispulse_pulses, only: pulse_t, pulse_validate, pulse_at, &
+    use seispulse_pulses, only: pulse_t, pulse_validate, pulse_accel, &
                                 exp_consts_t, exp_consts, pulse_kind_name, &
                                 PULSE_EXPONENTIAL, PULSE_HALF_SINE, PULSE_SINE_CYCLE, &
                                 PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
@@ -1472,7 +1472,7 @@ contains
             if (t >= gr%tb) then
                 a = gr%ab
             else
-                a = pulse_accel(gr%p, gr%cexp, t)
+                a = pulse_accel(gr%p, t, gr%cexp)
             end if
         case (GR_RECORD)
             if (t >= gr%tb) then
@@ -1505,34 +1505,5 @@ contains
         real(dp) :: y
         y = ground_accel(self, x) - self%level
     end function ground_eval
-
-    !> Acceleration of a pulse inside one of its pieces (0 <= t < end): the common kinds
-    !> directly (one transcendental call: this is the inner loop), the others by pulse_at.
-    pure function pulse_accel(p, c, t) result(a)
-        type(pulse_t), intent(in) :: p
-        type(exp_consts_t), intent(in) :: c
-        real(dp), intent(in) :: t
-        real(dp) :: a
-        real(dp) :: v, d, w
-        select case (p%kind)
-        case (PULSE_SINE_CYCLE)
-            a = p%amp * sin(two_pi * (t / p%duration))
-        case (PULSE_COSINE_CYCLE)
-            a = p%amp * cos(two_pi * (t / p%duration))
-        case (PULSE_HALF_SINE)
-            a = p%amp * sin(pi * (t / p%duration))
-        case (PULSE_RECTANGULAR)
-            a = p%amp
-        case (PULSE_RICKER)
-            w = (pi * p%freq * (t - p%t0))**2
-            if (w < 750.0_dp) then
-                a = p%amp * (1.0_dp - 2.0_dp * w) * exp(-w)
-            else
-                a = 0.0_dp
-            end if
-        case default
-            call pulse_at(p, t, a, v, d, c)
-        end select
-    end function pulse_accel
 
 end module seispulse_rocking_sim
