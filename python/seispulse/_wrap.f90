@@ -2,12 +2,16 @@
 !> integer/double/fixed-length character arguments only, `stat` + `errmsg` out.
 !> No numerics here: each routine translates its arguments and calls the library
 !> (style.md section 3: f2py cannot pass derived types, optionals or allocatables).
+!> These sources are the only signatures: f2py reads them at build time (gen_binding.py);
+!> `!f2py intent(hide)` lines hide the sizes f2py takes from the arrays, and .f2py_f2cmap
+!> maps real(dp) to C double (checked by the build and test_binding_kinds.py).
 
 !> Exponential pulse, dimensionless; beta has length 1 or n.
 subroutine sp_exp_pulse(n, tau, nb, beta, full, a, v, d, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_pulses, only: exp_pulse
     implicit none
+    !f2py intent(hide) :: n, nb
     integer, intent(in) :: n, nb, full
     real(dp), intent(in) :: tau(n), beta(nb)
     real(dp), intent(out) :: a(n), v(n), d(n)
@@ -23,6 +27,7 @@ subroutine sp_exp_pulse_peaks(n, beta, full, vg, dg, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_pulses, only: exp_pulse_peaks
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n, full
     real(dp), intent(in) :: beta(n)
     real(dp), intent(out) :: vg(n), dg(n)
@@ -43,6 +48,7 @@ subroutine sp_exp_pulse_impulse_amplitude(n, beta, amp, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_pulses, only: exp_pulse_impulse_amplitude
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: beta(n)
     real(dp), intent(out) :: amp(n)
@@ -63,6 +69,7 @@ subroutine sp_pulse_eval(kind, n, t, np, params, a, v, d, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_pulses, only: pulse_t, pulse_eval, pulse_from_params, PULSE_NPARAM
     implicit none
+    !f2py intent(hide) :: n, np
     integer, intent(in) :: kind, n, np
     real(dp), intent(in) :: t(n), params(np, PULSE_NPARAM)
     real(dp), intent(out) :: a(n), v(n), d(n)
@@ -103,6 +110,7 @@ subroutine sp_yield_time(n, eta, beta, sfac, tau_y, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_sliding_closed, only: yield_time
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: eta(n), beta(n), sfac(n)
     real(dp), intent(out) :: tau_y(n)
@@ -124,6 +132,7 @@ subroutine sp_half_cycle(n, eta, beta, sfac, method, tau_y, tau_m, regime, um, d
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_sliding_closed, only: half_cycle, half_cycle_integrated, half_cycle_t
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n, method
     real(dp), intent(in) :: eta(n), beta(n), sfac(n)
     real(dp), intent(out) :: tau_y(n), tau_m(n), um(n), dugm(n), vm(n)
@@ -158,6 +167,7 @@ subroutine sp_full_cycle(n, eta1, eta2, beta, sfac, static_reverse, method, mode
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_sliding_closed, only: full_cycle, full_cycle_integrated, full_cycle_t
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n, static_reverse, method
     real(dp), intent(in) :: eta1(n), eta2(n), beta(n), sfac(n)
     integer, intent(out) :: mode(n)
@@ -188,6 +198,7 @@ subroutine sp_inclined(n, mu, ag, slope, xi, eta1, eta2, k1, k2, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_sliding_closed, only: inclined_resistances
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: mu(n), ag(n), slope(n), xi(n)
     real(dp), intent(out) :: eta1(n), eta2(n), k1(n), k2(n)
@@ -209,6 +220,7 @@ subroutine sp_eta_critical(n, beta, method, eta_cr, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_sliding_closed, only: eta_critical, eta_critical_regression
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n, method
     real(dp), intent(in) :: beta(n)
     real(dp), intent(out) :: eta_cr(n)
@@ -235,6 +247,8 @@ subroutine sp_limit_form(n, which, eta, out)
     use seispulse_sliding_closed, only: rectangle_half, rectangle_full, triangle_half, &
                                  spike_velocity_ratio, full_cycle_peak_regression
     implicit none
+    !f2py intent(hide) :: n
+    !f2py intent(in,out) :: out
     integer, intent(in) :: n, which
     real(dp), intent(in) :: eta(n)
     real(dp), intent(inout) :: out(n, 5)
@@ -262,6 +276,7 @@ subroutine sp_block(n, mu, ag, td, beta, full, slope, xi, sfac, static_reverse, 
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_sliding_closed, only: block_response, sliding_block_t
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n, full, static_reverse, along_plane
     real(dp), intent(in) :: mu(n), ag(n), td(n), beta(n), slope(n), xi(n), sfac(n), g
     integer, intent(out) :: mode(n)
@@ -292,6 +307,7 @@ subroutine sp_characteristic_length(n, a, b, c, d, ag, vg, dg, td, dc, stat, err
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_sliding_norm, only: characteristic_length
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: a(n), b(n), c(n), d(n), ag(n), vg(n), dg(n), td(n)
     real(dp), intent(out) :: dc(n)
@@ -313,6 +329,7 @@ subroutine sp_basic_lengths(n, ag, vg, dg, td, lengths, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_sliding_norm, only: basic_lengths
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: ag(n), vg(n), dg(n), td(n)
     real(dp), intent(out) :: lengths(n, 6)
@@ -334,6 +351,7 @@ subroutine sp_table_1_2(table, nr, rows, nc, cols, exps, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_sliding_norm, only: table_1_2_exponents
     implicit none
+    !f2py intent(hide) :: nr, nc
     character(len=*), intent(in) :: table
     integer, intent(in) :: nr, nc
     real(dp), intent(in) :: rows(nr), cols(nc)
@@ -359,6 +377,7 @@ subroutine sp_table_1_3(n, beta, full, ratios, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_sliding_norm, only: table_1_3
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n, full
     real(dp), intent(in) :: beta(n)
     real(dp), intent(out) :: ratios(n, 6)
@@ -389,6 +408,7 @@ subroutine sp_stickslip(kind, params, nrec, accel, dt, ay_fwd, ay_rev, sfac, sta
     use seispulse_sliding_sim, only: friction_t, stickslip_result_t, stickslip_pulse, &
                                    stickslip_record
     implicit none
+    !f2py intent(hide) :: nrec, ngrid
     integer, intent(in) :: kind, nrec, static_all, ngrid, nmax
     real(dp), intent(in) :: params(9), accel(nrec), dt, ay_fwd, ay_rev, sfac, tg(ngrid)
     real(dp), intent(out) :: ug(ngrid), wg(ngrid), slides(nmax, 8), summary(4)
@@ -438,6 +458,7 @@ subroutine sp_rocking_summary(n, f, eta, beta, region, out, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_rocking_closed, only: rocking_summary
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: f(n), eta(n), beta(n)
     integer, intent(out) :: region(n)
@@ -460,6 +481,7 @@ subroutine sp_rocking_extremes(n, f, eta, beta, region, psi_max, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_rocking_closed, only: rocking_extremes
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: f(n), eta(n), beta(n)
     integer, intent(out) :: region(n)
@@ -481,6 +503,7 @@ subroutine sp_rocking_response(n, tau, f, eta, beta, psi, dpsi, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_rocking_closed, only: rocking_response
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: tau(n), f(n), eta(n), beta(n)
     real(dp), intent(out) :: psi(n), dpsi(n)
@@ -504,6 +527,7 @@ subroutine sp_rocking_curve(n, which, x, beta, y, stat, errmsg)
     use seispulse_rocking_closed, only: uplift_time, stability_wall, stability_wall_inverse, &
                                  overturn_boundary, overturn_boundary_inverse, s1_s2_boundary
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n, which
     real(dp), intent(in) :: x(n), beta(n)
     real(dp), intent(out) :: y(n)
@@ -541,6 +565,7 @@ subroutine sp_rocking_rect_normalized(n, fbar, eta, out)
     use seispulse_rocking_closed, only: rect_time_of_max_normalized, rect_max_rotation_normalized, &
                                  rect_impact_time_normalized
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: fbar(n), eta(n)
     real(dp), intent(out) :: out(n, 3)
@@ -589,6 +614,7 @@ subroutine sp_rock(kind, params, nrec, accel, dt, blkv, linearized, opts, ngrid,
     use seispulse_pulses, only: pulse_from_params
     use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rock_pulse, rock_record
     implicit none
+    !f2py intent(hide) :: nrec, ngrid
     integer, intent(in) :: kind, nrec, linearized, ngrid, nmax
     real(dp), intent(in) :: params(9), accel(nrec), dt, blkv(4), opts(4), tg(ngrid)
     real(dp), intent(out) :: thg(ngrid), omg(ngrid), impacts(nmax), res(6)
@@ -642,6 +668,7 @@ subroutine sp_overturning_map(alpha, e, kind, params, linearized, nf, freq, na, 
     use seispulse_pulses, only: pulse_from_params
     use seispulse_rocking_sim, only: overturning_map
     implicit none
+    !f2py intent(hide) :: nf, na
     integer, intent(in) :: kind, linearized, nf, na
     real(dp), intent(in) :: alpha, e, params(9), freq(nf), amp(na)
     integer, intent(out) :: classes(na, nf)
@@ -666,6 +693,7 @@ subroutine sp_newmark_rigid(n, accel, dt, mode, ky, ky_up, k_down, k_up, method,
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n, mode, method, nh, nmax
     real(dp), intent(in) :: accel(n), dt, ky, ky_up, k_down, k_up, g
     real(dp), intent(out) :: u_hist(nh), w_hist(nh), slides(nmax, 8), summary(6)
@@ -704,6 +732,7 @@ subroutine sp_newmark_rigid_many(n, accel, dt, mode, nk, ky, ky_up, k_down, k_up
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid
     implicit none
+    !f2py intent(hide) :: n, nk
     integer, intent(in) :: n, mode, nk, method
     real(dp), intent(in) :: accel(n), dt, ky(nk), ky_up(nk), k_down(nk), k_up(nk), g
     real(dp), intent(out) :: summary(nk, 6)

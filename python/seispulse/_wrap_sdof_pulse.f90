@@ -8,6 +8,7 @@ subroutine sp_dynamic_coefficient(n, ratio, gamma, model, beta, beta_cos, stat, 
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_sdof_closed, only: dynamic_coefficient
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n, model
     real(dp), intent(in) :: ratio(n), gamma(n)
     real(dp), intent(out) :: beta(n), beta_cos(n)
@@ -30,6 +31,7 @@ subroutine sp_harmonic_response(n, t, w0, period, ratio, damping, law, transient
     use seispulse_kinds, only: dp
     use seispulse_sdof_closed, only: harmonic_response
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n, law, transient
     real(dp), intent(in) :: t(n), w0, period, ratio, damping
     real(dp), intent(out) :: z(n), v(n), a(n)
@@ -45,6 +47,7 @@ subroutine sp_rect_pulse_response(n, t, w0, t1, period, z, v, a, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_sdof_closed, only: rect_pulse_response
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: t(n), w0, t1, period
     real(dp), intent(out) :: z(n), v(n), a(n)
@@ -60,6 +63,7 @@ subroutine sp_beta_pulse(n, x, variant, beta, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_sdof_closed, only: beta_pulse
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n, variant
     real(dp), intent(in) :: x(n)
     real(dp), intent(out) :: beta(n)
@@ -81,6 +85,7 @@ subroutine sp_impulse_max(n, jw, period, damping, zmax, tmax, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_sdof_closed, only: impulse_max
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: jw(n), period(n), damping(n)
     real(dp), intent(out) :: zmax(n), tmax(n)
@@ -102,6 +107,7 @@ subroutine sp_impulse_response(n, t, jw, period, damping, z, v, a, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_sdof_closed, only: impulse_response
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: t(n), jw, period, damping
     real(dp), intent(out) :: z(n), v(n), a(n)
@@ -117,6 +123,7 @@ subroutine sp_sdof_pulse_response(kind, params, period, damping, n, t, z, v, a, 
     use seispulse_pulses, only: pulse_from_params
     use seispulse_sdof_closed, only: sdof_pulse_response
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: kind, n
     real(dp), intent(in) :: params(9), period, damping, t(n)
     real(dp), intent(out) :: z(n), v(n), a(n)
@@ -150,6 +157,7 @@ subroutine sp_sdof_pulse_spectrum(kind, params, n, periods, damping, sd, sv, sa,
     use seispulse_pulses, only: pulse_from_params
     use seispulse_sdof_closed, only: sdof_pulse_spectrum
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: kind, n
     real(dp), intent(in) :: params(9), periods(n), damping
     real(dp), intent(out) :: sd(n), sv(n), sa(n), tsd(n), tsv(n), tsa(n)

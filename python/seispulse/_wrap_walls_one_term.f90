@@ -30,6 +30,7 @@ subroutine sp_ot_solve(nw, omega_ratio, delta, nu, shape, expo, d_theta, l_over_
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_walls_one_term, only: one_term_t, one_term
     implicit none
+    !f2py intent(hide) :: nw
     integer, intent(in) :: nw, shape
     real(dp), intent(in) :: omega_ratio(nw), delta, nu, expo, d_theta, l_over_h
     complex(dp), intent(out) :: q(nw), m(nw), u_ff0(nw), u0(nw), theta(nw), lam(nw), flex(nw)
@@ -68,6 +69,7 @@ subroutine sp_ot_pressure(omega_ratio, delta, nu, shape, expo, d_theta, l_over_h
     use seispulse_kinds, only: dp
     use seispulse_walls_one_term, only: one_term_pressure
     implicit none
+    !f2py intent(hide) :: ny
     integer, intent(in) :: ny, shape
     real(dp), intent(in) :: omega_ratio, delta, nu, expo, d_theta, l_over_h, y(ny)
     complex(dp), intent(out) :: p(ny)
@@ -84,6 +86,7 @@ subroutine sp_ot_displacement(omega_ratio, delta, nu, shape, expo, d_theta, l_ov
     use seispulse_kinds, only: dp
     use seispulse_walls_one_term, only: one_term_displacement
     implicit none
+    !f2py intent(hide) :: np
     integer, intent(in) :: np, shape
     real(dp), intent(in) :: omega_ratio, delta, nu, expo, d_theta, l_over_h, x(np), y(np)
     complex(dp), intent(out) :: u(np)
@@ -100,6 +103,7 @@ subroutine sp_ot_fundamental(nn, expo, w1, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_walls_one_term, only: power_law_fundamental
     implicit none
+    !f2py intent(hide) :: nn
     integer, intent(in) :: nn
     real(dp), intent(in) :: expo(nn)
     real(dp), intent(out) :: w1(nn)
@@ -121,6 +125,7 @@ subroutine sp_ot_cutoff(nn, expo, wc, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_walls_one_term, only: power_law_cutoff, check_exponent
     implicit none
+    !f2py intent(hide) :: nn
     integer, intent(in) :: nn
     real(dp), intent(in) :: expo(nn)
     real(dp), intent(out) :: wc(nn)
@@ -143,6 +148,7 @@ subroutine sp_ot_winkler(nw, omega_ratio, delta, nu, shape, expo, k, stat, errms
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_walls_one_term, only: winkler_one_term
     implicit none
+    !f2py intent(hide) :: nw
     integer, intent(in) :: nw, shape
     real(dp), intent(in) :: omega_ratio(nw), delta, nu, expo
     complex(dp), intent(out) :: k(nw)
@@ -164,6 +170,7 @@ subroutine sp_ot_dashpot(nw, omega_ratio, nu, shape, expo, c, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_walls_one_term, only: winkler_dashpot
     implicit none
+    !f2py intent(hide) :: nw
     integer, intent(in) :: nw, shape
     real(dp), intent(in) :: omega_ratio(nw), nu, expo
     real(dp), intent(out) :: c(nw)
@@ -185,6 +192,7 @@ subroutine sp_ot_scott(nn, nu, k, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_walls_one_term, only: winkler_scott
     implicit none
+    !f2py intent(hide) :: nn
     integer, intent(in) :: nn
     real(dp), intent(in) :: nu(nn)
     real(dp), intent(out) :: k(nn)
@@ -206,6 +214,7 @@ subroutine sp_ot_vy_spring(mode, nw, omega_ratio, delta, nu, k, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_walls_one_term, only: winkler_vy
     implicit none
+    !f2py intent(hide) :: nw
     integer, intent(in) :: mode, nw
     real(dp), intent(in) :: omega_ratio(nw), delta, nu
     complex(dp), intent(out) :: k(nw)

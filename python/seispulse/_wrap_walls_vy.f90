@@ -8,6 +8,7 @@ subroutine sp_wall_psi(n, nu, psi_e, psi_o, psi_sigma, psi_v, psi_t, stat, errms
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_walls_common, only: wall_psi_t, wall_psi
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: nu(n)
     real(dp), intent(out) :: psi_e(n), psi_o(n), psi_sigma(n), psi_v(n), psi_t(n)
@@ -54,6 +55,7 @@ subroutine sp_vy_rigid(n, omega_ratio, delta, nu, tol, q, m, h_ratio, nterms, st
     use seispulse_format, only: int_str
     use seispulse_walls_vy, only: vy_rigid
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: omega_ratio(n), delta(n), nu(n), tol
     complex(dp), intent(out) :: q(n), m(n)
@@ -88,6 +90,7 @@ subroutine sp_vy_rigid_sweep(n, omega_ratios, delta, nu, tol, q, m, h_ratio, nte
     use seispulse_kinds, only: dp
     use seispulse_walls_vy, only: vy_rigid_sweep
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: omega_ratios(n), delta, nu, tol
     complex(dp), intent(out) :: q(n), m(n)
@@ -104,6 +107,7 @@ subroutine sp_vy_pressure(omega_ratio, delta, nu, n, y, tol, p, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_walls_vy, only: vy_pressure
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: omega_ratio, delta, nu, y(n), tol
     complex(dp), intent(out) :: p(n)
@@ -118,6 +122,7 @@ subroutine sp_vy_fields(omega_ratio, delta, nu, n, x, y, tol, u, v, sigma_x, tau
     use seispulse_kinds, only: dp
     use seispulse_walls_vy, only: vy_fields
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: omega_ratio, delta, nu, x(n), y(n), tol
     complex(dp), intent(out) :: u(n), v(n), sigma_x(n), tau(n)
