@@ -2,6 +2,7 @@
 """Build-time generator of the f2py layer (run by python/seispulse/meson.build).
 
     gen_binding.py f2py --outdir DIR --f2cmap FILE --src LIBSRC... --wrap WRAP.f90...
+    gen_binding.py codes --out FILE.py --src LIBSRC...
 
 The wrapper sources are the only hand-written signatures: f2py reads them (with their
 inline ``!f2py`` directives) into ``DIR/_seispulse.pyf``; module blocks (helpers of the
@@ -14,6 +15,10 @@ Then the kinds are checked: a kind f2py does not map becomes C float and gives w
 numbers without any error, so any ``float`` argument in the generated C fails the build.
 
 f2py's output goes to ``DIR/_seispulse_f2py.log``; it is printed only when a step fails.
+
+``codes`` writes the library's named integer constants (status codes, regions, modes,
+outcomes, method and format codes: every upper-case ``integer, parameter``) as a Python
+module, so that the Python layer never retypes a Fortran code.
 """
 
 import argparse
@@ -45,9 +50,10 @@ def fortran_statements(path):
     return statements
 
 
-def integer_parameters(paths):
+def integer_parameters(paths, upper_only=False):
     """{NAME: value} of every `integer, parameter :: NAME = <integer literal>` in paths
-    (names upper-case as the library writes them; None for a name given two values)."""
+    (names upper-case; None for a name given two values). upper_only: only the names the
+    library writes in upper case (its named codes; lower-case ones are local limits)."""
     found = {}
     for path in paths:
         for stmt in fortran_statements(path):
@@ -56,7 +62,7 @@ def integer_parameters(paths):
                 continue
             for item in m.group(1).split(","):
                 a = ASSIGN_RE.match(item)
-                if a:
+                if a and (a.group(1) == a.group(1).upper() or not upper_only):
                     name, value = a.group(1).upper(), int(a.group(2))
                     found[name] = value if found.get(name, value) == value else None
     return found
@@ -164,6 +170,18 @@ def cmd_f2py(args):
     return 0
 
 
+def cmd_codes(args):
+    params = integer_parameters(args.src, upper_only=True)
+    lines = ['"""Named integer constants of the Fortran library (status codes, regions, modes,',
+             'outcomes, method and format codes), read from its sources at build time by',
+             'gen_binding.py: generated, do not edit. Constants defined twice with different',
+             'values are left out."""', ""]
+    lines += [f"{name} = {value}" for name, value in sorted(params.items())
+              if value is not None]
+    Path(args.out).write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return 0
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     sub = parser.add_subparsers(dest="cmd", required=True)
@@ -172,8 +190,11 @@ def main():
     p.add_argument("--f2cmap", required=True)
     p.add_argument("--src", nargs="+", default=[], help="library sources (parameters)")
     p.add_argument("--wrap", nargs="+", required=True, help="thin-layer sources")
+    p = sub.add_parser("codes", help="the library's named integer constants as Python")
+    p.add_argument("--out", required=True)
+    p.add_argument("--src", nargs="+", required=True, help="library sources")
     args = parser.parse_args()
-    return {"f2py": cmd_f2py}[args.cmd](args)
+    return {"f2py": cmd_f2py, "codes": cmd_codes}[args.cmd](args)
 
 
 if __name__ == "__main__":

@@ -21,6 +21,7 @@ from collections import namedtuple
 import numpy as np
 
 from . import _core
+from . import _fortran_codes as _f
 from ._seispulse import sp_newmark_incline, sp_newmark_rigid, sp_newmark_rigid_many
 from .errors import InvalidInputError
 from .sliding import Slide
@@ -29,9 +30,11 @@ __all__ = ["MODES", "METHODS", "STANDARD_GRAVITY", "Incline", "Rigid", "Slide", 
            "rigid"]
 
 #: Sliding modes: one way downslope, two ways alike, two ways with ky_up.
-MODES = ("down", "both", "asym")
+_MODE_CODES = {"down": _f.NEWMARK_DOWN, "both": _f.NEWMARK_BOTH, "asym": _f.NEWMARK_ASYM}
+MODES = tuple(_MODE_CODES)
 #: Integration rules.
-METHODS = ("exact", "slammer")
+_METHOD_CODES = {"exact": _f.NEWMARK_EXACT, "slammer": _f.NEWMARK_SLAMMER}
+METHODS = tuple(_METHOD_CODES)
 #: Standard gravity (m/s^2), the default g.
 STANDARD_GRAVITY = 9.80665
 
@@ -136,14 +139,14 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
         raise InvalidInputError(f"ky_up: only for mode='asym' (mode is {mode!r})")
     shape, arr = _core.broadcast(ky=ky, ky_up=np.inf if ky_up is None else ky_up,
                                  k_down=k_down, k_up=k_up)
-    mode_code = MODES.index(mode) + 1
-    method_code = METHODS.index(method) + 1
+    mode_code = _MODE_CODES[mode]
+    method_code = _METHOD_CODES[method]
     if shape != ():
         if history or intervals:
             raise InvalidInputError("history, intervals: only for a single ky")
         flat = [_core.flat(arr[k], shape) for k in ("ky", "ky_up", "k_down", "k_up")]
         summary, stat, msg = sp_newmark_rigid_many(rec, step, mode_code, *flat, method_code, g)
-        _core.raise_record_status(stat, msg)
+        _core.raise_for_status(stat, msg, indexed=("accel",))
         cols = [summary[:, j].reshape(shape) for j in range(6)]
         return Rigid(*cols, None, None, None, None)
     scalars = [float(arr[k]) for k in ("ky", "ky_up", "k_down", "k_up")]
@@ -152,7 +155,7 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
     while True:
         u, w, slides, nslides, summary, stat, msg = sp_newmark_rigid(
             rec, step, mode_code, *scalars, method_code, g, nh, nmax)
-        _core.raise_record_status(stat, msg)
+        _core.raise_for_status(stat, msg, indexed=("accel",))
         if not intervals or nslides <= nmax:
             break
         nmax = nslides

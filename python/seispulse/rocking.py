@@ -22,6 +22,7 @@ from collections import namedtuple
 import numpy as np
 
 from . import _core
+from . import _fortran_codes as _f
 from ._seispulse import (sp_overturning_map, sp_rock, sp_rocking_block, sp_rocking_curve,
                          sp_rocking_extremes, sp_rocking_rect_normalized, sp_rocking_response,
                          sp_rocking_summary)
@@ -37,7 +38,8 @@ __all__ = ["REGIONS", "Response", "Summary", "uplift_time", "response", "summary
            "plot_overturning_map"]
 
 #: Regions of the (f, eta) plane, by code.
-REGIONS = ("no_rocking", "O1", "O2", "O3", "S1", "S2")
+REGIONS = _core.by_code({_f.ROCK_NONE: "no_rocking", _f.ROCK_O1: "O1", _f.ROCK_O2: "O2",
+                         _f.ROCK_O3: "O3", _f.ROCK_S1: "S1", _f.ROCK_S2: "S2"})
 
 Response = namedtuple("Response", ["psi", "dpsi"])
 Response.__doc__ = """First excursion: psi = theta/alpha and dpsi = (dtheta/dt)/(alpha p)."""
@@ -180,8 +182,11 @@ p = sqrt(m g R / I_o) (rad/s), restitution e (angular velocity ratio at an impac
 gravity g (m/s^2) and R, the distance from a base corner to the centre of mass (m)."""
 
 #: Outcomes of :func:`simulate`, by code.
-OUTCOMES = ("rest", "no_uplift", "overturn_no_impact", "overturn_one_impact",
-            "overturn_many_impacts", "time_limit")
+OUTCOMES = _core.by_code({_f.ROCK_RUN_REST: "rest", _f.ROCK_RUN_NO_UPLIFT: "no_uplift",
+                          _f.ROCK_RUN_OVERTURN_NO_IMPACT: "overturn_no_impact",
+                          _f.ROCK_RUN_OVERTURN_ONE_IMPACT: "overturn_one_impact",
+                          _f.ROCK_RUN_OVERTURN_MANY: "overturn_many_impacts",
+                          _f.ROCK_RUN_TIME_LIMIT: "time_limit"})
 
 #: Classes of :func:`overturning_map` cells, by value.
 MAP_CLASSES = ("safe", "overturns without impact", "overturns after one impact",

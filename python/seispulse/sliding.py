@@ -19,6 +19,7 @@ from collections import namedtuple
 import numpy as np
 
 from . import _core
+from . import _fortran_codes as _f
 from ._seispulse import (sp_basic_lengths, sp_block, sp_characteristic_length,
                          sp_eta_critical, sp_full_cycle, sp_half_cycle, sp_inclined,
                          sp_limit_form, sp_stickslip, sp_table_1_2, sp_table_1_3,
@@ -34,10 +35,14 @@ __all__ = ["REGIMES", "MODES", "HalfCycle", "FullCycle", "Resistances", "BlockRe
 
 #: Regimes of a half-cycle slide, by code: no sliding, stop during the pulse
 #: (tau_m <= 1), stop after it.
-REGIMES = ("none", "forced", "free")
+REGIMES = _core.by_code({_f.SLIDING_REGIME_NONE: "none", _f.SLIDING_REGIME_FORCED: "forced",
+                         _f.SLIDING_REGIME_FREE: "free"})
 
 #: Full-cycle modes, by code (sliding.md sections 5 and 7).
-MODES = ("no_sliding", "unilateral", "stick", "slip", "stuck", "reverse_only")
+MODES = _core.by_code({_f.SLIDING_MODE_NO_SLIDING: "no_sliding",
+                       _f.SLIDING_MODE_UNILATERAL: "unilateral", _f.SLIDING_MODE_STICK: "stick",
+                       _f.SLIDING_MODE_SLIP: "slip", _f.SLIDING_MODE_STUCK: "stuck",
+                       _f.SLIDING_MODE_REVERSE_ONLY: "reverse_only"})
 
 HalfCycle = namedtuple("HalfCycle", ["tau_y", "tau_m", "regime", "um", "dugm", "vm"])
 HalfCycle.__doc__ = """Half-cycle response: onset tau_y and stop tau_m (t/t_d; NaN
@@ -114,7 +119,7 @@ def half_cycle(eta, beta, static_factor=1.0, method="closed"):
     HalfCycle
         tau_y, tau_m, regime, um, dugm, vm (see :class:`HalfCycle`).
     """
-    code = _METHODS.index(_core.check_choice("method", method, _METHODS))
+    code = int(_core.check_choice("method", method, _METHODS) == "integrator")
     shape, arr = _core.broadcast(eta=eta, beta=beta, static_factor=static_factor)
     tau_y, tau_m, regime, um, dugm, vm, stat, msg = sp_half_cycle(*_flat_all(shape, arr), code)
     _core.raise_for_status(stat, msg)
@@ -149,7 +154,7 @@ def full_cycle(eta1, beta, eta2=None, static_factor=1.0, static_reverse=False,
     if eta2 is None:
         eta2 = eta1
     static_reverse = _core.check_bool("static_reverse", static_reverse)
-    code = _METHODS.index(_core.check_choice("method", method, _METHODS))
+    code = int(_core.check_choice("method", method, _METHODS) == "integrator")
     shape, arr = _core.broadcast(eta1=eta1, eta2=eta2, beta=beta, static_factor=static_factor)
     mode, out, stat, msg = sp_full_cycle(*_flat_all(shape, arr), int(static_reverse), code)
     _core.raise_for_status(stat, msg)
