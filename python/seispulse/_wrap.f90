@@ -5,6 +5,8 @@
 !> These sources are the only signatures: f2py reads them at build time (gen_binding.py);
 !> `!f2py intent(hide)` lines hide the sizes f2py takes from the arrays, and .f2py_f2cmap
 !> maps real(dp) to C double (checked by the build and test_binding_kinds.py).
+!> Element-by-element loops over a scalar routine are not written here: one line each in
+!> _wrap_loops.txt, from which gen_binding.py writes _wrap_loops.f90 at build time.
 
 !> Exponential pulse, dimensionless; beta has length 1 or n.
 subroutine sp_exp_pulse(n, tau, nb, beta, full, a, v, d, stat, errmsg)
@@ -20,48 +22,6 @@ subroutine sp_exp_pulse(n, tau, nb, beta, full, a, v, d, stat, errmsg)
     errmsg = ''
     call exp_pulse(tau, beta, full /= 0, a, v, d, stat, errmsg)
 end subroutine sp_exp_pulse
-
-!> Peak velocity and displacement of the exponential pulse, per beta.
-subroutine sp_exp_pulse_peaks(n, beta, full, vg, dg, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_pulses, only: exp_pulse_peaks
-    implicit none
-    !f2py intent(hide) :: n
-    integer, intent(in) :: n, full
-    real(dp), intent(in) :: beta(n)
-    real(dp), intent(out) :: vg(n), dg(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call exp_pulse_peaks(beta(i), full /= 0, vg(i), dg(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_exp_pulse_peaks
-
-!> Unit-impulse amplitude of the exponential pulse, per beta.
-subroutine sp_exp_pulse_impulse_amplitude(n, beta, amp, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_pulses, only: exp_pulse_impulse_amplitude
-    implicit none
-    !f2py intent(hide) :: n
-    integer, intent(in) :: n
-    real(dp), intent(in) :: beta(n)
-    real(dp), intent(out) :: amp(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call exp_pulse_impulse_amplitude(beta(i), amp(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_exp_pulse_impulse_amplitude
 
 !> Any pulse in SI units; params(np, 9) packed as in pulse_from_params, np = 1 or n.
 subroutine sp_pulse_eval(kind, n, t, np, params, a, v, d, stat, errmsg)
@@ -103,27 +63,6 @@ end subroutine sp_pulse_kind
 ! ---------------------------------------------------------------------------------
 ! Sliding block (seispulse_sliding_closed); every array has length n (broadcast in Python)
 ! ---------------------------------------------------------------------------------
-
-!> Onset time (Eq. 1.12, 1.34).
-subroutine sp_yield_time(n, eta, beta, sfac, tau_y, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding_closed, only: yield_time
-    implicit none
-    !f2py intent(hide) :: n
-    integer, intent(in) :: n
-    real(dp), intent(in) :: eta(n), beta(n), sfac(n)
-    real(dp), intent(out) :: tau_y(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call yield_time(eta(i), beta(i), sfac(i), tau_y(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_yield_time
 
 !> Half-cycle response; regime codes as REGIME_*; method 0 closed forms, 1 integrator.
 subroutine sp_half_cycle(n, eta, beta, sfac, method, tau_y, tau_m, regime, um, dugm, vm, &
@@ -191,28 +130,6 @@ subroutine sp_full_cycle(n, eta1, eta2, beta, sfac, static_reverse, method, mode
         out(i, :) = [r%tau_y1, r%tau_m1, r%um1, r%tau_y2, r%tau_m2, r%um2, r%ures, r%vm1, r%vm2]
     end do
 end subroutine sp_full_cycle
-
-!> Resistances and along-plane factors on an incline (Eq. 1.31).
-subroutine sp_inclined(n, mu, ag, slope, xi, eta1, eta2, k1, k2, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding_closed, only: inclined_resistances
-    implicit none
-    !f2py intent(hide) :: n
-    integer, intent(in) :: n
-    real(dp), intent(in) :: mu(n), ag(n), slope(n), xi(n)
-    real(dp), intent(out) :: eta1(n), eta2(n), k1(n), k2(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call inclined_resistances(mu(i), ag(i), slope(i), xi(i), eta1(i), eta2(i), k1(i), &
-                                  k2(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_inclined
 
 !> Stick/slip boundary: exact (method 0) or Eq. 1.22 (method 1).
 subroutine sp_eta_critical(n, beta, method, eta_cr, stat, errmsg)
@@ -301,49 +218,6 @@ end subroutine sp_block
 ! Normalization of sliding displacements (seispulse_sliding_norm)
 ! ---------------------------------------------------------------------------------
 
-!> D_c = A^a V^b D^c t^d per element.
-subroutine sp_characteristic_length(n, a, b, c, d, ag, vg, dg, td, dc, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding_norm, only: characteristic_length
-    implicit none
-    !f2py intent(hide) :: n
-    integer, intent(in) :: n
-    real(dp), intent(in) :: a(n), b(n), c(n), d(n), ag(n), vg(n), dg(n), td(n)
-    real(dp), intent(out) :: dc(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call characteristic_length(a(i), b(i), c(i), d(i), ag(i), vg(i), dg(i), td(i), dc(i), &
-                                   stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_characteristic_length
-
-!> The six lengths of Eq. 1.28 per element.
-subroutine sp_basic_lengths(n, ag, vg, dg, td, lengths, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding_norm, only: basic_lengths
-    implicit none
-    !f2py intent(hide) :: n
-    integer, intent(in) :: n
-    real(dp), intent(in) :: ag(n), vg(n), dg(n), td(n)
-    real(dp), intent(out) :: lengths(n, 6)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call basic_lengths(ag(i), vg(i), dg(i), td(i), lengths(i, :), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_basic_lengths
-
 !> Exponents (a, b, c, d) of every cell of Table 1.2 `table` for the given row and
 !> column values.
 subroutine sp_table_1_2(table, nr, rows, nc, cols, exps, stat, errmsg)
@@ -370,27 +244,6 @@ subroutine sp_table_1_2(table, nr, rows, nc, cols, exps, stat, errmsg)
         end do
     end do
 end subroutine sp_table_1_2
-
-!> Table 1.3 per beta.
-subroutine sp_table_1_3(n, beta, full, ratios, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding_norm, only: table_1_3
-    implicit none
-    !f2py intent(hide) :: n
-    integer, intent(in) :: n, full
-    real(dp), intent(in) :: beta(n)
-    real(dp), intent(out) :: ratios(n, 6)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call table_1_3(beta(i), full /= 0, ratios(i, :), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_table_1_3
 
 ! ---------------------------------------------------------------------------------
 ! Stick-slip integrator (seispulse_sliding_sim)
@@ -451,72 +304,6 @@ end subroutine sp_stickslip
 ! ---------------------------------------------------------------------------------
 ! Rocking blocks: linearized closed forms (seispulse_rocking_closed)
 ! ---------------------------------------------------------------------------------
-
-!> Everything of the first excursion per case: region, tau_up, tau_c, tau_m, psi_max, tau_i.
-subroutine sp_rocking_summary(n, f, eta, beta, region, out, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_rocking_closed, only: rocking_summary
-    implicit none
-    !f2py intent(hide) :: n
-    integer, intent(in) :: n
-    real(dp), intent(in) :: f(n), eta(n), beta(n)
-    integer, intent(out) :: region(n)
-    real(dp), intent(out) :: out(n, 5)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call rocking_summary(f(i), eta(i), beta(i), region(i), out(i, 1), out(i, 2), out(i, 3), &
-                             out(i, 4), out(i, 5), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_rocking_summary
-
-!> Region and theta_max/alpha per case (the fast path of classify and max_rotation).
-subroutine sp_rocking_extremes(n, f, eta, beta, region, psi_max, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_rocking_closed, only: rocking_extremes
-    implicit none
-    !f2py intent(hide) :: n
-    integer, intent(in) :: n
-    real(dp), intent(in) :: f(n), eta(n), beta(n)
-    integer, intent(out) :: region(n)
-    real(dp), intent(out) :: psi_max(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call rocking_extremes(f(i), eta(i), beta(i), region(i), psi_max(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_rocking_extremes
-
-!> psi and dpsi of the first excursion at the times tau (one f, eta, beta per point).
-subroutine sp_rocking_response(n, tau, f, eta, beta, psi, dpsi, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_rocking_closed, only: rocking_response
-    implicit none
-    !f2py intent(hide) :: n
-    integer, intent(in) :: n
-    real(dp), intent(in) :: tau(n), f(n), eta(n), beta(n)
-    real(dp), intent(out) :: psi(n), dpsi(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call rocking_response(tau(i), f(i), eta(i), beta(i), psi(i), dpsi(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_rocking_response
 
 !> Boundaries in the (f, eta) plane and their inverses, per element. which: 1 uplift time
 !> (x = eta), 2 stability wall (x = f), 3 its inverse (x = eta), 4 overturn boundary at the

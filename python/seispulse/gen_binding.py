@@ -3,6 +3,7 @@
 
     gen_binding.py f2py --outdir DIR --f2cmap FILE --src LIBSRC... --wrap WRAP.f90...
     gen_binding.py codes --out FILE.py --src LIBSRC...
+    gen_binding.py loops --spec _wrap_loops.txt --out _wrap_loops.f90
 
 The wrapper sources are the only hand-written signatures: f2py reads them (with their
 inline ``!f2py`` directives) into ``DIR/_seispulse.pyf``; module blocks (helpers of the
@@ -19,6 +20,9 @@ f2py's output goes to ``DIR/_seispulse_f2py.log``; it is printed only when a ste
 ``codes`` writes the library's named integer constants (status codes, regions, modes,
 outcomes, method and format codes: every upper-case ``integer, parameter``) as a Python
 module, so that the Python layer never retypes a Fortran code.
+
+``loops`` writes the element-by-element wrappers (a loop over arrays calling a scalar
+routine) from their one-line descriptions in _wrap_loops.txt (format described there).
 """
 
 import argparse
@@ -182,6 +186,106 @@ def cmd_codes(args):
     return 0
 
 
+LOOP_HEAD_RE = re.compile(r"^(sp_\w+)\((.*)\)$")
+LOOP_CALL_RE = re.compile(r"^(\w+):\s*(\w+)\((.*)\)$", re.S)
+LOOP_ARG_RE = re.compile(r"^(>?)(\w+)(?:\((\d+)\))?(?::(int|real|complex))?$")
+TYPES = {"int": "integer", "real": "real(dp)", "complex": "complex(dp)"}
+ZERO = {"int": "0", "real": "0.0_dp", "complex": "(0.0_dp, 0.0_dp)"}
+
+
+def loop_entries(text):
+    """(doc lines, head, call) of each entry of a _wrap_loops.txt text."""
+    entries, doc, lines = [], [], []
+    for raw in text.splitlines() + [""]:
+        if raw.startswith("#"):
+            continue
+        if raw.startswith("!>"):
+            doc.append(raw)
+        elif raw.strip():
+            lines.append(raw.strip())
+        elif lines:
+            if len(lines) < 2:
+                raise StepFailed(f"loops: no call line after {lines[0]!r}")
+            entries.append((doc, lines[0], " ".join(lines[1:])))
+            doc, lines = [], []
+    return entries
+
+
+def wrap_line(text, indent, width=100):
+    """`text` broken after commas into Fortran continuation lines of at most `width`."""
+    out, line = [], indent + text
+    while len(line) > width:
+        cut = line.rfind(", ", 0, width - 1)
+        out.append(line[:cut + 1] + " &")
+        line = " " * (line.index("(") + 1) + line[cut + 2:]
+    return "\n".join(out + [line])
+
+
+def loop_routine(doc, head, call):
+    """The Fortran of one element-by-element wrapper."""
+    m, c = LOOP_HEAD_RE.match(head), LOOP_CALL_RE.match(call)
+    if not m or not c:
+        raise StepFailed(f"loops: cannot read {head!r} / {call!r}")
+    name, module, routine = m.group(1), c.group(1), c.group(2)
+    args, decls, zero, arrays = [], [], [], {}
+    for token in (t.strip() for t in m.group(2).split(",")):
+        a = LOOP_ARG_RE.match(token)
+        if not a:
+            raise StepFailed(f"loops: {name}: cannot read argument {token!r}")
+        out, arg, cols, kind = a.group(1) == ">", a.group(2), a.group(3), a.group(4) or "real"
+        args.append(arg)
+        if not out and a.group(4):                          # scalar input
+            decls.append(f"{TYPES[kind]}, intent(in) :: {arg}")
+            continue
+        dims = f"n, {cols}" if cols else "n"
+        decls.append(f"{TYPES[kind]}, intent({'out' if out else 'in'}) :: {arg}({dims})")
+        arrays[arg] = cols
+        if out:
+            zero.append(f"{arg} = {ZERO[kind]}")
+
+    def element(w):
+        arg, sub = w.group(1), w.group(2)
+        if arg not in arrays:
+            return w.group(0)
+        if sub:
+            return f"{arg}(i, {sub})"
+        return f"{arg}(i, :)" if arrays[arg] else f"{arg}(i)"
+    actual = re.sub(r"\b([a-z_]\w*)\b(?:\((\d+)\))?", element, c.group(3))
+    lines = doc + [wrap_line(f"subroutine {name}(n, {', '.join(args)}, stat, errmsg)", "")]
+    lines += ["    use seispulse_kinds, only: dp",
+              "    use seispulse_errors, only: SEISPULSE_SUCCESS",
+              f"    use {module}, only: {routine}",
+              "    implicit none",
+              "    !f2py intent(hide) :: n",
+              "    integer, intent(in) :: n"]
+    lines += ["    " + d for d in decls]
+    lines += ["    integer, intent(out) :: stat",
+              "    character(len=256), intent(out) :: errmsg",
+              "    integer :: i",
+              "    errmsg = ''",
+              "    stat = SEISPULSE_SUCCESS"]
+    lines += ["    " + z for z in zero]
+    lines += ["    do i = 1, n",
+              wrap_line(f"call {routine}({actual})", " " * 8),
+              "        if (stat /= SEISPULSE_SUCCESS) return",
+              "    end do",
+              f"end subroutine {name}"]
+    return "\n".join(lines)
+
+
+def cmd_loops(args):
+    try:
+        entries = loop_entries(Path(args.spec).read_text(encoding="utf-8"))
+        body = "\n\n".join(loop_routine(*entry) for entry in entries)
+    except StepFailed as exc:
+        sys.stderr.write(f"gen_binding.py loops: {exc}\n")
+        return 1
+    header = ("! Element-by-element wrappers of the f2py layer, generated by gen_binding.py from\n"
+              f"! {Path(args.spec).name}: do not edit.\n\n")
+    Path(args.out).write_text(header + body + "\n", encoding="utf-8")
+    return 0
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     sub = parser.add_subparsers(dest="cmd", required=True)
@@ -193,8 +297,11 @@ def main():
     p = sub.add_parser("codes", help="the library's named integer constants as Python")
     p.add_argument("--out", required=True)
     p.add_argument("--src", nargs="+", required=True, help="library sources")
+    p = sub.add_parser("loops", help="the element-by-element wrappers from their spec")
+    p.add_argument("--spec", required=True)
+    p.add_argument("--out", required=True)
     args = parser.parse_args()
-    return {"f2py": cmd_f2py, "codes": cmd_codes}[args.cmd](args)
+    return {"f2py": cmd_f2py, "codes": cmd_codes, "loops": cmd_loops}[args.cmd](args)
 
 
 if __name__ == "__main__":

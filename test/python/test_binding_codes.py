@@ -43,3 +43,21 @@ def test_library_codes_reach_python():
     assert rocking.OUTCOMES[_fortran_codes.ROCK_RUN_TIME_LIMIT] == "time_limit"
     assert sliding.MODES[_fortran_codes.SLIDING_MODE_REVERSE_ONLY] == "reverse_only"
     assert records.FORMATS == ("auto", "at2", "slammer", "column", "time_accel")
+
+
+def test_loop_wrapper_from_its_description(gen):
+    spec = ("!> doc\n"
+            "sp_demo(x, flag:int, s:real, >y, >k:int, >z(3))\n"
+            "    some_module: demo(x, flag /= 0, s, y, k, z(2), z, stat, errmsg)\n")
+    (entry,) = gen.loop_entries(spec)
+    text = gen.loop_routine(*entry)
+    assert text.splitlines()[:2] == ["!> doc",
+                                     "subroutine sp_demo(n, x, flag, s, y, k, z, stat, errmsg)"]
+    for line in ("    real(dp), intent(in) :: x(n)", "    integer, intent(in) :: flag",
+                 "    real(dp), intent(in) :: s", "    real(dp), intent(out) :: y(n)",
+                 "    integer, intent(out) :: k(n)", "    real(dp), intent(out) :: z(n, 3)",
+                 "    !f2py intent(hide) :: n", "    y = 0.0_dp", "    k = 0",
+                 "        call demo(x(i), flag /= 0, s, y(i), k(i), z(i, 2), z(i, :), stat, errmsg)",
+                 "        if (stat /= SEISPULSE_SUCCESS) return"):
+        assert line in text.splitlines()
+    assert max(map(len, text.splitlines())) <= 100
