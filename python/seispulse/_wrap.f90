@@ -251,10 +251,11 @@ end subroutine sp_table_1_2
 
 !> One run under a pulse (kind > 0, params packed as in pulse_from_params) or a record
 !> (kind = 0: accel(nrec), dt). slides(nmax, 8) = direction, t_start, t_stop, u_start,
-!> u_stop, w_peak, t_peak, from_slip for the first min(nslides, nmax) slides; summary =
-!> u_final, u_max, u_min, t_end; u, w at the times tg when ngrid > 0.
+!> u_stop, w_peak, t_peak, from_slip for the first min(nslides, nmax) slides; u, w at the
+!> times tg when ngrid > 0.
 subroutine sp_stickslip(kind, params, nrec, accel, dt, ay_fwd, ay_rev, sfac, static_all, &
-                        ngrid, tg, ug, wg, nmax, slides, nslides, summary, stat, errmsg)
+                        ngrid, tg, ug, wg, nmax, slides, nslides, u_final, u_max, u_min, t_end, &
+                        stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_pulses, only: pulse_from_params
@@ -264,7 +265,8 @@ subroutine sp_stickslip(kind, params, nrec, accel, dt, ay_fwd, ay_rev, sfac, sta
     !f2py intent(hide) :: nrec, ngrid
     integer, intent(in) :: kind, nrec, static_all, ngrid, nmax
     real(dp), intent(in) :: params(9), accel(nrec), dt, ay_fwd, ay_rev, sfac, tg(ngrid)
-    real(dp), intent(out) :: ug(ngrid), wg(ngrid), slides(nmax, 8), summary(4)
+    real(dp), intent(out) :: ug(ngrid), wg(ngrid), slides(nmax, 8)
+    real(dp), intent(out) :: u_final, u_max, u_min, t_end
     integer, intent(out) :: nslides, stat
     character(len=256), intent(out) :: errmsg
     type(friction_t) :: fr
@@ -272,7 +274,10 @@ subroutine sp_stickslip(kind, params, nrec, accel, dt, ay_fwd, ay_rev, sfac, sta
     integer :: i
     errmsg = ''
     slides = 0.0_dp
-    summary = 0.0_dp
+    u_final = 0.0_dp
+    u_max = 0.0_dp
+    u_min = 0.0_dp
+    t_end = 0.0_dp
     ug = 0.0_dp
     wg = 0.0_dp
     nslides = 0
@@ -298,7 +303,10 @@ subroutine sp_stickslip(kind, params, nrec, accel, dt, ay_fwd, ay_rev, sfac, sta
                             s%w_peak, s%t_peak, merge(1.0_dp, 0.0_dp, s%from_slip)]
         end associate
     end do
-    summary = [res%u_final, res%u_max, res%u_min, res%t_end]
+    u_final = res%u_final
+    u_max = res%u_max
+    u_min = res%u_min
+    t_end = res%t_end
 end subroutine sp_stickslip
 
 ! ---------------------------------------------------------------------------------
@@ -366,86 +374,94 @@ end subroutine sp_rocking_rect_normalized
 ! ---------------------------------------------------------------------------------
 
 !> Block properties: which = 1 rectangle (x = b, y = h), 2 symmetric body (x = R,
-!> y = alpha, z = I_o/(m R^2)); out = alpha, p, e, R.
-subroutine sp_rocking_block(which, x, y, z, g, out, stat, errmsg)
+!> y = alpha, z = I_o/(m R^2)).
+subroutine sp_rocking_block(which, x, y, z, g, alpha, p, e, r, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_rocking_sim, only: rocking_block_t, rectangular_block, symmetric_block
     implicit none
     integer, intent(in) :: which
     real(dp), intent(in) :: x, y, z, g
-    real(dp), intent(out) :: out(4)
+    real(dp), intent(out) :: alpha, p, e, r
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg
     type(rocking_block_t) :: blk
     errmsg = ''
-    out = 0.0_dp
     if (which == 1) then
         call rectangular_block(x, y, g, blk, stat, errmsg)
-        out(4) = hypot(x, y)
+        r = hypot(x, y)
     else
         call symmetric_block(x, y, z, g, blk, stat, errmsg)
-        out(4) = x
+        r = x
     end if
-    out(1:3) = [blk%alpha, blk%p, blk%e]
+    alpha = blk%alpha
+    p = blk%p
+    e = blk%e
 end subroutine sp_rocking_block
 
 !> One run under a pulse (kind > 0, params packed as in pulse_from_params) or a record
-!> (kind = 0: accel(nrec), dt). opts = t_max (<= 0: none), theta0, omega0, rtol (<= 0:
-!> the default).
-!> res = t_uplift, t_overturn, theta_max, theta_min, t_end, n_steps; impacts: the first
-!> min(n_imp, nmax) impact times.
-subroutine sp_rock(kind, params, nrec, accel, dt, blkv, linearized, opts, ngrid, tg, thg, omg, &
-                   nmax, impacts, n_imp, outcome, res, stat, errmsg)
+!> (kind = 0: accel(nrec), dt); the block is alpha, p, e, g; t_max only when has_t_max /= 0.
+!> impacts: the first min(n_imp, nmax) impact times.
+subroutine sp_rock(kind, params, nrec, accel, dt, alpha, p, e, g, linearized, has_t_max, t_max, &
+                   theta0, omega0, rtol, ngrid, tg, thg, omg, nmax, impacts, n_imp, outcome, &
+                   t_uplift, t_overturn, theta_max, theta_min, t_end, n_steps, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_pulses, only: pulse_from_params
     use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rock_pulse, rock_record
     implicit none
     !f2py intent(hide) :: nrec, ngrid
-    integer, intent(in) :: kind, nrec, linearized, ngrid, nmax
-    real(dp), intent(in) :: params(9), accel(nrec), dt, blkv(4), opts(4), tg(ngrid)
-    real(dp), intent(out) :: thg(ngrid), omg(ngrid), impacts(nmax), res(6)
-    integer, intent(out) :: n_imp, outcome, stat
+    integer, intent(in) :: kind, nrec, linearized, has_t_max, ngrid, nmax
+    real(dp), intent(in) :: params(9), accel(nrec), dt, alpha, p, e, g, t_max, theta0, omega0, &
+                            rtol, tg(ngrid)
+    real(dp), intent(out) :: thg(ngrid), omg(ngrid), impacts(nmax)
+    real(dp), intent(out) :: t_uplift, t_overturn, theta_max, theta_min, t_end
+    integer, intent(out) :: n_imp, outcome, n_steps, stat
     character(len=256), intent(out) :: errmsg
     type(rocking_block_t) :: blk
     type(rocking_run_t) :: run
-    real(dp) :: t_max, rtol
+    real(dp) :: t_lim
     errmsg = ''
     thg = 0.0_dp
     omg = 0.0_dp
     impacts = 0.0_dp
-    res = 0.0_dp
+    t_uplift = 0.0_dp
+    t_overturn = 0.0_dp
+    theta_max = 0.0_dp
+    theta_min = 0.0_dp
+    t_end = 0.0_dp
+    n_steps = 0
     n_imp = 0
     outcome = 0
-    blk = rocking_block_t(alpha=blkv(1), p=blkv(2), e=blkv(3), g=blkv(4), &
-                          linearized=linearized /= 0)
-    t_max = huge(1.0_dp)
-    if (opts(1) > 0.0_dp) t_max = opts(1)
-    rtol = 1.0e-12_dp
-    if (opts(4) > 0.0_dp) rtol = opts(4)
+    blk = rocking_block_t(alpha=alpha, p=p, e=e, g=g, linearized=linearized /= 0)
+    t_lim = huge(1.0_dp)
+    if (has_t_max /= 0) t_lim = t_max
     if (kind > 0) then
         if (ngrid > 0) then
             call rock_pulse(blk, pulse_from_params(kind, params), run, stat, errmsg, tg, thg, &
-                            omg, t_max=t_max, theta0=opts(2), omega0=opts(3), rtol=rtol)
+                            omg, t_max=t_lim, theta0=theta0, omega0=omega0, rtol=rtol)
         else
             call rock_pulse(blk, pulse_from_params(kind, params), run, stat, errmsg, &
-                            t_max=t_max, theta0=opts(2), omega0=opts(3), rtol=rtol)
+                            t_max=t_lim, theta0=theta0, omega0=omega0, rtol=rtol)
         end if
     else
         if (ngrid > 0) then
-            call rock_record(blk, accel, dt, run, stat, errmsg, tg, thg, omg, t_max=t_max, &
-                             theta0=opts(2), omega0=opts(3), rtol=rtol)
+            call rock_record(blk, accel, dt, run, stat, errmsg, tg, thg, omg, t_max=t_lim, &
+                             theta0=theta0, omega0=omega0, rtol=rtol)
         else
-            call rock_record(blk, accel, dt, run, stat, errmsg, t_max=t_max, theta0=opts(2), &
-                             omega0=opts(3), rtol=rtol)
+            call rock_record(blk, accel, dt, run, stat, errmsg, t_max=t_lim, theta0=theta0, &
+                             omega0=omega0, rtol=rtol)
         end if
     end if
     if (stat /= SEISPULSE_SUCCESS) return
     outcome = run%outcome
     n_imp = run%n_impacts
     if (n_imp > 0) impacts(1:min(n_imp, nmax)) = run%t_impacts(1:min(n_imp, nmax))
-    res = [run%t_uplift, run%t_overturn, run%theta_max, run%theta_min, run%t_end, &
-           real(run%n_steps, dp)]
+    t_uplift = run%t_uplift
+    t_overturn = run%t_overturn
+    theta_max = run%theta_max
+    theta_min = run%theta_min
+    t_end = run%t_end
+    n_steps = run%n_steps
 end subroutine sp_rock
 
 !> Overturning map of a pulse family (template params packed as in pulse_from_params).
@@ -472,10 +488,10 @@ end subroutine sp_overturning_map
 
 !> One analysis with histories and sliding intervals. nh = n for histories, else 1;
 !> the first min(nslides, nmax) intervals are returned (the caller asks again with a
-!> larger nmax when nslides > nmax). summary = max_disp, final_disp, u_max, u_min,
-!> max_vel, t_end.
+!> larger nmax when nslides > nmax).
 subroutine sp_newmark_rigid(n, accel, dt, mode, ky, ky_up, k_down, k_up, method, g, nh, &
-                            u_hist, w_hist, nmax, slides, nslides, summary, stat, errmsg)
+                            u_hist, w_hist, nmax, slides, nslides, max_disp, final_disp, u_max, &
+                            u_min, max_vel, t_end, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid
@@ -483,7 +499,8 @@ subroutine sp_newmark_rigid(n, accel, dt, mode, ky, ky_up, k_down, k_up, method,
     !f2py intent(hide) :: n
     integer, intent(in) :: n, mode, method, nh, nmax
     real(dp), intent(in) :: accel(n), dt, ky, ky_up, k_down, k_up, g
-    real(dp), intent(out) :: u_hist(nh), w_hist(nh), slides(nmax, 8), summary(6)
+    real(dp), intent(out) :: u_hist(nh), w_hist(nh), slides(nmax, 8)
+    real(dp), intent(out) :: max_disp, final_disp, u_max, u_min, max_vel, t_end
     integer, intent(out) :: nslides, stat
     character(len=256), intent(out) :: errmsg
     type(newmark_result_t) :: res
@@ -492,7 +509,12 @@ subroutine sp_newmark_rigid(n, accel, dt, mode, ky, ky_up, k_down, k_up, method,
     u_hist = 0.0_dp
     w_hist = 0.0_dp
     slides = 0.0_dp
-    summary = 0.0_dp
+    max_disp = 0.0_dp
+    final_disp = 0.0_dp
+    u_max = 0.0_dp
+    u_min = 0.0_dp
+    max_vel = 0.0_dp
+    t_end = 0.0_dp
     nslides = 0
     if (nh == n) then
         call newmark_rigid(accel, dt, newmark_block_t(mode, ky, ky_up, k_down, k_up), method, g, &
@@ -502,7 +524,12 @@ subroutine sp_newmark_rigid(n, accel, dt, mode, ky, ky_up, k_down, k_up, method,
                            res, stat, errmsg)
     end if
     if (stat /= SEISPULSE_SUCCESS) return
-    summary = [res%max_disp, res%final_disp, res%u_max, res%u_min, res%max_vel, res%t_end]
+    max_disp = res%max_disp
+    final_disp = res%final_disp
+    u_max = res%u_max
+    u_min = res%u_min
+    max_vel = res%max_vel
+    t_end = res%t_end
     nslides = size(res%slides)
     do i = 1, min(nslides, nmax)
         associate (s => res%slides(i))
@@ -514,7 +541,8 @@ end subroutine sp_newmark_rigid
 
 !> Summaries for many blocks on one record (ky, ky_up, k_down, k_up of length nk).
 subroutine sp_newmark_rigid_many(n, accel, dt, mode, nk, ky, ky_up, k_down, k_up, method, g, &
-                                 summary, stat, errmsg)
+                                 max_disp, final_disp, u_max, u_min, max_vel, t_end, stat, &
+                                 errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid
@@ -522,35 +550,49 @@ subroutine sp_newmark_rigid_many(n, accel, dt, mode, nk, ky, ky_up, k_down, k_up
     !f2py intent(hide) :: n, nk
     integer, intent(in) :: n, mode, nk, method
     real(dp), intent(in) :: accel(n), dt, ky(nk), ky_up(nk), k_down(nk), k_up(nk), g
-    real(dp), intent(out) :: summary(nk, 6)
+    real(dp), intent(out) :: max_disp(nk), final_disp(nk), u_max(nk), u_min(nk), max_vel(nk), &
+                             t_end(nk)
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg
     type(newmark_result_t) :: res
     integer :: i
     errmsg = ''
-    summary = 0.0_dp
+    max_disp = 0.0_dp
+    final_disp = 0.0_dp
+    u_max = 0.0_dp
+    u_min = 0.0_dp
+    max_vel = 0.0_dp
+    t_end = 0.0_dp
     stat = SEISPULSE_SUCCESS
     do i = 1, nk
         call newmark_rigid(accel, dt, newmark_block_t(mode, ky(i), ky_up(i), k_down(i), k_up(i)), &
                            method, g, res, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        summary(i, :) = [res%max_disp, res%final_disp, res%u_max, res%u_min, res%max_vel, &
-                         res%t_end]
+        max_disp(i) = res%max_disp
+        final_disp(i) = res%final_disp
+        u_max(i) = res%u_max
+        u_min(i) = res%u_min
+        max_vel(i) = res%max_vel
+        t_end(i) = res%t_end
     end do
 end subroutine sp_newmark_rigid_many
 
 !> Yields and along-plane factors of a block on an incline (newmark_incline).
-subroutine sp_newmark_incline(mu, slope_deg, xi_deg, along_plane, out, stat, errmsg)
+subroutine sp_newmark_incline(mu, slope_deg, xi_deg, along_plane, ky, ky_up, k_down, k_up, &
+                              stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_newmark, only: newmark_block_t, newmark_incline
     implicit none
     real(dp), intent(in) :: mu, slope_deg, xi_deg
     integer, intent(in) :: along_plane
-    real(dp), intent(out) :: out(4)
+    real(dp), intent(out) :: ky, ky_up, k_down, k_up
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg
     type(newmark_block_t) :: blk
     errmsg = ''
     call newmark_incline(mu, slope_deg, xi_deg, along_plane /= 0, blk, stat, errmsg)
-    out = [blk%ky, blk%ky_up, blk%k_down, blk%k_up]
+    ky = blk%ky
+    ky_up = blk%ky_up
+    k_down = blk%k_down
+    k_up = blk%k_up
 end subroutine sp_newmark_incline

@@ -71,9 +71,10 @@ def incline(mu, slope_deg, xi_deg=0.0, along_plane=True):
     slope_deg = _core.as_scalar("slope_deg", slope_deg)
     xi_deg = _core.as_scalar("xi_deg", xi_deg)
     along_plane = _core.check_bool("along_plane", along_plane)
-    out, stat, msg = sp_newmark_incline(mu, slope_deg, xi_deg, int(along_plane))
+    ky, ky_up, k_down, k_up, stat, msg = sp_newmark_incline(mu, slope_deg, xi_deg,
+                                                            int(along_plane))
     _core.raise_for_status(stat, msg)
-    return Incline(*map(float, out))
+    return Incline(ky=float(ky), ky_up=float(ky_up), k_down=float(k_down), k_up=float(k_up))
 
 
 def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
@@ -145,16 +146,18 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
         if history or intervals:
             raise InvalidInputError("history, intervals: only for a single ky")
         flat = [_core.flat(arr[k], shape) for k in ("ky", "ky_up", "k_down", "k_up")]
-        summary, stat, msg = sp_newmark_rigid_many(rec, step, mode_code, *flat, method_code, g)
+        max_disp, final_disp, u_max, u_min, max_vel, t_end, stat, msg = sp_newmark_rigid_many(
+            rec, step, mode_code, *flat, method_code, g)
         _core.raise_for_status(stat, msg, indexed=("accel",))
-        cols = [summary[:, j].reshape(shape) for j in range(6)]
-        return Rigid(*cols, None, None, None, None)
+        return Rigid(max_disp.reshape(shape), final_disp.reshape(shape), u_max.reshape(shape),
+                     u_min.reshape(shape), max_vel.reshape(shape), t_end.reshape(shape),
+                     None, None, None, None)
     scalars = [float(arr[k]) for k in ("ky", "ky_up", "k_down", "k_up")]
     nh = rec.size if history else 1
     nmax = 64 if intervals else 0
     while True:
-        u, w, slides, nslides, summary, stat, msg = sp_newmark_rigid(
-            rec, step, mode_code, *scalars, method_code, g, nh, nmax)
+        (u, w, slides, nslides, max_disp, final_disp, u_max, u_min, max_vel, t_end, stat,
+         msg) = sp_newmark_rigid(rec, step, mode_code, *scalars, method_code, g, nh, nmax)
         _core.raise_for_status(stat, msg, indexed=("accel",))
         if not intervals or nslides <= nmax:
             break
@@ -166,4 +169,5 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
     if history:
         time = np.arange(rec.size) * step
         disp, vel = u, w
-    return Rigid(*map(float, summary), time, disp, vel, out)
+    return Rigid(float(max_disp), float(final_disp), float(u_max), float(u_min), float(max_vel),
+                 float(t_end), time, disp, vel, out)

@@ -418,7 +418,7 @@ def simulate(pulse=None, ay=None, *, accel=None, dt=None, ay_rev=None, static_fa
     grid = np.zeros(0) if t is None else np.ascontiguousarray(
         _core.as_float_array("t", t).reshape(-1))
     while True:
-        ug, wg, slides, nslides, summary, stat, msg = sp_stickslip(
+        ug, wg, slides, nslides, u_final, u_max, u_min, t_end, stat, msg = sp_stickslip(
             kind, params, rec, step, ay, ay_rev, static_factor, int(static_all), grid, nmax)
         _core.raise_for_status(stat, msg, rename={"ay_fwd": "ay", "t_grid": "t"})
         if nslides <= nmax:
@@ -426,5 +426,5 @@ def simulate(pulse=None, ay=None, *, accel=None, dt=None, ay_rev=None, static_fa
         nmax = nslides
     out = [Slide(int(r[0]), *map(float, r[1:7]), bool(r[7])) for r in slides[:nslides]]
     hist = (None, None, None) if t is None else (grid.copy(), ug.copy(), wg.copy())
-    return Simulation(out, *map(float, summary), *hist)
+    return Simulation(out, float(u_final), float(u_max), float(u_min), float(t_end), *hist)
 
