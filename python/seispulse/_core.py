@@ -3,11 +3,26 @@ broadcasting, and turning Fortran status codes into exceptions."""
 
 import numbers
 import re
+import threading
 
 import numpy as np
 
 from ._fortran_codes import SEISPULSE_SUCCESS
 from .errors import STATUS_ERRORS, InternalError, InvalidInputError
+
+
+#: Held by a run that keeps its intervals or impacts in Fortran until they are fetched
+#: (sp_stickslip, sp_newmark_rigid, sp_rock, then sp_fetch_slides / sp_fetch_impacts).
+HELD_LOCK = threading.Lock()
+
+
+def slides(make, fields):
+    """The intervals of sp_fetch_slides as a list of make(direction, t_start, t_stop,
+    u_start, u_stop, w_peak, t_peak, from_slip) (Python int, floats, bool)."""
+    direction, t_start, t_stop, u_start, u_stop, w_peak, t_peak, from_slip = fields
+    return [make(d, t0, t1, u0, u1, w, tw, bool(f)) for d, t0, t1, u0, u1, w, tw, f in zip(
+        direction.tolist(), t_start.tolist(), t_stop.tolist(), u_start.tolist(),
+        u_stop.tolist(), w_peak.tolist(), t_peak.tolist(), from_slip.tolist())]
 
 
 def as_float_array(name, value):

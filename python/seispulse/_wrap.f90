@@ -8,6 +8,21 @@
 !> Element-by-element loops over a scalar routine are not written here: one line each in
 !> _wrap_loops.txt, from which gen_binding.py writes _wrap_loops.f90 at build time.
 
+!> The sliding intervals of the last sp_stickslip or sp_newmark_rigid run and the impact
+!> times of the last sp_rock run, kept until sp_fetch_slides / sp_fetch_impacts: the run
+!> returns their number, the caller sizes the arrays from it, and no analysis runs twice.
+!> The Python side makes both calls under one lock.
+module sp_runs_held
+    use seispulse_kinds, only: dp
+    use seispulse_sliding_sim, only: slide_t
+    implicit none
+    private
+    public :: held_slides, held_impacts
+
+    type(slide_t), allocatable, save :: held_slides(:)  !! intervals of the last run
+    real(dp), allocatable, save :: held_impacts(:)      !! impact times of the last run
+end module sp_runs_held
+
 !> Exponential pulse, dimensionless; beta has length 1 or n.
 subroutine sp_exp_pulse(n, tau, nb, beta, full, a, v, d, stat, errmsg)
     use seispulse_kinds, only: dp
@@ -250,30 +265,28 @@ end subroutine sp_table_1_2
 ! ---------------------------------------------------------------------------------
 
 !> One run under a pulse (kind > 0, params packed as in pulse_from_params) or a record
-!> (kind = 0: accel(nrec), dt). slides(nmax, 8) = direction, t_start, t_stop, u_start,
-!> u_stop, w_peak, t_peak, from_slip for the first min(nslides, nmax) slides; u, w at the
-!> times tg when ngrid > 0.
+!> (kind = 0: accel(nrec), dt); u, w at the times tg when ngrid > 0. The nslides slides
+!> are kept for sp_fetch_slides.
 subroutine sp_stickslip(kind, params, nrec, accel, dt, ay_fwd, ay_rev, sfac, static_all, &
-                        ngrid, tg, ug, wg, nmax, slides, nslides, u_final, u_max, u_min, t_end, &
-                        stat, errmsg)
+                        ngrid, tg, ug, wg, nslides, u_final, u_max, u_min, t_end, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_pulses, only: pulse_from_params
     use seispulse_sliding_sim, only: friction_t, stickslip_result_t, stickslip_pulse, &
                                    stickslip_record
+    use sp_runs_held, only: held_slides
     implicit none
     !f2py intent(hide) :: nrec, ngrid
-    integer, intent(in) :: kind, nrec, static_all, ngrid, nmax
+    integer, intent(in) :: kind, nrec, static_all, ngrid
     real(dp), intent(in) :: params(9), accel(nrec), dt, ay_fwd, ay_rev, sfac, tg(ngrid)
-    real(dp), intent(out) :: ug(ngrid), wg(ngrid), slides(nmax, 8)
+    real(dp), intent(out) :: ug(ngrid), wg(ngrid)
     real(dp), intent(out) :: u_final, u_max, u_min, t_end
     integer, intent(out) :: nslides, stat
     character(len=256), intent(out) :: errmsg
     type(friction_t) :: fr
     type(stickslip_result_t) :: res
-    integer :: i
     errmsg = ''
-    slides = 0.0_dp
+    if (allocated(held_slides)) deallocate(held_slides)
     u_final = 0.0_dp
     u_max = 0.0_dp
     u_min = 0.0_dp
@@ -297,12 +310,7 @@ subroutine sp_stickslip(kind, params, nrec, accel, dt, ay_fwd, ay_rev, sfac, sta
     end if
     if (stat /= SEISPULSE_SUCCESS) return
     nslides = size(res%slides)
-    do i = 1, min(nslides, nmax)
-        associate (s => res%slides(i))
-            slides(i, :) = [real(s%direction, dp), s%t_start, s%t_stop, s%u_start, s%u_stop, &
-                            s%w_peak, s%t_peak, merge(1.0_dp, 0.0_dp, s%from_slip)]
-        end associate
-    end do
+    call move_alloc(res%slides, held_slides)
     u_final = res%u_final
     u_max = res%u_max
     u_min = res%u_min
@@ -400,20 +408,21 @@ end subroutine sp_rocking_block
 
 !> One run under a pulse (kind > 0, params packed as in pulse_from_params) or a record
 !> (kind = 0: accel(nrec), dt); the block is alpha, p, e, g; t_max only when has_t_max /= 0.
-!> impacts: the first min(n_imp, nmax) impact times.
+!> The n_imp impact times are kept for sp_fetch_impacts.
 subroutine sp_rock(kind, params, nrec, accel, dt, alpha, p, e, g, linearized, has_t_max, t_max, &
-                   theta0, omega0, rtol, ngrid, tg, thg, omg, nmax, impacts, n_imp, outcome, &
-                   t_uplift, t_overturn, theta_max, theta_min, t_end, n_steps, stat, errmsg)
+                   theta0, omega0, rtol, ngrid, tg, thg, omg, n_imp, outcome, t_uplift, &
+                   t_overturn, theta_max, theta_min, t_end, n_steps, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_pulses, only: pulse_from_params
     use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rock_pulse, rock_record
+    use sp_runs_held, only: held_impacts
     implicit none
     !f2py intent(hide) :: nrec, ngrid
-    integer, intent(in) :: kind, nrec, linearized, has_t_max, ngrid, nmax
+    integer, intent(in) :: kind, nrec, linearized, has_t_max, ngrid
     real(dp), intent(in) :: params(9), accel(nrec), dt, alpha, p, e, g, t_max, theta0, omega0, &
                             rtol, tg(ngrid)
-    real(dp), intent(out) :: thg(ngrid), omg(ngrid), impacts(nmax)
+    real(dp), intent(out) :: thg(ngrid), omg(ngrid)
     real(dp), intent(out) :: t_uplift, t_overturn, theta_max, theta_min, t_end
     integer, intent(out) :: n_imp, outcome, n_steps, stat
     character(len=256), intent(out) :: errmsg
@@ -423,7 +432,7 @@ subroutine sp_rock(kind, params, nrec, accel, dt, alpha, p, e, g, linearized, ha
     errmsg = ''
     thg = 0.0_dp
     omg = 0.0_dp
-    impacts = 0.0_dp
+    if (allocated(held_impacts)) deallocate(held_impacts)
     t_uplift = 0.0_dp
     t_overturn = 0.0_dp
     theta_max = 0.0_dp
@@ -455,7 +464,7 @@ subroutine sp_rock(kind, params, nrec, accel, dt, alpha, p, e, g, linearized, ha
     if (stat /= SEISPULSE_SUCCESS) return
     outcome = run%outcome
     n_imp = run%n_impacts
-    if (n_imp > 0) impacts(1:min(n_imp, nmax)) = run%t_impacts(1:min(n_imp, nmax))
+    if (n_imp > 0) allocate(held_impacts, source=run%t_impacts(1:n_imp))
     t_uplift = run%t_uplift
     t_overturn = run%t_overturn
     theta_max = run%theta_max
@@ -486,29 +495,28 @@ end subroutine sp_overturning_map
 ! Newmark rigid-block sliding on records (seispulse_newmark)
 ! ---------------------------------------------------------------------------------
 
-!> One analysis with histories and sliding intervals. nh = n for histories, else 1;
-!> the first min(nslides, nmax) intervals are returned (the caller asks again with a
-!> larger nmax when nslides > nmax).
+!> One analysis with histories and sliding intervals. nh = n for histories, else 1; the
+!> nslides intervals are kept for sp_fetch_slides.
 subroutine sp_newmark_rigid(n, accel, dt, mode, ky, ky_up, k_down, k_up, method, g, nh, &
-                            u_hist, w_hist, nmax, slides, nslides, max_disp, final_disp, u_max, &
-                            u_min, max_vel, t_end, stat, errmsg)
+                            u_hist, w_hist, nslides, max_disp, final_disp, u_max, u_min, &
+                            max_vel, t_end, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid
+    use sp_runs_held, only: held_slides
     implicit none
     !f2py intent(hide) :: n
-    integer, intent(in) :: n, mode, method, nh, nmax
+    integer, intent(in) :: n, mode, method, nh
     real(dp), intent(in) :: accel(n), dt, ky, ky_up, k_down, k_up, g
-    real(dp), intent(out) :: u_hist(nh), w_hist(nh), slides(nmax, 8)
+    real(dp), intent(out) :: u_hist(nh), w_hist(nh)
     real(dp), intent(out) :: max_disp, final_disp, u_max, u_min, max_vel, t_end
     integer, intent(out) :: nslides, stat
     character(len=256), intent(out) :: errmsg
     type(newmark_result_t) :: res
-    integer :: i
     errmsg = ''
+    if (allocated(held_slides)) deallocate(held_slides)
     u_hist = 0.0_dp
     w_hist = 0.0_dp
-    slides = 0.0_dp
     max_disp = 0.0_dp
     final_disp = 0.0_dp
     u_max = 0.0_dp
@@ -531,12 +539,7 @@ subroutine sp_newmark_rigid(n, accel, dt, mode, ky, ky_up, k_down, k_up, method,
     max_vel = res%max_vel
     t_end = res%t_end
     nslides = size(res%slides)
-    do i = 1, min(nslides, nmax)
-        associate (s => res%slides(i))
-            slides(i, :) = [real(s%direction, dp), s%t_start, s%t_stop, s%u_start, s%u_stop, &
-                            s%w_peak, s%t_peak, merge(1.0_dp, 0.0_dp, s%from_slip)]
-        end associate
-    end do
+    call move_alloc(res%slides, held_slides)
 end subroutine sp_newmark_rigid
 
 !> Summaries for many blocks on one record (ky, ky_up, k_down, k_up of length nk).
@@ -596,3 +599,49 @@ subroutine sp_newmark_incline(mu, slope_deg, xi_deg, along_plane, ky, ky_up, k_d
     k_down = blk%k_down
     k_up = blk%k_up
 end subroutine sp_newmark_incline
+
+!> The n intervals kept by the last sp_stickslip or sp_newmark_rigid run (then freed):
+!> direction +1/-1, times, displacements, peak velocity and its time, from_slip 0/1.
+subroutine sp_fetch_slides(n, direction, t_start, t_stop, u_start, u_stop, w_peak, t_peak, &
+                           from_slip)
+    use seispulse_kinds, only: dp
+    use sp_runs_held, only: held_slides
+    implicit none
+    integer, intent(in) :: n
+    integer, intent(out) :: direction(n), from_slip(n)
+    real(dp), intent(out) :: t_start(n), t_stop(n), u_start(n), u_stop(n), w_peak(n), t_peak(n)
+    integer :: i
+    direction = 0
+    from_slip = 0
+    t_start = 0.0_dp
+    t_stop = 0.0_dp
+    u_start = 0.0_dp
+    u_stop = 0.0_dp
+    w_peak = 0.0_dp
+    t_peak = 0.0_dp
+    if (.not. allocated(held_slides)) return
+    do i = 1, min(n, size(held_slides))
+        direction(i) = held_slides(i)%direction
+        t_start(i) = held_slides(i)%t_start
+        t_stop(i) = held_slides(i)%t_stop
+        u_start(i) = held_slides(i)%u_start
+        u_stop(i) = held_slides(i)%u_stop
+        w_peak(i) = held_slides(i)%w_peak
+        t_peak(i) = held_slides(i)%t_peak
+        from_slip(i) = merge(1, 0, held_slides(i)%from_slip)
+    end do
+    deallocate(held_slides)
+end subroutine sp_fetch_slides
+
+!> The n impact times kept by the last sp_rock run (then freed).
+subroutine sp_fetch_impacts(n, times)
+    use seispulse_kinds, only: dp
+    use sp_runs_held, only: held_impacts
+    implicit none
+    integer, intent(in) :: n
+    real(dp), intent(out) :: times(n)
+    times = 0.0_dp
+    if (.not. allocated(held_impacts)) return
+    times(1:min(n, size(held_impacts))) = held_impacts(1:min(n, size(held_impacts)))
+    deallocate(held_impacts)
+end subroutine sp_fetch_impacts

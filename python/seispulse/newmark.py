@@ -22,7 +22,8 @@ import numpy as np
 
 from . import _core
 from . import _fortran_codes as _f
-from ._seispulse import sp_newmark_incline, sp_newmark_rigid, sp_newmark_rigid_many
+from ._seispulse import (sp_fetch_slides, sp_newmark_incline, sp_newmark_rigid,
+                         sp_newmark_rigid_many)
 from .errors import InvalidInputError
 from .sliding import Slide
 
@@ -154,17 +155,12 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
                      None, None, None, None)
     scalars = [float(arr[k]) for k in ("ky", "ky_up", "k_down", "k_up")]
     nh = rec.size if history else 1
-    nmax = 64 if intervals else 0
-    while True:
-        (u, w, slides, nslides, max_disp, final_disp, u_max, u_min, max_vel, t_end, stat,
-         msg) = sp_newmark_rigid(rec, step, mode_code, *scalars, method_code, g, nh, nmax)
-        _core.raise_for_status(stat, msg, indexed=("accel",))
-        if not intervals or nslides <= nmax:
-            break
-        nmax = nslides
-    out = None
-    if intervals:
-        out = [Slide(int(r[0]), *map(float, r[1:7]), bool(r[7])) for r in slides[:nslides]]
+    with _core.HELD_LOCK:
+        (u, w, nslides, max_disp, final_disp, u_max, u_min, max_vel, t_end, stat,
+         msg) = sp_newmark_rigid(rec, step, mode_code, *scalars, method_code, g, nh)
+        fields = sp_fetch_slides(nslides if stat == 0 and intervals else 0)
+    _core.raise_for_status(stat, msg, indexed=("accel",))
+    out = _core.slides(Slide, fields) if intervals else None
     time = disp = vel = None
     if history:
         time = np.arange(rec.size) * step

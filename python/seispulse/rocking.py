@@ -23,7 +23,7 @@ import numpy as np
 
 from . import _core
 from . import _fortran_codes as _f
-from ._seispulse import (sp_overturning_map, sp_rock, sp_rocking_block, sp_rocking_curve,
+from ._seispulse import (sp_fetch_impacts, sp_overturning_map, sp_rock, sp_rocking_block, sp_rocking_curve,
                          sp_rocking_extremes, sp_rocking_rect_normalized, sp_rocking_response,
                          sp_rocking_summary)
 from .errors import InvalidInputError
@@ -280,19 +280,15 @@ def simulate(block, pulse=None, *, accel=None, dt=None, linearized=False, t=None
     theta0 = _core.as_scalar("theta0", theta0)
     omega0 = _core.as_scalar("omega0", omega0)
     rtol = _core.as_scalar("rtol", rtol)
-    nmax = 256
-    while True:
-        (thg, omg, impacts, n_imp, outcome, t_uplift, t_overturn, theta_max, theta_min, t_end,
+    with _core.HELD_LOCK:
+        (thg, omg, n_imp, outcome, t_uplift, t_overturn, theta_max, theta_min, t_end,
          _, stat, msg) = sp_rock(kind, params, rec, step, block.alpha, block.p, block.e, block.g,
-                                 int(linearized), int(limit), t_lim, theta0, omega0, rtol, grid,
-                                 nmax)
-        _core.raise_for_status(stat, msg, rename={"t_grid": "t"})
-        if n_imp <= nmax:
-            break
-        nmax = n_imp
+                                 int(linearized), int(limit), t_lim, theta0, omega0, rtol, grid)
+        impacts = sp_fetch_impacts(n_imp if stat == 0 else 0)
+    _core.raise_for_status(stat, msg, rename={"t_grid": "t"})
     hist = (None, None, None) if t is None else (grid.copy(), thg.copy(), omg.copy())
     return RockingRun(OUTCOMES[outcome], float(t_uplift), float(t_overturn), int(n_imp),
-                      impacts[:n_imp].copy(), float(theta_max), float(theta_min), float(t_end),
+                      impacts, float(theta_max), float(theta_min), float(t_end),
                       *hist)
 
 

@@ -21,8 +21,8 @@ import numpy as np
 from . import _core
 from . import _fortran_codes as _f
 from ._seispulse import (sp_basic_lengths, sp_block, sp_characteristic_length,
-                         sp_eta_critical, sp_full_cycle, sp_half_cycle, sp_inclined,
-                         sp_limit_form, sp_stickslip, sp_table_1_2, sp_table_1_3,
+                         sp_eta_critical, sp_fetch_slides, sp_full_cycle, sp_half_cycle,
+                         sp_inclined, sp_limit_form, sp_stickslip, sp_table_1_2, sp_table_1_3,
                          sp_yield_time)
 from .errors import InvalidInputError
 from .pulse import STANDARD_GRAVITY, Pulse
@@ -407,24 +407,20 @@ def simulate(pulse=None, ay=None, *, accel=None, dt=None, ay_rev=None, static_fa
             raise InvalidInputError("pulse: must be a seispulse.pulse.Pulse from "
                                     "seispulse.pulse.define()")
         kind, params, rec, step = pulse.code, np.asarray(pulse.params, float), np.zeros(1), 1.0
-        nmax = 64
     else:
         rec = np.ascontiguousarray(_core.as_float_array("accel", accel).reshape(-1))
         if dt is None:
             raise InvalidInputError("dt: must be the time step (> 0) of accel")
         step = _core.as_scalar("dt", dt)
         kind, params = 0, np.zeros(9)
-        nmax = rec.size + 2
     grid = np.zeros(0) if t is None else np.ascontiguousarray(
         _core.as_float_array("t", t).reshape(-1))
-    while True:
-        ug, wg, slides, nslides, u_final, u_max, u_min, t_end, stat, msg = sp_stickslip(
-            kind, params, rec, step, ay, ay_rev, static_factor, int(static_all), grid, nmax)
-        _core.raise_for_status(stat, msg, rename={"ay_fwd": "ay", "t_grid": "t"})
-        if nslides <= nmax:
-            break
-        nmax = nslides
-    out = [Slide(int(r[0]), *map(float, r[1:7]), bool(r[7])) for r in slides[:nslides]]
+    with _core.HELD_LOCK:
+        ug, wg, nslides, u_final, u_max, u_min, t_end, stat, msg = sp_stickslip(
+            kind, params, rec, step, ay, ay_rev, static_factor, int(static_all), grid)
+        fields = sp_fetch_slides(nslides if stat == 0 else 0)
+    _core.raise_for_status(stat, msg, rename={"ay_fwd": "ay", "t_grid": "t"})
+    out = _core.slides(Slide, fields)
     hist = (None, None, None) if t is None else (grid.copy(), ug.copy(), wg.copy())
     return Simulation(out, float(u_final), float(u_max), float(u_min), float(t_end), *hist)
 
