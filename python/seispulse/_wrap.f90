@@ -113,10 +113,9 @@ subroutine sp_half_cycle(n, eta, beta, sfac, method, tau_y, tau_m, regime, um, d
     end do
 end subroutine sp_half_cycle
 
-!> Full-cycle response; mode codes as MODE_*; out(:, 1:9) = tau_y1, tau_m1, um1, tau_y2,
-!> tau_m2, um2, ures, vm1, vm2; method 0 closed forms, 1 integrator.
-subroutine sp_full_cycle(n, eta1, eta2, beta, sfac, static_reverse, method, mode, out, stat, &
-                         errmsg)
+!> Full-cycle response; mode codes as SLIDING_MODE_*; method 0 closed forms, 1 integrator.
+subroutine sp_full_cycle(n, eta1, eta2, beta, sfac, static_reverse, method, mode, tau_y1, &
+                         tau_m1, um1, tau_y2, tau_m2, um2, ures, vm1, vm2, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_sliding_closed, only: full_cycle, full_cycle_integrated, full_cycle_t
@@ -125,7 +124,8 @@ subroutine sp_full_cycle(n, eta1, eta2, beta, sfac, static_reverse, method, mode
     integer, intent(in) :: n, static_reverse, method
     real(dp), intent(in) :: eta1(n), eta2(n), beta(n), sfac(n)
     integer, intent(out) :: mode(n)
-    real(dp), intent(out) :: out(n, 9)
+    real(dp), intent(out) :: tau_y1(n), tau_m1(n), um1(n), tau_y2(n), tau_m2(n), um2(n), &
+                             ures(n), vm1(n), vm2(n)
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg
     type(full_cycle_t) :: r
@@ -142,7 +142,15 @@ subroutine sp_full_cycle(n, eta1, eta2, beta, sfac, static_reverse, method, mode
         end if
         if (stat /= SEISPULSE_SUCCESS) return
         mode(i) = r%mode
-        out(i, :) = [r%tau_y1, r%tau_m1, r%um1, r%tau_y2, r%tau_m2, r%um2, r%ures, r%vm1, r%vm2]
+        tau_y1(i) = r%tau_y1
+        tau_m1(i) = r%tau_m1
+        um1(i) = r%um1
+        tau_y2(i) = r%tau_y2
+        tau_m2(i) = r%tau_m2
+        um2(i) = r%um2
+        ures(i) = r%ures
+        vm1(i) = r%vm1
+        vm2(i) = r%vm2
     end do
 end subroutine sp_full_cycle
 
@@ -199,35 +207,6 @@ subroutine sp_limit_form(n, which, eta, out)
         out(:, 1) = full_cycle_peak_regression(eta, out(:, 1))
     end select
 end subroutine sp_limit_form
-
-!> A block on an incline in SI; out(:, 1:12) = eta1, eta2, t_y1, t_m1, u_m1, t_y2, t_m2,
-!> u_m2, u_res, v_m1, v_m2, 0.
-subroutine sp_block(n, mu, ag, td, beta, full, slope, xi, sfac, static_reverse, along_plane, &
-                    g, mode, out, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding_closed, only: block_response, sliding_block_t
-    implicit none
-    !f2py intent(hide) :: n
-    integer, intent(in) :: n, full, static_reverse, along_plane
-    real(dp), intent(in) :: mu(n), ag(n), td(n), beta(n), slope(n), xi(n), sfac(n), g
-    integer, intent(out) :: mode(n)
-    real(dp), intent(out) :: out(n, 11)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    type(sliding_block_t) :: r
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call block_response(mu(i), ag(i), td(i), beta(i), full /= 0, slope(i), xi(i), sfac(i), &
-                            static_reverse /= 0, along_plane /= 0, g, r, stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-        mode(i) = r%mode
-        out(i, :) = [r%eta1, r%eta2, r%t_y1, r%t_m1, r%u_m1, r%t_y2, r%t_m2, r%u_m2, r%u_res, &
-                     r%v_m1, r%v_m2]
-    end do
-end subroutine sp_block
 
 ! ---------------------------------------------------------------------------------
 ! Normalization of sliding displacements (seispulse_sliding_norm)

@@ -2,38 +2,6 @@
 !> factors of seispulse_walls_common: plain external subroutines, explicit-shape arrays,
 !> stat + errmsg out, no numerics.
 
-!> Compressibility factors psi_e, psi_o, psi_sigma, psi_v, psi_t per nu.
-subroutine sp_wall_psi(n, nu, psi_e, psi_o, psi_sigma, psi_v, psi_t, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_walls_common, only: wall_psi_t, wall_psi
-    implicit none
-    !f2py intent(hide) :: n
-    integer, intent(in) :: n
-    real(dp), intent(in) :: nu(n)
-    real(dp), intent(out) :: psi_e(n), psi_o(n), psi_sigma(n), psi_v(n), psi_t(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    type(wall_psi_t) :: psi
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    psi_e = 0.0_dp
-    psi_o = 0.0_dp
-    psi_sigma = 0.0_dp
-    psi_v = 0.0_dp
-    psi_t = 0.0_dp
-    do i = 1, n
-        call wall_psi(nu(i), psi, stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-        psi_e(i) = psi%e
-        psi_o(i) = psi%o
-        psi_sigma(i) = psi%sigma
-        psi_v(i) = psi%v
-        psi_t(i) = psi%t
-    end do
-end subroutine sp_wall_psi
-
 !> The first n free-field frequencies (rad/s) of a layer of height H (m), Vs (m/s).
 subroutine sp_free_field_frequencies(height, vs, n, omegas, stat, errmsg)
     use seispulse_kinds, only: dp

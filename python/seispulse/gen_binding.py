@@ -188,7 +188,8 @@ def cmd_codes(args):
 
 LOOP_HEAD_RE = re.compile(r"^(sp_\w+)\((.*)\)$")
 LOOP_CALL_RE = re.compile(r"^(\w+):\s*(\w+)\((.*)\)$", re.S)
-LOOP_ARG_RE = re.compile(r"^(>?)(\w+)(?:\((\d+)\))?(?::(int|real|complex))?$")
+LOOP_ARG_RE = re.compile(r"^(>?)(\w+)(?:\((\d+)\))?(?::(int|real|complex))?(?:=(\w+%\w+))?$")
+LOOP_LOCAL_RE = re.compile(r"^type\((\w+)\)\s*::\s*(\w+)$")
 TYPES = {"int": "integer", "real": "real(dp)", "complex": "complex(dp)"}
 ZERO = {"int": "0", "real": "0.0_dp", "complex": "(0.0_dp, 0.0_dp)"}
 
@@ -204,9 +205,12 @@ def loop_entries(text):
         elif raw.strip():
             lines.append(raw.strip())
         elif lines:
-            if len(lines) < 2:
-                raise StepFailed(f"loops: no call line after {lines[0]!r}")
-            entries.append((doc, lines[0], " ".join(lines[1:])))
+            local = lines.pop() if LOOP_LOCAL_RE.match(lines[-1]) else None
+            k = 1                                   # the head ends where its parentheses do
+            while k < len(lines) and " ".join(lines[:k]).count("(") > \
+                    " ".join(lines[:k]).count(")"):
+                k += 1
+            entries.append((doc, " ".join(lines[:k]), " ".join(lines[k:]), local))
             doc, lines = [], []
     return entries
 
@@ -214,26 +218,29 @@ def loop_entries(text):
 def wrap_line(text, indent, width=100):
     """`text` broken after commas into Fortran continuation lines of at most `width`."""
     out, line = [], indent + text
+    hang = " " * (line.index("(") + 1)
     while len(line) > width:
         cut = line.rfind(", ", 0, width - 1)
         out.append(line[:cut + 1] + " &")
-        line = " " * (line.index("(") + 1) + line[cut + 2:]
+        line = hang + line[cut + 2:]
     return "\n".join(out + [line])
 
 
-def loop_routine(doc, head, call):
+def loop_routine(doc, head, call, local=None):
     """The Fortran of one element-by-element wrapper."""
     m, c = LOOP_HEAD_RE.match(head), LOOP_CALL_RE.match(call)
     if not m or not c:
         raise StepFailed(f"loops: cannot read {head!r} / {call!r}")
     name, module, routine = m.group(1), c.group(1), c.group(2)
-    args, decls, zero, arrays = [], [], [], {}
+    args, decls, zero, arrays, after = [], [], [], {}, []
     for token in (t.strip() for t in m.group(2).split(",")):
         a = LOOP_ARG_RE.match(token)
         if not a:
             raise StepFailed(f"loops: {name}: cannot read argument {token!r}")
         out, arg, cols, kind = a.group(1) == ">", a.group(2), a.group(3), a.group(4) or "real"
         args.append(arg)
+        if a.group(5):                                      # a component of the local result
+            after.append(f"{arg}(i) = {a.group(5)}")
         if not out and a.group(4):                          # scalar input
             decls.append(f"{TYPES[kind]}, intent(in) :: {arg}")
             continue
@@ -251,24 +258,29 @@ def loop_routine(doc, head, call):
             return f"{arg}(i, {sub})"
         return f"{arg}(i, :)" if arrays[arg] else f"{arg}(i)"
     actual = re.sub(r"\b([a-z_]\w*)\b(?:\((\d+)\))?", element, c.group(3))
+    uses, locals_ = routine, []
+    if local:
+        ltype, lname = LOOP_LOCAL_RE.match(local).groups()
+        uses, locals_ = f"{ltype}, {routine}", [f"    type({ltype}) :: {lname}"]
     lines = doc + [wrap_line(f"subroutine {name}(n, {', '.join(args)}, stat, errmsg)", "")]
     lines += ["    use seispulse_kinds, only: dp",
               "    use seispulse_errors, only: SEISPULSE_SUCCESS",
-              f"    use {module}, only: {routine}",
+              f"    use {module}, only: {uses}",
               "    implicit none",
               "    !f2py intent(hide) :: n",
               "    integer, intent(in) :: n"]
     lines += ["    " + d for d in decls]
     lines += ["    integer, intent(out) :: stat",
-              "    character(len=256), intent(out) :: errmsg",
+              "    character(len=256), intent(out) :: errmsg"] + locals_ + [
               "    integer :: i",
               "    errmsg = ''",
               "    stat = SEISPULSE_SUCCESS"]
     lines += ["    " + z for z in zero]
     lines += ["    do i = 1, n",
               wrap_line(f"call {routine}({actual})", " " * 8),
-              "        if (stat /= SEISPULSE_SUCCESS) return",
-              "    end do",
+              "        if (stat /= SEISPULSE_SUCCESS) return"]
+    lines += ["        " + a for a in after]
+    lines += ["    end do",
               f"end subroutine {name}"]
     return "\n".join(lines)
 

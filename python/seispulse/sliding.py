@@ -156,10 +156,12 @@ def full_cycle(eta1, beta, eta2=None, static_factor=1.0, static_reverse=False,
     static_reverse = _core.check_bool("static_reverse", static_reverse)
     code = int(_core.check_choice("method", method, _METHODS) == "integrator")
     shape, arr = _core.broadcast(eta1=eta1, eta2=eta2, beta=beta, static_factor=static_factor)
-    mode, out, stat, msg = sp_full_cycle(*_flat_all(shape, arr), int(static_reverse), code)
+    (mode, tau_y1, tau_m1, um1, tau_y2, tau_m2, um2, ures, vm1, vm2, stat,
+     msg) = sp_full_cycle(*_flat_all(shape, arr), int(static_reverse), code)
     _core.raise_for_status(stat, msg)
-    cols = _core.shaped(shape, *(np.ascontiguousarray(out[:, j]) for j in range(9)))
-    return FullCycle(_core.names(MODES, mode, shape), *cols)
+    return FullCycle(_core.names(MODES, mode, shape),
+                     *_core.shaped(shape, tau_y1, tau_m1, um1, tau_y2, tau_m2, um2, ures, vm1,
+                                   vm2))
 
 
 def inclined_resistances(mu, ag_over_g, slope_deg, xi_deg=0.0):
@@ -201,12 +203,13 @@ def block(mu, ag_over_g, td, beta, full=False, slope_deg=0.0, xi_deg=0.0, static
                                  slope_deg=slope_deg, xi_deg=xi_deg,
                                  static_factor=static_factor)
     f = dict(zip(arr, _flat_all(shape, arr)))
-    mode, out, stat, msg = sp_block(f["mu"], f["ag_over_g"], f["td"], f["beta"], int(full),
-                                    f["slope_deg"], f["xi_deg"], f["static_factor"],
-                                    int(static_reverse), int(along_plane), g)
+    (mode, eta1, eta2, t_y1, t_m1, u_m1, t_y2, t_m2, u_m2, u_res, v_m1, v_m2, stat,
+     msg) = sp_block(f["mu"], f["ag_over_g"], f["td"], f["beta"], int(full), f["slope_deg"],
+                     f["xi_deg"], f["static_factor"], int(static_reverse), int(along_plane), g)
     _core.raise_for_status(stat, msg, rename={"ag": "ag_over_g"})
-    cols = _core.shaped(shape, *(np.ascontiguousarray(out[:, j]) for j in range(11)))
-    return BlockResponse(_core.names(MODES, mode, shape), *cols)
+    return BlockResponse(_core.names(MODES, mode, shape),
+                         *_core.shaped(shape, eta1, eta2, t_y1, t_m1, u_m1, t_y2, t_m2, u_m2,
+                                       u_res, v_m1, v_m2))
 
 
 # ------------------------------------------------------------ stick/slip, regressions

@@ -61,3 +61,18 @@ def test_loop_wrapper_from_its_description(gen):
                  "        if (stat /= SEISPULSE_SUCCESS) return"):
         assert line in text.splitlines()
     assert max(map(len, text.splitlines())) <= 100
+
+
+def test_loop_wrapper_with_a_derived_type_result(gen):
+    spec = ("sp_demo(x, flag:int,\n"
+            "        >a=r%a, >k:int=r%k)\n"
+            "    some_module: demo(x, flag, r, stat, errmsg)\n"
+            "    type(demo_t) :: r\n")
+    (entry,) = gen.loop_entries(spec)
+    lines = gen.loop_routine(*entry).splitlines()
+    assert lines[0] == "subroutine sp_demo(n, x, flag, a, k, stat, errmsg)"
+    assert "    use some_module, only: demo_t, demo" in lines
+    assert "    type(demo_t) :: r" in lines
+    call = lines.index("        call demo(x(i), flag, r, stat, errmsg)")
+    assert lines[call + 1:call + 4] == ["        if (stat /= SEISPULSE_SUCCESS) return",
+                                        "        a(i) = r%a", "        k(i) = r%k"]
