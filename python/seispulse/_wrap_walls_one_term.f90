@@ -23,46 +23,6 @@ subroutine sp_ot_shape(shape, expo, a_oc, l_factor, mass_factor, s0, s1, h_ratio
     h_ratio = c%h_ratio
 end subroutine sp_ot_shape
 
-!> one_term at each omega_ratio(i): every field of one_term_t.
-subroutine sp_ot_solve(nw, omega_ratio, delta, nu, shape, expo, d_theta, l_over_h, q, m, &
-                       h_ratio, u_ff0, u0, theta, lam, flex, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_walls_one_term, only: one_term_t, one_term
-    implicit none
-    !f2py intent(hide) :: nw
-    integer, intent(in) :: nw, shape
-    real(dp), intent(in) :: omega_ratio(nw), delta, nu, expo, d_theta, l_over_h
-    complex(dp), intent(out) :: q(nw), m(nw), u_ff0(nw), u0(nw), theta(nw), lam(nw), flex(nw)
-    real(dp), intent(out) :: h_ratio(nw)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    type(one_term_t) :: res
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    q = (0.0_dp, 0.0_dp)
-    m = q
-    u_ff0 = q
-    u0 = q
-    theta = q
-    lam = q
-    flex = q
-    h_ratio = 0.0_dp
-    do i = 1, nw
-        call one_term(omega_ratio(i), delta, nu, shape, expo, d_theta, l_over_h, res, stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-        q(i) = res%q
-        m(i) = res%m
-        h_ratio(i) = res%h_ratio
-        u_ff0(i) = res%u_ff0
-        u0(i) = res%u0
-        theta(i) = res%theta
-        lam(i) = res%lambda
-        flex(i) = res%flex
-    end do
-end subroutine sp_ot_solve
-
 !> one_term_pressure at heights y.
 subroutine sp_ot_pressure(omega_ratio, delta, nu, shape, expo, d_theta, l_over_h, ny, y, p, &
                           stat, errmsg)
