@@ -2,7 +2,8 @@
 #
 # deps   system packages (apt: gfortran liblapack-dev pkg-config; python3-dev python3-venv
 #        for Debian's own python only) and a virtual environment .venv with the Python tools
-# build  meson setup + compile in build/ (the f2py extension is built with .venv's python)
+# build  meson setup + compile in build/ (the f2py extension is built with .venv's python);
+#        their output goes to build/meson-logs/*-output.txt, printed only when a step fails
 # run    build, then the batch driver on input/example.nml (tables go under out/)
 # test   everything: meson suites, a -fcheck=all/-ffpe-trap build, install and pip checks
 #
@@ -105,13 +106,15 @@ venv: $(STAMP)
 # (newer stamp) reconfigures, so -Dpython always names this venv's interpreter.
 $(BUILDDIR)/build.ninja: $(STAMP)
 	@reconf=""; [ ! -f $(BUILDDIR)/meson-private/coredata.dat ] || reconf="--reconfigure"; \
-	echo "meson setup $$reconf $(BUILDDIR) -Dpython=$(VENV_PY)"; \
-	$(MESON) setup $$reconf $(BUILDDIR) -Dpython=$(VENV_PY)
+	log=$(BUILDDIR)/meson-logs/setup-output.txt; mkdir -p $(BUILDDIR)/meson-logs; \
+	echo "meson setup $$reconf $(BUILDDIR) -Dpython=$(VENV_PY) (output: $$log)"; \
+	$(MESON) setup $$reconf $(BUILDDIR) -Dpython=$(VENV_PY) >$$log 2>&1 || { cat $$log; exit 1; }
 	@touch $@
 
 build: sysdeps $(BUILDDIR)/build.ninja
-	@echo "meson compile -C $(BUILDDIR)"
-	@$(MESON) compile -C $(BUILDDIR)
+	@log=$(BUILDDIR)/meson-logs/compile-output.txt; \
+	echo "meson compile -C $(BUILDDIR) (output: $$log)"; \
+	$(MESON) compile -C $(BUILDDIR) >$$log 2>&1 || { cat $$log; exit 1; }
 
 run: build
 	$(abspath $(DRIVER)) $(EXAMPLE)

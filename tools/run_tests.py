@@ -74,6 +74,25 @@ def banner(text):
     print(f"\n==> {text}", flush=True)
 
 
+def run_quiet(cmd, env, log):
+    """Run cmd with its output in the file `log`, printed only if cmd fails; return its
+    exit status. meson's and f2py's chatter stays out of the test output."""
+    print("$ " + " ".join(str(c) for c in cmd) + f"  (output: {log})", flush=True)
+    log = Path(log)
+    log.parent.mkdir(parents=True, exist_ok=True)
+    try:
+        with open(log, "w", encoding="utf-8") as fh:
+            rc = subprocess.run([str(c) for c in cmd], cwd=ROOT, env=env, stdin=subprocess.DEVNULL,
+                                stdout=fh, stderr=subprocess.STDOUT).returncode
+    except OSError as exc:
+        print(f"cannot run {cmd[0]}: {exc}", flush=True)
+        return 127
+    if rc != 0:
+        sys.stdout.write(log.read_text(encoding="utf-8", errors="replace"))
+        sys.stdout.flush()
+    return rc
+
+
 def run(cmd, env, cwd=ROOT, capture=False):
     """Run cmd, streaming its output; return (returncode, output if capture)."""
     print("$ " + " ".join(str(c) for c in cmd), flush=True)
@@ -175,7 +194,7 @@ def meson_setup(stage, env, builddir, options, always=False):
     cmd = ["meson", "setup"]
     if (builddir / "meson-private" / "coredata.dat").is_file():
         cmd.append("--reconfigure")
-    rc, _ = run(cmd + [builddir] + options, env)
+    rc = run_quiet(cmd + [builddir] + options, env, builddir / "meson-logs" / "setup-output.txt")
     if rc != 0:
         stage.broken(f"meson setup {builddir.name} failed (exit {rc})")
         return False
@@ -183,7 +202,8 @@ def meson_setup(stage, env, builddir, options, always=False):
 
 
 def meson_compile(stage, env, builddir):
-    rc, _ = run(["meson", "compile", "-C", builddir], env)
+    rc = run_quiet(["meson", "compile", "-C", builddir], env,
+                   builddir / "meson-logs" / "compile-output.txt")
     if rc != 0:
         stage.broken(f"meson compile -C {builddir.name} failed (exit {rc})")
         return False

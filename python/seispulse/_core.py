@@ -3,10 +3,26 @@ broadcasting, and turning Fortran status codes into exceptions."""
 
 import numbers
 import re
+import threading
 
 import numpy as np
 
+from ._fortran_codes import SEISPULSE_SUCCESS
 from .errors import STATUS_ERRORS, InternalError, InvalidInputError
+
+
+#: Held by a run that keeps its intervals or impacts in Fortran until they are fetched
+#: (sp_stickslip, sp_newmark_rigid, sp_rock, then sp_fetch_slides / sp_fetch_impacts).
+HELD_LOCK = threading.Lock()
+
+
+def slides(make, fields):
+    """The intervals of sp_fetch_slides as a list of make(direction, t_start, t_stop,
+    u_start, u_stop, w_peak, t_peak, from_slip) (Python int, floats, bool)."""
+    direction, t_start, t_stop, u_start, u_stop, w_peak, t_peak, from_slip = fields
+    return [make(d, t0, t1, u0, u1, w, tw, bool(f)) for d, t0, t1, u0, u1, w, tw, f in zip(
+        direction.tolist(), t_start.tolist(), t_stop.tolist(), u_start.tolist(),
+        u_stop.tolist(), w_peak.tolist(), t_peak.tolist(), from_slip.tolist())]
 
 
 def as_float_array(name, value):
@@ -85,6 +101,21 @@ def check_choice(name, value, allowed):
     return value
 
 
+def choice_code(name, value, codes):
+    """The Fortran code of `value`, a name from `codes` ({name: code}, codes from
+    _fortran_codes); InvalidInputError listing the names otherwise."""
+    return codes[check_choice(name, value, tuple(codes))]
+
+
+def by_code(names_of):
+    """{code: name} for the Fortran codes 0, 1, ..., n - 1 as the tuple of names indexed
+    by code (what names() takes)."""
+    codes = sorted(names_of)
+    if codes != list(range(len(codes))):
+        raise ImportError(f"seispulse: Fortran codes {codes} are not 0..{len(codes) - 1}")
+    return tuple(names_of[code] for code in codes)
+
+
 def check_positive(name, value, unit=""):
     """A finite real scalar > 0."""
     try:
@@ -96,15 +127,21 @@ def check_positive(name, value, unit=""):
     return x
 
 
-def raise_for_status(stat, errmsg, rename=None):
+def raise_for_status(stat, errmsg, rename=None, indexed=None):
     """Raise the exception of a nonzero Fortran status, with its message.
 
     `rename` maps Fortran parameter names to the Python ones, so the message names
-    the argument the caller actually passed."""
-    if stat == 0:
+    the argument the caller actually passed. `indexed` names Fortran arrays (an iterable,
+    or {Fortran name: Python name}) whose elements name(i) the message gives as Python's
+    name[i - 1]."""
+    if stat == SEISPULSE_SUCCESS:
         return
     msg = errmsg.decode("ascii", "replace") if isinstance(errmsg, bytes) else str(errmsg)
     msg = msg.strip()
+    if indexed:
+        table = indexed if isinstance(indexed, dict) else {name: name for name in indexed}
+        pattern = r"\b(" + "|".join(map(re.escape, table)) + r")\((\d+)\)"
+        msg = re.sub(pattern, lambda m: f"{table[m.group(1)]}[{int(m.group(2)) - 1}]", msg)
     for fortran_name, python_name in (rename or {}).items():
         if msg.startswith(fortran_name + " ") or msg.startswith(fortran_name + ":"):
             msg = python_name + msg[len(fortran_name):]
@@ -134,15 +171,3 @@ def record_and_step(accel, dt):
     if dt is None:
         raise InvalidInputError("dt: the time step of accel (s, > 0) is required")
     return np.ascontiguousarray(rec), check_positive("dt", dt, " (s)")
-
-
-def raise_record_status(stat, msg, names=None):
-    """raise_for_status, with Fortran element numbers name(i) turned into Python's
-    name[i-1] (accel always; `names` maps more Fortran array names to Python ones)."""
-    if stat != 0:
-        text = msg.decode("ascii", "replace") if isinstance(msg, bytes) else str(msg)
-        table = {"accel": "accel", **(names or {})}
-        pattern = r"\b(" + "|".join(map(re.escape, table)) + r")\((\d+)\)"
-        text = re.sub(pattern, lambda m: f"{table[m.group(1)]}[{int(m.group(2)) - 1}]",
-                      text.strip())
-        raise_for_status(stat, text)

@@ -25,6 +25,7 @@ from collections import namedtuple
 import numpy as np
 
 from . import _core
+from . import _fortran_codes as _f
 from ._seispulse import (sp_beta_pulse, sp_dynamic_coefficient, sp_harmonic_response,
                          sp_impulse_max, sp_impulse_response, sp_pulse_peak_accel,
                          sp_rect_pulse_response, sp_sdof_pulse_peaks, sp_sdof_pulse_response,
@@ -41,11 +42,14 @@ __all__ = ["DAMPING_MODELS", "HARMONIC_LAWS", "BETA_PULSE_VARIANTS", "MotionResp
 
 #: Damping terms of the dynamic coefficient: the book's Eq. 2.20 (frequency
 #: independent) and the viscous form.
-DAMPING_MODELS = ("hysteretic", "viscous")
+_DAMPING_CODES = {"hysteretic": _f.BETA_HYSTERETIC, "viscous": _f.BETA_VISCOUS}
+DAMPING_MODELS = tuple(_DAMPING_CODES)
 #: Harmonic base displacement laws: Delta0 sin(theta t) and Delta0 cos(theta t).
-HARMONIC_LAWS = ("sine", "cosine")
+_LAW_CODES = {"sine": _f.HARMONIC_SINE, "cosine": _f.HARMONIC_COSINE}
+HARMONIC_LAWS = tuple(_LAW_CODES)
 #: Dynamic coefficient of the rectangular pulse: exact, or the book's bound.
-BETA_PULSE_VARIANTS = ("exact", "textbook")
+_VARIANT_CODES = {"exact": _f.BETA_PULSE_EXACT, "textbook": _f.BETA_PULSE_TEXTBOOK}
+BETA_PULSE_VARIANTS = tuple(_VARIANT_CODES)
 
 MotionResponse = namedtuple("MotionResponse", ["z", "v", "a_abs"])
 MotionResponse.__doc__ = """Oscillator response: z, the displacement relative to the ground
@@ -74,14 +78,9 @@ sd (m), sv (m/s), sa (m/s^2), psv (m/s), psa (m/s^2) as in :class:`PulseSpectrum
 amplification = psa / peak |a_g| (dimensionless)."""
 
 
-def _raise_indexed(stat, msg):
-    """raise_for_status with Fortran's element names t(i), periods(i) as the caller's
-    t[i - 1], periods[i - 1] (flat index for arrays of more than one dimension)."""
-    _core.raise_record_status(stat, msg, names={"t": "t", "periods": "periods"})
-
-
-def _choice_code(name, value, allowed):
-    return allowed.index(_core.check_choice(name, value, allowed)) + 1
+#: Fortran arrays whose elements name(i) errors give as the caller's name[i - 1] (flat
+#: index for arrays of more than one dimension).
+_INDEXED = ("accel", "t", "periods")
 
 
 def _pulse_args(pulse):
@@ -148,7 +147,7 @@ def cosine_dynamic_coefficient(ratio, gamma=0.0, model="hysteretic"):
 
 
 def _dynamic(ratio, gamma, model):
-    code = _choice_code("model", model, DAMPING_MODELS)
+    code = _core.choice_code("model", model, _DAMPING_CODES)
     shape, arr = _core.broadcast(ratio=ratio, gamma=gamma)
     beta, beta_cos, stat, msg = sp_dynamic_coefficient(_core.flat(arr["ratio"], shape),
                                                        _core.flat(arr["gamma"], shape), code)
@@ -194,13 +193,13 @@ def harmonic_response(t, w0, period, ratio, damping=0.0, law="sine", transient=T
         z (m), v (m/s), a_abs (m/s^2), shaped like ``t``.
     """
     shape, tf = _times(t)
-    code = _choice_code("law", law, HARMONIC_LAWS)
+    code = _core.choice_code("law", law, _LAW_CODES)
     transient = _core.check_bool("transient", transient)
     z, v, a, stat, msg = sp_harmonic_response(
         tf, _core.as_scalar("w0", w0), _core.as_scalar("period", period),
         _core.as_scalar("ratio", ratio), _core.as_scalar("damping", damping), code,
         int(transient))
-    _raise_indexed(stat, msg)
+    _core.raise_for_status(stat, msg, indexed=_INDEXED)
     return _motion(shape, z, v, a)
 
 
@@ -218,7 +217,7 @@ def rect_pulse_response(t, w0, t1, period):
     z, v, a, stat, msg = sp_rect_pulse_response(tf, _core.as_scalar("w0", w0),
                                                 _core.as_scalar("t1", t1),
                                                 _core.as_scalar("period", period))
-    _raise_indexed(stat, msg)
+    _core.raise_for_status(stat, msg, indexed=_INDEXED)
     return _motion(shape, z, v, a)
 
 
@@ -232,8 +231,7 @@ def beta_pulse(t1_over_period, variant="exact"):
     relative acceleration although they do not coincide (an upper bound; -> 1 as
     t1 -> 0, the printed "beta -> 0" is a typo). Dimensionless.
     """
-    code = _choice_code("variant", variant, BETA_PULSE_VARIANTS)
-    fortran_code = 2 if code == 1 else 1
+    fortran_code = _core.choice_code("variant", variant, _VARIANT_CODES)
     shape, arr = _core.broadcast(t1_over_period=t1_over_period)
     beta, stat, msg = sp_beta_pulse(_core.flat(arr["t1_over_period"], shape), fortran_code)
     _core.raise_for_status(stat, msg)
@@ -262,7 +260,7 @@ def impulse_response(t, jw, period, damping=0.0):
     z, v, a, stat, msg = sp_impulse_response(tf, _core.as_scalar("jw", jw),
                                              _core.as_scalar("period", period),
                                              _core.as_scalar("damping", damping))
-    _raise_indexed(stat, msg)
+    _core.raise_for_status(stat, msg, indexed=_INDEXED)
     return _motion(shape, z, v, a)
 
 
@@ -296,7 +294,7 @@ def pulse_response(pulse, period, damping=0.05, t=None):
     shape, tf = _times(t)
     z, v, a, stat, msg = sp_sdof_pulse_response(kind, params, _core.as_scalar("period", period),
                                                 _core.as_scalar("damping", damping), tf)
-    _raise_indexed(stat, msg)
+    _core.raise_for_status(stat, msg, indexed=_INDEXED)
     return _motion(shape, z, v, a)
 
 
@@ -351,7 +349,7 @@ def pulse_spectrum(pulse, periods, damping=0.05, return_times=False):
     flat = np.ascontiguousarray(arr.reshape(-1))
     sd, sv, sa, tsd, tsv, tsa, stat, msg = sp_sdof_pulse_spectrum(
         kind, params, flat, _core.as_scalar("damping", damping))
-    _raise_indexed(stat, msg)
+    _core.raise_for_status(stat, msg, indexed=_INDEXED)
     psv, psa = _pseudo(flat, sd, sa)
     spec = PulseSpectrum(*(x.reshape(shape) if shape != () else float(x[0])
                            for x in (flat, sd, sv, sa, psv, psa)))

@@ -41,6 +41,7 @@ from collections import namedtuple
 import numpy as np
 
 from . import _core
+from . import _fortran_codes as _f
 from ._seispulse import (sp_ot_cutoff, sp_ot_dashpot, sp_ot_displacement, sp_ot_fundamental,
                          sp_ot_pressure, sp_ot_scott, sp_ot_shape, sp_ot_solve, sp_ot_vy_spring,
                          sp_ot_winkler)
@@ -50,8 +51,10 @@ __all__ = ["SHAPES", "ShapeConstants", "OneTerm", "shape_constants", "one_term",
            "one_term_pressure", "one_term_displacement", "power_law_fundamental",
            "power_law_cutoff", "winkler_spring", "winkler_dashpot", "scott_spring", "vy_spring"]
 
-#: Shape functions of the one-term method (Fortran codes 1..4).
-SHAPES = ("linear", "sine", "parabolic", "power")
+#: Shape functions of the one-term method (Fortran SHAPE_* codes).
+_SHAPE_CODES = {"linear": _f.SHAPE_LINEAR, "sine": _f.SHAPE_SINE,
+                "parabolic": _f.SHAPE_PARABOLIC, "power": _f.SHAPE_POWER}
+SHAPES = tuple(_SHAPE_CODES)
 
 ShapeConstants = namedtuple("ShapeConstants", ["shape", "n", "a_oc", "l_factor", "mass_factor",
                                                "s0", "s1", "h_ratio"])
@@ -75,7 +78,7 @@ spring (Eq. 2.96; 1 when d_theta = 0)."""
 def _shape_code(shape, n):
     if shape is None:
         shape = "sine" if n == 0.0 else "power"
-    return SHAPES.index(_core.check_choice("shape", shape, SHAPES)) + 1
+    return _core.choice_code("shape", shape, _SHAPE_CODES)
 
 
 def _common(delta, nu, shape, n, d_theta=0.0, l_over_h=np.inf):
@@ -96,8 +99,8 @@ def _out(shape, arr):
     return arr.reshape(shape)
 
 
-def _raise(stat, errmsg):
-    _core.raise_record_status(stat, errmsg, names={"x": "x", "y": "y"})
+#: Fortran arrays whose elements name(i) errors give as the caller's name[i - 1].
+_INDEXED = ("accel", "x", "y")
 
 
 def shape_constants(shape="sine", n=0.0):
@@ -121,7 +124,7 @@ def shape_constants(shape="sine", n=0.0):
     n = _core.as_scalar("n", n)
     code = _shape_code(shape, n)
     *vals, stat, errmsg = sp_ot_shape(code, n)
-    _raise(stat, errmsg)
+    _core.raise_for_status(stat, errmsg, indexed=_INDEXED)
     return ShapeConstants(SHAPES[code - 1], n, *vals)
 
 
@@ -173,7 +176,7 @@ def one_term(omega_ratio, delta, nu, shape=None, n=0.0, d_theta=0.0, l_over_h=np
     delta, nu, code, n, d_theta, l_over_h = _common(delta, nu, shape, n, d_theta, l_over_h)
     q, m, h, uff0, u0, theta, lam, flex, stat, errmsg = sp_ot_solve(
         om, delta, nu, code, n, d_theta, l_over_h)
-    _raise(stat, errmsg)
+    _core.raise_for_status(stat, errmsg, indexed=_INDEXED)
     return OneTerm(*(_out(shape_out, a) for a in (q, m, h, uff0, u0, theta, lam, flex)))
 
 
@@ -204,7 +207,7 @@ def one_term_pressure(omega_ratio, delta, nu, y, shape=None, n=0.0, d_theta=0.0,
     delta, nu, code, n, d_theta, l_over_h = _common(delta, nu, shape, n, d_theta, l_over_h)
     p, stat, errmsg = sp_ot_pressure(om, delta, nu, code, n, d_theta, l_over_h,
                                      np.ascontiguousarray(arr.reshape(-1)))
-    _raise(stat, errmsg)
+    _core.raise_for_status(stat, errmsg, indexed=_INDEXED)
     return _out(arr.shape, p)
 
 
@@ -240,7 +243,7 @@ def one_term_displacement(omega_ratio, delta, nu, x, y, shape=None, n=0.0, d_the
     u, stat, errmsg = sp_ot_displacement(om, delta, nu, code, n, d_theta, l_over_h,
                                          _core.flat(arrs["x"], shape_out),
                                          _core.flat(arrs["y"], shape_out))
-    _raise(stat, errmsg)
+    _core.raise_for_status(stat, errmsg, indexed=_INDEXED)
     return _out(shape_out, u)
 
 
@@ -265,7 +268,7 @@ def power_law_fundamental(n):
     """
     shape_out, arr = _omegas(n, "n")
     w1, stat, errmsg = sp_ot_fundamental(arr)
-    _raise(stat, errmsg)
+    _core.raise_for_status(stat, errmsg, indexed=_INDEXED)
     return _out(shape_out, w1)
 
 
@@ -282,7 +285,7 @@ def power_law_cutoff(n):
     """
     shape_out, arr = _omegas(n, "n")
     wc, stat, errmsg = sp_ot_cutoff(arr)
-    _raise(stat, errmsg)
+    _core.raise_for_status(stat, errmsg, indexed=_INDEXED)
     return _out(shape_out, wc)
 
 
@@ -309,7 +312,7 @@ def winkler_spring(omega_ratio, delta, nu, shape=None, n=0.0):
     shape_out, om = _omegas(omega_ratio)
     delta, nu, code, n, _, _ = _common(delta, nu, shape, n)
     k, stat, errmsg = sp_ot_winkler(om, delta, nu, code, n)
-    _raise(stat, errmsg)
+    _core.raise_for_status(stat, errmsg, indexed=_INDEXED)
     return _out(shape_out, k)
 
 
@@ -330,7 +333,7 @@ def winkler_dashpot(omega_ratio, nu, shape=None, n=0.0):
     shape_out, om = _omegas(omega_ratio)
     _, nu, code, n, _, _ = _common(0.0, nu, shape, n)
     c, stat, errmsg = sp_ot_dashpot(om, nu, code, n)
-    _raise(stat, errmsg)
+    _core.raise_for_status(stat, errmsg, indexed=_INDEXED)
     return _out(shape_out, c)
 
 
@@ -347,7 +350,7 @@ def scott_spring(nu):
     """
     shape_out, arr = _omegas(nu, "nu")
     k, stat, errmsg = sp_ot_scott(arr)
-    _raise(stat, errmsg)
+    _core.raise_for_status(stat, errmsg, indexed=_INDEXED)
     return _out(shape_out, k)
 
 
@@ -379,5 +382,5 @@ def vy_spring(mode, omega_ratio, delta, nu):
     shape_out, om = _omegas(omega_ratio)
     k, stat, errmsg = sp_ot_vy_spring(int(mode), om, _core.as_scalar("delta", delta),
                                       _core.as_scalar("nu", nu))
-    _raise(stat, errmsg)
+    _core.raise_for_status(stat, errmsg, indexed=_INDEXED)
     return _out(shape_out, k)

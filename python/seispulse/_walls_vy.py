@@ -73,12 +73,11 @@ VYSweep.__doc__ = """A frequency sweep: omega_ratio (omega/omega_1); q (rho Xg H
 (rho Xg H^3), complex; h_ratio = |m|/|q|; amplification = |q|/q_static with q_static =
 14 zeta(3)/pi^3 psi_sigma, the omega = 0 thrust."""
 
-def _raise(stat, msg, omega_name="omega_ratio"):
-    """Status to exception, Fortran's name(i) as Python's name[i - 1] (flat index);
-    the sweep's omega_ratios(i) becomes omega_name[i - 1]."""
-    _core.raise_record_status(stat, msg, names={"x": "x", "y": "y", "omega_ratio": "omega_ratio",
-                                                "delta": "delta", "nu": "nu",
-                                                "omega_ratios": omega_name})
+#: Fortran arrays whose elements name(i) errors give as Python's name[i - 1] (flat index);
+#: omega_ratios(i) is omega_ratio[i - 1] except in the sweep (_SWEEP_INDEXED).
+_INDEXED = {"accel": "accel", "x": "x", "y": "y", "omega_ratio": "omega_ratio",
+            "delta": "delta", "nu": "nu", "omega_ratios": "omega_ratio"}
+_SWEEP_INDEXED = {**_INDEXED, "omega_ratios": "omega_ratios"}
 
 
 def _tol(tol):
@@ -100,7 +99,7 @@ def psi_factors(nu):
     """
     shape, arr = _core.broadcast(nu=nu)
     out = sp_wall_psi(_core.flat(arr["nu"], shape))
-    _raise(out[-2], out[-1])
+    _core.raise_for_status(out[-2], out[-1], indexed=_INDEXED)
     return PsiFactors(*_core.shaped(shape, *out[:-2]))
 
 
@@ -116,7 +115,7 @@ def free_field_frequencies(height, vs, n_modes=5):
         raise InvalidInputError(f"n_modes = {n_modes!r}: must be an integer >= 1")
     omegas, stat, msg = sp_free_field_frequencies(_core.as_scalar("height", height),
                                                   _core.as_scalar("vs", vs), int(n_modes))
-    _raise(stat, msg)
+    _core.raise_for_status(stat, msg, indexed=_INDEXED)
     return omegas
 
 
@@ -159,7 +158,7 @@ def vy_rigid(omega_ratio, delta, nu, tol=VY_DEFAULT_TOL):
     else:
         q, m, h, nt, stat, msg = sp_vy_rigid(w, _core.flat(arr["delta"], shape),
                                              _core.flat(arr["nu"], shape), tol)
-    _raise(stat, msg)
+    _core.raise_for_status(stat, msg, indexed=_INDEXED)
     if shape == ():
         return VYRigid(complex(q[0]), complex(m[0]), float(h[0]), int(nt[0]))
     return VYRigid(q.reshape(shape), m.reshape(shape), h.reshape(shape), nt.reshape(shape))
@@ -180,7 +179,7 @@ def vy_pressure(omega_ratio, delta, nu, y, tol=VY_DEFAULT_TOL):
     p, stat, msg = sp_vy_pressure(_core.as_scalar("omega_ratio", omega_ratio),
                                   _core.as_scalar("delta", delta), _core.as_scalar("nu", nu),
                                   np.ascontiguousarray(yarr.reshape(-1)), tol)
-    _raise(stat, msg)
+    _core.raise_for_status(stat, msg, indexed=_INDEXED)
     return _complex_shaped(yarr.shape, p)[0]
 
 
@@ -213,7 +212,7 @@ def vy_fields(omega_ratio, delta, nu, x, y, tol=VY_DEFAULT_TOL):
         _core.as_scalar("omega_ratio", omega_ratio), _core.as_scalar("delta", delta),
         _core.as_scalar("nu", nu), _core.flat(arr["x"], shape), _core.flat(arr["y"], shape),
         tol)
-    _raise(stat, msg)
+    _core.raise_for_status(stat, msg, indexed=_INDEXED)
     return VYFields(*_complex_shaped(shape, u, v, sx, tau))
 
 
@@ -230,9 +229,9 @@ def vy_sweep(omega_ratios, delta, nu, tol=1e-8):
     d = _core.as_scalar("delta", delta)
     nu_ = _core.as_scalar("nu", nu)
     q, m, h, _, stat, msg = sp_vy_rigid_sweep(np.ascontiguousarray(w.reshape(-1)), d, nu_, tol)
-    _raise(stat, msg, omega_name="omega_ratios")
+    _core.raise_for_status(stat, msg, indexed=_SWEEP_INDEXED)
     q0, _, _, _, stat, msg = sp_vy_rigid_sweep(np.zeros(1), d, nu_, tol)
-    _raise(stat, msg)
+    _core.raise_for_status(stat, msg, indexed=_INDEXED)
     q_static = abs(complex(q0[0]))
     return VYSweep(w.copy(), q.reshape(w.shape), m.reshape(w.shape), h.reshape(w.shape),
                    (np.abs(q) / q_static).reshape(w.shape))

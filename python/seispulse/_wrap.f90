@@ -2,12 +2,33 @@
 !> integer/double/fixed-length character arguments only, `stat` + `errmsg` out.
 !> No numerics here: each routine translates its arguments and calls the library
 !> (style.md section 3: f2py cannot pass derived types, optionals or allocatables).
+!> These sources are the only signatures: f2py reads them at build time (gen_binding.py);
+!> `!f2py intent(hide)` lines hide the sizes f2py takes from the arrays, and .f2py_f2cmap
+!> maps real(dp) to C double (checked by the build and test_binding_kinds.py).
+!> Element-by-element loops over a scalar routine are not written here: one line each in
+!> _wrap_loops.txt, from which gen_binding.py writes _wrap_loops.f90 at build time.
+
+!> The sliding intervals of the last sp_stickslip or sp_newmark_rigid run and the impact
+!> times of the last sp_rock run, kept until sp_fetch_slides / sp_fetch_impacts: the run
+!> returns their number, the caller sizes the arrays from it, and no analysis runs twice.
+!> The Python side makes both calls under one lock.
+module sp_runs_held
+    use seispulse_kinds, only: dp
+    use seispulse_sliding_sim, only: slide_t
+    implicit none
+    private
+    public :: held_slides, held_impacts
+
+    type(slide_t), allocatable, save :: held_slides(:)  !! intervals of the last run
+    real(dp), allocatable, save :: held_impacts(:)      !! impact times of the last run
+end module sp_runs_held
 
 !> Exponential pulse, dimensionless; beta has length 1 or n.
 subroutine sp_exp_pulse(n, tau, nb, beta, full, a, v, d, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_pulses, only: exp_pulse
     implicit none
+    !f2py intent(hide) :: n, nb
     integer, intent(in) :: n, nb, full
     real(dp), intent(in) :: tau(n), beta(nb)
     real(dp), intent(out) :: a(n), v(n), d(n)
@@ -17,52 +38,13 @@ subroutine sp_exp_pulse(n, tau, nb, beta, full, a, v, d, stat, errmsg)
     call exp_pulse(tau, beta, full /= 0, a, v, d, stat, errmsg)
 end subroutine sp_exp_pulse
 
-!> Peak velocity and displacement of the exponential pulse, per beta.
-subroutine sp_exp_pulse_peaks(n, beta, full, vg, dg, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_pulses, only: exp_pulse_peaks
-    implicit none
-    integer, intent(in) :: n, full
-    real(dp), intent(in) :: beta(n)
-    real(dp), intent(out) :: vg(n), dg(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call exp_pulse_peaks(beta(i), full /= 0, vg(i), dg(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_exp_pulse_peaks
-
-!> Unit-impulse amplitude of the exponential pulse, per beta.
-subroutine sp_exp_pulse_impulse_amplitude(n, beta, amp, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_pulses, only: exp_pulse_impulse_amplitude
-    implicit none
-    integer, intent(in) :: n
-    real(dp), intent(in) :: beta(n)
-    real(dp), intent(out) :: amp(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call exp_pulse_impulse_amplitude(beta(i), amp(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_exp_pulse_impulse_amplitude
-
 !> Any pulse in SI units; params(np, 9) packed as in pulse_from_params, np = 1 or n.
 subroutine sp_pulse_eval(kind, n, t, np, params, a, v, d, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_pulses, only: pulse_t, pulse_eval, pulse_from_params, PULSE_NPARAM
     implicit none
+    !f2py intent(hide) :: n, np
     integer, intent(in) :: kind, n, np
     real(dp), intent(in) :: t(n), params(np, PULSE_NPARAM)
     real(dp), intent(out) :: a(n), v(n), d(n)
@@ -97,26 +79,6 @@ end subroutine sp_pulse_kind
 ! Sliding block (seispulse_sliding_closed); every array has length n (broadcast in Python)
 ! ---------------------------------------------------------------------------------
 
-!> Onset time (Eq. 1.12, 1.34).
-subroutine sp_yield_time(n, eta, beta, sfac, tau_y, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding_closed, only: yield_time
-    implicit none
-    integer, intent(in) :: n
-    real(dp), intent(in) :: eta(n), beta(n), sfac(n)
-    real(dp), intent(out) :: tau_y(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call yield_time(eta(i), beta(i), sfac(i), tau_y(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_yield_time
-
 !> Half-cycle response; regime codes as REGIME_*; method 0 closed forms, 1 integrator.
 subroutine sp_half_cycle(n, eta, beta, sfac, method, tau_y, tau_m, regime, um, dugm, vm, &
                          stat, errmsg)
@@ -124,6 +86,7 @@ subroutine sp_half_cycle(n, eta, beta, sfac, method, tau_y, tau_m, regime, um, d
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_sliding_closed, only: half_cycle, half_cycle_integrated, half_cycle_t
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n, method
     real(dp), intent(in) :: eta(n), beta(n), sfac(n)
     real(dp), intent(out) :: tau_y(n), tau_m(n), um(n), dugm(n), vm(n)
@@ -150,18 +113,19 @@ subroutine sp_half_cycle(n, eta, beta, sfac, method, tau_y, tau_m, regime, um, d
     end do
 end subroutine sp_half_cycle
 
-!> Full-cycle response; mode codes as MODE_*; out(:, 1:9) = tau_y1, tau_m1, um1, tau_y2,
-!> tau_m2, um2, ures, vm1, vm2; method 0 closed forms, 1 integrator.
-subroutine sp_full_cycle(n, eta1, eta2, beta, sfac, static_reverse, method, mode, out, stat, &
-                         errmsg)
+!> Full-cycle response; mode codes as SLIDING_MODE_*; method 0 closed forms, 1 integrator.
+subroutine sp_full_cycle(n, eta1, eta2, beta, sfac, static_reverse, method, mode, tau_y1, &
+                         tau_m1, um1, tau_y2, tau_m2, um2, ures, vm1, vm2, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_sliding_closed, only: full_cycle, full_cycle_integrated, full_cycle_t
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n, static_reverse, method
     real(dp), intent(in) :: eta1(n), eta2(n), beta(n), sfac(n)
     integer, intent(out) :: mode(n)
-    real(dp), intent(out) :: out(n, 9)
+    real(dp), intent(out) :: tau_y1(n), tau_m1(n), um1(n), tau_y2(n), tau_m2(n), um2(n), &
+                             ures(n), vm1(n), vm2(n)
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg
     type(full_cycle_t) :: r
@@ -178,30 +142,17 @@ subroutine sp_full_cycle(n, eta1, eta2, beta, sfac, static_reverse, method, mode
         end if
         if (stat /= SEISPULSE_SUCCESS) return
         mode(i) = r%mode
-        out(i, :) = [r%tau_y1, r%tau_m1, r%um1, r%tau_y2, r%tau_m2, r%um2, r%ures, r%vm1, r%vm2]
+        tau_y1(i) = r%tau_y1
+        tau_m1(i) = r%tau_m1
+        um1(i) = r%um1
+        tau_y2(i) = r%tau_y2
+        tau_m2(i) = r%tau_m2
+        um2(i) = r%um2
+        ures(i) = r%ures
+        vm1(i) = r%vm1
+        vm2(i) = r%vm2
     end do
 end subroutine sp_full_cycle
-
-!> Resistances and along-plane factors on an incline (Eq. 1.31).
-subroutine sp_inclined(n, mu, ag, slope, xi, eta1, eta2, k1, k2, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding_closed, only: inclined_resistances
-    implicit none
-    integer, intent(in) :: n
-    real(dp), intent(in) :: mu(n), ag(n), slope(n), xi(n)
-    real(dp), intent(out) :: eta1(n), eta2(n), k1(n), k2(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call inclined_resistances(mu(i), ag(i), slope(i), xi(i), eta1(i), eta2(i), k1(i), &
-                                  k2(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_inclined
 
 !> Stick/slip boundary: exact (method 0) or Eq. 1.22 (method 1).
 subroutine sp_eta_critical(n, beta, method, eta_cr, stat, errmsg)
@@ -209,6 +160,7 @@ subroutine sp_eta_critical(n, beta, method, eta_cr, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_sliding_closed, only: eta_critical, eta_critical_regression
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n, method
     real(dp), intent(in) :: beta(n)
     real(dp), intent(out) :: eta_cr(n)
@@ -235,6 +187,8 @@ subroutine sp_limit_form(n, which, eta, out)
     use seispulse_sliding_closed, only: rectangle_half, rectangle_full, triangle_half, &
                                  spike_velocity_ratio, full_cycle_peak_regression
     implicit none
+    !f2py intent(hide) :: n
+    !f2py intent(in,out) :: out
     integer, intent(in) :: n, which
     real(dp), intent(in) :: eta(n)
     real(dp), intent(inout) :: out(n, 5)
@@ -254,78 +208,9 @@ subroutine sp_limit_form(n, which, eta, out)
     end select
 end subroutine sp_limit_form
 
-!> A block on an incline in SI; out(:, 1:12) = eta1, eta2, t_y1, t_m1, u_m1, t_y2, t_m2,
-!> u_m2, u_res, v_m1, v_m2, 0.
-subroutine sp_block(n, mu, ag, td, beta, full, slope, xi, sfac, static_reverse, along_plane, &
-                    g, mode, out, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding_closed, only: block_response, sliding_block_t
-    implicit none
-    integer, intent(in) :: n, full, static_reverse, along_plane
-    real(dp), intent(in) :: mu(n), ag(n), td(n), beta(n), slope(n), xi(n), sfac(n), g
-    integer, intent(out) :: mode(n)
-    real(dp), intent(out) :: out(n, 11)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    type(sliding_block_t) :: r
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call block_response(mu(i), ag(i), td(i), beta(i), full /= 0, slope(i), xi(i), sfac(i), &
-                            static_reverse /= 0, along_plane /= 0, g, r, stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-        mode(i) = r%mode
-        out(i, :) = [r%eta1, r%eta2, r%t_y1, r%t_m1, r%u_m1, r%t_y2, r%t_m2, r%u_m2, r%u_res, &
-                     r%v_m1, r%v_m2]
-    end do
-end subroutine sp_block
-
 ! ---------------------------------------------------------------------------------
 ! Normalization of sliding displacements (seispulse_sliding_norm)
 ! ---------------------------------------------------------------------------------
-
-!> D_c = A^a V^b D^c t^d per element.
-subroutine sp_characteristic_length(n, a, b, c, d, ag, vg, dg, td, dc, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding_norm, only: characteristic_length
-    implicit none
-    integer, intent(in) :: n
-    real(dp), intent(in) :: a(n), b(n), c(n), d(n), ag(n), vg(n), dg(n), td(n)
-    real(dp), intent(out) :: dc(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call characteristic_length(a(i), b(i), c(i), d(i), ag(i), vg(i), dg(i), td(i), dc(i), &
-                                   stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_characteristic_length
-
-!> The six lengths of Eq. 1.28 per element.
-subroutine sp_basic_lengths(n, ag, vg, dg, td, lengths, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding_norm, only: basic_lengths
-    implicit none
-    integer, intent(in) :: n
-    real(dp), intent(in) :: ag(n), vg(n), dg(n), td(n)
-    real(dp), intent(out) :: lengths(n, 6)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call basic_lengths(ag(i), vg(i), dg(i), td(i), lengths(i, :), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_basic_lengths
 
 !> Exponents (a, b, c, d) of every cell of Table 1.2 `table` for the given row and
 !> column values.
@@ -334,6 +219,7 @@ subroutine sp_table_1_2(table, nr, rows, nc, cols, exps, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_sliding_norm, only: table_1_2_exponents
     implicit none
+    !f2py intent(hide) :: nr, nc
     character(len=*), intent(in) :: table
     integer, intent(in) :: nr, nc
     real(dp), intent(in) :: rows(nr), cols(nc)
@@ -353,53 +239,37 @@ subroutine sp_table_1_2(table, nr, rows, nc, cols, exps, stat, errmsg)
     end do
 end subroutine sp_table_1_2
 
-!> Table 1.3 per beta.
-subroutine sp_table_1_3(n, beta, full, ratios, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding_norm, only: table_1_3
-    implicit none
-    integer, intent(in) :: n, full
-    real(dp), intent(in) :: beta(n)
-    real(dp), intent(out) :: ratios(n, 6)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call table_1_3(beta(i), full /= 0, ratios(i, :), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_table_1_3
-
 ! ---------------------------------------------------------------------------------
 ! Stick-slip integrator (seispulse_sliding_sim)
 ! ---------------------------------------------------------------------------------
 
 !> One run under a pulse (kind > 0, params packed as in pulse_from_params) or a record
-!> (kind = 0: accel(nrec), dt). slides(nmax, 8) = direction, t_start, t_stop, u_start,
-!> u_stop, w_peak, t_peak, from_slip for the first min(nslides, nmax) slides; summary =
-!> u_final, u_max, u_min, t_end; u, w at the times tg when ngrid > 0.
+!> (kind = 0: accel(nrec), dt); u, w at the times tg when ngrid > 0. The nslides slides
+!> are kept for sp_fetch_slides.
 subroutine sp_stickslip(kind, params, nrec, accel, dt, ay_fwd, ay_rev, sfac, static_all, &
-                        ngrid, tg, ug, wg, nmax, slides, nslides, summary, stat, errmsg)
+                        ngrid, tg, ug, wg, nslides, u_final, u_max, u_min, t_end, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_pulses, only: pulse_from_params
     use seispulse_sliding_sim, only: friction_t, stickslip_result_t, stickslip_pulse, &
                                    stickslip_record
+    use sp_runs_held, only: held_slides
     implicit none
-    integer, intent(in) :: kind, nrec, static_all, ngrid, nmax
+    !f2py intent(hide) :: nrec, ngrid
+    integer, intent(in) :: kind, nrec, static_all, ngrid
     real(dp), intent(in) :: params(9), accel(nrec), dt, ay_fwd, ay_rev, sfac, tg(ngrid)
-    real(dp), intent(out) :: ug(ngrid), wg(ngrid), slides(nmax, 8), summary(4)
+    real(dp), intent(out) :: ug(ngrid), wg(ngrid)
+    real(dp), intent(out) :: u_final, u_max, u_min, t_end
     integer, intent(out) :: nslides, stat
     character(len=256), intent(out) :: errmsg
     type(friction_t) :: fr
     type(stickslip_result_t) :: res
-    integer :: i
     errmsg = ''
-    slides = 0.0_dp
-    summary = 0.0_dp
+    if (allocated(held_slides)) deallocate(held_slides)
+    u_final = 0.0_dp
+    u_max = 0.0_dp
+    u_min = 0.0_dp
+    t_end = 0.0_dp
     ug = 0.0_dp
     wg = 0.0_dp
     nslides = 0
@@ -420,81 +290,16 @@ subroutine sp_stickslip(kind, params, nrec, accel, dt, ay_fwd, ay_rev, sfac, sta
     end if
     if (stat /= SEISPULSE_SUCCESS) return
     nslides = size(res%slides)
-    do i = 1, min(nslides, nmax)
-        associate (s => res%slides(i))
-            slides(i, :) = [real(s%direction, dp), s%t_start, s%t_stop, s%u_start, s%u_stop, &
-                            s%w_peak, s%t_peak, merge(1.0_dp, 0.0_dp, s%from_slip)]
-        end associate
-    end do
-    summary = [res%u_final, res%u_max, res%u_min, res%t_end]
+    call move_alloc(res%slides, held_slides)
+    u_final = res%u_final
+    u_max = res%u_max
+    u_min = res%u_min
+    t_end = res%t_end
 end subroutine sp_stickslip
 
 ! ---------------------------------------------------------------------------------
 ! Rocking blocks: linearized closed forms (seispulse_rocking_closed)
 ! ---------------------------------------------------------------------------------
-
-!> Everything of the first excursion per case: region, tau_up, tau_c, tau_m, psi_max, tau_i.
-subroutine sp_rocking_summary(n, f, eta, beta, region, out, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_rocking_closed, only: rocking_summary
-    implicit none
-    integer, intent(in) :: n
-    real(dp), intent(in) :: f(n), eta(n), beta(n)
-    integer, intent(out) :: region(n)
-    real(dp), intent(out) :: out(n, 5)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call rocking_summary(f(i), eta(i), beta(i), region(i), out(i, 1), out(i, 2), out(i, 3), &
-                             out(i, 4), out(i, 5), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_rocking_summary
-
-!> Region and theta_max/alpha per case (the fast path of classify and max_rotation).
-subroutine sp_rocking_extremes(n, f, eta, beta, region, psi_max, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_rocking_closed, only: rocking_extremes
-    implicit none
-    integer, intent(in) :: n
-    real(dp), intent(in) :: f(n), eta(n), beta(n)
-    integer, intent(out) :: region(n)
-    real(dp), intent(out) :: psi_max(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call rocking_extremes(f(i), eta(i), beta(i), region(i), psi_max(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_rocking_extremes
-
-!> psi and dpsi of the first excursion at the times tau (one f, eta, beta per point).
-subroutine sp_rocking_response(n, tau, f, eta, beta, psi, dpsi, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_rocking_closed, only: rocking_response
-    implicit none
-    integer, intent(in) :: n
-    real(dp), intent(in) :: tau(n), f(n), eta(n), beta(n)
-    real(dp), intent(out) :: psi(n), dpsi(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        call rocking_response(tau(i), f(i), eta(i), beta(i), psi(i), dpsi(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_rocking_response
 
 !> Boundaries in the (f, eta) plane and their inverses, per element. which: 1 uplift time
 !> (x = eta), 2 stability wall (x = f), 3 its inverse (x = eta), 4 overturn boundary at the
@@ -505,6 +310,7 @@ subroutine sp_rocking_curve(n, which, x, beta, y, stat, errmsg)
     use seispulse_rocking_closed, only: uplift_time, stability_wall, stability_wall_inverse, &
                                  overturn_boundary, overturn_boundary_inverse, s1_s2_boundary
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n, which
     real(dp), intent(in) :: x(n), beta(n)
     real(dp), intent(out) :: y(n)
@@ -542,6 +348,7 @@ subroutine sp_rocking_rect_normalized(n, fbar, eta, out)
     use seispulse_rocking_closed, only: rect_time_of_max_normalized, rect_max_rotation_normalized, &
                                  rect_impact_time_normalized
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: fbar(n), eta(n)
     real(dp), intent(out) :: out(n, 3)
@@ -555,85 +362,95 @@ end subroutine sp_rocking_rect_normalized
 ! ---------------------------------------------------------------------------------
 
 !> Block properties: which = 1 rectangle (x = b, y = h), 2 symmetric body (x = R,
-!> y = alpha, z = I_o/(m R^2)); out = alpha, p, e, R.
-subroutine sp_rocking_block(which, x, y, z, g, out, stat, errmsg)
+!> y = alpha, z = I_o/(m R^2)).
+subroutine sp_rocking_block(which, x, y, z, g, alpha, p, e, r, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_rocking_sim, only: rocking_block_t, rectangular_block, symmetric_block
     implicit none
     integer, intent(in) :: which
     real(dp), intent(in) :: x, y, z, g
-    real(dp), intent(out) :: out(4)
+    real(dp), intent(out) :: alpha, p, e, r
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg
     type(rocking_block_t) :: blk
     errmsg = ''
-    out = 0.0_dp
     if (which == 1) then
         call rectangular_block(x, y, g, blk, stat, errmsg)
-        out(4) = hypot(x, y)
+        r = hypot(x, y)
     else
         call symmetric_block(x, y, z, g, blk, stat, errmsg)
-        out(4) = x
+        r = x
     end if
-    out(1:3) = [blk%alpha, blk%p, blk%e]
+    alpha = blk%alpha
+    p = blk%p
+    e = blk%e
 end subroutine sp_rocking_block
 
 !> One run under a pulse (kind > 0, params packed as in pulse_from_params) or a record
-!> (kind = 0: accel(nrec), dt). opts = t_max (<= 0: none), theta0, omega0, rtol (<= 0:
-!> the default).
-!> res = t_uplift, t_overturn, theta_max, theta_min, t_end, n_steps; impacts: the first
-!> min(n_imp, nmax) impact times.
-subroutine sp_rock(kind, params, nrec, accel, dt, blkv, linearized, opts, ngrid, tg, thg, omg, &
-                   nmax, impacts, n_imp, outcome, res, stat, errmsg)
+!> (kind = 0: accel(nrec), dt); the block is alpha, p, e, g; t_max only when has_t_max /= 0.
+!> The n_imp impact times are kept for sp_fetch_impacts.
+subroutine sp_rock(kind, params, nrec, accel, dt, alpha, p, e, g, linearized, has_t_max, t_max, &
+                   theta0, omega0, rtol, ngrid, tg, thg, omg, n_imp, outcome, t_uplift, &
+                   t_overturn, theta_max, theta_min, t_end, n_steps, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_pulses, only: pulse_from_params
     use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rock_pulse, rock_record
+    use sp_runs_held, only: held_impacts
     implicit none
-    integer, intent(in) :: kind, nrec, linearized, ngrid, nmax
-    real(dp), intent(in) :: params(9), accel(nrec), dt, blkv(4), opts(4), tg(ngrid)
-    real(dp), intent(out) :: thg(ngrid), omg(ngrid), impacts(nmax), res(6)
-    integer, intent(out) :: n_imp, outcome, stat
+    !f2py intent(hide) :: nrec, ngrid
+    integer, intent(in) :: kind, nrec, linearized, has_t_max, ngrid
+    real(dp), intent(in) :: params(9), accel(nrec), dt, alpha, p, e, g, t_max, theta0, omega0, &
+                            rtol, tg(ngrid)
+    real(dp), intent(out) :: thg(ngrid), omg(ngrid)
+    real(dp), intent(out) :: t_uplift, t_overturn, theta_max, theta_min, t_end
+    integer, intent(out) :: n_imp, outcome, n_steps, stat
     character(len=256), intent(out) :: errmsg
     type(rocking_block_t) :: blk
     type(rocking_run_t) :: run
-    real(dp) :: t_max, rtol
+    real(dp) :: t_lim
     errmsg = ''
     thg = 0.0_dp
     omg = 0.0_dp
-    impacts = 0.0_dp
-    res = 0.0_dp
+    if (allocated(held_impacts)) deallocate(held_impacts)
+    t_uplift = 0.0_dp
+    t_overturn = 0.0_dp
+    theta_max = 0.0_dp
+    theta_min = 0.0_dp
+    t_end = 0.0_dp
+    n_steps = 0
     n_imp = 0
     outcome = 0
-    blk = rocking_block_t(alpha=blkv(1), p=blkv(2), e=blkv(3), g=blkv(4), &
-                          linearized=linearized /= 0)
-    t_max = huge(1.0_dp)
-    if (opts(1) > 0.0_dp) t_max = opts(1)
-    rtol = 1.0e-12_dp
-    if (opts(4) > 0.0_dp) rtol = opts(4)
+    blk = rocking_block_t(alpha=alpha, p=p, e=e, g=g, linearized=linearized /= 0)
+    t_lim = huge(1.0_dp)
+    if (has_t_max /= 0) t_lim = t_max
     if (kind > 0) then
         if (ngrid > 0) then
             call rock_pulse(blk, pulse_from_params(kind, params), run, stat, errmsg, tg, thg, &
-                            omg, t_max=t_max, theta0=opts(2), omega0=opts(3), rtol=rtol)
+                            omg, t_max=t_lim, theta0=theta0, omega0=omega0, rtol=rtol)
         else
             call rock_pulse(blk, pulse_from_params(kind, params), run, stat, errmsg, &
-                            t_max=t_max, theta0=opts(2), omega0=opts(3), rtol=rtol)
+                            t_max=t_lim, theta0=theta0, omega0=omega0, rtol=rtol)
         end if
     else
         if (ngrid > 0) then
-            call rock_record(blk, accel, dt, run, stat, errmsg, tg, thg, omg, t_max=t_max, &
-                             theta0=opts(2), omega0=opts(3), rtol=rtol)
+            call rock_record(blk, accel, dt, run, stat, errmsg, tg, thg, omg, t_max=t_lim, &
+                             theta0=theta0, omega0=omega0, rtol=rtol)
         else
-            call rock_record(blk, accel, dt, run, stat, errmsg, t_max=t_max, theta0=opts(2), &
-                             omega0=opts(3), rtol=rtol)
+            call rock_record(blk, accel, dt, run, stat, errmsg, t_max=t_lim, theta0=theta0, &
+                             omega0=omega0, rtol=rtol)
         end if
     end if
     if (stat /= SEISPULSE_SUCCESS) return
     outcome = run%outcome
     n_imp = run%n_impacts
-    if (n_imp > 0) impacts(1:min(n_imp, nmax)) = run%t_impacts(1:min(n_imp, nmax))
-    res = [run%t_uplift, run%t_overturn, run%theta_max, run%theta_min, run%t_end, &
-           real(run%n_steps, dp)]
+    if (n_imp > 0) allocate(held_impacts, source=run%t_impacts(1:n_imp))
+    t_uplift = run%t_uplift
+    t_overturn = run%t_overturn
+    theta_max = run%theta_max
+    theta_min = run%theta_min
+    t_end = run%t_end
+    n_steps = run%n_steps
 end subroutine sp_rock
 
 !> Overturning map of a pulse family (template params packed as in pulse_from_params).
@@ -643,6 +460,7 @@ subroutine sp_overturning_map(alpha, e, kind, params, linearized, nf, freq, na, 
     use seispulse_pulses, only: pulse_from_params
     use seispulse_rocking_sim, only: overturning_map
     implicit none
+    !f2py intent(hide) :: nf, na
     integer, intent(in) :: kind, linearized, nf, na
     real(dp), intent(in) :: alpha, e, params(9), freq(nf), amp(na)
     integer, intent(out) :: classes(na, nf)
@@ -657,28 +475,34 @@ end subroutine sp_overturning_map
 ! Newmark rigid-block sliding on records (seispulse_newmark)
 ! ---------------------------------------------------------------------------------
 
-!> One analysis with histories and sliding intervals. nh = n for histories, else 1;
-!> the first min(nslides, nmax) intervals are returned (the caller asks again with a
-!> larger nmax when nslides > nmax). summary = max_disp, final_disp, u_max, u_min,
-!> max_vel, t_end.
+!> One analysis with histories and sliding intervals. nh = n for histories, else 1; the
+!> nslides intervals are kept for sp_fetch_slides.
 subroutine sp_newmark_rigid(n, accel, dt, mode, ky, ky_up, k_down, k_up, method, g, nh, &
-                            u_hist, w_hist, nmax, slides, nslides, summary, stat, errmsg)
+                            u_hist, w_hist, nslides, max_disp, final_disp, u_max, u_min, &
+                            max_vel, t_end, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid
+    use sp_runs_held, only: held_slides
     implicit none
-    integer, intent(in) :: n, mode, method, nh, nmax
+    !f2py intent(hide) :: n
+    integer, intent(in) :: n, mode, method, nh
     real(dp), intent(in) :: accel(n), dt, ky, ky_up, k_down, k_up, g
-    real(dp), intent(out) :: u_hist(nh), w_hist(nh), slides(nmax, 8), summary(6)
+    real(dp), intent(out) :: u_hist(nh), w_hist(nh)
+    real(dp), intent(out) :: max_disp, final_disp, u_max, u_min, max_vel, t_end
     integer, intent(out) :: nslides, stat
     character(len=256), intent(out) :: errmsg
     type(newmark_result_t) :: res
-    integer :: i
     errmsg = ''
+    if (allocated(held_slides)) deallocate(held_slides)
     u_hist = 0.0_dp
     w_hist = 0.0_dp
-    slides = 0.0_dp
-    summary = 0.0_dp
+    max_disp = 0.0_dp
+    final_disp = 0.0_dp
+    u_max = 0.0_dp
+    u_min = 0.0_dp
+    max_vel = 0.0_dp
+    t_end = 0.0_dp
     nslides = 0
     if (nh == n) then
         call newmark_rigid(accel, dt, newmark_block_t(mode, ky, ky_up, k_down, k_up), method, g, &
@@ -688,54 +512,116 @@ subroutine sp_newmark_rigid(n, accel, dt, mode, ky, ky_up, k_down, k_up, method,
                            res, stat, errmsg)
     end if
     if (stat /= SEISPULSE_SUCCESS) return
-    summary = [res%max_disp, res%final_disp, res%u_max, res%u_min, res%max_vel, res%t_end]
+    max_disp = res%max_disp
+    final_disp = res%final_disp
+    u_max = res%u_max
+    u_min = res%u_min
+    max_vel = res%max_vel
+    t_end = res%t_end
     nslides = size(res%slides)
-    do i = 1, min(nslides, nmax)
-        associate (s => res%slides(i))
-            slides(i, :) = [real(s%direction, dp), s%t_start, s%t_stop, s%u_start, s%u_stop, &
-                            s%w_peak, s%t_peak, merge(1.0_dp, 0.0_dp, s%from_slip)]
-        end associate
-    end do
+    call move_alloc(res%slides, held_slides)
 end subroutine sp_newmark_rigid
 
 !> Summaries for many blocks on one record (ky, ky_up, k_down, k_up of length nk).
 subroutine sp_newmark_rigid_many(n, accel, dt, mode, nk, ky, ky_up, k_down, k_up, method, g, &
-                                 summary, stat, errmsg)
+                                 max_disp, final_disp, u_max, u_min, max_vel, t_end, stat, &
+                                 errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid
     implicit none
+    !f2py intent(hide) :: n, nk
     integer, intent(in) :: n, mode, nk, method
     real(dp), intent(in) :: accel(n), dt, ky(nk), ky_up(nk), k_down(nk), k_up(nk), g
-    real(dp), intent(out) :: summary(nk, 6)
+    real(dp), intent(out) :: max_disp(nk), final_disp(nk), u_max(nk), u_min(nk), max_vel(nk), &
+                             t_end(nk)
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg
     type(newmark_result_t) :: res
     integer :: i
     errmsg = ''
-    summary = 0.0_dp
+    max_disp = 0.0_dp
+    final_disp = 0.0_dp
+    u_max = 0.0_dp
+    u_min = 0.0_dp
+    max_vel = 0.0_dp
+    t_end = 0.0_dp
     stat = SEISPULSE_SUCCESS
     do i = 1, nk
         call newmark_rigid(accel, dt, newmark_block_t(mode, ky(i), ky_up(i), k_down(i), k_up(i)), &
                            method, g, res, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        summary(i, :) = [res%max_disp, res%final_disp, res%u_max, res%u_min, res%max_vel, &
-                         res%t_end]
+        max_disp(i) = res%max_disp
+        final_disp(i) = res%final_disp
+        u_max(i) = res%u_max
+        u_min(i) = res%u_min
+        max_vel(i) = res%max_vel
+        t_end(i) = res%t_end
     end do
 end subroutine sp_newmark_rigid_many
 
 !> Yields and along-plane factors of a block on an incline (newmark_incline).
-subroutine sp_newmark_incline(mu, slope_deg, xi_deg, along_plane, out, stat, errmsg)
+subroutine sp_newmark_incline(mu, slope_deg, xi_deg, along_plane, ky, ky_up, k_down, k_up, &
+                              stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_newmark, only: newmark_block_t, newmark_incline
     implicit none
     real(dp), intent(in) :: mu, slope_deg, xi_deg
     integer, intent(in) :: along_plane
-    real(dp), intent(out) :: out(4)
+    real(dp), intent(out) :: ky, ky_up, k_down, k_up
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg
     type(newmark_block_t) :: blk
     errmsg = ''
     call newmark_incline(mu, slope_deg, xi_deg, along_plane /= 0, blk, stat, errmsg)
-    out = [blk%ky, blk%ky_up, blk%k_down, blk%k_up]
+    ky = blk%ky
+    ky_up = blk%ky_up
+    k_down = blk%k_down
+    k_up = blk%k_up
 end subroutine sp_newmark_incline
+
+!> The n intervals kept by the last sp_stickslip or sp_newmark_rigid run (then freed):
+!> direction +1/-1, times, displacements, peak velocity and its time, from_slip 0/1.
+subroutine sp_fetch_slides(n, direction, t_start, t_stop, u_start, u_stop, w_peak, t_peak, &
+                           from_slip)
+    use seispulse_kinds, only: dp
+    use sp_runs_held, only: held_slides
+    implicit none
+    integer, intent(in) :: n
+    integer, intent(out) :: direction(n), from_slip(n)
+    real(dp), intent(out) :: t_start(n), t_stop(n), u_start(n), u_stop(n), w_peak(n), t_peak(n)
+    integer :: i
+    direction = 0
+    from_slip = 0
+    t_start = 0.0_dp
+    t_stop = 0.0_dp
+    u_start = 0.0_dp
+    u_stop = 0.0_dp
+    w_peak = 0.0_dp
+    t_peak = 0.0_dp
+    if (.not. allocated(held_slides)) return
+    do i = 1, min(n, size(held_slides))
+        direction(i) = held_slides(i)%direction
+        t_start(i) = held_slides(i)%t_start
+        t_stop(i) = held_slides(i)%t_stop
+        u_start(i) = held_slides(i)%u_start
+        u_stop(i) = held_slides(i)%u_stop
+        w_peak(i) = held_slides(i)%w_peak
+        t_peak(i) = held_slides(i)%t_peak
+        from_slip(i) = merge(1, 0, held_slides(i)%from_slip)
+    end do
+    deallocate(held_slides)
+end subroutine sp_fetch_slides
+
+!> The n impact times kept by the last sp_rock run (then freed).
+subroutine sp_fetch_impacts(n, times)
+    use seispulse_kinds, only: dp
+    use sp_runs_held, only: held_impacts
+    implicit none
+    integer, intent(in) :: n
+    real(dp), intent(out) :: times(n)
+    times = 0.0_dp
+    if (.not. allocated(held_impacts)) return
+    times(1:min(n, size(held_impacts))) = held_impacts(1:min(n, size(held_impacts)))
+    deallocate(held_impacts)
+end subroutine sp_fetch_impacts

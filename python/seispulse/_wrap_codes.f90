@@ -81,6 +81,7 @@ subroutine sp_westergaard_pressure(n, kh, gamma_w, h_water, z, q, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_codes, only: westergaard_pressure
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: kh, gamma_w, h_water, z(n)
     real(dp), intent(out) :: q(n)
@@ -149,6 +150,7 @@ subroutine sp_ec8_damping_correction(n, xi_percent, eta, stat, errmsg)
     use seispulse_format, only: int_str
     use seispulse_codes, only: ec8_damping_correction, ec8_check_damping
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: xi_percent(n)
     real(dp), intent(out) :: eta(n)
@@ -173,6 +175,7 @@ subroutine sp_ec8_elastic_spectrum(n, periods, ag, spectrum_type, ground, xi_per
     use seispulse_kinds, only: dp
     use seispulse_codes, only: ec8_elastic_spectrum
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n, spectrum_type, ground
     real(dp), intent(in) :: periods(n), ag, xi_percent
     real(dp), intent(out) :: se(n)
@@ -188,6 +191,7 @@ subroutine sp_ec8_design_spectrum(n, periods, ag, spectrum_type, ground, q, beta
     use seispulse_kinds, only: dp
     use seispulse_codes, only: ec8_design_spectrum
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n, spectrum_type, ground
     real(dp), intent(in) :: periods(n), ag, q, beta
     real(dp), intent(out) :: sd(n)

@@ -90,6 +90,7 @@ subroutine sp_ground_motion(n, accel, dt, g, vel, disp, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_records, only: ground_motion
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: accel(n)
     real(dp), intent(in) :: dt, g

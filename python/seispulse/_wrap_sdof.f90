@@ -7,6 +7,7 @@ subroutine sp_sdof_response(n, accel, dt, period, damping, g, disp, vel, acc, st
     use seispulse_kinds, only: dp
     use seispulse_sdof_sim, only: sdof_response
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: accel(n), dt, period, damping, g
     real(dp), intent(out) :: disp(n), vel(n), acc(n)
@@ -23,6 +24,7 @@ subroutine sp_sdof_spectrum(n, accel, dt, np, periods, nd, dampings, g, peaks, t
     use seispulse_kinds, only: dp
     use seispulse_sdof_sim, only: sdof_spectrum, pseudo_spectra
     implicit none
+    !f2py intent(hide) :: n, np, nd
     integer, intent(in) :: n, np, nd
     real(dp), intent(in) :: accel(n), dt, periods(np), dampings(nd), g
     integer, intent(in) :: peaks, threads
@@ -58,6 +60,7 @@ subroutine sp_design_envelope(np, ns, periods, spectra, plateau_below, env, stat
     use seispulse_kinds, only: dp
     use seispulse_sdof_sim, only: design_envelope
     implicit none
+    !f2py intent(hide) :: np, ns
     integer, intent(in) :: np, ns
     real(dp), intent(in) :: periods(np), spectra(np, ns), plateau_below
     real(dp), intent(out) :: env(np)
@@ -73,6 +76,7 @@ subroutine sp_spectral_shape(np, periods, psa, pga, shape, t_peak, peak, stat, e
     use seispulse_kinds, only: dp
     use seispulse_sdof_sim, only: spectral_shape
     implicit none
+    !f2py intent(hide) :: np
     integer, intent(in) :: np
     real(dp), intent(in) :: periods(np), psa(np), pga
     real(dp), intent(out) :: shape(np), t_peak, peak

@@ -2,34 +2,13 @@
 !> subroutines, explicit-shape arrays, int flags, `stat` + `errmsg` out, no numerics.
 !> Pulses arrive as (kind, params(9)) packed as in pulse_from_params.
 
-!> Dynamic coefficient per (ratio, gamma) pair; model 1 hysteretic, 2 viscous.
-subroutine sp_dynamic_coefficient(n, ratio, gamma, model, beta, beta_cos, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sdof_closed, only: dynamic_coefficient
-    implicit none
-    integer, intent(in) :: n, model
-    real(dp), intent(in) :: ratio(n), gamma(n)
-    real(dp), intent(out) :: beta(n), beta_cos(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    beta = 0.0_dp
-    beta_cos = 0.0_dp
-    do i = 1, n
-        call dynamic_coefficient(ratio(i), gamma(i), model, beta(i), stat, errmsg, beta_cos(i))
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_dynamic_coefficient
-
 !> Harmonic base motion; law 1 sine, 2 cosine; transient 0/1.
 subroutine sp_harmonic_response(n, t, w0, period, ratio, damping, law, transient, z, v, a, &
                                 stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_sdof_closed, only: harmonic_response
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n, law, transient
     real(dp), intent(in) :: t(n), w0, period, ratio, damping
     real(dp), intent(out) :: z(n), v(n), a(n)
@@ -45,6 +24,7 @@ subroutine sp_rect_pulse_response(n, t, w0, t1, period, z, v, a, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_sdof_closed, only: rect_pulse_response
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: t(n), w0, t1, period
     real(dp), intent(out) :: z(n), v(n), a(n)
@@ -54,54 +34,12 @@ subroutine sp_rect_pulse_response(n, t, w0, t1, period, z, v, a, stat, errmsg)
     call rect_pulse_response(t, w0, t1, period, z, v, a, stat, errmsg)
 end subroutine sp_rect_pulse_response
 
-!> Pulse dynamic coefficient per t1/T; variant 1 textbook, 2 exact.
-subroutine sp_beta_pulse(n, x, variant, beta, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sdof_closed, only: beta_pulse
-    implicit none
-    integer, intent(in) :: n, variant
-    real(dp), intent(in) :: x(n)
-    real(dp), intent(out) :: beta(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    beta = 0.0_dp
-    do i = 1, n
-        call beta_pulse(x(i), variant, beta(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_beta_pulse
-
-!> Impulse maximum per (jw, period, damping).
-subroutine sp_impulse_max(n, jw, period, damping, zmax, tmax, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sdof_closed, only: impulse_max
-    implicit none
-    integer, intent(in) :: n
-    real(dp), intent(in) :: jw(n), period(n), damping(n)
-    real(dp), intent(out) :: zmax(n), tmax(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    zmax = 0.0_dp
-    tmax = 0.0_dp
-    do i = 1, n
-        call impulse_max(jw(i), period(i), damping(i), zmax(i), tmax(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_impulse_max
-
 !> Response to an instantaneous acceleration impulse.
 subroutine sp_impulse_response(n, t, jw, period, damping, z, v, a, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_sdof_closed, only: impulse_response
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: t(n), jw, period, damping
     real(dp), intent(out) :: z(n), v(n), a(n)
@@ -117,6 +55,7 @@ subroutine sp_sdof_pulse_response(kind, params, period, damping, n, t, z, v, a, 
     use seispulse_pulses, only: pulse_from_params
     use seispulse_sdof_closed, only: sdof_pulse_response
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: kind, n
     real(dp), intent(in) :: params(9), period, damping, t(n)
     real(dp), intent(out) :: z(n), v(n), a(n)
@@ -150,6 +89,7 @@ subroutine sp_sdof_pulse_spectrum(kind, params, n, periods, damping, sd, sv, sa,
     use seispulse_pulses, only: pulse_from_params
     use seispulse_sdof_closed, only: sdof_pulse_spectrum
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: kind, n
     real(dp), intent(in) :: params(9), periods(n), damping
     real(dp), intent(out) :: sd(n), sv(n), sa(n), tsd(n), tsv(n), tsa(n)

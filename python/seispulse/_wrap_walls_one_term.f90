@@ -23,51 +23,13 @@ subroutine sp_ot_shape(shape, expo, a_oc, l_factor, mass_factor, s0, s1, h_ratio
     h_ratio = c%h_ratio
 end subroutine sp_ot_shape
 
-!> one_term at each omega_ratio(i): every field of one_term_t.
-subroutine sp_ot_solve(nw, omega_ratio, delta, nu, shape, expo, d_theta, l_over_h, q, m, &
-                       h_ratio, u_ff0, u0, theta, lam, flex, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_walls_one_term, only: one_term_t, one_term
-    implicit none
-    integer, intent(in) :: nw, shape
-    real(dp), intent(in) :: omega_ratio(nw), delta, nu, expo, d_theta, l_over_h
-    complex(dp), intent(out) :: q(nw), m(nw), u_ff0(nw), u0(nw), theta(nw), lam(nw), flex(nw)
-    real(dp), intent(out) :: h_ratio(nw)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    type(one_term_t) :: res
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    q = (0.0_dp, 0.0_dp)
-    m = q
-    u_ff0 = q
-    u0 = q
-    theta = q
-    lam = q
-    flex = q
-    h_ratio = 0.0_dp
-    do i = 1, nw
-        call one_term(omega_ratio(i), delta, nu, shape, expo, d_theta, l_over_h, res, stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-        q(i) = res%q
-        m(i) = res%m
-        h_ratio(i) = res%h_ratio
-        u_ff0(i) = res%u_ff0
-        u0(i) = res%u0
-        theta(i) = res%theta
-        lam(i) = res%lambda
-        flex(i) = res%flex
-    end do
-end subroutine sp_ot_solve
-
 !> one_term_pressure at heights y.
 subroutine sp_ot_pressure(omega_ratio, delta, nu, shape, expo, d_theta, l_over_h, ny, y, p, &
                           stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_walls_one_term, only: one_term_pressure
     implicit none
+    !f2py intent(hide) :: ny
     integer, intent(in) :: ny, shape
     real(dp), intent(in) :: omega_ratio, delta, nu, expo, d_theta, l_over_h, y(ny)
     complex(dp), intent(out) :: p(ny)
@@ -84,6 +46,7 @@ subroutine sp_ot_displacement(omega_ratio, delta, nu, shape, expo, d_theta, l_ov
     use seispulse_kinds, only: dp
     use seispulse_walls_one_term, only: one_term_displacement
     implicit none
+    !f2py intent(hide) :: np
     integer, intent(in) :: np, shape
     real(dp), intent(in) :: omega_ratio, delta, nu, expo, d_theta, l_over_h, x(np), y(np)
     complex(dp), intent(out) :: u(np)
@@ -94,33 +57,13 @@ subroutine sp_ot_displacement(omega_ratio, delta, nu, shape, expo, d_theta, l_ov
                                stat, errmsg)
 end subroutine sp_ot_displacement
 
-!> power_law_fundamental for each exponent.
-subroutine sp_ot_fundamental(nn, expo, w1, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_walls_one_term, only: power_law_fundamental
-    implicit none
-    integer, intent(in) :: nn
-    real(dp), intent(in) :: expo(nn)
-    real(dp), intent(out) :: w1(nn)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    w1 = 0.0_dp
-    do i = 1, nn
-        call power_law_fundamental(expo(i), w1(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_ot_fundamental
-
 !> power_law_cutoff alone, with the exponent checked (check_exponent).
 subroutine sp_ot_cutoff(nn, expo, wc, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_walls_one_term, only: power_law_cutoff, check_exponent
     implicit none
+    !f2py intent(hide) :: nn
     integer, intent(in) :: nn
     real(dp), intent(in) :: expo(nn)
     real(dp), intent(out) :: wc(nn)
@@ -137,86 +80,3 @@ subroutine sp_ot_cutoff(nn, expo, wc, stat, errmsg)
     end do
 end subroutine sp_ot_cutoff
 
-!> winkler_one_term at each omega_ratio(i).
-subroutine sp_ot_winkler(nw, omega_ratio, delta, nu, shape, expo, k, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_walls_one_term, only: winkler_one_term
-    implicit none
-    integer, intent(in) :: nw, shape
-    real(dp), intent(in) :: omega_ratio(nw), delta, nu, expo
-    complex(dp), intent(out) :: k(nw)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    k = (0.0_dp, 0.0_dp)
-    do i = 1, nw
-        call winkler_one_term(omega_ratio(i), delta, nu, shape, expo, k(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_ot_winkler
-
-!> winkler_dashpot at each omega_ratio(i).
-subroutine sp_ot_dashpot(nw, omega_ratio, nu, shape, expo, c, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_walls_one_term, only: winkler_dashpot
-    implicit none
-    integer, intent(in) :: nw, shape
-    real(dp), intent(in) :: omega_ratio(nw), nu, expo
-    real(dp), intent(out) :: c(nw)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    c = 0.0_dp
-    do i = 1, nw
-        call winkler_dashpot(omega_ratio(i), nu, shape, expo, c(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_ot_dashpot
-
-!> winkler_scott for each nu(i).
-subroutine sp_ot_scott(nn, nu, k, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_walls_one_term, only: winkler_scott
-    implicit none
-    integer, intent(in) :: nn
-    real(dp), intent(in) :: nu(nn)
-    real(dp), intent(out) :: k(nn)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    k = 0.0_dp
-    do i = 1, nn
-        call winkler_scott(nu(i), k(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_ot_scott
-
-!> winkler_vy (mode j) at each omega_ratio(i).
-subroutine sp_ot_vy_spring(mode, nw, omega_ratio, delta, nu, k, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_walls_one_term, only: winkler_vy
-    implicit none
-    integer, intent(in) :: mode, nw
-    real(dp), intent(in) :: omega_ratio(nw), delta, nu
-    complex(dp), intent(out) :: k(nw)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    k = (0.0_dp, 0.0_dp)
-    do i = 1, nw
-        call winkler_vy(mode, omega_ratio(i), delta, nu, k(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_ot_vy_spring

@@ -2,37 +2,6 @@
 !> factors of seispulse_walls_common: plain external subroutines, explicit-shape arrays,
 !> stat + errmsg out, no numerics.
 
-!> Compressibility factors psi_e, psi_o, psi_sigma, psi_v, psi_t per nu.
-subroutine sp_wall_psi(n, nu, psi_e, psi_o, psi_sigma, psi_v, psi_t, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_walls_common, only: wall_psi_t, wall_psi
-    implicit none
-    integer, intent(in) :: n
-    real(dp), intent(in) :: nu(n)
-    real(dp), intent(out) :: psi_e(n), psi_o(n), psi_sigma(n), psi_v(n), psi_t(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    type(wall_psi_t) :: psi
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    psi_e = 0.0_dp
-    psi_o = 0.0_dp
-    psi_sigma = 0.0_dp
-    psi_v = 0.0_dp
-    psi_t = 0.0_dp
-    do i = 1, n
-        call wall_psi(nu(i), psi, stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-        psi_e(i) = psi%e
-        psi_o(i) = psi%o
-        psi_sigma(i) = psi%sigma
-        psi_v(i) = psi%v
-        psi_t(i) = psi%t
-    end do
-end subroutine sp_wall_psi
-
 !> The first n free-field frequencies (rad/s) of a layer of height H (m), Vs (m/s).
 subroutine sp_free_field_frequencies(height, vs, n, omegas, stat, errmsg)
     use seispulse_kinds, only: dp
@@ -54,6 +23,7 @@ subroutine sp_vy_rigid(n, omega_ratio, delta, nu, tol, q, m, h_ratio, nterms, st
     use seispulse_format, only: int_str
     use seispulse_walls_vy, only: vy_rigid
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: omega_ratio(n), delta(n), nu(n), tol
     complex(dp), intent(out) :: q(n), m(n)
@@ -88,6 +58,7 @@ subroutine sp_vy_rigid_sweep(n, omega_ratios, delta, nu, tol, q, m, h_ratio, nte
     use seispulse_kinds, only: dp
     use seispulse_walls_vy, only: vy_rigid_sweep
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: omega_ratios(n), delta, nu, tol
     complex(dp), intent(out) :: q(n), m(n)
@@ -104,6 +75,7 @@ subroutine sp_vy_pressure(omega_ratio, delta, nu, n, y, tol, p, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_walls_vy, only: vy_pressure
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: omega_ratio, delta, nu, y(n), tol
     complex(dp), intent(out) :: p(n)
@@ -118,6 +90,7 @@ subroutine sp_vy_fields(omega_ratio, delta, nu, n, x, y, tol, u, v, sigma_x, tau
     use seispulse_kinds, only: dp
     use seispulse_walls_vy, only: vy_fields
     implicit none
+    !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: omega_ratio, delta, nu, x(n), y(n), tol
     complex(dp), intent(out) :: u(n), v(n), sigma_x(n), tau(n)

@@ -60,6 +60,7 @@ from collections import namedtuple
 import numpy as np
 
 from . import _core
+from . import _fortran_codes as _f
 from ._seispulse import (sp_ec8_damping_correction, sp_ec8_design_spectrum,
                          sp_ec8_elastic_spectrum, sp_ec8_ground_parameters, sp_ec8_r_factor,
                          sp_ec8_rigid_thrust, sp_ec8_seismic_coefficients, sp_ec8_thrust,
@@ -76,12 +77,18 @@ __all__ = ["WALL_TYPES", "WATER_CASES", "GROUND_TYPES", "MononobeOkabe", "Seismi
 #: EN 1998-5 Table 7.1 wall types: r = 2 (free gravity wall, displacement up to
 #: 300 alpha S mm), 1.5 (up to 200 alpha S mm), 1 (flexural RC walls, anchored or braced
 #: walls, RC walls on vertical piles, restrained basement walls, bridge abutments).
-WALL_TYPES = ("gravity_300", "gravity_200", "restrained")
+_WALL_CODES = {"gravity_300": _f.EC8_WALL_GRAVITY_300, "gravity_200": _f.EC8_WALL_GRAVITY_200,
+               "restrained": _f.EC8_WALL_RESTRAINED}
+WALL_TYPES = tuple(_WALL_CODES)
 #: EN 1998-5 Annex E water cases: dry (or water table below the wall); dynamically
 #: impervious soil below the water table; highly permeable soil below the water table.
-WATER_CASES = ("dry", "impervious", "permeable")
+_WATER_CODES = {"dry": _f.WATER_DRY, "impervious": _f.WATER_IMPERVIOUS,
+                "permeable": _f.WATER_PERMEABLE}
+WATER_CASES = tuple(_WATER_CODES)
 #: EN 1998-1 Table 3.1 ground types.
-GROUND_TYPES = ("A", "B", "C", "D", "E")
+_GROUND_CODES = {"A": _f.EC8_GROUND_A, "B": _f.EC8_GROUND_B, "C": _f.EC8_GROUND_C,
+                 "D": _f.EC8_GROUND_D, "E": _f.EC8_GROUND_E}
+GROUND_TYPES = tuple(_GROUND_CODES)
 
 MononobeOkabe = namedtuple("MononobeOkabe", ["k", "theta"])
 MononobeOkabe.__doc__ = """Mononobe-Okabe coefficient K (dimensionless; the thrust is
@@ -129,12 +136,11 @@ def _ground(value):
     if not isinstance(value, str) or value.strip().upper() not in GROUND_TYPES:
         raise InvalidInputError(f"ground = {value!r}: unknown ground type (allowed: "
                                 "'A', 'B', 'C', 'D', 'E', EN 1998-1 Table 3.1)")
-    return GROUND_TYPES.index(value.strip().upper()) + 1
+    return _GROUND_CODES[value.strip().upper()]
 
 
-def _raise(stat, msg):
-    _core.raise_record_status(stat, msg, names={"periods": "periods", "z": "z",
-                                                "xi_percent": "xi_percent"})
+#: Fortran arrays whose elements name(i) errors give as the caller's name[i - 1].
+_INDEXED = ("accel", "periods", "z", "xi_percent")
 
 
 # ------------------------------------------------------------------ EN 1998-5 §7.3.2.2
@@ -179,7 +185,7 @@ def r_factor(wall_type):
     300 alpha S mm), 'gravity_200' -> 1.5 (up to 200 alpha S mm), 'restrained' -> 1.0
     (flexural RC walls, anchored or braced walls, RC walls on vertical piles, restrained
     basement walls, bridge abutments)."""
-    code = WALL_TYPES.index(_core.check_choice("wall_type", wall_type, WALL_TYPES)) + 1
+    code = _core.choice_code("wall_type", wall_type, _WALL_CODES)
     r, stat, msg = sp_ec8_r_factor(code)
     _core.raise_for_status(stat, msg)
     return float(r)
@@ -273,8 +279,8 @@ def earth_thrust(height, gamma, phi_deg, kh, kv, delta_deg=0.0, psi_deg=90.0, be
     Active thrust only; passive thrusts: :func:`mononobe_okabe` with ``passive=True``.
     Raises :class:`seispulse.NoSolutionError` when no wedge is in equilibrium.
     """
-    case = WATER_CASES.index(_core.check_choice("water", water, WATER_CASES)) + 1
-    if case == 3:
+    case = _core.choice_code("water", water, _WATER_CODES)
+    if case == _f.WATER_PERMEABLE:
         if gamma_d is None:
             raise InvalidInputError("gamma_d: the dry unit weight (kN/m^3, > 0) is required "
                                     "for water='permeable'")
@@ -316,7 +322,7 @@ def westergaard_pressure(kh, gamma_w, h_water, z):
     flat = np.ascontiguousarray(arr.reshape(-1))
     q, stat, msg = sp_westergaard_pressure(_scalar("kh", kh), _scalar("gamma_w", gamma_w),
                                            _scalar("h_water", h_water), flat)
-    _raise(stat, msg)
+    _core.raise_for_status(stat, msg, indexed=_INDEXED)
     return float(q[0]) if arr.shape == () else q.reshape(arr.shape)
 
 
@@ -369,7 +375,7 @@ def damping_correction(xi_percent):
     5 %, the floor 0.55 from xi = 28.06 %. Float or array like ``xi_percent``."""
     arr = _core.as_float_array("xi_percent", xi_percent)
     eta, stat, msg = sp_ec8_damping_correction(np.ascontiguousarray(arr.reshape(-1)))
-    _raise(stat, msg)
+    _core.raise_for_status(stat, msg, indexed=_INDEXED)
     return float(eta[0]) if arr.shape == () else eta.reshape(arr.shape)
 
 
@@ -404,7 +410,7 @@ def elastic_spectrum(periods, ag, spectrum_type=1, ground="A", xi_percent=5.0):
     xi = _scalar("xi_percent", xi_percent)
     se, stat, msg = sp_ec8_elastic_spectrum(t, _scalar("ag", ag), _spectrum_type(spectrum_type),
                                             _ground(ground), xi)
-    _raise(stat, msg)
+    _core.raise_for_status(stat, msg, indexed=_INDEXED)
     return float(se[0]) if shape == () else se.reshape(shape)
 
 
@@ -433,6 +439,6 @@ def design_spectrum(periods, ag, spectrum_type=1, ground="A", q=1.5, beta=0.2):
     sd, stat, msg = sp_ec8_design_spectrum(t, _scalar("ag", ag), _spectrum_type(spectrum_type),
                                            _ground(ground), _scalar("q", q),
                                            _scalar("beta", beta))
-    _raise(stat, msg)
+    _core.raise_for_status(stat, msg, indexed=_INDEXED)
     return float(sd[0]) if shape == () else sd.reshape(shape)
 

@@ -5,6 +5,8 @@ raises :class:`InvalidInputError`, a :class:`ValueError`, whose message starts w
 the parameter's name and states the allowed range.
 """
 
+from . import _fortran_codes as _f
+
 
 class SeispulseError(Exception):
     """Base class of every seispulse error."""
@@ -42,11 +44,11 @@ class NoSolutionError(SeispulseError, ValueError):
 
 #: Fortran status code (module seispulse_errors) -> exception class.
 STATUS_ERRORS = {
-    1: InvalidInputError,
-    2: SingularError,
-    3: ConvergenceError,
-    4: NoBracketError,
-    5: InternalError,
-    6: FileError,
-    7: NoSolutionError,
+    _f.SEISPULSE_INVALID_INPUT: InvalidInputError,
+    _f.SEISPULSE_SINGULAR: SingularError,
+    _f.SEISPULSE_NO_CONVERGENCE: ConvergenceError,
+    _f.SEISPULSE_NO_BRACKET: NoBracketError,
+    _f.SEISPULSE_INTERNAL: InternalError,
+    _f.SEISPULSE_IO: FileError,
+    _f.SEISPULSE_NO_SOLUTION: NoSolutionError,
 }

@@ -21,7 +21,9 @@ from collections import namedtuple
 import numpy as np
 
 from . import _core
-from ._seispulse import sp_newmark_incline, sp_newmark_rigid, sp_newmark_rigid_many
+from . import _fortran_codes as _f
+from ._seispulse import (sp_fetch_slides, sp_newmark_incline, sp_newmark_rigid,
+                         sp_newmark_rigid_many)
 from .errors import InvalidInputError
 from .sliding import Slide
 
@@ -29,9 +31,11 @@ __all__ = ["MODES", "METHODS", "STANDARD_GRAVITY", "Incline", "Rigid", "Slide", 
            "rigid"]
 
 #: Sliding modes: one way downslope, two ways alike, two ways with ky_up.
-MODES = ("down", "both", "asym")
+_MODE_CODES = {"down": _f.NEWMARK_DOWN, "both": _f.NEWMARK_BOTH, "asym": _f.NEWMARK_ASYM}
+MODES = tuple(_MODE_CODES)
 #: Integration rules.
-METHODS = ("exact", "slammer")
+_METHOD_CODES = {"exact": _f.NEWMARK_EXACT, "slammer": _f.NEWMARK_SLAMMER}
+METHODS = tuple(_METHOD_CODES)
 #: Standard gravity (m/s^2), the default g.
 STANDARD_GRAVITY = 9.80665
 
@@ -68,9 +72,10 @@ def incline(mu, slope_deg, xi_deg=0.0, along_plane=True):
     slope_deg = _core.as_scalar("slope_deg", slope_deg)
     xi_deg = _core.as_scalar("xi_deg", xi_deg)
     along_plane = _core.check_bool("along_plane", along_plane)
-    out, stat, msg = sp_newmark_incline(mu, slope_deg, xi_deg, int(along_plane))
+    ky, ky_up, k_down, k_up, stat, msg = sp_newmark_incline(mu, slope_deg, xi_deg,
+                                                            int(along_plane))
     _core.raise_for_status(stat, msg)
-    return Incline(*map(float, out))
+    return Incline(ky=float(ky), ky_up=float(ky_up), k_down=float(k_down), k_up=float(k_up))
 
 
 def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
@@ -136,31 +141,29 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
         raise InvalidInputError(f"ky_up: only for mode='asym' (mode is {mode!r})")
     shape, arr = _core.broadcast(ky=ky, ky_up=np.inf if ky_up is None else ky_up,
                                  k_down=k_down, k_up=k_up)
-    mode_code = MODES.index(mode) + 1
-    method_code = METHODS.index(method) + 1
+    mode_code = _MODE_CODES[mode]
+    method_code = _METHOD_CODES[method]
     if shape != ():
         if history or intervals:
             raise InvalidInputError("history, intervals: only for a single ky")
         flat = [_core.flat(arr[k], shape) for k in ("ky", "ky_up", "k_down", "k_up")]
-        summary, stat, msg = sp_newmark_rigid_many(rec, step, mode_code, *flat, method_code, g)
-        _core.raise_record_status(stat, msg)
-        cols = [summary[:, j].reshape(shape) for j in range(6)]
-        return Rigid(*cols, None, None, None, None)
+        max_disp, final_disp, u_max, u_min, max_vel, t_end, stat, msg = sp_newmark_rigid_many(
+            rec, step, mode_code, *flat, method_code, g)
+        _core.raise_for_status(stat, msg, indexed=("accel",))
+        return Rigid(max_disp.reshape(shape), final_disp.reshape(shape), u_max.reshape(shape),
+                     u_min.reshape(shape), max_vel.reshape(shape), t_end.reshape(shape),
+                     None, None, None, None)
     scalars = [float(arr[k]) for k in ("ky", "ky_up", "k_down", "k_up")]
     nh = rec.size if history else 1
-    nmax = 64 if intervals else 0
-    while True:
-        u, w, slides, nslides, summary, stat, msg = sp_newmark_rigid(
-            rec, step, mode_code, *scalars, method_code, g, nh, nmax)
-        _core.raise_record_status(stat, msg)
-        if not intervals or nslides <= nmax:
-            break
-        nmax = nslides
-    out = None
-    if intervals:
-        out = [Slide(int(r[0]), *map(float, r[1:7]), bool(r[7])) for r in slides[:nslides]]
+    with _core.HELD_LOCK:
+        (u, w, nslides, max_disp, final_disp, u_max, u_min, max_vel, t_end, stat,
+         msg) = sp_newmark_rigid(rec, step, mode_code, *scalars, method_code, g, nh)
+        fields = sp_fetch_slides(nslides if stat == 0 and intervals else 0)
+    _core.raise_for_status(stat, msg, indexed=("accel",))
+    out = _core.slides(Slide, fields) if intervals else None
     time = disp = vel = None
     if history:
         time = np.arange(rec.size) * step
         disp, vel = u, w
-    return Rigid(*map(float, summary), time, disp, vel, out)
+    return Rigid(float(max_disp), float(final_disp), float(u_max), float(u_min), float(max_vel),
+                 float(t_end), time, disp, vel, out)

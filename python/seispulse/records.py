@@ -27,6 +27,7 @@ import threading
 import numpy as np
 
 from . import _core
+from . import _fortran_codes as _f
 from ._seispulse import sp_ground_motion, sp_pga_scale_factor, sp_record_fetch, sp_record_read
 from .errors import InvalidInputError
 
@@ -37,13 +38,18 @@ __all__ = ["STANDARD_GRAVITY", "FORMATS", "UNITS", "Record", "read", "from_array
 STANDARD_GRAVITY = 9.80665
 
 #: Format names accepted by :func:`read`, in the order of the Fortran RECORD_* codes.
-FORMATS = ("auto", "at2", "slammer", "column", "time_accel")
+_FORMAT_CODES = {"auto": _f.RECORD_AUTO, "at2": _f.RECORD_AT2, "slammer": _f.RECORD_SLAMMER,
+                 "column": _f.RECORD_COLUMN, "time_accel": _f.RECORD_TIME_ACCEL}
+FORMATS = tuple(_FORMAT_CODES)
+_FORMAT_NAMES = {code: name for name, code in _FORMAT_CODES.items()}
 
 #: Units of the values in a file or array (aliases: 'm/s^2', 'cm/s^2', 'gal').
 UNITS = ("g", "m/s2", "cm/s2")
 
-_UNIT_CODES = {"g": 1, "m/s2": 2, "m/s^2": 2, "cm/s2": 3, "cm/s^2": 3, "gal": 3}
-_UNIT_TO_G = {1: 1.0, 2: STANDARD_GRAVITY, 3: 100.0 * STANDARD_GRAVITY}
+_UNIT_CODES = {"g": _f.UNITS_G, "m/s2": _f.UNITS_M_S2, "m/s^2": _f.UNITS_M_S2,
+               "cm/s2": _f.UNITS_CM_S2, "cm/s^2": _f.UNITS_CM_S2, "gal": _f.UNITS_CM_S2}
+_UNIT_TO_G = {_f.UNITS_G: 1.0, _f.UNITS_M_S2: STANDARD_GRAVITY,
+              _f.UNITS_CM_S2: 100.0 * STANDARD_GRAVITY}
 
 # sp_record_read keeps the record in Fortran until sp_record_fetch: one reader at a time.
 _READ_LOCK = threading.Lock()
@@ -280,7 +286,7 @@ def read(path, fmt="auto", units=None, dt=None):
         raise InvalidInputError("path: empty")
     if b"\0" in raw:
         raise InvalidInputError(f"path = {fspath!r}: contains a NUL character")
-    code = FORMATS.index(_core.check_choice("fmt", fmt, FORMATS))
+    code = _core.choice_code("fmt", fmt, _FORMAT_CODES)
     ucode = 0 if units is None else _unit_code(units)
     step = 0.0 if dt is None else _core.check_positive("dt", dt, " (s)")
     with _READ_LOCK:
@@ -289,7 +295,7 @@ def read(path, fmt="auto", units=None, dt=None):
     _core.raise_for_status(stat, _text(msg))
     if npts < 1:  # the reader reports an empty file itself; a guard, not a path
         raise InvalidInputError(f"{os.fsdecode(fspath)}: no data")
-    return Record._trusted(accel, dt_out, _text(name), _text(title), t0, FORMATS[fmt_out],
+    return Record._trusted(accel, dt_out, _text(name), _text(title), t0, _FORMAT_NAMES[fmt_out],
                            os.fsdecode(fspath), 1.0)
 
 
@@ -299,6 +305,6 @@ def from_array(accel, dt, units="g", name="record"):
     STANDARD_GRAVITY or 100 STANDARD_GRAVITY, as the reader does)."""
     ucode = _unit_code(units)
     arr = _core.as_float_array("accel", accel)
-    if ucode != 1:
+    if ucode != _f.UNITS_G:
         arr = arr / _UNIT_TO_G[ucode]
     return Record(arr, dt, name=name)

@@ -22,7 +22,8 @@ from collections import namedtuple
 import numpy as np
 
 from . import _core
-from ._seispulse import (sp_overturning_map, sp_rock, sp_rocking_block, sp_rocking_curve,
+from . import _fortran_codes as _f
+from ._seispulse import (sp_fetch_impacts, sp_overturning_map, sp_rock, sp_rocking_block, sp_rocking_curve,
                          sp_rocking_extremes, sp_rocking_rect_normalized, sp_rocking_response,
                          sp_rocking_summary)
 from .errors import InvalidInputError
@@ -37,7 +38,8 @@ __all__ = ["REGIONS", "Response", "Summary", "uplift_time", "response", "summary
            "plot_overturning_map"]
 
 #: Regions of the (f, eta) plane, by code.
-REGIONS = ("no_rocking", "O1", "O2", "O3", "S1", "S2")
+REGIONS = _core.by_code({_f.ROCK_NONE: "no_rocking", _f.ROCK_O1: "O1", _f.ROCK_O2: "O2",
+                         _f.ROCK_O3: "O3", _f.ROCK_S1: "S1", _f.ROCK_S2: "S2"})
 
 Response = namedtuple("Response", ["psi", "dpsi"])
 Response.__doc__ = """First excursion: psi = theta/alpha and dpsi = (dtheta/dt)/(alpha p)."""
@@ -180,8 +182,11 @@ p = sqrt(m g R / I_o) (rad/s), restitution e (angular velocity ratio at an impac
 gravity g (m/s^2) and R, the distance from a base corner to the centre of mass (m)."""
 
 #: Outcomes of :func:`simulate`, by code.
-OUTCOMES = ("rest", "no_uplift", "overturn_no_impact", "overturn_one_impact",
-            "overturn_many_impacts", "time_limit")
+OUTCOMES = _core.by_code({_f.ROCK_RUN_REST: "rest", _f.ROCK_RUN_NO_UPLIFT: "no_uplift",
+                          _f.ROCK_RUN_OVERTURN_NO_IMPACT: "overturn_no_impact",
+                          _f.ROCK_RUN_OVERTURN_ONE_IMPACT: "overturn_one_impact",
+                          _f.ROCK_RUN_OVERTURN_MANY: "overturn_many_impacts",
+                          _f.ROCK_RUN_TIME_LIMIT: "time_limit"})
 
 #: Classes of :func:`overturning_map` cells, by value.
 MAP_CLASSES = ("safe", "overturns without impact", "overturns after one impact",
@@ -197,18 +202,19 @@ uplift (s, NaN if none), last outward crossing of |theta| = alpha before overtur
 t, theta(t) (rad) and omega(t) = theta'(t) (rad/s), else None."""
 
 
-def _block_tuple(out, g):
-    return Block(float(out[0]), float(out[1]), float(out[2]), float(g), float(out[3]))
+def _block_tuple(alpha, p, e, r, g):
+    return Block(float(alpha), float(p), float(e), float(g), float(r))
 
 
 def rectangular_block(b, h, g=STANDARD_GRAVITY, e=None):
     """Uniform rectangular block of half-width b and half-height h (m): alpha = atan(b/h),
     R = sqrt(b^2 + h^2), p = sqrt(3 g/(4 R)) and Housner's e = 1 - 1.5 sin^2(alpha)
     unless `e` is given."""
-    out, stat, msg = sp_rocking_block(1, _core.as_scalar("b", b), _core.as_scalar("h", h), 0.0,
-                                       _core.as_scalar("g", g))
+    alpha, p, e_h, r, stat, msg = sp_rocking_block(1, _core.as_scalar("b", b),
+                                                   _core.as_scalar("h", h), 0.0,
+                                                   _core.as_scalar("g", g))
     _core.raise_for_status(stat, msg)
-    blk = _block_tuple(out, g)
+    blk = _block_tuple(alpha, p, e_h, r, g)
     return blk if e is None else blk._replace(e=_restitution(e))
 
 
@@ -217,11 +223,12 @@ def symmetric_block(r, alpha, io_over_mr2, g=STANDARD_GRAVITY, e=None):
     corner to the centre of mass, slenderness alpha (rad) and I_o = io_over_mr2 m R^2
     about the corner (4/3 for a uniform rectangle): p = sqrt(g/(io_over_mr2 R)) and
     Housner's e = 1 - (2/io_over_mr2) sin^2(alpha) unless `e` is given."""
-    out, stat, msg = sp_rocking_block(2, _core.as_scalar("r", r), _core.as_scalar("alpha", alpha),
-                                       _core.as_scalar("io_over_mr2", io_over_mr2),
-                                       _core.as_scalar("g", g))
+    alpha, p, e_h, r, stat, msg = sp_rocking_block(2, _core.as_scalar("r", r),
+                                                   _core.as_scalar("alpha", alpha),
+                                                   _core.as_scalar("io_over_mr2", io_over_mr2),
+                                                   _core.as_scalar("g", g))
     _core.raise_for_status(stat, msg)
-    blk = _block_tuple(out, g)
+    blk = _block_tuple(alpha, p, e_h, r, g)
     return blk if e is None else blk._replace(e=_restitution(e))
 
 
@@ -268,21 +275,20 @@ def simulate(block, pulse=None, *, accel=None, dt=None, linearized=False, t=None
         kind, params, step = 0, np.zeros(9), _core.as_scalar("dt", dt)
     grid = np.zeros(0) if t is None else np.ascontiguousarray(
         _core.as_float_array("t", t).reshape(-1))
-    opts = np.array([-1.0 if t_max is None else _core.check_positive("t_max", t_max, " (s)"),
-                     _core.as_scalar("theta0", theta0), _core.as_scalar("omega0", omega0),
-                     _core.as_scalar("rtol", rtol)])
-    blkv = np.array([block.alpha, block.p, block.e, block.g])
-    nmax = 256
-    while True:
-        thg, omg, impacts, n_imp, outcome, res, stat, msg = sp_rock(
-            kind, params, rec, step, blkv, int(linearized), opts, grid, nmax)
-        _core.raise_for_status(stat, msg, rename={"t_grid": "t"})
-        if n_imp <= nmax:
-            break
-        nmax = n_imp
+    limit = t_max is not None
+    t_lim = _core.check_positive("t_max", t_max, " (s)") if limit else 0.0
+    theta0 = _core.as_scalar("theta0", theta0)
+    omega0 = _core.as_scalar("omega0", omega0)
+    rtol = _core.as_scalar("rtol", rtol)
+    with _core.HELD_LOCK:
+        (thg, omg, n_imp, outcome, t_uplift, t_overturn, theta_max, theta_min, t_end,
+         _, stat, msg) = sp_rock(kind, params, rec, step, block.alpha, block.p, block.e, block.g,
+                                 int(linearized), int(limit), t_lim, theta0, omega0, rtol, grid)
+        impacts = sp_fetch_impacts(n_imp if stat == 0 else 0)
+    _core.raise_for_status(stat, msg, rename={"t_grid": "t"})
     hist = (None, None, None) if t is None else (grid.copy(), thg.copy(), omg.copy())
-    return RockingRun(OUTCOMES[outcome], float(res[0]), float(res[1]), int(n_imp),
-                      impacts[:n_imp].copy(), float(res[2]), float(res[3]), float(res[4]),
+    return RockingRun(OUTCOMES[outcome], float(t_uplift), float(t_overturn), int(n_imp),
+                      impacts, float(theta_max), float(theta_min), float(t_end),
                       *hist)
 
 

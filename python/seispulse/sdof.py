@@ -30,6 +30,7 @@ from collections import namedtuple
 import numpy as np
 
 from . import _core, _sdof_pulse
+from . import _fortran_codes as _f
 from ._sdof_pulse import *  # noqa: F401,F403  (closed forms, seispulse.sdof.<name>)
 from ._seispulse import (sp_design_envelope, sp_sdof_response, sp_sdof_spectrum,
                          sp_sdof_threads, sp_spectral_shape)
@@ -41,7 +42,8 @@ __all__ = ["STANDARD_GRAVITY", "PEAKS", "Response", "Spectrum", "Shape", "respon
 #: Standard gravity (m/s^2), the default g.
 STANDARD_GRAVITY = 9.80665
 #: Where spectral maxima are sought: everywhere (exact) or at the samples only.
-PEAKS = ("exact", "samples")
+_PEAK_CODES = {"exact": _f.SDOF_PEAKS_EXACT, "samples": _f.SDOF_PEAKS_SAMPLES}
+PEAKS = tuple(_PEAK_CODES)
 
 Response = namedtuple("Response", ["time", "disp", "vel", "acc"])
 Response.__doc__ = """Response history of :func:`response` at the samples: time (s from the
@@ -66,7 +68,7 @@ largest value (s) and peak that value."""
 
 
 def _peaks_code(peaks):
-    return PEAKS.index(_core.check_choice("peaks", peaks, PEAKS)) + 1
+    return _core.choice_code("peaks", peaks, _PEAK_CODES)
 
 
 def _threads(threads):
@@ -113,7 +115,7 @@ def response(accel, dt=None, period=None, damping=0.05, g=STANDARD_GRAVITY):
     damping = _core.as_scalar("damping", damping)
     g = _core.as_scalar("g", g)
     disp, vel, acc, stat, msg = sp_sdof_response(rec, step, period, damping, g)
-    _core.raise_record_status(stat, msg)
+    _core.raise_for_status(stat, msg, indexed=("accel",))
     return Response(np.arange(rec.size) * step, disp, vel, acc)
 
 
@@ -166,7 +168,8 @@ def spectrum(accel, dt=None, periods=None, damping=0.05, g=STANDARD_GRAVITY, pea
     g = _core.as_scalar("g", g)
     out = sp_sdof_spectrum(rec, step, per, damp, g, _peaks_code(peaks), _threads(threads))
     *arrays, stat, msg = out
-    _core.raise_record_status(stat, msg, {"periods": "periods", "dampings": "damping"})
+    _core.raise_for_status(stat, msg, indexed={"accel": "accel", "periods": "periods",
+                                                       "dampings": "damping"})
     # (period, damping) -> (damping, period), squeezed as the inputs were given
     shaped = []
     for a in arrays:
@@ -213,7 +216,7 @@ def envelope(periods, spectra, plateau_below=0.0):
                                 f"(got {spec.shape})")
     plateau_below = _core.as_scalar("plateau_below", plateau_below)
     env, stat, msg = sp_design_envelope(per, np.asfortranarray(spec.T), plateau_below)
-    _core.raise_record_status(stat, msg, {"periods": "periods"})
+    _core.raise_for_status(stat, msg, indexed=("accel", "periods"))
     return env
 
 

@@ -19,9 +19,10 @@ from collections import namedtuple
 import numpy as np
 
 from . import _core
+from . import _fortran_codes as _f
 from ._seispulse import (sp_basic_lengths, sp_block, sp_characteristic_length,
-                         sp_eta_critical, sp_full_cycle, sp_half_cycle, sp_inclined,
-                         sp_limit_form, sp_stickslip, sp_table_1_2, sp_table_1_3,
+                         sp_eta_critical, sp_fetch_slides, sp_full_cycle, sp_half_cycle,
+                         sp_inclined, sp_limit_form, sp_stickslip, sp_table_1_2, sp_table_1_3,
                          sp_yield_time)
 from .errors import InvalidInputError
 from .pulse import STANDARD_GRAVITY, Pulse
@@ -34,10 +35,14 @@ __all__ = ["REGIMES", "MODES", "HalfCycle", "FullCycle", "Resistances", "BlockRe
 
 #: Regimes of a half-cycle slide, by code: no sliding, stop during the pulse
 #: (tau_m <= 1), stop after it.
-REGIMES = ("none", "forced", "free")
+REGIMES = _core.by_code({_f.SLIDING_REGIME_NONE: "none", _f.SLIDING_REGIME_FORCED: "forced",
+                         _f.SLIDING_REGIME_FREE: "free"})
 
 #: Full-cycle modes, by code (sliding.md sections 5 and 7).
-MODES = ("no_sliding", "unilateral", "stick", "slip", "stuck", "reverse_only")
+MODES = _core.by_code({_f.SLIDING_MODE_NO_SLIDING: "no_sliding",
+                       _f.SLIDING_MODE_UNILATERAL: "unilateral", _f.SLIDING_MODE_STICK: "stick",
+                       _f.SLIDING_MODE_SLIP: "slip", _f.SLIDING_MODE_STUCK: "stuck",
+                       _f.SLIDING_MODE_REVERSE_ONLY: "reverse_only"})
 
 HalfCycle = namedtuple("HalfCycle", ["tau_y", "tau_m", "regime", "um", "dugm", "vm"])
 HalfCycle.__doc__ = """Half-cycle response: onset tau_y and stop tau_m (t/t_d; NaN
@@ -114,7 +119,7 @@ def half_cycle(eta, beta, static_factor=1.0, method="closed"):
     HalfCycle
         tau_y, tau_m, regime, um, dugm, vm (see :class:`HalfCycle`).
     """
-    code = _METHODS.index(_core.check_choice("method", method, _METHODS))
+    code = int(_core.check_choice("method", method, _METHODS) == "integrator")
     shape, arr = _core.broadcast(eta=eta, beta=beta, static_factor=static_factor)
     tau_y, tau_m, regime, um, dugm, vm, stat, msg = sp_half_cycle(*_flat_all(shape, arr), code)
     _core.raise_for_status(stat, msg)
@@ -149,12 +154,14 @@ def full_cycle(eta1, beta, eta2=None, static_factor=1.0, static_reverse=False,
     if eta2 is None:
         eta2 = eta1
     static_reverse = _core.check_bool("static_reverse", static_reverse)
-    code = _METHODS.index(_core.check_choice("method", method, _METHODS))
+    code = int(_core.check_choice("method", method, _METHODS) == "integrator")
     shape, arr = _core.broadcast(eta1=eta1, eta2=eta2, beta=beta, static_factor=static_factor)
-    mode, out, stat, msg = sp_full_cycle(*_flat_all(shape, arr), int(static_reverse), code)
+    (mode, tau_y1, tau_m1, um1, tau_y2, tau_m2, um2, ures, vm1, vm2, stat,
+     msg) = sp_full_cycle(*_flat_all(shape, arr), int(static_reverse), code)
     _core.raise_for_status(stat, msg)
-    cols = _core.shaped(shape, *(np.ascontiguousarray(out[:, j]) for j in range(9)))
-    return FullCycle(_core.names(MODES, mode, shape), *cols)
+    return FullCycle(_core.names(MODES, mode, shape),
+                     *_core.shaped(shape, tau_y1, tau_m1, um1, tau_y2, tau_m2, um2, ures, vm1,
+                                   vm2))
 
 
 def inclined_resistances(mu, ag_over_g, slope_deg, xi_deg=0.0):
@@ -196,12 +203,13 @@ def block(mu, ag_over_g, td, beta, full=False, slope_deg=0.0, xi_deg=0.0, static
                                  slope_deg=slope_deg, xi_deg=xi_deg,
                                  static_factor=static_factor)
     f = dict(zip(arr, _flat_all(shape, arr)))
-    mode, out, stat, msg = sp_block(f["mu"], f["ag_over_g"], f["td"], f["beta"], int(full),
-                                    f["slope_deg"], f["xi_deg"], f["static_factor"],
-                                    int(static_reverse), int(along_plane), g)
+    (mode, eta1, eta2, t_y1, t_m1, u_m1, t_y2, t_m2, u_m2, u_res, v_m1, v_m2, stat,
+     msg) = sp_block(f["mu"], f["ag_over_g"], f["td"], f["beta"], int(full), f["slope_deg"],
+                     f["xi_deg"], f["static_factor"], int(static_reverse), int(along_plane), g)
     _core.raise_for_status(stat, msg, rename={"ag": "ag_over_g"})
-    cols = _core.shaped(shape, *(np.ascontiguousarray(out[:, j]) for j in range(11)))
-    return BlockResponse(_core.names(MODES, mode, shape), *cols)
+    return BlockResponse(_core.names(MODES, mode, shape),
+                         *_core.shaped(shape, eta1, eta2, t_y1, t_m1, u_m1, t_y2, t_m2, u_m2,
+                                       u_res, v_m1, v_m2))
 
 
 # ------------------------------------------------------------ stick/slip, regressions
@@ -402,24 +410,20 @@ def simulate(pulse=None, ay=None, *, accel=None, dt=None, ay_rev=None, static_fa
             raise InvalidInputError("pulse: must be a seispulse.pulse.Pulse from "
                                     "seispulse.pulse.define()")
         kind, params, rec, step = pulse.code, np.asarray(pulse.params, float), np.zeros(1), 1.0
-        nmax = 64
     else:
         rec = np.ascontiguousarray(_core.as_float_array("accel", accel).reshape(-1))
         if dt is None:
             raise InvalidInputError("dt: must be the time step (> 0) of accel")
         step = _core.as_scalar("dt", dt)
         kind, params = 0, np.zeros(9)
-        nmax = rec.size + 2
     grid = np.zeros(0) if t is None else np.ascontiguousarray(
         _core.as_float_array("t", t).reshape(-1))
-    while True:
-        ug, wg, slides, nslides, summary, stat, msg = sp_stickslip(
-            kind, params, rec, step, ay, ay_rev, static_factor, int(static_all), grid, nmax)
-        _core.raise_for_status(stat, msg, rename={"ay_fwd": "ay", "t_grid": "t"})
-        if nslides <= nmax:
-            break
-        nmax = nslides
-    out = [Slide(int(r[0]), *map(float, r[1:7]), bool(r[7])) for r in slides[:nslides]]
+    with _core.HELD_LOCK:
+        ug, wg, nslides, u_final, u_max, u_min, t_end, stat, msg = sp_stickslip(
+            kind, params, rec, step, ay, ay_rev, static_factor, int(static_all), grid)
+        fields = sp_fetch_slides(nslides if stat == 0 else 0)
+    _core.raise_for_status(stat, msg, rename={"ay_fwd": "ay", "t_grid": "t"})
+    out = _core.slides(Slide, fields)
     hist = (None, None, None) if t is None else (grid.copy(), ug.copy(), wg.copy())
-    return Simulation(out, *map(float, summary), *hist)
+    return Simulation(out, float(u_final), float(u_max), float(u_min), float(t_end), *hist)
 

@@ -55,7 +55,7 @@ def _case(height, gamma, phi_deg, kh, kv, alpha_s, wall_friction_deg, psi_deg, b
     """The scalars of the Fortran wall_case_t, checked for type."""
     s = _core.as_scalar
     n = s("n", n)
-    water_code = codes.WATER_CASES.index(_core.check_choice("water", water, codes.WATER_CASES)) + 1
+    water_code = _core.choice_code("water", water, codes._WATER_CODES)
     shape_code = _walls_one_term._shape_code(shape, n)
     alpha_s = kh if alpha_s is None else alpha_s
     gamma_d = 0.0 if gamma_d is None else gamma_d

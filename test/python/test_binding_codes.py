@@ -1,0 +1,78 @@
+"""Named Fortran codes reach Python from the sources (gen_binding.py codes)."""
+
+import importlib.util
+import os
+from pathlib import Path
+
+import pytest
+
+from seispulse import _fortran_codes, errors, records, rocking, sliding
+
+ROOT = Path(os.environ.get("SEISPULSE_SOURCE_ROOT", Path(__file__).resolve().parents[2]))
+GEN = ROOT / "python" / "seispulse" / "gen_binding.py"
+
+
+@pytest.fixture(scope="module")
+def gen():
+    spec = importlib.util.spec_from_file_location("gen_binding", GEN)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_parameters_with_continuations_comments_and_conflicts(gen, tmp_path):
+    a = tmp_path / "a.f90"
+    a.write_text("module a\n"
+                 "    integer, parameter :: A_ONE = 1, A_TWO = 2, &  !! two codes\n"
+                 "                          A_THREE = -3\n"
+                 "    integer, parameter :: n_local = 40  ! a limit, not a code\n"
+                 "    integer, parameter :: SAME = 5\n"
+                 "    real(dp), parameter :: A_REAL = 1.0_dp\n"
+                 "end module a\n")
+    b = tmp_path / "b.f90"
+    b.write_text("module b\n    integer, parameter :: SAME = 6, OTHER = 7\nend module b\n")
+    found = gen.integer_parameters([a, b], upper_only=True)
+    assert found == {"A_ONE": 1, "A_TWO": 2, "A_THREE": -3, "SAME": None, "OTHER": 7}
+    assert gen.integer_parameters([a])["N_LOCAL"] == 40
+
+
+def test_library_codes_reach_python():
+    assert _fortran_codes.SEISPULSE_SUCCESS == 0
+    assert errors.STATUS_ERRORS[_fortran_codes.SEISPULSE_IO] is errors.FileError
+    assert rocking.REGIONS[_fortran_codes.ROCK_S2] == "S2"
+    assert rocking.OUTCOMES[_fortran_codes.ROCK_RUN_TIME_LIMIT] == "time_limit"
+    assert sliding.MODES[_fortran_codes.SLIDING_MODE_REVERSE_ONLY] == "reverse_only"
+    assert records.FORMATS == ("auto", "at2", "slammer", "column", "time_accel")
+
+
+def test_loop_wrapper_from_its_description(gen):
+    spec = ("!> doc\n"
+            "sp_demo(x, flag:int, s:real, >y, >k:int, >z(3))\n"
+            "    some_module: demo(x, flag /= 0, s, y, k, z(2), z, stat, errmsg)\n")
+    (entry,) = gen.loop_entries(spec)
+    text = gen.loop_routine(*entry)
+    assert text.splitlines()[:2] == ["!> doc",
+                                     "subroutine sp_demo(n, x, flag, s, y, k, z, stat, errmsg)"]
+    for line in ("    real(dp), intent(in) :: x(n)", "    integer, intent(in) :: flag",
+                 "    real(dp), intent(in) :: s", "    real(dp), intent(out) :: y(n)",
+                 "    integer, intent(out) :: k(n)", "    real(dp), intent(out) :: z(n, 3)",
+                 "    !f2py intent(hide) :: n", "    y = 0.0_dp", "    k = 0",
+                 "        call demo(x(i), flag /= 0, s, y(i), k(i), z(i, 2), z(i, :), stat, errmsg)",
+                 "        if (stat /= SEISPULSE_SUCCESS) return"):
+        assert line in text.splitlines()
+    assert max(map(len, text.splitlines())) <= 100
+
+
+def test_loop_wrapper_with_a_derived_type_result(gen):
+    spec = ("sp_demo(x, flag:int,\n"
+            "        >a=r%a, >k:int=r%k)\n"
+            "    some_module: demo(x, flag, r, stat, errmsg)\n"
+            "    type(demo_t) :: r\n")
+    (entry,) = gen.loop_entries(spec)
+    lines = gen.loop_routine(*entry).splitlines()
+    assert lines[0] == "subroutine sp_demo(n, x, flag, a, k, stat, errmsg)"
+    assert "    use some_module, only: demo_t, demo" in lines
+    assert "    type(demo_t) :: r" in lines
+    call = lines.index("        call demo(x(i), flag, r, stat, errmsg)")
+    assert lines[call + 1:call + 4] == ["        if (stat /= SEISPULSE_SUCCESS) return",
+                                        "        a(i) = r%a", "        k(i) = r%k"]
