@@ -14,8 +14,9 @@ program seispulse_driver
     use driver_sliding, only: run_sliding, sliding_groups
     use driver_rocking, only: run_rocking, rocking_groups
     use driver_newmark, only: run_newmark, newmark_groups, NEWMARK_ROWS_FAILED
-    use driver_sdof, only: run_sdof, sdof_groups, SDOF_ROWS_FAILED, run_sdof_beta, &
-                           sdof_beta_groups, run_sdof_shock, sdof_shock_groups
+    use driver_sdof, only: run_sdof, sdof_groups, SDOF_ROWS_FAILED
+    use driver_sdof_beta, only: run_sdof_beta, sdof_beta_groups
+    use driver_sdof_shock, only: run_sdof_shock, sdof_shock_groups
     use driver_walls, only: run_walls, walls_groups
     use driver_run_group, only: run_analysis, run_output, read_run, run_keys, write_run
     implicit none
