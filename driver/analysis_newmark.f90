@@ -25,11 +25,11 @@ module driver_newmark
                                  newmark_method_name, NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, &
-                            list_length, list_item
+                            list_length, list_item, value_name, num
     use driver_tables, only: write_tables
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
-                              path_len, value_name, num
+                              path_len
     implicit none
     private
 

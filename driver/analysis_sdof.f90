@@ -28,11 +28,11 @@ module driver_sdof
     use seispulse_sdof_sim, only: sdof_spectrum, pseudo_spectra, sdof_response, design_envelope, &
                               spectral_shape, SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES
     use driver_namelist_scan, only: nml_group
-    use driver_input, only: find_group, located, join, read_optional, given, list_item
+    use driver_input, only: find_group, located, join, read_optional, given, list_item, &
+                            name_index, num
     use driver_tables, only: write_tables, delete_files
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
-                              read_records, check_records, echo_records, load_record, report, &
-                              name_index, num
+                              read_records, check_records, echo_records, load_record, report
     use driver_sdof_common, only: max_periods, max_dampings, check_dampings, axis_values
     implicit none
     private

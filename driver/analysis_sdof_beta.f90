@@ -13,9 +13,9 @@ module driver_sdof_beta
     use seispulse_checks, only: outside
     use seispulse_sdof_closed, only: dynamic_coefficient, BETA_HYSTERETIC, BETA_VISCOUS
     use driver_namelist_scan, only: nml_group
-    use driver_input, only: find_group, located, join, read_optional, given, list_length
+    use driver_input, only: find_group, located, join, read_optional, given, list_length, &
+                            name_index, value_name, num
     use driver_tables, only: write_tables
-    use driver_records, only: name_index, value_name, num
     use driver_sdof_common, only: max_periods, max_dampings, axis_values
     implicit none
     private

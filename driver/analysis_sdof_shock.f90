@@ -15,11 +15,10 @@ module driver_sdof_shock
     use seispulse_sdof_closed, only: sdof_pulse_spectrum, pulse_peak_accel
     use seispulse_pulses, only: pulse_kind_name, PULSE_RICKER, PULSE_MP
     use driver_namelist_scan, only: nml_group
-    use driver_input, only: find_group, located, read_optional, given
+    use driver_input, only: find_group, located, read_optional, given, value_name, num
     use driver_tables, only: write_tables
     use driver_pulse_group, only: pulse_input_t, read_pulse_group, build_pulse, &
                                   write_pulse_group
-    use driver_records, only: value_name, num
     use driver_sdof_common, only: max_periods, max_dampings, check_dampings, axis_values
     implicit none
     private

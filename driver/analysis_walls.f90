@@ -24,8 +24,7 @@ module driver_walls
                                     wall_pressure_profile, wall_row_label, WALL_ROWS, &
                                     WALL_PROFILE_COLUMNS
     use driver_namelist_scan, only: nml_group
-    use driver_records, only: name_index
-    use driver_input, only: find_group, located, join, read_optional, given
+    use driver_input, only: find_group, located, join, read_optional, given, name_index
     use driver_tables, only: write_tables, delete_files
     implicit none
     private

@@ -11,18 +11,19 @@ module driver_records
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_format, only: real_str, int_str
+    use seispulse_format, only: int_str
     use seispulse_records, only: record_t, read_record, record_pga, pga_scale_factor, &
                                  record_format_name, record_units_name, RECORD_AUTO, &
                                  RECORD_COLUMN, UNITS_G, UNITS_M_S2, UNITS_CM_S2
-    use driver_namelist_scan, only: nml_group, lower
-    use driver_input, only: located, join, given, list_length, list_item
+    use driver_namelist_scan, only: nml_group
+    use driver_input, only: located, join, given, list_length, list_item, name_index, &
+                            value_name, num
     implicit none
     private
 
     public :: records_keys, record_in_t, record_out_t, records_defaults, read_records
     public :: check_records, echo_records, load_record, progress, report
-    public :: path_len, name_index, value_name, short, num
+    public :: path_len, short
 
     character(len=12), parameter :: records_keys(8) = [character(len=12) :: 'files', &
         'format', 'units', 'dt', 'scale', 'target_pga', 'pga_rounding', 'polarity']
@@ -503,20 +504,6 @@ contains
         end do
     end subroutine count_strings
 
-    !> Index of a name (case and leading blanks ignored) in `names`, 0 if absent.
-    pure integer function name_index(text, names)
-        character(len=*), intent(in) :: text
-        character(len=*), intent(in) :: names(:)
-        integer :: i
-        name_index = 0
-        do i = 1, size(names)
-            if (trim(lower(adjustl(text))) == trim(names(i))) then
-                name_index = i
-                return
-            end if
-        end do
-    end function name_index
-
     !> Name of a UNITS_* code, 'auto' for 0 (the AT2 header's units, else g).
     pure function units_name(code) result(s)
         integer, intent(in) :: code
@@ -527,18 +514,6 @@ contains
             s = record_units_name(code)
         end if
     end function units_name
-
-    !> "name" for a single value, "name(i)" in a list of n.
-    pure function value_name(name, i, n) result(item)
-        character(len=*), intent(in) :: name
-        integer, intent(in) :: i, n
-        character(len=:), allocatable :: item
-        if (n > 1) then
-            item = list_item(name, i)
-        else
-            item = name
-        end if
-    end function value_name
 
     !> x to 4 significant digits, for progress lines.
     function short(x) result(s)
@@ -552,44 +527,5 @@ contains
         p = 10.0_dp**(3 - floor(log10(abs(x))))
         s = num(anint(x * p) / p)
     end function short
-
-    !> The shortest decimal that reads back as x: plain for 1e-4 <= |x| < 1e7
-    !> ("0.01", "9.80665"), else with an exponent ("1.5E-007").
-    function num(x) result(s)
-        real(dp), intent(in) :: x
-        character(len=:), allocatable :: s
-        character(len=40) :: buf, fm
-        real(dp) :: y
-        integer :: d, e, k
-        if (.not. ieee_is_finite(x)) then
-            s = real_str(x)
-            return
-        else if (.not. abs(x) > 0.0_dp) then
-            s = '0.0'
-            return
-        end if
-        do d = 2, 17
-            write(fm, '(a, i0, a)') '(es30.', d - 1, 'e3)'
-            write(buf, fm) x
-            read(buf, *) y
-            if (.not. abs(y - x) > 0.0_dp) exit
-        end do
-        k = scan(buf, 'E')
-        read(buf(k + 1:), *) e
-        s = trim(adjustl(buf))
-        if (e >= -4 .and. e < 7) then
-            write(fm, '(a, i0, a)') '(f0.', max(min(d, 17) - 1 - e, 1), ')'
-            write(buf, fm) x
-            s = trim(adjustl(buf))
-            if (s(1:1) == '.') s = '0'//s
-            if (s(1:2) == '-.') s = '-0'//s(2:)
-            ! "0.010" -> "0.01", "2.0" stays
-            k = len(s)
-            do while (s(k:k) == '0' .and. s(k - 1:k - 1) /= '.')
-                k = k - 1
-            end do
-            s = s(1:k)
-        end if
-    end function num
 
 end module driver_records

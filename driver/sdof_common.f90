@@ -7,8 +7,7 @@ module driver_sdof_common
     use seispulse_checks, only: outside
     use seispulse_format, only: int_str
     use driver_namelist_scan, only: nml_group
-    use driver_input, only: join, given, list_length, list_item
-    use driver_records, only: name_index, value_name, num
+    use driver_input, only: join, given, list_length, list_item, name_index, value_name, num
     implicit none
     private
 
