@@ -25,11 +25,11 @@ module driver_rocking
                                      symmetric_block, rocking_block_validate, rock_pulse, &
                                      overturning_map, ROCK_RUN_TIME_LIMIT
     use driver_namelist_scan, only: nml_group, lower
-    use driver_input, only: find_group, located, join, read_optional, given, list_length, &
-                            list_item
+    use driver_input, only: find_group, located, join, read_optional, given
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, finite_positive
     use driver_tables, only: write_tables
+    use driver_axis, only: axis_values
     implicit none
     private
 
@@ -796,70 +796,10 @@ contains
         logical, intent(in) :: positive                   !! > 0 (else >= 0)
         real(dp), allocatable, intent(out) :: values(:)
         character(len=:), allocatable, intent(out) :: errmsg
-        character(len=:), allocatable :: lname, rname, cname, bound
-        integer :: n, i
-        logical :: ok
-        errmsg = ''
-        lname = axis//'_ratio'
-        rname = axis//'_range'
-        cname = axis//'_count'
-        bound = merge('> 0 ', '>= 0', positive)
-        if (given(gm, lname) .and. given(gm, rname)) then
-            errmsg = lname//', '//rname//': give only one of them'
-            return
-        end if
-        if (given(gm, lname)) then
-            if (given(gm, cname)) then
-                errmsg = cname//': only with '//rname
-                return
-            end if
-            call list_length(list, lname, n, errmsg)   ! no gaps, at least one value
-            if (len(errmsg) > 0) return
-            do i = 1, n
-                ok = .false.
-                if (ieee_is_finite(list(i))) ok = list(i) > 0.0_dp .or. &
-                    (.not. positive .and. .not. list(i) < 0.0_dp)
-                if (.not. ok) then
-                    errmsg = list_item(lname, i)//' = '//real_str(list(i)) &
-                             //': must be a finite number '//trim(bound)
-                    return
-                end if
-            end do
-            allocate(values(n), source=list(1:n))
-        else if (given(gm, rname)) then
-            ok = ieee_is_finite(range(1)) .and. ieee_is_finite(range(2))
-            if (.not. ok) then
-                errmsg = rname//': give two finite numbers, '//rname//' = min, max'
-                return
-            end if
-            if (positive) then
-                ok = range(1) > 0.0_dp
-            else
-                ok = range(1) >= 0.0_dp
-            end if
-            if (.not. ok) then
-                errmsg = rname//'(1) = '//real_str(range(1))//': must be '//trim(bound)
-                return
-            end if
-            if (.not. range(2) > range(1)) then
-                errmsg = rname//' = '//real_str(range(1))//', '//real_str(range(2)) &
-                         //': the maximum must be above the minimum'
-                return
-            end if
-            if (count < 2 .or. count > max_list) then
-                errmsg = cname//' = '//int_str(count)//': must be in 2 .. 1000'
-                return
-            end if
-            allocate(values(count))
-            do i = 1, count
-                values(i) = range(1) + (range(2) - range(1)) * (real(i - 1, dp) &
-                                                                 / real(count - 1, dp))
-            end do
-            values(count) = range(2)
-        else
-            errmsg = lname//': missing (give '//lname//' = a list, or '//rname//' = min, ' &
-                     //'max with '//cname//')'
-        end if
+        character(len=:), allocatable :: grid
+        call axis_values(gm, axis//'_ratio', axis, list, range, count, 'linear', positive, &
+                         .false., max_list, values, grid, errmsg, required=.true., &
+                         count_optional=.true., hint=.false., real_numbers=.true.)
     end subroutine map_axis
 
     !> Warn (stderr) about template keys of &map the pulse family does not use.

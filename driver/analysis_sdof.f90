@@ -33,7 +33,8 @@ module driver_sdof
     use driver_tables, only: write_tables, delete_files
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report
-    use driver_sdof_common, only: max_periods, max_dampings, check_dampings, axis_values
+    use driver_sdof_common, only: max_periods, max_dampings, check_dampings
+    use driver_axis, only: axis_values
     implicit none
     private
 

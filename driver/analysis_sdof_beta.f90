@@ -16,7 +16,8 @@ module driver_sdof_beta
     use driver_input, only: find_group, located, join, read_optional, given, list_length, &
                             name_index, value_name, num
     use driver_tables, only: write_tables
-    use driver_sdof_common, only: max_periods, max_dampings, axis_values
+    use driver_sdof_common, only: max_periods, max_dampings
+    use driver_axis, only: axis_values
     implicit none
     private
 

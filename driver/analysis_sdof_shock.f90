@@ -19,7 +19,8 @@ module driver_sdof_shock
     use driver_tables, only: write_tables
     use driver_pulse_group, only: pulse_input_t, read_pulse_group, build_pulse, &
                                   write_pulse_group
-    use driver_sdof_common, only: max_periods, max_dampings, check_dampings, axis_values
+    use driver_sdof_common, only: max_periods, max_dampings, check_dampings
+    use driver_axis, only: axis_values
     implicit none
     private
 
