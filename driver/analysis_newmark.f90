@@ -8,7 +8,7 @@
 !> Everything is checked before any record is read. A record that cannot be read or
 !> scaled fails its rows (NaN results, status 1; the message goes to stderr and into the
 !> table's header) and the other records are still computed; run_newmark then returns
-!> NEWMARK_ROWS_FAILED and the driver exits with status 1 after writing the table. The
+!> ROWS_FAILED and the driver exits with status 1 after writing the table. The
 !> numbers come from seispulse_records (reading, PGA scaling) and seispulse_newmark (the
 !> sliding block); the driver only reads, checks, converts units and writes.
 module driver_newmark
@@ -25,7 +25,7 @@ module driver_newmark
                                  newmark_method_name, NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, &
-                            list_length, list_item, value_name, num
+                            list_length, list_item, value_name, num, ROWS_FAILED
     use driver_tables, only: write_tables
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
@@ -33,14 +33,11 @@ module driver_newmark
     implicit none
     private
 
-    public :: run_newmark, newmark_groups, NEWMARK_ROWS_FAILED
+    public :: run_newmark, newmark_groups
 
     !> Groups this analysis reads (besides &run).
     character(len=8), parameter :: newmark_groups(2) = [character(len=8) :: 'records', &
         'newmark']
-
-    !> stat of run_newmark when the table is written but some rows failed (exit 1).
-    integer, parameter :: NEWMARK_ROWS_FAILED = -1
 
     character(len=12), parameter :: newmark_keys(11) = [character(len=12) :: 'ky', 'mode', &
         'ky_up', 'k_down', 'k_up', 'mu', 'slope_deg', 'xi_deg', 'along_plane', 'method', 'g']
@@ -106,7 +103,7 @@ contains
     end subroutine read_newmark
 
     !> Read and check the groups, compute every row, write the table; print where it
-    !> went. stat: 0, NEWMARK_ROWS_FAILED (table written, errmsg says how many rows
+    !> went. stat: 0, ROWS_FAILED (table written, errmsg says how many rows
     !> failed), or > 0 for an input or output error (nothing written).
     subroutine run_newmark(path, groups, prefix, stat, errmsg)
         character(len=*), intent(in) :: path              !! input file (for messages)
@@ -163,7 +160,7 @@ contains
         stat = 0
         if (nfailed > 0) then
             nrows = size(table, 1)
-            stat = NEWMARK_ROWS_FAILED
+            stat = ROWS_FAILED
             errmsg = int_str(nfailed)//' of '//int_str(nrows)//' rows failed (records: ' &
                      //failed_list(outs, table, size(cfg%blocks))//')'
         end if

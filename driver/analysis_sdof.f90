@@ -12,7 +12,7 @@
 !> table is computed before the first is written. A record that cannot be read,
 !> scaled or analysed fails its rows (NaN results, status 1; the message goes to
 !> stderr and into the headers) and the other records are still computed; run_sdof
-!> then returns SDOF_ROWS_FAILED and the driver exits with status 1 after writing the
+!> then returns ROWS_FAILED and the driver exits with status 1 after writing the
 !> tables. The numbers come from seispulse_records and seispulse_sdof_sim; the driver only
 !> reads, checks and writes.
 !>
@@ -29,7 +29,7 @@ module driver_sdof
                               spectral_shape, SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, given, list_item, &
-                            name_index, num
+                            name_index, num, ROWS_FAILED
     use driver_tables, only: write_tables, delete_files
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report
@@ -38,14 +38,11 @@ module driver_sdof
     implicit none
     private
 
-    public :: run_sdof, sdof_groups, SDOF_ROWS_FAILED
+    public :: run_sdof, sdof_groups
 
     !> Groups this analysis reads (besides &run).
     character(len=12), parameter :: sdof_groups(3) = [character(len=12) :: 'records', &
         'sdof', 'sdof_history']
-
-    !> stat of run_sdof when the tables are written but some rows failed (exit 1).
-    integer, parameter :: SDOF_ROWS_FAILED = -1
 
     character(len=13), parameter :: sdof_keys(11) = [character(len=13) :: 'periods', &
         'period_range', 'period_count', 'spacing', 'damping', 'g', 'peaks', 'threads', &
@@ -154,7 +151,7 @@ contains
     end subroutine read_history
 
     !> Read and check the groups, compute every table, write them; print where they
-    !> went. stat: 0, SDOF_ROWS_FAILED (tables written, errmsg says which records
+    !> went. stat: 0, ROWS_FAILED (tables written, errmsg says which records
     !> failed), or > 0 for an input or output error (nothing written).
     subroutine run_sdof(path, groups, prefix, stat, errmsg)
         character(len=*), intent(in) :: path              !! input file (for messages)
@@ -252,7 +249,7 @@ contains
             //trim(files_h(1))//' and '//trim(files_h(2))
         stat = 0
         if (nfailed > 0) then
-            stat = SDOF_ROWS_FAILED
+            stat = ROWS_FAILED
             errmsg = int_str(nfailed)//' of '//int_str(size(outs))//' records failed (' &
                      //failed//'): their rows hold NaN and status 1'
         end if

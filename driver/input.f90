@@ -11,6 +11,11 @@ module driver_input
 
     public :: group_reader, find_group, check_keys, read_group, located, join
     public :: read_optional, given, list_length, list_item, value_name, name_index, num
+    public :: ROWS_FAILED
+
+    !> stat of an analysis that wrote its tables but failed some rows (a record that could
+    !> not be read or analysed): the driver exits with status 1.
+    integer, parameter :: ROWS_FAILED = -1
 
     abstract interface
         !> Read one namelist group into the analysis' variables: from `unit`, or
