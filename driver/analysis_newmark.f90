@@ -13,16 +13,12 @@
 !> sliding block); the driver only reads, checks, converts units and writes.
 module driver_newmark
     use, intrinsic :: iso_fortran_env, only: output_unit
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
-                                             ieee_quiet_nan, ieee_positive_inf
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_format, only: int_str
-    use seispulse_records, only: record_format_name
-    use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, &
-                                 newmark_incline, newmark_block_validate, newmark_mode_code, &
-                                 newmark_method_code, newmark_mode_name, &
-                                 newmark_method_name, NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan, &
+                                             ieee_positive_inf
+    use seispulse, only: dp, SEISPULSE_SUCCESS, int_str, record_format_name, newmark_block_t, &
+                         newmark_result_t, newmark_rigid, newmark_incline, newmark_block_validate, &
+                         newmark_mode_code, newmark_method_code, newmark_mode_name, &
+                         newmark_method_name, NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM, positive
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, &
                             list_length, list_item, value_name, num, ROWS_FAILED
@@ -586,16 +582,5 @@ contains
         call write_tables(prefix, 'newmark', comments, names, col_units, table, files_out, &
                           stat, errmsg, labels=labels)
     end subroutine write_result
-
-    ! ------------------------------------------------------------------------------
-    ! Helpers
-    ! ------------------------------------------------------------------------------
-
-    !> x > 0 (+inf allowed), not NaN.
-    elemental logical function positive(x)
-        real(dp), intent(in) :: x
-        positive = .false.
-        if (.not. ieee_is_nan(x)) positive = x > 0.0_dp
-    end function positive
 
 end module driver_newmark

@@ -7,8 +7,7 @@ module driver_pulse
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
                                              ieee_quiet_nan
     use seispulse, only: dp, pulse_eval, pulse_end_time, pulse_kind_name, SEISPULSE_SUCCESS, &
-                         PULSE_RICKER
-    use seispulse_format, only: real_str
+                         PULSE_RICKER, real_str
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, check_keys, read_group, located
     use driver_pulse_group, only: pulse_input_t, read_pulse_group, build_pulse, &

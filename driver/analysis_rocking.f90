@@ -15,19 +15,17 @@ module driver_rocking
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
                                              ieee_quiet_nan, ieee_positive_inf
-    use seispulse, only: dp, pulse_t, pulse_validate, pulse_eval, pulse_end_time, &
-                         pulse_kind_name, pulse_kind_from_name, SEISPULSE_SUCCESS, &
-                         PULSE_EXPONENTIAL, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
-                         PULSE_RICKER, PULSE_MP
-    use seispulse_format, only: real_str, int_str
-    use seispulse_rocking_closed, only: rocking_summary, rocking_region_name
-    use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rectangular_block, &
-                                     symmetric_block, rocking_block_validate, rock_pulse, &
-                                     overturning_map, ROCK_RUN_TIME_LIMIT
+    use seispulse, only: dp, pulse_t, pulse_validate, pulse_eval, pulse_end_time, pulse_kind_name, &
+                         pulse_kind_from_name, SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, &
+                         PULSE_RECTANGULAR, PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP, real_str, &
+                         int_str, rocking_summary, rocking_region_name, rocking_block_t, &
+                         rocking_run_t, rectangular_block, symmetric_block, &
+                         rocking_block_validate, rock_pulse, overturning_map, ROCK_RUN_TIME_LIMIT, &
+                         pi, finite_positive
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
-                                  write_pulse_group, finite_positive
+                                  write_pulse_group
     use driver_tables, only: write_tables
     use driver_axis, only: axis_values
     implicit none
@@ -61,8 +59,6 @@ module driver_rocking
     !> A map prints progress once it has run this long (s), then at most every
     !> `progress_every` seconds.
     real(dp), parameter :: progress_after = 2.0_dp, progress_every = 3.0_dp
-
-    real(dp), parameter :: pi = 3.14159265358979323846264338327950288_dp
 
     ! namelist variables (defaults are set in set_defaults)
     real(dp) :: b, h, alpha, alpha_deg, r, io_over_mr2, e

@@ -20,13 +20,9 @@
 module driver_sdof
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_checks, only: outside
-    use seispulse_format, only: int_str
-    use seispulse_records, only: record_format_name
-    use seispulse_sdof_sim, only: sdof_spectrum, pseudo_spectra, sdof_response, design_envelope, &
-                              spectral_shape, SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES
+    use seispulse, only: dp, SEISPULSE_SUCCESS, outside, int_str, record_format_name, &
+                         sdof_spectrum, pseudo_spectra, sdof_response, design_envelope, &
+                         spectral_shape, SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, given, list_item, &
                             name_index, num, ROWS_FAILED

@@ -8,10 +8,8 @@
 module driver_sdof_beta
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_SINGULAR
-    use seispulse_checks, only: outside
-    use seispulse_sdof_closed, only: dynamic_coefficient, BETA_HYSTERETIC, BETA_VISCOUS
+    use seispulse, only: dp, SEISPULSE_SUCCESS, SEISPULSE_SINGULAR, outside, dynamic_coefficient, &
+                         BETA_HYSTERETIC, BETA_VISCOUS
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, given, list_length, &
                             name_index, value_name, num

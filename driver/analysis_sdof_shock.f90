@@ -9,11 +9,8 @@
 module driver_sdof_shock
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sdof_sim, only: pseudo_spectra
-    use seispulse_sdof_closed, only: sdof_pulse_spectrum, pulse_peak_accel
-    use seispulse_pulses, only: pulse_kind_name, PULSE_RICKER, PULSE_MP
+    use seispulse, only: dp, SEISPULSE_SUCCESS, pseudo_spectra, sdof_pulse_spectrum, &
+                         pulse_peak_accel, pulse_kind_name, PULSE_RICKER, PULSE_MP
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, read_optional, given, value_name, num
     use driver_tables, only: write_tables

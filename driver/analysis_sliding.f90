@@ -12,18 +12,16 @@ module driver_sliding
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
                                              ieee_quiet_nan
-    use seispulse, only: dp, pulse_eval, pulse_end_time, pulse_kind_name, &
-                         SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, &
-                         PULSE_RICKER, PULSE_MP
-    use seispulse_format, only: real_str
-    use seispulse_sliding_closed, only: sliding_block_t, full_cycle_t, block_response, block_response_eta, &
-                                 inclined_resistances, summarize_slides, sliding_mode_name
-    use seispulse_sliding_sim, only: friction_t, stickslip_result_t, stickslip_pulse
+    use seispulse, only: dp, pulse_eval, pulse_end_time, pulse_kind_name, SEISPULSE_SUCCESS, &
+                         PULSE_EXPONENTIAL, PULSE_RICKER, PULSE_MP, real_str, sliding_block_t, &
+                         full_cycle_t, block_response, block_response_eta, inclined_resistances, &
+                         summarize_slides, sliding_mode_name, friction_t, stickslip_result_t, &
+                         stickslip_pulse, finite_positive
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, list_length, &
                             list_item
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
-                                  write_pulse_group, finite_positive
+                                  write_pulse_group
     use driver_tables, only: write_tables, delete_files
     implicit none
     private

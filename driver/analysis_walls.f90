@@ -11,18 +11,13 @@
 module driver_walls
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_format, only: real_str, int_str
-    use seispulse_records, only: STANDARD_GRAVITY
-    use seispulse_codes, only: ec8_ground_parameters, ec8_r_factor, ec8_seismic_coefficients, &
-                               ec8_vertical_ratio, WATER_DRY, WATER_IMPERVIOUS, WATER_PERMEABLE, &
-                               EC8_WALL_GRAVITY_300, EC8_WALL_GRAVITY_200, EC8_WALL_RESTRAINED
-    use seispulse_special, only: pi
-    use seispulse_walls_one_term, only: SHAPE_LINEAR, SHAPE_SINE, SHAPE_PARABOLIC, SHAPE_POWER
-    use seispulse_wall_table, only: wall_case_t, wall_case_default, wall_comparison, &
-                                    wall_pressure_profile, wall_row_label, WALL_ROWS, &
-                                    WALL_PROFILE_COLUMNS
+    use seispulse, only: dp, SEISPULSE_SUCCESS, real_str, int_str, STANDARD_GRAVITY, &
+                         ec8_ground_parameters, ec8_r_factor, ec8_seismic_coefficients, &
+                         ec8_vertical_ratio, WATER_DRY, WATER_IMPERVIOUS, WATER_PERMEABLE, &
+                         EC8_WALL_GRAVITY_300, EC8_WALL_GRAVITY_200, EC8_WALL_RESTRAINED, pi, &
+                         SHAPE_LINEAR, SHAPE_SINE, SHAPE_PARABOLIC, SHAPE_POWER, wall_case_t, &
+                         wall_case_default, wall_comparison, wall_pressure_profile, &
+                         wall_row_label, WALL_ROWS, WALL_PROFILE_COLUMNS
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, given, name_index
     use driver_tables, only: write_tables, delete_files

@@ -3,9 +3,7 @@
 !> an axis is given and checked the same way in every analysis.
 module driver_axis
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-    use seispulse_kinds, only: dp
-    use seispulse_checks, only: outside
-    use seispulse_format, only: real_str, int_str
+    use seispulse, only: dp, outside, real_str, int_str
     use driver_namelist_scan, only: nml_group
     use driver_input, only: join, given, list_length, list_item, name_index, value_name, num
     implicit none

@@ -3,8 +3,7 @@
 !> read in those messages.
 module driver_input
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
-    use seispulse_kinds, only: dp
-    use seispulse_format, only: real_str, int_str
+    use seispulse, only: dp, real_str, int_str
     use driver_namelist_scan, only: nml_group, lower
     implicit none
     private

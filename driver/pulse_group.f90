@@ -3,18 +3,16 @@
 !> builds. One code path, so that a pulse means the same in every analysis.
 module driver_pulse_group
     use, intrinsic :: iso_fortran_env, only: error_unit
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
-                                             ieee_quiet_nan
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan
     use seispulse, only: dp, pulse_t, pulse_validate, pulse_kind_from_name, pulse_kind_name, &
-                         SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, PULSE_TRIANGULAR, &
-                         PULSE_RICKER, PULSE_MP
+                         SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, PULSE_TRIANGULAR, PULSE_RICKER, &
+                         PULSE_MP, finite_positive
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, check_keys, read_group, located
     implicit none
     private
 
     public :: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, write_pulse_group
-    public :: finite_positive
 
     !> Every key of &pulse.
     character(len=12), parameter :: pulse_keys(13) = [character(len=12) :: 'kind', 'amp', &
@@ -159,14 +157,6 @@ contains
         call warn_unused(path, pin%group, code, g_always)
         stat = 0
     end subroutine build_pulse
-
-    !> x is a finite number > 0. (Never compares a NaN: a build with
-    !> -ffpe-trap=invalid evaluates both operands of .and.)
-    elemental logical function finite_positive(x)
-        real(dp), intent(in) :: x
-        finite_positive = .false.
-        if (ieee_is_finite(x)) finite_positive = x > 0.0_dp
-    end function finite_positive
 
     !> Echo the group as read and completed (for the log).
     subroutine write_pulse_group(unit)

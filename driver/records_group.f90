@@ -9,12 +9,9 @@
 module driver_records
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_format, only: int_str
-    use seispulse_records, only: record_t, read_record, record_pga, pga_scale_factor, &
-                                 record_format_name, record_units_name, RECORD_AUTO, &
-                                 RECORD_COLUMN, UNITS_G, UNITS_M_S2, UNITS_CM_S2
+    use seispulse, only: dp, SEISPULSE_SUCCESS, int_str, record_t, read_record, record_pga, &
+                         pga_scale_factor, record_format_name, record_units_name, RECORD_AUTO, &
+                         RECORD_COLUMN, UNITS_G, UNITS_M_S2, UNITS_CM_S2
     use driver_namelist_scan, only: nml_group
     use driver_input, only: located, join, given, list_length, list_item, name_index, &
                             value_name, num

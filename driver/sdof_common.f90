@@ -1,8 +1,7 @@
 !> What the analyses of the linear oscillator ('sdof', 'sdof_beta', 'sdof_shock') share:
 !> the limits of their lists and the damping ratios of a `damping` key.
 module driver_sdof_common
-    use seispulse_kinds, only: dp
-    use seispulse_checks, only: outside
+    use seispulse, only: dp, outside
     use driver_namelist_scan, only: nml_group
     use driver_input, only: given, list_length, value_name, num
     implicit none

@@ -2,7 +2,7 @@
 !> header of names and units, and as CSV. Either both files are complete or neither
 !> exists: on any write error both are deleted.
 module driver_tables
-    use seispulse_kinds, only: dp
+    use seispulse, only: dp
     implicit none
     private
 

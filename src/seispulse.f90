@@ -6,8 +6,11 @@ module seispulse
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
                                 SEISPULSE_NO_CONVERGENCE, SEISPULSE_NO_BRACKET, SEISPULSE_INTERNAL, &
                                 SEISPULSE_IO, SEISPULSE_NO_SOLUTION, status_name
+    use seispulse_checks, only: outside, finite_positive, finite_at_least, positive, in_open, &
+                                in_closed
+    use seispulse_format, only: real_str, int_str
     use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, &
-                                 sin_pi, cos_pi, complex_phis
+                                 sin_pi, cos_pi, complex_phis, pi
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
     use seispulse_lapack, only: solve_linear
     use seispulse_pulses, only: exp_pulse, exp_pulse_point, exp_pulse_peaks, &
