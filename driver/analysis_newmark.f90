@@ -13,12 +13,12 @@
 !> sliding block); the driver only reads, checks, converts units and writes.
 module driver_newmark
     use, intrinsic :: iso_fortran_env, only: output_unit
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan, &
-                                             ieee_positive_inf
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
     use seispulse, only: dp, SEISPULSE_SUCCESS, int_str, record_format_name, newmark_block_t, &
                          newmark_result_t, newmark_rigid, newmark_incline, newmark_block_validate, &
                          newmark_mode_code, newmark_method_code, newmark_mode_name, &
-                         newmark_method_name, NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM, positive
+                         newmark_method_name, NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM, positive, &
+                         finite_positive
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, &
                             list_length, list_item, value_name, num, ROWS_FAILED
@@ -192,7 +192,7 @@ contains
                      //join(method_names)//')'
             return
         end if
-        if (.not. (ieee_is_finite(g) .and. g > 0.0_dp)) then
+        if (.not. finite_positive(g)) then
             errmsg = where//'g = '//num(g)//': must be a finite number > 0 (m/s2)'
             return
         end if

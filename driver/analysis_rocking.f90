@@ -13,15 +13,15 @@
 !> converts units and writes.
 module driver_rocking
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
-                                             ieee_quiet_nan, ieee_positive_inf
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan, &
+                                             ieee_positive_inf
     use seispulse, only: dp, pulse_t, pulse_validate, pulse_eval, pulse_end_time, pulse_kind_name, &
                          pulse_kind_from_name, SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, &
                          PULSE_RECTANGULAR, PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP, real_str, &
                          int_str, rocking_summary, rocking_region_name, rocking_block_t, &
                          rocking_run_t, rectangular_block, symmetric_block, &
                          rocking_block_validate, rock_pulse, overturning_map, ROCK_RUN_TIME_LIMIT, &
-                         pi, finite_positive
+                         pi, finite_positive, positive, in_closed, in_open, finite_at_least
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
@@ -235,7 +235,6 @@ contains
         character(len=8), parameter :: grid_keys(3) = [character(len=8) :: 't_end', 'npts', &
             'dt']
         integer :: i
-        logical :: ok
         where = located(path, gr)
         errmsg = ''
         if (task /= 'history') then
@@ -252,16 +251,12 @@ contains
                      //'class is known)'
             return
         end if
-        ok = .false.
-        if (.not. ieee_is_nan(t_max)) ok = t_max > 0.0_dp
-        if (.not. ok) then
+        if (.not. positive(t_max)) then
             errmsg = where//'t_max = '//real_str(t_max)//': must be a number > 0 (s) or ' &
                      //'+Inf (no limit)'
             return
         end if
-        ok = .false.
-        if (.not. ieee_is_nan(rtol)) ok = rtol >= 1.0e-14_dp .and. rtol <= 1.0e-3_dp
-        if (.not. ok) then
+        if (.not. in_closed(rtol, 1.0e-14_dp, 1.0e-3_dp)) then
             errmsg = where//'rtol = '//real_str(rtol)//': must be in [1e-14, 1e-3]'
             return
         end if
@@ -290,7 +285,7 @@ contains
         character(len=512) :: msg
         real(dp) :: a, radius
         integer :: stat
-        logical :: has_bh, has_alpha, ok
+        logical :: has_bh, has_alpha
 
         where = located(path, gb)
         errmsg = ''
@@ -327,10 +322,7 @@ contains
             end if
         else if (has_alpha) then
             if (given(gb, 'alpha_deg')) then
-                ok = .false.
-                if (.not. ieee_is_nan(alpha_deg)) ok = alpha_deg > 0.0_dp .and. &
-                                                       alpha_deg < 90.0_dp
-                if (.not. ok) then
+                if (.not. in_open(alpha_deg, 0.0_dp, 90.0_dp)) then
                     errmsg = where//'alpha_deg = '//real_str(alpha_deg)//': must be a ' &
                              //'number in (0, 90) (degrees)'
                     return
@@ -360,9 +352,7 @@ contains
         if (for_map .and. given(gb, 'r')) write(error_unit, '(a)') 'warning: '//where &
             //'r: not used by what = ''map'' (the map is dimensionless)'
         if (given(gb, 'e')) then
-            ok = .false.
-            if (.not. ieee_is_nan(e)) ok = e >= 0.0_dp .and. e <= 1.0_dp
-            if (.not. ok) then
+            if (.not. in_closed(e, 0.0_dp, 1.0_dp)) then
                 errmsg = where//'e = '//real_str(e)//': the coefficient of restitution ' &
                          //'must be in [0, 1]'
                 return
@@ -682,8 +672,7 @@ contains
         end if
         tpl = pulse_t(kind=code, amp=1.0_dp, duration=1.0_dp, beta=beta, full=full, &
                       peak_frac=peak_frac, freq=1.0_dp, t0=t0_periods)
-        if (code == PULSE_RICKER .and. .not. (ieee_is_finite(t0_periods) .and. &
-                                              t0_periods >= 0.0_dp)) then
+        if (code == PULSE_RICKER .and. .not. finite_at_least(t0_periods, 0.0_dp)) then
             errmsg = where//'t0_periods = '//real_str(t0_periods)//': must be a finite ' &
                      //'number >= 0 (the centre of the wavelet times f_p)'
             return

@@ -10,13 +10,12 @@
 !> and writes.
 module driver_sliding
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
-                                             ieee_quiet_nan
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan
     use seispulse, only: dp, pulse_eval, pulse_end_time, pulse_kind_name, SEISPULSE_SUCCESS, &
                          PULSE_EXPONENTIAL, PULSE_RICKER, PULSE_MP, real_str, sliding_block_t, &
                          full_cycle_t, block_response, block_response_eta, inclined_resistances, &
                          summarize_slides, sliding_mode_name, friction_t, stickslip_result_t, &
-                         stickslip_pulse, finite_positive
+                         stickslip_pulse, finite_positive, finite_at_least, positive
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, list_length, &
                             list_item
@@ -256,7 +255,6 @@ contains
             'mu_list', 'eta_list']
         real(dp) :: nan
         integer :: i, n, ngiven
-        logical :: ok
 
         nan = ieee_value(nan, ieee_quiet_nan)
         where = located(path, gb)
@@ -306,9 +304,7 @@ contains
                 return
             end if
         end if
-        ok = .false.
-        if (ieee_is_finite(static_factor)) ok = static_factor >= 1.0_dp
-        if (.not. ok) then
+        if (.not. finite_at_least(static_factor, 1.0_dp)) then
             errmsg = where//'static_factor = '//real_str(static_factor)//': must be a finite ' &
                      //'number >= 1 (static over kinetic friction)'
             return
@@ -382,9 +378,7 @@ contains
         character(len=*), intent(in) :: name
         character(len=:), allocatable, intent(out) :: errmsg
         errmsg = ''
-        if (.not. ieee_is_nan(eta)) then
-            if (eta > 0.0_dp) return     ! +inf allowed: no sliding that way
-        end if
+        if (positive(eta)) return     ! +inf allowed: no sliding that way
         errmsg = name//' = ' &
             //real_str(eta)//': must be > 0 (a_y/A_g; eta >= 1 means no sliding that way)'
     end subroutine check_eta

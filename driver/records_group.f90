@@ -11,7 +11,8 @@ module driver_records
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
     use seispulse, only: dp, SEISPULSE_SUCCESS, int_str, record_t, read_record, record_pga, &
                          pga_scale_factor, record_format_name, record_units_name, RECORD_AUTO, &
-                         RECORD_COLUMN, UNITS_G, UNITS_M_S2, UNITS_CM_S2
+                         RECORD_COLUMN, UNITS_G, UNITS_M_S2, UNITS_CM_S2, finite_at_least, &
+                         finite_positive
     use driver_namelist_scan, only: nml_group
     use driver_input, only: located, join, given, list_length, list_item, name_index, &
                             value_name, num
@@ -196,7 +197,7 @@ contains
                 if (n_dt > 0) then
                     k = min(i, n_dt)
                     x = dt(k)
-                    if (.not. (ieee_is_finite(x) .and. x >= 0.0_dp)) then
+                    if (.not. finite_at_least(x, 0.0_dp)) then
                         errmsg = where//value_name('dt', k, n_dt)//' = '//num(x) &
                                  //': must be a finite time step >= 0 (s; 0: from the file)'
                         return
@@ -212,7 +213,7 @@ contains
                 if (n_scale > 0) then
                     k = min(i, n_scale)
                     x = scale(k)
-                    if (.not. (ieee_is_finite(x) .and. x > 0.0_dp)) then
+                    if (.not. finite_positive(x)) then
                         errmsg = where//value_name('scale', k, n_scale)//' = '//num(x) &
                                  //': must be a finite factor > 0 (polarity = -1 turns the ' &
                                  //'record over)'
@@ -223,7 +224,7 @@ contains
                 if (n_target > 0) then
                     k = min(i, n_target)
                     x = target_pga(k)
-                    if (.not. (ieee_is_finite(x) .and. x >= 0.0_dp)) then
+                    if (.not. finite_at_least(x, 0.0_dp)) then
                         errmsg = where//value_name('target_pga', k, n_target)//' = ' &
                                  //num(x)//': must be a finite PGA > 0 (g; 0: use scale)'
                         return
