@@ -15,17 +15,17 @@ module driver_rocking
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan, &
                                              ieee_positive_inf
-    use seispulse, only: dp, pulse_t, pulse_validate, pulse_eval, pulse_end_time, pulse_kind_name, &
+    use seispulse, only: dp, pulse_t, pulse_validate, pulse_eval, pulse_kind_name, &
                          pulse_kind_from_name, SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, &
                          PULSE_RECTANGULAR, PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP, real_str, &
                          int_str, rocking_summary, rocking_region_name, rocking_block_t, &
                          rocking_run_t, rectangular_block, symmetric_block, &
                          rocking_block_validate, rock_pulse, overturning_map, ROCK_RUN_TIME_LIMIT, &
-                         pi, finite_positive, positive, in_closed, in_open, finite_at_least
+                         pi, positive, in_closed, in_open, finite_at_least
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
-                                  write_pulse_group
+                                  write_pulse_group, pulse_end, check_time_grid, time_grid
     use driver_tables, only: write_tables
     use driver_axis, only: axis_values
     implicit none
@@ -54,8 +54,6 @@ module driver_rocking
 
     !> Most values on one axis of a map (freq_ratio, amp_ratio).
     integer, parameter :: max_list = 1000
-    !> Most rows of the history table.
-    integer, parameter :: max_rows = 10000000
     !> A map prints progress once it has run this long (s), then at most every
     !> `progress_every` seconds.
     real(dp), parameter :: progress_after = 2.0_dp, progress_every = 3.0_dp
@@ -261,15 +259,7 @@ contains
             return
         end if
         if (task /= 'history') return
-        if (given(gr, 't_end') .and. .not. finite_positive(t_end)) then
-            errmsg = where//'t_end = '//real_str(t_end)//': must be a finite number > 0 (s)'
-        else if (given(gr, 'npts') .and. given(gr, 'dt')) then
-            errmsg = where//'dt, npts: give one of them, not both'
-        else if (given(gr, 'dt') .and. .not. finite_positive(dt)) then
-            errmsg = where//'dt = '//real_str(dt)//': must be a finite number > 0 (s)'
-        else if (given(gr, 'npts') .and. (npts < 2 .or. npts > max_rows)) then
-            errmsg = where//'npts: must be in 2 .. 10000000'
-        end if
+        call check_time_grid(where, gr, t_end, dt, npts, errmsg)
     end subroutine check_rocking
 
     !> Check &block and build the block (g: gravity of the excitation; for a map any
@@ -557,8 +547,8 @@ contains
         type(rocking_run_t) :: run
         character(len=512) :: msg, files(2), comments(7)
         real(dp), allocatable :: t(:), table(:, :), v(:), d(:)
-        real(dp) :: t_last, step, pulse_end
-        integer :: n, j, i
+        real(dp) :: t_last
+        integer :: n, i
 
         call echo()
         stat = 1
@@ -571,31 +561,19 @@ contains
                 errmsg = locate_message(path, trim(msg), pin, gb, gr)
                 return
             end if
-            if (pin%code == PULSE_RICKER) then
-                pulse_end = 2.0_dp * pin%p%t0
-            else
-                pulse_end = pulse_end_time(pin%p)
-            end if
             if (run%outcome == ROCK_RUN_TIME_LIMIT .and. run%t_end > 0.0_dp) then
                 t_last = run%t_end               ! no solution beyond it
             else
-                t_last = max(1.25_dp * run%t_end, pulse_end)
+                t_last = max(1.25_dp * run%t_end, pulse_end(pin))
             end if
         end if
-        if (given(gr, 'dt')) then
-            if (t_last / dt + 1.0_dp > max_rows) then
-                errmsg = located(path, gr)//'dt: too small, more than 1e7 points'
-                return
-            end if
-            n = int(t_last / dt * (1.0_dp + 1.0e-12_dp)) + 1
-            step = dt
-        else
-            n = npts
-            if (n == 0) n = 1001
-            step = t_last / (n - 1)
+        call time_grid(t_last, dt, npts, t, errmsg)
+        if (len(errmsg) > 0) then
+            errmsg = located(path, gr)//errmsg
+            return
         end if
-        allocate(t(n), table(n, 4), v(n), d(n))
-        t = step * [(real(j, dp), j = 0, n - 1)]
+        n = size(t)
+        allocate(table(n, 4), v(n), d(n))
         call rock_pulse(blk, pin%p, run, i, msg, t_grid=t, theta_grid=table(:, 3), &
                         omega_grid=table(:, 4), t_max=t_max, rtol=rtol)
         if (i == SEISPULSE_SUCCESS) call pulse_eval(pin%p, t, table(:, 2), v, d, i, msg)
