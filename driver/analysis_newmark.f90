@@ -14,8 +14,8 @@
 module driver_newmark
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
-    use seispulse, only: dp, SEISPULSE_SUCCESS, int_str, record_format_name, newmark_block_t, &
-                         newmark_result_t, newmark_rigid, newmark_incline, newmark_block_validate, &
+    use seispulse, only: dp, SEISPULSE_SUCCESS, int_str, newmark_block_t, newmark_result_t, &
+                         newmark_rigid, newmark_incline, newmark_block_validate, &
                          newmark_mode_code, newmark_method_code, newmark_mode_name, &
                          newmark_method_name, NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM, positive, &
                          finite_positive
@@ -25,7 +25,7 @@ module driver_newmark
     use driver_tables, only: write_tables
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
-                              path_len
+                              path_len, records_missing, record_line, failed_records
     implicit none
     private
 
@@ -42,8 +42,6 @@ module driver_newmark
 
     !> Most ky (or mu) values.
     integer, parameter :: max_ky = 1000
-    !> Most failed records named in the final message.
-    integer, parameter :: max_named = 20
 
     ! namelist variables (defaults are set in set_defaults; &records: driver_records)
     real(dp) :: ky(max_ky), ky_up(max_ky), k_down, k_up, mu(max_ky), slope_deg, xi_deg, g
@@ -112,7 +110,7 @@ contains
         type(record_out_t), allocatable :: outs(:)
         real(dp), allocatable :: table(:, :)
         character(len=512) :: files_out(2)
-        integer :: nfailed, nrows
+        integer :: nfailed, nrows, nblk, ir
 
         call set_defaults()
         call read_optional(path, groups, 'records', records_keys, read_records, gr, stat, &
@@ -123,8 +121,7 @@ contains
         if (stat /= 0) return
         stat = 1
         if (find_group(groups, 'records') == 0) then
-            errmsg = path//': &records: missing group (it lists the record files: files = ' &
-                     //'''a.AT2'', ...)'
+            errmsg = path//records_missing
             return
         end if
         if (find_group(groups, 'newmark') == 0) then
@@ -156,9 +153,12 @@ contains
         stat = 0
         if (nfailed > 0) then
             nrows = size(table, 1)
+            nblk = size(cfg%blocks)
             stat = ROWS_FAILED
             errmsg = int_str(nfailed)//' of '//int_str(nrows)//' rows failed (records: ' &
-                     //failed_list(outs, table, size(cfg%blocks))//')'
+                     //failed_records(outs, [(any(table((ir - 1) * nblk + 1:ir * nblk, &
+                                                        size(table, 2)) > 0.5_dp), &
+                                             ir = 1, size(outs))])//')'
         end if
     end subroutine run_newmark
 
@@ -484,28 +484,6 @@ contains
         end if
     end function row_name
 
-    !> "2 'name', 5 'other'" of the records with a failed row (at most max_named).
-    function failed_list(outs, table, nblk) result(s)
-        type(record_out_t), intent(in) :: outs(:)
-        real(dp), intent(in) :: table(:, :)
-        integer, intent(in) :: nblk
-        character(len=:), allocatable :: s
-        integer :: ir, named, ncol
-        ncol = size(table, 2)
-        s = ''
-        named = 0
-        do ir = 1, size(outs)
-            if (.not. any(table((ir - 1) * nblk + 1:ir * nblk, ncol) > 0.5_dp)) cycle
-            named = named + 1
-            if (named > max_named) then
-                s = s//', ...'
-                exit
-            end if
-            if (named > 1) s = s//', '
-            s = s//int_str(ir)//' '''//outs(ir)%name//''''
-        end do
-    end function failed_list
-
     ! ------------------------------------------------------------------------------
     ! Output
     ! ------------------------------------------------------------------------------
@@ -547,15 +525,8 @@ contains
                       //'scale factor):'
         do ir = 1, size(outs)
             associate (o => outs(ir), r => cfg%recs(ir))
-                line = 'record '//int_str(ir)//': '//r%file//': '
-                if (o%ok) then
-                    line = line//'format '//record_format_name(o%fmt)//', npts ' &
-                           //int_str(o%npts)//', dt '//num(o%dt)//', PGA ' &
-                           //num(o%pga_read)//', scale factor '//num(o%factor)
-                    if (len(o%message) > 0) line = line//'; FAILED rows: '//o%message
-                else
-                    line = line//'FAILED: '//o%message
-                end if
+                line = record_line(ir, r, o)
+                if (o%ok .and. len(o%message) > 0) line = line//'; FAILED rows: '//o%message
                 comments(7 + ir) = line
             end associate
         end do

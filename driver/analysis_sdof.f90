@@ -20,15 +20,16 @@
 module driver_sdof
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-    use seispulse, only: dp, SEISPULSE_SUCCESS, outside, int_str, record_format_name, &
-                         sdof_spectrum, pseudo_spectra, sdof_response, design_envelope, &
-                         spectral_shape, SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES
+    use seispulse, only: dp, SEISPULSE_SUCCESS, outside, int_str, sdof_spectrum, pseudo_spectra, &
+                         sdof_response, design_envelope, spectral_shape, SDOF_PEAKS_EXACT, &
+                         SDOF_PEAKS_SAMPLES
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, given, list_item, &
                             name_index, num, ROWS_FAILED
     use driver_tables, only: write_tables, delete_files
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
-                              read_records, check_records, echo_records, load_record, report
+                              read_records, check_records, echo_records, load_record, report, &
+                              records_missing, record_line, failed_records
     use driver_sdof_common, only: max_periods, max_dampings, check_dampings
     use driver_axis, only: axis_values
     implicit none
@@ -50,8 +51,6 @@ module driver_sdof
     !> Most rows of the spectra table (records x damping ratios x periods) and of the
     !> history table (their samples x damping ratios x periods).
     integer, parameter :: max_rows = 5000000, max_history_rows = 5000000
-    !> Most failed records named in the final message.
-    integer, parameter :: max_named = 20
 
     ! namelist variables of &sdof (defaults are set in set_defaults; &records:
     ! driver_records; &sdof_history: read_history, into hist_periods, hist_damping)
@@ -160,7 +159,6 @@ contains
         type(record_out_t), allocatable :: outs(:)
         type(record_res_t), allocatable :: res(:)
         character(len=512) :: files_s(2), files_e(2), files_h(2)
-        character(len=:), allocatable :: failed
         integer :: nfailed
 
         call set_defaults()
@@ -174,8 +172,7 @@ contains
         if (stat /= 0) return
         stat = 1
         if (find_group(groups, 'records') == 0) then
-            errmsg = path//': &records: missing group (it lists the record files: files = ' &
-                     //'''a.AT2'', ...)'
+            errmsg = path//records_missing
             return
         end if
         if (find_group(groups, 'sdof') == 0 .and. find_group(groups, 'sdof_history') == 0) &
@@ -207,7 +204,8 @@ contains
         call echo_sdof(cfg)
 
         ! --- compute every table (nothing is written before all of them are done)
-        call compute(path, gr, cfg, outs, res, nfailed, failed)
+        call compute(path, gr, cfg, outs, res)
+        nfailed = count(.not. outs%ok)
 
         ! --- write
         if (cfg%spectra) then
@@ -247,7 +245,8 @@ contains
         if (nfailed > 0) then
             stat = ROWS_FAILED
             errmsg = int_str(nfailed)//' of '//int_str(size(outs))//' records failed (' &
-                     //failed//'): their rows hold NaN and status 1'
+                     //failed_records(outs, .not. outs%ok)//'): their rows hold NaN and ' &
+                     //'status 1'
         end if
     end subroutine run_sdof
 
@@ -453,15 +452,13 @@ contains
 
     !> Every record (read, polarity, scale), its spectra and histories. A record that
     !> fails (reading, scaling or a library check) keeps o%ok = .false. and its message,
-    !> reported on stderr at once; failed: "2 'name', 5 'other'" of the failed records.
-    subroutine compute(path, gr, cfg, outs, res, nfailed, failed)
+    !> reported on stderr at once.
+    subroutine compute(path, gr, cfg, outs, res)
         character(len=*), intent(in) :: path
         type(nml_group), intent(in) :: gr
         type(config_t), intent(in) :: cfg
         type(record_out_t), allocatable, intent(out) :: outs(:)
         type(record_res_t), allocatable, intent(out) :: res(:)
-        integer, intent(out) :: nfailed
-        character(len=:), allocatable, intent(out) :: failed
         real(dp), allocatable :: accel(:)
         character(len=:), allocatable :: where
         character(len=4096) :: msg
@@ -470,8 +467,6 @@ contains
         where = located(path, gr)
         nrec = size(cfg%recs)
         allocate(outs(nrec), res(nrec))
-        nfailed = 0
-        failed = ''
         do ir = 1, nrec
             associate (r => cfg%recs(ir), o => outs(ir))
                 call load_record(where, r, ir, nrec, 'sdof', cfg%slammer_rounding, o, accel)
@@ -484,15 +479,6 @@ contains
                         o%message = trim(msg)
                         call report(where//list_item('files', ir)//' = '''//r%file//''': ' &
                                     //o%message)
-                    end if
-                end if
-                if (.not. o%ok) then
-                    nfailed = nfailed + 1
-                    if (nfailed <= max_named) then
-                        if (nfailed > 1) failed = failed//', '
-                        failed = failed//int_str(ir)//' '''//o%name//''''
-                    else if (nfailed == max_named + 1) then
-                        failed = failed//', ...'
                     end if
                 end if
             end associate
@@ -587,12 +573,9 @@ contains
                            //'(g), scale factor, PGA after scaling (g)):'
         do ir = 1, nrec
             associate (o => outs(ir), r => cfg%recs(ir))
-                line = 'record '//int_str(ir)//': '//r%file//': '
+                line = record_line(ir, r, o)
                 if (o%ok) then
-                    line = line//'format '//record_format_name(o%fmt)//', npts ' &
-                           //int_str(o%npts)//', dt '//num(o%dt)//', PGA ' &
-                           //num(o%pga_read)//', scale factor '//num(o%factor)//', PGA ' &
-                           //num(o%pga)
+                    line = line//', PGA '//num(o%pga)
                     if (cfg%spectra .and. cfg%shape) then
                         do j = 1, size(cfg%dampings)
                             line = line//'; damping '//num(cfg%dampings(j))//': PSA/PGA ' &
@@ -600,8 +583,6 @@ contains
                                    //num(res(ir)%t_peak(j))//' s'
                         end do
                     end if
-                else
-                    line = line//'FAILED: '//o%message
                 end if
                 comments(3 + nh + ir) = line
             end associate

@@ -21,7 +21,7 @@ module driver_records
 
     public :: records_keys, record_in_t, record_out_t, records_defaults, read_records
     public :: check_records, echo_records, load_record, progress, report
-    public :: path_len, short
+    public :: path_len, short, records_missing, record_line, failed_records
 
     character(len=12), parameter :: records_keys(8) = [character(len=12) :: 'files', &
         'format', 'units', 'dt', 'scale', 'target_pga', 'pga_rounding', 'polarity']
@@ -37,6 +37,12 @@ module driver_records
     integer, parameter :: path_len = 1024
     !> Unset entries of the integer list polarity.
     integer, parameter :: unset_int = -huge(0)
+    !> Most failed records named in a final message.
+    integer, parameter :: max_named = 20
+
+    !> After the input file's name: the message when &records is missing.
+    character(len=*), parameter :: records_missing = ': &records: missing group (it lists ' &
+        //'the record files: files = ''a.AT2'', ...)'
 
     ! namelist variables (defaults are set in records_defaults)
     character(len=path_len) :: files(max_files)
@@ -415,6 +421,44 @@ contains
     ! ------------------------------------------------------------------------------
     ! Labels and messages
     ! ------------------------------------------------------------------------------
+
+    !> The header line of record ir: "record 2: a.AT2: format at2, npts 240, dt 0.01,
+    !> PGA 0.39, scale factor 1.5", or "record 2: a.AT2: FAILED: why".
+    function record_line(ir, r, o) result(line)
+        integer, intent(in) :: ir                         !! its index
+        type(record_in_t), intent(in) :: r                !! its input
+        type(record_out_t), intent(in) :: o               !! what happened
+        character(len=:), allocatable :: line
+        line = 'record '//int_str(ir)//': '//r%file//': '
+        if (o%ok) then
+            line = line//'format '//record_format_name(o%fmt)//', npts '//int_str(o%npts) &
+                   //', dt '//num(o%dt)//', PGA '//num(o%pga_read)//', scale factor ' &
+                   //num(o%factor)
+        else
+            line = line//'FAILED: '//o%message
+        end if
+    end function record_line
+
+    !> "2 'name', 5 'other'" of the records with failed(ir), at most max_named of them
+    !> (then ", ...").
+    function failed_records(outs, failed) result(s)
+        type(record_out_t), intent(in) :: outs(:)
+        logical, intent(in) :: failed(:)                  !! per record
+        character(len=:), allocatable :: s
+        integer :: ir, named
+        s = ''
+        named = 0
+        do ir = 1, size(outs)
+            if (.not. failed(ir)) cycle
+            named = named + 1
+            if (named > max_named) then
+                s = s//', ...'
+                exit
+            end if
+            if (named > 1) s = s//', '
+            s = s//int_str(ir)//' '''//outs(ir)%name//''''
+        end do
+    end function failed_records
 
     !> " -> 0.4 g" (or with the polarity) when the record is scaled or turned over.
     function scaled_text(o) result(s)
