@@ -22,7 +22,7 @@ module driver_newmark
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, &
                             list_length, list_item, value_name, num, ROWS_FAILED
-    use driver_tables, only: write_tables
+    use driver_tables, only: write_tables, say_written
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
                               path_len, records_missing, record_line, failed_records
@@ -148,8 +148,7 @@ contains
             errmsg = path//': &run: output: '//errmsg
             return
         end if
-        write(output_unit, '(a)') 'newmark table written to '//trim(files_out(1))//' and ' &
-            //trim(files_out(2))
+        call say_written('newmark table', files_out)
         stat = 0
         if (nfailed > 0) then
             nrows = size(table, 1)

@@ -26,7 +26,7 @@ module driver_rocking
     use driver_input, only: find_group, located, join, read_optional, given
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid
-    use driver_tables, only: write_tables
+    use driver_tables, only: write_tables, say_written, code_legend
     use driver_axis, only: axis_values
     implicit none
     private
@@ -425,7 +425,8 @@ contains
         type(rocking_run_t) :: run
         character(len=512) :: msg, files(2), comments(8)
         real(dp) :: row(21), nan, f, eta, beta_cf, tau_up, tau_c, tau_m, psi_max, tau_i, td
-        integer :: region, i
+        character(len=32) :: names(0:5)
+        integer :: region, i, k
         logical :: cf
 
         nan = ieee_value(nan, ieee_quiet_nan)
@@ -468,12 +469,15 @@ contains
                               psi_max, tau_i * td]
 
         call block_comments(pin, blk, comments(1:3))
-        comments(4) = outcome_legend()
+        comments(4) = code_legend('outcome', outcome_names)
         comments(5) = 't_overturn: last outward crossing of |theta| = alpha before ' &
                       //'overturning (theta_max = pi/2 then); t_impact1: first impact; ' &
                       //'t_end: rest, overturned (|theta| = pi/2) or the time limit'
         comments(6) = 'psi = theta/alpha; NaN: no such event'
-        comments(7) = region_legend()
+        do k = 0, 5
+            names(k) = rocking_region_name(k)
+        end do
+        comments(7) = code_legend('region', names)
         if (cf) then
             comments(8) = 'closed forms (_cf): linearized model (rocking.md 2.4-2.35, ' &
                           //'seispulse_rocking_closed), half-cycle exponential pulse, beta = ' &
@@ -496,8 +500,7 @@ contains
             return
         end if
         write(output_unit, '(a)') 'rocking: '//trim(outcome_names(run%outcome))
-        write(output_unit, '(a)') 'rocking table written to '//trim(files(1))//' and ' &
-            //trim(files(2))
+        call say_written('rocking table', files)
     end subroutine do_summary
 
     !> Header lines describing the excitation and the block.
@@ -512,26 +515,6 @@ contains
         lines(3) = 'uplift at |a_g| > g tan(alpha) (nonlinear) or g alpha (linearized); ' &
                    //'a_g > 0 drives theta > 0'
     end subroutine block_comments
-
-    function outcome_legend() result(text)
-        character(len=:), allocatable :: text
-        integer :: k
-        text = 'outcome:'
-        do k = 0, 5
-            text = text//' '//achar(iachar('0') + k)//' '//trim(outcome_names(k))
-            if (k < 5) text = text//','
-        end do
-    end function outcome_legend
-
-    function region_legend() result(text)
-        character(len=:), allocatable :: text
-        integer :: k
-        text = 'region:'
-        do k = 0, 5
-            text = text//' '//achar(iachar('0') + k)//' '//rocking_region_name(k)
-            if (k < 5) text = text//','
-        end do
-    end function region_legend
 
     ! ------------------------------------------------------------------------------
     ! History
@@ -601,8 +584,7 @@ contains
             return
         end if
         write(output_unit, '(a)') 'rocking: '//trim(outcome_names(run%outcome))
-        write(output_unit, '(a)') 'rocking history written to '//trim(files(1))//' and ' &
-            //trim(files(2))
+        call say_written('rocking history', files)
     end subroutine do_history
 
     ! ------------------------------------------------------------------------------
@@ -746,8 +728,7 @@ contains
             errmsg = path//': &run: output: '//errmsg
             return
         end if
-        write(output_unit, '(a)') 'rocking map written to '//trim(files(1))//' and ' &
-            //trim(files(2))
+        call say_written('rocking map', files)
     end subroutine do_map
 
     !> One axis of the map from a list (`<axis>_ratio`) or a range with a count.

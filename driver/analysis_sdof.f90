@@ -26,7 +26,7 @@ module driver_sdof
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, given, list_item, &
                             name_index, num, ROWS_FAILED
-    use driver_tables, only: write_tables, delete_files
+    use driver_tables, only: write_tables, delete_files, say_written
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
                               records_missing, record_line, failed_records
@@ -235,12 +235,9 @@ contains
                 return
             end if
         end if
-        if (cfg%spectra) write(output_unit, '(a)') 'sdof spectra written to ' &
-            //trim(files_s(1))//' and '//trim(files_s(2))
-        if (cfg%envelope) write(output_unit, '(a)') 'sdof envelope written to ' &
-            //trim(files_e(1))//' and '//trim(files_e(2))
-        if (cfg%history) write(output_unit, '(a)') 'sdof history written to ' &
-            //trim(files_h(1))//' and '//trim(files_h(2))
+        if (cfg%spectra) call say_written('sdof spectra', files_s)
+        if (cfg%envelope) call say_written('sdof envelope', files_e)
+        if (cfg%history) call say_written('sdof history', files_h)
         stat = 0
         if (nfailed > 0) then
             stat = ROWS_FAILED

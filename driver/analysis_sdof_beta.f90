@@ -13,7 +13,7 @@ module driver_sdof_beta
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, given, list_length, &
                             name_index, value_name, num
-    use driver_tables, only: write_tables
+    use driver_tables, only: write_tables, say_written
     use driver_sdof_common, only: max_periods, max_dampings
     use driver_axis, only: axis_values
     implicit none
@@ -161,8 +161,7 @@ contains
             errmsg = path//': &run: output: '//errmsg
             return
         end if
-        write(output_unit, '(a)') 'sdof_beta table written to '//trim(files(1))//' and ' &
-            //trim(files(2))
+        call say_written('sdof_beta table', files)
 
     end subroutine run_sdof_beta
 

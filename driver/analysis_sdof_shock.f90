@@ -13,7 +13,7 @@ module driver_sdof_shock
                          pulse_peak_accel, pulse_kind_name, PULSE_RICKER, PULSE_MP
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, read_optional, given, value_name, num
-    use driver_tables, only: write_tables
+    use driver_tables, only: write_tables, say_written
     use driver_pulse_group, only: pulse_input_t, read_pulse_group, build_pulse, &
                                   write_pulse_group
     use driver_sdof_common, only: max_periods, max_dampings, check_dampings
@@ -231,8 +231,7 @@ contains
             errmsg = path//': &run: output: '//errmsg
             return
         end if
-        write(output_unit, '(a)') 'sdof_shock table written to '//trim(files(1))//' and ' &
-            //trim(files(2))
+        call say_written('sdof_shock table', files)
 
     end subroutine run_sdof_shock
 

@@ -21,7 +21,7 @@ module driver_sliding
                             list_item
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid
-    use driver_tables, only: write_tables, delete_files
+    use driver_tables, only: write_tables, delete_files, say_written, code_legend
     implicit none
     private
 
@@ -226,10 +226,8 @@ contains
                 return
             end if
         end if
-        write(output_unit, '(a)') 'sliding table written to '//trim(files(1))//' and ' &
-            //trim(files(2))
-        if (with_history) write(output_unit, '(a)') 'sliding history written to ' &
-            //trim(hfiles(1))//' and '//trim(hfiles(2))
+        call say_written('sliding table', files)
+        if (with_history) call say_written('sliding history', hfiles)
         stat = 0
     end subroutine run_sliding
 
@@ -667,6 +665,7 @@ contains
         real(dp), allocatable :: table(:, :)
         character(len=512) :: comments(7)
         character(len=:), allocatable :: legend, slips
+        character(len=32) :: names(0:5)
         integer :: i, m
 
         allocate(table(size(cases), 14))
@@ -676,11 +675,10 @@ contains
                                r%t_m1, r%u_m1, r%t_y2, r%t_m2, r%u_m2, r%u_res, r%v_m1, r%v_m2]
             end associate
         end do
-        legend = 'mode:'
         do m = 0, 5
-            legend = legend//' '//achar(iachar('0') + m)//' '//sliding_mode_name(m)
-            if (m < 5) legend = legend//','
+            names(m) = sliding_mode_name(m)
         end do
+        legend = code_legend('mode', names)
         if (input_mode == INPUT_MU .and. along_plane) then
             slips = 'slips and velocities along the plane (times the factors K of ' &
                     //'sliding.md 7.1)'
