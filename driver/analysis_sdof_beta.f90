@@ -8,13 +8,12 @@
 module driver_sdof_beta
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
-    use seispulse, only: dp, SEISPULSE_SUCCESS, SEISPULSE_SINGULAR, outside, dynamic_coefficient, &
+    use seispulse, only: dp, SEISPULSE_SUCCESS, SEISPULSE_SINGULAR, dynamic_coefficient, &
                          BETA_HYSTERETIC, BETA_VISCOUS
     use driver_namelist_scan, only: nml_group
-    use driver_input, only: find_group, located, join, read_optional, given, list_length, &
-                            name_index, value_name, num
+    use driver_input, only: find_group, located, join, read_optional, name_index
     use driver_tables, only: write_tables, say_written
-    use driver_sdof_common, only: max_periods, max_dampings
+    use driver_sdof_common, only: max_periods, max_dampings, check_list
     use driver_axis, only: axis_values
     implicit none
     private
@@ -98,7 +97,8 @@ contains
             errmsg = where//errmsg
             return
         end if
-        call check_gammas(gb, gamma, gammas, errmsg)
+        call check_list(gb, 'gamma', gamma, default_gamma, 0.0_dp, huge(1.0_dp), .false., &
+                        'a finite number >= 0 (gamma = 2 zeta)', gammas, errmsg)
         if (len(errmsg) > 0) then
             errmsg = where//errmsg
             return
@@ -164,31 +164,6 @@ contains
         call say_written('sdof_beta table', files)
 
     end subroutine run_sdof_beta
-
-    !> The damping parameters of a `gamma` list (default_gamma when not given): each
-    !> finite and >= 0. errmsg (without the location) on failure.
-    subroutine check_gammas(group, list, values, errmsg)
-        type(nml_group), intent(in) :: group
-        real(dp), intent(in) :: list(:)
-        real(dp), allocatable, intent(out) :: values(:)
-        character(len=:), allocatable, intent(out) :: errmsg
-        integer :: n, i
-        errmsg = ''
-        if (.not. given(group, 'gamma')) then
-            values = [default_gamma]
-            return
-        end if
-        call list_length(list, 'gamma', n, errmsg)
-        if (len(errmsg) > 0) return
-        do i = 1, n
-            if (outside(list(i), 0.0_dp, huge(1.0_dp), .false., .false.)) then
-                errmsg = value_name('gamma', i, n)//' = '//num(list(i))//': must be a ' &
-                         //'finite number >= 0 (gamma = 2 zeta)'
-                return
-            end if
-        end do
-        values = list(1:n)
-    end subroutine check_gammas
 
     !> &sdof_beta with the values in use.
     subroutine echo_beta(values, gammas, model_name)

@@ -1,5 +1,5 @@
 !> What the analyses of the linear oscillator ('sdof', 'sdof_beta', 'sdof_shock') share:
-!> the limits of their lists and the damping ratios of a `damping` key.
+!> the limits of their lists and the checks of a list of values (damping ratios, gamma).
 module driver_sdof_common
     use seispulse, only: dp, outside
     use driver_namelist_scan, only: nml_group
@@ -7,7 +7,7 @@ module driver_sdof_common
     implicit none
     private
 
-    public :: max_periods, max_dampings, check_dampings
+    public :: max_periods, max_dampings, check_dampings, check_list
 
     !> Most periods (list or range), most damping ratios.
     integer, parameter :: max_periods = 1000, max_dampings = 100
@@ -23,22 +23,37 @@ contains
         real(dp), intent(in) :: list(:)
         real(dp), allocatable, intent(out) :: values(:)
         character(len=:), allocatable, intent(out) :: errmsg
+        call check_list(group, 'damping', list, default_damping, 0.0_dp, 1.0_dp, .true., &
+                        'a damping ratio in [0, 1)', values, errmsg)
+    end subroutine check_dampings
+
+    !> The values of a list key (`default` alone when it is not given): each in [lo, hi],
+    !> hi itself excluded with `open_hi`. errmsg (without the location) on failure:
+    !> "key(i) = x: must be <rule>".
+    subroutine check_list(group, key, list, default, lo, hi, open_hi, rule, values, errmsg)
+        type(nml_group), intent(in) :: group
+        character(len=*), intent(in) :: key
+        real(dp), intent(in) :: list(:)
+        real(dp), intent(in) :: default, lo, hi
+        logical, intent(in) :: open_hi
+        character(len=*), intent(in) :: rule              !! what a value must be
+        real(dp), allocatable, intent(out) :: values(:)
+        character(len=:), allocatable, intent(out) :: errmsg
         integer :: n, i
         errmsg = ''
-        if (.not. given(group, 'damping')) then
-            values = [default_damping]
+        if (.not. given(group, key)) then
+            values = [default]
             return
         end if
-        call list_length(list, 'damping', n, errmsg)
+        call list_length(list, key, n, errmsg)
         if (len(errmsg) > 0) return
         do i = 1, n
-            if (outside(list(i), 0.0_dp, 1.0_dp, .false., .true.)) then
-                errmsg = value_name('damping', i, n)//' = '//num(list(i))//': must be a ' &
-                         //'damping ratio in [0, 1)'
+            if (outside(list(i), lo, hi, .false., open_hi)) then
+                errmsg = value_name(key, i, n)//' = '//num(list(i))//': must be '//rule
                 return
             end if
         end do
         values = list(1:n)
-    end subroutine check_dampings
+    end subroutine check_list
 
 end module driver_sdof_common
