@@ -8,39 +8,32 @@
 !> Everything is checked before any record is read. A record that cannot be read or
 !> scaled fails its rows (NaN results, status 1; the message goes to stderr and into the
 !> table's header) and the other records are still computed; run_newmark then returns
-!> NEWMARK_ROWS_FAILED and the driver exits with status 1 after writing the table. The
+!> ROWS_FAILED and the driver exits with status 1 after writing the table. The
 !> numbers come from seispulse_records (reading, PGA scaling) and seispulse_newmark (the
 !> sliding block); the driver only reads, checks, converts units and writes.
 module driver_newmark
     use, intrinsic :: iso_fortran_env, only: output_unit
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
-                                             ieee_quiet_nan, ieee_positive_inf
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_format, only: int_str
-    use seispulse_records, only: record_format_name
-    use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, &
-                                 newmark_incline, newmark_block_validate, newmark_mode_code, &
-                                 newmark_method_code, newmark_mode_name, &
-                                 newmark_method_name, NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
+    use seispulse, only: dp, SEISPULSE_SUCCESS, int_str, newmark_block_t, newmark_result_t, &
+                         newmark_rigid, newmark_incline, newmark_block_validate, &
+                         newmark_mode_code, newmark_method_code, newmark_mode_name, &
+                         newmark_method_name, NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM, positive, &
+                         finite_positive
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, &
-                            list_length, list_item
-    use driver_tables, only: write_tables
+                            list_length, list_item, value_name, num, ROWS_FAILED
+    use driver_tables, only: write_tables, say_written
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
-                              path_len, value_name, num
+                              path_len, records_missing, record_line, failed_records
     implicit none
     private
 
-    public :: run_newmark, newmark_groups, NEWMARK_ROWS_FAILED
+    public :: run_newmark, newmark_groups
 
     !> Groups this analysis reads (besides &run).
     character(len=8), parameter :: newmark_groups(2) = [character(len=8) :: 'records', &
         'newmark']
-
-    !> stat of run_newmark when the table is written but some rows failed (exit 1).
-    integer, parameter :: NEWMARK_ROWS_FAILED = -1
 
     character(len=12), parameter :: newmark_keys(11) = [character(len=12) :: 'ky', 'mode', &
         'ky_up', 'k_down', 'k_up', 'mu', 'slope_deg', 'xi_deg', 'along_plane', 'method', 'g']
@@ -49,8 +42,6 @@ module driver_newmark
 
     !> Most ky (or mu) values.
     integer, parameter :: max_ky = 1000
-    !> Most failed records named in the final message.
-    integer, parameter :: max_named = 20
 
     ! namelist variables (defaults are set in set_defaults; &records: driver_records)
     real(dp) :: ky(max_ky), ky_up(max_ky), k_down, k_up, mu(max_ky), slope_deg, xi_deg, g
@@ -106,7 +97,7 @@ contains
     end subroutine read_newmark
 
     !> Read and check the groups, compute every row, write the table; print where it
-    !> went. stat: 0, NEWMARK_ROWS_FAILED (table written, errmsg says how many rows
+    !> went. stat: 0, ROWS_FAILED (table written, errmsg says how many rows
     !> failed), or > 0 for an input or output error (nothing written).
     subroutine run_newmark(path, groups, prefix, stat, errmsg)
         character(len=*), intent(in) :: path              !! input file (for messages)
@@ -119,7 +110,7 @@ contains
         type(record_out_t), allocatable :: outs(:)
         real(dp), allocatable :: table(:, :)
         character(len=512) :: files_out(2)
-        integer :: nfailed, nrows
+        integer :: nfailed, nrows, nblk, ir
 
         call set_defaults()
         call read_optional(path, groups, 'records', records_keys, read_records, gr, stat, &
@@ -130,8 +121,7 @@ contains
         if (stat /= 0) return
         stat = 1
         if (find_group(groups, 'records') == 0) then
-            errmsg = path//': &records: missing group (it lists the record files: files = ' &
-                     //'''a.AT2'', ...)'
+            errmsg = path//records_missing
             return
         end if
         if (find_group(groups, 'newmark') == 0) then
@@ -158,14 +148,16 @@ contains
             errmsg = path//': &run: output: '//errmsg
             return
         end if
-        write(output_unit, '(a)') 'newmark table written to '//trim(files_out(1))//' and ' &
-            //trim(files_out(2))
+        call say_written('newmark table', files_out)
         stat = 0
         if (nfailed > 0) then
             nrows = size(table, 1)
-            stat = NEWMARK_ROWS_FAILED
+            nblk = size(cfg%blocks)
+            stat = ROWS_FAILED
             errmsg = int_str(nfailed)//' of '//int_str(nrows)//' rows failed (records: ' &
-                     //failed_list(outs, table, size(cfg%blocks))//')'
+                     //failed_records(outs, [(any(table((ir - 1) * nblk + 1:ir * nblk, &
+                                                        size(table, 2)) > 0.5_dp), &
+                                             ir = 1, size(outs))])//')'
         end if
     end subroutine run_newmark
 
@@ -199,7 +191,7 @@ contains
                      //join(method_names)//')'
             return
         end if
-        if (.not. (ieee_is_finite(g) .and. g > 0.0_dp)) then
+        if (.not. finite_positive(g)) then
             errmsg = where//'g = '//num(g)//': must be a finite number > 0 (m/s2)'
             return
         end if
@@ -491,28 +483,6 @@ contains
         end if
     end function row_name
 
-    !> "2 'name', 5 'other'" of the records with a failed row (at most max_named).
-    function failed_list(outs, table, nblk) result(s)
-        type(record_out_t), intent(in) :: outs(:)
-        real(dp), intent(in) :: table(:, :)
-        integer, intent(in) :: nblk
-        character(len=:), allocatable :: s
-        integer :: ir, named, ncol
-        ncol = size(table, 2)
-        s = ''
-        named = 0
-        do ir = 1, size(outs)
-            if (.not. any(table((ir - 1) * nblk + 1:ir * nblk, ncol) > 0.5_dp)) cycle
-            named = named + 1
-            if (named > max_named) then
-                s = s//', ...'
-                exit
-            end if
-            if (named > 1) s = s//', '
-            s = s//int_str(ir)//' '''//outs(ir)%name//''''
-        end do
-    end function failed_list
-
     ! ------------------------------------------------------------------------------
     ! Output
     ! ------------------------------------------------------------------------------
@@ -554,15 +524,8 @@ contains
                       //'scale factor):'
         do ir = 1, size(outs)
             associate (o => outs(ir), r => cfg%recs(ir))
-                line = 'record '//int_str(ir)//': '//r%file//': '
-                if (o%ok) then
-                    line = line//'format '//record_format_name(o%fmt)//', npts ' &
-                           //int_str(o%npts)//', dt '//num(o%dt)//', PGA ' &
-                           //num(o%pga_read)//', scale factor '//num(o%factor)
-                    if (len(o%message) > 0) line = line//'; FAILED rows: '//o%message
-                else
-                    line = line//'FAILED: '//o%message
-                end if
+                line = record_line(ir, r, o)
+                if (o%ok .and. len(o%message) > 0) line = line//'; FAILED rows: '//o%message
                 comments(7 + ir) = line
             end associate
         end do
@@ -589,16 +552,5 @@ contains
         call write_tables(prefix, 'newmark', comments, names, col_units, table, files_out, &
                           stat, errmsg, labels=labels)
     end subroutine write_result
-
-    ! ------------------------------------------------------------------------------
-    ! Helpers
-    ! ------------------------------------------------------------------------------
-
-    !> x > 0 (+inf allowed), not NaN.
-    elemental logical function positive(x)
-        real(dp), intent(in) :: x
-        positive = .false.
-        if (.not. ieee_is_nan(x)) positive = x > 0.0_dp
-    end function positive
 
 end module driver_newmark

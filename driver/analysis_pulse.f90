@@ -7,13 +7,12 @@ module driver_pulse
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
                                              ieee_quiet_nan
     use seispulse, only: dp, pulse_eval, pulse_end_time, pulse_kind_name, SEISPULSE_SUCCESS, &
-                         PULSE_RICKER
-    use seispulse_format, only: real_str
+                         PULSE_RICKER, real_str
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, check_keys, read_group, located
     use driver_pulse_group, only: pulse_input_t, read_pulse_group, build_pulse, &
                                   write_pulse_group
-    use driver_tables, only: write_tables
+    use driver_tables, only: write_tables, say_written
     implicit none
     private
 
@@ -153,8 +152,7 @@ contains
             errmsg = path//': &run: output: '//errmsg
             return
         end if
-        write(output_unit, '(a)') 'pulse table written to '//trim(files(1))//' and ' &
-            //trim(files(2))
+        call say_written('pulse table', files)
     end subroutine run_pulse
 
 end module driver_pulse

@@ -13,23 +13,21 @@
 !> converts units and writes.
 module driver_rocking
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
-                                             ieee_quiet_nan, ieee_positive_inf
-    use seispulse, only: dp, pulse_t, pulse_validate, pulse_eval, pulse_end_time, &
-                         pulse_kind_name, pulse_kind_from_name, SEISPULSE_SUCCESS, &
-                         PULSE_EXPONENTIAL, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
-                         PULSE_RICKER, PULSE_MP
-    use seispulse_format, only: real_str, int_str
-    use seispulse_rocking_closed, only: rocking_summary, rocking_region_name
-    use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rectangular_block, &
-                                     symmetric_block, rocking_block_validate, rock_pulse, &
-                                     overturning_map, ROCK_RUN_TIME_LIMIT
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan, &
+                                             ieee_positive_inf
+    use seispulse, only: dp, pulse_t, pulse_validate, pulse_eval, pulse_kind_name, &
+                         pulse_kind_from_name, SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, &
+                         PULSE_RECTANGULAR, PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP, real_str, &
+                         int_str, rocking_summary, rocking_region_name, rocking_block_t, &
+                         rocking_run_t, rectangular_block, symmetric_block, &
+                         rocking_block_validate, rock_pulse, overturning_map, ROCK_RUN_TIME_LIMIT, &
+                         pi, positive, in_closed, in_open, finite_at_least
     use driver_namelist_scan, only: nml_group, lower
-    use driver_input, only: find_group, located, join, read_optional, given, list_length, &
-                            list_item
+    use driver_input, only: find_group, located, join, read_optional, given
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
-                                  write_pulse_group, finite_positive
-    use driver_tables, only: write_tables
+                                  write_pulse_group, pulse_end, check_time_grid, time_grid
+    use driver_tables, only: write_tables, say_written, code_legend
+    use driver_axis, only: axis_values
     implicit none
     private
 
@@ -56,13 +54,9 @@ module driver_rocking
 
     !> Most values on one axis of a map (freq_ratio, amp_ratio).
     integer, parameter :: max_list = 1000
-    !> Most rows of the history table.
-    integer, parameter :: max_rows = 10000000
     !> A map prints progress once it has run this long (s), then at most every
     !> `progress_every` seconds.
     real(dp), parameter :: progress_after = 2.0_dp, progress_every = 3.0_dp
-
-    real(dp), parameter :: pi = 3.14159265358979323846264338327950288_dp
 
     ! namelist variables (defaults are set in set_defaults)
     real(dp) :: b, h, alpha, alpha_deg, r, io_over_mr2, e
@@ -239,7 +233,6 @@ contains
         character(len=8), parameter :: grid_keys(3) = [character(len=8) :: 't_end', 'npts', &
             'dt']
         integer :: i
-        logical :: ok
         where = located(path, gr)
         errmsg = ''
         if (task /= 'history') then
@@ -256,29 +249,17 @@ contains
                      //'class is known)'
             return
         end if
-        ok = .false.
-        if (.not. ieee_is_nan(t_max)) ok = t_max > 0.0_dp
-        if (.not. ok) then
+        if (.not. positive(t_max)) then
             errmsg = where//'t_max = '//real_str(t_max)//': must be a number > 0 (s) or ' &
                      //'+Inf (no limit)'
             return
         end if
-        ok = .false.
-        if (.not. ieee_is_nan(rtol)) ok = rtol >= 1.0e-14_dp .and. rtol <= 1.0e-3_dp
-        if (.not. ok) then
+        if (.not. in_closed(rtol, 1.0e-14_dp, 1.0e-3_dp)) then
             errmsg = where//'rtol = '//real_str(rtol)//': must be in [1e-14, 1e-3]'
             return
         end if
         if (task /= 'history') return
-        if (given(gr, 't_end') .and. .not. finite_positive(t_end)) then
-            errmsg = where//'t_end = '//real_str(t_end)//': must be a finite number > 0 (s)'
-        else if (given(gr, 'npts') .and. given(gr, 'dt')) then
-            errmsg = where//'dt, npts: give one of them, not both'
-        else if (given(gr, 'dt') .and. .not. finite_positive(dt)) then
-            errmsg = where//'dt = '//real_str(dt)//': must be a finite number > 0 (s)'
-        else if (given(gr, 'npts') .and. (npts < 2 .or. npts > max_rows)) then
-            errmsg = where//'npts: must be in 2 .. 10000000'
-        end if
+        call check_time_grid(where, gr, t_end, dt, npts, errmsg)
     end subroutine check_rocking
 
     !> Check &block and build the block (g: gravity of the excitation; for a map any
@@ -294,7 +275,7 @@ contains
         character(len=512) :: msg
         real(dp) :: a, radius
         integer :: stat
-        logical :: has_bh, has_alpha, ok
+        logical :: has_bh, has_alpha
 
         where = located(path, gb)
         errmsg = ''
@@ -331,10 +312,7 @@ contains
             end if
         else if (has_alpha) then
             if (given(gb, 'alpha_deg')) then
-                ok = .false.
-                if (.not. ieee_is_nan(alpha_deg)) ok = alpha_deg > 0.0_dp .and. &
-                                                       alpha_deg < 90.0_dp
-                if (.not. ok) then
+                if (.not. in_open(alpha_deg, 0.0_dp, 90.0_dp)) then
                     errmsg = where//'alpha_deg = '//real_str(alpha_deg)//': must be a ' &
                              //'number in (0, 90) (degrees)'
                     return
@@ -364,9 +342,7 @@ contains
         if (for_map .and. given(gb, 'r')) write(error_unit, '(a)') 'warning: '//where &
             //'r: not used by what = ''map'' (the map is dimensionless)'
         if (given(gb, 'e')) then
-            ok = .false.
-            if (.not. ieee_is_nan(e)) ok = e >= 0.0_dp .and. e <= 1.0_dp
-            if (.not. ok) then
+            if (.not. in_closed(e, 0.0_dp, 1.0_dp)) then
                 errmsg = where//'e = '//real_str(e)//': the coefficient of restitution ' &
                          //'must be in [0, 1]'
                 return
@@ -449,7 +425,8 @@ contains
         type(rocking_run_t) :: run
         character(len=512) :: msg, files(2), comments(8)
         real(dp) :: row(21), nan, f, eta, beta_cf, tau_up, tau_c, tau_m, psi_max, tau_i, td
-        integer :: region, i
+        character(len=32) :: names(0:5)
+        integer :: region, i, k
         logical :: cf
 
         nan = ieee_value(nan, ieee_quiet_nan)
@@ -492,12 +469,15 @@ contains
                               psi_max, tau_i * td]
 
         call block_comments(pin, blk, comments(1:3))
-        comments(4) = outcome_legend()
+        comments(4) = code_legend('outcome', outcome_names)
         comments(5) = 't_overturn: last outward crossing of |theta| = alpha before ' &
                       //'overturning (theta_max = pi/2 then); t_impact1: first impact; ' &
                       //'t_end: rest, overturned (|theta| = pi/2) or the time limit'
         comments(6) = 'psi = theta/alpha; NaN: no such event'
-        comments(7) = region_legend()
+        do k = 0, 5
+            names(k) = rocking_region_name(k)
+        end do
+        comments(7) = code_legend('region', names)
         if (cf) then
             comments(8) = 'closed forms (_cf): linearized model (rocking.md 2.4-2.35, ' &
                           //'seispulse_rocking_closed), half-cycle exponential pulse, beta = ' &
@@ -520,8 +500,7 @@ contains
             return
         end if
         write(output_unit, '(a)') 'rocking: '//trim(outcome_names(run%outcome))
-        write(output_unit, '(a)') 'rocking table written to '//trim(files(1))//' and ' &
-            //trim(files(2))
+        call say_written('rocking table', files)
     end subroutine do_summary
 
     !> Header lines describing the excitation and the block.
@@ -537,26 +516,6 @@ contains
                    //'a_g > 0 drives theta > 0'
     end subroutine block_comments
 
-    function outcome_legend() result(text)
-        character(len=:), allocatable :: text
-        integer :: k
-        text = 'outcome:'
-        do k = 0, 5
-            text = text//' '//achar(iachar('0') + k)//' '//trim(outcome_names(k))
-            if (k < 5) text = text//','
-        end do
-    end function outcome_legend
-
-    function region_legend() result(text)
-        character(len=:), allocatable :: text
-        integer :: k
-        text = 'region:'
-        do k = 0, 5
-            text = text//' '//achar(iachar('0') + k)//' '//rocking_region_name(k)
-            if (k < 5) text = text//','
-        end do
-    end function region_legend
-
     ! ------------------------------------------------------------------------------
     ! History
     ! ------------------------------------------------------------------------------
@@ -571,8 +530,8 @@ contains
         type(rocking_run_t) :: run
         character(len=512) :: msg, files(2), comments(7)
         real(dp), allocatable :: t(:), table(:, :), v(:), d(:)
-        real(dp) :: t_last, step, pulse_end
-        integer :: n, j, i
+        real(dp) :: t_last
+        integer :: n, i
 
         call echo()
         stat = 1
@@ -585,31 +544,19 @@ contains
                 errmsg = locate_message(path, trim(msg), pin, gb, gr)
                 return
             end if
-            if (pin%code == PULSE_RICKER) then
-                pulse_end = 2.0_dp * pin%p%t0
-            else
-                pulse_end = pulse_end_time(pin%p)
-            end if
             if (run%outcome == ROCK_RUN_TIME_LIMIT .and. run%t_end > 0.0_dp) then
                 t_last = run%t_end               ! no solution beyond it
             else
-                t_last = max(1.25_dp * run%t_end, pulse_end)
+                t_last = max(1.25_dp * run%t_end, pulse_end(pin))
             end if
         end if
-        if (given(gr, 'dt')) then
-            if (t_last / dt + 1.0_dp > max_rows) then
-                errmsg = located(path, gr)//'dt: too small, more than 1e7 points'
-                return
-            end if
-            n = int(t_last / dt * (1.0_dp + 1.0e-12_dp)) + 1
-            step = dt
-        else
-            n = npts
-            if (n == 0) n = 1001
-            step = t_last / (n - 1)
+        call time_grid(t_last, dt, npts, t, errmsg)
+        if (len(errmsg) > 0) then
+            errmsg = located(path, gr)//errmsg
+            return
         end if
-        allocate(t(n), table(n, 4), v(n), d(n))
-        t = step * [(real(j, dp), j = 0, n - 1)]
+        n = size(t)
+        allocate(table(n, 4), v(n), d(n))
         call rock_pulse(blk, pin%p, run, i, msg, t_grid=t, theta_grid=table(:, 3), &
                         omega_grid=table(:, 4), t_max=t_max, rtol=rtol)
         if (i == SEISPULSE_SUCCESS) call pulse_eval(pin%p, t, table(:, 2), v, d, i, msg)
@@ -637,8 +584,7 @@ contains
             return
         end if
         write(output_unit, '(a)') 'rocking: '//trim(outcome_names(run%outcome))
-        write(output_unit, '(a)') 'rocking history written to '//trim(files(1))//' and ' &
-            //trim(files(2))
+        call say_written('rocking history', files)
     end subroutine do_history
 
     ! ------------------------------------------------------------------------------
@@ -686,8 +632,7 @@ contains
         end if
         tpl = pulse_t(kind=code, amp=1.0_dp, duration=1.0_dp, beta=beta, full=full, &
                       peak_frac=peak_frac, freq=1.0_dp, t0=t0_periods)
-        if (code == PULSE_RICKER .and. .not. (ieee_is_finite(t0_periods) .and. &
-                                              t0_periods >= 0.0_dp)) then
+        if (code == PULSE_RICKER .and. .not. finite_at_least(t0_periods, 0.0_dp)) then
             errmsg = where//'t0_periods = '//real_str(t0_periods)//': must be a finite ' &
                      //'number >= 0 (the centre of the wavelet times f_p)'
             return
@@ -783,8 +728,7 @@ contains
             errmsg = path//': &run: output: '//errmsg
             return
         end if
-        write(output_unit, '(a)') 'rocking map written to '//trim(files(1))//' and ' &
-            //trim(files(2))
+        call say_written('rocking map', files)
     end subroutine do_map
 
     !> One axis of the map from a list (`<axis>_ratio`) or a range with a count.
@@ -796,70 +740,10 @@ contains
         logical, intent(in) :: positive                   !! > 0 (else >= 0)
         real(dp), allocatable, intent(out) :: values(:)
         character(len=:), allocatable, intent(out) :: errmsg
-        character(len=:), allocatable :: lname, rname, cname, bound
-        integer :: n, i
-        logical :: ok
-        errmsg = ''
-        lname = axis//'_ratio'
-        rname = axis//'_range'
-        cname = axis//'_count'
-        bound = merge('> 0 ', '>= 0', positive)
-        if (given(gm, lname) .and. given(gm, rname)) then
-            errmsg = lname//', '//rname//': give only one of them'
-            return
-        end if
-        if (given(gm, lname)) then
-            if (given(gm, cname)) then
-                errmsg = cname//': only with '//rname
-                return
-            end if
-            call list_length(list, lname, n, errmsg)   ! no gaps, at least one value
-            if (len(errmsg) > 0) return
-            do i = 1, n
-                ok = .false.
-                if (ieee_is_finite(list(i))) ok = list(i) > 0.0_dp .or. &
-                    (.not. positive .and. .not. list(i) < 0.0_dp)
-                if (.not. ok) then
-                    errmsg = list_item(lname, i)//' = '//real_str(list(i)) &
-                             //': must be a finite number '//trim(bound)
-                    return
-                end if
-            end do
-            allocate(values(n), source=list(1:n))
-        else if (given(gm, rname)) then
-            ok = ieee_is_finite(range(1)) .and. ieee_is_finite(range(2))
-            if (.not. ok) then
-                errmsg = rname//': give two finite numbers, '//rname//' = min, max'
-                return
-            end if
-            if (positive) then
-                ok = range(1) > 0.0_dp
-            else
-                ok = range(1) >= 0.0_dp
-            end if
-            if (.not. ok) then
-                errmsg = rname//'(1) = '//real_str(range(1))//': must be '//trim(bound)
-                return
-            end if
-            if (.not. range(2) > range(1)) then
-                errmsg = rname//' = '//real_str(range(1))//', '//real_str(range(2)) &
-                         //': the maximum must be above the minimum'
-                return
-            end if
-            if (count < 2 .or. count > max_list) then
-                errmsg = cname//' = '//int_str(count)//': must be in 2 .. 1000'
-                return
-            end if
-            allocate(values(count))
-            do i = 1, count
-                values(i) = range(1) + (range(2) - range(1)) * (real(i - 1, dp) &
-                                                                 / real(count - 1, dp))
-            end do
-            values(count) = range(2)
-        else
-            errmsg = lname//': missing (give '//lname//' = a list, or '//rname//' = min, ' &
-                     //'max with '//cname//')'
-        end if
+        character(len=:), allocatable :: grid
+        call axis_values(gm, axis//'_ratio', axis, list, range, count, 'linear', positive, &
+                         .false., max_list, values, grid, errmsg, required=.true., &
+                         count_optional=.true., hint=.false., real_numbers=.true.)
     end subroutine map_axis
 
     !> Warn (stderr) about template keys of &map the pulse family does not use.

@@ -1,8 +1,4 @@
-!> Analyses of the linear oscillator (oscillator.md): 'sdof' on accelerogram files,
-!> 'sdof_beta' (the dynamic coefficient of harmonic base motion) and 'sdof_shock' (the
-!> shock spectrum of one closed-form pulse).
-!>
-!> Analysis 'sdof', on accelerogram files:
+!> Analysis 'sdof' of the linear oscillator (oscillator.md), on accelerogram files:
 !> response spectra (SD, SV, SA and the pseudo-spectra PSV, PSA, optionally PSA/PGA),
 !> their envelope over the records with the short-period plateau of the design curve,
 !> and response histories.
@@ -16,84 +12,45 @@
 !> table is computed before the first is written. A record that cannot be read,
 !> scaled or analysed fails its rows (NaN results, status 1; the message goes to
 !> stderr and into the headers) and the other records are still computed; run_sdof
-!> then returns SDOF_ROWS_FAILED and the driver exits with status 1 after writing the
+!> then returns ROWS_FAILED and the driver exits with status 1 after writing the
 !> tables. The numbers come from seispulse_records and seispulse_sdof_sim; the driver only
 !> reads, checks and writes.
 !>
-!> Analysis 'sdof_beta': group &sdof_beta (frequency ratios theta/omega as a list or a
-!> range, the damping parameters gamma = 2 zeta, the damping model); table
-!> <output>_sdof_beta, beta (Eq. 2.17/2.20) and the cosine law's 2|beta| (after Eq. 2.21;
-!> the from-rest maximum only for gamma = 0)
-!> from seispulse_sdof_closed's dynamic_coefficient.
-!>
-!> Analysis 'sdof_shock': groups &pulse (driver_pulse_group, as in 'pulse' and
-!> 'sliding') and &sdof_shock (t_d/T ratios or periods, damping ratios); table
-!> <output>_sdof_shock, the spectra of the closed-form response from rest (free
-!> vibration after the pulse included) from seispulse_sdof_closed's sdof_pulse_spectrum,
-!> also divided by the pulse's peak ground acceleration.
+!> Analyses 'sdof_beta' and 'sdof_shock': driver_sdof_beta, driver_sdof_shock.
 module driver_sdof
     use, intrinsic :: iso_fortran_env, only: output_unit
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan, &
-                                             ieee_positive_inf
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_SINGULAR
-    use seispulse_checks, only: outside
-    use seispulse_format, only: int_str
-    use seispulse_records, only: record_format_name
-    use seispulse_sdof_sim, only: sdof_spectrum, pseudo_spectra, sdof_response, design_envelope, &
-                              spectral_shape, SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES
-    use seispulse_sdof_closed, only: dynamic_coefficient, sdof_pulse_spectrum, &
-                                    BETA_HYSTERETIC, BETA_VISCOUS
-    use seispulse_pulses, only: pulse_kind_name, pulse_peak_accel, PULSE_RICKER, PULSE_MP
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+    use seispulse, only: dp, SEISPULSE_SUCCESS, outside, int_str, sdof_spectrum, pseudo_spectra, &
+                         sdof_response, design_envelope, spectral_shape, SDOF_PEAKS_EXACT, &
+                         SDOF_PEAKS_SAMPLES
     use driver_namelist_scan, only: nml_group
-    use driver_input, only: find_group, located, join, read_optional, given, list_length, &
-                            list_item
-    use driver_tables, only: write_tables, delete_files
-    use driver_pulse_group, only: pulse_input_t, read_pulse_group, build_pulse, &
-                                  write_pulse_group
+    use driver_input, only: find_group, located, join, read_optional, given, list_item, &
+                            name_index, num, ROWS_FAILED
+    use driver_tables, only: write_tables, delete_files, say_written
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
-                              name_index, value_name, num
+                              records_missing, record_line, failed_records
+    use driver_sdof_common, only: max_periods, max_dampings, check_dampings
+    use driver_axis, only: axis_values
     implicit none
     private
 
-    public :: run_sdof, sdof_groups, SDOF_ROWS_FAILED
-    public :: run_sdof_beta, sdof_beta_groups, run_sdof_shock, sdof_shock_groups
+    public :: run_sdof, sdof_groups
 
-    !> Groups each analysis reads (besides &run): 'sdof', 'sdof_beta', 'sdof_shock'.
+    !> Groups this analysis reads (besides &run).
     character(len=12), parameter :: sdof_groups(3) = [character(len=12) :: 'records', &
         'sdof', 'sdof_history']
-    character(len=12), parameter :: sdof_beta_groups(1) = [character(len=12) :: 'sdof_beta']
-    character(len=12), parameter :: sdof_shock_groups(2) = [character(len=12) :: 'pulse', &
-        'sdof_shock']
-
-    !> stat of run_sdof when the tables are written but some rows failed (exit 1).
-    integer, parameter :: SDOF_ROWS_FAILED = -1
 
     character(len=13), parameter :: sdof_keys(11) = [character(len=13) :: 'periods', &
         'period_range', 'period_count', 'spacing', 'damping', 'g', 'peaks', 'threads', &
         'envelope', 'plateau_below', 'shape']
     character(len=8), parameter :: history_keys(2) = [character(len=8) :: 'periods', &
         'damping']
-    character(len=12), parameter :: beta_keys(6) = [character(len=12) :: 'ratios', &
-        'ratio_range', 'ratio_count', 'spacing', 'gamma', 'model']
-    character(len=12), parameter :: shock_keys(8) = [character(len=12) :: 'ratios', &
-        'ratio_range', 'ratio_count', 'periods', 'period_range', 'period_count', 'spacing', &
-        'damping']
-    character(len=10), parameter :: model_names(2) = [character(len=10) :: 'hysteretic', &
-        'viscous']
     character(len=7), parameter :: peaks_names(2) = [character(len=7) :: 'exact', 'samples']
-    character(len=6), parameter :: spacing_names(2) = [character(len=6) :: 'linear', 'log']
 
-    !> Most periods (list or range), most damping ratios.
-    integer, parameter :: max_periods = 1000, max_dampings = 100
     !> Most rows of the spectra table (records x damping ratios x periods) and of the
     !> history table (their samples x damping ratios x periods).
     integer, parameter :: max_rows = 5000000, max_history_rows = 5000000
-    !> Most failed records named in the final message.
-    integer, parameter :: max_named = 20
-    !> Damping ratio when none is given; gamma = 2 zeta of &sdof_beta when none is given.
-    real(dp), parameter :: default_damping = 0.05_dp, default_gamma = 0.1_dp
 
     ! namelist variables of &sdof (defaults are set in set_defaults; &records:
     ! driver_records; &sdof_history: read_history, into hist_periods, hist_damping)
@@ -105,16 +62,6 @@ module driver_sdof
         envelope, plateau_below, shape
 
     real(dp) :: hist_periods(max_periods), hist_damping(max_dampings)
-
-    !> &sdof_beta and &sdof_shock (their readers have the namelists: the keys are named
-    !> like those of &sdof).
-    type :: axis_input_t
-        real(dp) :: ratios(max_periods), ratio_range(2), periods(max_periods), period_range(2)
-        integer :: ratio_count = 0, period_count = 0
-        character(len=32) :: spacing = 'linear', model = 'hysteretic'
-        real(dp) :: gamma(max_dampings), damping(max_dampings)
-    end type axis_input_t
-    type(axis_input_t) :: beta_in, shock_in
 
     !> The validated input.
     type :: config_t
@@ -162,21 +109,7 @@ contains
         shape = .false.
         hist_periods = nan
         hist_damping = nan
-        call axis_defaults(beta_in)
-        call axis_defaults(shock_in)
     end subroutine set_defaults
-
-    subroutine axis_defaults(a)
-        type(axis_input_t), intent(out) :: a
-        real(dp) :: nan
-        nan = ieee_value(nan, ieee_quiet_nan)
-        a%ratios = nan
-        a%ratio_range = nan
-        a%periods = nan
-        a%period_range = nan
-        a%gamma = nan
-        a%damping = nan
-    end subroutine axis_defaults
 
     subroutine read_sdof(unit, text, ios, iomsg)
         integer, intent(in) :: unit
@@ -212,72 +145,8 @@ contains
         end if
     end subroutine read_history
 
-    subroutine read_beta(unit, text, ios, iomsg)
-        integer, intent(in) :: unit
-        character(len=*), intent(in) :: text
-        integer, intent(out) :: ios
-        character(len=*), intent(inout) :: iomsg
-        real(dp) :: ratios(max_periods), ratio_range(2), gamma(max_dampings)
-        integer :: ratio_count
-        character(len=32) :: spacing, model
-        namelist /sdof_beta/ ratios, ratio_range, ratio_count, spacing, gamma, model
-        ratios = beta_in%ratios
-        ratio_range = beta_in%ratio_range
-        ratio_count = beta_in%ratio_count
-        spacing = beta_in%spacing
-        gamma = beta_in%gamma
-        model = beta_in%model
-        if (len(text) > 0) then
-            read(text, nml=sdof_beta, iostat=ios, iomsg=iomsg)
-        else
-            read(unit, nml=sdof_beta, iostat=ios, iomsg=iomsg)
-        end if
-        if (ios /= 0) return
-        beta_in%ratios = ratios
-        beta_in%ratio_range = ratio_range
-        beta_in%ratio_count = ratio_count
-        beta_in%spacing = spacing
-        beta_in%gamma = gamma
-        beta_in%model = model
-    end subroutine read_beta
-
-    subroutine read_shock(unit, text, ios, iomsg)
-        integer, intent(in) :: unit
-        character(len=*), intent(in) :: text
-        integer, intent(out) :: ios
-        character(len=*), intent(inout) :: iomsg
-        real(dp) :: ratios(max_periods), ratio_range(2), periods(max_periods), &
-                    period_range(2), damping(max_dampings)
-        integer :: ratio_count, period_count
-        character(len=32) :: spacing
-        namelist /sdof_shock/ ratios, ratio_range, ratio_count, periods, period_range, &
-            period_count, spacing, damping
-        ratios = shock_in%ratios
-        ratio_range = shock_in%ratio_range
-        ratio_count = shock_in%ratio_count
-        periods = shock_in%periods
-        period_range = shock_in%period_range
-        period_count = shock_in%period_count
-        spacing = shock_in%spacing
-        damping = shock_in%damping
-        if (len(text) > 0) then
-            read(text, nml=sdof_shock, iostat=ios, iomsg=iomsg)
-        else
-            read(unit, nml=sdof_shock, iostat=ios, iomsg=iomsg)
-        end if
-        if (ios /= 0) return
-        shock_in%ratios = ratios
-        shock_in%ratio_range = ratio_range
-        shock_in%ratio_count = ratio_count
-        shock_in%periods = periods
-        shock_in%period_range = period_range
-        shock_in%period_count = period_count
-        shock_in%spacing = spacing
-        shock_in%damping = damping
-    end subroutine read_shock
-
     !> Read and check the groups, compute every table, write them; print where they
-    !> went. stat: 0, SDOF_ROWS_FAILED (tables written, errmsg says which records
+    !> went. stat: 0, ROWS_FAILED (tables written, errmsg says which records
     !> failed), or > 0 for an input or output error (nothing written).
     subroutine run_sdof(path, groups, prefix, stat, errmsg)
         character(len=*), intent(in) :: path              !! input file (for messages)
@@ -290,7 +159,6 @@ contains
         type(record_out_t), allocatable :: outs(:)
         type(record_res_t), allocatable :: res(:)
         character(len=512) :: files_s(2), files_e(2), files_h(2)
-        character(len=:), allocatable :: failed
         integer :: nfailed
 
         call set_defaults()
@@ -304,8 +172,7 @@ contains
         if (stat /= 0) return
         stat = 1
         if (find_group(groups, 'records') == 0) then
-            errmsg = path//': &records: missing group (it lists the record files: files = ' &
-                     //'''a.AT2'', ...)'
+            errmsg = path//records_missing
             return
         end if
         if (find_group(groups, 'sdof') == 0 .and. find_group(groups, 'sdof_history') == 0) &
@@ -337,7 +204,8 @@ contains
         call echo_sdof(cfg)
 
         ! --- compute every table (nothing is written before all of them are done)
-        call compute(path, gr, cfg, outs, res, nfailed, failed)
+        call compute(path, gr, cfg, outs, res)
+        nfailed = count(.not. outs%ok)
 
         ! --- write
         if (cfg%spectra) then
@@ -367,17 +235,15 @@ contains
                 return
             end if
         end if
-        if (cfg%spectra) write(output_unit, '(a)') 'sdof spectra written to ' &
-            //trim(files_s(1))//' and '//trim(files_s(2))
-        if (cfg%envelope) write(output_unit, '(a)') 'sdof envelope written to ' &
-            //trim(files_e(1))//' and '//trim(files_e(2))
-        if (cfg%history) write(output_unit, '(a)') 'sdof history written to ' &
-            //trim(files_h(1))//' and '//trim(files_h(2))
+        if (cfg%spectra) call say_written('sdof spectra', files_s)
+        if (cfg%envelope) call say_written('sdof envelope', files_e)
+        if (cfg%history) call say_written('sdof history', files_h)
         stat = 0
         if (nfailed > 0) then
-            stat = SDOF_ROWS_FAILED
+            stat = ROWS_FAILED
             errmsg = int_str(nfailed)//' of '//int_str(size(outs))//' records failed (' &
-                     //failed//'): their rows hold NaN and status 1'
+                     //failed_records(outs, .not. outs%ok)//'): their rows hold NaN and ' &
+                     //'status 1'
         end if
     end subroutine run_sdof
 
@@ -502,172 +368,6 @@ contains
         end if
     end subroutine check_history
 
-    !> The damping ratios of a `damping` list (default_damping when not given): each
-    !> finite, in [0, 1). errmsg (without the location) on failure.
-    subroutine check_dampings(group, list, values, errmsg)
-        type(nml_group), intent(in) :: group
-        real(dp), intent(in) :: list(:)
-        real(dp), allocatable, intent(out) :: values(:)
-        character(len=:), allocatable, intent(out) :: errmsg
-        integer :: n, i
-        errmsg = ''
-        if (.not. given(group, 'damping')) then
-            values = [default_damping]
-            return
-        end if
-        call list_length(list, 'damping', n, errmsg)
-        if (len(errmsg) > 0) return
-        do i = 1, n
-            if (outside(list(i), 0.0_dp, 1.0_dp, .false., .true.)) then
-                errmsg = value_name('damping', i, n)//' = '//num(list(i))//': must be a ' &
-                         //'damping ratio in [0, 1)'
-                return
-            end if
-        end do
-        values = list(1:n)
-    end subroutine check_dampings
-
-    !> The damping parameters of a `gamma` list (default_gamma when not given): each
-    !> finite and >= 0. errmsg (without the location) on failure.
-    subroutine check_gammas(group, list, values, errmsg)
-        type(nml_group), intent(in) :: group
-        real(dp), intent(in) :: list(:)
-        real(dp), allocatable, intent(out) :: values(:)
-        character(len=:), allocatable, intent(out) :: errmsg
-        integer :: n, i
-        errmsg = ''
-        if (.not. given(group, 'gamma')) then
-            values = [default_gamma]
-            return
-        end if
-        call list_length(list, 'gamma', n, errmsg)
-        if (len(errmsg) > 0) return
-        do i = 1, n
-            if (outside(list(i), 0.0_dp, huge(1.0_dp), .false., .false.)) then
-                errmsg = value_name('gamma', i, n)//' = '//num(list(i))//': must be a ' &
-                         //'finite number >= 0 (gamma = 2 zeta)'
-                return
-            end if
-        end do
-        values = list(1:n)
-    end subroutine check_gammas
-
-    !> Values of one axis: a list `<lname>` (strictly ascending if `ascending`), or a range
-    !> `<stem>_range` = min, max with `<stem>_count` points and `spacing` (linear | log;
-    !> log needs min > 0). Values >= 0 (> 0 with `positive`). Neither given: no values.
-    !> `grid` says how they were given (for the table header); errmsg (without the
-    !> location) on failure. Keys not given in `group` are not checked.
-    subroutine axis_values(group, lname, stem, list, range, count, spacing, positive, &
-                           ascending, max_count, values, grid, errmsg)
-        type(nml_group), intent(in) :: group
-        character(len=*), intent(in) :: lname             !! name of the list key
-        character(len=*), intent(in) :: stem              !! stem of <stem>_range, <stem>_count
-        real(dp), intent(in) :: list(:), range(2)
-        integer, intent(in) :: count
-        character(len=*), intent(in) :: spacing
-        logical, intent(in) :: positive                   !! values > 0 (else >= 0)
-        logical, intent(in) :: ascending                  !! a list must be strictly ascending
-        integer, intent(in) :: max_count
-        real(dp), allocatable, intent(out) :: values(:)
-        character(len=:), allocatable, intent(out) :: grid
-        character(len=:), allocatable, intent(out) :: errmsg
-        character(len=:), allocatable :: rname, cname, bound
-        integer :: n, i, code
-        real(dp) :: a, b
-
-        errmsg = ''
-        grid = ''
-        rname = stem//'_range'
-        cname = stem//'_count'
-        bound = merge('> 0 ', '>= 0', positive)
-        allocate(values(0))
-        if (given(group, lname) .and. given(group, rname)) then
-            errmsg = lname//', '//rname//': give only one of them (a list, or a range with ' &
-                     //cname//')'
-            return
-        end if
-        if (.not. given(group, rname)) then
-            if (given(group, cname)) then
-                errmsg = cname//': only with '//rname
-                return
-            else if (given(group, 'spacing')) then
-                errmsg = 'spacing: only with '//rname
-                return
-            end if
-        end if
-        if (given(group, lname)) then
-            call list_length(list, lname, n, errmsg)   ! no gaps, at least one value
-            if (len(errmsg) > 0) return
-            do i = 1, n
-                if (outside(list(i), 0.0_dp, huge(a), positive, .false.)) then
-                    errmsg = value_name(lname, i, n)//' = '//num(list(i))//': must be a ' &
-                             //'finite number '//trim(bound)
-                    return
-                end if
-            end do
-            do i = 2, n
-                if (.not. ascending) exit
-                if (.not. list(i) > list(i - 1)) then
-                    errmsg = list_item(lname, i)//' = '//num(list(i))//': the values must ' &
-                             //'be strictly ascending'
-                    return
-                end if
-            end do
-            values = list(1:n)
-            grid = lname//' as listed'
-        else if (given(group, rname)) then
-            if (.not. (ieee_is_finite(range(1)) .and. ieee_is_finite(range(2)))) then
-                errmsg = rname//': give two finite numbers, '//rname//' = min, max'
-                return
-            end if
-            a = range(1)
-            b = range(2)
-            if (outside(a, 0.0_dp, huge(a), positive, .false.)) then
-                errmsg = list_item(rname, 1)//' = '//num(a)//': must be '//trim(bound)
-                return
-            end if
-            if (.not. b > a) then
-                errmsg = rname//' = '//num(a)//', '//num(b)//': the maximum must be above ' &
-                         //'the minimum'
-                return
-            end if
-            if (.not. given(group, cname)) then
-                errmsg = cname//': missing (the number of values in '//rname//', 2 .. ' &
-                         //int_str(max_count)//')'
-                return
-            end if
-            if (count < 2 .or. count > max_count) then
-                errmsg = cname//' = '//int_str(count)//': must be in 2 .. '//int_str(max_count)
-                return
-            end if
-            code = name_index(spacing, spacing_names)
-            if (code == 0) then
-                errmsg = 'spacing = '''//trim(spacing)//''': unknown spacing (allowed: ' &
-                         //join(spacing_names)//')'
-                return
-            end if
-            if (code == 2 .and. .not. a > 0.0_dp) then
-                errmsg = 'spacing = ''log'': needs '//list_item(rname, 1)//' > 0 (use ' &
-                         //'''linear'', or a list '//lname//' that starts with 0)'
-                return
-            end if
-            deallocate(values)
-            allocate(values(count))
-            do i = 1, count
-                if (code == 1) then
-                    values(i) = a + (b - a) * (real(i - 1, dp) / real(count - 1, dp))
-                else
-                    values(i) = exp(log(a) + (log(b) - log(a)) * (real(i - 1, dp) &
-                                                                 / real(count - 1, dp)))
-                end if
-            end do
-            values(1) = a
-            values(count) = b
-            grid = rname//' = '//num(a)//', '//num(b)//', '//cname//' = '//int_str(count) &
-                   //', spacing = '''//trim(spacing_names(code))//''''
-        end if
-    end subroutine axis_values
-
     ! ------------------------------------------------------------------------------
     ! Echo
     ! ------------------------------------------------------------------------------
@@ -749,15 +449,13 @@ contains
 
     !> Every record (read, polarity, scale), its spectra and histories. A record that
     !> fails (reading, scaling or a library check) keeps o%ok = .false. and its message,
-    !> reported on stderr at once; failed: "2 'name', 5 'other'" of the failed records.
-    subroutine compute(path, gr, cfg, outs, res, nfailed, failed)
+    !> reported on stderr at once.
+    subroutine compute(path, gr, cfg, outs, res)
         character(len=*), intent(in) :: path
         type(nml_group), intent(in) :: gr
         type(config_t), intent(in) :: cfg
         type(record_out_t), allocatable, intent(out) :: outs(:)
         type(record_res_t), allocatable, intent(out) :: res(:)
-        integer, intent(out) :: nfailed
-        character(len=:), allocatable, intent(out) :: failed
         real(dp), allocatable :: accel(:)
         character(len=:), allocatable :: where
         character(len=4096) :: msg
@@ -766,8 +464,6 @@ contains
         where = located(path, gr)
         nrec = size(cfg%recs)
         allocate(outs(nrec), res(nrec))
-        nfailed = 0
-        failed = ''
         do ir = 1, nrec
             associate (r => cfg%recs(ir), o => outs(ir))
                 call load_record(where, r, ir, nrec, 'sdof', cfg%slammer_rounding, o, accel)
@@ -780,15 +476,6 @@ contains
                         o%message = trim(msg)
                         call report(where//list_item('files', ir)//' = '''//r%file//''': ' &
                                     //o%message)
-                    end if
-                end if
-                if (.not. o%ok) then
-                    nfailed = nfailed + 1
-                    if (nfailed <= max_named) then
-                        if (nfailed > 1) failed = failed//', '
-                        failed = failed//int_str(ir)//' '''//o%name//''''
-                    else if (nfailed == max_named + 1) then
-                        failed = failed//', ...'
                     end if
                 end if
             end associate
@@ -883,12 +570,9 @@ contains
                            //'(g), scale factor, PGA after scaling (g)):'
         do ir = 1, nrec
             associate (o => outs(ir), r => cfg%recs(ir))
-                line = 'record '//int_str(ir)//': '//r%file//': '
+                line = record_line(ir, r, o)
                 if (o%ok) then
-                    line = line//'format '//record_format_name(o%fmt)//', npts ' &
-                           //int_str(o%npts)//', dt '//num(o%dt)//', PGA ' &
-                           //num(o%pga_read)//', scale factor '//num(o%factor)//', PGA ' &
-                           //num(o%pga)
+                    line = line//', PGA '//num(o%pga)
                     if (cfg%spectra .and. cfg%shape) then
                         do j = 1, size(cfg%dampings)
                             line = line//'; damping '//num(cfg%dampings(j))//': PSA/PGA ' &
@@ -896,8 +580,6 @@ contains
                                    //num(res(ir)%t_peak(j))//' s'
                         end do
                     end if
-                else
-                    line = line//'FAILED: '//o%message
                 end if
                 comments(3 + nh + ir) = line
             end associate
@@ -1135,332 +817,6 @@ contains
             [character(len=8) :: '-', '-', 's', 's', 'g', 'm', 'm/s', 'g', '-'], table, &
             files_out, stat, errmsg, labels=labels)
     end subroutine write_history
-
-    ! ------------------------------------------------------------------------------
-    ! Analysis 'sdof_beta'
-    ! ------------------------------------------------------------------------------
-
-    !> Read and check &sdof_beta, tabulate the dynamic coefficient, write the table;
-    !> print where it went. stat > 0 with errmsg on an input or output error.
-    subroutine run_sdof_beta(path, groups, prefix, stat, errmsg)
-        character(len=*), intent(in) :: path              !! input file (for messages)
-        type(nml_group), intent(in) :: groups(:)          !! scanned groups
-        character(len=*), intent(in) :: prefix            !! output prefix
-        integer, intent(out) :: stat
-        character(len=:), allocatable, intent(out) :: errmsg
-        type(nml_group) :: gb
-        character(len=:), allocatable :: where, grid
-        real(dp), allocatable :: ratios(:), gammas(:), table(:, :)
-        character(len=512) :: files(2)
-        character(len=1024) :: comments(6), msg
-        real(dp) :: nan, b, bc
-        integer :: model, nr, ng, i, j, row, st
-
-        call set_defaults()
-        call read_optional(path, groups, 'sdof_beta', beta_keys, read_beta, gb, stat, errmsg)
-        if (stat /= 0) return
-        stat = 1
-        if (find_group(groups, 'sdof_beta') == 0) then
-            errmsg = path//': &sdof_beta: missing group (it gives the frequency ratios ' &
-                     //'theta/omega: ratios = a list, or ratio_range = min, max with ' &
-                     //'ratio_count)'
-            return
-        end if
-        where = located(path, gb)
-        call axis_values(gb, 'ratios', 'ratio', beta_in%ratios, beta_in%ratio_range, &
-                         beta_in%ratio_count, beta_in%spacing, .false., .true., max_periods, &
-                         ratios, grid, errmsg)
-        if (len(errmsg) == 0 .and. size(ratios) == 0) errmsg = 'ratios: missing (give ' &
-            //'ratios = a list of theta/omega, or ratio_range = min, max with ratio_count)'
-        if (len(errmsg) > 0) then
-            errmsg = where//errmsg
-            return
-        end if
-        call check_gammas(gb, beta_in%gamma, gammas, errmsg)
-        if (len(errmsg) > 0) then
-            errmsg = where//errmsg
-            return
-        end if
-        select case (name_index(beta_in%model, model_names))
-        case (1)
-            model = BETA_HYSTERETIC
-        case (2)
-            model = BETA_VISCOUS
-        case default
-            errmsg = where//'model = '''//trim(beta_in%model)//''': unknown model (allowed: ' &
-                     //join(model_names)//')'
-            return
-        end select
-
-        ! --- echo the effective input
-        call echo_beta(ratios, gammas, model_names(model))
-
-        ! --- compute
-        nan = ieee_value(nan, ieee_quiet_nan)
-        nr = size(ratios)
-        ng = size(gammas)
-        allocate(table(nr * ng, 4))
-        do j = 1, ng
-            do i = 1, nr
-                row = (j - 1) * nr + i
-                msg = ''
-                call dynamic_coefficient(ratios(i), gammas(j), model, b, st, msg, beta_cos=bc)
-                if (st == SEISPULSE_SINGULAR) then
-                    ! undamped resonance: |beta| is infinite, its sign undefined
-                    b = nan
-                    bc = ieee_value(bc, ieee_positive_inf)
-                else if (st /= SEISPULSE_SUCCESS) then
-                    errmsg = where//trim(msg)
-                    return
-                end if
-                table(row, :) = [gammas(j), ratios(i), b, bc]
-            end do
-        end do
-
-        ! --- write
-        comments(1) = 'seispulse analysis sdof_beta: dynamic coefficient of harmonic base ' &
-                      //'motion against the frequency ratio theta/omega, one row per gamma ' &
-                      //'and ratio'
-        comments(2) = 'input: '//trim(path)
-        comments(3) = 'ratios: '//grid//'; model = '//trim(model_names(model))//'; gamma = ' &
-                      //'2 zeta (zeta: the viscous damping ratio)'
-        comments(4) = 'hysteretic (the book''s Eq. 2.20, square root restored): beta = ' &
-                      //'1/sqrt((1 - r^2)^2 + gamma^2); viscous: 1/sqrt((1 - r^2)^2 + ' &
-                      //'(gamma r)^2); both 1/gamma at r = 1'
-        comments(5) = 'gamma = 0: the signed 1/(1 - r^2) (Eq. 2.17, negative above ' &
-                      //'resonance); at r = 1 beta = nan (infinite, sign undefined) and ' &
-                      //'beta_cos = inf'
-        comments(6) = 'beta_cos = 2|beta|: the cosine law from rest (after Eq. 2.21); ' &
-                      //'max S = k_c beta Q (Eq. 2.19)'
-        call write_tables(prefix, 'sdof_beta', comments, &
-            [character(len=11) :: 'gamma', 'theta/omega', 'beta', 'beta_cos'], &
-            [character(len=11) :: '-', '-', '-', '-'], table, files, stat, errmsg)
-        if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
-            return
-        end if
-        write(output_unit, '(a)') 'sdof_beta table written to '//trim(files(1))//' and ' &
-            //trim(files(2))
-
-    end subroutine run_sdof_beta
-
-    ! ------------------------------------------------------------------------------
-    ! Analysis 'sdof_shock'
-    ! ------------------------------------------------------------------------------
-
-    !> Read and check &pulse and &sdof_shock, compute the shock spectrum of the pulse,
-    !> write the table; print where it went. stat > 0 with errmsg on an input or output
-    !> error.
-    subroutine run_sdof_shock(path, groups, prefix, stat, errmsg)
-        character(len=*), intent(in) :: path              !! input file (for messages)
-        type(nml_group), intent(in) :: groups(:)          !! scanned groups
-        character(len=*), intent(in) :: prefix            !! output prefix
-        integer, intent(out) :: stat
-        character(len=:), allocatable, intent(out) :: errmsg
-        type(pulse_input_t) :: pin
-        type(nml_group) :: gk
-        character(len=:), allocatable :: where, grid, td_text
-        real(dp), allocatable :: axis(:), ratios(:), periods(:), dampings(:), table(:, :), &
-                                 sd(:, :), sv(:, :), sa(:, :), psv(:, :), psa(:, :)
-        character(len=512) :: files(2)
-        character(len=1024) :: comments(7), msg
-        real(dp) :: td, apk, tpk, pga, inf, nan
-        integer :: np, nd, i, j, row, st
-        logical :: by_ratio, by_period
-
-        call set_defaults()
-        call read_pulse_group(path, groups, pin, stat, errmsg)
-        if (stat /= 0) return
-        call read_optional(path, groups, 'sdof_shock', shock_keys, read_shock, gk, stat, &
-                           errmsg)
-        if (stat /= 0) return
-        stat = 1
-        if (find_group(groups, 'sdof_shock') == 0) then
-            errmsg = path//': &sdof_shock: missing group (it gives the oscillators: ratios ' &
-                     //'t_d/T or periods, as a list or a range, and the damping ratios)'
-            return
-        end if
-        call build_pulse(path, pin, stat, errmsg, g_used=.true.)
-        if (stat /= 0) return
-        stat = 1
-        where = located(path, gk)
-
-        ! --- the oscillators: t_d/T ratios or periods
-        by_ratio = given(gk, 'ratios') .or. given(gk, 'ratio_range')
-        by_period = given(gk, 'periods') .or. given(gk, 'period_range')
-        if (by_ratio .and. by_period) then
-            errmsg = where//trim(merge('ratios     ', 'ratio_range', given(gk, 'ratios'))) &
-                     //', '//trim(merge('periods     ', 'period_range', given(gk, 'periods'))) &
-                     //': give only one of them (t_d/T ratios, or periods in s)'
-            return
-        end if
-        if (by_period) then
-            if (given(gk, 'ratio_count')) then
-                errmsg = where//'ratio_count: only with ratio_range'
-                return
-            end if
-            call axis_values(gk, 'periods', 'period', shock_in%periods, &
-                             shock_in%period_range, shock_in%period_count, shock_in%spacing, &
-                             .false., .true., max_periods, axis, grid, errmsg)
-        else
-            if (given(gk, 'period_count')) then
-                errmsg = where//'period_count: only with period_range'
-                return
-            end if
-            call axis_values(gk, 'ratios', 'ratio', shock_in%ratios, shock_in%ratio_range, &
-                             shock_in%ratio_count, shock_in%spacing, .true., .true., &
-                             max_periods, axis, grid, errmsg)
-            if (len(errmsg) == 0 .and. size(axis) == 0) errmsg = 'ratios: missing (give ' &
-                //'ratios = a list of t_d/T, or ratio_range = min, max with ratio_count; ' &
-                //'or periods in s)'
-        end if
-        if (len(errmsg) > 0) then
-            errmsg = where//errmsg
-            return
-        end if
-        call check_dampings(gk, shock_in%damping, dampings, errmsg)
-        if (len(errmsg) > 0) then
-            errmsg = where//errmsg
-            return
-        end if
-
-        ! --- t_d, T and t_d/T
-        if (pin%code == PULSE_RICKER .or. pin%code == PULSE_MP) then
-            td = 1.0_dp / pin%p%freq
-            td_text = 't_d = 1/freq = '//num(td)//' s (the pulse period)'
-        else
-            td = pin%p%duration
-            td_text = 't_d = duration = '//num(td)//' s'
-        end if
-        np = size(axis)
-        inf = ieee_value(inf, ieee_positive_inf)
-        nan = ieee_value(nan, ieee_quiet_nan)
-        allocate(ratios(np), periods(np))
-        if (by_period) then
-            periods = axis
-            do i = 1, np
-                ratios(i) = inf
-                if (periods(i) > 0.0_dp) ratios(i) = td / periods(i)
-            end do
-        else
-            ratios = axis
-            periods = td / ratios
-        end if
-
-        ! --- echo the effective input
-        call write_pulse_group(output_unit)
-        call echo_shock(by_period, axis, dampings)
-
-        ! --- compute
-        msg = ''
-        call pulse_peak_accel(pin%p, apk, tpk, st, msg)
-        if (st /= SEISPULSE_SUCCESS) then
-            errmsg = located(path, pin%group)//trim(msg)
-            return
-        end if
-        pga = apk / pin%g
-        nd = size(dampings)
-        allocate(table(np * nd, 10), sd(np, 1), sv(np, 1), sa(np, 1), psv(np, 1), psa(np, 1))
-        do j = 1, nd
-            do i = 1, np
-                ! one period at a time, so that a refusal names its value
-                msg = ''
-                call sdof_pulse_spectrum(pin%p, periods(i:i), dampings(j), sd(i:i, 1), &
-                                         sv(i:i, 1), sa(i:i, 1), st, msg)
-                if (st /= SEISPULSE_SUCCESS) then
-                    if (by_period) then
-                        errmsg = where//value_name('periods', i, np)//' = '//num(periods(i)) &
-                                 //': '//trim(msg)
-                    else
-                        errmsg = where//value_name('ratios', i, np)//' = '//num(ratios(i)) &
-                                 //' (T = t_d/ratio = '//num(periods(i))//' s, '//td_text &
-                                 //'): '//trim(msg)
-                    end if
-                    return
-                end if
-            end do
-            sa = sa / pin%g
-            call pseudo_spectra(periods, sd, pin%g, pga, psv, psa)
-            do i = 1, np
-                row = (j - 1) * np + i
-                table(row, 1:8) = [dampings(j), ratios(i), periods(i), sd(i, 1), sv(i, 1), &
-                                   sa(i, 1), psv(i, 1), psa(i, 1)]
-                table(row, 9:10) = nan
-                if (pga > 0.0_dp) table(row, 9:10) = [sa(i, 1), psa(i, 1)] / pga
-            end do
-        end do
-
-        ! --- write
-        comments(1) = 'seispulse analysis sdof_shock: shock spectrum of the linear ' &
-                      //'oscillator under one pulse (closed form, from rest), one row per ' &
-                      //'damping ratio and period'
-        comments(2) = 'input: '//trim(path)
-        comments(3) = 'pulse: '//pulse_kind_name(pin%code)//', '//td_text//', peak ground ' &
-                      //'acceleration PGA = '//num(apk)//' m/s2 = '//num(pga)//' g at t = ' &
-                      //num(tpk)//' s; g = '//num(pin%g)//' m/s2'
-        comments(4) = 'oscillators: '//grid
-        comments(5) = 'SD, SV: largest |z|, |z''| (relative to the ground); SA: largest ' &
-                      //'|a_g + z''''| (absolute acceleration); over all t >= 0, the free ' &
-                      //'vibration after the pulse included; PSV = omega SD, PSA = omega^2 SD / g'
-        comments(6) = 'SA/PGA, PSA/PGA: the dynamic coefficients (the shock spectrum ' &
-                      //'against t_d/T); T = 0 (t_d/T = inf): the ground, SA = PSA = PGA'
-        comments(7) = 'undamped rectangle: SA/PGA = 2 sin(pi t_d/T) for t_d/T <= 1/2, else 2 ' &
-                      //'(the book''s 1 + 2 pi t_d/T is an upper bound)'
-        call write_tables(prefix, 'sdof_shock', comments, &
-            [character(len=8) :: 'damping', 't_d/T', 'T', 'SD', 'SV', 'SA', 'PSV', 'PSA', &
-             'SA/PGA', 'PSA/PGA'], &
-            [character(len=8) :: '-', '-', 's', 'm', 'm/s', 'g', 'm/s', 'g', '-', '-'], table, &
-            files, stat, errmsg)
-        if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
-            return
-        end if
-        write(output_unit, '(a)') 'sdof_shock table written to '//trim(files(1))//' and ' &
-            //trim(files(2))
-
-    end subroutine run_sdof_shock
-
-    !> &sdof_beta with the values in use.
-    subroutine echo_beta(values, gammas, model_name)
-        real(dp), intent(in) :: values(:), gammas(:)
-        character(len=*), intent(in) :: model_name
-        real(dp) :: ratios(size(values)), gamma(size(gammas))
-        character(len=10) :: model
-        namelist /sdof_beta/ ratios, gamma, model
-        ratios = values
-        gamma = gammas
-        model = model_name
-        write(output_unit, nml=sdof_beta)
-    end subroutine echo_beta
-
-    !> &sdof_shock with the values in use (the ratios or the periods as a list).
-    subroutine echo_shock(by_period, values, dampings)
-        logical, intent(in) :: by_period
-        real(dp), intent(in) :: values(:), dampings(:)
-        if (by_period) then
-            call echo_shock_periods(values, dampings)
-        else
-            call echo_shock_ratios(values, dampings)
-        end if
-    end subroutine echo_shock
-
-    subroutine echo_shock_periods(values, dampings)
-        real(dp), intent(in) :: values(:), dampings(:)
-        real(dp) :: periods(size(values)), damping(size(dampings))
-        namelist /sdof_shock/ periods, damping
-        periods = values
-        damping = dampings
-        write(output_unit, nml=sdof_shock)
-    end subroutine echo_shock_periods
-
-    subroutine echo_shock_ratios(values, dampings)
-        real(dp), intent(in) :: values(:), dampings(:)
-        real(dp) :: ratios(size(values)), damping(size(dampings))
-        namelist /sdof_shock/ ratios, damping
-        ratios = values
-        damping = dampings
-        write(output_unit, nml=sdof_shock)
-    end subroutine echo_shock_ratios
 
     !> Length of the longest record name (the label column).
     pure integer function label_len(outs)

@@ -10,21 +10,18 @@
 !> and writes.
 module driver_sliding
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
-                                             ieee_quiet_nan
-    use seispulse, only: dp, pulse_eval, pulse_end_time, pulse_kind_name, &
-                         SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, &
-                         PULSE_RICKER, PULSE_MP
-    use seispulse_format, only: real_str
-    use seispulse_sliding_closed, only: sliding_block_t, full_cycle_t, block_response, block_response_eta, &
-                                 inclined_resistances, summarize_slides, sliding_mode_name
-    use seispulse_sliding_sim, only: friction_t, stickslip_result_t, stickslip_pulse
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan
+    use seispulse, only: dp, pulse_eval, pulse_kind_name, SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, &
+                         PULSE_MP, real_str, sliding_block_t, full_cycle_t, block_response, &
+                         block_response_eta, inclined_resistances, summarize_slides, &
+                         sliding_mode_name, friction_t, stickslip_result_t, stickslip_pulse, &
+                         finite_at_least, positive
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, list_length, &
                             list_item
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
-                                  write_pulse_group, finite_positive
-    use driver_tables, only: write_tables, delete_files
+                                  write_pulse_group, pulse_end, check_time_grid, time_grid
+    use driver_tables, only: write_tables, delete_files, say_written, code_legend
     implicit none
     private
 
@@ -229,10 +226,8 @@ contains
                 return
             end if
         end if
-        write(output_unit, '(a)') 'sliding table written to '//trim(files(1))//' and ' &
-            //trim(files(2))
-        if (with_history) write(output_unit, '(a)') 'sliding history written to ' &
-            //trim(hfiles(1))//' and '//trim(hfiles(2))
+        call say_written('sliding table', files)
+        if (with_history) call say_written('sliding history', hfiles)
         stat = 0
     end subroutine run_sliding
 
@@ -258,7 +253,6 @@ contains
             'mu_list', 'eta_list']
         real(dp) :: nan
         integer :: i, n, ngiven
-        logical :: ok
 
         nan = ieee_value(nan, ieee_quiet_nan)
         where = located(path, gb)
@@ -308,9 +302,7 @@ contains
                 return
             end if
         end if
-        ok = .false.
-        if (ieee_is_finite(static_factor)) ok = static_factor >= 1.0_dp
-        if (.not. ok) then
+        if (.not. finite_at_least(static_factor, 1.0_dp)) then
             errmsg = where//'static_factor = '//real_str(static_factor)//': must be a finite ' &
                      //'number >= 1 (static over kinetic friction)'
             return
@@ -384,9 +376,7 @@ contains
         character(len=*), intent(in) :: name
         character(len=:), allocatable, intent(out) :: errmsg
         errmsg = ''
-        if (.not. ieee_is_nan(eta)) then
-            if (eta > 0.0_dp) return     ! +inf allowed: no sliding that way
-        end if
+        if (positive(eta)) return     ! +inf allowed: no sliding that way
         errmsg = name//' = ' &
             //real_str(eta)//': must be > 0 (a_y/A_g; eta >= 1 means no sliding that way)'
     end subroutine check_eta
@@ -446,18 +436,7 @@ contains
         character(len=*), intent(in) :: path
         type(nml_group), intent(in) :: gh
         character(len=:), allocatable, intent(out) :: errmsg
-        errmsg = ''
-        if (given(gh, 't_end') .and. .not. finite_positive(t_end)) then
-            errmsg = located(path, gh)//'t_end = '//real_str(t_end)//': must be a finite ' &
-                     //'number > 0 (s)'
-        else if (given(gh, 'npts') .and. given(gh, 'dt')) then
-            errmsg = located(path, gh)//'dt, npts: give one of them, not both'
-        else if (given(gh, 'dt') .and. .not. finite_positive(dt)) then
-            errmsg = located(path, gh)//'dt = '//real_str(dt)//': must be a finite number ' &
-                     //'> 0 (s)'
-        else if (given(gh, 'npts') .and. (npts < 2 .or. npts > max_rows)) then
-            errmsg = located(path, gh)//'npts: must be in 2 .. 10000000'
-        end if
+        call check_time_grid(located(path, gh), gh, t_end, dt, npts, errmsg)
     end subroutine check_history
 
     ! ------------------------------------------------------------------------------
@@ -593,17 +572,12 @@ contains
         type(stickslip_result_t) :: res
         character(len=512) :: msg
         real(dp), allocatable :: t(:), a(:), v(:), d(:), u(:), w(:)
-        real(dp) :: k1, k2, t_stop, t_last, pulse_end, step, du
+        real(dp) :: k1, k2, t_stop, t_last, du
         integer :: i, j, k, n, row, stat, nrows
         integer, allocatable :: counts(:)
         type(real_array), allocatable :: grids(:)
 
         errmsg = ''
-        if (pin%code == PULSE_RICKER) then
-            pulse_end = 2.0_dp * pin%p%t0
-        else
-            pulse_end = pulse_end_time(pin%p)
-        end if
         allocate(counts(size(cases)), grids(size(cases)))
         ! --- the grid of each case
         do i = 1, size(cases)
@@ -622,23 +596,11 @@ contains
                 do j = 1, size(res%slides)
                     t_stop = max(t_stop, res%slides(j)%t_stop)
                 end do
-                t_last = max(1.25_dp * t_stop, pulse_end)
+                t_last = max(1.25_dp * t_stop, pulse_end(pin))
             end if
-            if (dt > 0.0_dp) then
-                if (t_last / dt + 1.0_dp > max_rows) then
-                    errmsg = 'dt: too small, more than 1e7 points'
-                    return
-                end if
-                n = int(t_last / dt * (1.0_dp + 1.0e-12_dp)) + 1
-                step = dt
-            else
-                n = npts
-                if (n == 0) n = 1001
-                step = t_last / (n - 1)
-            end if
-            counts(i) = n
-            allocate(grids(i)%x(n))
-            grids(i)%x = step * [(real(j, dp), j = 0, n - 1)]
+            call time_grid(t_last, dt, npts, grids(i)%x, errmsg)
+            if (len(errmsg) > 0) return
+            counts(i) = size(grids(i)%x)
         end do
         if (sum(real(counts, dp)) > max_rows) then
             errmsg = 'npts: too many rows (cases x points > 10000000)'
@@ -703,6 +665,7 @@ contains
         real(dp), allocatable :: table(:, :)
         character(len=512) :: comments(7)
         character(len=:), allocatable :: legend, slips
+        character(len=32) :: names(0:5)
         integer :: i, m
 
         allocate(table(size(cases), 14))
@@ -712,11 +675,10 @@ contains
                                r%t_m1, r%u_m1, r%t_y2, r%t_m2, r%u_m2, r%u_res, r%v_m1, r%v_m2]
             end associate
         end do
-        legend = 'mode:'
         do m = 0, 5
-            legend = legend//' '//achar(iachar('0') + m)//' '//sliding_mode_name(m)
-            if (m < 5) legend = legend//','
+            names(m) = sliding_mode_name(m)
         end do
+        legend = code_legend('mode', names)
         if (input_mode == INPUT_MU .and. along_plane) then
             slips = 'slips and velocities along the plane (times the factors K of ' &
                     //'sliding.md 7.1)'

@@ -11,21 +11,15 @@
 module driver_walls
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_format, only: real_str, int_str
-    use seispulse_records, only: STANDARD_GRAVITY
-    use seispulse_codes, only: ec8_ground_parameters, ec8_r_factor, ec8_seismic_coefficients, &
-                               ec8_vertical_ratio, WATER_DRY, WATER_IMPERVIOUS, WATER_PERMEABLE, &
-                               EC8_WALL_GRAVITY_300, EC8_WALL_GRAVITY_200, EC8_WALL_RESTRAINED
-    use seispulse_special, only: pi
-    use seispulse_walls_one_term, only: SHAPE_LINEAR, SHAPE_SINE, SHAPE_PARABOLIC, SHAPE_POWER
-    use seispulse_wall_table, only: wall_case_t, wall_case_default, wall_comparison, &
-                                    wall_pressure_profile, wall_row_label, WALL_ROWS, &
-                                    WALL_PROFILE_COLUMNS
+    use seispulse, only: dp, SEISPULSE_SUCCESS, real_str, int_str, STANDARD_GRAVITY, &
+                         ec8_ground_parameters, ec8_r_factor, ec8_seismic_coefficients, &
+                         ec8_vertical_ratio, WATER_DRY, WATER_IMPERVIOUS, WATER_PERMEABLE, &
+                         EC8_WALL_GRAVITY_300, EC8_WALL_GRAVITY_200, EC8_WALL_RESTRAINED, pi, &
+                         SHAPE_LINEAR, SHAPE_SINE, SHAPE_PARABOLIC, SHAPE_POWER, wall_case_t, &
+                         wall_case_default, wall_comparison, wall_pressure_profile, &
+                         wall_row_label, WALL_ROWS, WALL_PROFILE_COLUMNS
     use driver_namelist_scan, only: nml_group
-    use driver_records, only: name_index
-    use driver_input, only: find_group, located, join, read_optional, given
+    use driver_input, only: find_group, located, join, read_optional, given, name_index
     use driver_tables, only: write_tables, delete_files
     implicit none
     private
@@ -71,6 +65,14 @@ module driver_walls
         kh, kv, alpha_s, npoints
 
     integer, parameter :: max_points = 100000
+
+    !> What the tables show: per method (WALL_ROWS) and per depth.
+    type :: result_t
+        real(dp) :: thrust(WALL_ROWS), z(WALL_ROWS), moment(WALL_ROWS)  !! kN/m, m, kNm/m
+        real(dp) :: kv_used                          !! kv of the yielding rows
+        real(dp), allocatable :: depth(:)            !! m
+        real(dp), allocatable :: p(:, :)             !! kPa, WALL_PROFILE_COLUMNS per depth
+    end type result_t
 
 contains
 
@@ -148,7 +150,8 @@ contains
         end if
     end subroutine read_seismic
 
-    !> Read the three groups, build the case, compute, write both tables.
+    !> Read and check the three groups, build the case, compute, write both tables; print
+    !> where they went. stat > 0 with errmsg on an input or output error.
     subroutine run_walls(path, groups, prefix, stat, errmsg)
         character(len=*), intent(in) :: path              !! input file (for messages)
         type(nml_group), intent(in) :: groups(:)          !! scanned groups
@@ -157,14 +160,8 @@ contains
         character(len=:), allocatable, intent(out) :: errmsg
         type(nml_group) :: gw, gb, gs
         type(wall_case_t) :: c
-        character(len=256) :: msg
+        type(result_t) :: res
         character(len=512) :: files(2), files2(2)
-        character(len=300) :: comments(8)
-        character(len=40) :: labels(WALL_ROWS)
-        real(dp) :: thrust(WALL_ROWS), z(WALL_ROWS), moment(WALL_ROWS), kv_used, table(WALL_ROWS, 4)
-        real(dp) :: vs_base, g_base, omega_ref, s_eff, r_eff, kv_mag, tb, tc, td
-        real(dp), allocatable :: depth(:), p(:, :), ptab(:, :)
-        integer :: i, st, icode, iground, iwater, ishape, iwall
 
         call set_defaults()
         call read_optional(path, groups, 'wall', wall_keys, read_wall, gw, stat, errmsg)
@@ -188,8 +185,46 @@ contains
             return
         end if
 
+        ! --- check the input and build the case
         c = wall_case_default()
-        ! --- &wall
+        call check_wall(path, gw, c, errmsg)
+        if (len(errmsg) > 0) return
+        call check_backfill(path, gw, gb, c, errmsg)
+        if (len(errmsg) > 0) return
+        call check_seismic(path, gs, c, errmsg)
+        if (len(errmsg) > 0) return
+
+        ! --- echo the effective input
+        write(output_unit, nml=wall)
+        write(output_unit, nml=backfill)
+        write(output_unit, nml=seismic)
+
+        ! --- compute (no output is written before both tables are computed)
+        call compute(path, gb, c, res, errmsg)
+        if (len(errmsg) > 0) return
+
+        ! --- write
+        call write_result(path, prefix, c, res, files, files2, stat, errmsg)
+        if (stat /= 0) then
+            errmsg = path//': &run: output: '//errmsg
+            return
+        end if
+        write(output_unit, '(a)') 'walls tables written to '//trim(files(1))//', ' &
+            //trim(files(2))//', '//trim(files2(1))//' and '//trim(files2(2))
+    end subroutine run_walls
+
+    ! ------------------------------------------------------------------------------
+    ! Checks
+    ! ------------------------------------------------------------------------------
+
+    !> Check &wall: the height, the second wall. errmsg is empty on success.
+    subroutine check_wall(path, gw, c, errmsg)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gw
+        type(wall_case_t), intent(inout) :: c
+        character(len=:), allocatable, intent(out) :: errmsg
+
+        errmsg = ''
         if (ieee_is_nan(height)) then
             errmsg = located(path, gw)//'height: missing (the wall height, m, > 0)'
             return
@@ -209,8 +244,19 @@ contains
             end if
             c%l_over_h = spacing/height
         end if
+    end subroutine check_wall
 
-        ! --- &backfill
+    !> Check &backfill: the soil, the water, the stiffness at the base and with it the
+    !> rotational spring of &wall. errmsg is empty on success.
+    subroutine check_backfill(path, gw, gb, c, errmsg)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gw, gb
+        type(wall_case_t), intent(inout) :: c
+        character(len=:), allocatable, intent(out) :: errmsg
+        real(dp) :: vs_base, g_base, omega_ref
+        integer :: iwater, ishape
+
+        errmsg = ''
         if (ieee_is_nan(gamma)) then
             errmsg = located(path, gb)//'gamma: missing (unit weight of the backfill, kN/m3)'
             return
@@ -336,8 +382,21 @@ contains
             end if
             c%d_theta = height**2*g_base/k_rotation           ! d_theta = H^2 G_H/K_R
         end if
+    end subroutine check_backfill
 
-        ! --- &seismic
+    !> Check &seismic: kh, kv and ag S/g from EN 1998 or as given, the profile depths.
+    !> errmsg is empty on success.
+    subroutine check_seismic(path, gs, c, errmsg)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gs
+        type(wall_case_t), intent(inout) :: c
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=256) :: msg
+        real(dp) :: s_eff, r_eff, kv_mag, tb, tc, td
+        integer :: st, icode, iground, iwall
+
+        errmsg = ''
+        msg = ''
         icode = name_index(code, code_names)
         select case (icode)
         case (1)    ! EN 1998-1 / EN 1998-5
@@ -431,15 +490,25 @@ contains
                      //'profile needs 2 .. '//int_str(max_points)//' depths'
             return
         end if
+    end subroutine check_seismic
 
-        ! --- echo the effective input
-        write(output_unit, nml=wall)
-        write(output_unit, nml=backfill)
-        write(output_unit, nml=seismic)
+    ! ------------------------------------------------------------------------------
+    ! Computation
+    ! ------------------------------------------------------------------------------
 
-        ! --- compute (no output is written before both succeed)
+    !> The thrusts of every method and the pressure profile. errmsg is empty on success.
+    subroutine compute(path, gb, c, res, errmsg)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gb
+        type(wall_case_t), intent(in) :: c
+        type(result_t), intent(out) :: res
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=256) :: msg
+        integer :: i, st
+
+        errmsg = ''
         msg = ''
-        call wall_comparison(c, thrust, z, moment, kv_used, st, msg)
+        call wall_comparison(c, res%thrust, res%z, res%moment, res%kv_used, st, msg)
         if (st /= SEISPULSE_SUCCESS) then
             errmsg = path//': '//trim(msg)
             ! a resonance comes from &backfill frequency; a missing active wedge from beta
@@ -447,18 +516,37 @@ contains
                 //real_str(frequency)//' Hz: '//trim(msg)
             return
         end if
-        allocate(depth(npoints), p(npoints, WALL_PROFILE_COLUMNS))
-        depth = height*[(real(i, dp), i = 0, npoints - 1)]/real(npoints - 1, dp)
-        call wall_pressure_profile(c, depth, p, st, msg)
+        allocate(res%depth(npoints), res%p(npoints, WALL_PROFILE_COLUMNS))
+        res%depth = height*[(real(i, dp), i = 0, npoints - 1)]/real(npoints - 1, dp)
+        call wall_pressure_profile(c, res%depth, res%p, st, msg)
         if (st /= SEISPULSE_SUCCESS) then
             errmsg = path//': '//trim(msg)
             return
         end if
+    end subroutine compute
 
-        ! --- write
+    ! ------------------------------------------------------------------------------
+    ! Output
+    ! ------------------------------------------------------------------------------
+
+    !> Both tables, or neither: <prefix>_walls (files) and <prefix>_walls_pressure
+    !> (files2).
+    subroutine write_result(path, prefix, c, res, files, files2, stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(wall_case_t), intent(in) :: c
+        type(result_t), intent(in) :: res
+        character(len=*), intent(out) :: files(2), files2(2)
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=300) :: comments(8)
+        character(len=40) :: labels(WALL_ROWS)
+        real(dp) :: table(WALL_ROWS, 4)
+        real(dp), allocatable :: ptab(:, :)
+        integer :: i
+
         do i = 1, WALL_ROWS
             labels(i) = wall_row_label(i)
-            table(i, :) = [thrust(i), z(i), z(i)/height, moment(i)]
+            table(i, :) = [res%thrust(i), res%z(i), res%z(i)/height, res%moment(i)]
         end do
         comments(1) = 'seispulse analysis walls: seismic thrust on a retaining wall, per method'
         comments(2) = 'input: '//trim(path)
@@ -466,7 +554,7 @@ contains
                       //real_str(phi_deg)//' deg, wall friction = '//real_str(wall_friction_deg) &
                       //' deg, psi = '//real_str(psi_deg)//' deg, beta = '//real_str(beta_deg) &
                       //' deg, gamma_phi = '//real_str(gamma_phi)//', water = '//trim(water)
-        comments(4) = 'yielding rows: kh = '//real_str(c%kh)//', kv = '//real_str(kv_used) &
+        comments(4) = 'yielding rows: kh = '//real_str(c%kh)//', kv = '//real_str(res%kv_used) &
                       //' (the sign of kv with the larger total; kv > 0 upward)'
         comments(5) = 'non-yielding rows: ag S/g = '//real_str(c%alpha_s)//'; elastic rows: ' &
                       //'nu = '//real_str(c%nu)//', loss factor = '//real_str(c%delta) &
@@ -483,13 +571,10 @@ contains
             [character(len=8) :: 'method', 'thrust', 'z', 'z/H', 'moment'], &
             [character(len=8) :: '-', 'kN/m', 'm', '-', 'kNm/m'], table, files, stat, errmsg, &
             labels=labels)
-        if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
-            return
-        end if
+        if (stat /= 0) return
         allocate(ptab(npoints, WALL_PROFILE_COLUMNS + 1))
-        ptab(:, 1) = depth
-        ptab(:, 2:) = p
+        ptab(:, 1) = res%depth
+        ptab(:, 2:) = res%p
         comments(1) = 'seispulse analysis walls: pressures on the wall against depth below ' &
                       //'the top'
         comments(6) = 'static: K gamma* z (Coulomb); mo_dyn: the M-O increment spread ' &
@@ -500,13 +585,7 @@ contains
             [character(len=9) :: 'depth', 'static', 'mo_dyn', 'ec8_rigid', 'vy', 'one_term'], &
             [character(len=9) :: 'm', 'kPa', 'kPa', 'kPa', 'kPa', 'kPa'], ptab, files2, stat, &
             errmsg)
-        if (stat /= 0) then
-            call delete_files(files)     ! both tables or neither
-            errmsg = path//': &run: output: '//errmsg
-            return
-        end if
-        write(output_unit, '(a)') 'walls tables written to '//trim(files(1))//', ' &
-            //trim(files(2))//', '//trim(files2(1))//' and '//trim(files2(2))
-    end subroutine run_walls
+        if (stat /= 0) call delete_files(files)     ! both tables or neither
+    end subroutine write_result
 
 end module driver_walls

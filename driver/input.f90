@@ -1,12 +1,20 @@
-!> Checks shared by every analysis: known groups, known keys, and reading a group
-!> with an error that names the file, line, group, key and problem.
+!> Checks shared by every analysis: known groups, known keys, reading a group with an
+!> error that names the file, line, group, key and problem, and how names and numbers
+!> read in those messages.
 module driver_input
-    use driver_namelist_scan, only: nml_group
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
+    use seispulse, only: dp, real_str, int_str
+    use driver_namelist_scan, only: nml_group, lower
     implicit none
     private
 
     public :: group_reader, find_group, check_keys, read_group, located, join
-    public :: read_optional, given, list_length, list_item
+    public :: read_optional, given, list_length, list_item, value_name, name_index, num
+    public :: ROWS_FAILED
+
+    !> stat of an analysis that wrote its tables but failed some rows (a record that could
+    !> not be read or analysed): the driver exits with status 1.
+    integer, parameter :: ROWS_FAILED = -1
 
     abstract interface
         !> Read one namelist group into the analysis' variables: from `unit`, or
@@ -140,8 +148,6 @@ contains
     !> Number of values given in a list key (defaults NaN): the last value that is not
     !> NaN ends it; a NaN before it is a gap, an error.
     subroutine list_length(list, name, n, errmsg)
-        use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
-        use seispulse_kinds, only: dp
         real(dp), intent(in) :: list(:)
         character(len=*), intent(in) :: name
         integer, intent(out) :: n
@@ -170,12 +176,76 @@ contains
 
     !> "name(i)".
     pure function list_item(name, i) result(item)
-        use seispulse_format, only: int_str
         character(len=*), intent(in) :: name
         integer, intent(in) :: i
         character(len=:), allocatable :: item
         item = name//'('//int_str(i)//')'
     end function list_item
+
+    !> "name" for a single value, "name(i)" in a list of n.
+    pure function value_name(name, i, n) result(item)
+        character(len=*), intent(in) :: name
+        integer, intent(in) :: i, n
+        character(len=:), allocatable :: item
+        if (n > 1) then
+            item = list_item(name, i)
+        else
+            item = name
+        end if
+    end function value_name
+
+    !> Index of a name (case and leading blanks ignored) in `names`, 0 if absent.
+    pure integer function name_index(text, names)
+        character(len=*), intent(in) :: text
+        character(len=*), intent(in) :: names(:)
+        integer :: i
+        name_index = 0
+        do i = 1, size(names)
+            if (trim(lower(adjustl(text))) == trim(names(i))) then
+                name_index = i
+                return
+            end if
+        end do
+    end function name_index
+
+    !> The shortest decimal that reads back as x: plain for 1e-4 <= |x| < 1e7
+    !> ("0.01", "9.80665"), else with an exponent ("1.5E-007").
+    function num(x) result(s)
+        real(dp), intent(in) :: x
+        character(len=:), allocatable :: s
+        character(len=40) :: buf, fm
+        real(dp) :: y
+        integer :: d, e, k
+        if (.not. ieee_is_finite(x)) then
+            s = real_str(x)
+            return
+        else if (.not. abs(x) > 0.0_dp) then
+            s = '0.0'
+            return
+        end if
+        do d = 2, 17
+            write(fm, '(a, i0, a)') '(es30.', d - 1, 'e3)'
+            write(buf, fm) x
+            read(buf, *) y
+            if (.not. abs(y - x) > 0.0_dp) exit
+        end do
+        k = scan(buf, 'E')
+        read(buf(k + 1:), *) e
+        s = trim(adjustl(buf))
+        if (e >= -4 .and. e < 7) then
+            write(fm, '(a, i0, a)') '(f0.', max(min(d, 17) - 1 - e, 1), ')'
+            write(buf, fm) x
+            s = trim(adjustl(buf))
+            if (s(1:1) == '.') s = '0'//s
+            if (s(1:2) == '-.') s = '-0'//s(2:)
+            ! "0.010" -> "0.01", "2.0" stays
+            k = len(s)
+            do while (s(k:k) == '0' .and. s(k - 1:k - 1) /= '.')
+                k = k - 1
+            end do
+            s = s(1:k)
+        end if
+    end function num
 
     !> "file:line: &group: " prefix of a message.
     function located(path, group) result(prefix)

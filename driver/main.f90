@@ -9,13 +9,14 @@ program seispulse_driver
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     use, intrinsic :: iso_c_binding, only: c_int
     use driver_namelist_scan, only: nml_group, scan_file, lower
-    use driver_input, only: find_group, check_keys, read_group, located, join
+    use driver_input, only: find_group, check_keys, read_group, located, join, ROWS_FAILED
     use driver_pulse, only: run_pulse, pulse_groups
     use driver_sliding, only: run_sliding, sliding_groups
     use driver_rocking, only: run_rocking, rocking_groups
-    use driver_newmark, only: run_newmark, newmark_groups, NEWMARK_ROWS_FAILED
-    use driver_sdof, only: run_sdof, sdof_groups, SDOF_ROWS_FAILED, run_sdof_beta, &
-                           sdof_beta_groups, run_sdof_shock, sdof_shock_groups
+    use driver_newmark, only: run_newmark, newmark_groups
+    use driver_sdof, only: run_sdof, sdof_groups
+    use driver_sdof_beta, only: run_sdof_beta, sdof_beta_groups
+    use driver_sdof_shock, only: run_sdof_shock, sdof_shock_groups
     use driver_walls, only: run_walls, walls_groups
     use driver_run_group, only: run_analysis, run_output, read_run, run_keys, write_run
     implicit none
@@ -27,6 +28,10 @@ program seispulse_driver
             integer(c_int), value, intent(in) :: status
         end subroutine c_exit
     end interface
+
+    !> Exit status: success; tables written but some rows failed; an input or output
+    !> error (nothing written).
+    integer, parameter :: EXIT_OK = 0, EXIT_ROWS_FAILED = 1, EXIT_INPUT_ERROR = 2
 
     character(len=10), parameter :: analyses(8) = [character(len=10) :: 'pulse', 'sliding', &
         'rocking', 'newmark', 'sdof', 'sdof_beta', 'sdof_shock', 'walls']
@@ -42,7 +47,7 @@ program seispulse_driver
 
     if (command_argument_count() /= 1) then
         write(error_unit, '(a)') 'usage: seispulse INPUT.nml   (see README, "Batch driver")'
-        call finish(2)
+        call finish(EXIT_INPUT_ERROR)
     end if
     call get_command_argument(1, arg)
     path = trim(arg)
@@ -72,46 +77,32 @@ program seispulse_driver
 
     select case (lower(run_analysis()))
     case ('pulse')
-        call check_groups(pulse_groups)
-        call write_run(output_unit)
+        call start(pulse_groups)
         call run_pulse(path, groups, run_output(), stat, errmsg)
     case ('sliding')
-        call check_groups(sliding_groups)
-        call write_run(output_unit)
+        call start(sliding_groups)
         call run_sliding(path, groups, run_output(), stat, errmsg)
     case ('rocking')
-        call check_groups(rocking_groups)
-        call write_run(output_unit)
+        call start(rocking_groups)
         call run_rocking(path, groups, run_output(), stat, errmsg)
     case ('newmark')
-        call check_groups(newmark_groups)
-        call write_run(output_unit)
+        call start(newmark_groups)
         call run_newmark(path, groups, run_output(), stat, errmsg)
-        if (stat == NEWMARK_ROWS_FAILED) then
-            ! the table is written; some rows failed (each already reported)
-            write(error_unit, '(a)') 'seispulse: error: '//errmsg
-            call finish(1)
-        end if
+        ! the table is written; some rows failed (each already reported)
+        if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
     case ('sdof')
-        call check_groups(sdof_groups)
-        call write_run(output_unit)
+        call start(sdof_groups)
         call run_sdof(path, groups, run_output(), stat, errmsg)
-        if (stat == SDOF_ROWS_FAILED) then
-            ! the tables are written; some records failed (each already reported)
-            write(error_unit, '(a)') 'seispulse: error: '//errmsg
-            call finish(1)
-        end if
+        ! the tables are written; some records failed (each already reported)
+        if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
     case ('sdof_beta')
-        call check_groups(sdof_beta_groups)
-        call write_run(output_unit)
+        call start(sdof_beta_groups)
         call run_sdof_beta(path, groups, run_output(), stat, errmsg)
     case ('sdof_shock')
-        call check_groups(sdof_shock_groups)
-        call write_run(output_unit)
+        call start(sdof_shock_groups)
         call run_sdof_shock(path, groups, run_output(), stat, errmsg)
     case ('walls')
-        call check_groups(walls_groups)
-        call write_run(output_unit)
+        call start(walls_groups)
         call run_walls(path, groups, run_output(), stat, errmsg)
     case ('')
         call fail(located(path, groups(irun))//'analysis: missing (allowed: '//join(analyses)//')')
@@ -120,12 +111,13 @@ program seispulse_driver
                   //''': unknown analysis (allowed: '//join(analyses)//')')
     end select
     if (stat /= 0) call fail(errmsg)
-    call finish(0)
+    call finish(EXIT_OK)
 
 contains
 
-    !> Every group but &run must belong to the analysis.
-    subroutine check_groups(allowed)
+    !> Before an analysis: every group but &run must belong to it (allowed); then the echo
+    !> of &run.
+    subroutine start(allowed)
         character(len=*), intent(in) :: allowed(:)
         integer :: k
         do k = 1, size(groups)
@@ -133,12 +125,17 @@ contains
                 call fail(located(path, groups(k))//'not a group of analysis ''' &
                           //lower(run_analysis())//''' (allowed: run, '//join(allowed)//')')
         end do
-    end subroutine check_groups
+        call write_run(output_unit)
+    end subroutine start
 
-    subroutine fail(message)
+    !> The error message, then exit: with `status` (EXIT_ROWS_FAILED: the tables are
+    !> written, some rows failed), else EXIT_INPUT_ERROR (nothing written).
+    subroutine fail(message, status)
         character(len=*), intent(in) :: message
+        integer, intent(in), optional :: status
         write(error_unit, '(a)') 'seispulse: error: '//message
-        call finish(2)
+        if (present(status)) call finish(status)
+        call finish(EXIT_INPUT_ERROR)
     end subroutine fail
 
     subroutine finish(status)

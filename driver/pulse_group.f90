@@ -1,20 +1,21 @@
 !> The &pulse group, shared by every analysis that drives something with one pulse
-!> ('pulse', 'sliding'): its keys, defaults, reading, validation and the pulse_t it
-!> builds. One code path, so that a pulse means the same in every analysis.
+!> ('pulse', 'sliding', 'rocking', 'sdof_shock'): its keys, defaults, reading,
+!> validation and the pulse_t it builds; and the time grid of a history under the pulse
+!> (&history of 'sliding', &rocking of 'rocking'). One code path, so that a pulse means
+!> the same in every analysis.
 module driver_pulse_group
     use, intrinsic :: iso_fortran_env, only: error_unit
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
-                                             ieee_quiet_nan
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan
     use seispulse, only: dp, pulse_t, pulse_validate, pulse_kind_from_name, pulse_kind_name, &
-                         SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, PULSE_TRIANGULAR, &
-                         PULSE_RICKER, PULSE_MP
+                         SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, PULSE_TRIANGULAR, PULSE_RICKER, &
+                         PULSE_MP, finite_positive, pulse_end_time, real_str
     use driver_namelist_scan, only: nml_group, lower
-    use driver_input, only: find_group, check_keys, read_group, located
+    use driver_input, only: find_group, check_keys, read_group, located, given
     implicit none
     private
 
     public :: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, write_pulse_group
-    public :: finite_positive
+    public :: pulse_end, check_time_grid, time_grid
 
     !> Every key of &pulse.
     character(len=12), parameter :: pulse_keys(13) = [character(len=12) :: 'kind', 'amp', &
@@ -30,6 +31,9 @@ module driver_pulse_group
         real(dp) :: amp_g = 0.0_dp             !! amplitude in g, as given when amp_unit = 'g'
                                                !! (NaN for M&P: a velocity amplitude)
     end type pulse_input_t
+
+    !> Most points of the time grid of a history.
+    integer, parameter :: max_grid = 10000000
 
     ! namelist variables (defaults are set in set_defaults)
     character(len=32) :: kind, amp_unit
@@ -160,13 +164,64 @@ contains
         stat = 0
     end subroutine build_pulse
 
-    !> x is a finite number > 0. (Never compares a NaN: a build with
-    !> -ffpe-trap=invalid evaluates both operands of .and.)
-    elemental logical function finite_positive(x)
-        real(dp), intent(in) :: x
-        finite_positive = .false.
-        if (ieee_is_finite(x)) finite_positive = x > 0.0_dp
-    end function finite_positive
+    !> The end of the pulse for the default length of a history: pulse_end_time, or
+    !> 2 t0 for the Ricker wavelet (which never ends).
+    function pulse_end(pin) result(t)
+        type(pulse_input_t), intent(in) :: pin
+        real(dp) :: t
+        if (pin%code == PULSE_RICKER) then
+            t = 2.0_dp * pin%p%t0
+        else
+            t = pulse_end_time(pin%p)
+        end if
+    end function pulse_end
+
+    !> Check the keys of a history's time grid given in `group` (t_end, or dt or npts):
+    !> errmsg (after `where`) about the first bad one, '' if none.
+    subroutine check_time_grid(where, group, t_end, dt, npts, errmsg)
+        character(len=*), intent(in) :: where             !! "file:line: &group: "
+        type(nml_group), intent(in) :: group
+        real(dp), intent(in) :: t_end, dt                 !! s
+        integer, intent(in) :: npts
+        character(len=:), allocatable, intent(out) :: errmsg
+        errmsg = ''
+        if (given(group, 't_end') .and. .not. finite_positive(t_end)) then
+            errmsg = where//'t_end = '//real_str(t_end)//': must be a finite number > 0 (s)'
+        else if (given(group, 'npts') .and. given(group, 'dt')) then
+            errmsg = where//'dt, npts: give one of them, not both'
+        else if (given(group, 'dt') .and. .not. finite_positive(dt)) then
+            errmsg = where//'dt = '//real_str(dt)//': must be a finite number > 0 (s)'
+        else if (given(group, 'npts') .and. (npts < 2 .or. npts > max_grid)) then
+            errmsg = where//'npts: must be in 2 .. 10000000'
+        end if
+    end subroutine check_time_grid
+
+    !> The time grid of a history, 0 to t_last: every dt when dt > 0 (the last point at
+    !> or just below t_last), else npts points (1001 when 0). errmsg (without the
+    !> location) when dt gives too many points.
+    subroutine time_grid(t_last, dt, npts, t, errmsg)
+        real(dp), intent(in) :: t_last, dt                !! s
+        integer, intent(in) :: npts
+        real(dp), allocatable, intent(out) :: t(:)        !! s
+        character(len=:), allocatable, intent(out) :: errmsg
+        real(dp) :: step
+        integer :: n, j
+        errmsg = ''
+        if (dt > 0.0_dp) then
+            if (t_last / dt + 1.0_dp > max_grid) then
+                errmsg = 'dt: too small, more than 1e7 points'
+                return
+            end if
+            n = int(t_last / dt * (1.0_dp + 1.0e-12_dp)) + 1
+            step = dt
+        else
+            n = npts
+            if (n == 0) n = 1001
+            step = t_last / (n - 1)
+        end if
+        allocate(t(n))
+        t = step * [(real(j, dp), j = 0, n - 1)]
+    end subroutine time_grid
 
     !> Echo the group as read and completed (for the log).
     subroutine write_pulse_group(unit)

@@ -9,20 +9,19 @@
 module driver_records
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_format, only: real_str, int_str
-    use seispulse_records, only: record_t, read_record, record_pga, pga_scale_factor, &
-                                 record_format_name, record_units_name, RECORD_AUTO, &
-                                 RECORD_COLUMN, UNITS_G, UNITS_M_S2, UNITS_CM_S2
-    use driver_namelist_scan, only: nml_group, lower
-    use driver_input, only: located, join, given, list_length, list_item
+    use seispulse, only: dp, SEISPULSE_SUCCESS, int_str, record_t, read_record, record_pga, &
+                         pga_scale_factor, record_format_name, record_units_name, RECORD_AUTO, &
+                         RECORD_COLUMN, UNITS_G, UNITS_M_S2, UNITS_CM_S2, finite_at_least, &
+                         finite_positive
+    use driver_namelist_scan, only: nml_group
+    use driver_input, only: located, join, given, list_length, list_item, name_index, &
+                            value_name, num
     implicit none
     private
 
     public :: records_keys, record_in_t, record_out_t, records_defaults, read_records
     public :: check_records, echo_records, load_record, progress, report
-    public :: path_len, name_index, value_name, short, num
+    public :: path_len, short, records_missing, record_line, failed_records
 
     character(len=12), parameter :: records_keys(8) = [character(len=12) :: 'files', &
         'format', 'units', 'dt', 'scale', 'target_pga', 'pga_rounding', 'polarity']
@@ -38,6 +37,12 @@ module driver_records
     integer, parameter :: path_len = 1024
     !> Unset entries of the integer list polarity.
     integer, parameter :: unset_int = -huge(0)
+    !> Most failed records named in a final message.
+    integer, parameter :: max_named = 20
+
+    !> After the input file's name: the message when &records is missing.
+    character(len=*), parameter :: records_missing = ': &records: missing group (it lists ' &
+        //'the record files: files = ''a.AT2'', ...)'
 
     ! namelist variables (defaults are set in records_defaults)
     character(len=path_len) :: files(max_files)
@@ -198,7 +203,7 @@ contains
                 if (n_dt > 0) then
                     k = min(i, n_dt)
                     x = dt(k)
-                    if (.not. (ieee_is_finite(x) .and. x >= 0.0_dp)) then
+                    if (.not. finite_at_least(x, 0.0_dp)) then
                         errmsg = where//value_name('dt', k, n_dt)//' = '//num(x) &
                                  //': must be a finite time step >= 0 (s; 0: from the file)'
                         return
@@ -214,7 +219,7 @@ contains
                 if (n_scale > 0) then
                     k = min(i, n_scale)
                     x = scale(k)
-                    if (.not. (ieee_is_finite(x) .and. x > 0.0_dp)) then
+                    if (.not. finite_positive(x)) then
                         errmsg = where//value_name('scale', k, n_scale)//' = '//num(x) &
                                  //': must be a finite factor > 0 (polarity = -1 turns the ' &
                                  //'record over)'
@@ -225,7 +230,7 @@ contains
                 if (n_target > 0) then
                     k = min(i, n_target)
                     x = target_pga(k)
-                    if (.not. (ieee_is_finite(x) .and. x >= 0.0_dp)) then
+                    if (.not. finite_at_least(x, 0.0_dp)) then
                         errmsg = where//value_name('target_pga', k, n_target)//' = ' &
                                  //num(x)//': must be a finite PGA > 0 (g; 0: use scale)'
                         return
@@ -417,6 +422,44 @@ contains
     ! Labels and messages
     ! ------------------------------------------------------------------------------
 
+    !> The header line of record ir: "record 2: a.AT2: format at2, npts 240, dt 0.01,
+    !> PGA 0.39, scale factor 1.5", or "record 2: a.AT2: FAILED: why".
+    function record_line(ir, r, o) result(line)
+        integer, intent(in) :: ir                         !! its index
+        type(record_in_t), intent(in) :: r                !! its input
+        type(record_out_t), intent(in) :: o               !! what happened
+        character(len=:), allocatable :: line
+        line = 'record '//int_str(ir)//': '//r%file//': '
+        if (o%ok) then
+            line = line//'format '//record_format_name(o%fmt)//', npts '//int_str(o%npts) &
+                   //', dt '//num(o%dt)//', PGA '//num(o%pga_read)//', scale factor ' &
+                   //num(o%factor)
+        else
+            line = line//'FAILED: '//o%message
+        end if
+    end function record_line
+
+    !> "2 'name', 5 'other'" of the records with failed(ir), at most max_named of them
+    !> (then ", ...").
+    function failed_records(outs, failed) result(s)
+        type(record_out_t), intent(in) :: outs(:)
+        logical, intent(in) :: failed(:)                  !! per record
+        character(len=:), allocatable :: s
+        integer :: ir, named
+        s = ''
+        named = 0
+        do ir = 1, size(outs)
+            if (.not. failed(ir)) cycle
+            named = named + 1
+            if (named > max_named) then
+                s = s//', ...'
+                exit
+            end if
+            if (named > 1) s = s//', '
+            s = s//int_str(ir)//' '''//outs(ir)%name//''''
+        end do
+    end function failed_records
+
     !> " -> 0.4 g" (or with the polarity) when the record is scaled or turned over.
     function scaled_text(o) result(s)
         type(record_out_t), intent(in) :: o
@@ -503,20 +546,6 @@ contains
         end do
     end subroutine count_strings
 
-    !> Index of a name (case and leading blanks ignored) in `names`, 0 if absent.
-    pure integer function name_index(text, names)
-        character(len=*), intent(in) :: text
-        character(len=*), intent(in) :: names(:)
-        integer :: i
-        name_index = 0
-        do i = 1, size(names)
-            if (trim(lower(adjustl(text))) == trim(names(i))) then
-                name_index = i
-                return
-            end if
-        end do
-    end function name_index
-
     !> Name of a UNITS_* code, 'auto' for 0 (the AT2 header's units, else g).
     pure function units_name(code) result(s)
         integer, intent(in) :: code
@@ -527,18 +556,6 @@ contains
             s = record_units_name(code)
         end if
     end function units_name
-
-    !> "name" for a single value, "name(i)" in a list of n.
-    pure function value_name(name, i, n) result(item)
-        character(len=*), intent(in) :: name
-        integer, intent(in) :: i, n
-        character(len=:), allocatable :: item
-        if (n > 1) then
-            item = list_item(name, i)
-        else
-            item = name
-        end if
-    end function value_name
 
     !> x to 4 significant digits, for progress lines.
     function short(x) result(s)
@@ -552,44 +569,5 @@ contains
         p = 10.0_dp**(3 - floor(log10(abs(x))))
         s = num(anint(x * p) / p)
     end function short
-
-    !> The shortest decimal that reads back as x: plain for 1e-4 <= |x| < 1e7
-    !> ("0.01", "9.80665"), else with an exponent ("1.5E-007").
-    function num(x) result(s)
-        real(dp), intent(in) :: x
-        character(len=:), allocatable :: s
-        character(len=40) :: buf, fm
-        real(dp) :: y
-        integer :: d, e, k
-        if (.not. ieee_is_finite(x)) then
-            s = real_str(x)
-            return
-        else if (.not. abs(x) > 0.0_dp) then
-            s = '0.0'
-            return
-        end if
-        do d = 2, 17
-            write(fm, '(a, i0, a)') '(es30.', d - 1, 'e3)'
-            write(buf, fm) x
-            read(buf, *) y
-            if (.not. abs(y - x) > 0.0_dp) exit
-        end do
-        k = scan(buf, 'E')
-        read(buf(k + 1:), *) e
-        s = trim(adjustl(buf))
-        if (e >= -4 .and. e < 7) then
-            write(fm, '(a, i0, a)') '(f0.', max(min(d, 17) - 1 - e, 1), ')'
-            write(buf, fm) x
-            s = trim(adjustl(buf))
-            if (s(1:1) == '.') s = '0'//s
-            if (s(1:2) == '-.') s = '-0'//s(2:)
-            ! "0.010" -> "0.01", "2.0" stays
-            k = len(s)
-            do while (s(k:k) == '0' .and. s(k - 1:k - 1) /= '.')
-                k = k - 1
-            end do
-            s = s(1:k)
-        end if
-    end function num
 
 end module driver_records

@@ -2,11 +2,12 @@
 !> header of names and units, and as CSV. Either both files are complete or neither
 !> exists: on any write error both are deleted.
 module driver_tables
-    use seispulse_kinds, only: dp
+    use, intrinsic :: iso_fortran_env, only: output_unit
+    use seispulse, only: dp, int_str
     implicit none
     private
 
-    public :: write_tables, column_len, delete_files
+    public :: write_tables, column_len, delete_files, say_written, code_legend
 
     !> Width of a text column: a blank, then es24.16e3 (a negative number fills all 24).
     integer, parameter :: column_len = 25
@@ -198,6 +199,26 @@ contains
         ! a failure shows up when the table is opened, with a better message
         call execute_command_line('mkdir -p -- '//quoted//' 2>/dev/null', exitstat=code)
     end subroutine make_parent_dir
+
+    !> "title: 0 name, 1 name, ..." of a column of codes 0, 1, ... (a header line).
+    pure function code_legend(title, names) result(text)
+        character(len=*), intent(in) :: title
+        character(len=*), intent(in) :: names(0:)       !! the name of each code
+        character(len=:), allocatable :: text
+        integer :: k
+        text = title//':'
+        do k = 0, ubound(names, 1)
+            text = text//' '//int_str(k)//' '//trim(names(k))
+            if (k < ubound(names, 1)) text = text//','
+        end do
+    end function code_legend
+
+    !> "<what> written to <txt> and <csv>" on standard output.
+    subroutine say_written(what, files)
+        character(len=*), intent(in) :: what      !! e.g. 'pulse table'
+        character(len=*), intent(in) :: files(2)  !! paths written (txt, csv)
+        write(output_unit, '(a)') what//' written to '//trim(files(1))//' and '//trim(files(2))
+    end subroutine say_written
 
     !> Remove tables already written (a later table of the same run failed): no
     !> half-written output is left behind.

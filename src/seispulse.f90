@@ -6,9 +6,12 @@ module seispulse
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
                                 SEISPULSE_NO_CONVERGENCE, SEISPULSE_NO_BRACKET, SEISPULSE_INTERNAL, &
                                 SEISPULSE_IO, SEISPULSE_NO_SOLUTION, status_name
+    use seispulse_checks, only: outside, finite_positive, finite_at_least, positive, in_open, &
+                                in_closed
+    use seispulse_format, only: real_str, int_str
     use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, &
                                  sin_pi, cos_pi, complex_phis, phi1, phi1_taylor, phi1_from_exp, &
-                                 log1p_over_x, sinh_minus_x, x_minus_asinh
+                                 log1p_over_x, sinh_minus_x, x_minus_asinh, pi
     use seispulse_divided_differences, only: exp_dd1, exp_dd2, exp_dd_pack, cexp_dd1, &
                                              cexp_dd2_at0, cexp_dd2, cexp_dd3
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
