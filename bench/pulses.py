@@ -4,7 +4,7 @@
 Evaluates a, v, d of the half-cycle exponential pulse at 1e7 points (tau spread over
 [-0.1, 1.1], one beta), several runs, and prints the median time per point. The peer,
 measured in the same run, is a plain numpy evaluation of the printed closed forms
-(sliding.md 2.5: expm1-based, no special cases): the ratio is what to quote, since
+(doc/pulses.md section 1: expm1-based, no special cases): the ratio is what to quote, since
 these machines are shared and noisy. Targets: under 20 ns per point.
 
 usage: PYTHONPATH=build/python python3 bench/pulses.py [--points N] [--runs R] [--beta B]

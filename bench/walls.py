@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Benchmark: a 1000-frequency Veletsos-Younan sweep of the rigid-wall thrust and base
 moment (omega/omega_1 from 0 to 5, loss factor 0.1, nu = 0.3) to a relative tolerance
-of 1e-8. Aim (issue 7): under 10 ms.
+of 1e-8. Aim: under 10 ms.
 
 No other program implements the Veletsos & Younan (1994a) series, so the peer is the
 series as one would write it in numpy: the plain sums (2.34)-(2.35) over a fixed number

@@ -479,7 +479,7 @@ contains
         end do
         comments(7) = code_legend('region', names)
         if (cf) then
-            comments(8) = 'closed forms (_cf): linearized model (rocking.md 2.4-2.35, ' &
+            comments(8) = 'closed forms (_cf): linearized model (doc/rocking.md (2.4)-(2.35), ' &
                           //'seispulse_rocking_closed), half-cycle exponential pulse, beta = ' &
                           //real_str(beta_cf)//', f = p t_d, eta = alpha/(A_g/g)'
         else

@@ -1,4 +1,4 @@
-!> Analysis 'sdof' of the linear oscillator (oscillator.md), on accelerogram files:
+!> Analysis 'sdof' of the linear oscillator (doc/oscillator.md), on accelerogram files:
 !> response spectra (SD, SV, SA and the pseudo-spectra PSV, PSA, optionally PSA/PGA),
 !> their envelope over the records with the short-period plateau of the design curve,
 !> and response histories.

@@ -1,4 +1,4 @@
-!> Analysis 'sdof_beta' of the linear oscillator (oscillator.md): the dynamic
+!> Analysis 'sdof_beta' of the linear oscillator (doc/oscillator.md): the dynamic
 !> coefficient of harmonic base motion.
 !>
 !> Group &sdof_beta (frequency ratios theta/omega as a list or a range, the damping

@@ -1,4 +1,4 @@
-!> Analysis 'sdof_shock' of the linear oscillator (oscillator.md): the shock spectrum
+!> Analysis 'sdof_shock' of the linear oscillator (doc/oscillator.md): the shock spectrum
 !> of one closed-form pulse.
 !>
 !> Groups &pulse (driver_pulse_group, as in 'pulse' and 'sliding') and &sdof_shock (t_d/T

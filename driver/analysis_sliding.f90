@@ -681,7 +681,7 @@ contains
         legend = code_legend('mode', names)
         if (input_mode == INPUT_MU .and. along_plane) then
             slips = 'slips and velocities along the plane (times the factors K of ' &
-                    //'sliding.md 7.1)'
+                    //'doc/sliding.md section 7)'
         else
             slips = 'slips and velocities of the normalized problem (K = 1)'
         end if

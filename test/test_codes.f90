@@ -379,14 +379,14 @@ contains
         call check(error, k, k0*sin((84.0_dp + thd)*rad)**2/(cos(theta)*sin(84*rad)**2), &
                    rtol=1.0e-12_dp, message='passive rotation')
         if (allocated(error)) return
-        ! the other sign of kv (notes: theta = 0.2662520, K = 0.5407058 for kv = +0.12)
+        ! the other sign of kv (independent values: theta = 0.2662520, K = 0.5407058 for kv = +0.12)
         call mononobe_okabe(30.0_dp, 0.24_dp, 0.12_dp, 0.0_dp, 90.0_dp, 0.0_dp, .false., &
                             1.0_dp, k, theta, stat, msg)
         call check(error, theta, atan(0.24_dp/0.88_dp), rtol=1.0e-15_dp, message='theta, kv > 0')
         if (allocated(error)) return
         call check(error, k, k_e2(30*rad, 0.0_dp, 90*rad, 0.0_dp, theta), rtol=1.0e-14_dp)
         if (allocated(error)) return
-        call check(error, k, 0.5407058_dp, rtol=1.0e-6_dp, message='notes value, kv = +0.12')
+        call check(error, k, 0.5407058_dp, rtol=1.0e-6_dp, message='independent value, kv = +0.12')
         if (allocated(error)) return
         ! gamma_phi = 1.25: the same as the characteristic call with phi_d, delta_d
         phid = atan(tan(32*rad)/1.25_dp)/rad
@@ -810,7 +810,7 @@ contains
 
     subroutine test_ground_parameters(error)
         type(test_error), allocatable, intent(out) :: error
-        ! EN 1998-1 Table 3.2 (Type 1) and 3.3 (Type 2), typed again from the brief
+        ! EN 1998-1 Table 3.2 (Type 1) and 3.3 (Type 2), typed again from EN 1998-1
         real(dp), parameter :: t1(4, 5) = reshape([1.00_dp, 0.15_dp, 0.40_dp, 2.0_dp, &
             1.20_dp, 0.15_dp, 0.50_dp, 2.0_dp, 1.15_dp, 0.20_dp, 0.60_dp, 2.0_dp, &
             1.35_dp, 0.20_dp, 0.80_dp, 2.0_dp, 1.40_dp, 0.15_dp, 0.50_dp, 2.0_dp], [4, 5])

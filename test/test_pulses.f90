@@ -36,7 +36,7 @@ contains
 
     subroutine collect_pulses(tests)
         type(unit_test), allocatable, intent(out) :: tests(:)
-        tests = [new_unittest('V_g published values (rocking.md 1)', test_vg_published), &
+        tests = [new_unittest('V_g published values (doc/pulses.md 1)', test_vg_published), &
                  new_unittest('V_g(beta) + V_g(-beta) = 1', test_vg_symmetry), &
                  new_unittest('exp pulse vs quad-precision Eq. 1.1b forms', test_exp_vs_quad), &
                  new_unittest('tiny |beta| to 1e-13 relative', test_exp_tiny_beta), &
@@ -61,7 +61,7 @@ contains
 
     ! ---------------------------------------------------------------- references
 
-    !> Printed half-lobe forms of sliding.md 2.5 (Eq. 1.1b convention) in quad precision:
+    !> Printed half-lobe forms of doc/pulses.md section 1 (Eq. 1.1b convention) in quad precision:
     !> a = (1 - e^(2 b s))/(1 - e^b), v = c[s - (e^(2 b s) - 1)/(2 b)],
     !> u = c[s^2/2 - (e^(2 b s) - 1 - 2 b s)/(4 b^2)], for 0 <= s <= 1/2;
     !> the falling half by V - v(1 - s), V (s - 1/2) + u(1 - s).
@@ -91,7 +91,7 @@ contains
 
     subroutine test_vg_published(error)
         type(test_error), allocatable, intent(out) :: error
-        ! rocking.md section 1, table of V_g/(A_g t_d) (10 digits)
+        ! doc/pulses.md section 1, table of V_g/(A_g t_d) (10 digits)
         real(dp), parameter :: b(6) = [-6.283185307179586_dp, -3.141592653589793_dp, -1.0_dp, &
                                        1.0_dp, 3.141592653589793_dp, 6.283185307179586_dp]
         real(dp), parameter :: vref(6) = [0.8427159935_dp, 0.7268558192_dp, 0.5819767069_dp, &
@@ -219,7 +219,7 @@ contains
 
     subroutine test_exp_triangle(error)
         type(test_error), allocatable, intent(out) :: error
-        ! beta = 0 (sliding.md 2.5): a = 2 tau, v = tau^2, u = tau^3/3 on [0, 1/2];
+        ! beta = 0 (doc/pulses.md section 1): a = 2 tau, v = tau^2, u = tau^3/3 on [0, 1/2];
         ! mirror on [1/2, 1]: v = 1/2 - (1 - tau)^2, u = (tau - 1/2)/2 + (1 - tau)^3/3
         real(dp) :: tau, a, v, d, s
         integer :: j

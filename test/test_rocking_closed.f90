@@ -1,7 +1,7 @@
 !> Rocking closed forms (seispulse_rocking_closed): the whole first excursion and every derived
 !> quantity against an independent reference (the Duhamel integral of the linearized
 !> equation of motion by adaptive Gauss-Legendre quadrature, roots and boundaries found on
-!> it by safeguarded Newton and bisection), the oracle values of rocking.md, the limit
+!> it by safeguarded Newton and bisection), the oracle values of doc/rocking.md, the limit
 !> equations, each corrected equation at a point where the printed form differs, the
 !> monotonicity claims of section 5.3 and the input checks.
 module test_rocking_closed
@@ -159,7 +159,7 @@ contains
         call check(error, .not. (abs(psi) > 0.0_dp .or. abs(dpsi) > 0.0_dp), 'before uplift')
     end subroutine test_names_none
 
-    !> rocking.md 5.3: removable singularities of Eq. 2.20 at f = 2|beta|.
+    !> doc/rocking.md section 3: removable singularities of Eq. 2.20 at f = 2|beta|.
     subroutine test_wall_oracles(error)
         type(test_error), allocatable, intent(out) :: error
         real(dp), parameter :: betas(6) = [0.5_dp, 1.0_dp, pi, -0.5_dp, -1.0_dp, -pi]
@@ -352,7 +352,7 @@ contains
 
     !> 2.32: with the printed y3 (-2f e^(f/2 + beta)) the impact time at beta = pi, f = 0.5,
     !> eta = 0.379 comes out 2.888; the corrected y3 (-2f e^(beta - f/2)) gives 1.3391439583
-    !> (rocking.md rounds it to 1.338; 30-digit quadrature and the reference below agree on
+    !> (doc/rocking.md rounds it to 1.338; 30-digit quadrature and the reference below agree on
     !> 1.33914). The printed "+ sqrt" root is the physical one only for f < 2|beta|.
     subroutine test_232(error)
         type(test_error), allocatable, intent(out) :: error
@@ -364,7 +364,7 @@ contains
         call impact_time(0.5_dp, 0.379_dp, pi, tau_i, stat)
         call check(error, tau_i, 1.3391439583_dp, atol=5.0e-11_dp, message='corrected 2.32e')
         if (allocated(error)) return
-        call check(error, abs(tau_i - 1.338_dp) < 2.0e-3_dp, 'rocking.md example 1.338')
+        call check(error, abs(tau_i - 1.338_dp) < 2.0e-3_dp, 'doc/rocking.md example 1.338')
         if (allocated(error)) return
         call y_coefs(0.5_dp, 0.379_dp, pi, y1, y2, y3p, y3c)
         plus = log((sqrt(y2 * y3p + y1**2) - y1) / y3p) / 0.5_dp
@@ -527,7 +527,7 @@ contains
         call stability_wall(1.0e-7_dp, 0.0_dp, x, stat)
         call check(error, x, 0.5e-7_dp, rtol=1.0e-6_dp, message='2.22, f -> 0')
         if (allocated(error)) return
-        ! section 4.1 item 4: O(1/|beta|) convergence to the rectangle at f = 1.3
+        ! doc/rocking.md section 2, item 4: O(1/|beta|) convergence to the rectangle at f = 1.3
         prev = 1.0_dp
         do i = 1, 4
             call stability_wall(1.3_dp, bs(i), x, stat)
@@ -1005,7 +1005,7 @@ contains
     end function approaches
 
     ! ------------------------------------------------------------------------------
-    ! The grid against the reference (rocking.md 13: closed form vs integration)
+    ! The grid against the reference (doc/rocking.md: closed form vs integration)
     ! ------------------------------------------------------------------------------
 
     subroutine test_grid(error)
@@ -1173,7 +1173,7 @@ contains
     ! ------------------------------------------------------------------------------
     ! The reference: pulse of Eq. 2.1, uplift by bisection, Duhamel integral
     ! psi(tau) = f int sinh(f (tau - s)) g(s) ds, psi'/f = f int cosh(f (tau - s)) g(s) ds
-    ! (rocking.md 4.1) by adaptive 20-point Gauss-Legendre quadrature
+    ! (doc/rocking.md section 2) by adaptive 20-point Gauss-Legendre quadrature
     ! ------------------------------------------------------------------------------
 
     !> s(tau) = a_g/A_g of Eq. 2.1 (half cycle), evaluated as expm1(2 beta u)/expm1(beta),
@@ -1372,7 +1372,7 @@ contains
         gl_ready = .true.
     end subroutine gl_init
 
-    !> Reference state at 1/2 and 1, A and the region (rocking.md 5.4).
+    !> Reference state at 1/2 and 1, A and the region (doc/rocking.md section 3).
     subroutine ref_state(r, rr)
         type(ref_t), intent(in) :: r
         type(ref_result_t), intent(out) :: rr

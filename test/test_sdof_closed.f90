@@ -1,6 +1,6 @@
 !> Linear oscillator closed forms (seispulse_sdof_closed) against independent computations:
 !> adaptive Gauss-Kronrod (G7/K15) quadrature of Duhamel's integral written here, using
-!> pulse_at for a_g; the book's numbers and each corrected equation of oscillator.md (2.17
+!> pulse_at for a_g; the book's numbers and each corrected equation of doc/oscillator.md (2.17
 !> steady state vs 1.299 from rest, 2.20 square root, 2.21 cos omega t, 2.23 sign, beta_pulse);
 !> limits (beta -> 0, -inf, +inf, huge; zeta -> 0 and -> 1; resonance and 1 +- 1e-9; t1 -> 0;
 !> T -> inf, where z = -d_g, and T -> 0, where z = -a_g/omega^2; the step overshoot);
@@ -292,7 +292,7 @@ contains
         call check(error, bcos, 2.0_dp / 3.0_dp)
         if (allocated(error)) return
         call dynamic_coefficient(0.3_dp, 0.0_dp, BETA_VISCOUS, beta, stat, beta_cos=bcos)
-        call check(error, bcos, 2.1978_dp, atol=1.0e-4_dp, message='oscillator.md 2.2: 0.3')
+        call check(error, bcos, 2.1978_dp, atol=1.0e-4_dp, message='doc/oscillator.md 3: 0.3')
         if (allocated(error)) return
         ! Eq. 2.20 with the square root: beta(r = 1) = 1/gamma, both models
         call dynamic_coefficient(1.0_dp, 0.1_dp, BETA_HYSTERETIC, beta, stat)

@@ -72,7 +72,7 @@ contains
         call check(error, ieee_is_nan(tau) .and. stat == SEISPULSE_SUCCESS, 'a eta >= 1: NaN')
     end subroutine test_onset
 
-    !> sliding.md 8.2 (a = 1 and 1.2) and 3.5 (beta = -2 pi and -pi at eta = 0.1).
+    !> doc/sliding.md section 8 (a = 1 and 1.2) and 3.5 (beta = -2 pi and -pi at eta = 0.1).
     subroutine test_half_published(error)
         type(test_error), allocatable, intent(out) :: error
         type(half_cycle_t) :: r
@@ -165,8 +165,8 @@ contains
             call check(error, r%regime == regime, 'triangle regime at eta = '//real_str(eta))
             if (allocated(error)) return
         end do
-        ! erratum 5: the printed 1.10b has +(1/3)(1 - tau_m)^3 H(tau_m - 1); at eta = 0.3 it
-        ! gives -0.068 where the slip is +0.2039
+        ! doc/sliding.md Corrections 3: the printed 1.10b has +(1/3)(1 - tau_m)^3 H(tau_m - 1); at
+        ! eta = 0.3 it gives -0.068 where the slip is +0.2039
         eta = 0.3_dp
         call half_cycle(eta, 0.0_dp, 1.0_dp, r, stat)
         tau_y = r%tau_y
@@ -218,7 +218,7 @@ contains
                    ieee_is_nan(r%tau_y), 'eta = 1: none')
     end subroutine test_half_threshold
 
-    !> sliding.md 10.1, exact column; the printed 1.19a has the spurious root tau_m = 1.
+    !> doc/sliding.md section 10, exact column; the printed 1.19a has the spurious root tau_m = 1.
     subroutine test_full_example(error)
         type(test_error), allocatable, intent(out) :: error
         type(full_cycle_t) :: r
@@ -334,7 +334,7 @@ contains
         call check(error, r%tau_y2, 1.0_dp + 0.5_dp * 0.84_dp, rtol=1.0e-15_dp)
     end subroutine test_full_modes
 
-    !> sliding.md 5.2: exact eta_cr and the fit 1.22.
+    !> doc/sliding.md section 5: exact eta_cr and the fit 1.22.
     subroutine test_eta_critical(error)
         type(test_error), allocatable, intent(out) :: error
         real(dp), parameter :: exact(9) = [0.8410_dp, 0.8057_dp, 0.7445_dp, 0.6234_dp, &
@@ -380,7 +380,8 @@ contains
         if (allocated(error)) return
         call check(error, k1, 1.0_dp)
         if (allocated(error)) return
-        ! xi = 0: eta (1 -+ tan(lambda)/mu)/(1 +- mu tan lambda), K = cos lambda (1 +- mu tan lambda)
+        ! xi = 0: eta (1 -+ tan(lambda)/mu)/(1 +- mu tan lambda), K = cos lambda (1 +- mu tan
+        ! lambda)
         call inclined_resistances(mu, 0.4_dp, 20.0_dp, 0.0_dp, eta1, eta2, k1, k2, stat)
         call check(error, eta1, eta * (1 - tan(lam) / mu) / (1 + mu * tan(lam)), rtol=1.0e-14_dp)
         if (allocated(error)) return
@@ -505,7 +506,7 @@ contains
     end subroutine test_bad_input
 
     ! ------------------------------------------------------------------------------
-    ! The grid against the integrator (sliding.md 13.7)
+    ! The grid against the integrator (doc/sliding.md section 9)
     ! ------------------------------------------------------------------------------
 
     subroutine test_grid(error)

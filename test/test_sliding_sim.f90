@@ -1,4 +1,4 @@
-!> Stick-slip integrator: closed forms of sliding.md (rectangle, triangle), published
+!> Stick-slip integrator: closed forms of doc/sliding.md (rectangle, triangle), published
 !> values (Sections 8.2, 10.1, 7.4), records against pulses, convergence of sampled
 !> pulses, grid output, degenerate cases and bad input.
 module test_sliding_sim
@@ -153,7 +153,7 @@ contains
 
     ! ---------------------------------------------------------------- tests
 
-    !> sliding.md 4.2 and 5.5: t_m1 = 2/(1+eta), u_m1 = (1-eta)/(1+eta), always slip,
+    !> doc/sliding.md sections 4, 5: t_m1 = 2/(1+eta), u_m1 = (1-eta)/(1+eta), always slip,
     !> t_m2 = 4/(1+eta), u_m2 = 2 eta (1-eta)/(1+eta)^2, u_res = ((1-eta)/(1+eta))^2.
     subroutine test_rect_full(error)
         type(test_error), allocatable, intent(out) :: error
@@ -205,7 +205,7 @@ contains
         end do
     end subroutine test_rect_full
 
-    !> sliding.md 3.5 (1.10a): t_m = 1/eta, u_m = (1 - eta)/(2 eta); the rectangular
+    !> doc/sliding.md section 3 (1.10a): t_m = 1/eta, u_m = (1 - eta)/(2 eta); the rectangular
     !> pulse kind in SI units scales as amp T^2.
     subroutine test_rect_half(error)
         type(test_error), allocatable, intent(out) :: error
@@ -241,7 +241,7 @@ contains
         end do
     end subroutine test_rect_half
 
-    !> sliding.md 3.5 triangle table: onset eta/2; free (eta <= 2 - sqrt 2):
+    !> doc/sliding.md section 3 triangle table: onset eta/2; free (eta <= 2 - sqrt 2):
     !> t_m = (eta^2 + 2)/(4 eta), u = (12 - 24 eta + 12 eta^2 - eta^4)/(96 eta);
     !> forced: t_m = 1 - eta/2 + (1 - eta)/sqrt 2, u = (3 + 2 sqrt 2)(1 - eta)^3/12;
     !> V_m/V_g = (1 - eta)^2 with V_g = 1/2, at 1 - eta/2.
@@ -322,7 +322,7 @@ contains
                    atol=1.0e-16_dp, message='continuous as eta -> 1')
     end subroutine test_triangle_half
 
-    !> sliding.md 8.2: u_m for a = 1 and 1.2 (5 digits), onsets from Eqs. 1.12 and
+    !> doc/sliding.md section 8: u_m for a = 1 and 1.2 (5 digits), onsets from Eqs. 1.12 and
     !> 1.34, V_m from Eqs. 1.13 and 1.35 at tau = 1 - tau_y.
     subroutine test_exp_half_static(error)
         type(test_error), allocatable, intent(out) :: error
@@ -374,9 +374,9 @@ contains
         end do
     end subroutine test_exp_half_static
 
-    !> sliding.md 10.1 (exact column): onset 0.1035846, t_m1 = 1.2465561,
+    !> doc/sliding.md section 10 (exact column): onset 0.1035846, t_m1 = 1.2465561,
     !> u_m1 = 0.1706088, slip, reverse stop at 1 + 1.4468988, u_m2 = 0.1643832; the
-    !> first stop also solves the corrected Eq. 1.19 (sliding.md 4.2).
+    !> first stop also solves the corrected Eq. 1.19 (doc/sliding.md section 4).
     subroutine test_full_cycle_example(error)
         type(test_error), allocatable, intent(out) :: error
         real(dp), parameter :: b = -pi, eta = 0.5_dp, tol7 = 5.0e-8_dp
@@ -419,7 +419,7 @@ contains
                    message='u_res')
     end subroutine test_full_cycle_example
 
-    !> sliding.md 7.3-7.4: beta = 0.4, eta = (0.05, 0.7): no reverse slide at all;
+    !> doc/sliding.md section 7: beta = 0.4, eta = (0.05, 0.7): no reverse slide at all;
     !> beta = -pi: the reverse slide starts by slip in the second half of the second
     !> lobe, stops before t = 2 (forced, the derived equation of 7.4 holds),
     !> u_m2 = 1.72069e-5; with eta_rev = +inf the first slide is unchanged and alone.
@@ -467,7 +467,7 @@ contains
 
     !> Triangle full cycle, eta = 0.6 > eta_cr = sqrt 2 - 1: forced first stop before
     !> 1 + tau_y, so the block sticks; the reverse slide is the mirror image of the
-    !> first (onset 1 + eta/2, stop 1 + tau_m1) and u_res = 0 (sliding.md 5.5).
+    !> first (onset 1 + eta/2, stop 1 + tau_m1) and u_res = 0 (doc/sliding.md section 5).
     !> Static friction a = 1.2: the first onset at a eta/2; the second at 1 + eta/2
     !> (kinetic), or 1 + a eta/2 with static_all, which restores the mirror.
     subroutine test_stick_static_all(error)

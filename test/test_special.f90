@@ -134,7 +134,7 @@ contains
 
     subroutine test_phi_chi(error)
         type(test_error), allocatable, intent(out) :: error
-        ! sliding.md 2.5: the naive V_g = 1/(1 - e^b) + 1/b gives 28.3 at b = 1e-9;
+        ! doc/pulses.md section 1: the naive V_g = 1/(1 - e^b) + 1/b gives 28.3 at b = 1e-9;
         ! V_g = phi(b) * b/expm1(b) must give 0.5 - b/12.
         real(dp) :: b
         b = 1.0e-9_dp

@@ -1,6 +1,6 @@
 !> One-term wall solution (seispulse_walls_one_term) against independent values: the
-!> published Table 2.1 / 2.2 closed forms, the derived oracles of walls.md §4-§7 (4-5 digit
-!> tables), Gauss-Legendre quadrature of the shape integrals (power law after t = u^b, which
+!> published Table 2.1 / 2.2 closed forms, the derived oracles of doc/walls.md sections 3-6 (4-5
+!> digit tables), Gauss-Legendre quadrature of the shape integrals (power law after t = u^b, which
 !> makes every integrand a polynomial for n = a/b) and of the wall pressure, direct
 !> evaluation of the printed and corrected (2.103), the identities of the rotational spring
 !> (moment equilibrium 2.91-2.92), published Bessel zeros and the Qu-Wong bounds for the
@@ -173,7 +173,7 @@ contains
             call check(error, real(r%m, dp), real(r%q, dp)*expect(4, k), rtol=1.0e-14_dp, &
                        message='m = q h')
             if (allocated(error)) return
-            ! static free-field surface displacement -L/a_oc^2 (walls.md: 0.5, 0.51602, 0.5)
+            ! static free-field surface displacement -L/a_oc^2 (doc/walls.md: 0.5, 0.51602, 0.5)
             call check(error, real(r%u_ff0, dp), -expect(2, k)/expect(1, k)**2, rtol=1.0e-14_dp, &
                        message='u_ff0 static')
             if (allocated(error)) return
@@ -208,7 +208,7 @@ contains
             call check(error, real(r%q, dp)/q_vy, 16.0_dp/(14.0_dp*zeta3), rtol=1.0e-14_dp, &
                        message='ratio to VY static')
             if (allocated(error)) return
-            ! walls.md quotes 0.95083; 16/(14 zeta(3)) = 0.950751 (its "4.92 % below" agrees)
+            ! doc/walls.md quotes 0.95083; 16/(14 zeta(3)) = 0.950751 (its "4.92 % below" agrees)
             call check(error, real(r%q, dp)/q_vy, 0.95075_dp, atol=5.0e-6_dp, message='0.95075')
             if (allocated(error)) return
         end do
@@ -367,7 +367,7 @@ contains
 
     subroutine test_dynamic_sine(error)
         type(test_error), allocatable, intent(out) :: error
-        ! walls.md §4.1, nu = 0.3, sine: (delta, omega/omega_1, approx |Q|)
+        ! doc/walls.md section 3, nu = 0.3, sine: (delta, omega/omega_1, approx |Q|)
         real(dp), parameter :: rows(3, 10) = reshape([ &
             0.1_dp, 0.5_dp, 1.0903_dp, 0.1_dp, 0.8_dp, 1.5516_dp, 0.1_dp, 1.0_dp, 2.9992_dp, &
             0.1_dp, 1.5_dp, 0.8470_dp, 0.1_dp, 2.0_dp, 0.5474_dp, 0.1_dp, 3.0_dp, 0.3353_dp, &
@@ -625,7 +625,7 @@ contains
 
     subroutine test_winkler(error)
         type(test_error), allocatable, intent(out) :: error
-        ! walls.md §7, nu = 0.3, sine, k H/G
+        ! doc/walls.md section 6, nu = 0.3, sine, k H/G
         real(dp), parameter :: om(4) = [0.0_dp, 0.5_dp, 1.0_dp, 2.0_dp]
         complex(dp), parameter :: k01(4) = [(2.8799_dp, 0.2880_dp), (2.4944_dp, 0.2909_dp), &
                                             (0.6126_dp, 0.6769_dp), (-0.1659_dp, 4.9992_dp)]
@@ -806,7 +806,7 @@ contains
         call check_c(error, u(5), r%u_ff0*sin(0.25_dp*pi), 1.0e-14_dp, 'x -> inf: free field')
         if (allocated(error)) return
         ! the free field itself: static sine -L/a_oc^2 = -16/pi^3; power law (A.7)
-        ! u(H) = -1/(2 - n) exactly (walls.md §8 oracle)
+        ! u(H) = -1/(2 - n) exactly (doc/walls.md section 3 oracle)
         call one_term(0.0_dp, 0.0_dp, 0.3_dp, SHAPE_POWER, 0.5_dp, 0.0_dp, inf(), r, stat, msg)
         call check(error, real(r%u_ff0, dp), -1.0_dp/1.5_dp, rtol=1.0e-14_dp, &
             message='(A.7) u_ff(H)')
@@ -893,7 +893,7 @@ contains
             call power_law_fundamental(ns(k), w, stat, msg)
             call check(error, stat, SEISPULSE_SUCCESS, 'status')
             if (allocated(error)) return
-            call check(error, w, tab(k), atol=5.0e-6_dp, message='walls.md table')
+            call check(error, w, tab(k), atol=5.0e-6_dp, message='exact power-law frequency table')
             if (allocated(error)) return
             ! the one-term cut-off lies 0.6-2 % above
             call check(error, power_law_cutoff(ns(k))/w - 1.0_dp > 0.006_dp .and. &

@@ -1,6 +1,6 @@
 !> Veletsos-Younan series (seispulse_walls_vy) against independent values: closed forms
 !> (14 zeta(3)/pi^3, Dirichlet beta(4), Catalan's constant, the 1-D free-field shear
-!> layer solved here with complex cosines), the walls.md §4.1 table, and reference sums
+!> layer solved here with complex cosines), the doc/walls.md section 3 table, and reference sums
 !> computed with mpmath (30 digits: 4000 direct terms plus Hurwitz-zeta tails for q and m;
 !> Clausen functions plus direct remainders for p; term-by-term decaying sums plus the
 !> closed free field for the fields). Quadrature (graded Gauss-Legendre, written here)
@@ -132,7 +132,7 @@ contains
         type(wall_psi_t) :: psi
         integer :: stat
         character(len=200) :: msg
-        ! walls.md §1 derived values
+        ! doc/walls.md section 1 derived values
         call wall_psi(0.3_dp, psi, stat)
         call check(error, stat, SEISPULSE_SUCCESS)
         if (allocated(error)) return
@@ -153,7 +153,7 @@ contains
         if (allocated(error)) return
         call check(error, psi%sigma, 1.8974_dp, atol=5.0e-5_dp, message='psi_sigma(1/3)')
         if (allocated(error)) return
-        ! nu -> 0.5: sqrt(3), 2, 4/sqrt(3) (walls.md: 1.7321, 2, 2.3094); psi_t unbounded
+        ! nu -> 0.5: sqrt(3), 2, 4/sqrt(3) (1.7321, 2, 2.3094); psi_t unbounded
         call wall_psi(0.5_dp - 1.0e-12_dp, psi, stat)
         call check(error, psi%e, sqrt(3.0_dp), rtol=1.0e-11_dp, message='psi_e(0.5-)')
         if (allocated(error)) return
@@ -239,7 +239,7 @@ contains
                      rtol=1.0e-10_dp, message='m at omega_ratio 2')
     end subroutine test_erratum_235
 
-    !> walls.md §4.1, nu = 0.3: VY |Q| and |h/H| columns to their printed digits.
+    !> doc/walls.md section 3, nu = 0.3: VY |Q| and |h/H| columns to their printed digits.
     subroutine test_table(error)
         type(test_error), allocatable, intent(out) :: error
         real(dp), parameter :: rows(4, 10) = reshape([ &

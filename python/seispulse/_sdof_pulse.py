@@ -1,5 +1,5 @@
 """Closed forms of the linear oscillator under base motion (Fortran module
-``seispulse_sdof_closed``; oscillator.md, seed 003). Users reach these functions as
+``seispulse_sdof_closed``; doc/oscillator.md). Users reach these functions as
 ``seispulse.sdof.<name>``.
 
 The oscillator (natural period ``period`` = T, omega = 2 pi / T, viscous damping ratio
@@ -13,7 +13,7 @@ SI units: accelerations in m/s^2, velocities in m/s, displacements in m, times a
 periods in s (pulses from :func:`seispulse.pulse.define` are SI; an M&P pulse's
 ``vamp`` is a velocity).
 
-Errata of the book restored here (oscillator.md): Eq. 2.20 has a square root
+Errata of the book restored here (doc/oscillator.md): Eq. 2.20 has a square root
 (beta(theta = omega) = 1/gamma); Eq. 2.21 reads cos(omega t), not sin(omega t); Eq. 2.23
 has a minus sign; Eq. 2.17 is the steady state, not the solution from rest; the book's
 pulse coefficient 1 + 2 pi t1/T is an upper bound, the exact one is 2 sin(pi t1/T).
@@ -225,7 +225,7 @@ def beta_pulse(t1_over_period, variant="exact"):
     """Dynamic coefficient of the undamped rectangular pulse, max S / (m W0), against
     t1 / T (>= 0).
 
-    ``variant='exact'``: 2 sin(pi t1 / T) for t1 <= T / 2, 2 beyond (oscillator.md 2.3:
+    ``variant='exact'``: 2 sin(pi t1 / T) for t1 <= T / 2, 2 beyond (doc/oscillator.md section 4:
     t1/T = 0.05, 0.1, 0.25, 0.4 give 0.3129, 0.6180, 1.4142, 1.9021). ``'textbook'``: the
     book's 1 + 2 pi t1 / T, which adds the peak of the ground acceleration to the peak
     relative acceleration although they do not coincide (an upper bound; -> 1 as

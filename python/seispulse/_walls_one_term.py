@@ -1,5 +1,5 @@
 """One-term (Vlasov-Leontiev / Kloukinas) solution for seismic earth pressures on rigid walls
-and its extensions (Fortran module ``seispulse_walls_one_term``; walls.md §4-§8, seed 004).
+and its extensions (Fortran module ``seispulse_walls_one_term``; doc/walls.md sections 3-6).
 Users reach these functions as ``seispulse.walls.<name>``.
 
 Model: a viscoelastic layer of height H on rigid rock, retained by a rigid wall, harmonic
@@ -28,7 +28,7 @@ rotation ``theta = u0 / H``, in rho Xg H / G_H; Winkler moduli in G_H / H; dashp
 rho V_SH. Results are the dynamic increment only (no geostatic thrust) and are complex
 transfer functions (take abs() for amplitudes).
 
-Errata of the source used in corrected form (walls.md): Eq. 2.39 (sign of k*^2), 2.60/2.73
+Errata of the source used in corrected form (doc/walls.md): Eq. 2.39 (sign of k*^2), 2.60/2.73
 (G* inside the integrals, normalised by G_H, so Lf s0 is real), the claim "0.979 at
 nu = 0.30" after Eq. 2.51 (it is 0.9461; 0.9791 is nu = 1/3), Eq. 2.95 (a spurious
 G(1 + i delta)), Eq. 2.102b (sign of B: only the corrected sign gives X(L) = 0), Eq. 2.104
@@ -129,7 +129,7 @@ def shape_constants(shape="sine", n=0.0):
 
 
 def one_term(omega_ratio, delta, nu, shape=None, n=0.0, d_theta=0.0, l_over_h=np.inf):
-    """Thrust, moment and displacements of the one-term solution (walls.md §4-§6).
+    """Thrust, moment and displacements of the one-term solution (doc/walls.md sections 3-5).
 
     Rigid wall (Eq. 2.48/2.71): q = psi_sigma l_factor s0 / s with
     s = sqrt(a_oc^2 - a_o^2) (Re s >= 0; for delta = 0 above the cut-off the delta -> 0+

@@ -1,6 +1,6 @@
 """Veletsos-Younan (1994a) series for a rigid, fixed-base wall on a homogeneous viscoelastic
-layer (Fortran module ``seispulse_walls_vy``; walls.md §3), and the shared compressibility
-factors. Users reach these functions as ``seispulse.walls.<name>``.
+layer (Fortran module ``seispulse_walls_vy``; doc/walls.md section 2), and the shared
+compressibility factors. Users reach these functions as ``seispulse.walls.<name>``.
 
 Model: a layer of height H on rigid rock, shear modulus G* = G(1 + i delta) (``delta`` is
 the loss factor, about twice the hysteretic damping ratio), Poisson's ratio ``nu``, retained
@@ -21,7 +21,7 @@ Units and signs:
   2.30-2.33 (tension positive; u < 0 for positive Xg: the soil lags toward the wall).
 - x/H >= 0 from the wall into the backfill, y/H in [0, 1] measured up from the base.
 
-Errata of the printed source corrected here (walls.md): Eq. 2.25 has psi_e outside the
+Errata of the printed source corrected here (doc/walls.md): Eq. 2.25 has psi_e outside the
 bracket; Eq. 2.29 misses H^2; Eq. 2.30 counts the damping factor (1 + i delta) twice; Eqs.
 2.31 and 2.32 are re-derived; Eqs. 2.35/2.36 need 1/n^4 (the printed 1/n^3 gives a static
 h/H of 0.58647 instead of 0.59858). For delta = 0 above a free-field frequency the square
@@ -52,7 +52,7 @@ __all__ = ["PsiFactors", "VYRigid", "VYFields", "VYSweep", "VY_DEFAULT_TOL", "ps
 VY_DEFAULT_TOL = 1e-10
 
 PsiFactors = namedtuple("PsiFactors", ["psi_e", "psi_o", "psi_sigma", "psi_v", "psi_t"])
-PsiFactors.__doc__ = """Compressibility factors of walls.md §1 (dimensionless):
+PsiFactors.__doc__ = """Compressibility factors of doc/walls.md section 1 (dimensionless):
 psi_e = sqrt((2 - nu)/(1 - nu)) (x-decay, Eq. 2.10), psi_o = sqrt(2/(1 - nu))
 (sigma_x = psi_o^2 G* du/dx), psi_sigma = psi_o^2/psi_e = 2/sqrt((1 - nu)(2 - nu)) (wall
 stresses, thrust, moment), psi_v = nu/sqrt((1 - nu)(2 - nu)) (vertical displacement, Eq.
@@ -185,7 +185,7 @@ def vy_pressure(omega_ratio, delta, nu, y, tol=VY_DEFAULT_TOL):
 
 def vy_fields(omega_ratio, delta, nu, x, y, tol=VY_DEFAULT_TOL):
     """Displacements and stresses in the backfill, Eqs. 2.30-2.33 as corrected in
-    walls.md, at the points (x, y) (broadcast together):
+    doc/walls.md, at the points (x, y) (broadcast together):
 
         u = -(16/(pi^3 (1 + i delta))) sum r_n^2 (1 - e^(-a_n x)) sin(n pi y/2)/n^3,
         v = (16 psi_v/(pi^3 (1 + i delta))) sum r_n e^(-a_n x) (1 - cos(n pi y/2))/n^3,

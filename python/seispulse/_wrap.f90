@@ -1,7 +1,7 @@
 !> Thin f2py layer: plain external subroutines with explicit-shape arrays, scalar
 !> integer/double/fixed-length character arguments only, `stat` + `errmsg` out.
 !> No numerics here: each routine translates its arguments and calls the library
-!> (style.md section 3: f2py cannot pass derived types, optionals or allocatables).
+!> (f2py cannot pass derived types, optionals or allocatables).
 !> These sources are the only signatures: f2py reads them at build time (gen_binding.py);
 !> `!f2py intent(hide)` lines hide the sizes f2py takes from the arrays, and .f2py_f2cmap
 !> maps real(dp) to C double (checked by the build and test_binding_kinds.py).

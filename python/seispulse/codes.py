@@ -1,5 +1,5 @@
 """EN 1998 seismic earth-pressure checks and response spectra (Fortran module
-``seispulse_codes``, issue 7).
+``seispulse_codes``).
 
 * EN 1998-5 §7.3.2.2: seismic coefficients kh = alpha S / r (7.1), kv = 0.5 kh or
   0.33 kh (7.2, 7.3), the r of Table 7.1 (:func:`seismic_coefficients`,

@@ -3,7 +3,7 @@
 :func:`rigid` slides a rigid block on a record: one way (downslope, as SLAMMER does),
 two ways with the same yield, or with different yields down and up the slope; with
 :func:`incline` the yields and along-plane factors come from the slope and friction of
-a real incline (sliding.md Eq. 1.31, section 7.1).
+a real incline (doc/sliding.md Eq. 1.31, section 7).
 
 Two integration rules: ``method='exact'`` (default) takes the acceleration as
 piecewise linear between samples and integrates each step exactly, with onsets and

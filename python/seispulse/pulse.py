@@ -68,7 +68,7 @@ _PARAM_DEFAULTS = {"amp": 1.0, "duration": 1.0, "beta": 0.0, "full": 0.0, "peak_
 # ------------------------------------------------------------------ exponential pulse
 
 def exp_pulse(tau, beta, full=False):
-    """Exponential pulse of Jacobsen & Ayre, dimensionless (seed 000, Eq. 1.1b).
+    """Exponential pulse of Jacobsen & Ayre, dimensionless (doc/pulses.md Eq. 1.1b).
 
     Parameters
     ----------
@@ -113,7 +113,7 @@ def exp_pulse_peaks(beta, full=False):
 def exp_pulse_impulse_amplitude(beta):
     """Amplitude A_g, in units of I / t_d, of the exponential lobe of impulse (area) I.
 
-    Equals 1 / vg (the unit-impulse normalization of seed 000, footnote to Eq. 1.1);
+    Equals 1 / vg (the unit-impulse normalization of doc/pulses.md section 1, unit impulse);
     +inf for the spike, whose normalized form tends to a Dirac delta at t_d / 2.
     """
     shape, arr = _core.broadcast(beta=beta)

@@ -1,11 +1,11 @@
-"""Rocking and overturning of free-standing rigid blocks (seed 000, chapter 2,
+"""Rocking and overturning of free-standing rigid blocks (chapter 2 of Ref. [GR],
 corrected; Fortran modules ``seispulse_rocking_closed`` and ``seispulse_rocking_sim``).
 
 Linearized closed forms under the half-cycle exponential pulse, dimensionless as in the
 chapter: ``f = p t_d`` (the printed ``f = p/t_d`` is an erratum), ``eta = alpha /
 alpha_g`` with ``alpha_g = A_g / g``, ``beta`` the pulse shape (-inf box, 0 triangle,
 +inf spike), ``tau = t / t_d``, ``psi = theta / alpha`` and ``dpsi = (dtheta/dt) /
-(alpha p)``. Regions (rocking.md 5.4): 'no_rocking' (eta >= 1), 'O1', 'O2', 'O3'
+(alpha p)``. Regions (doc/rocking.md section 3): 'no_rocking' (eta >= 1), 'O1', 'O2', 'O3'
 (overturning without impact: during the rising branch, the falling branch, after the
 pulse) and 'S1', 'S2' (stable, maximum during or after the pulse).
 
@@ -98,7 +98,7 @@ def extremes(f, eta, beta):
 
 
 def classify(f, eta, beta):
-    """'no_rocking', 'O1', 'O2', 'O3', 'S1' or 'S2' (rocking.md 5.4)."""
+    """'no_rocking', 'O1', 'O2', 'O3', 'S1' or 'S2' (doc/rocking.md section 3)."""
     return extremes(f, eta, beta)[0]
 
 
@@ -246,7 +246,7 @@ def simulate(block, pulse=None, *, accel=None, dt=None, linearized=False, t=None
     t = i dt, linear in between, zero after), from rest (or theta0 in rad, omega0 in
     rad/s at t = 0) until rest, overturning or t_max (s).
 
-    Sign (rocking.md 2): a positive ground acceleration drives theta > 0 (rotation about
+    Sign (doc/rocking.md section 1): a positive ground acceleration drives theta > 0 (rotation about
     one base corner); Housner's and Makris' form has the opposite sign, which flipping
     the sign of the excitation gives.
 

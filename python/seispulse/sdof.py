@@ -1,6 +1,6 @@
 """The linear oscillator: closed forms under base motion, exact response histories
 and response spectra of records (Fortran modules ``seispulse_sdof_sim`` and
-``seispulse_sdof_closed``; oscillator.md).
+``seispulse_sdof_closed``; doc/oscillator.md).
 
 The oscillator (natural period ``T``, viscous damping ratio ``damping`` = zeta; the
 book's gamma = 2 zeta) starts from rest under the ground acceleration a_g::
@@ -187,7 +187,7 @@ def spectrum(accel, dt=None, periods=None, damping=0.05, g=STANDARD_GRAVITY, pea
 
 
 def envelope(periods, spectra, plateau_below=0.0):
-    """Design envelope of several spectra on one period grid (oscillator.md section 3).
+    """Design envelope of several spectra on one period grid (doc/oscillator.md section 6).
 
     The largest ordinate at each period; below ``plateau_below`` (s) the curve is held
     at the largest ordinate at that or any longer period (the book's short-period

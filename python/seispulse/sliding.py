@@ -1,4 +1,4 @@
-"""Rigid block sliding on a frictional plane under the exponential pulse (seed 000,
+"""Rigid block sliding on a frictional plane under the exponential pulse (Ref. [GR],
 chapter 1, corrected; Fortran modules ``seispulse_sliding_closed``, ``seispulse_sliding_norm``
 and ``seispulse_sliding_sim``).
 
@@ -38,7 +38,7 @@ __all__ = ["REGIMES", "MODES", "HalfCycle", "FullCycle", "Resistances", "BlockRe
 REGIMES = _core.by_code({_f.SLIDING_REGIME_NONE: "none", _f.SLIDING_REGIME_FORCED: "forced",
                          _f.SLIDING_REGIME_FREE: "free"})
 
-#: Full-cycle modes, by code (sliding.md sections 5 and 7).
+#: Full-cycle modes, by code (doc/sliding.md sections 5, 7).
 MODES = _core.by_code({_f.SLIDING_MODE_NO_SLIDING: "no_sliding",
                        _f.SLIDING_MODE_UNILATERAL: "unilateral", _f.SLIDING_MODE_STICK: "stick",
                        _f.SLIDING_MODE_SLIP: "slip", _f.SLIDING_MODE_STUCK: "stuck",
@@ -100,7 +100,7 @@ def yield_time(eta, beta, static_factor=1.0):
 
 
 def half_cycle(eta, beta, static_factor=1.0, method="closed"):
-    """Response to a half-cycle exponential pulse (section 3 of sliding.md).
+    """Response to a half-cycle exponential pulse (section 3 of doc/sliding.md).
 
     Parameters
     ----------
@@ -130,7 +130,7 @@ def half_cycle(eta, beta, static_factor=1.0, method="closed"):
 def full_cycle(eta1, beta, eta2=None, static_factor=1.0, static_reverse=False,
                method="closed"):
     """Response to a full-cycle exponential pulse: forward slide, stick or slip, reverse
-    slide (Tables 1.1 and 1.4, corrected; sliding.md sections 4, 5 and 7).
+    slide (Tables 1.1 and 1.4, corrected; doc/sliding.md sections 4, 5, 7).
 
     Parameters
     ----------
@@ -165,7 +165,7 @@ def full_cycle(eta1, beta, eta2=None, static_factor=1.0, static_reverse=False,
 
 
 def inclined_resistances(mu, ag_over_g, slope_deg, xi_deg=0.0):
-    """Direction-dependent resistances on an incline (Eq. 1.31, sliding.md 7.1).
+    """Direction-dependent resistances on an incline (Eq. 1.31, doc/sliding.md section 7).
 
     mu > 0 friction coefficient, ag_over_g = A_g/g > 0, slope_deg in [0, 90) (a slope
     steeper than the friction angle atan(mu) is an error: the block would slide without
@@ -186,13 +186,13 @@ def block(mu, ag_over_g, td, beta, full=False, slope_deg=0.0, xi_deg=0.0, static
     pulse of amplitude A_g = ag_over_g * g and lobe duration t_d = td (s; a full cycle
     lasts 2 t_d). Returns :class:`BlockResponse` in s, m and m/s.
 
-    Sign conventions (sliding.md 1.2, 7.1): the first lobe drives the block downhill
+    Sign conventions (doc/sliding.md sections 1, 7): the first lobe drives the block downhill
     (positive slips are downhill). xi_deg is the angle of the pulse to the horizontal,
     measured in the same sense as the slope: xi = 0 horizontal, xi = slope_deg along the
     plane, both pointing towards downhill.
 
     along_plane: slips and velocities along the plane, with the factors K of
-    sliding.md 7.1 (False: without them, as the chapter's example 1.9.2 does).
+    doc/sliding.md section 7 (False: without them, as the chapter's example 1.9.2 does).
     g: gravity (m/s^2) converting A_g to m/s^2.
     """
     full = _core.check_bool("full", full)
@@ -216,7 +216,7 @@ def block(mu, ag_over_g, td, beta, full=False, slope_deg=0.0, xi_deg=0.0, static
 
 def eta_critical(beta, method="exact"):
     """Critical strength of the symmetric full cycle: the block slips (reverses at once)
-    for eta < eta_cr and sticks above (sliding.md 5.1-5.2).
+    for eta < eta_cr and sticks above (doc/sliding.md section 5).
 
     method='exact': the root of tau_m1(eta) = 1 + tau_y(eta) (1 for beta = -inf, 0 for
     +inf). method='regression': the chapter's fit, Eq. 1.22, 0.1 + 0.8 exp(-exp(0.25 beta
@@ -281,15 +281,15 @@ def rectangle_half(eta):
 
 
 def rectangle_full(eta):
-    """Rectangular full cycle (sliding.md 5.5), 0 < eta < 1; always slip:
+    """Rectangular full cycle (doc/sliding.md section 5), 0 < eta < 1; always slip:
     (tau_m1, um1, tau_m2, um2, ures) = (2/(1+eta), q, 4/(1+eta), 2 eta q/(1+eta), q^2)
     with q = (1-eta)/(1+eta)."""
     return _limit_form(2, eta, 5)
 
 
 def triangle_half(eta):
-    """Triangular half cycle (beta = 0; Eq. 1.10b with its sign corrected, erratum 5),
-    0 < eta < 1: (tau_y, tau_m, um, vm, regime) in closed form (sliding.md 3.5)."""
+    """Triangular half cycle (beta = 0; Eq. 1.10b with its sign corrected: doc/sliding.md,
+    Corrections 3), 0 < eta < 1: (tau_y, tau_m, um, vm, regime) in closed form (doc/sliding.md section 3)."""
     tau_y, tau_m, um, vm, code = _limit_form(3, eta, 5)
     shape = np.shape(tau_y)
     return tau_y, tau_m, um, vm, _core.names(REGIMES, np.asarray(code, dtype=int), shape)
@@ -365,11 +365,11 @@ and, when a time grid was given, t with u(t) and u'(t) (else None)."""
 def simulate(pulse=None, ay=None, *, accel=None, dt=None, ay_rev=None, static_factor=1.0,
              static_all=False, t=None):
     """Event-driven stick-slip integration of u'' = a_g(t) - ay_dir sgn(u') from rest
-    (sliding.md 13.7): onsets and stops are located by root finding on the analytic
+    (doc/sliding.md section 9): onsets and stops are located by root finding on the analytic
     relative velocity, never on a fixed time step.
 
     u is the slip of the block relative to the plane, positive in the sense a positive
-    ground acceleration drives it ("forward"; sliding.md 1.2). Results are in the units
+    ground acceleration drives it ("forward"; doc/sliding.md section 1). Results are in the units
     of the input: times in the pulse's time unit (s for SI pulses, or of dt), u in
     acceleration units x time^2 (m for SI), u' in acceleration units x time (m/s).
 

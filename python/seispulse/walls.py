@@ -1,4 +1,4 @@
-"""Seismic earth pressures on retaining walls (walls.md, seed 004; Fortran modules
+"""Seismic earth pressures on retaining walls (doc/walls.md; Fortran modules
 ``seispulse_walls_vy``, ``seispulse_walls_one_term``, ``seispulse_wall_table``).
 
 * The Veletsos & Younan (1994a) series for a rigid, fixed-base wall on a viscoelastic

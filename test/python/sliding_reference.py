@@ -1,6 +1,6 @@
 """Independent high-precision oracle for the half- and full-cycle sliding block: the
-chapter's own closed forms (seed 000 Eqs. 1.7, 1.8, 1.9, 1.12, 1.13, 1.18, the
-corrected 1.19, 1.23 and the corrected 1.24; sliding.md sections 3-5) evaluated with
+chapter's own closed forms (doc/sliding.md Eqs. 1.7, 1.8, 1.9, 1.12, 1.13, 1.18, the
+corrected 1.19, 1.23 and the corrected 1.24; doc/sliding.md sections 3-5) evaluated with
 mpmath at 150 digits, where their cancellations are harmless. The library uses none of
 these expansions (it integrates Eq. 1.5 with the ground primitives), so agreement
 checks both. Symmetric friction, no static factor, finite beta != 0.
@@ -32,7 +32,7 @@ def eq_1_8(tm, ty, eta, b):
 
 
 def eq_1_19(tm, ty, eta, b):
-    """Corrected 1.19a (sliding.md 4.2)."""
+    """Corrected 1.19a (doc/sliding.md section 4)."""
     y = eq_1_8(tm, ty, eta, b)
     y += (2 * (1 - tm) + (exp(-2 * b * (1 - tm)) - exp(2 * b * (1 - tm))) / (2 * b)) * H(tm - 1)
     y += (2 * exp(b) - exp(2 * b * (2 - tm)) - exp(-2 * b * (1 - tm))) / (2 * b) * H(tm - mpf(3) / 2)
@@ -99,7 +99,7 @@ def late_slide(tyb, eta, b):
 
 @mp.workdps(DPS)
 def printed_1_24(tyb, tmb, eta, b):
-    """Eq. 1.24 as printed, with e^(beta (1 + 2 tyb)) (erratum 8)."""
+    """Eq. 1.24 as printed, with e^(beta (1 + 2 tyb)) (doc/sliding.md Corrections 5)."""
     u = (-2 * b ** 2 * ((1 - tyb) * (1 + tyb - 2 * tmb) + eta * (tmb - tyb) ** 2)
          + 2 * b ** 2 * exp(b * (1 + 2 * tyb)) * eta * (tmb - tyb) ** 2
          + exp(2 * b * (1 - tyb)) * (1 - 2 * b * (tmb - tyb)) - 2 * b * (1 - tmb) - 1)

@@ -129,7 +129,7 @@ def test_transcribed_e4_differs_off_vertical():
     k90 = C.mononobe_okabe(30, 0.2, 0.0, psi_deg=90, passive=True).k
     assert k90 == pytest.approx(transcribed_e4(30, 0.2, 0.0, 90, 0), rel=1e-13)
     assert k90 == pytest.approx(wedge_k(30, 0.2, 0.0, 0.0, 90, 0, True), rel=1e-9)
-    # psi = 80: the wedge (notes: 2.27405) rejects the printed numerator (2.88765)
+    # psi = 80: the wedge (independent value: 2.27405) rejects the printed numerator (2.88765)
     ref = wedge_k(30, 0.2, 0.0, 0.0, 80, 0, True)
     k80 = C.mononobe_okabe(30, 0.2, 0.0, psi_deg=80, passive=True).k
     assert k80 == pytest.approx(ref, rel=1e-9)
@@ -146,7 +146,7 @@ def test_published_check():
     kpd = C.mononobe_okabe(30.0, 0.24, -0.12, passive=True).k
     assert kpd == pytest.approx(2.6, rel=1e-3)           # xc's tolerance
     assert kpd == pytest.approx(2.600280, rel=2e-7)
-    # the other sign of kv (notes: theta = 0.2662520, K = 0.5407058)
+    # the other sign of kv (independent values: theta = 0.2662520, K = 0.5407058)
     mo = C.mononobe_okabe(30.0, 0.24, 0.12)
     assert mo.theta == pytest.approx(0.2662520, rel=1e-6)
     assert mo.k == pytest.approx(0.5407058, rel=1e-6)

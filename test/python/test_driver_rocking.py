@@ -1,5 +1,5 @@
 """Batch driver, analysis 'rocking': the examples under input/, the summary against
-independent physics (the linearized closed forms of rocking.md written out here with
+independent physics (the linearized closed forms of doc/rocking.md written out here with
 numpy, and Housner's nonlinear equations integrated here with scipy), the history, the
 overturning map against the stability wall and against summary runs of its cells, the
 progress line of long maps, and the located one-line errors (exit 2, no output)."""
@@ -69,8 +69,8 @@ def run_example(driver, source_root, tmp_path, name):
 # ---------------------------------------------------------------- independent physics
 
 def rect_closed_forms(f, eta):
-    """Linearized block, rectangular half-cycle pulse (rocking.md 2.12, 2.17, 2.21, 2.25,
-    2.29, 2.33), in t_d: region, tau_c, tau_m, psi_max, tau_i."""
+    """Linearized block, rectangular half-cycle pulse (doc/rocking.md (2.12), (2.17), (2.21),
+    (2.25), (2.29), (2.33)), in t_d: region, tau_c, tau_m, psi_max, tau_i."""
     one = 1.0 / (1.0 - eta)
     r = dict(tau_c=math.nan, tau_m=math.nan, psi_max=math.inf, tau_i=math.nan)
     if math.cosh(f / 2) >= one:
@@ -104,7 +104,7 @@ def rect_response(tau, f, eta):
 
 
 def housner(alpha, p, e, g, ag, breaks, t_up, t_stop):
-    """Housner's nonlinear rocking (rocking.md 3, Eqs. 2.5/2.6 with the + forcing) from
+    """Housner's nonlinear rocking (doc/rocking.md section 1, Eqs. 2.5/2.6 with the + forcing) from
     uplift at t_up (theta > 0 first), integrated with scipy's DOP853 from event to event:
     impacts (theta = 0: the other corner, omega times e), outward crossings of
     |theta| = alpha, |theta| = pi/2 (overturned: stop). Independent of seispulse."""
@@ -152,7 +152,7 @@ def housner(alpha, p, e, g, ag, breaks, t_up, t_stop):
 
 def linearized_exponential(beta, f, eta):
     """First excursion of the linearized block under the half-cycle exponential pulse
-    (rocking.md 3): psi'' = f^2 (psi + s(tau)/eta - 1) from rest at tau_up (Eq. 2.4),
+    (doc/rocking.md section 1): psi'' = f^2 (psi + s(tau)/eta - 1) from rest at tau_up (Eq. 2.4),
     integrated with scipy. Returns tau_up, and tau_c (psi = 1) or tau_m, psi_max and
     tau_i (psi = 0)."""
     from scipy.integrate import solve_ivp
@@ -220,7 +220,7 @@ def test_example_summary(driver, source_root, tmp_path):
     assert ("outcome: 0 rest, 1 no_uplift, 2 overturn_no_impact, 3 overturn_one_impact, "
             "4 overturn_many_impacts, 5 time_limit") in head
     assert "region: 0 no_rocking, 1 O1, 2 O2, 3 O3, 4 S1, 5 S2" in head
-    # the block, rocking.md 2 and 7
+    # the block, doc/rocking.md sections 1, 6
     alpha, radius = math.atan(0.25), math.hypot(0.2, 0.8)
     p, e = math.sqrt(0.75 * G / radius), 1 - 1.5 * math.sin(alpha) ** 2
     assert math.isclose(t["alpha"], alpha, rel_tol=1e-15)
@@ -324,7 +324,7 @@ def test_map_cells_equal_summary_runs(driver, tmp_path):
 
 def test_map_linearized_rectangle_is_the_wall(driver, tmp_path):
     """Linearized model, rectangular family: overturns (without impact) exactly below the
-    stability wall eta < 1 - e^-f (rocking.md 2.21), f = 2 pi/freq_ratio,
+    stability wall eta < 1 - e^-f (doc/rocking.md (2.21)), f = 2 pi/freq_ratio,
     eta = alpha/(amp_ratio tan alpha)."""
     alpha = math.radians(8.0)
     m = rocking(driver, tmp_path, "alpha_deg = 8.0, model = 'linearized'",
@@ -373,7 +373,7 @@ RECT = [
 
 @pytest.mark.parametrize("pulse, block", RECT)
 def test_linearized_rectangle_against_closed_forms(driver, tmp_path, pulse, block):
-    """The driver's integrator run and its closed-form columns both equal rocking.md
+    """The driver's integrator run and its closed-form columns both equal doc/rocking.md
     2.12/2.17/2.21/2.25/2.29/2.33, written out above, to 1e-9."""
     s = rocking(driver, tmp_path, block + ", model='linearized', e=0.0", pulse,
                 opts="rtol = 1e-14")
@@ -406,7 +406,7 @@ def test_linearized_rectangle_against_closed_forms(driver, tmp_path, pulse, bloc
 
 
 EXPONENTIAL = [
-    # (beta, f, eta): every region of the map (rocking.md 5.4) for several shapes
+    # (beta, f, eta): every region of the map (doc/rocking.md section 3) for several shapes
     (PI, 1.0, 0.15), (PI, 0.5, 0.379), (PI, 3.0, 0.7), (PI, 6.0, 0.1), (PI, 1.0, 0.1),
     ("-" + PI, 0.5, 0.5), ("-" + PI, 1.0, 0.9), ("-" + PI, 3.0, 0.6), ("-1.0", 1.0, 0.3),
     ("0.0", 1.0, 0.5), ("0.0", 3.0, 0.7), ("0.5", 3.0, 0.3), ("2.0", 4.0, 0.35),
@@ -448,11 +448,11 @@ def test_linearized_exponential_integrator_equals_closed_forms(driver, tmp_path,
         assert math.isclose(s["t_m_cf"] / td, ref["tau_m"], rel_tol=1e-8)
         assert math.isclose(s["psi_max_cf"], ref["psi_max"], rel_tol=1e-9)
         assert math.isclose(s["t_i_cf"] / td, ref["tau_i"], rel_tol=1e-9)
-    # the oracle of rocking.md 5.4: tau_c in O3 at beta = pi, f = 1, eta = 0.15
+    # the oracle of doc/rocking.md section 3: tau_c in O3 at beta = pi, f = 1, eta = 0.15
     if (beta, f, eta) == (PI, 1.0, 0.15):
         assert region == "O3"
         assert math.isclose(s["t_c_cf"] / td, 1.4103182142, rel_tol=1e-9)
-    # rocking.md 7 quotes tau_i "1.338" here (the corrected 2.32b/e; to ~3 digits)
+    # doc/rocking.md section 5 quotes tau_i "1.338" here (the corrected 2.32b/e; to ~3 digits)
     if (beta, f, eta) == (PI, 0.5, 0.379):
         assert abs(s["t_i_cf"] / td - 1.338) < 2e-3
 

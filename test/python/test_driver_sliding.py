@@ -1,4 +1,4 @@
-"""Batch driver, analysis 'sliding': the worked examples of sliding.md section 10 (the
+"""Batch driver, analysis 'sliding': the worked examples of doc/sliding.md section 10 (the
 input files under input/), the located one-line errors (exit 2, no output), sweeps,
 the history table, and the agreement of the closed forms with the event-driven
 integrator."""
@@ -62,7 +62,7 @@ LEN = AG * TD * TD          # A_g t_d^2 = 2.330856 m
 
 
 def test_example_1_9_1(driver, source_root, tmp_path):
-    """sliding.md 10.1 (exact column): eta = 0.5, beta = -pi, full cycle."""
+    """doc/sliding.md section 10 (exact column): eta = 0.5, beta = -pi, full cycle."""
     proc = run_example(driver, source_root, tmp_path, "sliding_example_1_9_1.nml")
     assert "out/example_1_9_1_sliding.csv" in proc.stdout
     t = read_table(tmp_path / "out" / "example_1_9_1_sliding.csv")
@@ -90,11 +90,11 @@ def test_example_1_9_1(driver, source_root, tmp_path):
 
 
 def test_example_1_9_2(driver, source_root, tmp_path):
-    """sliding.md 10.2 with the exact |eta1| and eta2 of Eq. 1.31: unilateral.
+    """doc/sliding.md section 10 with the exact |eta1| and eta2 of Eq. 1.31: unilateral.
 
     With the exact eta1 = 0.3147964 the values are tau_y1 = 0.057038, tau_m1 = 1.422938,
     u_m1 = 0.3162655 A_g t_d^2 (the forward slide does not depend on eta2 > 1: asserted
-    against the mpmath oracle sliding_reference.py); sliding.md 10.2 lists
+    against the mpmath oracle sliding_reference.py); doc/sliding.md section 10 lists
     0.0571, 1.4227, 0.31608, which are the values for the chapter's rounded eta1 = 0.315
     (checked below)."""
     run_example(driver, source_root, tmp_path, "sliding_example_1_9_2.nml")
@@ -335,7 +335,7 @@ AGREE = [
      "mu = 0.3, static_factor = 1.2, static_reverse = .true."),
     ("amp=0.6, amp_unit='g', duration=0.5, beta=3.0, full=.false.",
      "mu = 0.2, static_factor = 1.3"),
-    # 'stuck' (sliding.md 7.3): eta2 < 1 but no reverse slide
+    # 'stuck' (doc/sliding.md section 7): eta2 < 1 but no reverse slide
     ("amp=5.0, duration=0.4, beta=0.4, full=.true.", "eta1 = 0.05, eta2 = 0.7"),
 ]
 

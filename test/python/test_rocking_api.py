@@ -44,7 +44,7 @@ def test_closed_forms_equal_linearized_integrator(f, eta, beta):
 
 
 def test_published_and_limit_values():
-    # rocking.md 5.4 oracle (beta = pi, f = 1) and the corrected 2.16a value
+    # doc/rocking.md section 3 oracle (beta = pi, f = 1) and the corrected 2.16a value
     assert R.critical_time(1.0, [0.15, 0.19, 0.198], PI) == pytest.approx(
         [1.4103182142, 2.3430539314, 4.2505629625], abs=1e-9)
     assert R.overturn_boundary(1.0, PI) == pytest.approx(0.1011941262, abs=1e-10)
@@ -54,7 +54,7 @@ def test_published_and_limit_values():
     assert R.stability_wall(f, 0.0) == pytest.approx(2 - 2 / f * np.log(2 * np.exp(f / 2) - 1),
                                                      rel=1e-13)
     assert R.min_overturning_amplitude(1.0, -np.inf) == pytest.approx(1 / (1 - math.exp(-1)))
-    # removable singularity f = 2|beta| (rocking.md 5.3)
+    # removable singularity f = 2|beta| (doc/rocking.md section 3)
     assert R.stability_wall(2.0, 1.0) == pytest.approx(0.4447161183, abs=1e-10)
     assert R.stability_wall(2.0, -1.0) == pytest.approx(0.5739634818, abs=1e-10)
     # corrected 2.30 (the printed form gives -0.053)
@@ -157,7 +157,7 @@ GRID_BETA = [-np.inf, -3 * PI, -PI, -1.0, -1e-9, 0.0, 1e-9, 1.0, PI, 3 * PI, 2.0
 
 @pytest.mark.parametrize("beta", GRID_BETA)
 def test_grid_closed_forms_against_linearized_integrator(beta):
-    """rocking.md 13: the closed forms against the library's own linearized integrator
+    """doc/rocking.md: the closed forms against the library's own linearized integrator
     on a grid of f in [0.2, 8], eta in (0, 1), beta in [-3 pi, 3 pi] with 0, tiny
     |beta|, -inf and f = 2|beta| (beta = 2 with f = 4; beta = 1 with f = 2)."""
     for f in GRID_F:

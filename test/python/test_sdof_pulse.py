@@ -1,7 +1,7 @@
 """seispulse.sdof closed forms (Fortran seispulse_sdof_closed) against computations that do
 not use the library: scipy.integrate.quad and mpmath quadrature of Duhamel's integral,
 scipy's solve_ivp (DOP853, rtol 1e-12), the ground accelerations written here from their
-definitions; the book's numbers with its errata corrected (oscillator.md); bad input."""
+definitions; the book's numbers with its errata corrected (doc/oscillator.md); bad input."""
 import math
 import warnings
 
@@ -237,7 +237,7 @@ def test_dynamic_coefficient_book():
     assert S.dynamic_coefficient(r, g) == pytest.approx(1 / math.sqrt((1 - r * r) ** 2 + g * g))
     assert S.dynamic_coefficient(r, g, "viscous") == pytest.approx(
         1 / math.sqrt((1 - r * r) ** 2 + (g * r) ** 2))
-    # cosine law: 2|beta| (oscillator.md 2.2)
+    # cosine law: 2|beta| (doc/oscillator.md section 3)
     np.testing.assert_allclose(S.cosine_dynamic_coefficient([0.3, 0.5, 2.0]),
                                [2.1978, 2.6667, 0.6667], atol=1e-4)
     b = S.dynamic_coefficient(np.array([[0.5], [1.5]]), [0.1, 0.2, 0.3])

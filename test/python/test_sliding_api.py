@@ -1,5 +1,5 @@
 """seispulse.sliding: the closed forms against the independent mpmath oracle of the
-chapter's own equations, the published numbers of sliding.md, the corrected equations
+chapter's own equations, the published numbers of doc/sliding.md, the corrected equations
 at points where the printed ones differ, and the Python face (broadcasting, errors)."""
 import math
 
@@ -29,7 +29,7 @@ def test_half_and_full_cycle_against_oracle(beta, eta):
 
 
 def test_printed_1_9_cancels_where_1_5_does_not():
-    # sliding.md 3.5: in double precision the printed 1.9 gives 2.54 at beta = -pi,
+    # doc/sliding.md section 3: in double precision the printed 1.9 gives 2.54 at beta = -pi,
     # eta = 0.1 (true 2.284) and 0 at beta = -2 pi (true 3.133)
     for beta, true, in ((-PI, 2.284), (-2 * PI, 3.133)):
         h = S.half_cycle(0.1, beta)
@@ -46,7 +46,8 @@ def test_printed_1_9_cancels_where_1_5_does_not():
 @pytest.mark.parametrize("beta, eta, true, printed", [(-1.0, 0.05, 0.0678, 0.0338),
                                                      (PI, 0.05, 0.0491, -2.15)])
 def test_corrected_1_24(beta, eta, true, printed):
-    # slip with a late reverse onset (tau_y2 - 1 > 1/2): erratum 8, e^(beta(1 + 2 tyb)) -> e^beta
+    # slip with a late reverse onset (tau_y2 - 1 > 1/2): doc/sliding.md Corrections 5,
+    # e^(beta(1 + 2 tyb)) -> e^beta
     f = S.full_cycle(eta, beta)
     assert f.mode == "slip" and f.tau_y2 - 1 > 0.5
     assert f.um2 == pytest.approx(true, abs=5e-5)
@@ -78,7 +79,7 @@ def test_example_1_9_2():
     eta1 = 0.5 * (1 - math.tan(lam) / 0.33) / (1 + 0.33 * math.tan(lam))
     eta2 = 0.5 * (1 + math.tan(lam) / 0.33) / (1 - 0.33 * math.tan(lam))
     assert (eta1, eta2) == pytest.approx((-0.3148, 1.6984), abs=5e-5)
-    # the exact column of sliding.md 10.2 is for the text's rounded eta1 = 0.315
+    # the exact column of doc/sliding.md section 10 is for the text's rounded eta1 = 0.315
     f = S.full_cycle(0.315, -PI, eta2=eta2)
     assert f.mode == "unilateral" and f.ures == f.um1
     assert f.tau_y1 == pytest.approx(0.0571, abs=5e-5)
@@ -87,7 +88,7 @@ def test_example_1_9_2():
 
 
 def test_stuck_mode_corrected_1_32b():
-    # erratum 10: no reverse slide when tau_m1 >= 2 - tau_y(eta2)
+    # doc/sliding.md Corrections 7: no reverse slide when tau_m1 >= 2 - tau_y(eta2)
     f = S.full_cycle(0.05, 0.4, eta2=0.7)
     assert f.mode == "stuck" and f.um2 == 0 and f.ures == f.um1 and math.isnan(f.tau_y2)
     assert f.tau_m1 >= 2 - S.yield_time(0.7, 0.4)
@@ -106,7 +107,7 @@ def test_regressions():
     assert S.eta_critical(0.0) == pytest.approx(math.sqrt(2) - 1, rel=1e-13)
     with pytest.warns(UserWarning, match="fitted on"):
         S.eta_critical(20.0, method="regression")
-    # Eq. 1.30 against the exact full-cycle slip over V_g t_d (sliding.md 6)
+    # Eq. 1.30 against the exact full-cycle slip over V_g t_d (doc/sliding.md section 6)
     from seispulse.pulse import exp_pulse_peaks
     vg = exp_pulse_peaks(0.0).vg
     assert S.full_cycle_peak_regression(0.1, 0.0) == pytest.approx(0.729, abs=5e-4)

@@ -1,5 +1,5 @@
 """seispulse.sliding.simulate, the event-driven stick-slip integrator, against the
-closed forms (the grid of sliding.md 13.7, through Python; the Fortran suite 'sliding'
+closed forms (the grid of doc/sliding.md section 9, through Python; the Fortran suite 'sliding'
 runs a larger one), on sampled records, and its Python face."""
 import math
 

@@ -2,7 +2,7 @@
 independent computations: mpmath quadrature of the shape integrals, a Veletsos-Younan series
 summed here with mpmath (static-subtracted, 1000 odd terms), mpmath Bessel zeros and a
 Frobenius-series shooting of the power-law layer, scipy quadrature of the wall pressure,
-the derived tables of walls.md (§4-§7) and the Python-layer behaviour (shapes, arrays,
+the derived tables of doc/walls.md (§4-§7) and the Python-layer behaviour (shapes, arrays,
 errors naming the argument)."""
 
 import math
@@ -167,7 +167,7 @@ def _vy_q_h(om, delta, nu):
 
 
 def test_vy_sum_reproduces_walls_md():
-    # the independent series itself against walls.md's VY column (checks the oracle)
+    # the independent series itself against the VY values of Ref. [TEI] (checks the oracle)
     for om, delta, q_ref, h_ref in [(0.0, 0.0, 0.9951, 0.5986), (0.5, 0.1, 1.1399, 0.6030),
                                     (1.0, 0.1, 3.0376, 0.6268), (2.0, 0.0, 0.5497, 0.6328)]:
         q, h = _vy_q_h(om, delta, 0.3)
@@ -176,7 +176,7 @@ def test_vy_sum_reproduces_walls_md():
 
 
 def test_trend_against_vy_series():
-    """|Q| one-term / VY stays within walls.md's 0.951 .. 0.994 for omega/omega_1 <= 2
+    """|Q| one-term / VY stays within 0.951 .. 0.994 (Ref. [TEI], doc/walls.md section 3) for omega/omega_1 <= 2
     (delta = 0.1, nu = 0.3), and h/H = 2/pi within 10 % of |h_VY| (Fig. 2.5)."""
     oms = np.linspace(0.0, 2.0, 21)
     ot = walls.one_term(oms, 0.1, 0.3)

@@ -3,7 +3,7 @@ here without the library: mpmath sums (direct terms with the principal square ro
 source, Hurwitz-zeta tails for q and m, mpmath's Clausen functions for the pressure), the
 closed-form 1-D free-field shear layer, finite differences of the fields (the constitutive
 relations the corrected Eqs. 2.31-2.33 come from), Gauss-Legendre quadrature of the pressure,
-and the walls.md §4.1 table. Each corrected equation has a test where the printed form
+and the doc/walls.md section 3 table. Each corrected equation has a test where the printed form
 differs. Bad input for every parameter."""
 import math
 
@@ -247,7 +247,7 @@ def test_static_free_field_surface_displacement():
 
 # ------------------------------------------------------------------ dynamic table
 
-TABLE = [  # delta, omega_ratio, |Q|, |h/H| (walls.md §4.1, nu = 0.3)
+TABLE = [  # delta, omega_ratio, |Q|, |h/H| (doc/walls.md section 3, nu = 0.3)
     (0.1, 0.5, 1.1399, 0.6030), (0.1, 0.8, 1.6019, 0.6123), (0.1, 1.0, 3.0376, 0.6268),
     (0.1, 1.5, 0.8543, 0.6302), (0.1, 2.0, 0.5568, 0.6243), (0.1, 3.0, 0.4261, 0.4632),
     (0.05, 1.0, 4.2710, 0.6298), (0.2, 1.0, 2.1765, 0.6223), (0.0, 0.5, 1.1420, 0.6031),
@@ -267,7 +267,7 @@ def test_dynamic_table(delta, w, qabs, h):
 def test_resonant_amplification():
     s = W.vy_sweep([0.0, 1.0], 0.1, NU)
     assert s.amplification[0] == pytest.approx(1.0, rel=1e-14)
-    assert s.amplification[1] == pytest.approx(3.05, abs=5e-3)      # walls.md: VY 3.05
+    assert s.amplification[1] == pytest.approx(3.05, abs=5e-3)      # doc/walls.md: VY 3.05
     q, _ = qm_ref(1.0, 0.1)
     assert s.amplification[1] == pytest.approx(abs(q) / abs(qm_ref(0, 0.1)[0]), rel=1e-7)
 

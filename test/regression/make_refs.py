@@ -13,27 +13,28 @@ exact double t in high precision and printed with repr(float(x)).
 
 Analysis 'sliding' (one row per friction value; never by running the driver): the
 pulse must be one of the shapes with a closed-form answer, written out below from
-sliding.md (mpmath, 40 digits):
+doc/sliding.md (mpmath, 40 digits):
   * rectangle, full cycle: kind 'exponential' with beta = -inf, full = .true.
-    (sliding.md 5.5; the block always slips);
+    (doc/sliding.md section 5; the block always slips);
   * rectangle, half cycle: kind 'rectangular', or 'exponential' with beta = -inf
-    (Newmark 1965, sliding.md 3.5 Eq. 1.10a);
+    (Newmark 1965, doc/sliding.md section 3 Eq. 1.10a);
   * triangle, half cycle: kind 'triangular' with peak_frac = 0.5, or 'exponential' with
-    beta = 0 (sliding.md 3.5, the table of explicit triangle results; V_m/V_g = (1-eta)^2);
+    beta = 0 (doc/sliding.md section 3, the explicit triangle results;
+    V_m/V_g = (1-eta)^2);
 and &block gives mu (mu_list; any slope_deg, xi_deg: Eq. 1.31 and the factors K of
-sliding.md 7.1) or eta1 (eta_list), with static_factor. Static friction only moves the
+doc/sliding.md section 7) or eta1 (eta_list), with static_factor. Static friction only moves the
 onset: for the rectangle the onset stays at t = 0 (no sliding if static_factor eta >= 1);
 for the triangle these references support static_factor = 1 only.
 
 Analysis 'rocking' (never by running the driver): the linearized model (&block
 model = 'linearized') under the rectangular half-cycle pulse (kind 'rectangular', or
-'exponential' with beta = -inf and full = .false.), written out from rocking.md in mpmath
+'exponential' with beta = -inf and full = .false.), written out from doc/rocking.md in mpmath
 (40 digits): the response (2.12, 2.13), the wall eta_w = 1 - e^-f (2.21), the region
 boundaries cosh(f/2), cosh(f) = 1/(1 - eta) (2.17b, 2.17a), the critical time, the time of
 the maximum (2.25), the maximum rotation (2.29) and the first impact (2.33). Summaries and
 histories need restitution e = 0 (the block rests at its first impact; overturning
 blocks need none); maps use the wall alone (the rectangle's impacts come after the
-pulse, where a stable block cannot overturn: rocking.md 5.4), with cells at least 1e-6
+pulse, where a stable block cannot overturn: doc/rocking.md section 3), with cells at least 1e-6
 (relative) away from it.
 
 Analysis 'newmark' (never by running the driver): the record files are read here by a
@@ -47,11 +48,11 @@ and its inverse (x -1):
     root of a quadratic; at rest an onset is where a crosses ky or -ky_up (linear);
     after the last sample a = 0 and a sliding block decelerates at ky_s; the slip along
     the plane is K_s times the integral of z;
-  * method 'slammer': SLAMMER's explicit one-way recurrence (sliding.md / the brief of
-    the driver): cm/s^2 with g = 100 g, at rest n = sign(a) if |a| > ky else a/ky,
+  * method 'slammer': SLAMMER 1.1's explicit one-way recurrence (doc/newmark.md,
+    RigidBlock.java of SLAMMER 1.1): cm/s^2 with g = 100 g, at rest n = sign(a) if |a| > ky else a/ky,
     y = a - n ky; sliding y = a - ky; v = v_prev + dt/2 (y + y_prev); v <= 0: v = y = 0;
     u += dt/2 (v + v_prev).
-With mu the yields and factors are Eq. 1.31 and sliding.md 7.1 (resistances() above, A_g
+With mu the yields and factors are Eq. 1.31 and doc/sliding.md section 7 (resistances() above, A_g
 = 1 g). A record file that does not exist gives NaN results and status 1 in its rows.
 """
 import math
@@ -187,7 +188,7 @@ def pulse_function(pgroup):
 
 
 # ---------------------------------------------------------------------------
-# Analysis 'sliding': closed forms of the limit shapes, written from sliding.md
+# Analysis 'sliding': closed forms of the limit shapes, written from doc/sliding.md
 # ---------------------------------------------------------------------------
 
 def _as_list(x):
@@ -195,7 +196,7 @@ def _as_list(x):
 
 
 def resistances(mu, ag_over_g, slope_deg, xi_deg):
-    """Eq. 1.31 and the along-plane factors of sliding.md 7.1, from the force balance:
+    """Eq. 1.31 and the along-plane factors of doc/sliding.md section 7, from the force balance:
     eta1,2 = (mu/A_g)(cos lambda -+ sin lambda/mu)/K1,2, K1,2 = cos(lambda - xi) +- mu
     sin(lambda - xi); eta = +inf where K <= 0."""
     mu, lam = mpf(mu), mp.radians(mpf(slope_deg))
@@ -211,7 +212,7 @@ def resistances(mu, ag_over_g, slope_deg, xi_deg):
 
 
 def rectangle_full(eta):
-    """Box full cycle (sliding.md 5.5), dimensionless: the forward slide starts at 0 with
+    """Box full cycle (doc/sliding.md section 5), dimensionless: the forward slide starts at 0 with
     relative acceleration 1 - eta, runs to tau = 1 at speed 1 - eta, then decelerates at
     1 + eta: stop tau_m1 = 1 + (1 - eta)/(1 + eta) = 2/(1 + eta), u_m1 = (1 - eta)/(1 + eta).
     There a = -1 exceeds eta the other way: slip. The reverse slide accelerates at 1 - eta
@@ -230,7 +231,7 @@ def rectangle_half(eta):
 
 
 def triangle_half(eta):
-    """Symmetric triangle half cycle (sliding.md 3.5, explicit triangle results; lobe
+    """Symmetric triangle half cycle (doc/sliding.md section 3, explicit triangle results; lobe
     area 1/2): tau_y = eta/2, V_m = (1 - eta)^2/2; free stop for eta <= 2 - sqrt 2."""
     if eta <= 2 - mp.sqrt(2):
         tm = (eta**2 + 2) / (4 * eta)
@@ -320,7 +321,7 @@ def make_sliding_ref(nml_path, nml):
 
 
 # ---------------------------------------------------------------------------
-# Analysis 'rocking': the linearized rectangle in closed form, written from rocking.md
+# Analysis 'rocking': the linearized rectangle in closed form, written from doc/rocking.md
 # ---------------------------------------------------------------------------
 
 ROCKING_HEADER = ("alpha (rad),p (rad/s),e (-),f (-),eta (-),outcome (-),t_uplift (s),"
@@ -333,9 +334,9 @@ ROCKING_MAP_HEADER = "freq_ratio (-),amp_ratio (-),class (-)"
 
 
 def rocking_block(b, g):
-    """(alpha, p, e) of &block (rocking.md 2: R = sqrt(b^2 + h^2), alpha = atan(b/h),
+    """(alpha, p, e) of &block (doc/rocking.md section 1: R = sqrt(b^2 + h^2), alpha = atan(b/h),
     p = sqrt(g/(io R)), io = I_o/(m R^2) = 4/3 for the uniform rectangle; Housner's
-    e = 1 - (2/io) sin^2 alpha, rocking.md 7)."""
+    e = 1 - (2/io) sin^2 alpha, doc/rocking.md section 6)."""
     if str(b.get("model", "nonlinear")).lower() != "linearized":
         raise ValueError("rocking references: model = 'linearized' only")
     io = mpf(b["io_over_mr2"]) if "io_over_mr2" in b else mpf(4) / 3
@@ -1009,7 +1010,7 @@ def make_sdof_ref(nml_path, nml, analysis):
 # ---------------------------------------------------------------------------
 # Analysis 'walls': every row written out in mpmath from the formulas (never by
 # running the driver): Coulomb / Mononobe-Okabe (EN 1998-5 E.1, E.2, the water cases
-# of Annex E), Seed-Whitman, Wood, the EN 1998-5 rigid wall; Veletsos-Younan (walls.md
+# of Annex E), Seed-Whitman, Wood, the EN 1998-5 rigid wall; Veletsos-Younan (doc/walls.md
 # 2.32, 2.34, 2.35 with 1/n^4) summed with the static sums subtracted (lambda(3), beta(4),
 # and the static pressure through dilogarithms); the one-term solution in closed form
 # (Table 2.1 sine; 2.68-2.69 power law; 2.96 rotational spring; 2.105 wall pair).

@@ -1,9 +1,9 @@
-!> EN 1998 code checks for retaining walls (issue 7): seismic coefficients (EN 1998-5
+!> EN 1998 code checks for retaining walls: seismic coefficients (EN 1998-5
 !> §7.3.2.2), Mononobe-Okabe earth-pressure coefficients and thrusts with the three water
 !> cases (EN 1998-5 Annex E), the rigid-wall rules (EN 1998-5, Seed & Whitman 1970,
 !> Wood 1973) and the elastic and design response spectra of EN 1998-1 §3.2.2.
 !>
-!> Sources (notes/issue7_research.md). The EN texts themselves could not be read here:
+!> Sources (doc/codes.md). The EN texts themselves could not be read here:
 !> every formula and table value below agrees with at least two independent secondary
 !> transcriptions (MIDAS design-guide components, GEO5 help, the xc project, eurocodepy,
 !> TCVN 9386:2012 for EN 1998-1, UFC 3-220-20 for the Westergaard, Seed-Whitman and Wood

@@ -7,7 +7,7 @@
 !> Printed forms such as (e^x - 1 - x)/x^2 lose every digit for small |x|; here a
 !> series is used for |x| < 2 and recurrences built on expm1 elsewhere (at most a
 !> few ulps lost). For large positive x the scaled values e^(-x) phi_k(x) are
-!> available, which never overflow (sliding.md 2.5).
+!> available, which never overflow (doc/pulses.md section 1).
 module seispulse_special
     use, intrinsic :: iso_c_binding, only: c_double
     use seispulse_kinds, only: dp

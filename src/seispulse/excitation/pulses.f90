@@ -4,14 +4,14 @@
 !> Every pulse starts from rest: a = v = d = 0 for t < 0, and v, d are the exact
 !> integrals of a from t = 0. Acceleration is right-continuous at a jump.
 !>
-!> 1. The generalized exponential pulse of Jacobsen & Ayre (seed 000 Eq. 1.1b,
-!>    sliding.md 2.2: Eq. 1.1a has the sign of beta flipped), dimensionless:
+!> 1. The generalized exponential pulse of Jacobsen & Ayre (doc/pulses.md Eq. 1.1b,
+!>    doc/pulses.md Corrections: Eq. 1.1a has the sign of beta flipped), dimensionless:
 !>    tau = t/t_d, a in A_g, v in A_g t_d, d in A_g t_d^2. On the rising half of a
 !>    lobe, 0 <= s <= 1/2, with x = 2 beta s and phi_k of seispulse_special:
 !>        a = 2 s phi_1(x)/phi_1(beta),   v = 2 s^2 phi_2(x)/phi_1(beta),
 !>        d = 2 s^3 phi_3(x)/phi_1(beta),  V_g/(A_g t_d) = phi_2(beta)/phi_1(beta),
 !>    which equal the printed (1 - e^(2 beta s))/(1 - e^beta), c[s - (e^x - 1)/(2 beta)],
-!>    ... of sliding.md 2.5 but are exact at beta = 0 (triangle) and lose no digits
+!>    ... of doc/pulses.md section 1 but are exact at beta = 0 (triangle) and lose no digits
 !>    for tiny |beta|. The falling half and the negative lobe of the full cycle
 !>    follow by symmetry, so no value is a difference of nearly equal numbers.
 !>    beta = -inf is the box, beta = +inf the spike (a = 1 only at the lobe centre,
@@ -103,7 +103,8 @@ module seispulse_pulses
     !> | rectangular | acceleration | duration | |
     !> | triangular | peak acceleration | duration | peak_frac r in [0, 1] |
     !> | ricker | peak acceleration a_p at t0 | freq f_p (Hz) | t0 >= 0 (s) |
-    !> | mavroeidis_papageorgiou | velocity amplitude A (m/s) | freq f_p (Hz) | gamma > 1, nu_deg, t0 |
+    !> | mavroeidis_papageorgiou | velocity amplitude A (m/s) | freq f_p (Hz) | gamma > 1, nu_deg,
+    !> t0 |
     !>
     !> Ricker: a = a_p (1 - 2 pi^2 f_p^2 (t - t0)^2) exp(-pi^2 f_p^2 (t - t0)^2) for t >= 0
     !> (f_p is the frequency of the Fourier amplitude peak; omega_p = 2 pi f_p gives
@@ -220,7 +221,7 @@ contains
         end if
     end subroutine exp_pulse_peaks
 
-    !> Unit-impulse normalization (seed 000, footnote to Eq. 1.1): the amplitude, in
+    !> Unit-impulse normalization (doc/pulses.md section 1, unit impulse): the amplitude, in
     !> units of I/t_d, of the pulse whose lobe has area (impulse) I; equals 1/vg and
     !> is +inf for the spike, where a/vg tends to a Dirac delta at t_d/2.
     subroutine exp_pulse_impulse_amplitude(beta, amp, stat, errmsg)
@@ -242,7 +243,7 @@ contains
 
     !> Time tau = t/t_d at which the rising branch of the exponential pulse reaches `level`
     !> (a fraction of A_g, 0 < level < 1): tau = ln(1 + level expm1(beta))/(2 beta), the
-    !> onset of sliding (seed 000 Eq. 1.12) and of rocking (Eq. 2.4); exact limits
+    !> onset of sliding (doc/sliding.md Eq. 1.12) and of rocking (Eq. 2.4); exact limits
     !> level/2 (beta = 0), 0 (-inf) and 1/2 (+inf). Unchecked.
     elemental function exp_rise_time(level, beta) result(tau)
         real(dp), intent(in) :: level  !! a/A_g in (0, 1)
@@ -287,7 +288,7 @@ contains
         end if
     end function exp_consts
 
-    !> Evaluate the half or full cycle at tau (sliding.md 2.5 in the phi_k form).
+    !> Evaluate the half or full cycle at tau (doc/pulses.md section 1 in the phi_k form).
     !> One routine, not one per phase: this is the hot loop of every pulse table.
     elemental subroutine exp_eval(c, tau, full, a, v, d)
         type(exp_consts_t), intent(in) :: c

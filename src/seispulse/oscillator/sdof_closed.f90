@@ -1,4 +1,4 @@
-!> Linear oscillator under prescribed base motion, in closed form (seed 003, oscillator.md).
+!> Linear oscillator under prescribed base motion, in closed form (doc/oscillator.md).
 !>
 !> Model: natural period T (omega = 2 pi/T), viscous damping ratio zeta (0 <= zeta < 1; the
 !> book's gamma = 2 zeta), relative displacement z, ground acceleration a_g, from rest:
@@ -7,7 +7,7 @@
 !> SI throughout: a_g, a_abs in m/s^2, z in m, z' in m/s, t and T in s. A positive period
 !> must be finite and >= min_period (1e-60 s, seispulse_sdof_sim: omega^2 stays finite).
 !>
-!> Book forms (undamped unless stated; equation numbers of oscillator.md):
+!> Book forms (undamped unless stated; equation numbers of doc/oscillator.md):
 !> * `dynamic_coefficient`: Eq. 2.17 (gamma = 0, signed 1/(1 - r^2)), Eq. 2.20 with the
 !>   square root restored (hysteretic, the default) or the viscous form; beta(r = 1) = 1/gamma;
 !>   the cosine law's coefficient 2|beta| (after Eq. 2.21), the from-rest maximum only when
@@ -41,7 +41,7 @@
 !> per term, -C tau sigma s e[x, conj(x), R s, 0] for the ramp (a general third divided
 !> difference: Taylor series in the unit disk, else the quotient over the farthest pair).
 !> Per kind:
-!> * exponential (seed 000 Eq. 1.1b), each half lobe: |beta| <= 1 the expm1 ramp with the
+!> * exponential (doc/pulses.md Eq. 1.1b), each half lobe: |beta| <= 1 the expm1 ramp with the
 !>   bounded factor 1/phi_1(beta) (beta = 0 is the triangle); beta > 1 the exponential
 !>   referenced at the peak, [e^(beta (s - 1)) - e^-beta]/(1 - e^-beta); beta < -1 referenced at
 !>   the start, [1 - e^(beta s)]/(1 - e^beta); the falling half is the rising one with s -> 1 - s
@@ -410,7 +410,7 @@ contains
     !> Dynamic coefficient of the rectangular pulse, max S/(m W0) = max |omega^2 z|/W0, undamped,
     !> against x = t1/T: BETA_PULSE_TEXTBOOK the book's 1 + 2 pi x (an additive upper bound: the
     !> peaks of W0 and omega J_W do not coincide); BETA_PULSE_EXACT 2 sin(pi x) for x <= 1/2,
-    !> 2 beyond (oscillator.md 2.3).
+    !> 2 beyond (doc/oscillator.md section 4).
     subroutine beta_pulse(t1_over_period, variant, beta, stat, errmsg)
         real(dp), intent(in) :: t1_over_period                !! t1/T, >= 0
         integer, intent(in) :: variant                        !! BETA_PULSE_TEXTBOOK or _EXACT
@@ -1272,7 +1272,7 @@ contains
     end subroutine build_model
 
     !> One lobe of the exponential pulse (amplitude a, possibly negated) from t0: a rising
-    !> and a falling half of t_d/2 each (seed 000 Eq. 1.1b), in forms without overflow for
+    !> and a falling half of t_d/2 each (doc/pulses.md Eq. 1.1b), in forms without overflow for
     !> every beta and with terms bounded by a few |A| (they cancel only where a_g -> 0 at a
     !> half lobe's zero end: absolute accuracy there; see the module documentation).
     subroutine add_exp_lobe(m, t0, td, a, beta)

@@ -1,5 +1,5 @@
 !> The linear oscillator on accelerograms: exact response histories and response
-!> spectra (oscillator.md 2.4, Eqs. 2.27-2.33), the design envelope and the
+!> spectra (doc/oscillator.md section 6, Eqs. 2.27-2.33), the design envelope and the
 !> normalized spectral shape of the spectral theory (СНиП II-7-81).
 !>
 !> The oscillator (natural period T, omega = 2 pi/T, viscous damping ratio zeta; the
@@ -848,7 +848,7 @@ contains
         end do
     end subroutine pseudo_spectra
 
-    !> Design envelope of several spectra on one period grid (oscillator.md 3): the
+    !> Design envelope of several spectra on one period grid (doc/oscillator.md section 6): the
     !> largest ordinate at each period; below `plateau_below` (s) the curve is held at
     !> the largest ordinate at that or any longer period (the book's short-period
     !> plateau, "peak values kept, not a decreasing branch"; 0 = no plateau).

@@ -1,34 +1,34 @@
 !> Rocking of a slender rigid block on a rigid base under the half-cycle exponential pulse
-!> of Jacobsen & Ayre: the linearized closed forms of seed 000, chapter 2, corrected and in
-!> numerically stable form (English reading and errata: rocking.md; equation numbers below
-!> are the chapter's, sections are those of rocking.md).
+!> of Jacobsen & Ayre: the linearized closed forms of chapter 2 of Ref. [GR], corrected and in
+!> numerically stable form (theory and corrections: doc/rocking.md; equation numbers below
+!> are the chapter's, sections are those of doc/rocking.md).
 !>
-!> Dimensionless throughout (rocking.md 2-3): f = p t_d (the printed f = p/t_d is an
-!> erratum, section 12), eta = alpha/alpha_g, tau = t/t_d, psi = theta/alpha and
+!> Dimensionless throughout (doc/rocking.md section 1): f = p t_d (the printed f = p/t_d is an
+!> erratum: doc/rocking.md Corrections 1), eta = alpha/alpha_g, tau = t/t_d, psi = theta/alpha and
 !> dpsi = (dtheta/dt)/(alpha p) = psi'/f (' = d/dtau). The pulse is Eq. 2.1 = 1.1b with shape
 !> beta: -inf the rectangle, 0 the triangle, +inf the spike of zero area (no rocking).
 !> First excursion: psi'' - f^2 psi = f^2 g, g = s(tau)/eta - 1, psi = psi' = 0 at tau_up.
 !>
-!> Stable core (section 4.1 in divided-difference form). After uplift the forcing is, on
+!> Stable core (section 2 in divided-difference form). After uplift the forcing is, on
 !> each half of the pulse, a multiple of expm1 of a linear function of tau:
 !>   g = K expm1(2 beta (tau - tau_up))/(2 beta)          on [tau_up, 1/2],
 !>   g = K expm1(-2 beta (tau - 1 + tau_up))/(2 beta)     on [1/2, 1],
 !> with K = 2 beta Q/(eta (e^beta - 1)) > 0, Q = e^(2 beta tau_up) (Eq. 2.4; K -> 2/eta as
-!> beta -> 0). The Duhamel integrals of section 4.1 are then divided differences of exp at
+!> beta -> 0). The Duhamel integrals of section 2 are then divided differences of exp at
 !> the nodes 2 beta h, 0, +-f h (h the time into the phase): phase 1 gives
 !>   psi = K f^2 h^3 exp[2 beta h, 0, f h, -f h],
 !>   psi'/f = K f h^2 (exp[2 beta h, 0, f h] + exp[2 beta h, 0, -f h])/2,
 !> and phase 2 the same with shifted nodes plus the free response from tau = 1/2. These
-!> have no f^2 - 4 beta^2 denominator (f = 2|beta| is merely a double node: item 1), no
-!> 1/(1 - e^beta) (item 2), and all nodes but the decaying -2 beta h stay below
-!> |ln eta| + |ln(1 - eta)| for any beta (item 3). Divided differences are evaluated
-!> without cancellation (seispulse_divided_differences): Taylor series of the complete
-!> symmetric polynomials for clustered nodes, the recurrence on sorted nodes otherwise (a few
-!> ulps either way). After the pulse
-!> the state transition psi - 1 = A e^(f(tau-1)) + B e^(-f(tau-1)) (section 4.1, phase 3).
+!> have no f^2 - 4 beta^2 denominator (f = 2|beta| is merely a double node: doc/rocking.md section
+!> 2, item 1), no 1/(1 - e^beta) (doc/rocking.md section 2, item 2), and all nodes but the decaying
+!> -2 beta h stay below |ln eta| + |ln(1 - eta)| for any beta (doc/rocking.md section 2, item 3).
+!> Divided differences are evaluated without cancellation (seispulse_divided_differences): Taylor
+!> series of the complete symmetric polynomials for clustered nodes, the recurrence on sorted nodes
+!> otherwise (a few ulps either way). After the pulse
+!> the state transition psi - 1 = A e^(f(tau-1)) + B e^(-f(tau-1)) (section 2, phase 3).
 !> beta = 0 and -inf use the triangle (2.14, 2.15) and rectangle (2.12, 2.13) forms and
 !> their limit equations; a large negative beta is never substituted for the rectangle
-!> (item 4).
+!> (doc/rocking.md section 2, item 4).
 !>
 !> Roots in time (tau_c in O1/O2, tau_m in S1, tau_i during the pulse) lie on proven
 !> brackets inside one phase, whose end states are known; a sixth-order Newton method on
@@ -159,7 +159,7 @@ contains
     ! Names, uplift, time history
     ! ------------------------------------------------------------------------------
 
-    !> 'no_rocking', 'O1', 'O2', 'O3', 'S1' or 'S2' (rocking.md 5.4); 'unknown' otherwise.
+    !> 'no_rocking', 'O1', 'O2', 'O3', 'S1' or 'S2' (doc/rocking.md section 3); 'unknown' otherwise.
     pure function rocking_region_name(code) result(name)
         integer, intent(in) :: code  !! ROCK_*
         character(len=:), allocatable :: name
@@ -186,7 +186,7 @@ contains
     end subroutine uplift_time
 
     !> Rotation psi = theta/alpha and angular velocity dpsi = (dtheta/dt)/(alpha p) of the
-    !> first excursion (2.10-2.15 in the stable form of section 4.1): 0 before uplift (and
+    !> first excursion (2.10-2.15 in the stable form of section 2): 0 before uplift (and
     !> without rocking); the linearized motion past psi = 1 for overturning blocks (it is the
     !> model's, not the real block's, once psi >= 1); NaN after the first impact.
     subroutine rocking_response(tau, f, eta, beta, psi, dpsi, stat, errmsg)
@@ -216,7 +216,7 @@ contains
         if (.not. (tau > st%tup)) return
         call state_eval(st, tau, psi, dpsi)
         ! psi < 0 only after the impact: once psi < 0 with psi' < 0 and g < 0 (after
-        ! tau_m >= 1 - tau_up), psi'' = f^2 (psi + g) < 0 keeps it there (section 5.3)
+        ! tau_m >= 1 - tau_up), psi'' = f^2 (psi + g) < 0 keeps it there (section 3)
         if (psi < 0.0_dp .or. (tau > 1.0_dp .and. st%p_one < 0.0_dp)) then
             psi = ieee_value(psi, ieee_quiet_nan)
             dpsi = psi
@@ -224,12 +224,12 @@ contains
     end subroutine rocking_response
 
     ! ------------------------------------------------------------------------------
-    ! Boundaries of the region map (rocking.md 5.1-5.4)
+    ! Boundaries of the region map (doc/rocking.md section 3)
     ! ------------------------------------------------------------------------------
 
     !> The stability wall eta_w(f, beta) (Eq. 2.20; boundary O3/S: overturn iff eta < eta_w),
     !> in a form with the removable singularities at f = 2|beta| and beta = 0 removed
-    !> (section 5.3); limits 1 - e^-f (rectangle, Eq. 2.21), 2 - (2/f) ln(2 e^(f/2) - 1)
+    !> (section 3); limits 1 - e^-f (rectangle, Eq. 2.21), 2 - (2/f) ln(2 e^(f/2) - 1)
     !> (triangle, Eq. 2.22), 0 for the spike.
     subroutine stability_wall(f, beta, eta_w, stat, errmsg)
         real(dp), intent(in) :: f                             !! p t_d > 0
@@ -245,7 +245,7 @@ contains
     end subroutine stability_wall
 
     !> Pulse duration f_w on the stability wall for a given eta: eta_w(f_w, beta) = eta
-    !> (eta_w increases in f, section 5.3). Rectangle: f = ln[1/(1 - eta)]; otherwise a root.
+    !> (eta_w increases in f, section 3). Rectangle: f = ln[1/(1 - eta)]; otherwise a root.
     !> +inf when eta >= 1 or for the spike (no pulse duration overturns).
     subroutine stability_wall_inverse(eta, beta, f_w, stat, errmsg)
         real(dp), intent(in) :: eta                           !! alpha/alpha_g > 0
@@ -266,7 +266,7 @@ contains
         end if
     end subroutine stability_wall_inverse
 
-    !> Overturning boundaries of section 5.1-5.2: at_end, theta = alpha at the end of the
+    !> Overturning boundaries of section 3: at_end, theta = alpha at the end of the
     !> pulse (corrected Eq. 2.16a, tau_c = 1, boundary O2/O3); otherwise at mid-pulse
     !> (Eq. 2.16b, tau_c = 1/2, boundary O1/O2). Rectangle: Eq. 2.17a/b; triangle: corrected
     !> Eq. 2.18a / Eq. 2.18b; other shapes: the root in eta of psi(tau_c) = 1 (decreasing in
@@ -312,7 +312,7 @@ contains
         end if
     end subroutine overturn_boundary
 
-    !> Pulse duration f_b on an overturning boundary of section 5.1-5.2 for a given eta
+    !> Pulse duration f_b on an overturning boundary of section 3 for a given eta
     !> (psi(tau_c; f) = 1 with tau_c = 1 when at_end, else 1/2). Rectangle: inverse of
     !> Eq. 2.17a/b in closed form; otherwise a root in f. +inf when eta >= 1 or for the spike.
     subroutine overturn_boundary_inverse(eta, beta, at_end, f_b, stat, errmsg)
@@ -339,7 +339,7 @@ contains
         end if
     end subroutine overturn_boundary_inverse
 
-    !> The S1/S2 boundary: eta in (eta_w, 1) with psi'(1) = 0, i.e. tau_m = 1 (section 5.4,
+    !> The S1/S2 boundary: eta in (eta_w, 1) with psi'(1) = 0, i.e. tau_m = 1 (section 3,
     !> "(2.10b) / (2.24a) at tau = 1"). Triangle: cosh f(1 - eta/2) - 2 cosh(f/2) + 1 = 0,
     !> eta = 2 - (4/f) asinh(sqrt(2) sinh(f/4)); other shapes: a root in eta. NaN for the
     !> rectangle (no S1: tau_m > 1 always) and the spike (no rocking).
@@ -370,10 +370,10 @@ contains
     end subroutine s1_s2_boundary
 
     ! ------------------------------------------------------------------------------
-    ! Region and response quantities (rocking.md 5.4, 6, 7)
+    ! Region and response quantities (doc/rocking.md sections 3, 4, 5)
     ! ------------------------------------------------------------------------------
 
-    !> Region of the map (rocking.md 5.4 and 13): psi(1/2) >= 1 -> O1; psi(1) >= 1 -> O2;
+    !> Region of the map (doc/rocking.md section 3): psi(1/2) >= 1 -> O1; psi(1) >= 1 -> O2;
     !> A > 0 -> O3; psi'(1) <= 0 -> S1; else S2; ROCK_NONE when eta >= 1 or beta = +inf.
     subroutine rocking_classify(f, eta, beta, region, stat, errmsg)
         real(dp), intent(in) :: f                             !! p t_d > 0
@@ -392,7 +392,7 @@ contains
 
     !> Critical time tau_c (theta = alpha) in the O regions: the root of psi = 1 on
     !> [tau_up, 1/2] (O1) or [1/2, 1] (O2) (rectangle: cosh(f tau_c) = 1/(1 - eta)), and
-    !> 1 + ln(-B/A)/(2f) in O3 (section 5.4). NaN otherwise.
+    !> 1 + ln(-B/A)/(2f) in O3 (section 3). NaN otherwise.
     subroutine critical_time(f, eta, beta, tau_c, stat, errmsg)
         real(dp), intent(in) :: f                             !! p t_d > 0
         real(dp), intent(in) :: eta                           !! alpha/alpha_g > 0
@@ -408,7 +408,7 @@ contains
         call get_tau_c(st, region_of(st), tau_c, stat, errmsg)
     end subroutine critical_time
 
-    !> Time of the maximum rotation tau_m (section 6): S1, the root of Eq. 2.24a on
+    !> Time of the maximum rotation tau_m (section 4): S1, the root of Eq. 2.24a on
     !> [1 - tau_up, 1]; S2, 1 + ln(B/A)/(2f) (= Eq. 2.24b); rectangle Eq. 2.25; triangle
     !> Eq. 2.26a where valid (<= 1, positive denominator), else Eq. 2.26b. NaN for the O
     !> regions and without rocking.
@@ -428,7 +428,7 @@ contains
         call get_tau_m(st, region_of(st), tau_m, psi_m, stat, errmsg)
     end subroutine time_of_max
 
-    !> Maximum rotation theta_max/alpha (section 6): 0 without rocking, +inf in the O regions
+    !> Maximum rotation theta_max/alpha (section 4): 0 without rocking, +inf in the O regions
     !> (overturning), 1 - 2 sqrt(AB) in S2 (rectangle: Eq. 2.29), psi(tau_m) in S1.
     subroutine max_rotation(f, eta, beta, psi_max, stat, errmsg)
         real(dp), intent(in) :: f                             !! p t_d > 0
@@ -467,7 +467,7 @@ contains
         psi_max = psi_max_of(st, region, tau_m, psi_m)
     end subroutine rocking_extremes
 
-    !> Time of the first impact tau_i (section 7): during the pulse (psi(1) <= 0) the root
+    !> Time of the first impact tau_i (section 5): during the pulse (psi(1) <= 0) the root
     !> of Eq. 2.32a on [tau_m, 1] (triangle: Eq. 2.34a); after it the larger root of the
     !> corrected Eq. 2.32b-e, 1 + ln(z)/f with z = (1 + sqrt(1 - 4AB))/(-2A); rectangle
     !> Eq. 2.33; triangle corrected Eq. 2.34b. NaN unless the region is S1 or S2.
@@ -541,7 +541,7 @@ contains
     end subroutine rocking_summary
 
     ! ------------------------------------------------------------------------------
-    ! Normalized rectangle forms (section 6, 7)
+    ! Normalized rectangle forms (sections 4, 5)
     ! ------------------------------------------------------------------------------
 
     !> eta tau_m for the rectangle in the normalized variables fbar = f/ln[1/(1 - eta)]
@@ -616,7 +616,7 @@ contains
     end function rect_tau_i
 
     ! ------------------------------------------------------------------------------
-    ! The state of the first excursion (section 4.1)
+    ! The state of the first excursion (section 2)
     ! ------------------------------------------------------------------------------
 
     !> tau_up (Eq. 2.4), d0 = 2 beta (1/2 - tau_up) = beta - ln Q and
@@ -766,7 +766,7 @@ contains
         end if
     end subroutine state_eval
 
-    !> Phase 1 (tau_up <= tau <= 1/2, h = tau - tau_up), section 4.1 in divided differences:
+    !> Phase 1 (tau_up <= tau <= 1/2, h = tau - tau_up), section 2 in divided differences:
     !> psi = K f^2 h^3 exp[x, 0, y, -y], psi'/f = K f h^2 (exp[x, 0, y] + exp[x, 0, -y])/2
     !> with x = 2 beta h (ex = e^x) and y = f h.
     pure subroutine phase1(st, h, x, ex, y, psi, q)
@@ -833,7 +833,7 @@ contains
         end if
     end function state_forcing
 
-    !> The region from the state (rocking.md 5.4, 13).
+    !> The region from the state (doc/rocking.md section 3).
     pure function region_of(st) result(region)
         type(rock_state), intent(in) :: st
         integer :: region
@@ -852,7 +852,7 @@ contains
         end if
     end function region_of
 
-    !> tau_c for the O regions (section 5.4, table 8 R9), NaN otherwise.
+    !> tau_c for the O regions (section 3), NaN otherwise.
     subroutine get_tau_c(st, region, tau_c, stat, errmsg)
         type(rock_state), intent(in) :: st
         integer, intent(in) :: region
@@ -869,7 +869,7 @@ contains
                 tau_c = 2.0_dp * asinh(sqrt(st%eta / (2.0_dp * (1.0_dp - st%eta)))) / st%f
             else
                 ! psi increases through 1 (psi' > 0 until 1 - tau_up, and beyond once psi
-                ! >= 1, section 5): one root in the phase
+                ! >= 1, section 3): one root in the phase
                 if (region == ROCK_O1) then
                     call phase_root(st, 1, 1, 1.0_dp, st%tup, [0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], &
                                     0.5_dp, [st%p_half, st%q_half, st%d0, st%ed0], tau_c, psi, &
@@ -886,7 +886,7 @@ contains
         end select
     end subroutine get_tau_c
 
-    !> tau_m for the S regions (section 6), NaN otherwise.
+    !> tau_m for the S regions (section 4), NaN otherwise.
     subroutine get_tau_m(st, region, tau_m, psi_m, stat, errmsg)
         type(rock_state), intent(in) :: st
         integer, intent(in) :: region
@@ -920,7 +920,7 @@ contains
         case default
             if (region == ROCK_S1) then
                 ! Eq. 2.24a on [1 - tau_up, 1]: psi' > 0 at the left end (Eq. 2.23), <= 0 at 1
-                ! (S1); searching from tau_up would meet round-off roots (section 6)
+                ! (S1); searching from tau_up would meet round-off roots (section 4)
                 lo = 1.0_dp - st%tup
                 call eval_node(st, 2, lo, psi, q, e, ee)
                 if (q > 0.0_dp) then
@@ -937,7 +937,7 @@ contains
         end select
     end subroutine get_tau_m
 
-    !> theta_max/alpha (section 6) given tau_m and psi(tau_m) if known (S1 only; NaN: not).
+    !> theta_max/alpha (section 4) given tau_m and psi(tau_m) if known (S1 only; NaN: not).
     pure function psi_max_of(st, region, tau_m, psi_m) result(psi_max)
         type(rock_state), intent(in) :: st
         integer, intent(in) :: region
@@ -966,7 +966,7 @@ contains
         end select
     end function psi_max_of
 
-    !> tau_i for the S regions (section 7), NaN otherwise; tau_m needed when psi(1) <= 0.
+    !> tau_i for the S regions (section 5), NaN otherwise; tau_m needed when psi(1) <= 0.
     subroutine get_tau_i(st, region, tau_m, psi_m, tau_i, stat, errmsg)
         type(rock_state), intent(in) :: st
         integer, intent(in) :: region

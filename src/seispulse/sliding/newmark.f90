@@ -1,8 +1,8 @@
 !> Newmark rigid-block sliding on accelerograms: one-way (downslope) sliding as
 !> SLAMMER does it, two-way sliding, and asymmetric yields with the along-plane
-!> factors of a real incline (sliding.md 7.1, Eq. 1.31).
+!> factors of a real incline (doc/sliding.md section 7, Eq. 1.31).
 !>
-!> The block slides relative to the ground with (sliding.md Eq. 1.3)
+!> The block slides relative to the ground with (doc/sliding.md Eq. 1.3)
 !>     u'' = K_dir g (a_g(t) - s ky_dir)        while sliding in direction s = sgn(u'),
 !> and sticks while -ky_up <= a_g <= ky. Positive a_g drives positive (downslope)
 !> sliding; K_dir = 1 except on an incline (newmark_incline).
@@ -116,7 +116,7 @@ contains
 
     !> The block on an incline of slope lambda with friction mu, shaken at angle xi to
     !> the horizontal (the record is that component, positive downhill): yields and
-    !> along-plane factors of sliding.md Eq. 1.31 and section 7.1 (an asymmetric block).
+    !> along-plane factors of doc/sliding.md Eq. 1.31 and section 7 (an asymmetric block).
     !> Without along_plane the factors are 1 (the slip of the yield problem, as SLAMMER).
     subroutine newmark_incline(mu, slope_deg, xi_deg, along_plane, blk, stat, errmsg)
         real(dp), intent(in) :: mu                            !! friction coefficient > 0
@@ -360,7 +360,7 @@ contains
                     call stop_slide(t0 + x)
                 end if
                 ! ---- at rest from x: an onset now (the reverse at once after a stop is
-                ! the "slip" of sliding.md 5.1), or where a_g crosses a yield (a_g is
+                ! the "slip" of doc/sliding.md section 5), or where a_g crosses a yield (a_g is
                 ! linear: one crossing). The direction that just stopped had
                 ! s a_g <= ky there: it may start again only by a crossing.
                 if (stopped_dir /= 1 .and. exceeds(as, ay_dn)) then

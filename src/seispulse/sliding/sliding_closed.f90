@@ -1,21 +1,22 @@
 !> Rigid block sliding on a frictional plane under the exponential pulse of
-!> Jacobsen & Ayre: the closed forms of seed 000, chapter 1, corrected and in stable
-!> form (English reading and errata: sliding.md; equation numbers below are the
-!> chapter's, sections are those of sliding.md).
+!> Jacobsen & Ayre: the closed forms of chapter 1 of Ref. [GR], corrected and in stable
+!> form (theory and corrections: doc/sliding.md; equation numbers below are the
+!> chapter's, sections are those of doc/sliding.md).
 !>
 !> Dimensionless throughout: tau = t/t_d, eta = a_y/A_g (a_y = mu g on a horizontal
 !> plane), velocities in A_g t_d, displacements in A_g t_d^2; the pulse is Eq. 1.1b
-!> (half cycle) or 1.2a (full cycle), the convention of everything but Eq. 1.1a (erratum 1).
+!> (half cycle) or 1.2a (full cycle), the convention of everything but Eq. 1.1a (doc/pulses.md
+!> Corrections 1).
 !>
 !> Every slide is computed the same way: the onset from the explicit inverse of the
 !> rising branch (1.12, 1.34); the stop either in free sliding after the lobe (1.7,
 !> which is 1.23 for a late start) or as the root of the relative velocity inside the
-!> lobe (1.8, corrected 1.19, and the forced reverse stop of section 7.4) on a proven
+!> lobe (1.8, corrected 1.19, and the forced reverse stop of section 7) on a proven
 !> bracket; the displacement by Eq. 1.5 with the ground velocity and displacement of
 !> seispulse_pulses, never through the printed expansions 1.9/1.14/1.18/1.24, which
-!> cancel catastrophically for beta < 0 and small eta (section 3.5) and, for 1.24, are
-!> wrong (erratum 8). Eq. 1.5 itself carries an absolute error of a few ulps of the
-!> ground displacement over the slide: as eta -> 1 the slip (~ (1 - eta)^3) keeps that
+!> cancel catastrophically for beta < 0 and small eta (section 3) and, for 1.24, are
+!> wrong (doc/sliding.md Corrections 5). Eq. 1.5 itself carries an absolute error of a few ulps of
+!> the ground displacement over the slide: as eta -> 1 the slip (~ (1 - eta)^3) keeps that
 !> absolute, not a relative, accuracy (a Taylor-remainder form would be needed there).
 module seispulse_sliding_closed
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
@@ -52,7 +53,7 @@ module seispulse_sliding_closed
     integer, parameter :: SLIDING_MODE_STICK = 2         !! the block sticks, then slides back (1.21a)
     integer, parameter :: SLIDING_MODE_SLIP = 3          !! it slides back at once (1.21b)
     integer, parameter :: SLIDING_MODE_STUCK = 4         !! eta2 < 1, but the forward slide outlasts
-                                                 !! the reverse window (section 7.3)
+                                                 !! the reverse window (section 7)
     integer, parameter :: SLIDING_MODE_REVERSE_ONLY = 5  !! eta1 >= 1 > eta2: the second lobe only
 
     character(len=*), parameter :: regime_names(0:2) = [character(len=6) :: &
@@ -84,7 +85,7 @@ module seispulse_sliding_closed
         real(dp) :: vm2 = 0.0_dp           !! peak reverse sliding velocity / V_g
     end type full_cycle_t
 
-    !> A block on an incline hit by a pulse, in SI (section 7.1): along-plane slips.
+    !> A block on an incline hit by a pulse, in SI (section 7): along-plane slips.
     type :: sliding_block_t
         integer :: mode = SLIDING_MODE_NO_SLIDING  !! MODE_* (a half cycle: no_sliding or unilateral)
         real(dp) :: eta1 = 0.0_dp          !! resistance to downhill sliding / A_g
@@ -113,7 +114,7 @@ module seispulse_sliding_closed
         procedure :: eval_slope => slide_velocity_slope
     end type slide_velocity
 
-    !> tau_m1(eta) - 1 - tau_y(eta): zero on the stick/slip boundary (section 5.1).
+    !> tau_m1(eta) - 1 - tau_y(eta): zero on the stick/slip boundary (section 5).
     type, extends(scalar_function) :: stick_slip_margin
         type(exp_consts_t) :: c
         integer :: stat = SEISPULSE_SUCCESS
@@ -149,7 +150,7 @@ contains
     ! ------------------------------------------------------------------------------
 
     !> A slide in the positive sense from rest at tau0 under the lobe a(tau) of the pulse
-    !> (the second lobe of a full cycle, mirrored, for a reverse slide; section 5.3), with
+    !> (the second lobe of a full cycle, mirrored, for a reverse slide; section 5), with
     !> kinetic resistance eta. The lobe must exceed eta at tau0 (the onset, or the instant of
     !> an immediate reversal). `full`: the ground carries on with the mirrored lobe (first
     !> slide of a full cycle, corrected Eq. 1.19), otherwise with the constant velocity V_g.
@@ -163,7 +164,7 @@ contains
         type(slide_velocity) :: w
         real(dp) :: a0, v0, d0, tau_k, a, v, d, w_k, w_hi, hi, h
         ! relative acceleration a - eta stays positive up to tau_k, where the falling
-        ! branch comes down to eta (tau_k = 1 - tau_y(eta), section 3.4)
+        ! branch comes down to eta (tau_k = 1 - tau_y(eta), section 3)
         tau_k = 1.0_dp - exp_rise_time(eta, c%beta)
         call exp_eval(c, tau0, full, a0, v0, d0)
         stat = SEISPULSE_SUCCESS
@@ -190,11 +191,11 @@ contains
             regime = SLIDING_REGIME_FREE
             tau_m = tau0 + h
         else
-            ! forced stop, Eq. 1.8 / corrected 1.19 / section 7.4: w > 0 at tau_k and falls
+            ! forced stop, Eq. 1.8 / corrected 1.19 / section 7: w > 0 at tau_k and falls
             ! monotonically to w < 0 at the upper end, so the root is unique (safeguarded
             ! Newton: the slope a_g - eta comes with the value)
             if (full) then
-                ! v_g(2 - tau_y) = v_g(tau_y) <= v_g(tau0): w(2 - tau_y) < 0 (section 4.2)
+                ! v_g(2 - tau_y) = v_g(tau_y) <= v_g(tau0): w(2 - tau_y) < 0 (section 4)
                 hi = 2.0_dp - exp_rise_time(eta, c%beta)
             else
                 hi = 1.0_dp
@@ -239,7 +240,7 @@ contains
 
     !> V_m/V_g of the spike limit (beta = +inf) with onset resistance eta_on and kinetic
     !> eta: [(1 - eta_on) + (1 - eta) + eta ln(eta_on eta)]/2; 1 - eta(1 - ln eta) for
-    !> eta_on = eta (section 3.6).
+    !> eta_on = eta (section 3).
     elemental function spike_vm(eta_on, eta) result(vm)
         real(dp), intent(in) :: eta_on, eta
         real(dp) :: vm
@@ -279,8 +280,8 @@ contains
     ! ------------------------------------------------------------------------------
 
     !> Response to a full-cycle pulse: forward slide, then stick or slip and a reverse slide
-    !> (Tables 1.1 and 1.4 with the corrected criterion of section 7.3 and the forced reverse
-    !> stop of section 7.4). eta1 resists forward (downhill) sliding, eta2 reverse sliding.
+    !> (Tables 1.1 and 1.4 with the corrected criterion of section 7 and the forced reverse
+    !> stop of section 7). eta1 resists forward (downhill) sliding, eta2 reverse sliding.
     !> Static friction (section 8) acts at the first onset, and at the reverse onset too
     !> when static_reverse.
     subroutine full_cycle(eta1, eta2, beta, static_factor, static_reverse, res, stat, errmsg)
@@ -308,7 +309,7 @@ contains
         c = exp_consts(beta)
 
         if (.not. (static_factor * eta1 < 1.0_dp)) then
-            ! no forward slide: the second lobe acts alone, as a half cycle (section 7.2)
+            ! no forward slide: the second lobe acts alone, as a half cycle (section 7)
             if (.not. (static_factor * eta2 < 1.0_dp)) return
             res%mode = SLIDING_MODE_REVERSE_ONLY
             tbar0 = exp_rise_time(static_factor * eta2, beta)
@@ -328,7 +329,7 @@ contains
         if (static_reverse) on2 = static_factor * eta2
         if (.not. (on2 < 1.0_dp)) return
 
-        ! the second lobe exceeds on2 on (1 + tau_y(on2), 2 - tau_y(on2)) (section 7.3)
+        ! the second lobe exceeds on2 on (1 + tau_y(on2), 2 - tau_y(on2)) (section 7)
         tbar0 = exp_rise_time(on2, beta)
         if (res%tau_m1 <= 1.0_dp + tbar0) then
             res%mode = SLIDING_MODE_STICK
@@ -486,7 +487,7 @@ contains
     ! ------------------------------------------------------------------------------
 
     !> The critical strength eta_cr(beta) of the symmetric full cycle: the block slips
-    !> (reverses at once) for eta < eta_cr and sticks above (section 5.1), the root of
+    !> (reverses at once) for eta < eta_cr and sticks above (section 5), the root of
     !> tau_m1(eta) = 1 + tau_y(eta) in (0, 1). 1 for the rectangle, 0 for the spike.
     subroutine eta_critical(beta, eta_cr, stat, errmsg)
         real(dp), intent(in) :: beta                          !! pulse shape, not NaN
@@ -568,7 +569,7 @@ contains
         vm = 1.0_dp - eta
     end subroutine rectangle_half
 
-    !> Rectangular full cycle (section 5.5): the block always slips; tau_m1 = 2/(1 + eta),
+    !> Rectangular full cycle (section 5): the block always slips; tau_m1 = 2/(1 + eta),
     !> u_m1 = (1 - eta)/(1 + eta), tau_m2 = 4/(1 + eta), u_m2 = 2 eta (1 - eta)/(1 + eta)^2,
     !> u_res = ((1 - eta)/(1 + eta))^2.
     elemental subroutine rectangle_full(eta, tau_m1, um1, tau_m2, um2, ures)
@@ -584,9 +585,10 @@ contains
     end subroutine rectangle_full
 
     !> Triangular half cycle (beta = 0, Eq. 1.10b with the sign of its last term corrected,
-    !> erratum 5; section 3.5): tau_y = eta/2, V_m/V_g = (1 - eta)^2, and
-    !> free (eta <= 2 - sqrt 2): tau_m = (eta^2 + 2)/(4 eta), u_m = (12 - 24 eta + 12 eta^2 - eta^4)/(96 eta);
-    !> forced: tau_m = 1 - eta/2 + (1 - eta)/sqrt 2, u_m = (3 + 2 sqrt 2)(1 - eta)^3/12.
+    !> doc/sliding.md Corrections 3; section 3): tau_y = eta/2, V_m/V_g = (1 - eta)^2, and
+    !> free (eta <= 2 - sqrt 2): tau_m = (eta^2 + 2)/(4 eta), u_m = (12 - 24 eta + 12 eta^2 -
+    !> eta^4)/(96 eta); forced: tau_m = 1 - eta/2 + (1 - eta)/sqrt 2, u_m = (3 + 2 sqrt 2)(1 -
+    !> eta)^3/12.
     elemental subroutine triangle_half(eta, tau_y, tau_m, um, vm, regime)
         real(dp), intent(in) :: eta                 !! 0 < eta < 1
         real(dp), intent(out) :: tau_y, tau_m, um, vm
@@ -606,7 +608,7 @@ contains
     end subroutine triangle_half
 
     !> V_m/V_g under the spike (beta -> +inf): 1 - eta (1 - ln eta), the lower bound over all
-    !> shapes (section 3.6); the slip itself vanishes with the pulse area.
+    !> shapes (section 3); the slip itself vanishes with the pulse area.
     elemental function spike_velocity_ratio(eta) result(vm)
         real(dp), intent(in) :: eta  !! 0 < eta <= 1
         real(dp) :: vm
@@ -620,7 +622,7 @@ contains
     !> Direction-dependent resistances of a block of friction mu on a plane of slope lambda,
     !> for a pulse of amplitude A_g at angle xi to the horizontal (Eq. 1.31):
     !> eta1,2 = (mu g/A_g) (cos lambda -+ sin lambda/mu)/K1,2 with the along-plane factors
-    !> K1,2 = cos(lambda - xi) +- mu sin(lambda - xi) (section 7.1): the along-plane slip is
+    !> K1,2 = cos(lambda - xi) +- mu sin(lambda - xi) (section 7): the along-plane slip is
     !> K times the slip of the dimensionless problem. eta = +inf when K <= 0 (the pulse
     !> cannot drive the block that way).
     subroutine inclined_resistances(mu, ag_over_g, slope_deg, xi_deg, eta1, eta2, k1, k2, &
@@ -679,7 +681,7 @@ contains
     !> A block of friction mu on a plane of slope lambda under an exponential pulse of
     !> amplitude A_g (in g) and half-duration t_d (s) acting at angle xi to the horizontal,
     !> positive downhill: times in s, slips in m along the plane (with the factors K of
-    !> section 7.1 when along_plane; without them, as in the chapter's example 1.9.2).
+    !> section 7 when along_plane; without them, as in the chapter's example 1.9.2).
     subroutine block_response(mu, ag_over_g, td, beta, full, slope_deg, xi_deg, &
                               static_factor, static_reverse, along_plane, g, res, stat, errmsg)
         real(dp), intent(in) :: mu                            !! friction coefficient > 0

@@ -1,5 +1,5 @@
 !> Characteristic lengths for normalizing sliding displacements by dimensional analysis
-!> (seed 000 section 1.5; sliding.md section 6): D_c = A_g^a V_g^b D_g^c t^d with
+!> (section 1 of Ref. [GR]; doc/sliding.md section 6): D_c = A_g^a V_g^b D_g^c t^d with
 !> a + b + c = 1 (length, Eq. 1.26a) and 2a + b - d = 0 (time, Eq. 1.26b).
 module seispulse_sliding_norm
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -101,7 +101,7 @@ contains
             b = col
             a = 1.0_dp - b - c
             d = 2.0_dp * a + b
-        case ('e')   ! eliminate a, c (1.27e, with V_g^2 in its first group: erratum 9)
+        case ('e')   ! eliminate a, c (1.27e, with V_g^2 in its first group: doc/sliding.md Corrections 6)
             d = row
             b = col
             a = 0.5_dp * (d - b)

@@ -1,19 +1,19 @@
 !> Event-driven stick-slip integrator for a rigid block on a frictional plane
 !> (Newmark sliding block): the reference that checks the closed forms of
-!> sliding.md, and the tool for real accelerograms.
+!> doc/sliding.md, and the tool for real accelerograms.
 !>
 !> Relative (sliding) displacement u of the block with respect to the plane
-!> (sliding.md 1.2, Eq. 1.3, with the stick-slip law written out there):
+!> (doc/sliding.md section 1, Eq. 1.3, with the stick-slip law written out there):
 !>     u'' = a_g(t) - ay_dir sgn(u')          while sliding,
 !>     u'  = 0                                while at rest and -thr_rev <= a_g <= thr_fwd.
 !> Onset from rest: forward when a_g > thr_fwd, reverse when a_g < -thr_rev, where
 !> thr_dir = static_factor ay_dir for the first onset of the run (and for every
-!> onset if `static_all`), else ay_dir (sliding.md 8.1). While sliding the kinetic
+!> onset if `static_all`), else ay_dir (doc/sliding.md section 8). While sliding the kinetic
 !> ay_dir applies. When a slide stops at t_s and a_g(t_s) already exceeds the
-!> threshold the other way, the block reverses at once ("slip", sliding.md 5.1);
+!> threshold the other way, the block reverses at once ("slip", doc/sliding.md section 5);
 !> otherwise it sticks until the next onset.
 !>
-!> Method: exact events, no time step (sliding.md 13.7). The time axis is cut into
+!> Method: exact events, no time step (doc/sliding.md section 9). The time axis is cut into
 !> pieces on which a_g is continuous and monotone (seispulse_pieces, shared with the
 !> rocking integrator of seispulse_rocking_sim). On such a piece a_g - thr has at
 !> most one root (the onset), u'' = a_g - s ay changes sign at most once (the piece
@@ -23,7 +23,7 @@
 !> reference state (t_r, u_r, w_r) set at the piece start and at each event:
 !>     w(t) = w_r + [v_g(t) - v_g(t_r)] - s ay (t - t_r)
 !>     u(t) = u_r + w_r (t - t_r) + [d_g(t) - d_g(t_r) - v_g(t_r)(t - t_r)] - s ay (t - t_r)^2/2
-!> (sliding.md 3.1, Eqs. 1.4-1.5), with the closed-form v_g, d_g of a pulse, or the
+!> (doc/sliding.md section 2, Eqs. 1.4-1.5), with the closed-form v_g, d_g of a pulse, or the
 !> local polynomial of a record step (never the cumulative ground velocity).
 !> The peak sliding velocity is where a_g = s ay (the split points) or at a piece end.
 !> After the excitation (a_g = 0) a sliding block stops at t + |w|/ay exactly.
@@ -269,7 +269,7 @@ contains
         ng = 0
         if (present(t_grid)) ng = size(t_grid)
         ig = 1
-        ! thresholds of the first onset (sliding.md 8.1); kinetic values after it
+        ! thresholds of the first onset (doc/sliding.md section 8); kinetic values after it
         thr_f = scaled_threshold(fr%ay_fwd, fr%static_factor)
         thr_r = scaled_threshold(fr%ay_rev, fr%static_factor)
         first_done = .false.

@@ -1,9 +1,9 @@
-!> Shared pieces of the elastodynamic retaining-wall solutions (walls.md, seed 004):
+!> Shared pieces of the elastodynamic retaining-wall solutions (doc/walls.md):
 !> the compressibility factors psi(nu), the free-field frequencies of the layer, the
 !> argument checks every wall routine makes, and the square root on the branch the
 !> physics wants.
 !>
-!> Model (walls.md §1): a viscoelastic layer of height H on rigid rock, shear modulus
+!> Model (doc/walls.md section 1): a viscoelastic layer of height H on rigid rock, shear modulus
 !> G* = G(1 + i delta) with delta the loss factor (about twice the hysteretic damping
 !> ratio), Poisson's ratio nu, harmonic rock acceleration Xg exp(i omega t). The wall
 !> solutions give the dynamic increment only, never the geostatic thrust.
@@ -20,7 +20,7 @@ module seispulse_walls_common
     public :: wall_psi_t, wall_psi, free_field_frequencies, check_nu, check_delta, &
               check_omega_ratio, sqrt_branch, resonance_error, inv_one_plus_i
 
-    !> Compressibility factors of walls.md §1 (dimensionless).
+    !> Compressibility factors of doc/walls.md section 1 (dimensionless).
     type :: wall_psi_t
         real(dp) :: e = 0.0_dp      !! psi_e = sqrt((2 - nu)/(1 - nu)): decay along x (2.10)
         real(dp) :: o = 0.0_dp      !! psi_o = sqrt(2/(1 - nu)): sigma_x = psi_o^2 G* du/dx
@@ -126,7 +126,7 @@ contains
 
     !> sqrt(z) on the branch of the delta -> 0+ limit: Re >= 0, and for a negative real
     !> z (delta = 0 above a resonance) +i sqrt(-z), whatever the sign of a zero imaginary
-    !> part (walls.md §10.3: sqrt(-x - 0i) = -i sqrt(x) would flip the radiation sign).
+    !> part (doc/walls.md section 2: sqrt(-x - 0i) = -i sqrt(x) would flip the radiation sign).
     elemental function sqrt_branch(z) result(w)
         complex(dp), intent(in) :: z  !! argument whose imaginary part is mathematically >= 0
         complex(dp) :: w

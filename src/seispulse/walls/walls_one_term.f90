@@ -1,7 +1,7 @@
 !> One-term (Vlasov-Leontiev / Kloukinas) solution for the dynamic earth pressure on a rigid
-!> wall retaining a viscoelastic layer (walls.md §4-§7, seed 004 §2.2-§3), and its
-!> extensions: a rotational base spring, a pair of walls, equivalent Winkler springs, and the
-!> exact fundamental frequency of the power-law layer (walls.md §4.2, not in the source).
+!> wall retaining a viscoelastic layer (doc/walls.md sections 3-6; sections 1-2 of Ref. [TEI]), and
+!> its extensions: a rotational base spring, a pair of walls, equivalent Winkler springs, and the
+!> exact fundamental frequency of the power-law layer (doc/walls.md section 3, not in the source).
 !>
 !> Model: u(x, y) = X(x) Phi(y), y up from the rock (0 <= y <= H), x from the wall into the
 !> backfill. G(y) = G_H g(y) with g = 1 (homogeneous) or g = ((H - y)/H)^n (power law,
@@ -29,7 +29,7 @@
 !> The results are the dynamic increment only (no geostatic thrust), harmonic transfer
 !> functions of the rock acceleration Xg exp(i omega t).
 !>
-!> Errata of the source implemented in corrected form (walls.md): (2.39) sign of the k*^2
+!> Errata of the source implemented in corrected form (doc/walls.md): (2.39) sign of the k*^2
 !> term; (2.60)/(2.73) G* and the 1/G_H normalisation (Lf S0 real); the 2.51 claim "0.979 at
 !> nu = 0.3" (0.9461; 0.9791 is nu = 1/3); (2.95) spurious G(1 + i delta); (2.102b) sign of B
 !> (X(L) = 0 only with the corrected sign); (2.104) prefactor; Table 2.2's Phi column.
@@ -228,7 +228,8 @@ contains
 
     ! ------------------------------------------------------------------ the one-term solution
 
-    !> Rigid wall, rotational base spring or pair of walls at one frequency (walls.md §4-§6).
+    !> Rigid wall, rotational base spring or pair of walls at one frequency (doc/walls.md sections
+    !> 3-5).
     !>
     !> Rigid wall (2.48/2.71): q = psi_sigma Lf s0/s, h/H = s1/s0, u_ff0 = -Lf/((1 + i delta) s^2).
     !> Rotational spring (2.96 [RECON], 2.99b): q = q_rigid F, F = 1/(1 + psi_sigma s s0 (h/H)
@@ -729,7 +730,7 @@ contains
     end function power_law_cutoff
 
     !> Exact fundamental frequency of the power-law layer G = G_H ((H - y)/H)^n on rock
-    !> (walls.md §4.2, not in the source): omega_1 H/V_SH = ((2 - n)/2) j_(q,1) with
+    !> (doc/walls.md section 3, not in the source): omega_1 H/V_SH = ((2 - n)/2) j_(q,1) with
     !> q = -(1 - n)/(2 - n) and j_(q,1) the first positive zero of J_q.
     !>
     !> Method: j_(q,1) is the zero of T(x) = x J_q(x)/J_(q+1)(x) = 2(q + 1) - x^2/T_(q+1)(x),

@@ -1,5 +1,5 @@
 !> Veletsos-Younan (1994a) series for a rigid, fixed-base wall retaining a homogeneous
-!> viscoelastic layer (walls.md §3, the [RECON] forms of Eqs. 2.25 and 2.29-2.36).
+!> viscoelastic layer (doc/walls.md section 2, the [RECON] forms of Eqs. 2.25 and 2.29-2.36).
 !>
 !> Dimensionless inputs: omega_ratio = omega/omega_1 with omega_1 = pi Vs/(2H), the loss
 !> factor delta (G* = G(1 + i delta)), Poisson's ratio nu. phi_n = omega_ratio/n, n odd.
@@ -12,14 +12,14 @@
 !> - q = -Q_b of (2.34), the thrust on the wall, positive when it pushes the wall (rho Xg H^2);
 !>   static q = 14 zeta(3)/pi^3 psi_sigma = 0.542755 psi_sigma.
 !> - m = -M_b of (2.35) with the corrected 1/n^4, moment about the base (rho Xg H^3).
-!> - h_ratio = |m|/|q| (h/H, real; walls.md (2.36) leaves |h/H| or Re(h/H) open): static
+!> - h_ratio = |m|/|q| (h/H, real; doc/walls.md (2.36) leaves |h/H| or Re(h/H) open): static
 !>   0.59858 (the printed 1/n^3 would give 0.58647).
 !> - p(y) = -sigma_x(0, y), wall pressure, compression positive (rho Xg H).
 !> - fields keep the source's signs (2.30)-(2.33): u, v in rho Xg H^2/G, sigma_x, tau in
 !>   rho Xg H; u < 0 for a positive Xg (the soil lags toward the wall).
 !> - coordinates x/H >= 0 from the wall into the backfill, y/H in [0, 1] up from the base.
 !>
-!> Errata of the printed source used here (walls.md §3): (2.25) psi_e (not psi_c) outside
+!> Errata of the printed source used here (doc/walls.md section 2): (2.25) psi_e (not psi_c) outside
 !> the bracket; (2.29) H^2 restored; (2.30) one factor (1 + i delta) only; (2.31) and (2.32)
 !> as re-derived; (2.35)/(2.36) 1/n^4.
 !>
@@ -252,7 +252,7 @@ contains
     end subroutine vy_pressure
 
     !> Displacements and stresses in the backfill, (2.30)-(2.33) as reconstructed in
-    !> walls.md, at the points (x(i), y(i)). At x = 0: u = 0, tau = -nu/(2 - nu) y and
+    !> doc/walls.md, at the points (x(i), y(i)). At x = 0: u = 0, tau = -nu/(2 - nu) y and
     !> sigma_x = -p(y) exactly as in vy_pressure.
     subroutine vy_fields(omega_ratio, delta, nu, x, y, tol, u, v, sigma_x, tau, stat, errmsg)
         real(dp), intent(in) :: omega_ratio       !! omega/omega_1, in [0, 1e4]
