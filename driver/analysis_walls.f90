@@ -15,9 +15,9 @@ module driver_walls
                          ec8_ground_parameters, ec8_r_factor, ec8_seismic_coefficients, &
                          ec8_vertical_ratio, WATER_DRY, WATER_IMPERVIOUS, WATER_PERMEABLE, &
                          EC8_WALL_GRAVITY_300, EC8_WALL_GRAVITY_200, EC8_WALL_RESTRAINED, pi, &
-                         SHAPE_LINEAR, SHAPE_SINE, SHAPE_PARABOLIC, SHAPE_POWER, wall_case_t, &
-                         wall_case_default, wall_comparison, wall_pressure_profile, &
-                         wall_row_label, WALL_ROWS, WALL_PROFILE_COLUMNS
+                         WALL_SHAPE_LINEAR, WALL_SHAPE_SINE, WALL_SHAPE_PARABOLIC, &
+                         WALL_SHAPE_POWER, wall_case_t, wall_case_default, wall_comparison, &
+                         wall_pressure_profile, wall_row_label, WALL_ROWS, WALL_PROFILE_COLUMNS
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, given, name_index
     use driver_tables, only: write_tables, delete_files
@@ -313,13 +313,13 @@ contains
             ishape = name_index(shape, shape_names)
             select case (ishape)
             case (1)
-                c%shape = SHAPE_LINEAR
+                c%shape = WALL_SHAPE_LINEAR
             case (2)
-                c%shape = SHAPE_SINE
+                c%shape = WALL_SHAPE_SINE
             case (3)
-                c%shape = SHAPE_PARABOLIC
+                c%shape = WALL_SHAPE_PARABOLIC
             case (4)
-                c%shape = SHAPE_POWER
+                c%shape = WALL_SHAPE_POWER
             case default
                 errmsg = located(path, gb)//'shape = '''//trim(shape)//''': unknown shape ' &
                          //'(allowed: '//join(shape_names)//')'

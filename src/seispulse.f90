@@ -9,78 +9,77 @@ module seispulse
     use seispulse_checks, only: outside, finite_positive, finite_at_least, positive, in_open, &
                                 in_closed
     use seispulse_format, only: real_str, int_str
-    use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, &
-                                 sin_pi, cos_pi, complex_phis, phi1, phi1_taylor, phi1_from_exp, &
-                                 log1p_over_x, sinh_minus_x, x_minus_asinh, pi
-    use seispulse_divided_differences, only: exp_dd1, exp_dd2, exp_dd_pack, cexp_dd1, &
-                                             cexp_dd2_at0, cexp_dd2, cexp_dd3
+    use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi2, phi3, sin_pi, cos_pi, &
+                                 complex_phis, phi1, phi1_taylor, phi1_from_exp, log1p_over_x, &
+                                 sinh_minus_x, x_minus_asinh, pi
+    use seispulse_divided_differences, only: exp_dd1, exp_dd2, exp_dd_pack, cexp_dd1, cexp_dd2_at0, &
+                                             cexp_dd2, cexp_dd3
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
     use seispulse_lapack, only: solve_linear
     use seispulse_pulses, only: exp_pulse, exp_pulse_point, exp_pulse_peaks, &
-                                exp_pulse_impulse_amplitude, pulse_t, pulse_validate, &
-                                pulse_eval, pulse_at, pulse_breaks, pulse_end_time, &
-                                pulse_kind_from_name, pulse_kind_name, exponential_pulse, &
-                                half_sine_pulse, sine_cycle_pulse, cosine_cycle_pulse, &
-                                rectangular_pulse, triangular_pulse, ricker_pulse, mp_pulse, &
-                                PULSE_EXPONENTIAL, PULSE_HALF_SINE, PULSE_SINE_CYCLE, &
-                                PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
-                                PULSE_RICKER, PULSE_MP, pulse_peak_accel, pulse_accel, &
-                                ricker_accel, ricker_window
+                                exp_pulse_impulse_amplitude, pulse_t, pulse_validate, pulse_eval, &
+                                pulse_at, pulse_breaks, pulse_end_time, pulse_kind_from_name, &
+                                pulse_kind_name, exponential_pulse, half_sine_pulse, &
+                                sine_cycle_pulse, cosine_cycle_pulse, rectangular_pulse, &
+                                triangular_pulse, ricker_pulse, mp_pulse, PULSE_EXPONENTIAL, &
+                                PULSE_HALF_SINE, PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE, &
+                                PULSE_RECTANGULAR, PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP, &
+                                pulse_peak_accel, pulse_accel, ricker_accel, ricker_window
     use seispulse_sliding_sim, only: friction_t, slide_t, stickslip_result_t, friction_validate, &
-                                   stickslip_pulse, stickslip_record
-    use seispulse_sliding_closed, only: half_cycle_t, full_cycle_t, sliding_block_t, yield_time, half_cycle, &
-                                 full_cycle, inclined_resistances, block_response, &
-                                 block_response_eta, half_cycle_integrated, &
-                                 full_cycle_integrated, summarize_slides, &
-                                 eta_critical, eta_critical_regression, &
-                                 full_cycle_peak_regression, rectangle_half, rectangle_full, &
-                                 triangle_half, spike_velocity_ratio, sliding_regime_name, sliding_mode_name, &
-                                 SLIDING_REGIME_NONE, SLIDING_REGIME_FORCED, SLIDING_REGIME_FREE, SLIDING_MODE_NO_SLIDING, &
-                                 SLIDING_MODE_UNILATERAL, SLIDING_MODE_STICK, SLIDING_MODE_SLIP, SLIDING_MODE_STUCK, &
-                                 SLIDING_MODE_REVERSE_ONLY
-    use seispulse_sliding_norm, only: characteristic_length, basic_lengths, &
-                                      table_1_2_exponents, table_1_3
+                                     stickslip_pulse, stickslip_record
+    use seispulse_sliding_closed, only: half_cycle_t, full_cycle_t, sliding_block_t, yield_time, &
+                                        half_cycle, full_cycle, inclined_resistances, &
+                                        block_response, block_response_eta, half_cycle_integrated, &
+                                        full_cycle_integrated, summarize_slides, eta_critical, &
+                                        eta_critical_regression, full_cycle_peak_regression, &
+                                        rectangle_half, rectangle_full, triangle_half, &
+                                        spike_velocity_ratio, sliding_regime_name, &
+                                        sliding_mode_name, SLIDING_REGIME_NONE, &
+                                        SLIDING_REGIME_FORCED, SLIDING_REGIME_FREE, &
+                                        SLIDING_MODE_NO_SLIDING, SLIDING_MODE_UNILATERAL, &
+                                        SLIDING_MODE_STICK, SLIDING_MODE_SLIP, SLIDING_MODE_STUCK, &
+                                        SLIDING_MODE_REVERSE_ONLY
+    use seispulse_sliding_norm, only: characteristic_length, basic_lengths, table_1_2_exponents, &
+                                      table_1_3
     use seispulse_rocking_closed, only: ROCK_NONE, ROCK_O1, ROCK_O2, ROCK_O3, ROCK_S1, ROCK_S2, &
-                                 rocking_region_name, uplift_time, rocking_response, &
-                                 stability_wall, stability_wall_inverse, overturn_boundary, &
-                                 overturn_boundary_inverse, s1_s2_boundary, rocking_classify, &
-                                 critical_time, time_of_max, max_rotation, impact_time, &
-                                 rocking_summary, rocking_extremes, &
-                                 rect_time_of_max_normalized, rect_max_rotation_normalized, &
-                                 rect_impact_time_normalized
+                                        rocking_region_name, uplift_time, rocking_response, &
+                                        stability_wall, stability_wall_inverse, overturn_boundary, &
+                                        overturn_boundary_inverse, s1_s2_boundary, &
+                                        rocking_classify, critical_time, time_of_max, max_rotation, &
+                                        impact_time, rocking_summary, rocking_extremes, &
+                                        rect_time_of_max_normalized, rect_max_rotation_normalized, &
+                                        rect_impact_time_normalized
     use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rectangular_block, &
                                      symmetric_block, rocking_block_validate, rock_pulse, &
-                                     rock_record, overturning_map, ROCK_RUN_REST, ROCK_RUN_NO_UPLIFT, &
-                                     ROCK_RUN_OVERTURN_NO_IMPACT, ROCK_RUN_OVERTURN_ONE_IMPACT, &
-                                     ROCK_RUN_OVERTURN_MANY, ROCK_RUN_TIME_LIMIT
+                                     rock_record, overturning_map, ROCK_RUN_REST, &
+                                     ROCK_RUN_NO_UPLIFT, ROCK_RUN_OVERTURN_NO_IMPACT, &
+                                     ROCK_RUN_OVERTURN_ONE_IMPACT, ROCK_RUN_OVERTURN_MANY, &
+                                     ROCK_RUN_TIME_LIMIT
     use seispulse_records, only: record_t, read_record, record_pga, pga_scale_factor, &
-                                 ground_motion, record_format_name, record_units_name, &
-                                 RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, &
-                                 RECORD_TIME_ACCEL, UNITS_G, UNITS_M_S2, UNITS_CM_S2, &
-                                 STANDARD_GRAVITY
-    use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, &
-                                 newmark_incline, newmark_block_validate, newmark_mode_name, &
-                                 newmark_method_name, newmark_mode_code, newmark_method_code, &
-                                 NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM, NEWMARK_EXACT, &
-                                 NEWMARK_SLAMMER
-    use seispulse_sdof_sim, only: sdof_step_t, sdof_step, sdof_validate, sdof_response, sdof_spectrum, &
-                              pseudo_spectra, design_envelope, spectral_shape, sdof_threads, &
-                              SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES
+                                 ground_motion, record_format_name, record_units_name, RECORD_AUTO, &
+                                 RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, RECORD_TIME_ACCEL, &
+                                 UNITS_G, UNITS_M_S2, UNITS_CM_S2, STANDARD_GRAVITY
+    use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, newmark_incline, &
+                                 newmark_block_validate, newmark_mode_name, newmark_method_name, &
+                                 newmark_mode_code, newmark_method_code, NEWMARK_DOWN, &
+                                 NEWMARK_BOTH, NEWMARK_ASYM, NEWMARK_EXACT, NEWMARK_SLAMMER
+    use seispulse_sdof_sim, only: sdof_step_t, sdof_step, sdof_validate, sdof_response, &
+                                  sdof_spectrum, pseudo_spectra, design_envelope, spectral_shape, &
+                                  sdof_threads, SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES
     use seispulse_sdof_closed, only: dynamic_coefficient, harmonic_response, rect_pulse_response, &
-                                    beta_pulse, impulse_max, impulse_response, &
-                                    sdof_pulse_response, sdof_pulse_peaks, sdof_pulse_spectrum, &
-                                    BETA_HYSTERETIC, BETA_VISCOUS, &
-                                    HARMONIC_SINE, HARMONIC_COSINE, BETA_PULSE_TEXTBOOK, &
-                                    BETA_PULSE_EXACT
+                                     beta_pulse, impulse_max, impulse_response, &
+                                     sdof_pulse_response, sdof_pulse_peaks, sdof_pulse_spectrum, &
+                                     BETA_HYSTERETIC, BETA_VISCOUS, HARMONIC_SINE, HARMONIC_COSINE, &
+                                     BETA_PULSE_TEXTBOOK, BETA_PULSE_EXACT
     use seispulse_walls_common, only: wall_psi_t, wall_psi, free_field_frequencies
     use seispulse_walls_vy, only: vy_default_tol, vy_min_tol, vy_max_tol, vy_max_omega_ratio, &
                                   vy_rigid, vy_rigid_sweep, vy_pressure, vy_fields
-    use seispulse_walls_one_term, only: SHAPE_LINEAR, SHAPE_SINE, SHAPE_PARABOLIC, SHAPE_POWER, &
-                                        one_term_shape_t, one_term_t, one_term_shape, one_term, &
-                                        one_term_sweep, one_term_pressure, one_term_displacement, &
-                                        power_law_fundamental, power_law_cutoff, &
-                                        winkler_one_term, winkler_dashpot, winkler_scott, &
-                                        winkler_vy
+    use seispulse_walls_one_term, only: WALL_SHAPE_LINEAR, WALL_SHAPE_SINE, WALL_SHAPE_PARABOLIC, &
+                                        WALL_SHAPE_POWER, one_term_shape_t, one_term_t, &
+                                        one_term_shape, one_term, one_term_sweep, &
+                                        one_term_pressure, one_term_displacement, &
+                                        power_law_fundamental, power_law_cutoff, winkler_one_term, &
+                                        winkler_dashpot, winkler_scott, winkler_vy
     use seispulse_codes, only: ec8_seismic_coefficients, ec8_vertical_ratio, ec8_r_factor, &
                                mononobe_okabe, ec8_thrust_t, ec8_thrust, westergaard_pressure, &
                                ec8_rigid_thrust, seed_whitman_increment, wood_thrust, &

@@ -24,7 +24,8 @@ contains
         tests = [new_unittest('onset 1.12/1.34 and its limits', test_onset), &
                  new_unittest('half cycle: published values', test_half_published), &
                  new_unittest('half cycle: printed 1.9 cancels, 1.5 does not', test_half_cancel), &
-                 new_unittest('half cycle: rectangle and triangle closed forms', test_half_limits), &
+                 new_unittest('half cycle: rectangle and triangle closed forms', &
+                              test_half_limits), &
                  new_unittest('half cycle: regime threshold and spike', test_half_threshold), &
                  new_unittest('full cycle: example 1.9.1, corrected 1.19', test_full_example), &
                  new_unittest('full cycle: rectangle closed forms', test_full_rectangle), &
@@ -144,7 +145,8 @@ contains
             eta = 0.05_dp * i
             call half_cycle(eta, inf, 1.0_dp, r, stat)
             call rectangle_half(eta, tau_m, um, ratio, vm)
-            call check(error, r%tau_m, tau_m, rtol=1.0e-14_dp, message='rect tau_m eta='//real_str(eta))
+            call check(error, r%tau_m, tau_m, rtol=1.0e-14_dp, &
+                       message='rect tau_m eta='//real_str(eta))
             if (allocated(error)) return
             call check(error, r%um, um, rtol=1.0e-13_dp, message='rect um eta='//real_str(eta))
             if (allocated(error)) return
@@ -156,7 +158,8 @@ contains
             call triangle_half(eta, tau_y, tau_m, um, vm, regime)
             call check(error, r%tau_y, tau_y, rtol=1.0e-15_dp)
             if (allocated(error)) return
-            call check(error, r%tau_m, tau_m, rtol=1.0e-13_dp, message='tri tau_m eta='//real_str(eta))
+            call check(error, r%tau_m, tau_m, rtol=1.0e-13_dp, &
+                       message='tri tau_m eta='//real_str(eta))
             if (allocated(error)) return
             call check(error, r%um, um, rtol=1.0e-11_dp, message='tri um eta='//real_str(eta))
             if (allocated(error)) return
@@ -192,7 +195,8 @@ contains
         do i = 1, 5
             call half_cycle(thresholds(i) - 1.0e-4_dp, betas(i), 1.0_dp, lo, stat)
             call half_cycle(thresholds(i) + 1.0e-4_dp, betas(i), 1.0_dp, hi, stat)
-            call check(error, lo%regime == SLIDING_REGIME_FREE .and. hi%regime == SLIDING_REGIME_FORCED, &
+            call check(error, &
+                       lo%regime == SLIDING_REGIME_FREE .and. hi%regime == SLIDING_REGIME_FORCED, &
                        'regime change at eta* for beta = '//real_str(betas(i)))
             if (allocated(error)) return
             call check(error, lo%tau_m, 1.0_dp, atol=1.0e-3_dp)
@@ -300,8 +304,8 @@ contains
         if (allocated(error)) return
         ! stuck (section 7.3): beta = 0.4, eta1 = 0.05, eta2 = 0.7
         call full_cycle(0.05_dp, 0.7_dp, 0.4_dp, 1.0_dp, .false., r, stat)
-        call check(error, r%mode == SLIDING_MODE_STUCK .and. same(r%um2, 0.0_dp) .and. same(r%ures, r%um1), &
-                   'stuck')
+        call check(error, r%mode == SLIDING_MODE_STUCK .and. same(r%um2, 0.0_dp) &
+                   .and. same(r%ures, r%um1), 'stuck')
         if (allocated(error)) return
         ! late slip with a forced reverse stop (section 7.4)
         call full_cycle(0.05_dp, 0.7_dp, -pi, 1.0_dp, .false., r, stat)
@@ -318,7 +322,8 @@ contains
         if (allocated(error)) return
         call full_cycle(1.5_dp, 0.3_dp, -pi, 1.0_dp, .false., r, stat)
         call half_cycle(0.3_dp, -pi, 1.0_dp, h, stat)
-        call check(error, r%mode == SLIDING_MODE_REVERSE_ONLY .and. ieee_is_nan(r%tau_y1), 'reverse only')
+        call check(error, r%mode == SLIDING_MODE_REVERSE_ONLY .and. ieee_is_nan(r%tau_y1), &
+                   'reverse only')
         if (allocated(error)) return
         call check(error, r%um2, h%um, rtol=1.0e-14_dp)
         if (allocated(error)) return
@@ -327,7 +332,8 @@ contains
         call check(error, r%tau_y2, 1.0_dp + h%tau_y, rtol=1.0e-15_dp)
         if (allocated(error)) return
         call full_cycle(1.5_dp, 1.1_dp, -pi, 1.0_dp, .false., r, stat)
-        call check(error, r%mode == SLIDING_MODE_NO_SLIDING .and. same(r%ures, 0.0_dp), 'no sliding')
+        call check(error, r%mode == SLIDING_MODE_NO_SLIDING .and. same(r%ures, 0.0_dp), &
+                   'no sliding')
         if (allocated(error)) return
         ! static friction at the reverse onset delays it (stick case)
         call full_cycle(0.7_dp, 0.7_dp, 0.0_dp, 1.2_dp, .true., r, stat)
@@ -392,12 +398,13 @@ contains
         call check(error, k2, cos(lam) * (1 - mu * tan(lam)), rtol=1.0e-14_dp)
         if (allocated(error)) return
         call inclined_resistances(mu, 0.4_dp, 0.0_dp, 0.0_dp, eta1, eta2, k1, k2, stat)
-        call check(error, same(eta1, eta) .and. same(eta2, eta) .and. same(k1, 1.0_dp), 'flat: eta both ways')
+        call check(error, same(eta1, eta) .and. same(eta2, eta) .and. same(k1, 1.0_dp), &
+                   'flat: eta both ways')
         if (allocated(error)) return
         ! a pulse steep enough that it cannot push the block uphill: eta2 = +inf
         call inclined_resistances(mu, 0.4_dp, 20.0_dp, -80.0_dp, eta1, eta2, k1, k2, stat)
-        call check(error, eta2 > huge(eta2) .and. same(k2, 0.0_dp) .and. stat == SEISPULSE_SUCCESS, &
-                   'no uphill sliding')
+        call check(error, eta2 > huge(eta2) .and. same(k2, 0.0_dp) &
+                   .and. stat == SEISPULSE_SUCCESS, 'no uphill sliding')
         if (allocated(error)) return
         ! example 1.9.2: tan 30 > 0.33, statically unstable
         msg = ''
@@ -492,7 +499,8 @@ contains
         call check(error, stat == SEISPULSE_INVALID_INPUT .and. index(msg, 'eta =') == 1, trim(msg))
         if (allocated(error)) return
         call half_cycle(nan, 0.0_dp, 1.0_dp, h, stat, msg)
-        call check(error, stat == SEISPULSE_INVALID_INPUT .and. index(msg, 'eta = NaN') == 1, trim(msg))
+        call check(error, stat == SEISPULSE_INVALID_INPUT .and. index(msg, 'eta = NaN') == 1, &
+                   trim(msg))
         if (allocated(error)) return
         call half_cycle(0.3_dp, nan, 1.0_dp, h, stat, msg)
         call check(error, stat == SEISPULSE_INVALID_INPUT .and. index(msg, 'beta') == 1, trim(msg))

@@ -4,7 +4,7 @@
 module test_special
     use, intrinsic :: iso_fortran_env, only: qp => real128
     use seispulse_kinds, only: dp
-    use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, exp_expm1, &
+    use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi2, phi3, exp_expm1, &
                                  sin_pi, cos_pi, tau_minus_sinpi, phi1, phi1_taylor, &
                                  phi1_from_exp, inv_factorial, complex_phis, log1p_over_x, &
                                  sinh_minus_x, x_minus_asinh
@@ -25,7 +25,7 @@ contains
         tests = [new_unittest('phi_k against quad precision', test_phis), &
                  new_unittest('phi_k at zero and far left', test_phis_limits), &
                  new_unittest('scaled phi_k, no overflow', test_phis_scaled), &
-                 new_unittest('phi and chi wrappers', test_phi_chi), &
+                 new_unittest('phi2 and phi3 wrappers', test_phi2_phi3), &
                  new_unittest('expm1 and log1p', test_expm1_log1p), &
                  new_unittest('sin_pi and cos_pi exact zeros', test_sincos_pi), &
                  new_unittest('tau - sin(pi tau)/pi near 0', test_tau_minus_sinpi), &
@@ -132,18 +132,18 @@ contains
         call check(error, q(3), 1.0e-18_dp, rtol=1.0e-15_dp)
     end subroutine test_phis_scaled
 
-    subroutine test_phi_chi(error)
+    subroutine test_phi2_phi3(error)
         type(test_error), allocatable, intent(out) :: error
         ! doc/pulses.md section 1: the naive V_g = 1/(1 - e^b) + 1/b gives 28.3 at b = 1e-9;
-        ! V_g = phi(b) * b/expm1(b) must give 0.5 - b/12.
+        ! V_g = phi2(b) * b/expm1(b) must give 0.5 - b/12.
         real(dp) :: b
         b = 1.0e-9_dp
-        call check(error, phi(b) * b / expm1(b), 0.5_dp - b / 12.0_dp, rtol=1.0e-15_dp)
+        call check(error, phi2(b) * b / expm1(b), 0.5_dp - b / 12.0_dp, rtol=1.0e-15_dp)
         if (allocated(error)) return
-        call check(error, chi(-0.7_dp), real(ref_phi(3, -0.7_dp), dp), rtol=4.0e-15_dp)
+        call check(error, phi3(-0.7_dp), real(ref_phi(3, -0.7_dp), dp), rtol=4.0e-15_dp)
         if (allocated(error)) return
-        call check(error, phi(3.3_dp), real(ref_phi(2, 3.3_dp), dp), rtol=4.0e-15_dp)
-    end subroutine test_phi_chi
+        call check(error, phi2(3.3_dp), real(ref_phi(2, 3.3_dp), dp), rtol=4.0e-15_dp)
+    end subroutine test_phi2_phi3
 
     !> e^z and e^z - 1 against mpmath (40 digits) at the exact double z: near 2 pi i, where
     !> exp(z) - 1 would lose 9 digits of the real part, near 0 and at a plain point.

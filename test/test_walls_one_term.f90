@@ -9,7 +9,8 @@ module test_walls_one_term
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR
-    use seispulse_walls_one_term, only: SHAPE_LINEAR, SHAPE_SINE, SHAPE_PARABOLIC, SHAPE_POWER, &
+    use seispulse_walls_one_term, only: WALL_SHAPE_LINEAR, WALL_SHAPE_SINE, WALL_SHAPE_PARABOLIC, &
+                                        WALL_SHAPE_POWER, &
                                         one_term_shape_t, one_term_t, one_term_shape, one_term, &
                                         one_term_sweep, one_term_pressure, &
                                         one_term_displacement, power_law_fundamental, &
@@ -145,7 +146,7 @@ contains
         character(len=256) :: msg
         ! Table 2.1: a_oc, L, |Q_st|/psi_sigma, h/H (published closed forms)
         real(dp) :: expect(4, 3)
-        integer, parameter :: shapes(3) = [SHAPE_LINEAR, SHAPE_SINE, SHAPE_PARABOLIC]
+        integer, parameter :: shapes(3) = [WALL_SHAPE_LINEAR, WALL_SHAPE_SINE, WALL_SHAPE_PARABOLIC]
         expect(:, 1) = [sqrt(3.0_dp), 1.5_dp, sqrt(3.0_dp)/4.0_dp, 2.0_dp/3.0_dp]
         expect(:, 2) = [pi/2.0_dp, 4.0_dp/pi, 16.0_dp/pi**3, 2.0_dp/pi]
         expect(:, 3) = [sqrt(2.5_dp), 1.25_dp, sqrt(10.0_dp)/6.0_dp, 0.625_dp]
@@ -188,7 +189,7 @@ contains
         integer :: stat, k
         character(len=256) :: msg
         real(dp) :: nus(4) = [0.0_dp, 0.25_dp, 0.3_dp, 0.45_dp], q_vy
-        call one_term(0.0_dp, 0.0_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
+        call one_term(0.0_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
         call check(error, real(r%q, dp), 0.9461_dp, atol=5.0e-5_dp, message='(2.51) at nu = 0.3')
         if (allocated(error)) return
         call check(error, real(r%q, dp), 32.0_dp/(pi**3*sqrt(1.7_dp*0.7_dp)), rtol=1.0e-14_dp, &
@@ -197,13 +198,14 @@ contains
         ! erratum: the source's "0.979 at nu = 0.30" is the nu = 1/3 value
         call check(error, abs(real(r%q, dp) - 0.979_dp) > 0.03_dp, '0.979 is not nu = 0.3')
         if (allocated(error)) return
-        call one_term(0.0_dp, 0.0_dp, 1.0_dp/3.0_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, &
-            msg)
+        call one_term(0.0_dp, 0.0_dp, 1.0_dp/3.0_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, &
+                      stat, msg)
         call check(error, real(r%q, dp), 0.97909_dp, atol=5.0e-6_dp, message='(2.51) at nu = 1/3')
         if (allocated(error)) return
         ! always 16/(14 zeta(3)) = 0.95083 of the VY static value 14 zeta(3)/pi^3 psi_sigma
         do k = 1, size(nus)
-            call one_term(0.0_dp, 0.0_dp, nus(k), SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
+            call one_term(0.0_dp, 0.0_dp, nus(k), WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, &
+                          stat, msg)
             q_vy = 14.0_dp*zeta3/pi**3*psi_sigma(nus(k))
             call check(error, real(r%q, dp)/q_vy, 16.0_dp/(14.0_dp*zeta3), rtol=1.0e-14_dp, &
                        message='ratio to VY static')
@@ -228,14 +230,15 @@ contains
         expect(:, 2) = [9.0_dp/(2.0_dp*sqrt(5.0_dp)), 2.7_dp, 1.0_dp/sqrt(5.0_dp), 0.55_dp]
         expect(:, 3) = [sqrt(6.0_dp), 6.0_dp, 1.0_dp/sqrt(6.0_dp), 0.5_dp]
         do k = 1, 3
-            call one_term_shape(SHAPE_POWER, ns(k), c, stat, msg)
+            call one_term_shape(WALL_SHAPE_POWER, ns(k), c, stat, msg)
             call check(error, c%a_oc, expect(1, k), rtol=1.0e-15_dp, message='a_oc')
             if (allocated(error)) return
             call check(error, c%l_factor, expect(2, k), rtol=1.0e-15_dp, message='L')
             if (allocated(error)) return
             call check(error, c%h_ratio, expect(4, k), rtol=1.0e-15_dp, message='h/H')
             if (allocated(error)) return
-            call one_term(0.0_dp, 0.0_dp, 0.3_dp, SHAPE_POWER, ns(k), 0.0_dp, inf(), r, stat, msg)
+            call one_term(0.0_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_POWER, ns(k), 0.0_dp, inf(), r, &
+                          stat, msg)
             qst(k) = real(r%q, dp)/psi_sigma(0.3_dp)
             call check(error, qst(k), expect(3, k), rtol=1.0e-14_dp, message='Q_st/psi_sigma')
             if (allocated(error)) return
@@ -247,7 +250,8 @@ contains
         if (allocated(error)) return
         ! (2.75): Q_st = psi_sigma sqrt((5 - n)/(6 (3 - n)(1 + n))), and S0, h/H closed forms
         do k = 1, size(ns2)
-            call one_term(0.0_dp, 0.0_dp, 0.25_dp, SHAPE_POWER, ns2(k), 0.0_dp, inf(), r, stat, msg)
+            call one_term(0.0_dp, 0.0_dp, 0.25_dp, WALL_SHAPE_POWER, ns2(k), 0.0_dp, inf(), r, &
+                          stat, msg)
             call check(error, real(r%q, dp)/psi_sigma(0.25_dp), sqrt((5.0_dp - ns2(k))/ &
                        (6.0_dp*(3.0_dp - ns2(k))*(1.0_dp + ns2(k)))), rtol=1.0e-14_dp, &
                            message='(2.75)')
@@ -265,10 +269,10 @@ contains
         complex(dp) :: p(3), p_ref(1)
         integer :: stat, k
         character(len=256) :: msg
-        call one_term_pressure(0.0_dp, 0.0_dp, 0.3_dp, SHAPE_POWER, n, 0.0_dp, inf(), y, p, stat, &
-            msg)
-        call one_term_pressure(0.0_dp, 0.0_dp, 0.3_dp, SHAPE_POWER, n, 0.0_dp, inf(), [0.5_dp], &
-                               p_ref, stat, msg)
+        call one_term_pressure(0.0_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_POWER, n, 0.0_dp, inf(), y, p, &
+                               stat, msg)
+        call one_term_pressure(0.0_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_POWER, n, 0.0_dp, inf(), &
+                               [0.5_dp], p_ref, stat, msg)
         do k = 1, 3
             eta = y(k)
             ratio(k) = (1.0_dp - eta)**n*(1.0_dp - (1.0_dp - eta)**(2.0_dp - n))/ &
@@ -310,7 +314,7 @@ contains
                 s0 = s0 + jac*g*phi
                 s1 = s1 + jac*g*phi*(1.0_dp - t)
             end do
-            call one_term_shape(SHAPE_POWER, n, c, stat, msg)
+            call one_term_shape(WALL_SHAPE_POWER, n, c, stat, msg)
             call check(error, stat, SEISPULSE_SUCCESS, 'status')
             if (allocated(error)) return
             call check(error, c%a_oc**2, igd/ig2, rtol=1.0e-12_dp, message='a_oc^2 quadrature')
@@ -341,19 +345,21 @@ contains
         complex(dp) :: pa(3), pb(3)
         integer :: stat
         character(len=256) :: msg
-        call one_term_shape(SHAPE_PARABOLIC, 0.0_dp, a, stat, msg)
-        call one_term_shape(SHAPE_POWER, 0.0_dp, b, stat, msg)
+        call one_term_shape(WALL_SHAPE_PARABOLIC, 0.0_dp, a, stat, msg)
+        call one_term_shape(WALL_SHAPE_POWER, 0.0_dp, b, stat, msg)
         call check(error, same(a%a_oc, b%a_oc) .and. same(a%l_factor, b%l_factor) .and. &
                    same(a%mass_factor, b%mass_factor) .and. same(a%s0, b%s0) .and. &
                    same(a%s1, b%s1) .and. same(a%h_ratio, b%h_ratio), 'constants identical')
         if (allocated(error)) return
-        call one_term(0.7_dp, 0.1_dp, 0.3_dp, SHAPE_PARABOLIC, 0.0_dp, 0.5_dp, inf(), ra, stat, msg)
-        call one_term(0.7_dp, 0.1_dp, 0.3_dp, SHAPE_POWER, 0.0_dp, 0.5_dp, inf(), rb, stat, msg)
+        call one_term(0.7_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_PARABOLIC, 0.0_dp, 0.5_dp, inf(), ra, &
+                      stat, msg)
+        call one_term(0.7_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_POWER, 0.0_dp, 0.5_dp, inf(), rb, stat, &
+                      msg)
         call check(error, same(ra%q, rb%q) .and. same(ra%u0, rb%u0), 'solution identical')
         if (allocated(error)) return
-        call one_term_pressure(0.7_dp, 0.1_dp, 0.3_dp, SHAPE_PARABOLIC, 0.0_dp, 0.0_dp, inf(), &
-                               [0.1_dp, 0.5_dp, 1.0_dp], pa, stat, msg)
-        call one_term_pressure(0.7_dp, 0.1_dp, 0.3_dp, SHAPE_POWER, 0.0_dp, 0.0_dp, inf(), &
+        call one_term_pressure(0.7_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_PARABOLIC, 0.0_dp, 0.0_dp, &
+                               inf(), [0.1_dp, 0.5_dp, 1.0_dp], pa, stat, msg)
+        call one_term_pressure(0.7_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_POWER, 0.0_dp, 0.0_dp, inf(), &
                                [0.1_dp, 0.5_dp, 1.0_dp], pb, stat, msg)
         call check(error, same(pa(1), pb(1)) .and. same(pa(2), pb(2)) .and. same(pa(3), pb(3)), &
             'pressure identical')
@@ -378,8 +384,8 @@ contains
         integer :: k, stat
         character(len=256) :: msg
         do k = 1, 10
-            call one_term(rows(2, k), rows(1, k), 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, &
-                          stat, msg)
+            call one_term(rows(2, k), rows(1, k), 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
+                          r, stat, msg)
             call check(error, stat, SEISPULSE_SUCCESS, 'status')
             if (allocated(error)) return
             call check(error, abs(r%q), rows(3, k), atol=5.0e-5_dp, message='|Q| table')
@@ -396,7 +402,7 @@ contains
             end if
         end do
         ! delta = 0 above the cut-off: q = psi_sigma (16/pi^3)/(-i sqrt(phi^2 - 1)) = +i ...
-        call one_term(2.0_dp, 0.0_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
+        call one_term(2.0_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
         call check_c(error, r%q, cmplx(0.0_dp, -psi_sigma(0.3_dp)*16.0_dp/pi**3/sqrt(3.0_dp), dp), &
                      1.0e-14_dp, 'undamped above cut-off (radiation branch)')
     end subroutine test_dynamic_sine
@@ -414,7 +420,7 @@ contains
         real(dp) :: nu
         nu = 1.0_dp/3.0_dp
         do k = 1, 6
-            call one_term(0.0_dp, 0.0_dp, nu, SHAPE_SINE, 0.0_dp, dth(k), inf(), r, stat, msg)
+            call one_term(0.0_dp, 0.0_dp, nu, WALL_SHAPE_SINE, 0.0_dp, dth(k), inf(), r, stat, msg)
             call check(error, stat, SEISPULSE_SUCCESS, 'status')
             if (allocated(error)) return
             call check(error, real(r%flex, dp), ratio(k), atol=5.0e-5_dp, message='Q/Q_rigid table')
@@ -440,8 +446,8 @@ contains
         real(dp) :: nu
         nu = 1.0_dp/3.0_dp
         do k = 1, 4
-            call one_term(om(k), 0.1_dp, nu, SHAPE_SINE, 0.0_dp, 1.0_dp, inf(), r, stat, msg)
-            call one_term(om(k), 0.1_dp, nu, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r0, stat, msg)
+            call one_term(om(k), 0.1_dp, nu, WALL_SHAPE_SINE, 0.0_dp, 1.0_dp, inf(), r, stat, msg)
+            call one_term(om(k), 0.1_dp, nu, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r0, stat, msg)
             call check(error, abs(r%q), flexq(k), atol=5.0e-5_dp, message='|Q| d_theta = 1')
             if (allocated(error)) return
             call check(error, abs(r0%q), rigidq(k), atol=5.0e-5_dp, message='|Q| rigid')
@@ -461,12 +467,14 @@ contains
         complex(dp) :: u(2)
         integer :: k, stat
         character(len=256) :: msg
-        call one_term(0.6_dp, 0.1_dp, 0.3_dp, SHAPE_LINEAR, 0.0_dp, 0.0_dp, inf(), r0, stat, msg)
+        call one_term(0.6_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_LINEAR, 0.0_dp, 0.0_dp, inf(), r0, stat, &
+                      msg)
         call check(error, same(r0%flex, (1.0_dp, 0.0_dp)) .and. same(r0%u0, (0.0_dp, 0.0_dp)), &
                    'd_theta = 0 is the rigid wall')
         if (allocated(error)) return
         do k = 1, size(dth)
-            call one_term(0.6_dp, 0.1_dp, 0.3_dp, SHAPE_LINEAR, 0.0_dp, dth(k), inf(), r, stat, msg)
+            call one_term(0.6_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_LINEAR, 0.0_dp, dth(k), inf(), r, &
+                          stat, msg)
             call check(error, stat, SEISPULSE_SUCCESS, 'status')
             if (allocated(error)) return
             ! moment equilibrium (2.91)-(2.92): K_R theta = q h, i.e. u0 = -q (h/H) d_theta
@@ -486,16 +494,17 @@ contains
         call check_c(error, r%u0, r%u_ff0, 1.0e-11_dp, 'u0 -> u_ff0')
         if (allocated(error)) return
         ! the hinge d_theta = +inf (K_R = 0) is the limit
-        call one_term(0.6_dp, 0.1_dp, 0.3_dp, SHAPE_LINEAR, 0.0_dp, inf(), inf(), r, stat, msg)
+        call one_term(0.6_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_LINEAR, 0.0_dp, inf(), inf(), r, stat, msg)
         call check(error, stat, SEISPULSE_SUCCESS, 'hinge status')
         if (allocated(error)) return
         call check(error, same(r%q, (0.0_dp, 0.0_dp)) .and. same(r%u0, r%u_ff0), &
             'hinge: q = 0, u0 = u_ff0')
         if (allocated(error)) return
         ! wall face moves with the soil: u(0, y) = u0 Phi(y); far field = free field
-        call one_term(0.6_dp, 0.1_dp, 0.3_dp, SHAPE_LINEAR, 0.0_dp, 1.0_dp, inf(), r, stat, msg)
-        call one_term_displacement(0.6_dp, 0.1_dp, 0.3_dp, SHAPE_LINEAR, 0.0_dp, 1.0_dp, inf(), &
-                                   [0.0_dp, 200.0_dp], [0.5_dp, 0.5_dp], u, stat, msg)
+        call one_term(0.6_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_LINEAR, 0.0_dp, 1.0_dp, inf(), r, stat, &
+                      msg)
+        call one_term_displacement(0.6_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_LINEAR, 0.0_dp, 1.0_dp, &
+                                   inf(), [0.0_dp, 200.0_dp], [0.5_dp, 0.5_dp], u, stat, msg)
         call check_c(error, u(1), 0.5_dp*r%u0, 1.0e-14_dp, 'u(0, y) = u0 Phi')
         if (allocated(error)) return
         call check_c(error, u(2), 0.5_dp*r%u_ff0, 1.0e-13_dp, 'u(inf, y) = u_ff Phi')
@@ -517,22 +526,26 @@ contains
         integer :: k, stat
         character(len=256) :: msg
         do k = 1, 6
-            call one_term(0.0_dp, 0.0_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, lh(k), r, stat, msg)
+            call one_term(0.0_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, lh(k), r, &
+                          stat, msg)
             call check(error, real(r%lambda, dp), st(k), atol=merge(5.0e-6_dp, 5.0e-5_dp, k == 6), &
                        message='static Lambda')
             if (allocated(error)) return
-            call one_term(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, lh(k), r, stat, msg)
+            call one_term(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, lh(k), r, &
+                          stat, msg)
             call check(error, abs(r%lambda), d5(k), atol=merge(5.0e-6_dp, 5.0e-5_dp, k == 6), &
                        message='|Lambda| 0.5')
             if (allocated(error)) return
-            call one_term(1.0_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, lh(k), r, stat, msg)
+            call one_term(1.0_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, lh(k), r, &
+                          stat, msg)
             call check(error, abs(r%lambda), d10(k), atol=5.0e-5_dp, message='|Lambda| 1.0')
             if (allocated(error)) return
             ! (2.105) as printed: (cosh mL - 1)/sinh mL, and q = q_single Lambda (2.107)
             ml = r%s*lh(k)/psi_e(0.3_dp)
             call check_c(error, r%lambda, (cosh(ml) - 1.0_dp)/sinh(ml), 1.0e-13_dp, '(2.105)')
             if (allocated(error)) return
-            call one_term(1.0_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r1, stat, msg)
+            call one_term(1.0_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r1, &
+                          stat, msg)
             call check_c(error, r%q, r1%q*r%lambda, 1.0e-14_dp, '(2.107)')
             if (allocated(error)) return
         end do
@@ -549,9 +562,9 @@ contains
         character(len=256) :: msg
         lh = 2.0_dp
         xs = [0.0_dp, 0.37_dp, 1.0_dp, lh]
-        call one_term(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, lh, r, stat, msg)
-        call one_term_displacement(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, lh, xs, &
-                                   [1.0_dp, 1.0_dp, 1.0_dp, 1.0_dp], u, stat, msg)
+        call one_term(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, lh, r, stat, msg)
+        call one_term_displacement(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, lh, &
+                                   xs, [1.0_dp, 1.0_dp, 1.0_dp, 1.0_dp], u, stat, msg)
         call check(error, stat, SEISPULSE_SUCCESS, 'status')
         if (allocated(error)) return
         call check(error, same(u(1), (0.0_dp, 0.0_dp)) .and. same(u(4), (0.0_dp, 0.0_dp)), &
@@ -576,9 +589,9 @@ contains
         call check(error, abs(x_printed) > 0.1_dp*abs(c), 'printed (2.102b) B: X(L) /= 0')
         if (allocated(error)) return
         ! (2.104) corrected: X'(0) = u_ff0 m Lambda, so p = the single-wall pressure times Lambda
-        call one_term_pressure(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, lh, [0.8_dp], &
-                               p, stat, msg)
-        call one_term_pressure(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
+        call one_term_pressure(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, lh, &
+                               [0.8_dp], p, stat, msg)
+        call one_term_pressure(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
                                [0.8_dp], pp, stat, msg)
         call check_c(error, p(1), pp(1)*r%lambda, 1.0e-14_dp, 'pair pressure')
         if (allocated(error)) return
@@ -593,27 +606,29 @@ contains
         complex(dp) :: u(2)
         integer :: stat
         character(len=256) :: msg
-        call one_term(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r1, stat, msg)
+        call one_term(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r1, stat, msg)
         ! huge spacing: no overflow, Lambda = 1
-        call one_term(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, 1.0e6_dp, r, stat, msg)
+        call one_term(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, 1.0e6_dp, r, stat, &
+                      msg)
         call check(error, stat, SEISPULSE_SUCCESS, 'L/H = 1e6 status')
         if (allocated(error)) return
         call check_c(error, r%lambda, (1.0_dp, 0.0_dp), 1.0e-15_dp, 'Lambda(1e6) = 1')
         if (allocated(error)) return
         call check_c(error, r%q, r1%q, 1.0e-15_dp, 'q(1e6) = single wall')
         if (allocated(error)) return
-        call one_term_displacement(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, 1.0e300_dp, &
-                                   [5.0e299_dp, 3.0_dp], [1.0_dp, 1.0_dp], u, stat, msg)
+        call one_term_displacement(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, &
+                                   1.0e300_dp, [5.0e299_dp, 3.0_dp], [1.0_dp, 1.0_dp], u, stat, msg)
         call check(error, stat, SEISPULSE_SUCCESS, 'L/H = 1e300 status')
         if (allocated(error)) return
         call check_c(error, u(1), r1%u_ff0, 1.0e-15_dp, 'mid-span of a huge pair = free field')
         if (allocated(error)) return
         ! tiny spacing: Lambda = tanh(mL/2) ~ mL/2 without cancellation
-        call one_term(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, 1.0e-9_dp, r, stat, msg)
+        call one_term(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, 1.0e-9_dp, r, &
+                      stat, msg)
         call check_c(error, r%lambda, r%s*0.5e-9_dp/psi_e(0.3_dp), 1.0e-15_dp, 'Lambda ~ mL/2')
         if (allocated(error)) return
         ! undamped above the cut-off: oscillating Lambda = i tan(kL/2), finite
-        call one_term(2.0_dp, 0.0_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, 3.0_dp, r, stat, msg)
+        call one_term(2.0_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, 3.0_dp, r, stat, msg)
         call check(error, stat, SEISPULSE_SUCCESS, 'undamped pair status')
         if (allocated(error)) return
         call check_c(error, r%lambda, &
@@ -636,23 +651,23 @@ contains
         complex(dp) :: p(1), u(1)
         integer :: i, stat
         character(len=256) :: msg
-        call winkler_one_term(0.0_dp, 0.0_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, k, stat, msg)
+        call winkler_one_term(0.0_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, k, stat, msg)
         call check(error, real(k, dp), 2.8799_dp, atol=5.0e-5_dp, message='k static')
         if (allocated(error)) return
-        call winkler_one_term(0.5_dp, 0.0_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, k, stat, msg)
+        call winkler_one_term(0.5_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, k, stat, msg)
         call check(error, real(k, dp), 2.4941_dp, atol=5.0e-5_dp, message='k(0.5)')
         if (allocated(error)) return
-        call winkler_one_term(2.0_dp, 0.0_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, k, stat, msg)
+        call winkler_one_term(2.0_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, k, stat, msg)
         call check(error, abs(real(k, dp)) < 1.0e-15_dp .and. &
                    abs(aimag(k) - 4.9881_dp) < 5.0e-5_dp, 'k(2) = 4.9881 i')
         if (allocated(error)) return
         do i = 1, 4
-            call winkler_one_term(om(i), 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, k, stat, msg)
+            call winkler_one_term(om(i), 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, k, stat, msg)
             call check(error, abs(k - k01(i)) < 1.0e-4_dp, 'k table delta = 0.1')
             if (allocated(error)) return
         end do
         do i = 1, 4
-            call winkler_one_term(0.0_dp, 0.0_dp, nus(i), SHAPE_SINE, 0.0_dp, k, stat, msg)
+            call winkler_one_term(0.0_dp, 0.0_dp, nus(i), WALL_SHAPE_SINE, 0.0_dp, k, stat, msg)
             call check(error, real(k, dp), kst(i), atol=5.0e-4_dp, message='(2.112) table')
             if (allocated(error)) return
             call check(error, real(k, dp), 0.5_dp*pi*psi_sigma(nus(i)), rtol=1.0e-15_dp, &
@@ -660,12 +675,12 @@ contains
             if (allocated(error)) return
         end do
         ! definition (2.110): k = sigma_x(0, y)/u_ff(y), at a depth, for the power law with g(y)
-        call winkler_one_term(0.7_dp, 0.1_dp, 0.3_dp, SHAPE_POWER, 0.5_dp, k, stat, msg)
-        call one_term(0.7_dp, 0.1_dp, 0.3_dp, SHAPE_POWER, 0.5_dp, 0.0_dp, inf(), r, stat, msg)
-        call one_term_pressure(0.7_dp, 0.1_dp, 0.3_dp, SHAPE_POWER, 0.5_dp, 0.0_dp, inf(), &
+        call winkler_one_term(0.7_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_POWER, 0.5_dp, k, stat, msg)
+        call one_term(0.7_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_POWER, 0.5_dp, 0.0_dp, inf(), r, stat, msg)
+        call one_term_pressure(0.7_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_POWER, 0.5_dp, 0.0_dp, inf(), &
                                [0.4_dp], p, stat, msg)
-        call one_term_displacement(0.7_dp, 0.1_dp, 0.3_dp, SHAPE_POWER, 0.5_dp, 0.0_dp, inf(), &
-                                   [1.0e4_dp], [0.4_dp], u, stat, msg)
+        call one_term_displacement(0.7_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_POWER, 0.5_dp, 0.0_dp, &
+                                   inf(), [1.0e4_dp], [0.4_dp], u, stat, msg)
         call check_c(error, -p(1)/u(1), k*0.6_dp**0.5_dp, 1.0e-12_dp, 'k(y) = sigma/u_ff = k g(y)')
     end subroutine test_winkler
 
@@ -676,22 +691,22 @@ contains
         integer :: stat
         character(len=256) :: msg
         ! (2.111) sine, omega = 2 omega_1: psi_sigma sqrt(pi^2 - pi^2/4)/pi = psi_sigma sqrt(3)/2
-        call winkler_dashpot(2.0_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, c, stat, msg)
+        call winkler_dashpot(2.0_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, c, stat, msg)
         call check(error, c, psi_sigma(0.3_dp)*sqrt(3.0_dp)/2.0_dp, rtol=1.0e-15_dp, &
             message='dashpot')
         if (allocated(error)) return
         ! and k = i omega c of (2.110) at delta = 0 (omega H/V = pi)
-        call winkler_one_term(2.0_dp, 0.0_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, k, stat, msg)
+        call winkler_one_term(2.0_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, k, stat, msg)
         call check_c(error, k, cmplx(0.0_dp, pi*c, dp), 1.0e-15_dp, 'k = i omega c')
         if (allocated(error)) return
-        call winkler_dashpot(1.0_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, c, stat, msg)
+        call winkler_dashpot(1.0_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, c, stat, msg)
         call check(error, stat == SEISPULSE_SUCCESS .and. same(c, 0.0_dp), &
             'dashpot 0 at the cut-off')
         if (allocated(error)) return
-        call winkler_dashpot(0.9_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, c, stat, msg)
+        call winkler_dashpot(0.9_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, c, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'omega_ratio', 'below cut-off')
         if (allocated(error)) return
-        call winkler_dashpot(2.0_dp, 0.3_dp, SHAPE_POWER, 0.5_dp, c, stat, msg)
+        call winkler_dashpot(2.0_dp, 0.3_dp, WALL_SHAPE_POWER, 0.5_dp, c, stat, msg)
         ! power law n = 1/2: a_oc^2 = 81/20, mass 2.025, W = pi: sqrt(2.025 pi^2 - 4.05)/pi
         call check(error, c, psi_sigma(0.3_dp)*sqrt(2.025_dp*pi**2 - 4.05_dp)/pi, rtol=1.0e-14_dp, &
                    message='dashpot power law')
@@ -718,7 +733,7 @@ contains
         if (allocated(error)) return
         ! mode 1 = (psi_o/psi_sigma) times the one-term sine spring, at every frequency
         call winkler_vy(1, 2.0_dp, 0.1_dp, 0.3_dp, k, stat, msg)
-        call winkler_one_term(2.0_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, k1, stat, msg)
+        call winkler_one_term(2.0_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, k1, stat, msg)
         call check_c(error, k, k1*sqrt(2.0_dp/0.7_dp)/psi_sigma(0.3_dp), 1.0e-14_dp, &
             'VY = psi ratio')
         if (allocated(error)) return
@@ -743,9 +758,9 @@ contains
         complex(dp) :: p(ngl)
         type(one_term_t) :: r
         integer, parameter :: ncase = 6
-        integer :: shp(ncase) = [SHAPE_LINEAR, SHAPE_SINE, SHAPE_PARABOLIC, SHAPE_SINE, &
-            SHAPE_SINE, &
-                                 SHAPE_POWER]
+        integer :: shp(ncase) = [WALL_SHAPE_LINEAR, WALL_SHAPE_SINE, WALL_SHAPE_PARABOLIC, &
+                       WALL_SHAPE_SINE, WALL_SHAPE_SINE, &
+                                 WALL_SHAPE_POWER]
         real(dp) :: dth(ncase) = [0.0_dp, 0.0_dp, 0.7_dp, 2.0_dp, 0.0_dp, 0.0_dp]
         real(dp) :: lh(ncase), en(ncase) = [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.5_dp]
         integer :: k, stat
@@ -754,7 +769,7 @@ contains
         lh = inf()
         lh(5) = 1.5_dp
         do k = 1, ncase
-            if (shp(k) == SHAPE_POWER) then
+            if (shp(k) == WALL_SHAPE_POWER) then
                 ! eta = 1 - u^2: g Phi d(eta) = 2 u^2 (1 - u^3) du, a polynomial
                 y = 1.0_dp - xg**2
                 wq = 2.0_dp*xg*wg
@@ -773,7 +788,7 @@ contains
             if (allocated(error)) return
         end do
         ! endpoints: p(0) = 0 (Phi(0) = 0); for n > 0 p(H) = 0 (G = 0 at the surface)
-        call one_term_pressure(0.8_dp, 0.1_dp, 0.3_dp, SHAPE_POWER, 0.5_dp, 0.0_dp, inf(), &
+        call one_term_pressure(0.8_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_POWER, 0.5_dp, 0.0_dp, inf(), &
                                [0.0_dp, 1.0_dp], p(1:2), stat, msg)
         call check(error, same(p(1), (0.0_dp, 0.0_dp)) .and. same(p(2), (0.0_dp, 0.0_dp)), &
             'p(0) = p(H) = 0 for n > 0')
@@ -786,8 +801,9 @@ contains
         real(dp) :: xs(5) = [0.0_dp, 1.0e-12_dp, 0.3_dp, 2.0_dp, 500.0_dp]
         integer :: k, stat
         character(len=256) :: msg
-        call one_term(0.6_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
-        call one_term_displacement(0.6_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), xs, &
+        call one_term(0.6_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
+        call one_term_displacement(0.6_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, &
+                                   inf(), xs, &
                                    [1.0_dp, 1.0_dp, 1.0_dp, 0.5_dp, 0.5_dp], u, stat, msg)
         call check(error, stat, SEISPULSE_SUCCESS, 'status')
         if (allocated(error)) return
@@ -807,12 +823,12 @@ contains
         if (allocated(error)) return
         ! the free field itself: static sine -L/a_oc^2 = -16/pi^3; power law (A.7)
         ! u(H) = -1/(2 - n) exactly (doc/walls.md section 3 oracle)
-        call one_term(0.0_dp, 0.0_dp, 0.3_dp, SHAPE_POWER, 0.5_dp, 0.0_dp, inf(), r, stat, msg)
+        call one_term(0.0_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_POWER, 0.5_dp, 0.0_dp, inf(), r, stat, msg)
         call check(error, real(r%u_ff0, dp), -1.0_dp/1.5_dp, rtol=1.0e-14_dp, &
             message='(A.7) u_ff(H)')
         if (allocated(error)) return
         ! free field in the frequency domain: -Lf/((1 + i delta)(a_oc^2 - a_o^2))
-        call one_term(0.6_dp, 0.2_dp, 0.3_dp, SHAPE_POWER, 0.5_dp, 0.0_dp, inf(), r, stat, msg)
+        call one_term(0.6_dp, 0.2_dp, 0.3_dp, WALL_SHAPE_POWER, 0.5_dp, 0.0_dp, inf(), r, stat, msg)
         call check_c(error, r%u_ff0, -2.7_dp/(cmplx(1.0_dp, 0.2_dp, dp)*(4.05_dp - (0.3_dp*pi)**2* &
                      2.025_dp/cmplx(1.0_dp, 0.2_dp, dp))), 1.0e-13_dp, 'u_ff0 power law')
     end subroutine test_displacement
@@ -824,25 +840,29 @@ contains
         integer :: stat
         character(len=256) :: msg
         real(dp), parameter :: eps_d = 1.0e-10_dp
-        call one_term(1.7_dp, 0.0_dp, 0.3_dp, SHAPE_LINEAR, 0.0_dp, 0.0_dp, 4.0_dp, r0, stat, msg)
-        call one_term(1.7_dp, eps_d, 0.3_dp, SHAPE_LINEAR, 0.0_dp, 0.0_dp, 4.0_dp, re, stat, msg)
+        call one_term(1.7_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_LINEAR, 0.0_dp, 0.0_dp, 4.0_dp, r0, &
+                      stat, msg)
+        call one_term(1.7_dp, eps_d, 0.3_dp, WALL_SHAPE_LINEAR, 0.0_dp, 0.0_dp, 4.0_dp, re, stat, &
+                      msg)
         call check_c(error, r0%q, re%q, 1.0e-8_dp, 'q: delta = 0 vs 0+')
         if (allocated(error)) return
         call check_c(error, r0%lambda, re%lambda, 1.0e-8_dp, 'Lambda: delta = 0 vs 0+')
         if (allocated(error)) return
         call check(error, same(real(r0%s, dp), 0.0_dp) .and. aimag(r0%s) > 0.0_dp, 's = +i sqrt')
         if (allocated(error)) return
-        call one_term(1.7_dp, 0.0_dp, 0.3_dp, SHAPE_POWER, -0.4_dp, 0.8_dp, inf(), r0, stat, msg)
-        call one_term(1.7_dp, eps_d, 0.3_dp, SHAPE_POWER, -0.4_dp, 0.8_dp, inf(), re, stat, msg)
+        call one_term(1.7_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_POWER, -0.4_dp, 0.8_dp, inf(), r0, stat, &
+                      msg)
+        call one_term(1.7_dp, eps_d, 0.3_dp, WALL_SHAPE_POWER, -0.4_dp, 0.8_dp, inf(), re, stat, &
+                      msg)
         call check_c(error, r0%q, re%q, 1.0e-8_dp, 'flexible q: delta = 0 vs 0+')
         if (allocated(error)) return
-        call winkler_one_term(1.7_dp, 0.0_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, k0, stat, msg)
-        call winkler_one_term(1.7_dp, eps_d, 0.3_dp, SHAPE_SINE, 0.0_dp, ke, stat, msg)
+        call winkler_one_term(1.7_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, k0, stat, msg)
+        call winkler_one_term(1.7_dp, eps_d, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, ke, stat, msg)
         call check_c(error, k0, ke, 1.0e-8_dp, 'k: delta = 0 vs 0+')
         if (allocated(error)) return
-        call one_term_displacement(1.7_dp, 0.0_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
+        call one_term_displacement(1.7_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
                                    [0.9_dp], [0.7_dp], u0, stat, msg)
-        call one_term_displacement(1.7_dp, eps_d, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
+        call one_term_displacement(1.7_dp, eps_d, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
                                    [0.9_dp], [0.7_dp], ue, stat, msg)
         call check_c(error, u0(1), ue(1), 1.0e-8_dp, 'u: delta = 0 vs 0+')
     end subroutine test_branch
@@ -853,32 +873,33 @@ contains
         complex(dp) :: q(2), m(2), p(1), u(1)
         integer :: stat
         character(len=256) :: msg
-        call one_term(1.0_dp, 0.0_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
+        call one_term(1.0_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_SINGULAR, 'omega_ratio', 'one_term')
         if (allocated(error)) return
-        call one_term_sweep([0.5_dp, 1.0_dp], 0.0_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
-                            q, m, stat, msg)
+        call one_term_sweep([0.5_dp, 1.0_dp], 0.0_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, &
+                            inf(), q, m, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_SINGULAR, 'omega_ratio', 'sweep')
         if (allocated(error)) return
-        call one_term_pressure(1.0_dp, 0.0_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, 2.0_dp, &
+        call one_term_pressure(1.0_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, 2.0_dp, &
                                [0.5_dp], p, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_SINGULAR, 'omega_ratio', 'pressure')
         if (allocated(error)) return
-        call one_term_displacement(1.0_dp, 0.0_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.5_dp, inf(), &
+        call one_term_displacement(1.0_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.5_dp, inf(), &
                                    [1.0_dp], [0.5_dp], u, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_SINGULAR, 'omega_ratio', 'displacement')
         if (allocated(error)) return
         ! damping keeps it finite; near (not at) the cut-off the undamped response is large
         ! |q| = psi_sigma (16/pi^3) |(1 + i delta)/(i delta)|^(1/2) ~ 0.946/sqrt(delta)
-        call one_term(1.0_dp, 1.0e-8_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
+        call one_term(1.0_dp, 1.0e-8_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, &
+                      msg)
         call check(error, stat, SEISPULSE_SUCCESS, 'damped resonance status')
         if (allocated(error)) return
         call check(error, abs(r%q), psi_sigma(0.3_dp)*16.0_dp/pi**3* &
                    sqrt(abs(cmplx(1.0_dp, 1.0e-8_dp, dp))/1.0e-8_dp), rtol=1.0e-8_dp, &
                    message='damped resonance')
         if (allocated(error)) return
-        call one_term(1.0_dp + 1.0e-12_dp, 0.0_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, &
-                      stat, msg)
+        call one_term(1.0_dp + 1.0e-12_dp, 0.0_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, &
+                      inf(), r, stat, msg)
         call check(error, stat == SEISPULSE_SUCCESS .and. abs(r%q) > 1.0e5_dp, 'just above')
     end subroutine test_resonance
 
@@ -954,17 +975,18 @@ contains
         type(one_term_t) :: r
         integer :: k, stat
         character(len=256) :: msg
-        call one_term_sweep(om, 0.1_dp, 0.35_dp, SHAPE_POWER, 0.7_dp, 0.0_dp, 3.0_dp, q, m, stat, &
-            msg)
+        call one_term_sweep(om, 0.1_dp, 0.35_dp, WALL_SHAPE_POWER, 0.7_dp, 0.0_dp, 3.0_dp, q, m, &
+                            stat, msg)
         call check(error, stat, SEISPULSE_SUCCESS, 'status')
         if (allocated(error)) return
         do k = 1, 5
-            call one_term(om(k), 0.1_dp, 0.35_dp, SHAPE_POWER, 0.7_dp, 0.0_dp, 3.0_dp, r, stat, msg)
+            call one_term(om(k), 0.1_dp, 0.35_dp, WALL_SHAPE_POWER, 0.7_dp, 0.0_dp, 3.0_dp, r, &
+                          stat, msg)
             call check(error, same(q(k), r%q) .and. same(m(k), r%m), 'sweep = one_term')
             if (allocated(error)) return
         end do
-        call one_term_sweep(om, 0.1_dp, 0.35_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), qs, m, stat, &
-            msg)
+        call one_term_sweep(om, 0.1_dp, 0.35_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), qs, m, &
+                            stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'q, m', 'sizes')
     end subroutine test_sweep
 
@@ -977,19 +999,19 @@ contains
         integer :: stat
         character(len=256) :: msg
         nan = ieee_value(1.0_dp, ieee_quiet_nan)
-        call one_term(-0.1_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
+        call one_term(-0.1_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'omega_ratio', 'omega < 0')
         if (allocated(error)) return
-        call one_term(nan, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
+        call one_term(nan, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'omega_ratio', 'omega NaN')
         if (allocated(error)) return
-        call one_term(0.5_dp, -0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
+        call one_term(0.5_dp, -0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'delta', 'delta < 0')
         if (allocated(error)) return
-        call one_term(0.5_dp, 0.1_dp, 0.5_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
+        call one_term(0.5_dp, 0.1_dp, 0.5_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'nu', 'nu = 0.5')
         if (allocated(error)) return
-        call one_term(0.5_dp, 0.1_dp, nan, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
+        call one_term(0.5_dp, 0.1_dp, nan, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'nu', 'nu NaN')
         if (allocated(error)) return
         call one_term(0.5_dp, 0.1_dp, 0.3_dp, 5, 0.0_dp, 0.0_dp, inf(), r, stat, msg)
@@ -998,74 +1020,75 @@ contains
         call one_term_shape(0, 0.0_dp, c, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'shape', 'shape = 0')
         if (allocated(error)) return
-        call one_term(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.5_dp, 0.0_dp, inf(), r, stat, msg)
+        call one_term(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.5_dp, 0.0_dp, inf(), r, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'n', 'n with sine')
         if (allocated(error)) return
         call check(error, index(msg, 'shape') > 0, 'message mentions shape')
         if (allocated(error)) return
-        call one_term(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_POWER, 2.0_dp, 0.0_dp, inf(), r, stat, msg)
+        call one_term(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_POWER, 2.0_dp, 0.0_dp, inf(), r, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'n', 'n = 2')
         if (allocated(error)) return
-        call one_term(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_POWER, -1.0_dp, 0.0_dp, inf(), r, stat, msg)
+        call one_term(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_POWER, -1.0_dp, 0.0_dp, inf(), r, stat, &
+                      msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'n', 'n = -1')
         if (allocated(error)) return
-        call one_term(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_POWER, nan, 0.0_dp, inf(), r, stat, msg)
+        call one_term(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_POWER, nan, 0.0_dp, inf(), r, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'n', 'n NaN')
         if (allocated(error)) return
-        call one_term(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, -1.0_dp, inf(), r, stat, msg)
+        call one_term(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, -1.0_dp, inf(), r, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'd_theta', 'd_theta < 0')
         if (allocated(error)) return
-        call one_term(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, nan, inf(), r, stat, msg)
+        call one_term(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, nan, inf(), r, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'd_theta', 'd_theta NaN')
         if (allocated(error)) return
-        call one_term(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, 0.0_dp, r, stat, msg)
+        call one_term(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, 0.0_dp, r, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'l_over_h', 'L = 0')
         if (allocated(error)) return
-        call one_term(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, -inf(), r, stat, msg)
+        call one_term(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, -inf(), r, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'l_over_h', 'L = -inf')
         if (allocated(error)) return
-        call one_term(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, nan, r, stat, msg)
+        call one_term(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, nan, r, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'l_over_h', 'L NaN')
         if (allocated(error)) return
-        call one_term(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 1.0_dp, 4.0_dp, r, stat, msg)
+        call one_term(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 1.0_dp, 4.0_dp, r, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'd_theta', 'pair + spring')
         if (allocated(error)) return
-        call one_term_pressure(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
+        call one_term_pressure(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
                                [0.5_dp, 1.5_dp], p, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'y(2)', 'y > 1')
         if (allocated(error)) return
-        call one_term_pressure(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_POWER, -0.5_dp, 0.0_dp, inf(), &
+        call one_term_pressure(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_POWER, -0.5_dp, 0.0_dp, inf(), &
                                [0.5_dp, 1.0_dp], p, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'y(2)', 'y = 1, n < 0')
         if (allocated(error)) return
-        call one_term_pressure(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
+        call one_term_pressure(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
                                [0.5_dp], p, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'p', 'p size')
         if (allocated(error)) return
-        call one_term_displacement(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
+        call one_term_displacement(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
                                    [-1.0_dp, 1.0_dp], [0.5_dp, 0.5_dp], u, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'x(1)', 'x < 0')
         if (allocated(error)) return
-        call one_term_displacement(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
+        call one_term_displacement(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
                                    [1.0_dp, inf()], [0.5_dp, 0.5_dp], u, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'x(2)', 'x = inf')
         if (allocated(error)) return
-        call one_term_displacement(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, 2.0_dp, &
-                                   [1.0_dp, 2.5_dp], [0.5_dp, 0.5_dp], u, stat, msg)
+        call one_term_displacement(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, &
+                                   2.0_dp, [1.0_dp, 2.5_dp], [0.5_dp, 0.5_dp], u, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'x(2)', 'x beyond L')
         if (allocated(error)) return
-        call one_term_displacement(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
+        call one_term_displacement(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
                                    [1.0_dp, 1.0_dp], [0.5_dp, -0.1_dp], u, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'y(2)', 'y < 0')
         if (allocated(error)) return
-        call one_term_displacement(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
+        call one_term_displacement(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, 0.0_dp, inf(), &
                                    [1.0_dp, 1.0_dp], [0.5_dp], u, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'y, u', 'sizes')
         if (allocated(error)) return
-        call winkler_one_term(0.5_dp, 0.1_dp, 0.3_dp, SHAPE_LINEAR, 1.0_dp, k, stat, msg)
+        call winkler_one_term(0.5_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_LINEAR, 1.0_dp, k, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'n', 'winkler n')
         if (allocated(error)) return
-        call winkler_one_term(-1.0_dp, 0.1_dp, 0.3_dp, SHAPE_SINE, 0.0_dp, k, stat, msg)
+        call winkler_one_term(-1.0_dp, 0.1_dp, 0.3_dp, WALL_SHAPE_SINE, 0.0_dp, k, stat, msg)
         call expect_error(error, stat, msg, SEISPULSE_INVALID_INPUT, 'omega_ratio', 'winkler omega')
         if (allocated(error)) return
         call winkler_vy(0, 0.5_dp, 0.1_dp, 0.3_dp, k, stat, msg)

@@ -52,8 +52,8 @@ __all__ = ["SHAPES", "ShapeConstants", "OneTerm", "shape_constants", "one_term",
            "power_law_cutoff", "winkler_spring", "winkler_dashpot", "scott_spring", "vy_spring"]
 
 #: Shape functions of the one-term method (Fortran SHAPE_* codes).
-_SHAPE_CODES = {"linear": _f.SHAPE_LINEAR, "sine": _f.SHAPE_SINE,
-                "parabolic": _f.SHAPE_PARABOLIC, "power": _f.SHAPE_POWER}
+_SHAPE_CODES = {"linear": _f.WALL_SHAPE_LINEAR, "sine": _f.WALL_SHAPE_SINE,
+                "parabolic": _f.WALL_SHAPE_PARABOLIC, "power": _f.WALL_SHAPE_POWER}
 SHAPES = tuple(_SHAPE_CODES)
 
 ShapeConstants = namedtuple("ShapeConstants", ["shape", "n", "a_oc", "l_factor", "mass_factor",

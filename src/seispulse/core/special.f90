@@ -2,8 +2,8 @@
 !>
 !> The exponential "phi functions" phi_k(x) = sum_{j>=0} x^j/(j+k)! are the
 !> building blocks of every closed form for exponential pulses:
-!>   phi_1(x) = (e^x - 1)/x,  phi(x) = phi_2(x) = (e^x - 1 - x)/x^2,
-!>   chi(x) = phi_3(x) = (e^x - 1 - x - x^2/2)/x^3,   phi_k(0) = 1/k!.
+!>   phi_1(x) = (e^x - 1)/x,  phi2(x) = phi_2(x) = (e^x - 1 - x)/x^2,
+!>   phi3(x) = phi_3(x) = (e^x - 1 - x - x^2/2)/x^3,   phi_k(0) = 1/k!.
 !> Printed forms such as (e^x - 1 - x)/x^2 lose every digit for small |x|; here a
 !> series is used for |x| < 2 and recurrences built on expm1 elsewhere (at most a
 !> few ulps lost). For large positive x the scaled values e^(-x) phi_k(x) are
@@ -14,7 +14,7 @@ module seispulse_special
     implicit none
     private
 
-    public :: expm1, log1p, exp_phis, exp_phis_scaled, phi, chi, sin_pi, cos_pi, exp_expm1, &
+    public :: expm1, log1p, exp_phis, exp_phis_scaled, phi2, phi3, sin_pi, cos_pi, exp_expm1, &
               tau_minus_sinpi, pi, complex_phis
     public :: phi1, phi1_taylor, phi1_from_exp, inv_factorial
     public :: log1p_over_x, sinh_minus_x, x_minus_asinh
@@ -39,7 +39,7 @@ module seispulse_special
         1.0_dp / 51090942171709440000.0_dp, 1.0_dp / 1124000727777607680000.0_dp, &
         1.0_dp / 25852016738884976640000.0_dp, 1.0_dp / 620448401733239439360000.0_dp, &
         1.0_dp / 15511210043330985984000000.0_dp, 1.0_dp / 403291461126605635584000000.0_dp]
-    !> 1/(j+3)!, j = 0..23: Taylor coefficients of chi = phi_3.
+    !> 1/(j+3)!, j = 0..23: Taylor coefficients of phi_3.
     integer, parameter :: nchi = 23
     real(dp), parameter :: chi_coef(0:nchi) = inv_factorial(3:nchi + 3)
 
@@ -226,21 +226,21 @@ contains
         end if
     end function x_minus_asinh
 
-    !> phi(x) = (e^x - 1 - x)/x^2, phi(0) = 1/2 (x <= 700).
-    elemental function phi(x) result(y)
+    !> phi2(x) = (e^x - 1 - x)/x^2, phi2(0) = 1/2 (x <= 700).
+    elemental function phi2(x) result(y)
         real(dp), intent(in) :: x  !! argument
         real(dp) :: y
         real(dp) :: p1, p3
         call exp_phis(x, p1, y, p3)
-    end function phi
+    end function phi2
 
-    !> chi(x) = (e^x - 1 - x - x^2/2)/x^3, chi(0) = 1/6 (x <= 700).
-    elemental function chi(x) result(y)
+    !> phi3(x) = (e^x - 1 - x - x^2/2)/x^3, phi3(0) = 1/6 (x <= 700).
+    elemental function phi3(x) result(y)
         real(dp), intent(in) :: x  !! argument
         real(dp) :: y
         real(dp) :: p1, p2
         call exp_phis(x, p1, p2, y)
-    end function chi
+    end function phi3
 
     !> Taylor series of phi_3: the even and odd coefficients by two independent
     !> Horner chains in x^2 (half the latency of one chain); the number of terms

@@ -41,8 +41,8 @@ module seispulse_sliding_closed
     public :: rectangle_half, rectangle_full, triangle_half, spike_velocity_ratio
     public :: sliding_regime_name, sliding_mode_name
     public :: SLIDING_REGIME_NONE, SLIDING_REGIME_FORCED, SLIDING_REGIME_FREE
-    public :: SLIDING_MODE_NO_SLIDING, SLIDING_MODE_UNILATERAL, SLIDING_MODE_STICK, SLIDING_MODE_SLIP, SLIDING_MODE_STUCK, &
-              SLIDING_MODE_REVERSE_ONLY
+    public :: SLIDING_MODE_NO_SLIDING, SLIDING_MODE_UNILATERAL, SLIDING_MODE_STICK, &
+              SLIDING_MODE_SLIP, SLIDING_MODE_STUCK, SLIDING_MODE_REVERSE_ONLY
 
     integer, parameter :: SLIDING_REGIME_NONE = 0    !! no sliding (eta >= 1)
     integer, parameter :: SLIDING_REGIME_FORCED = 1  !! the slide stops during the pulse, tau_m <= 1
@@ -50,7 +50,7 @@ module seispulse_sliding_closed
 
     integer, parameter :: SLIDING_MODE_NO_SLIDING = 0    !! neither lobe starts a slide
     integer, parameter :: SLIDING_MODE_UNILATERAL = 1    !! forward slide only: eta2 >= 1
-    integer, parameter :: SLIDING_MODE_STICK = 2         !! the block sticks, then slides back (1.21a)
+    integer, parameter :: SLIDING_MODE_STICK = 2         !! sticks, then slides back (1.21a)
     integer, parameter :: SLIDING_MODE_SLIP = 3          !! it slides back at once (1.21b)
     integer, parameter :: SLIDING_MODE_STUCK = 4         !! eta2 < 1, but the forward slide outlasts
                                                  !! the reverse window (section 7)
@@ -87,7 +87,7 @@ module seispulse_sliding_closed
 
     !> A block on an incline hit by a pulse, in SI (section 7): along-plane slips.
     type :: sliding_block_t
-        integer :: mode = SLIDING_MODE_NO_SLIDING  !! MODE_* (a half cycle: no_sliding or unilateral)
+        integer :: mode = SLIDING_MODE_NO_SLIDING  !! SLIDING_MODE_* (half cycle: no sliding or unilateral)
         real(dp) :: eta1 = 0.0_dp          !! resistance to downhill sliding / A_g
         real(dp) :: eta2 = 0.0_dp          !! resistance to uphill sliding / A_g
         real(dp) :: t_y1 = 0.0_dp          !! downhill onset (s from the pulse start)

@@ -16,8 +16,8 @@ module seispulse_wall_table
     use seispulse_checks, only: outside
     use seispulse_format, only: real_str, int_str
     use seispulse_walls_vy, only: vy_rigid, vy_pressure
-    use seispulse_walls_one_term, only: one_term, one_term_t, one_term_pressure, SHAPE_SINE, &
-                                        SHAPE_POWER
+    use seispulse_walls_one_term, only: one_term, one_term_t, one_term_pressure, WALL_SHAPE_SINE, &
+                                        WALL_SHAPE_POWER
     use seispulse_codes, only: ec8_thrust, ec8_thrust_t, ec8_rigid_thrust, &
                                seed_whitman_increment, wood_thrust, WATER_DRY
     implicit none
@@ -262,9 +262,9 @@ contains
         shape = c%shape
         if (shape /= 0) return
         if (abs(c%n) > 0.0_dp) then
-            shape = SHAPE_POWER
+            shape = WALL_SHAPE_POWER
         else
-            shape = SHAPE_SINE
+            shape = WALL_SHAPE_SINE
         end if
     end function one_term_shape_of
 

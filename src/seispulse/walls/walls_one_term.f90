@@ -49,16 +49,16 @@ module seispulse_walls_one_term
     implicit none
     private
 
-    public :: SHAPE_LINEAR, SHAPE_SINE, SHAPE_PARABOLIC, SHAPE_POWER
+    public :: WALL_SHAPE_LINEAR, WALL_SHAPE_SINE, WALL_SHAPE_PARABOLIC, WALL_SHAPE_POWER
     public :: one_term_shape_t, one_term_t
     public :: one_term_shape, one_term, one_term_sweep, one_term_pressure, one_term_displacement
     public :: power_law_fundamental, power_law_cutoff, check_exponent
     public :: winkler_one_term, winkler_dashpot, winkler_scott, winkler_vy
 
-    integer, parameter :: SHAPE_LINEAR = 1     !! Phi = y/H (homogeneous soil)
-    integer, parameter :: SHAPE_SINE = 2       !! Phi = sin(pi y/2H) (homogeneous soil)
-    integer, parameter :: SHAPE_PARABOLIC = 3  !! Phi = (y/H)(2 - y/H) (homogeneous soil)
-    integer, parameter :: SHAPE_POWER = 4
+    integer, parameter :: WALL_SHAPE_LINEAR = 1     !! Phi = y/H (homogeneous soil)
+    integer, parameter :: WALL_SHAPE_SINE = 2       !! Phi = sin(pi y/2H) (homogeneous soil)
+    integer, parameter :: WALL_SHAPE_PARABOLIC = 3  !! Phi = (y/H)(2 - y/H) (homogeneous soil)
+    integer, parameter :: WALL_SHAPE_POWER = 4
         !! Phi = 1 - ((H - y)/H)^(2 - n), G ~ ((H - y)/H)^n (2.68)
 
     !> Above this (omega H/V_SH) the decay root is formed scaled (no overflow of its square).
@@ -78,7 +78,7 @@ module seispulse_walls_one_term
 
     !> Constants of a shape function (all dimensionless, real).
     type :: one_term_shape_t
-        integer :: shape = SHAPE_SINE          !! SHAPE_LINEAR .. SHAPE_POWER
+        integer :: shape = WALL_SHAPE_SINE          !! WALL_SHAPE_LINEAR .. WALL_SHAPE_POWER
         real(dp) :: n = 0.0_dp                 !! stiffness exponent (0 for shapes 1-3)
         real(dp) :: a_oc = 0.0_dp              !! cut-off frequency a_oc (2.43b/2.64a/2.69a)
         real(dp) :: l_factor = 0.0_dp
@@ -134,9 +134,9 @@ contains
     !> h/H = (5 + n)/(4(2 + n)) for the power law (the parabola is the power law at n = 0).
     pure subroutine one_term_shape(shape, n, c, stat, errmsg)
         integer, intent(in) :: shape
-            !! SHAPE_LINEAR, _SINE, _PARABOLIC or _POWER
+            !! WALL_SHAPE_LINEAR, _SINE, _PARABOLIC or _POWER
         real(dp), intent(in) :: n
-            !! exponent: 0 for shapes 1-3, (-1, 2) for SHAPE_POWER
+            !! exponent: 0 for shapes 1-3, (-1, 2) for WALL_SHAPE_POWER
         type(one_term_shape_t), intent(out) :: c           !! the constants
         integer, intent(out) :: stat
             !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
@@ -144,14 +144,14 @@ contains
         real(dp) :: a2
         stat = SEISPULSE_SUCCESS
         select case (shape)
-        case (SHAPE_LINEAR, SHAPE_SINE, SHAPE_PARABOLIC)
+        case (WALL_SHAPE_LINEAR, WALL_SHAPE_SINE, WALL_SHAPE_PARABOLIC)
             if (outside(n, 0.0_dp, 0.0_dp, .false., .false.)) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'n = '//real_str(n)// &
                                ': the linear, sine and parabolic shapes are for homogeneous '// &
                                'soil (n = 0); use the power-law shape for n different from 0')
                 return
             end if
-        case (SHAPE_POWER)
+        case (WALL_SHAPE_POWER)
             call check_exponent(n, stat, errmsg)
             if (stat /= SEISPULSE_SUCCESS) return
         case default
@@ -162,7 +162,7 @@ contains
         c%shape = shape
         c%n = n
         select case (shape)
-        case (SHAPE_LINEAR)
+        case (WALL_SHAPE_LINEAR)
             ! Table 2.1: int Phi'^2 = 1, int Phi^2 = 1/3, int Phi = 1/2, int Phi eta = 1/3
             c%a_oc = sqrt(3.0_dp)
             c%l_factor = 1.5_dp
@@ -170,7 +170,7 @@ contains
             c%s0 = 0.5_dp
             c%s1 = 1.0_dp/3.0_dp
             c%h_ratio = 2.0_dp/3.0_dp
-        case (SHAPE_SINE)
+        case (WALL_SHAPE_SINE)
             ! Table 2.1: int Phi'^2 = pi^2/8, int Phi^2 = 1/2, int Phi = 2/pi, int Phi eta = 4/pi^2
             c%a_oc = 0.5_dp*pi
             c%l_factor = 4.0_dp/pi
@@ -179,7 +179,7 @@ contains
             c%s1 = 4.0_dp/pi**2
             c%h_ratio = 2.0_dp/pi
         case default
-            ! (2.69a-c) with the power-law shape (2.68); SHAPE_PARABOLIC is n = 0 exactly
+            ! (2.69a-c) with the power-law shape (2.68); WALL_SHAPE_PARABOLIC is n = 0 exactly
             a2 = 1.5_dp*(5.0_dp - n)*(1.0_dp + n)/(3.0_dp - n)
             c%a_oc = sqrt(a2)
             c%l_factor = a2/(2.0_dp - n)
@@ -197,9 +197,9 @@ contains
         real(dp), intent(in) :: n, eta
         real(dp) :: phi
         select case (shape)
-        case (SHAPE_LINEAR)
+        case (WALL_SHAPE_LINEAR)
             phi = eta
-        case (SHAPE_SINE)
+        case (WALL_SHAPE_SINE)
             phi = sin(0.5_dp*pi*eta)
         case default
             ! (2.68) 1 - (1 - eta)^(2 - n), as -expm1 near the base (small eta)
@@ -244,9 +244,9 @@ contains
         real(dp), intent(in) :: delta
             !! loss factor, G* = G (1 + i delta), >= 0
         real(dp), intent(in) :: nu                         !! Poisson's ratio, [0, 0.5)
-        integer, intent(in) :: shape                       !! SHAPE_LINEAR .. SHAPE_POWER
+        integer, intent(in) :: shape                       !! WALL_SHAPE_LINEAR .. WALL_SHAPE_POWER
         real(dp), intent(in) :: n
-            !! stiffness exponent (0 unless SHAPE_POWER)
+            !! stiffness exponent (0 unless WALL_SHAPE_POWER)
         real(dp), intent(in) :: d_theta
             !! rotational flexibility H^2 G_H/K_R, >= 0 (+inf: hinge)
         real(dp), intent(in) :: l_over_h                   !! wall spacing L/H, > 0 (+inf: one wall)
@@ -266,7 +266,7 @@ contains
         real(dp), intent(in) :: omega_ratios(:)            !! omega/omega_ref, each >= 0
         real(dp), intent(in) :: delta                      !! loss factor, >= 0
         real(dp), intent(in) :: nu                         !! Poisson's ratio, [0, 0.5)
-        integer, intent(in) :: shape                       !! SHAPE_LINEAR .. SHAPE_POWER
+        integer, intent(in) :: shape                       !! WALL_SHAPE_LINEAR .. WALL_SHAPE_POWER
         real(dp), intent(in) :: n                          !! stiffness exponent
         real(dp), intent(in) :: d_theta                    !! rotational flexibility, >= 0
         real(dp), intent(in) :: l_over_h                   !! L/H, > 0 (+inf: one wall)
@@ -304,7 +304,7 @@ contains
         real(dp), intent(in) :: omega_ratio                !! omega/omega_ref, >= 0
         real(dp), intent(in) :: delta                      !! loss factor, >= 0
         real(dp), intent(in) :: nu                         !! Poisson's ratio, [0, 0.5)
-        integer, intent(in) :: shape                       !! SHAPE_LINEAR .. SHAPE_POWER
+        integer, intent(in) :: shape                       !! WALL_SHAPE_LINEAR .. WALL_SHAPE_POWER
         real(dp), intent(in) :: n                          !! stiffness exponent
         real(dp), intent(in) :: d_theta                    !! rotational flexibility, >= 0
         real(dp), intent(in) :: l_over_h                   !! L/H, > 0 (+inf: one wall)
@@ -348,7 +348,7 @@ contains
         real(dp), intent(in) :: omega_ratio                !! omega/omega_ref, >= 0
         real(dp), intent(in) :: delta                      !! loss factor, >= 0
         real(dp), intent(in) :: nu                         !! Poisson's ratio, [0, 0.5)
-        integer, intent(in) :: shape                       !! SHAPE_LINEAR .. SHAPE_POWER
+        integer, intent(in) :: shape                       !! WALL_SHAPE_LINEAR .. WALL_SHAPE_POWER
         real(dp), intent(in) :: n                          !! stiffness exponent
         real(dp), intent(in) :: d_theta                    !! rotational flexibility, >= 0
         real(dp), intent(in) :: l_over_h                   !! L/H, > 0 (+inf: one wall)
@@ -601,7 +601,7 @@ contains
         real(dp), intent(in) :: omega_ratio                !! omega/omega_ref, >= 0
         real(dp), intent(in) :: delta                      !! loss factor, >= 0
         real(dp), intent(in) :: nu                         !! Poisson's ratio, [0, 0.5)
-        integer, intent(in) :: shape                       !! SHAPE_LINEAR .. SHAPE_POWER
+        integer, intent(in) :: shape                       !! WALL_SHAPE_LINEAR .. WALL_SHAPE_POWER
         real(dp), intent(in) :: n                          !! stiffness exponent
         complex(dp), intent(out) :: k                      !! spring modulus, G_H/H (complex)
         integer, intent(out) :: stat
@@ -625,7 +625,7 @@ contains
         real(dp), intent(in) :: omega_ratio
             !! omega/omega_ref, at or above the cut-off
         real(dp), intent(in) :: nu                         !! Poisson's ratio, [0, 0.5)
-        integer, intent(in) :: shape                       !! SHAPE_LINEAR .. SHAPE_POWER
+        integer, intent(in) :: shape                       !! WALL_SHAPE_LINEAR .. WALL_SHAPE_POWER
         real(dp), intent(in) :: n                          !! stiffness exponent
         real(dp), intent(out) :: c                         !! dashpot, rho V_SH
         integer, intent(out) :: stat
