@@ -4,16 +4,16 @@
 module seispulse
     use seispulse_kinds, only: dp, ik
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
-                                SEISPULSE_NO_CONVERGENCE, SEISPULSE_NO_BRACKET, SEISPULSE_INTERNAL, &
-                                SEISPULSE_IO, SEISPULSE_NO_SOLUTION, status_name
+                                SEISPULSE_NO_CONVERGENCE, SEISPULSE_NO_BRACKET, &
+                                SEISPULSE_INTERNAL, SEISPULSE_IO, SEISPULSE_NO_SOLUTION, status_name
     use seispulse_checks, only: outside, finite_positive, finite_at_least, positive, in_open, &
                                 in_closed
     use seispulse_format, only: real_str, int_str
-    use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi2, phi3, sin_pi, cos_pi, &
-                                 complex_phis, phi1, phi1_taylor, phi1_from_exp, log1p_over_x, &
-                                 sinh_minus_x, x_minus_asinh, pi
-    use seispulse_divided_differences, only: exp_dd1, exp_dd2, exp_dd_pack, cexp_dd1, cexp_dd2_at0, &
-                                             cexp_dd2, cexp_dd3
+    use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi2, phi3, sin_pi, &
+                                 cos_pi, complex_phis, phi1, phi1_taylor, phi1_from_exp, &
+                                 log1p_over_x, sinh_minus_x, x_minus_asinh, pi
+    use seispulse_divided_differences, only: exp_dd1, exp_dd2, exp_dd_pack, cexp_dd1, &
+                                             cexp_dd2_at0, cexp_dd2, cexp_dd3
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
     use seispulse_lapack, only: solve_linear
     use seispulse_pulses, only: exp_pulse, exp_pulse_point, exp_pulse_peaks, &
@@ -45,10 +45,10 @@ module seispulse
                                         rocking_region_name, uplift_time, rocking_response, &
                                         stability_wall, stability_wall_inverse, overturn_boundary, &
                                         overturn_boundary_inverse, s1_s2_boundary, &
-                                        rocking_classify, critical_time, time_of_max, max_rotation, &
-                                        impact_time, rocking_summary, rocking_extremes, &
-                                        rect_time_of_max_normalized, rect_max_rotation_normalized, &
-                                        rect_impact_time_normalized
+                                        rocking_classify, critical_time, time_of_max, &
+                                        max_rotation, impact_time, rocking_summary, &
+                                        rocking_extremes, rect_time_of_max_normalized, &
+                                        rect_max_rotation_normalized, rect_impact_time_normalized
     use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rectangular_block, &
                                      symmetric_block, rocking_block_validate, rock_pulse, &
                                      rock_record, overturning_map, ROCK_RUN_REST, &
@@ -56,21 +56,23 @@ module seispulse
                                      ROCK_RUN_OVERTURN_ONE_IMPACT, ROCK_RUN_OVERTURN_MANY, &
                                      ROCK_RUN_TIME_LIMIT
     use seispulse_records, only: record_t, read_record, record_pga, pga_scale_factor, &
-                                 ground_motion, record_format_name, record_units_name, RECORD_AUTO, &
-                                 RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, RECORD_TIME_ACCEL, &
-                                 UNITS_G, UNITS_M_S2, UNITS_CM_S2, STANDARD_GRAVITY
-    use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, newmark_incline, &
-                                 newmark_block_validate, newmark_mode_name, newmark_method_name, &
-                                 newmark_mode_code, newmark_method_code, NEWMARK_DOWN, &
-                                 NEWMARK_BOTH, NEWMARK_ASYM, NEWMARK_EXACT, NEWMARK_SLAMMER
+                                 ground_motion, record_format_name, record_units_name, &
+                                 RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, &
+                                 RECORD_TIME_ACCEL, UNITS_G, UNITS_M_S2, UNITS_CM_S2, &
+                                 STANDARD_GRAVITY
+    use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, &
+                                 newmark_incline, newmark_block_validate, newmark_mode_name, &
+                                 newmark_method_name, newmark_mode_code, newmark_method_code, &
+                                 NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM, NEWMARK_EXACT, &
+                                 NEWMARK_SLAMMER
     use seispulse_sdof_sim, only: sdof_step_t, sdof_step, sdof_validate, sdof_response, &
                                   sdof_spectrum, pseudo_spectra, design_envelope, spectral_shape, &
                                   sdof_threads, SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES
     use seispulse_sdof_closed, only: dynamic_coefficient, harmonic_response, rect_pulse_response, &
                                      beta_pulse, impulse_max, impulse_response, &
                                      sdof_pulse_response, sdof_pulse_peaks, sdof_pulse_spectrum, &
-                                     BETA_HYSTERETIC, BETA_VISCOUS, HARMONIC_SINE, HARMONIC_COSINE, &
-                                     BETA_PULSE_TEXTBOOK, BETA_PULSE_EXACT
+                                     BETA_HYSTERETIC, BETA_VISCOUS, HARMONIC_SINE, &
+                                     HARMONIC_COSINE, BETA_PULSE_TEXTBOOK, BETA_PULSE_EXACT
     use seispulse_walls_common, only: wall_psi_t, wall_psi, free_field_frequencies
     use seispulse_walls_vy, only: vy_default_tol, vy_min_tol, vy_max_tol, vy_max_omega_ratio, &
                                   vy_rigid, vy_rigid_sweep, vy_pressure, vy_fields
