@@ -578,19 +578,19 @@ subroutine sp_rocking_block(which, x, y, z, g, out, stat, errmsg)
 end subroutine sp_rocking_block
 
 !> One run under a pulse (kind > 0, params packed as in pulse_from_params) or a record
-!> (kind = 0: accel(nrec), dt). opts = t_max (<= 0: none), theta0, omega0, rtol (<= 0:
+!> (kind = 0: accel(nrec) in units of g (m/s^2), dt; g is unused for a pulse). opts = t_max (<= 0: none), theta0, omega0, rtol (<= 0:
 !> the default).
 !> res = t_uplift, t_overturn, theta_max, theta_min, t_end, n_steps; impacts: the first
 !> min(n_imp, nmax) impact times.
-subroutine sp_rock(kind, params, nrec, accel, dt, blkv, linearized, opts, ngrid, tg, thg, omg, &
-                   nmax, impacts, n_imp, outcome, res, stat, errmsg)
+subroutine sp_rock(kind, params, nrec, accel, dt, g, blkv, linearized, opts, ngrid, tg, thg, &
+                   omg, nmax, impacts, n_imp, outcome, res, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_pulses, only: pulse_from_params
     use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rock_pulse, rock_record
     implicit none
     integer, intent(in) :: kind, nrec, linearized, ngrid, nmax
-    real(dp), intent(in) :: params(9), accel(nrec), dt, blkv(4), opts(4), tg(ngrid)
+    real(dp), intent(in) :: params(9), accel(nrec), dt, g, blkv(4), opts(4), tg(ngrid)
     real(dp), intent(out) :: thg(ngrid), omg(ngrid), impacts(nmax), res(6)
     integer, intent(out) :: n_imp, outcome, stat
     character(len=256), intent(out) :: errmsg
@@ -620,11 +620,11 @@ subroutine sp_rock(kind, params, nrec, accel, dt, blkv, linearized, opts, ngrid,
         end if
     else
         if (ngrid > 0) then
-            call rock_record(blk, accel, dt, run, stat, errmsg, tg, thg, omg, t_max=t_max, &
+            call rock_record(blk, accel, dt, g, run, stat, errmsg, tg, thg, omg, t_max=t_max, &
                              theta0=opts(2), omega0=opts(3), rtol=rtol)
         else
-            call rock_record(blk, accel, dt, run, stat, errmsg, t_max=t_max, theta0=opts(2), &
-                             omega0=opts(3), rtol=rtol)
+            call rock_record(blk, accel, dt, g, run, stat, errmsg, t_max=t_max, &
+                             theta0=opts(2), omega0=opts(3), rtol=rtol)
         end if
     end if
     if (stat /= SEISPULSE_SUCCESS) return

@@ -274,8 +274,10 @@ def simulate(block, pulse=None, *, accel=None, dt=None, linearized=False, t=None
     blkv = np.array([block.alpha, block.p, block.e, block.g])
     nmax = 256
     while True:
+        # accel in m/s^2 is a record in units of g = 1 m/s^2: the library's g * accel is
+        # then accel itself, bit for bit
         thg, omg, impacts, n_imp, outcome, res, stat, msg = sp_rock(
-            kind, params, rec, step, blkv, int(linearized), opts, grid, nmax)
+            kind, params, rec, step, 1.0, blkv, int(linearized), opts, grid, nmax)
         _core.raise_for_status(stat, msg, rename={"t_grid": "t"})
         if n_imp <= nmax:
             break

@@ -58,7 +58,7 @@ module seispulse_rocking_sim
                                 check_output_grid
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
                                 set_error
-    use seispulse_format, only: real_str
+    use seispulse_format, only: real_str, int_str
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_special, only: pi
     use seispulse_pulses, only: pulse_t, pulse_validate, pulse_at, &
@@ -66,7 +66,7 @@ module seispulse_rocking_sim
                                 PULSE_EXPONENTIAL, PULSE_HALF_SINE, PULSE_SINE_CYCLE, &
                                 PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
                                 PULSE_RICKER
-    use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_pieces_check, &
+    use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_step_check, &
                                 pulse_pieces_init, record_pieces_init, next_piece, &
                                 exceeds, onset_on_piece
     implicit none
@@ -417,14 +417,18 @@ contains
                       theta_grid, omega_grid)
     end subroutine rock_pulse
 
-    !> Rocking response to an accelerogram: accel(i) (m/s^2) at t = (i - 1) dt, linear in
-    !> between, a_g = 0 after the last sample (a jump if it is not 0). Everything else
+    !> Rocking response to an accelerogram: accel(i) (g) at t = (i - 1) dt, linear in
+    !> between, a_g = 0 after the last sample (a jump if it is not 0). The samples are
+    !> taken to m/s^2 as g * accel(i) (`g`: the unit of the record, usually blk%g; the
+    !> block's own blk%g sets the uplift threshold and the equation of motion; a record
+    !> already in m/s^2 is one in units of g = 1 m/s^2, taken as it is). Everything else
     !> as `rock_pulse`; the step budget grows with the record (40 per sample).
-    subroutine rock_record(blk, accel, dt, run, stat, errmsg, t_grid, theta_grid, omega_grid, &
-                           t_max, theta0, omega0, rtol)
+    subroutine rock_record(blk, accel, dt, g, run, stat, errmsg, t_grid, theta_grid, &
+                           omega_grid, t_max, theta0, omega0, rtol)
         type(rocking_block_t), intent(in) :: blk              !! the block
-        real(dp), intent(in) :: accel(:)                      !! ground acceleration (m/s^2), finite
+        real(dp), intent(in) :: accel(:)                      !! ground acceleration (g), finite
         real(dp), intent(in) :: dt                            !! sampling interval (s), > 0
+        real(dp), intent(in) :: g                             !! gravity (m/s^2), > 0
         type(rocking_run_t), intent(out) :: run               !! the result
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
@@ -439,20 +443,28 @@ contains
         type(ground_t) :: gr
         type(piece_iter_t) :: it
         real(dp) :: th0, om0
+        real(dp), allocatable :: accel_si(:)
+        integer :: i
 
         call empty_run(run)
         call rocking_block_validate(blk, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (.not. finite_positive(dt)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'dt = '//real_str(dt) &
-                           //': must be a finite number > 0 (s)')
-            return
-        end if
-        call record_pieces_check(accel, stat, errmsg)
+        call record_step_check(accel, dt, g, stat, errmsg)   ! dt, g; not empty, finite
         if (stat /= SEISPULSE_SUCCESS) return
         call check_options(t_grid, theta_grid, omega_grid, t_max, theta0, omega0, rtol, &
                            th0, om0, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
+        ! the samples in m/s^2 (g = 1: the very same numbers)
+        allocate(accel_si(size(accel)))
+        do i = 1, size(accel)
+            accel_si(i) = g * accel(i)
+            if (.not. ieee_is_finite(accel_si(i))) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel('//int_str(i) &
+                               //') = '//real_str(accel(i))//': g * accel overflows (g = ' &
+                               //real_str(g)//' m/s^2)')
+                return
+            end if
+        end do
         call setup_sim(blk, sim, t_max, rtol)
         if (real(steps_per_sample, dp) * size(accel) > real(huge(1) - max_steps_default, dp)) then
             sim%max_steps = huge(1)
@@ -461,7 +473,7 @@ contains
         end if
         gr%src = GR_RECORD
         call record_pieces_init(it, size(accel), dt)
-        call simulate(sim, gr, it, accel, th0, om0, run, stat, errmsg, t_grid, &
+        call simulate(sim, gr, it, accel_si, th0, om0, run, stat, errmsg, t_grid, &
                       theta_grid, omega_grid)
     end subroutine rock_record
 
