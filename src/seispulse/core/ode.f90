@@ -39,7 +39,9 @@ module seispulse_ode
     end type ode_system
 
     abstract interface
-        !> dydt = f(t, y).
+        !> dydt = f(t, y). For a few states, write dydt in one assignment from a local
+        !> array: the step reads the components two at a time, and a pair of separate
+        !> scalar stores read back as one pair stalls the processor.
         subroutine ode_rhs(self, t, y, dydt)
             import :: ode_system, dp
             class(ode_system), intent(inout) :: self  !! the system and its parameters
@@ -71,9 +73,9 @@ module seispulse_ode
         integer :: n = 0                      !! state dimension
         real(dp) :: rtol = 1.0e-6_dp          !! relative tolerance
         real(dp), allocatable :: atol(:)      !! absolute tolerances, n
-        real(dp), allocatable :: k(:, :)      !! stages, n x 16
-        real(dp), allocatable :: ys(:)        !! work, n
-        real(dp), allocatable :: w5(:), w3(:) !! work, n
+        real(dp), allocatable :: k(:, :)      !! stages, n2 x 16 (n2: n rounded up to even)
+        real(dp), allocatable :: ys(:), yp(:) !! work, n2
+        real(dp), allocatable :: w5(:), w3(:) !! work, n2
         type(ode_dense_t) :: dense            !! dense output of the last step (after `dense`)
     contains
         procedure :: init => dop853_init
@@ -232,6 +234,7 @@ contains
         real(dp), intent(in) :: atol(:)                       !! absolute tolerances (n), >= 0
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        integer :: n2
         stat = SEISPULSE_SUCCESS
         if (n < 1) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'n: the state dimension ' &
@@ -248,11 +251,14 @@ contains
             return
         end if
         if (self%n /= n .or. .not. allocated(self%k)) then
-            if (allocated(self%k)) deallocate(self%k, self%ys, self%w5, self%w3, &
+            if (allocated(self%k)) deallocate(self%k, self%ys, self%yp, self%w5, self%w3, &
                                               self%atol, self%dense%r, self%dense%y0)
-            allocate(self%k(n, 16), self%ys(n), self%w5(n), self%w3(n), &
+            n2 = n + mod(n, 2)
+            allocate(self%k(n2, 16), self%ys(n2), self%yp(n2), self%w5(n2), self%w3(n2), &
                      self%atol(n), self%dense%r(n, 7), self%dense%y0(n))
             self%k = 0.0_dp
+            self%ys = 0.0_dp
+            self%yp = 0.0_dp
             self%dense%r = 0.0_dp
             self%dense%y0 = 0.0_dp
         end if
@@ -269,95 +275,156 @@ contains
         class(ode_dop853_t), intent(inout) :: self  !! the integrator (initialised)
         class(ode_system), intent(inout) :: sys     !! the system
         real(dp), intent(in) :: t                   !! start of the step
-        real(dp), intent(in) :: y(:)                !! state at t, n
-        real(dp), intent(in) :: f(:)                !! f(t, y), n
+        real(dp), contiguous, intent(in) :: y(:)        !! state at t, n
+        real(dp), contiguous, intent(in) :: f(:)        !! f(t, y), n
         real(dp), intent(in) :: h                   !! step size, t_new - t
         real(dp), intent(in) :: t_new               !! end of the step
-        real(dp), intent(out) :: y_new(:)           !! state at t_new, n
-        real(dp), intent(out) :: f_new(:)           !! f(t_new, y_new), n
+        real(dp), contiguous, intent(out) :: y_new(:)    !! state at t_new, n
+        real(dp), contiguous, intent(out) :: f_new(:)    !! f(t_new, y_new), n
         real(dp), intent(out) :: err                !! error norm
-        call step_kernel(self%n, sys, t, y, f, h, t_new, y_new, f_new, self%k, self%ys, &
-                         self%w5, self%w3, self%atol, self%rtol, err)
+        call step_kernel(self%n, size(self%ys), sys, t, y, f, h, t_new, y_new, f_new, self%k, &
+                         self%ys, self%yp, self%w5, self%w3, self%atol, self%rtol, err)
     end subroutine dop853_step
 
-    !> `step` on explicit-shape arrays. Each stage is one array expression: a single loop
-    !> over the components with the sum (in the order of j) in a register, and the
-    !> coefficients compile-time constants; small systems run as fast as a hand-written
-    !> step. Zero coefficients are kept, so that the sums are those of the plain loops.
-    subroutine step_kernel(n, sys, t, y, f, h, t_new, y_new, f_new, k, ys, w5, w3, atol, &
-                           rtol, err)
-        integer, intent(in) :: n
+    !> `step` on explicit-shape arrays of n2 = n rounded up to even rows (the extra row,
+    !> if any, stays 0). Each stage is one array expression on two components at a time
+    !> (constant extent: one SIMD register), the sum in the order of j, the coefficients
+    !> compile-time constants, zero ones kept (the sums of the plain loops, bit for bit).
+    subroutine step_kernel(n, n2, sys, t, y, f, h, t_new, y_new, f_new, k, ys, yp, w5, w3, &
+                           atol, rtol, err)
+        integer, intent(in) :: n, n2
         class(ode_system), intent(inout) :: sys
         real(dp), intent(in) :: t, y(n), f(n), h, t_new, atol(n), rtol
         real(dp), intent(out) :: y_new(n), f_new(n), err
-        real(dp), intent(inout) :: k(n, 16), ys(n), w5(n), w3(n)
+        real(dp), intent(inout) :: k(n2, 16), ys(n2), yp(n2), w5(n2), w3(n2)
         real(dp) :: n5, n3, e5, e3, sc
-        integer :: m
-        k(:, 1) = f
-        ys = y + (h * dop_a(2, 1)) * k(:, 1)
-        call sys%rhs(t + dop_c(2) * h, ys, k(:, 2))
-        ys = y + (h * dop_a(3, 1)) * k(:, 1) + (h * dop_a(3, 2)) * k(:, 2)
-        call sys%rhs(t + dop_c(3) * h, ys, k(:, 3))
-        ys = y + (h * dop_a(4, 1)) * k(:, 1) + (h * dop_a(4, 2)) * k(:, 2) &
-            + (h * dop_a(4, 3)) * k(:, 3)
-        call sys%rhs(t + dop_c(4) * h, ys, k(:, 4))
-        ys = y + (h * dop_a(5, 1)) * k(:, 1) + (h * dop_a(5, 2)) * k(:, 2) &
-            + (h * dop_a(5, 3)) * k(:, 3) + (h * dop_a(5, 4)) * k(:, 4)
-        call sys%rhs(t + dop_c(5) * h, ys, k(:, 5))
-        ys = y + (h * dop_a(6, 1)) * k(:, 1) + (h * dop_a(6, 2)) * k(:, 2) &
-            + (h * dop_a(6, 3)) * k(:, 3) + (h * dop_a(6, 4)) * k(:, 4) &
-            + (h * dop_a(6, 5)) * k(:, 5)
-        call sys%rhs(t + dop_c(6) * h, ys, k(:, 6))
-        ys = y + (h * dop_a(7, 1)) * k(:, 1) + (h * dop_a(7, 2)) * k(:, 2) &
-            + (h * dop_a(7, 3)) * k(:, 3) + (h * dop_a(7, 4)) * k(:, 4) &
-            + (h * dop_a(7, 5)) * k(:, 5) + (h * dop_a(7, 6)) * k(:, 6)
-        call sys%rhs(t + dop_c(7) * h, ys, k(:, 7))
-        ys = y + (h * dop_a(8, 1)) * k(:, 1) + (h * dop_a(8, 2)) * k(:, 2) &
-            + (h * dop_a(8, 3)) * k(:, 3) + (h * dop_a(8, 4)) * k(:, 4) &
-            + (h * dop_a(8, 5)) * k(:, 5) + (h * dop_a(8, 6)) * k(:, 6) &
-            + (h * dop_a(8, 7)) * k(:, 7)
-        call sys%rhs(t + dop_c(8) * h, ys, k(:, 8))
-        ys = y + (h * dop_a(9, 1)) * k(:, 1) + (h * dop_a(9, 2)) * k(:, 2) &
-            + (h * dop_a(9, 3)) * k(:, 3) + (h * dop_a(9, 4)) * k(:, 4) &
-            + (h * dop_a(9, 5)) * k(:, 5) + (h * dop_a(9, 6)) * k(:, 6) &
-            + (h * dop_a(9, 7)) * k(:, 7) + (h * dop_a(9, 8)) * k(:, 8)
-        call sys%rhs(t + dop_c(9) * h, ys, k(:, 9))
-        ys = y + (h * dop_a(10, 1)) * k(:, 1) + (h * dop_a(10, 2)) * k(:, 2) &
-            + (h * dop_a(10, 3)) * k(:, 3) + (h * dop_a(10, 4)) * k(:, 4) &
-            + (h * dop_a(10, 5)) * k(:, 5) + (h * dop_a(10, 6)) * k(:, 6) &
-            + (h * dop_a(10, 7)) * k(:, 7) + (h * dop_a(10, 8)) * k(:, 8) &
-            + (h * dop_a(10, 9)) * k(:, 9)
-        call sys%rhs(t + dop_c(10) * h, ys, k(:, 10))
-        ys = y + (h * dop_a(11, 1)) * k(:, 1) + (h * dop_a(11, 2)) * k(:, 2) &
-            + (h * dop_a(11, 3)) * k(:, 3) + (h * dop_a(11, 4)) * k(:, 4) &
-            + (h * dop_a(11, 5)) * k(:, 5) + (h * dop_a(11, 6)) * k(:, 6) &
-            + (h * dop_a(11, 7)) * k(:, 7) + (h * dop_a(11, 8)) * k(:, 8) &
-            + (h * dop_a(11, 9)) * k(:, 9) + (h * dop_a(11, 10)) * k(:, 10)
-        call sys%rhs(t + dop_c(11) * h, ys, k(:, 11))
-        ys = y + (h * dop_a(12, 1)) * k(:, 1) + (h * dop_a(12, 2)) * k(:, 2) &
-            + (h * dop_a(12, 3)) * k(:, 3) + (h * dop_a(12, 4)) * k(:, 4) &
-            + (h * dop_a(12, 5)) * k(:, 5) + (h * dop_a(12, 6)) * k(:, 6) &
-            + (h * dop_a(12, 7)) * k(:, 7) + (h * dop_a(12, 8)) * k(:, 8) &
-            + (h * dop_a(12, 9)) * k(:, 9) + (h * dop_a(12, 10)) * k(:, 10) &
-            + (h * dop_a(12, 11)) * k(:, 11)
-        call sys%rhs(t_new, ys, k(:, 12))
-        ys = 0.0_dp + dop_b(1) * k(:, 1) + dop_b(2) * k(:, 2) + dop_b(3) * k(:, 3) &
-            + dop_b(4) * k(:, 4) + dop_b(5) * k(:, 5) + dop_b(6) * k(:, 6) + dop_b(7) * k(:, 7) &
-            + dop_b(8) * k(:, 8) + dop_b(9) * k(:, 9) + dop_b(10) * k(:, 10) &
-            + dop_b(11) * k(:, 11) + dop_b(12) * k(:, 12)
-        y_new = y + h * ys
+        integer :: m, mb
+        ! copies two at a time (a library call per copy costs more for a few states)
+        do m = 1, n - 1, 2
+            mb = m + 1
+            yp(m:mb) = y(m:mb)
+            k(m:mb, 1) = f(m:mb)
+        end do
+        if (n < n2) then
+            yp(n) = y(n)
+            k(n, 1) = f(n)
+        end if
+        do m = 1, n2, 2
+            mb = m + 1
+            ys(m:mb) = yp(m:mb) + (h * dop_a(2, 1)) * k(m:mb, 1)
+        end do
+        call sys%rhs(t + dop_c(2) * h, ys(1:n), k(1:n, 2))
+        do m = 1, n2, 2
+            mb = m + 1
+            ys(m:mb) = yp(m:mb) + (h * dop_a(3, 1)) * k(m:mb, 1) &
+                + (h * dop_a(3, 2)) * k(m:mb, 2)
+        end do
+        call sys%rhs(t + dop_c(3) * h, ys(1:n), k(1:n, 3))
+        do m = 1, n2, 2
+            mb = m + 1
+            ys(m:mb) = yp(m:mb) + (h * dop_a(4, 1)) * k(m:mb, 1) &
+                + (h * dop_a(4, 2)) * k(m:mb, 2) + (h * dop_a(4, 3)) * k(m:mb, 3)
+        end do
+        call sys%rhs(t + dop_c(4) * h, ys(1:n), k(1:n, 4))
+        do m = 1, n2, 2
+            mb = m + 1
+            ys(m:mb) = yp(m:mb) + (h * dop_a(5, 1)) * k(m:mb, 1) &
+                + (h * dop_a(5, 2)) * k(m:mb, 2) + (h * dop_a(5, 3)) * k(m:mb, 3) &
+                + (h * dop_a(5, 4)) * k(m:mb, 4)
+        end do
+        call sys%rhs(t + dop_c(5) * h, ys(1:n), k(1:n, 5))
+        do m = 1, n2, 2
+            mb = m + 1
+            ys(m:mb) = yp(m:mb) + (h * dop_a(6, 1)) * k(m:mb, 1) &
+                + (h * dop_a(6, 2)) * k(m:mb, 2) + (h * dop_a(6, 3)) * k(m:mb, 3) &
+                + (h * dop_a(6, 4)) * k(m:mb, 4) + (h * dop_a(6, 5)) * k(m:mb, 5)
+        end do
+        call sys%rhs(t + dop_c(6) * h, ys(1:n), k(1:n, 6))
+        do m = 1, n2, 2
+            mb = m + 1
+            ys(m:mb) = yp(m:mb) + (h * dop_a(7, 1)) * k(m:mb, 1) &
+                + (h * dop_a(7, 2)) * k(m:mb, 2) + (h * dop_a(7, 3)) * k(m:mb, 3) &
+                + (h * dop_a(7, 4)) * k(m:mb, 4) + (h * dop_a(7, 5)) * k(m:mb, 5) &
+                + (h * dop_a(7, 6)) * k(m:mb, 6)
+        end do
+        call sys%rhs(t + dop_c(7) * h, ys(1:n), k(1:n, 7))
+        do m = 1, n2, 2
+            mb = m + 1
+            ys(m:mb) = yp(m:mb) + (h * dop_a(8, 1)) * k(m:mb, 1) &
+                + (h * dop_a(8, 2)) * k(m:mb, 2) + (h * dop_a(8, 3)) * k(m:mb, 3) &
+                + (h * dop_a(8, 4)) * k(m:mb, 4) + (h * dop_a(8, 5)) * k(m:mb, 5) &
+                + (h * dop_a(8, 6)) * k(m:mb, 6) + (h * dop_a(8, 7)) * k(m:mb, 7)
+        end do
+        call sys%rhs(t + dop_c(8) * h, ys(1:n), k(1:n, 8))
+        do m = 1, n2, 2
+            mb = m + 1
+            ys(m:mb) = yp(m:mb) + (h * dop_a(9, 1)) * k(m:mb, 1) &
+                + (h * dop_a(9, 2)) * k(m:mb, 2) + (h * dop_a(9, 3)) * k(m:mb, 3) &
+                + (h * dop_a(9, 4)) * k(m:mb, 4) + (h * dop_a(9, 5)) * k(m:mb, 5) &
+                + (h * dop_a(9, 6)) * k(m:mb, 6) + (h * dop_a(9, 7)) * k(m:mb, 7) &
+                + (h * dop_a(9, 8)) * k(m:mb, 8)
+        end do
+        call sys%rhs(t + dop_c(9) * h, ys(1:n), k(1:n, 9))
+        do m = 1, n2, 2
+            mb = m + 1
+            ys(m:mb) = yp(m:mb) + (h * dop_a(10, 1)) * k(m:mb, 1) &
+                + (h * dop_a(10, 2)) * k(m:mb, 2) + (h * dop_a(10, 3)) * k(m:mb, 3) &
+                + (h * dop_a(10, 4)) * k(m:mb, 4) + (h * dop_a(10, 5)) * k(m:mb, 5) &
+                + (h * dop_a(10, 6)) * k(m:mb, 6) + (h * dop_a(10, 7)) * k(m:mb, 7) &
+                + (h * dop_a(10, 8)) * k(m:mb, 8) + (h * dop_a(10, 9)) * k(m:mb, 9)
+        end do
+        call sys%rhs(t + dop_c(10) * h, ys(1:n), k(1:n, 10))
+        do m = 1, n2, 2
+            mb = m + 1
+            ys(m:mb) = yp(m:mb) + (h * dop_a(11, 1)) * k(m:mb, 1) &
+                + (h * dop_a(11, 2)) * k(m:mb, 2) + (h * dop_a(11, 3)) * k(m:mb, 3) &
+                + (h * dop_a(11, 4)) * k(m:mb, 4) + (h * dop_a(11, 5)) * k(m:mb, 5) &
+                + (h * dop_a(11, 6)) * k(m:mb, 6) + (h * dop_a(11, 7)) * k(m:mb, 7) &
+                + (h * dop_a(11, 8)) * k(m:mb, 8) + (h * dop_a(11, 9)) * k(m:mb, 9) &
+                + (h * dop_a(11, 10)) * k(m:mb, 10)
+        end do
+        call sys%rhs(t + dop_c(11) * h, ys(1:n), k(1:n, 11))
+        do m = 1, n2, 2
+            mb = m + 1
+            ys(m:mb) = yp(m:mb) + (h * dop_a(12, 1)) * k(m:mb, 1) &
+                + (h * dop_a(12, 2)) * k(m:mb, 2) + (h * dop_a(12, 3)) * k(m:mb, 3) &
+                + (h * dop_a(12, 4)) * k(m:mb, 4) + (h * dop_a(12, 5)) * k(m:mb, 5) &
+                + (h * dop_a(12, 6)) * k(m:mb, 6) + (h * dop_a(12, 7)) * k(m:mb, 7) &
+                + (h * dop_a(12, 8)) * k(m:mb, 8) + (h * dop_a(12, 9)) * k(m:mb, 9) &
+                + (h * dop_a(12, 10)) * k(m:mb, 10) + (h * dop_a(12, 11)) * k(m:mb, 11)
+        end do
+        call sys%rhs(t_new, ys(1:n), k(1:n, 12))
+        do m = 1, n2, 2
+            mb = m + 1
+            ys(m:mb) = 0.0_dp + dop_b(1) * k(m:mb, 1) + dop_b(2) * k(m:mb, 2) &
+                + dop_b(3) * k(m:mb, 3) + dop_b(4) * k(m:mb, 4) + dop_b(5) * k(m:mb, 5) &
+                + dop_b(6) * k(m:mb, 6) + dop_b(7) * k(m:mb, 7) + dop_b(8) * k(m:mb, 8) &
+                + dop_b(9) * k(m:mb, 9) + dop_b(10) * k(m:mb, 10) + dop_b(11) * k(m:mb, 11) &
+                + dop_b(12) * k(m:mb, 12)
+        end do
+        y_new = y + h * ys(1:n)
         call sys%rhs(t_new, y_new, f_new)
-        k(:, 13) = f_new
-        w5 = 0.0_dp + dop_e5(1) * k(:, 1) + dop_e5(2) * k(:, 2) + dop_e5(3) * k(:, 3) &
-            + dop_e5(4) * k(:, 4) + dop_e5(5) * k(:, 5) + dop_e5(6) * k(:, 6) &
-            + dop_e5(7) * k(:, 7) + dop_e5(8) * k(:, 8) + dop_e5(9) * k(:, 9) &
-            + dop_e5(10) * k(:, 10) + dop_e5(11) * k(:, 11) + dop_e5(12) * k(:, 12) &
-            + dop_e5(13) * k(:, 13)
-        w3 = 0.0_dp + dop_e3(1) * k(:, 1) + dop_e3(2) * k(:, 2) + dop_e3(3) * k(:, 3) &
-            + dop_e3(4) * k(:, 4) + dop_e3(5) * k(:, 5) + dop_e3(6) * k(:, 6) &
-            + dop_e3(7) * k(:, 7) + dop_e3(8) * k(:, 8) + dop_e3(9) * k(:, 9) &
-            + dop_e3(10) * k(:, 10) + dop_e3(11) * k(:, 11) + dop_e3(12) * k(:, 12) &
-            + dop_e3(13) * k(:, 13)
+        do m = 1, n - 1, 2
+            mb = m + 1
+            k(m:mb, 13) = f_new(m:mb)
+        end do
+        if (n < n2) k(n, 13) = f_new(n)
+        do m = 1, n2, 2
+            mb = m + 1
+            w5(m:mb) = 0.0_dp + dop_e5(1) * k(m:mb, 1) + dop_e5(2) * k(m:mb, 2) &
+                + dop_e5(3) * k(m:mb, 3) + dop_e5(4) * k(m:mb, 4) + dop_e5(5) * k(m:mb, 5) &
+                + dop_e5(6) * k(m:mb, 6) + dop_e5(7) * k(m:mb, 7) + dop_e5(8) * k(m:mb, 8) &
+                + dop_e5(9) * k(m:mb, 9) + dop_e5(10) * k(m:mb, 10) + dop_e5(11) * k(m:mb, 11) &
+                + dop_e5(12) * k(m:mb, 12) + dop_e5(13) * k(m:mb, 13)
+        end do
+        do m = 1, n2, 2
+            mb = m + 1
+            w3(m:mb) = 0.0_dp + dop_e3(1) * k(m:mb, 1) + dop_e3(2) * k(m:mb, 2) &
+                + dop_e3(3) * k(m:mb, 3) + dop_e3(4) * k(m:mb, 4) + dop_e3(5) * k(m:mb, 5) &
+                + dop_e3(6) * k(m:mb, 6) + dop_e3(7) * k(m:mb, 7) + dop_e3(8) * k(m:mb, 8) &
+                + dop_e3(9) * k(m:mb, 9) + dop_e3(10) * k(m:mb, 10) + dop_e3(11) * k(m:mb, 11) &
+                + dop_e3(12) * k(m:mb, 12) + dop_e3(13) * k(m:mb, 13)
+        end do
         n5 = 0.0_dp
         n3 = 0.0_dp
         do m = 1, n
@@ -375,68 +442,68 @@ contains
     end subroutine step_kernel
 
     !> `dense_setup` on explicit-shape arrays (as `step_kernel`).
-    subroutine dense_kernel(n, sys, t, y, f, h, y_new, f_new, k, ys, r)
-        integer, intent(in) :: n
+    subroutine dense_kernel(n, n2, sys, t, y, f, h, y_new, f_new, k, ys, r)
+        integer, intent(in) :: n, n2
         class(ode_system), intent(inout) :: sys
         real(dp), intent(in) :: t, y(n), f(n), h, y_new(n), f_new(n)
-        real(dp), intent(inout) :: k(n, 16), ys(n)
+        real(dp), intent(inout) :: k(n2, 16), ys(n2)
         real(dp), intent(out) :: r(n, 7)
-        ys = y + (h * dop_a(14, 1)) * k(:, 1) + (h * dop_a(14, 2)) * k(:, 2) &
-            + (h * dop_a(14, 3)) * k(:, 3) + (h * dop_a(14, 4)) * k(:, 4) &
-            + (h * dop_a(14, 5)) * k(:, 5) + (h * dop_a(14, 6)) * k(:, 6) &
-            + (h * dop_a(14, 7)) * k(:, 7) + (h * dop_a(14, 8)) * k(:, 8) &
-            + (h * dop_a(14, 9)) * k(:, 9) + (h * dop_a(14, 10)) * k(:, 10) &
-            + (h * dop_a(14, 11)) * k(:, 11) + (h * dop_a(14, 12)) * k(:, 12) &
-            + (h * dop_a(14, 13)) * k(:, 13)
-        call sys%rhs(t + dop_c(14) * h, ys, k(:, 14))
-        ys = y + (h * dop_a(15, 1)) * k(:, 1) + (h * dop_a(15, 2)) * k(:, 2) &
-            + (h * dop_a(15, 3)) * k(:, 3) + (h * dop_a(15, 4)) * k(:, 4) &
-            + (h * dop_a(15, 5)) * k(:, 5) + (h * dop_a(15, 6)) * k(:, 6) &
-            + (h * dop_a(15, 7)) * k(:, 7) + (h * dop_a(15, 8)) * k(:, 8) &
-            + (h * dop_a(15, 9)) * k(:, 9) + (h * dop_a(15, 10)) * k(:, 10) &
-            + (h * dop_a(15, 11)) * k(:, 11) + (h * dop_a(15, 12)) * k(:, 12) &
-            + (h * dop_a(15, 13)) * k(:, 13) + (h * dop_a(15, 14)) * k(:, 14)
-        call sys%rhs(t + dop_c(15) * h, ys, k(:, 15))
-        ys = y + (h * dop_a(16, 1)) * k(:, 1) + (h * dop_a(16, 2)) * k(:, 2) &
-            + (h * dop_a(16, 3)) * k(:, 3) + (h * dop_a(16, 4)) * k(:, 4) &
-            + (h * dop_a(16, 5)) * k(:, 5) + (h * dop_a(16, 6)) * k(:, 6) &
-            + (h * dop_a(16, 7)) * k(:, 7) + (h * dop_a(16, 8)) * k(:, 8) &
-            + (h * dop_a(16, 9)) * k(:, 9) + (h * dop_a(16, 10)) * k(:, 10) &
-            + (h * dop_a(16, 11)) * k(:, 11) + (h * dop_a(16, 12)) * k(:, 12) &
-            + (h * dop_a(16, 13)) * k(:, 13) + (h * dop_a(16, 14)) * k(:, 14) &
-            + (h * dop_a(16, 15)) * k(:, 15)
-        call sys%rhs(t + dop_c(16) * h, ys, k(:, 16))
+        ys(:n) = y + (h * dop_a(14, 1)) * k(:n, 1) + (h * dop_a(14, 2)) * k(:n, 2) &
+            + (h * dop_a(14, 3)) * k(:n, 3) + (h * dop_a(14, 4)) * k(:n, 4) &
+            + (h * dop_a(14, 5)) * k(:n, 5) + (h * dop_a(14, 6)) * k(:n, 6) &
+            + (h * dop_a(14, 7)) * k(:n, 7) + (h * dop_a(14, 8)) * k(:n, 8) &
+            + (h * dop_a(14, 9)) * k(:n, 9) + (h * dop_a(14, 10)) * k(:n, 10) &
+            + (h * dop_a(14, 11)) * k(:n, 11) + (h * dop_a(14, 12)) * k(:n, 12) &
+            + (h * dop_a(14, 13)) * k(:n, 13)
+        call sys%rhs(t + dop_c(14) * h, ys(:n), k(:n, 14))
+        ys(:n) = y + (h * dop_a(15, 1)) * k(:n, 1) + (h * dop_a(15, 2)) * k(:n, 2) &
+            + (h * dop_a(15, 3)) * k(:n, 3) + (h * dop_a(15, 4)) * k(:n, 4) &
+            + (h * dop_a(15, 5)) * k(:n, 5) + (h * dop_a(15, 6)) * k(:n, 6) &
+            + (h * dop_a(15, 7)) * k(:n, 7) + (h * dop_a(15, 8)) * k(:n, 8) &
+            + (h * dop_a(15, 9)) * k(:n, 9) + (h * dop_a(15, 10)) * k(:n, 10) &
+            + (h * dop_a(15, 11)) * k(:n, 11) + (h * dop_a(15, 12)) * k(:n, 12) &
+            + (h * dop_a(15, 13)) * k(:n, 13) + (h * dop_a(15, 14)) * k(:n, 14)
+        call sys%rhs(t + dop_c(15) * h, ys(:n), k(:n, 15))
+        ys(:n) = y + (h * dop_a(16, 1)) * k(:n, 1) + (h * dop_a(16, 2)) * k(:n, 2) &
+            + (h * dop_a(16, 3)) * k(:n, 3) + (h * dop_a(16, 4)) * k(:n, 4) &
+            + (h * dop_a(16, 5)) * k(:n, 5) + (h * dop_a(16, 6)) * k(:n, 6) &
+            + (h * dop_a(16, 7)) * k(:n, 7) + (h * dop_a(16, 8)) * k(:n, 8) &
+            + (h * dop_a(16, 9)) * k(:n, 9) + (h * dop_a(16, 10)) * k(:n, 10) &
+            + (h * dop_a(16, 11)) * k(:n, 11) + (h * dop_a(16, 12)) * k(:n, 12) &
+            + (h * dop_a(16, 13)) * k(:n, 13) + (h * dop_a(16, 14)) * k(:n, 14) &
+            + (h * dop_a(16, 15)) * k(:n, 15)
+        call sys%rhs(t + dop_c(16) * h, ys(:n), k(:n, 16))
         r(:, 1) = y_new - y
         r(:, 2) = h * f - r(:, 1)
         r(:, 3) = 2.0_dp * r(:, 1) - h * (f_new + f)
-        ys = 0.0_dp + dop_d(1, 1) * k(:, 1) + dop_d(1, 2) * k(:, 2) + dop_d(1, 3) * k(:, 3) &
-            + dop_d(1, 4) * k(:, 4) + dop_d(1, 5) * k(:, 5) + dop_d(1, 6) * k(:, 6) &
-            + dop_d(1, 7) * k(:, 7) + dop_d(1, 8) * k(:, 8) + dop_d(1, 9) * k(:, 9) &
-            + dop_d(1, 10) * k(:, 10) + dop_d(1, 11) * k(:, 11) + dop_d(1, 12) * k(:, 12) &
-            + dop_d(1, 13) * k(:, 13) + dop_d(1, 14) * k(:, 14) + dop_d(1, 15) * k(:, 15) &
-            + dop_d(1, 16) * k(:, 16)
-        r(:, 4) = h * ys
-        ys = 0.0_dp + dop_d(2, 1) * k(:, 1) + dop_d(2, 2) * k(:, 2) + dop_d(2, 3) * k(:, 3) &
-            + dop_d(2, 4) * k(:, 4) + dop_d(2, 5) * k(:, 5) + dop_d(2, 6) * k(:, 6) &
-            + dop_d(2, 7) * k(:, 7) + dop_d(2, 8) * k(:, 8) + dop_d(2, 9) * k(:, 9) &
-            + dop_d(2, 10) * k(:, 10) + dop_d(2, 11) * k(:, 11) + dop_d(2, 12) * k(:, 12) &
-            + dop_d(2, 13) * k(:, 13) + dop_d(2, 14) * k(:, 14) + dop_d(2, 15) * k(:, 15) &
-            + dop_d(2, 16) * k(:, 16)
-        r(:, 5) = h * ys
-        ys = 0.0_dp + dop_d(3, 1) * k(:, 1) + dop_d(3, 2) * k(:, 2) + dop_d(3, 3) * k(:, 3) &
-            + dop_d(3, 4) * k(:, 4) + dop_d(3, 5) * k(:, 5) + dop_d(3, 6) * k(:, 6) &
-            + dop_d(3, 7) * k(:, 7) + dop_d(3, 8) * k(:, 8) + dop_d(3, 9) * k(:, 9) &
-            + dop_d(3, 10) * k(:, 10) + dop_d(3, 11) * k(:, 11) + dop_d(3, 12) * k(:, 12) &
-            + dop_d(3, 13) * k(:, 13) + dop_d(3, 14) * k(:, 14) + dop_d(3, 15) * k(:, 15) &
-            + dop_d(3, 16) * k(:, 16)
-        r(:, 6) = h * ys
-        ys = 0.0_dp + dop_d(4, 1) * k(:, 1) + dop_d(4, 2) * k(:, 2) + dop_d(4, 3) * k(:, 3) &
-            + dop_d(4, 4) * k(:, 4) + dop_d(4, 5) * k(:, 5) + dop_d(4, 6) * k(:, 6) &
-            + dop_d(4, 7) * k(:, 7) + dop_d(4, 8) * k(:, 8) + dop_d(4, 9) * k(:, 9) &
-            + dop_d(4, 10) * k(:, 10) + dop_d(4, 11) * k(:, 11) + dop_d(4, 12) * k(:, 12) &
-            + dop_d(4, 13) * k(:, 13) + dop_d(4, 14) * k(:, 14) + dop_d(4, 15) * k(:, 15) &
-            + dop_d(4, 16) * k(:, 16)
-        r(:, 7) = h * ys
+        ys(:n) = 0.0_dp + dop_d(1, 1) * k(:n, 1) + dop_d(1, 2) * k(:n, 2) + dop_d(1, 3) * k(:n, 3) &
+            + dop_d(1, 4) * k(:n, 4) + dop_d(1, 5) * k(:n, 5) + dop_d(1, 6) * k(:n, 6) &
+            + dop_d(1, 7) * k(:n, 7) + dop_d(1, 8) * k(:n, 8) + dop_d(1, 9) * k(:n, 9) &
+            + dop_d(1, 10) * k(:n, 10) + dop_d(1, 11) * k(:n, 11) + dop_d(1, 12) * k(:n, 12) &
+            + dop_d(1, 13) * k(:n, 13) + dop_d(1, 14) * k(:n, 14) + dop_d(1, 15) * k(:n, 15) &
+            + dop_d(1, 16) * k(:n, 16)
+        r(:, 4) = h * ys(:n)
+        ys(:n) = 0.0_dp + dop_d(2, 1) * k(:n, 1) + dop_d(2, 2) * k(:n, 2) + dop_d(2, 3) * k(:n, 3) &
+            + dop_d(2, 4) * k(:n, 4) + dop_d(2, 5) * k(:n, 5) + dop_d(2, 6) * k(:n, 6) &
+            + dop_d(2, 7) * k(:n, 7) + dop_d(2, 8) * k(:n, 8) + dop_d(2, 9) * k(:n, 9) &
+            + dop_d(2, 10) * k(:n, 10) + dop_d(2, 11) * k(:n, 11) + dop_d(2, 12) * k(:n, 12) &
+            + dop_d(2, 13) * k(:n, 13) + dop_d(2, 14) * k(:n, 14) + dop_d(2, 15) * k(:n, 15) &
+            + dop_d(2, 16) * k(:n, 16)
+        r(:, 5) = h * ys(:n)
+        ys(:n) = 0.0_dp + dop_d(3, 1) * k(:n, 1) + dop_d(3, 2) * k(:n, 2) + dop_d(3, 3) * k(:n, 3) &
+            + dop_d(3, 4) * k(:n, 4) + dop_d(3, 5) * k(:n, 5) + dop_d(3, 6) * k(:n, 6) &
+            + dop_d(3, 7) * k(:n, 7) + dop_d(3, 8) * k(:n, 8) + dop_d(3, 9) * k(:n, 9) &
+            + dop_d(3, 10) * k(:n, 10) + dop_d(3, 11) * k(:n, 11) + dop_d(3, 12) * k(:n, 12) &
+            + dop_d(3, 13) * k(:n, 13) + dop_d(3, 14) * k(:n, 14) + dop_d(3, 15) * k(:n, 15) &
+            + dop_d(3, 16) * k(:n, 16)
+        r(:, 6) = h * ys(:n)
+        ys(:n) = 0.0_dp + dop_d(4, 1) * k(:n, 1) + dop_d(4, 2) * k(:n, 2) + dop_d(4, 3) * k(:n, 3) &
+            + dop_d(4, 4) * k(:n, 4) + dop_d(4, 5) * k(:n, 5) + dop_d(4, 6) * k(:n, 6) &
+            + dop_d(4, 7) * k(:n, 7) + dop_d(4, 8) * k(:n, 8) + dop_d(4, 9) * k(:n, 9) &
+            + dop_d(4, 10) * k(:n, 10) + dop_d(4, 11) * k(:n, 11) + dop_d(4, 12) * k(:n, 12) &
+            + dop_d(4, 13) * k(:n, 13) + dop_d(4, 14) * k(:n, 14) + dop_d(4, 15) * k(:n, 15) &
+            + dop_d(4, 16) * k(:n, 16)
+        r(:, 7) = h * ys(:n)
     end subroutine dense_kernel
 
     !> The three extra stages and the coefficients of the 7th-order dense output of the
@@ -445,12 +512,13 @@ contains
         class(ode_dop853_t), intent(inout) :: self  !! the integrator, after `step`
         class(ode_system), intent(inout) :: sys     !! the system
         real(dp), intent(in) :: t                   !! start of the step
-        real(dp), intent(in) :: y(:)                !! state at t, n
-        real(dp), intent(in) :: f(:)                !! f(t, y), n
+        real(dp), contiguous, intent(in) :: y(:)        !! state at t, n
+        real(dp), contiguous, intent(in) :: f(:)        !! f(t, y), n
         real(dp), intent(in) :: h                   !! step size
-        real(dp), intent(in) :: y_new(:)            !! state at t + h, n
-        real(dp), intent(in) :: f_new(:)            !! f there, n
-        call dense_kernel(self%n, sys, t, y, f, h, y_new, f_new, self%k, self%ys, self%dense%r)
+        real(dp), contiguous, intent(in) :: y_new(:)     !! state at t + h, n
+        real(dp), contiguous, intent(in) :: f_new(:)     !! f there, n
+        call dense_kernel(self%n, size(self%ys), sys, t, y, f, h, y_new, f_new, self%k, self%ys, &
+                          self%dense%r)
         self%dense%y0 = y
         self%dense%t0 = t
         self%dense%h = h

@@ -1308,15 +1308,16 @@ contains
         real(dp), intent(in) :: t
         real(dp), contiguous, intent(in) :: y(:)
         real(dp), contiguous, intent(out) :: dydt(:)
-        real(dp) :: a, phi
+        real(dp) :: a, phi, f(2)
         a = ground_accel(self%gr, t) * self%sim%inv_g
-        dydt(1) = y(2)
+        f(1) = y(2)
         if (self%sim%lin) then
-            dydt(2) = self%sim%p2 * (y(1) + a - self%sa)
+            f(2) = self%sim%p2 * (y(1) + a - self%sa)
         else
             phi = self%sa - y(1)
-            dydt(2) = -self%sim%p2 * (sin(phi) - a * cos(phi))
+            f(2) = -self%sim%p2 * (sin(phi) - a * cos(phi))
         end if
+        dydt(1:2) = f   ! one store: the integrator reads the pair at once
     end subroutine flight_ode_rhs
 
     ! ------------------------------------------------------------------------------
