@@ -76,7 +76,7 @@ module seispulse_ode
         real(dp), allocatable :: k(:, :)      !! stages, n2 x 16 (n2: n rounded up to even)
         real(dp), allocatable :: ys(:), yp(:) !! work, n2
         real(dp), allocatable :: w5(:), w3(:) !! work, n2
-        type(ode_dense_t) :: dense            !! dense output of the last step (after `dense`)
+        type(ode_dense_t) :: dense            !! dense output of the last step (`dense_setup`)
     contains
         procedure :: init => dop853_init
         procedure :: step => dop853_step
@@ -199,7 +199,8 @@ module seispulse_ode
 
 contains
 
-    !> No events (the default of `ode_system%event`): 0 for any i.
+    !> No events (the default of `ode_system%event`; a system with events overrides it
+    !> with g_i(t, y), i = 1, 2, ...): 0 for any i.
     function ode_no_event(self, i, t, y) result(g)
         class(ode_system), intent(inout) :: self  !! the system
         integer, intent(in) :: i                  !! event number

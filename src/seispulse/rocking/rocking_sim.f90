@@ -367,6 +367,7 @@ contains
         type(piece_iter_t) :: it
         real(dp) :: th0, om0
         real(dp), allocatable :: accel_si(:)
+        real(dp) :: a_max
         integer :: i
 
         call empty_run(run)
@@ -377,17 +378,21 @@ contains
         call check_options(t_grid, theta_grid, omega_grid, t_max, theta0, omega0, rtol, &
                            th0, om0, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        ! the samples in m/s^2 (g = 1: the very same numbers)
+        ! the samples in m/s^2 (g = 1: the very same numbers); an overflow of g * accel is
+        ! caught before the product (g <= 1 cannot overflow)
+        if (g > 1.0_dp) then
+            a_max = (huge(g) / g) * (1.0_dp - 4.0_dp * epsilon(g))
+            do i = 1, size(accel)
+                if (abs(accel(i)) > a_max) then
+                    call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel(' &
+                                   //int_str(i)//') = '//real_str(accel(i)) &
+                                   //': g * accel overflows (g = '//real_str(g)//' m/s^2)')
+                    return
+                end if
+            end do
+        end if
         allocate(accel_si(size(accel)))
-        do i = 1, size(accel)
-            accel_si(i) = g * accel(i)
-            if (.not. ieee_is_finite(accel_si(i))) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel('//int_str(i) &
-                               //') = '//real_str(accel(i))//': g * accel overflows (g = ' &
-                               //real_str(g)//' m/s^2)')
-                return
-            end if
-        end do
+        accel_si(:) = g * accel
         call setup_sim(blk, st%sys%sim, t_max, rtol)
         if (real(steps_per_sample, dp) * size(accel) > real(huge(1) - max_steps_default, dp)) then
             st%sys%sim%max_steps = huge(1)
