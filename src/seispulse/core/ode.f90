@@ -290,7 +290,8 @@ contains
     !> `step` on explicit-shape arrays of n2 = n rounded up to even rows (the extra row,
     !> if any, stays 0). Each stage is one array expression on two components at a time
     !> (constant extent: one SIMD register), the sum in the order of j, the coefficients
-    !> compile-time constants, zero ones kept (the sums of the plain loops, bit for bit).
+    !> compile-time constants. Zero coefficients are left out (as in Hairer's code): a
+    !> zero product leaves a finite sum unchanged, bit for bit, unless that sum is -0.
     subroutine step_kernel(n, n2, sys, t, y, f, h, t_new, y_new, f_new, k, ys, yp, w5, w3, &
                            atol, rtol, err)
         integer, intent(in) :: n, n2
@@ -324,27 +325,24 @@ contains
         do m = 1, n2, 2
             mb = m + 1
             ys(m:mb) = yp(m:mb) + (h * dop_a(4, 1)) * k(m:mb, 1) &
-                + (h * dop_a(4, 2)) * k(m:mb, 2) + (h * dop_a(4, 3)) * k(m:mb, 3)
+                + (h * dop_a(4, 3)) * k(m:mb, 3)
         end do
         call sys%rhs(t + dop_c(4) * h, ys(1:n), k(1:n, 4))
         do m = 1, n2, 2
             mb = m + 1
             ys(m:mb) = yp(m:mb) + (h * dop_a(5, 1)) * k(m:mb, 1) &
-                + (h * dop_a(5, 2)) * k(m:mb, 2) + (h * dop_a(5, 3)) * k(m:mb, 3) &
-                + (h * dop_a(5, 4)) * k(m:mb, 4)
+                + (h * dop_a(5, 3)) * k(m:mb, 3) + (h * dop_a(5, 4)) * k(m:mb, 4)
         end do
         call sys%rhs(t + dop_c(5) * h, ys(1:n), k(1:n, 5))
         do m = 1, n2, 2
             mb = m + 1
             ys(m:mb) = yp(m:mb) + (h * dop_a(6, 1)) * k(m:mb, 1) &
-                + (h * dop_a(6, 2)) * k(m:mb, 2) + (h * dop_a(6, 3)) * k(m:mb, 3) &
                 + (h * dop_a(6, 4)) * k(m:mb, 4) + (h * dop_a(6, 5)) * k(m:mb, 5)
         end do
         call sys%rhs(t + dop_c(6) * h, ys(1:n), k(1:n, 6))
         do m = 1, n2, 2
             mb = m + 1
             ys(m:mb) = yp(m:mb) + (h * dop_a(7, 1)) * k(m:mb, 1) &
-                + (h * dop_a(7, 2)) * k(m:mb, 2) + (h * dop_a(7, 3)) * k(m:mb, 3) &
                 + (h * dop_a(7, 4)) * k(m:mb, 4) + (h * dop_a(7, 5)) * k(m:mb, 5) &
                 + (h * dop_a(7, 6)) * k(m:mb, 6)
         end do
@@ -352,7 +350,6 @@ contains
         do m = 1, n2, 2
             mb = m + 1
             ys(m:mb) = yp(m:mb) + (h * dop_a(8, 1)) * k(m:mb, 1) &
-                + (h * dop_a(8, 2)) * k(m:mb, 2) + (h * dop_a(8, 3)) * k(m:mb, 3) &
                 + (h * dop_a(8, 4)) * k(m:mb, 4) + (h * dop_a(8, 5)) * k(m:mb, 5) &
                 + (h * dop_a(8, 6)) * k(m:mb, 6) + (h * dop_a(8, 7)) * k(m:mb, 7)
         end do
@@ -360,7 +357,6 @@ contains
         do m = 1, n2, 2
             mb = m + 1
             ys(m:mb) = yp(m:mb) + (h * dop_a(9, 1)) * k(m:mb, 1) &
-                + (h * dop_a(9, 2)) * k(m:mb, 2) + (h * dop_a(9, 3)) * k(m:mb, 3) &
                 + (h * dop_a(9, 4)) * k(m:mb, 4) + (h * dop_a(9, 5)) * k(m:mb, 5) &
                 + (h * dop_a(9, 6)) * k(m:mb, 6) + (h * dop_a(9, 7)) * k(m:mb, 7) &
                 + (h * dop_a(9, 8)) * k(m:mb, 8)
@@ -369,7 +365,6 @@ contains
         do m = 1, n2, 2
             mb = m + 1
             ys(m:mb) = yp(m:mb) + (h * dop_a(10, 1)) * k(m:mb, 1) &
-                + (h * dop_a(10, 2)) * k(m:mb, 2) + (h * dop_a(10, 3)) * k(m:mb, 3) &
                 + (h * dop_a(10, 4)) * k(m:mb, 4) + (h * dop_a(10, 5)) * k(m:mb, 5) &
                 + (h * dop_a(10, 6)) * k(m:mb, 6) + (h * dop_a(10, 7)) * k(m:mb, 7) &
                 + (h * dop_a(10, 8)) * k(m:mb, 8) + (h * dop_a(10, 9)) * k(m:mb, 9)
@@ -378,7 +373,6 @@ contains
         do m = 1, n2, 2
             mb = m + 1
             ys(m:mb) = yp(m:mb) + (h * dop_a(11, 1)) * k(m:mb, 1) &
-                + (h * dop_a(11, 2)) * k(m:mb, 2) + (h * dop_a(11, 3)) * k(m:mb, 3) &
                 + (h * dop_a(11, 4)) * k(m:mb, 4) + (h * dop_a(11, 5)) * k(m:mb, 5) &
                 + (h * dop_a(11, 6)) * k(m:mb, 6) + (h * dop_a(11, 7)) * k(m:mb, 7) &
                 + (h * dop_a(11, 8)) * k(m:mb, 8) + (h * dop_a(11, 9)) * k(m:mb, 9) &
@@ -388,7 +382,6 @@ contains
         do m = 1, n2, 2
             mb = m + 1
             ys(m:mb) = yp(m:mb) + (h * dop_a(12, 1)) * k(m:mb, 1) &
-                + (h * dop_a(12, 2)) * k(m:mb, 2) + (h * dop_a(12, 3)) * k(m:mb, 3) &
                 + (h * dop_a(12, 4)) * k(m:mb, 4) + (h * dop_a(12, 5)) * k(m:mb, 5) &
                 + (h * dop_a(12, 6)) * k(m:mb, 6) + (h * dop_a(12, 7)) * k(m:mb, 7) &
                 + (h * dop_a(12, 8)) * k(m:mb, 8) + (h * dop_a(12, 9)) * k(m:mb, 9) &
@@ -397,11 +390,9 @@ contains
         call sys%rhs(t_new, ys(1:n), k(1:n, 12))
         do m = 1, n2, 2
             mb = m + 1
-            ys(m:mb) = 0.0_dp + dop_b(1) * k(m:mb, 1) + dop_b(2) * k(m:mb, 2) &
-                + dop_b(3) * k(m:mb, 3) + dop_b(4) * k(m:mb, 4) + dop_b(5) * k(m:mb, 5) &
-                + dop_b(6) * k(m:mb, 6) + dop_b(7) * k(m:mb, 7) + dop_b(8) * k(m:mb, 8) &
-                + dop_b(9) * k(m:mb, 9) + dop_b(10) * k(m:mb, 10) + dop_b(11) * k(m:mb, 11) &
-                + dop_b(12) * k(m:mb, 12)
+            ys(m:mb) = 0.0_dp + dop_b(1) * k(m:mb, 1) + dop_b(6) * k(m:mb, 6) &
+                + dop_b(7) * k(m:mb, 7) + dop_b(8) * k(m:mb, 8) + dop_b(9) * k(m:mb, 9) &
+                + dop_b(10) * k(m:mb, 10) + dop_b(11) * k(m:mb, 11) + dop_b(12) * k(m:mb, 12)
         end do
         y_new = y + h * ys(1:n)
         call sys%rhs(t_new, y_new, f_new)
@@ -412,19 +403,15 @@ contains
         if (n < n2) k(n, 13) = f_new(n)
         do m = 1, n2, 2
             mb = m + 1
-            w5(m:mb) = 0.0_dp + dop_e5(1) * k(m:mb, 1) + dop_e5(2) * k(m:mb, 2) &
-                + dop_e5(3) * k(m:mb, 3) + dop_e5(4) * k(m:mb, 4) + dop_e5(5) * k(m:mb, 5) &
-                + dop_e5(6) * k(m:mb, 6) + dop_e5(7) * k(m:mb, 7) + dop_e5(8) * k(m:mb, 8) &
-                + dop_e5(9) * k(m:mb, 9) + dop_e5(10) * k(m:mb, 10) + dop_e5(11) * k(m:mb, 11) &
-                + dop_e5(12) * k(m:mb, 12) + dop_e5(13) * k(m:mb, 13)
+            w5(m:mb) = 0.0_dp + dop_e5(1) * k(m:mb, 1) + dop_e5(6) * k(m:mb, 6) &
+                + dop_e5(7) * k(m:mb, 7) + dop_e5(8) * k(m:mb, 8) + dop_e5(9) * k(m:mb, 9) &
+                + dop_e5(10) * k(m:mb, 10) + dop_e5(11) * k(m:mb, 11) + dop_e5(12) * k(m:mb, 12)
         end do
         do m = 1, n2, 2
             mb = m + 1
-            w3(m:mb) = 0.0_dp + dop_e3(1) * k(m:mb, 1) + dop_e3(2) * k(m:mb, 2) &
-                + dop_e3(3) * k(m:mb, 3) + dop_e3(4) * k(m:mb, 4) + dop_e3(5) * k(m:mb, 5) &
-                + dop_e3(6) * k(m:mb, 6) + dop_e3(7) * k(m:mb, 7) + dop_e3(8) * k(m:mb, 8) &
-                + dop_e3(9) * k(m:mb, 9) + dop_e3(10) * k(m:mb, 10) + dop_e3(11) * k(m:mb, 11) &
-                + dop_e3(12) * k(m:mb, 12) + dop_e3(13) * k(m:mb, 13)
+            w3(m:mb) = 0.0_dp + dop_e3(1) * k(m:mb, 1) + dop_e3(6) * k(m:mb, 6) &
+                + dop_e3(7) * k(m:mb, 7) + dop_e3(8) * k(m:mb, 8) + dop_e3(9) * k(m:mb, 9) &
+                + dop_e3(10) * k(m:mb, 10) + dop_e3(11) * k(m:mb, 11) + dop_e3(12) * k(m:mb, 12)
         end do
         n5 = 0.0_dp
         n3 = 0.0_dp
@@ -449,57 +436,43 @@ contains
         real(dp), intent(in) :: t, y(n), f(n), h, y_new(n), f_new(n)
         real(dp), intent(inout) :: k(n2, 16), ys(n2)
         real(dp), intent(out) :: r(n, 7)
-        ys(:n) = y + (h * dop_a(14, 1)) * k(:n, 1) + (h * dop_a(14, 2)) * k(:n, 2) &
-            + (h * dop_a(14, 3)) * k(:n, 3) + (h * dop_a(14, 4)) * k(:n, 4) &
-            + (h * dop_a(14, 5)) * k(:n, 5) + (h * dop_a(14, 6)) * k(:n, 6) &
-            + (h * dop_a(14, 7)) * k(:n, 7) + (h * dop_a(14, 8)) * k(:n, 8) &
-            + (h * dop_a(14, 9)) * k(:n, 9) + (h * dop_a(14, 10)) * k(:n, 10) &
-            + (h * dop_a(14, 11)) * k(:n, 11) + (h * dop_a(14, 12)) * k(:n, 12) &
-            + (h * dop_a(14, 13)) * k(:n, 13)
+        ys(:n) = y + (h * dop_a(14, 1)) * k(:n, 1) + (h * dop_a(14, 7)) * k(:n, 7) &
+            + (h * dop_a(14, 8)) * k(:n, 8) + (h * dop_a(14, 9)) * k(:n, 9) &
+            + (h * dop_a(14, 10)) * k(:n, 10) + (h * dop_a(14, 11)) * k(:n, 11) &
+            + (h * dop_a(14, 12)) * k(:n, 12) + (h * dop_a(14, 13)) * k(:n, 13)
         call sys%rhs(t + dop_c(14) * h, ys(:n), k(:n, 14))
-        ys(:n) = y + (h * dop_a(15, 1)) * k(:n, 1) + (h * dop_a(15, 2)) * k(:n, 2) &
-            + (h * dop_a(15, 3)) * k(:n, 3) + (h * dop_a(15, 4)) * k(:n, 4) &
-            + (h * dop_a(15, 5)) * k(:n, 5) + (h * dop_a(15, 6)) * k(:n, 6) &
+        ys(:n) = y + (h * dop_a(15, 1)) * k(:n, 1) + (h * dop_a(15, 6)) * k(:n, 6) &
             + (h * dop_a(15, 7)) * k(:n, 7) + (h * dop_a(15, 8)) * k(:n, 8) &
-            + (h * dop_a(15, 9)) * k(:n, 9) + (h * dop_a(15, 10)) * k(:n, 10) &
             + (h * dop_a(15, 11)) * k(:n, 11) + (h * dop_a(15, 12)) * k(:n, 12) &
             + (h * dop_a(15, 13)) * k(:n, 13) + (h * dop_a(15, 14)) * k(:n, 14)
         call sys%rhs(t + dop_c(15) * h, ys(:n), k(:n, 15))
-        ys(:n) = y + (h * dop_a(16, 1)) * k(:n, 1) + (h * dop_a(16, 2)) * k(:n, 2) &
-            + (h * dop_a(16, 3)) * k(:n, 3) + (h * dop_a(16, 4)) * k(:n, 4) &
-            + (h * dop_a(16, 5)) * k(:n, 5) + (h * dop_a(16, 6)) * k(:n, 6) &
+        ys(:n) = y + (h * dop_a(16, 1)) * k(:n, 1) + (h * dop_a(16, 6)) * k(:n, 6) &
             + (h * dop_a(16, 7)) * k(:n, 7) + (h * dop_a(16, 8)) * k(:n, 8) &
-            + (h * dop_a(16, 9)) * k(:n, 9) + (h * dop_a(16, 10)) * k(:n, 10) &
-            + (h * dop_a(16, 11)) * k(:n, 11) + (h * dop_a(16, 12)) * k(:n, 12) &
-            + (h * dop_a(16, 13)) * k(:n, 13) + (h * dop_a(16, 14)) * k(:n, 14) &
-            + (h * dop_a(16, 15)) * k(:n, 15)
+            + (h * dop_a(16, 9)) * k(:n, 9) + (h * dop_a(16, 13)) * k(:n, 13) &
+            + (h * dop_a(16, 14)) * k(:n, 14) + (h * dop_a(16, 15)) * k(:n, 15)
         call sys%rhs(t + dop_c(16) * h, ys(:n), k(:n, 16))
         r(:, 1) = y_new - y
         r(:, 2) = h * f - r(:, 1)
         r(:, 3) = 2.0_dp * r(:, 1) - h * (f_new + f)
-        ys(:n) = 0.0_dp + dop_d(1, 1) * k(:n, 1) + dop_d(1, 2) * k(:n, 2) + dop_d(1, 3) * k(:n, 3) &
-            + dop_d(1, 4) * k(:n, 4) + dop_d(1, 5) * k(:n, 5) + dop_d(1, 6) * k(:n, 6) &
+        ys(:n) = 0.0_dp + dop_d(1, 1) * k(:n, 1) + dop_d(1, 6) * k(:n, 6) &
             + dop_d(1, 7) * k(:n, 7) + dop_d(1, 8) * k(:n, 8) + dop_d(1, 9) * k(:n, 9) &
             + dop_d(1, 10) * k(:n, 10) + dop_d(1, 11) * k(:n, 11) + dop_d(1, 12) * k(:n, 12) &
             + dop_d(1, 13) * k(:n, 13) + dop_d(1, 14) * k(:n, 14) + dop_d(1, 15) * k(:n, 15) &
             + dop_d(1, 16) * k(:n, 16)
         r(:, 4) = h * ys(:n)
-        ys(:n) = 0.0_dp + dop_d(2, 1) * k(:n, 1) + dop_d(2, 2) * k(:n, 2) + dop_d(2, 3) * k(:n, 3) &
-            + dop_d(2, 4) * k(:n, 4) + dop_d(2, 5) * k(:n, 5) + dop_d(2, 6) * k(:n, 6) &
+        ys(:n) = 0.0_dp + dop_d(2, 1) * k(:n, 1) + dop_d(2, 6) * k(:n, 6) &
             + dop_d(2, 7) * k(:n, 7) + dop_d(2, 8) * k(:n, 8) + dop_d(2, 9) * k(:n, 9) &
             + dop_d(2, 10) * k(:n, 10) + dop_d(2, 11) * k(:n, 11) + dop_d(2, 12) * k(:n, 12) &
             + dop_d(2, 13) * k(:n, 13) + dop_d(2, 14) * k(:n, 14) + dop_d(2, 15) * k(:n, 15) &
             + dop_d(2, 16) * k(:n, 16)
         r(:, 5) = h * ys(:n)
-        ys(:n) = 0.0_dp + dop_d(3, 1) * k(:n, 1) + dop_d(3, 2) * k(:n, 2) + dop_d(3, 3) * k(:n, 3) &
-            + dop_d(3, 4) * k(:n, 4) + dop_d(3, 5) * k(:n, 5) + dop_d(3, 6) * k(:n, 6) &
+        ys(:n) = 0.0_dp + dop_d(3, 1) * k(:n, 1) + dop_d(3, 6) * k(:n, 6) &
             + dop_d(3, 7) * k(:n, 7) + dop_d(3, 8) * k(:n, 8) + dop_d(3, 9) * k(:n, 9) &
             + dop_d(3, 10) * k(:n, 10) + dop_d(3, 11) * k(:n, 11) + dop_d(3, 12) * k(:n, 12) &
             + dop_d(3, 13) * k(:n, 13) + dop_d(3, 14) * k(:n, 14) + dop_d(3, 15) * k(:n, 15) &
             + dop_d(3, 16) * k(:n, 16)
         r(:, 6) = h * ys(:n)
-        ys(:n) = 0.0_dp + dop_d(4, 1) * k(:n, 1) + dop_d(4, 2) * k(:n, 2) + dop_d(4, 3) * k(:n, 3) &
-            + dop_d(4, 4) * k(:n, 4) + dop_d(4, 5) * k(:n, 5) + dop_d(4, 6) * k(:n, 6) &
+        ys(:n) = 0.0_dp + dop_d(4, 1) * k(:n, 1) + dop_d(4, 6) * k(:n, 6) &
             + dop_d(4, 7) * k(:n, 7) + dop_d(4, 8) * k(:n, 8) + dop_d(4, 9) * k(:n, 9) &
             + dop_d(4, 10) * k(:n, 10) + dop_d(4, 11) * k(:n, 11) + dop_d(4, 12) * k(:n, 12) &
             + dop_d(4, 13) * k(:n, 13) + dop_d(4, 14) * k(:n, 14) + dop_d(4, 15) * k(:n, 15) &
