@@ -6,6 +6,7 @@ program tester
     use test_special, only: collect_special
     use test_divided_differences, only: collect_divided_differences
     use test_roots, only: collect_roots
+    use test_ode, only: collect_ode
     use test_lapack, only: collect_lapack
     use test_pulses, only: collect_pulses
     use test_sliding_sim, only: collect_sliding_sim
@@ -41,6 +42,10 @@ program tester
     if (selected('roots')) then
         call collect_roots(tests)
         call run_suite('roots', tests, output_unit, npass, nfail)
+    end if
+    if (selected('ode')) then
+        call collect_ode(tests)
+        call run_suite('ode', tests, output_unit, npass, nfail)
     end if
     if (selected('lapack')) then
         call collect_lapack(tests)

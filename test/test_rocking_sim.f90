@@ -51,6 +51,8 @@ contains
                               test_records), &
                  new_unittest('Ricker and M&P pulses against records (order dt^2)', &
                               test_smooth_pulses), &
+                 new_unittest('record units: samples in g times the g argument', &
+                              test_record_units), &
                  new_unittest('maps: single runs, the linearized wall, monotone cells', &
                               test_maps), &
                  new_unittest('grid output, outcomes, initial states', test_grid_outcomes), &
@@ -744,10 +746,10 @@ contains
             if (allocated(error)) return
             m = 16
             allocate(acc(m + 1))
-            acc = amp
+            acc = amp / g0
             dt = td / real(m, dp)
             msg = ''
-            call rock_record(blk, acc, dt, rr, stat, msg)
+            call rock_record(blk, acc, dt, g0, rr, stat, msg)
             call check(error, stat, SEISPULSE_SUCCESS, 'record ('//trim(msg)//')')
             if (allocated(error)) return
             call same_run(error, rr, rp, 'sampled rectangle')
@@ -765,7 +767,8 @@ contains
                 acc(i) = 2.5_dp * amp &
                          * (1.0_dp - abs(real(k, dp) * dt - 0.5_dp * td) / (0.5_dp * td))
             end do
-            call rock_record(blk, acc, dt, rr, stat, msg)
+            ! in m/s^2: a record in units of g = 1 m/s^2
+            call rock_record(blk, acc, dt, 1.0_dp, rr, stat, msg)
             call check(error, stat, SEISPULSE_SUCCESS, 'record ('//trim(msg)//')')
             if (allocated(error)) return
             call same_run(error, rr, rp, 'sampled triangle')
@@ -773,6 +776,46 @@ contains
             deallocate(acc)
         end do
     end subroutine test_records
+
+    !> rock_record takes samples in g: with g = 8 (exact products) a record in g equals
+    !> the same record in m/s^2 given with g = 1, bit for bit; the g argument counts (a
+    !> quarter of it gives another run) and is not the block's g.
+    subroutine test_record_units(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(rocking_block_t) :: blk
+        type(rocking_run_t) :: r8, r1, rq
+        real(dp) :: acc(41), dt
+        integer :: i, stat
+        blk = make_block(0.15_dp, 2.2_dp, 0.9_dp, .false.)
+        dt = 0.02_dp
+        do i = 1, size(acc)
+            acc(i) = 0.375_dp * sin(real(i - 1, dp) * 0.15_dp)   ! peak ~ 0.37 g > tan(0.15)
+        end do
+        call rock_record(blk, acc, dt, 8.0_dp, r8, stat)
+        call check(error, stat, SEISPULSE_SUCCESS, 'record in g')
+        if (allocated(error)) return
+        call rock_record(blk, 8.0_dp * acc, dt, 1.0_dp, r1, stat)
+        call check(error, stat, SEISPULSE_SUCCESS, 'record in m/s^2')
+        if (allocated(error)) return
+        call check(error, r8%n_impacts >= 1, 'the record rocks the block')
+        if (allocated(error)) return
+        ! rtol = 0: equal to the last bit
+        call check(error, r8%outcome, r1%outcome, 'same outcome')
+        if (allocated(error)) return
+        call check(error, r8%n_impacts, r1%n_impacts, 'same impacts')
+        if (allocated(error)) return
+        call check(error, r8%n_steps, r1%n_steps, 'same steps')
+        if (allocated(error)) return
+        call check(error, [r8%t_uplift, r8%theta_max, r8%theta_min, r8%t_end, r8%t_impacts], &
+                   [r1%t_uplift, r1%theta_max, r1%theta_min, r1%t_end, r1%t_impacts], &
+                   rtol=0.0_dp, message='g * accel: the same run bit for bit')
+        if (allocated(error)) return
+        ! 2 m/s^2 peak 0.75 m/s^2 < g0 tan(0.15) = 1.48 m/s^2: no uplift
+        call rock_record(blk, acc, dt, 2.0_dp, rq, stat)
+        call check(error, stat, SEISPULSE_SUCCESS, 'record, g = 2')
+        if (allocated(error)) return
+        call check(error, rq%outcome, ROCK_RUN_NO_UPLIFT, 'g = 2: no uplift')
+    end subroutine test_record_units
 
     subroutine same_run(error, a, b, label)
         type(test_error), allocatable, intent(inout) :: error
@@ -851,7 +894,7 @@ contains
             do i = 1, n + 1
                 call pulse_at(pl, real(i - 1, dp) * dt, acc(i), v, d)
             end do
-            call rock_record(blk, acc, dt, run, stat)
+            call rock_record(blk, acc / g0, dt, g0, run, stat)
             call check(error, stat, SEISPULSE_SUCCESS, 'sampled record')
         end subroutine sampled
     end subroutine test_smooth_pulses
@@ -1066,13 +1109,22 @@ contains
         call expect('p')
         if (allocated(error)) return
         blk = make_block(0.2_dp, 2.0_dp, 0.9_dp, .false.)
-        call rock_record(blk, [1.0_dp, 2.0_dp], 0.0_dp, run, stat, msg)
+        call rock_record(blk, [1.0_dp, 2.0_dp], 0.0_dp, g0, run, stat, msg)
         call expect('dt')
         if (allocated(error)) return
-        call rock_record(blk, [1.0_dp, 2.0_dp], nan, run, stat, msg)
+        call rock_record(blk, [1.0_dp, 2.0_dp], nan, g0, run, stat, msg)
         call expect('dt')
         if (allocated(error)) return
-        call rock_record(blk, [1.0_dp, nan], 0.01_dp, run, stat, msg)
+        call rock_record(blk, [1.0_dp, nan], 0.01_dp, g0, run, stat, msg)
+        call expect('accel(2)')
+        if (allocated(error)) return
+        call rock_record(blk, [1.0_dp, 2.0_dp], 0.01_dp, 0.0_dp, run, stat, msg)
+        call expect('g')
+        if (allocated(error)) return
+        call rock_record(blk, [1.0_dp, 2.0_dp], 0.01_dp, nan, run, stat, msg)
+        call expect('g')
+        if (allocated(error)) return
+        call rock_record(blk, [1.0_dp, huge(1.0_dp)], 0.01_dp, g0, run, stat, msg)
         call expect('accel(2)')
         if (allocated(error)) return
         tg = [0.0_dp, 1.0_dp, 2.0_dp]

@@ -387,7 +387,9 @@ subroutine sp_rocking_block(which, x, y, z, g, alpha, p, e, r, stat, errmsg)
 end subroutine sp_rocking_block
 
 !> One run under a pulse (kind > 0, params packed as in pulse_from_params) or a record
-!> (kind = 0: accel(nrec), dt); the block is alpha, p, e, g; t_max only when has_t_max /= 0.
+!> (kind = 0: accel(nrec) in m/s^2, handed to rock_record as a record in units of 1 m/s^2, so
+!> that g * accel is accel bit for bit; dt); the block is alpha, p, e, g; t_max only when
+!> has_t_max /= 0.
 !> The n_imp impact times are kept for sp_fetch_impacts.
 subroutine sp_rock(kind, params, nrec, accel, dt, alpha, p, e, g, linearized, has_t_max, t_max, &
                    theta0, omega0, rtol, ngrid, tg, thg, omg, n_imp, outcome, t_uplift, &
@@ -434,11 +436,11 @@ subroutine sp_rock(kind, params, nrec, accel, dt, alpha, p, e, g, linearized, ha
         end if
     else
         if (ngrid > 0) then
-            call rock_record(blk, accel, dt, run, stat, errmsg, tg, thg, omg, t_max=t_lim, &
-                             theta0=theta0, omega0=omega0, rtol=rtol)
+            call rock_record(blk, accel, dt, 1.0_dp, run, stat, errmsg, tg, thg, omg, &
+                             t_max=t_lim, theta0=theta0, omega0=omega0, rtol=rtol)
         else
-            call rock_record(blk, accel, dt, run, stat, errmsg, t_max=t_lim, theta0=theta0, &
-                             omega0=omega0, rtol=rtol)
+            call rock_record(blk, accel, dt, 1.0_dp, run, stat, errmsg, t_max=t_lim, &
+                             theta0=theta0, omega0=omega0, rtol=rtol)
         end if
     end if
     if (stat /= SEISPULSE_SUCCESS) return

@@ -35,7 +35,8 @@
 !> decision with ROCK_RUN_TIME_LIMIT.
 !>
 !> Method. Dormand & Prince 8(5,3) (Hairer's DOP853: stages, error estimator and
-!> 7th-order dense output) with rtol = 1e-12 (absolute scales alpha and p alpha). The
+!> 7th-order dense output, from seispulse_ode; the flight is its system `flight_ode_t`)
+!> with rtol = 1e-12 (absolute scales alpha and p alpha). The
 !> time axis is cut into pieces on which a_g is smooth and monotone (the breaks of
 !> the pulse and its extrema, each sample step of a record: seispulse_pieces, shared
 !> with seispulse_sliding_sim),
@@ -58,15 +59,16 @@ module seispulse_rocking_sim
                                 check_output_grid
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
                                 set_error
-    use seispulse_format, only: real_str
+    use seispulse_format, only: real_str, int_str
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_special, only: pi
+    use seispulse_ode, only: ode_system, ode_dop853_t, ode_dop853_factor
     use seispulse_pulses, only: pulse_t, pulse_validate, pulse_accel, &
                                 exp_consts_t, exp_consts, pulse_kind_name, &
                                 PULSE_EXPONENTIAL, PULSE_HALF_SINE, PULSE_SINE_CYCLE, &
                                 PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
                                 PULSE_RICKER
-    use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_pieces_check, &
+    use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_step_check, &
                                 pulse_pieces_init, record_pieces_init, next_piece, &
                                 exceeds, onset_on_piece
     implicit none
@@ -164,118 +166,41 @@ module seispulse_rocking_sim
         procedure :: eval => ground_eval
     end type ground_t
 
-    !> Dense output of one step (Hairer's DOP853 form): y(t + x h), 0 <= x <= 1; as a
-    !> function for the root finder: sgn * component(x) - level.
-    type, extends(scalar_function) :: dense_fn
-        real(dp) :: f(7, 2) = 0.0_dp
-        real(dp) :: y0(2) = 0.0_dp
-        integer :: comp = 1                !! 1 theta, 2 theta'
-        real(dp) :: sgn = 1.0_dp
-        real(dp) :: level = 0.0_dp
+    !> The flight of the block as a system of seispulse_ode: (theta, theta') on side s.
+    type, extends(ode_system) :: flight_ode_t
+        type(sim_t) :: sim                 !! settings of the run
+        type(ground_t) :: gr               !! ground acceleration on the current piece
+        real(dp) :: sa = 0.0_dp            !! alpha s, s = +-1 the side (0 at rest)
     contains
-        procedure :: eval => dense_eval
-    end type dense_fn
+        procedure :: rhs => flight_ode_rhs
+    end type flight_ode_t
 
-    ! ---- Dormand & Prince 8(5,3) (DOP853) coefficients: Hairer's code, as in SciPy's
-    ! dop853_coefficients.py (C, A incl. the 3 dense-output stages 14-16, B = A(13, :12),
-    ! the 5th/3rd-order error weights E5/E3 and the dense-output matrix D).
-    real(dp), parameter :: dop_c(16) = [ &
-            0.0_dp, 0.05260015195876773_dp, 0.0789002279381516_dp, 0.1183503419072274_dp, &
-            0.2816496580927726_dp, 0.3333333333333333_dp, 0.25_dp, 0.3076923076923077_dp, &
-            0.6512820512820513_dp, 0.6_dp, 0.8571428571428571_dp, 1.0_dp, 1.0_dp, 0.1_dp, &
-            0.2_dp, 0.7777777777777778_dp &
-        ]
-    real(dp), parameter :: dop_a(16, 16) = reshape([ &
-            0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-            0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-            0.05260015195876773_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-            0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-            0.0197250569845379_dp, 0.0591751709536137_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-            0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-            0.02958758547680685_dp, 0.0_dp, 0.08876275643042054_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-            0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-            0.2413651341592667_dp, 0.0_dp, -0.8845494793282861_dp, 0.924834003261792_dp, 0.0_dp, &
-            0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-            0.0_dp, &
-            0.037037037037037035_dp, 0.0_dp, 0.0_dp, 0.17082860872947386_dp, &
-            0.12546768756682242_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-            0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-            0.037109375_dp, 0.0_dp, 0.0_dp, 0.17025221101954405_dp, 0.06021653898045596_dp, &
-            -0.017578125_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-            0.0_dp, 0.0_dp, &
-            0.03709200011850479_dp, 0.0_dp, 0.0_dp, 0.17038392571223998_dp, &
-            0.10726203044637328_dp, -0.015319437748624402_dp, 0.008273789163814023_dp, 0.0_dp, &
-            0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-            0.6241109587160757_dp, 0.0_dp, 0.0_dp, -3.3608926294469414_dp, &
-            -0.868219346841726_dp, 27.59209969944671_dp, 20.154067550477894_dp, &
-            -43.48988418106996_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-            0.0_dp, &
-            0.47766253643826434_dp, 0.0_dp, 0.0_dp, -2.4881146199716677_dp, &
-            -0.590290826836843_dp, 21.230051448181193_dp, 15.279233632882423_dp, &
-            -33.28821096898486_dp, -0.020331201708508627_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-            0.0_dp, 0.0_dp, 0.0_dp, &
-            -0.9371424300859873_dp, 0.0_dp, 0.0_dp, 5.186372428844064_dp, 1.0914373489967295_dp, &
-            -8.149787010746927_dp, -18.52006565999696_dp, 22.739487099350505_dp, &
-            2.4936055526796523_dp, -3.0467644718982196_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-            0.0_dp, 0.0_dp, &
-            2.273310147516538_dp, 0.0_dp, 0.0_dp, -10.53449546673725_dp, -2.0008720582248625_dp, &
-            -17.9589318631188_dp, 27.94888452941996_dp, -2.8589982771350235_dp, &
-            -8.87285693353063_dp, 12.360567175794303_dp, 0.6433927460157636_dp, 0.0_dp, 0.0_dp, &
-            0.0_dp, 0.0_dp, 0.0_dp, &
-            0.054293734116568765_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 4.450312892752409_dp, &
-            1.8915178993145003_dp, -5.801203960010585_dp, 0.3111643669578199_dp, &
-            -0.1521609496625161_dp, 0.20136540080403034_dp, 0.04471061572777259_dp, 0.0_dp, &
-            0.0_dp, 0.0_dp, 0.0_dp, &
-            0.056167502283047954_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-            0.25350021021662483_dp, -0.2462390374708025_dp, -0.12419142326381637_dp, &
-            0.15329179827876568_dp, 0.00820105229563469_dp, 0.007567897660545699_dp, &
-            -0.008298_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-            0.03183464816350214_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.028300909672366776_dp, &
-            0.053541988307438566_dp, -0.05492374857139099_dp, 0.0_dp, 0.0_dp, &
-            -0.00010834732869724932_dp, 0.0003825710908356584_dp, -0.00034046500868740456_dp, &
-            0.1413124436746325_dp, 0.0_dp, 0.0_dp, &
-            -0.42889630158379194_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, -4.697621415361164_dp, &
-            7.683421196062599_dp, 4.06898981839711_dp, 0.3567271874552811_dp, 0.0_dp, 0.0_dp, &
-            0.0_dp, -0.0013990241651590145_dp, 2.9475147891527724_dp, -9.15095847217987_dp, &
-            0.0_dp &
-        ], [16, 16], order=[2, 1])
-    real(dp), parameter :: dop_b(12) = [ &
-            0.054293734116568765_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 4.450312892752409_dp, &
-            1.8915178993145003_dp, -5.801203960010585_dp, 0.3111643669578199_dp, &
-            -0.1521609496625161_dp, 0.20136540080403034_dp, 0.04471061572777259_dp &
-        ]
-    real(dp), parameter :: dop_e3(13) = [ &
-            -0.18980075407240762_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 4.450312892752409_dp, &
-            1.8915178993145003_dp, -5.801203960010585_dp, -0.4226823213237919_dp, &
-            -0.1521609496625161_dp, 0.20136540080403034_dp, 0.02265179219836082_dp, 0.0_dp &
-        ]
-    real(dp), parameter :: dop_e5(13) = [ &
-            0.01312004499419488_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, -1.2251564463762044_dp, &
-            -0.4957589496572502_dp, 1.6643771824549864_dp, -0.35032884874997366_dp, &
-            0.3341791187130175_dp, 0.08192320648511571_dp, -0.022355307863886294_dp, 0.0_dp &
-        ]
-    real(dp), parameter :: dop_d(4, 16) = reshape([ &
-            -8.428938276109013_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.5667149535193777_dp, &
-            -3.0689499459498917_dp, 2.38466765651207_dp, 2.117034582445028_dp, &
-            -0.871391583777973_dp, 2.2404374302607883_dp, 0.6315787787694688_dp, &
-            -0.08899033645133331_dp, 18.148505520854727_dp, -9.194632392478356_dp, &
-            -4.436036387594894_dp, &
-            10.427508642579134_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 242.28349177525817_dp, &
-            165.20045171727028_dp, -374.5467547226902_dp, -22.113666853125306_dp, &
-            7.733432668472264_dp, -30.674084731089398_dp, -9.332130526430229_dp, &
-            15.697238121770845_dp, -31.139403219565178_dp, -9.35292435884448_dp, &
-            35.81684148639408_dp, &
-            19.985053242002433_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, -387.0373087493518_dp, &
-            -189.17813819516758_dp, 527.8081592054236_dp, -11.57390253995963_dp, &
-            6.8812326946963_dp, -1.0006050966910838_dp, 0.7777137798053443_dp, &
-            -2.778205752353508_dp, -60.19669523126412_dp, 84.32040550667716_dp, &
-            11.99229113618279_dp, &
-            -25.69393346270375_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, -154.18974869023643_dp, &
-            -231.5293791760455_dp, 357.6391179106141_dp, 93.40532418362432_dp, &
-            -37.45832313645163_dp, 104.0996495089623_dp, 29.8402934266605_dp, &
-            -43.53345659001114_dp, 96.32455395918828_dp, -39.17726167561544_dp, &
-            -149.72683625798564_dp &
-        ], [4, 16], order=[2, 1])
+    !> State of a run, handed to the procedures of the event-driven integrator.
+    type :: rocking_state_t
+        type(flight_ode_t) :: sys          !! settings, ground, side: the right-hand side
+        type(ode_dop853_t) :: ode          !! DOP853 stages and dense output
+        real(dp) :: t = 0.0_dp             !! time
+        real(dp) :: y(2) = 0.0_dp          !! (theta, theta') at t
+        real(dp) :: f(2) = 0.0_dp          !! their derivative at t
+        real(dp) :: h = 0.0_dp             !! next step size
+        real(dp) :: t_cross = 0.0_dp       !! last outward crossing of |theta| = alpha
+        real(dp) :: t_rest = 0.0_dp        !! time the block came back to rest
+        real(dp) :: t_lim = 0.0_dp         !! end of the run (t_max or huge)
+        integer :: s = 0                   !! side: +1, -1, 0 at rest
+        integer :: mode = 0                !! 0 at rest, 1 rocking
+        integer :: blocked = 0             !! uplift side ruled out on this piece
+        integer :: n_imp = 0               !! impacts so far
+        integer :: steps = 0               !! steps tried so far
+        integer :: ig = 1                  !! next output grid point
+        integer :: ng = 0                  !! grid points
+        logical :: from_zero = .false.     !! a flight starts at theta = 0
+        logical :: ever_up = .false.       !! the block has uplifted
+        logical :: done = .false.          !! the run is over
+        real(dp), allocatable :: imp(:)    !! impact times (when tracked)
+        real(dp), allocatable :: t_grid(:), th_grid(:), om_grid(:)  !! output grid
+        integer :: stat = SEISPULSE_SUCCESS              !! event or uplift location failed
+        character(len=:), allocatable :: msg             !! its message
+    end type rocking_state_t
 
 contains
 
@@ -393,8 +318,7 @@ contains
         real(dp), intent(in), optional :: theta0              !! initial theta (rad), |.| < pi/2
         real(dp), intent(in), optional :: omega0              !! initial theta' (rad/s)
         real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
-        type(sim_t) :: sim
-        type(ground_t) :: gr
+        type(rocking_state_t) :: st
         type(piece_iter_t) :: it
         real(dp) :: th0, om0, no_record(0)
 
@@ -408,23 +332,27 @@ contains
         call check_options(t_grid, theta_grid, omega_grid, t_max, theta0, omega0, rtol, &
                            th0, om0, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call setup_sim(blk, sim, t_max, rtol)
-        gr%src = GR_PULSE
-        gr%p = p
-        if (p%kind == PULSE_EXPONENTIAL) gr%cexp = exp_consts(p%beta)
+        call setup_sim(blk, st%sys%sim, t_max, rtol)
+        st%sys%gr%src = GR_PULSE
+        st%sys%gr%p = p
+        if (p%kind == PULSE_EXPONENTIAL) st%sys%gr%cexp = exp_consts(p%beta)
         call pulse_pieces_init(it, p)
-        call simulate(sim, gr, it, no_record, th0, om0, run, stat, errmsg, t_grid, &
-                      theta_grid, omega_grid)
+        call simulate(st, it, no_record, th0, om0, run, stat, errmsg, t_grid, theta_grid, &
+                      omega_grid)
     end subroutine rock_pulse
 
-    !> Rocking response to an accelerogram: accel(i) (m/s^2) at t = (i - 1) dt, linear in
-    !> between, a_g = 0 after the last sample (a jump if it is not 0). Everything else
+    !> Rocking response to an accelerogram: accel(i) (g) at t = (i - 1) dt, linear in
+    !> between, a_g = 0 after the last sample (a jump if it is not 0). The samples are
+    !> taken to m/s^2 as g * accel(i) (`g`: the unit of the record, usually blk%g; the
+    !> block's own blk%g sets the uplift threshold and the equation of motion; a record
+    !> already in m/s^2 is one in units of g = 1 m/s^2, taken as it is). Everything else
     !> as `rock_pulse`; the step budget grows with the record (40 per sample).
-    subroutine rock_record(blk, accel, dt, run, stat, errmsg, t_grid, theta_grid, omega_grid, &
-                           t_max, theta0, omega0, rtol)
+    subroutine rock_record(blk, accel, dt, g, run, stat, errmsg, t_grid, theta_grid, &
+                           omega_grid, t_max, theta0, omega0, rtol)
         type(rocking_block_t), intent(in) :: blk              !! the block
-        real(dp), intent(in) :: accel(:)                      !! ground acceleration (m/s^2), finite
+        real(dp), intent(in) :: accel(:)                      !! ground acceleration (g), finite
         real(dp), intent(in) :: dt                            !! sampling interval (s), > 0
+        real(dp), intent(in) :: g                             !! gravity (m/s^2), > 0
         type(rocking_run_t), intent(out) :: run               !! the result
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
@@ -435,34 +363,46 @@ contains
         real(dp), intent(in), optional :: theta0              !! initial theta (rad), |.| < pi/2
         real(dp), intent(in), optional :: omega0              !! initial theta' (rad/s)
         real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
-        type(sim_t) :: sim
-        type(ground_t) :: gr
+        type(rocking_state_t) :: st
         type(piece_iter_t) :: it
         real(dp) :: th0, om0
+        real(dp), allocatable :: accel_si(:)
+        real(dp) :: a_max
+        integer :: i
 
         call empty_run(run)
         call rocking_block_validate(blk, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (.not. finite_positive(dt)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'dt = '//real_str(dt) &
-                           //': must be a finite number > 0 (s)')
-            return
-        end if
-        call record_pieces_check(accel, stat, errmsg)
+        call record_step_check(accel, dt, g, stat, errmsg)   ! dt, g; not empty, finite
         if (stat /= SEISPULSE_SUCCESS) return
         call check_options(t_grid, theta_grid, omega_grid, t_max, theta0, omega0, rtol, &
                            th0, om0, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call setup_sim(blk, sim, t_max, rtol)
-        if (real(steps_per_sample, dp) * size(accel) > real(huge(1) - max_steps_default, dp)) then
-            sim%max_steps = huge(1)
-        else
-            sim%max_steps = max_steps_default + steps_per_sample * size(accel)
+        ! the samples in m/s^2 (g = 1: the very same numbers); an overflow of g * accel is
+        ! caught before the product (g <= 1 cannot overflow)
+        if (g > 1.0_dp) then
+            a_max = (huge(g) / g) * (1.0_dp - 4.0_dp * epsilon(g))
+            do i = 1, size(accel)
+                if (abs(accel(i)) > a_max) then
+                    call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel(' &
+                                   //int_str(i)//') = '//real_str(accel(i)) &
+                                   //': g * accel overflows (g = '//real_str(g)//' m/s^2)')
+                    return
+                end if
+            end do
         end if
-        gr%src = GR_RECORD
+        allocate(accel_si(size(accel)))
+        accel_si(:) = g * accel
+        call setup_sim(blk, st%sys%sim, t_max, rtol)
+        if (real(steps_per_sample, dp) * size(accel) > real(huge(1) - max_steps_default, dp)) then
+            st%sys%sim%max_steps = huge(1)
+        else
+            st%sys%sim%max_steps = max_steps_default + steps_per_sample * size(accel)
+        end if
+        st%sys%gr%src = GR_RECORD
         call record_pieces_init(it, size(accel), dt)
-        call simulate(sim, gr, it, accel, th0, om0, run, stat, errmsg, t_grid, &
-                      theta_grid, omega_grid)
+        call simulate(st, it, accel_si, th0, om0, run, stat, errmsg, t_grid, theta_grid, &
+                      omega_grid)
     end subroutine rock_record
 
     !> Overturning map of a pulse family: classes(i, j) for amp_ratio(i) = a_p/(g tan alpha)
@@ -491,8 +431,7 @@ contains
         type(pulse_t), intent(in), optional :: template       !! shape parameters of the kind
         real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
         type(rocking_block_t) :: blk
-        type(sim_t) :: sim
-        type(ground_t) :: gr
+        type(rocking_state_t) :: st
         type(piece_iter_t) :: it
         type(pulse_t) :: pl
         type(rocking_run_t) :: run
@@ -558,12 +497,12 @@ contains
                            //': template%t0 * template%freq must be a finite number >= 0')
             return
         end if
-        call setup_sim(blk, sim, rtol=rtol)
-        sim%map_mode = .true.
-        sim%track = .false.
-        sim%max_steps = max_steps_map
+        call setup_sim(blk, st%sys%sim, rtol=rtol)
+        st%sys%sim%map_mode = .true.
+        st%sys%sim%track = .false.
+        st%sys%sim%max_steps = max_steps_map
         tan_a = tan(alpha)
-        if (kind == PULSE_EXPONENTIAL) gr%cexp = exp_consts(pl%beta)
+        if (kind == PULSE_EXPONENTIAL) st%sys%gr%cexp = exp_consts(pl%beta)
 
         do j = 1, size(freq_ratio)
             if (kind == PULSE_RICKER) then
@@ -578,10 +517,10 @@ contains
                     call pulse_validate(pl, stat, errmsg)
                     if (stat /= SEISPULSE_SUCCESS) return
                 end if
-                gr%src = GR_PULSE
-                gr%p = pl
+                st%sys%gr%src = GR_PULSE
+                st%sys%gr%p = pl
                 call pulse_pieces_init(it, pl)
-                call simulate(sim, gr, it, no_record, 0.0_dp, 0.0_dp, run, stat, errmsg)
+                call simulate(st, it, no_record, 0.0_dp, 0.0_dp, run, stat, errmsg)
                 if (stat /= SEISPULSE_SUCCESS) return
                 select case (run%outcome)
                 case (ROCK_RUN_REST, ROCK_RUN_NO_UPLIFT)
@@ -708,12 +647,11 @@ contains
     ! The event-driven integrator
     ! ------------------------------------------------------------------------------
 
-    !> Run the block over the pieces of `it` (ground `gr`, samples `accel`), then in free
-    !> motion until the outcome is known (map mode) or the run ends.
-    subroutine simulate(sim, gr, it, accel, th0, om0, run, stat, errmsg, t_grid, th_grid, &
-                        om_grid)
-        type(sim_t), intent(in) :: sim
-        type(ground_t), intent(inout) :: gr
+    !> Run the block over the pieces of `it` (settings st%sys%sim, ground st%sys%gr,
+    !> samples `accel`), then in free motion until the outcome is known (map mode) or the
+    !> run ends. `st` keeps its integrator between calls (one allocation for a map).
+    subroutine simulate(st, it, accel, th0, om0, run, stat, errmsg, t_grid, th_grid, om_grid)
+        type(rocking_state_t), intent(inout) :: st
         type(piece_iter_t), intent(inout) :: it
         real(dp), intent(in) :: accel(:)
         real(dp), intent(in) :: th0, om0
@@ -724,577 +662,611 @@ contains
         real(dp), intent(out), optional :: th_grid(:)
         real(dp), intent(out), optional :: om_grid(:)
 
-        real(dp), allocatable :: imp(:)
-        real(dp) :: t, y(2), f(2), h, sa, t_cross, t_rest, t_lim
+        call st%ode%init(2, st%sys%sim%rtol, st%sys%sim%atol, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        st%ng = 0
+        if (present(t_grid)) then
+            st%ng = size(t_grid)
+            if (allocated(st%t_grid)) deallocate(st%t_grid, st%th_grid, st%om_grid)
+            allocate(st%t_grid, source=t_grid)
+            allocate(st%th_grid(st%ng), st%om_grid(st%ng))
+        end if
+        st%stat = SEISPULSE_SUCCESS
+        call simulate_run(st, it, accel, th0, om0, run, stat, errmsg)
+        if (stat == SEISPULSE_SUCCESS .and. st%stat /= SEISPULSE_SUCCESS) &
+            call set_error(stat, errmsg, st%stat, st%msg)
+        if (present(t_grid)) then
+            th_grid(:) = st%th_grid
+            om_grid(:) = st%om_grid
+        end if
+    end subroutine simulate
+
+    !> The body of `simulate`: errors of the pieces in stat, of the event location in
+    !> st%stat.
+    subroutine simulate_run(st, it, accel, th0, om0, run, stat, errmsg)
+        type(rocking_state_t), intent(inout) :: st
+        type(piece_iter_t), intent(inout) :: it
+        real(dp), intent(in) :: accel(:)
+        real(dp), intent(in) :: th0, om0
+        type(rocking_run_t), intent(inout) :: run
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
         type(piece_t) :: piece
-        integer :: s, mode, blocked, n_imp, steps, ig, ng, reason, dec, k, src_saved
-        logical :: found, from_zero, ever_up, done
-        character(len=120) :: rmsg
+        integer :: reason, dec, k, src_saved
+        logical :: found
 
         stat = SEISPULSE_SUCCESS
-        rmsg = ''
-        ng = 0
-        if (present(t_grid)) ng = size(t_grid)
-        ig = 1
-        t = 0.0_dp
-        y = [th0, om0]
-        f = 0.0_dp
-        n_imp = 0
-        steps = 0
-        done = .false.
-        blocked = 0
-        t_cross = ieee_value(t_cross, ieee_quiet_nan)
-        run%t_overturn = t_cross
-        t_rest = 0.0_dp
-        t_lim = huge(t_lim)
-        if (sim%has_t_max) t_lim = sim%t_max
+        associate(sim => st%sys%sim, gr => st%sys%gr)
+        st%ig = 1
+        st%t = 0.0_dp
+        st%y = [th0, om0]
+        st%f = 0.0_dp
+        st%n_imp = 0
+        st%steps = 0
+        st%done = .false.
+        st%blocked = 0
+        st%t_cross = ieee_value(st%t_cross, ieee_quiet_nan)
+        run%t_overturn = st%t_cross
+        st%t_rest = 0.0_dp
+        st%t_lim = huge(st%t_lim)
+        if (sim%has_t_max) st%t_lim = sim%t_max
         ! first step: a small fraction of the block's time scale; the control adapts it
-        h = 0.05_dp / sim%p
+        st%h = 0.05_dp / sim%p
         run%theta_max = max(0.0_dp, th0)
         run%theta_min = min(0.0_dp, th0)
-        if (sim%track) allocate(imp(16))
+        if (sim%track .and. .not. allocated(st%imp)) allocate(st%imp(16))
         ! the state before t = 0 is the initial one
-        do while (ig <= ng)
-            if (t_grid(ig) > 0.0_dp) exit
-            th_grid(ig) = th0
-            om_grid(ig) = om0
-            ig = ig + 1
+        do while (st%ig <= st%ng)
+            if (st%t_grid(st%ig) > 0.0_dp) exit
+            st%th_grid(st%ig) = th0
+            st%om_grid(st%ig) = om0
+            st%ig = st%ig + 1
         end do
         if (abs(th0) > 0.0_dp .or. abs(om0) > 0.0_dp) then
-            mode = 1
+            st%mode = 1
             if (abs(th0) > 0.0_dp) then
-                s = int(sign(1.0_dp, th0))
+                st%s = int(sign(1.0_dp, th0))
             else
-                s = int(sign(1.0_dp, om0))
+                st%s = int(sign(1.0_dp, om0))
             end if
-            ever_up = .true.
+            st%ever_up = .true.
             run%t_uplift = 0.0_dp
-            from_zero = .not. abs(th0) > 0.0_dp
+            st%from_zero = .not. abs(th0) > 0.0_dp
             ! an initial state beyond the barrier has no crossing: count it from t = 0
-            if (abs(th0) >= sim%alpha) t_cross = 0.0_dp
+            if (abs(th0) >= sim%alpha) st%t_cross = 0.0_dp
         else
-            mode = 0
-            s = 0
-            ever_up = .false.
-            from_zero = .false.
+            st%mode = 0
+            st%s = 0
+            st%ever_up = .false.
+            st%from_zero = .false.
             run%t_uplift = ieee_value(run%t_uplift, ieee_quiet_nan)
         end if
-        sa = sim%alpha * real(s, dp)
+        st%sys%sa = sim%alpha * real(st%s, dp)
 
         pieces: do
             call next_piece(it, accel, 'rocking', piece, found, stat, errmsg)
             if (stat /= SEISPULSE_SUCCESS) return
             if (.not. found) exit pieces
             call load_piece(gr, piece)
-            if (t < piece%ta) then
+            if (st%t < piece%ta) then
                 ! no excitation before this piece (M&P window): free flight or rest
-                if (mode == 1) then
+                if (st%mode == 1) then
                     src_saved = gr%src
                     gr%src = GR_ZERO
-                    call run_segment(piece%ta)
+                    call run_segment(st, run, piece%ta)
                     gr%src = src_saved
-                    if (done) return
+                    if (st%done) return
                 end if
-                if (t < piece%ta) then
-                    call fill_rest(piece%ta)
-                    t = piece%ta
+                if (st%t < piece%ta) then
+                    call fill_rest(st, piece%ta)
+                    st%t = piece%ta
                 end if
             end if
-            blocked = 0
-            call run_segment(piece%tb)
-            if (done) return
+            st%blocked = 0
+            call run_segment(st, run, piece%tb)
+            if (st%done) return
         end do pieces
 
         ! the excitation is over: a_g = 0 from now on
         gr%src = GR_ZERO
-        if (mode == 0) then
-            call finish_rest()
+        if (st%mode == 0) then
+            call finish_rest(st, run)
             return
         end if
         free: do k = 1, sim%max_steps
-            dec = decide(sim, y, s)
+            dec = decide(sim, st%y, st%s)
             if (sim%map_mode .and. dec /= DEC_OPEN) then
                 if (dec == DEC_SAFE) then
-                    call finish(ROCK_RUN_REST)
+                    call finish(st, run, ROCK_RUN_REST)
                 else
-                    call finish_overturn()
+                    call finish_overturn(st, run)
                 end if
                 return
             end if
             if (dec == DEC_SAFE) then
                 if (.not. (sim%has_t_max .or. sim%e < 1.0_dp)) then
                     ! e = 1: perpetual rocking, nothing more to learn without t_max
-                    call finish(ROCK_RUN_TIME_LIMIT)
+                    call finish(st, run, ROCK_RUN_TIME_LIMIT)
                     return
                 end if
-                call advance(t_lim, .false., reason)
+                call advance(st, run, st%t_lim, .false., reason)
             else
-                call advance(t_lim, .true., reason)
+                call advance(st, run, st%t_lim, .true., reason)
             end if
-            if (stat /= SEISPULSE_SUCCESS) return
+            if (st%stat /= SEISPULSE_SUCCESS) return
             select case (reason)
             case (R_IMPACT)
                 cycle free
             case (R_REST, R_TOUCH)
-                call finish_rest()
+                call finish_rest(st, run)
             case (R_CAP)
-                call finish_overturn()
+                call finish_overturn(st, run)
             case default
-                call finish(ROCK_RUN_TIME_LIMIT)
+                call finish(st, run, ROCK_RUN_TIME_LIMIT)
             end select
             return
         end do free
-        call finish(ROCK_RUN_TIME_LIMIT)
+        call finish(st, run, ROCK_RUN_TIME_LIMIT)
+        end associate
+    end subroutine simulate_run
 
-    contains
-
-        !> Rest and flights on the current piece up to t_stop.
-        subroutine run_segment(t_stop)
-            real(dp), intent(in) :: t_stop
-            integer :: kk
-            do kk = 1, sim%max_steps
-                if (.not. t < t_stop) return
-                if (.not. t < t_lim) then
-                    call finish(ROCK_RUN_TIME_LIMIT)
+    !> Rest and flights on the current piece up to t_stop.
+    subroutine run_segment(st, run, t_stop)
+        type(rocking_state_t), intent(inout) :: st
+        type(rocking_run_t), intent(inout) :: run
+        real(dp), intent(in) :: t_stop
+        integer :: kk, reason
+        do kk = 1, st%sys%sim%max_steps
+            if (.not. st%t < t_stop) return
+            if (.not. st%t < st%t_lim) then
+                call finish(st, run, ROCK_RUN_TIME_LIMIT)
+                return
+            end if
+            if (st%mode == 0) then
+                call rest_scan(st, run, t_stop)
+                if (st%done .or. st%stat /= SEISPULSE_SUCCESS) then
+                    st%done = .true.
                     return
                 end if
-                if (mode == 0) then
-                    call rest_scan(t_stop)
-                    if (done .or. stat /= SEISPULSE_SUCCESS) then
-                        done = .true.
-                        return
-                    end if
-                else
-                    call advance(min(t_stop, t_lim), .false., reason)
-                    if (stat /= SEISPULSE_SUCCESS) then
-                        done = .true.
-                        return
-                    end if
-                    select case (reason)
-                    case (R_TOUCH)
-                        ! the threshold was touched, not exceeded: no uplift that way
-                        ! on this monotone piece
-                        blocked = s
-                        call set_rest(t)
-                    case (R_CAP)
-                        call finish_overturn()
-                        return
-                    case (R_LIMIT)
-                        call finish(ROCK_RUN_TIME_LIMIT)
-                        return
-                    end select
-                end if
-            end do
-            call finish(ROCK_RUN_TIME_LIMIT)
-        end subroutine run_segment
-
-        !> At rest on a monotone piece: find the uplift (rocking.md 2, Eq. 2.3), a root of
-        !> a_g -+ threshold (Brent), or move to t_stop.
-        subroutine rest_scan(t_stop)
-            real(dp), intent(in) :: t_stop
-            real(dp) :: a_c, a_e, lev, t_u, thr
-            integer :: dir
-            logical :: now
-            if (gr%src == GR_ZERO) then
-                call fill_rest(t_stop)
-                t = t_stop
-                return
-            end if
-            thr = sim%thr
-            a_c = ground_accel(gr, t)
-            a_e = gr%ab
-            call onset_on_piece(a_c, a_e, thr, thr, blocked, dir, lev, now)
-            if (dir == 0) then
-                call fill_rest(t_stop)
-                t = t_stop
-                return
-            end if
-            t_u = t
-            if (.not. now) then
-                gr%level = lev
-                call find_root(gr, t, t_stop, t_u, stat, rmsg, fa_known=a_c - lev, &
-                               fb_known=a_e - lev)
-                if (stat /= SEISPULSE_SUCCESS) then
-                    call set_error(stat, errmsg, SEISPULSE_INTERNAL, 'rocking: uplift ' &
-                                   //'location failed after t = '//real_str(t)//': ' &
-                                   //trim(rmsg)//' (a bug)')
+            else
+                call advance(st, run, min(t_stop, st%t_lim), .false., reason)
+                if (st%stat /= SEISPULSE_SUCCESS) then
+                    st%done = .true.
                     return
                 end if
-                t_u = min(max(t_u, t), t_stop)
+                select case (reason)
+                case (R_TOUCH)
+                    ! the threshold was touched, not exceeded: no uplift that way
+                    ! on this monotone piece
+                    st%blocked = st%s
+                    call set_rest(st, st%t)
+                case (R_CAP)
+                    call finish_overturn(st, run)
+                    return
+                case (R_LIMIT)
+                    call finish(st, run, ROCK_RUN_TIME_LIMIT)
+                    return
+                end select
             end if
-            if (t_u > t_lim) then
-                call fill_rest(t_lim)
-                t = t_lim
-                call finish(ROCK_RUN_TIME_LIMIT)
+        end do
+        call finish(st, run, ROCK_RUN_TIME_LIMIT)
+    end subroutine run_segment
+
+    !> At rest on a monotone piece: find the uplift (rocking.md 2, Eq. 2.3), a root of
+    !> a_g -+ threshold (Brent), or move to t_stop.
+    subroutine rest_scan(st, run, t_stop)
+        type(rocking_state_t), intent(inout) :: st
+        type(rocking_run_t), intent(inout) :: run
+        real(dp), intent(in) :: t_stop
+        real(dp) :: a_c, a_e, lev, t_u, thr
+        integer :: dir
+        logical :: now
+        character(len=120) :: rmsg
+        associate(gr => st%sys%gr)
+        if (gr%src == GR_ZERO) then
+            call fill_rest(st, t_stop)
+            st%t = t_stop
+            return
+        end if
+        thr = st%sys%sim%thr
+        a_c = ground_accel(gr, st%t)
+        a_e = gr%ab
+        call onset_on_piece(a_c, a_e, thr, thr, st%blocked, dir, lev, now)
+        if (dir == 0) then
+            call fill_rest(st, t_stop)
+            st%t = t_stop
+            return
+        end if
+        t_u = st%t
+        if (.not. now) then
+            gr%level = lev
+            rmsg = ''
+            call find_root(gr, st%t, t_stop, t_u, st%stat, rmsg, fa_known=a_c - lev, &
+                           fb_known=a_e - lev)
+            if (st%stat /= SEISPULSE_SUCCESS) then
+                st%msg = 'rocking: uplift location failed after t = '//real_str(st%t)//': ' &
+                         //trim(rmsg)//' (a bug)'
+                st%stat = SEISPULSE_INTERNAL
                 return
             end if
-            call fill_rest(t_u)
-            t = t_u
-            mode = 1
-            s = dir
-            sa = sim%alpha * real(s, dp)
-            y = 0.0_dp
-            from_zero = .true.
-            if (.not. ever_up) then
-                ever_up = .true.
-                run%t_uplift = t_u
+            t_u = min(max(t_u, st%t), t_stop)
+        end if
+        if (t_u > st%t_lim) then
+            call fill_rest(st, st%t_lim)
+            st%t = st%t_lim
+            call finish(st, run, ROCK_RUN_TIME_LIMIT)
+            return
+        end if
+        call fill_rest(st, t_u)
+        st%t = t_u
+        st%mode = 1
+        st%s = dir
+        st%sys%sa = st%sys%sim%alpha * real(st%s, dp)
+        st%y = 0.0_dp
+        st%from_zero = .true.
+        if (.not. st%ever_up) then
+            st%ever_up = .true.
+            run%t_uplift = t_u
+        end if
+        end associate
+    end subroutine rest_scan
+
+    !> Integrate the flight from (t, y) on side s up to t_stop, handling impacts
+    !> (restitution, rest), the outward crossings of alpha and |theta| = pi/2.
+    subroutine advance(st, run, t_stop, stop_on_impact, why)
+        type(rocking_state_t), intent(inout) :: st
+        type(rocking_run_t), intent(inout) :: run
+        real(dp), intent(in) :: t_stop
+        logical, intent(in) :: stop_on_impact
+        integer, intent(out) :: why
+        real(dp) :: hh, t_new, y_new(2), f_new(2), err, fac, u0, u1, w0, w1
+        real(dp) :: x_turn, u_turn, x_ev, x_end, u_end, xr, yv(2), acc0, tau, t_r, amp
+        real(dp) :: fa, rs_
+        integer :: ev, kk
+        logical :: turn, max_turn, need, rejected, clamped
+
+        associate(sim => st%sys%sim, t => st%t, y => st%y, f => st%f, h => st%h, &
+                  ig => st%ig, ng => st%ng, ode => st%ode)
+        why = R_REACHED
+        rs_ = real(st%s, dp)
+        call st%sys%rhs(t, y, f)
+        rejected = .false.
+        do kk = 1, sim%max_steps
+            if (.not. t < t_stop) return
+            if (st%steps >= sim%max_steps) then
+                why = R_LIMIT
+                return
             end if
-        end subroutine rest_scan
-
-        !> Integrate the flight from (t, y) on side s up to t_stop, handling impacts
-        !> (restitution, rest), the outward crossings of alpha and |theta| = pi/2.
-        subroutine advance(t_stop, stop_on_impact, why)
-            real(dp), intent(in) :: t_stop
-            logical, intent(in) :: stop_on_impact
-            integer, intent(out) :: why
-            real(dp) :: hh, t_new, y_new(2), f_new(2), kst(2, 16), err, fac, u0, u1, w0, w1
-            real(dp) :: x_turn, u_turn, x_ev, x_end, u_end, xr, yv(2), acc0, tau, t_r, amp
-            real(dp) :: fa, rs_
-            integer :: ev, kk
-            logical :: turn, max_turn, need, rejected, clamped
-            type(dense_fn) :: df
-
-            why = R_REACHED
-            rs_ = real(s, dp)
-            f = rhs(sim, gr, sa, t, y)
+            st%steps = st%steps + 1
+            ! at most half the block's time scale: one turning point per step at most
+            h = min(h, 0.5_dp / sim%p)
+            clamped = .not. h < t_stop - t
+            if (clamped) then
+                t_new = t_stop
+            else
+                t_new = t + h
+            end if
+            hh = t_new - t
+            if (hh < min_step(sim, t)) then
+                if (st%from_zero) then
+                    ! no flight of any length leaves the base: not an uplift
+                    why = R_TOUCH
+                    return
+                else if (clamped) then
+                    ! a sliver of a piece below the time resolution: step over it
+                    t = t_new
+                    cycle
+                end if
+                why = R_LIMIT
+                return
+            end if
+            call ode%step(st%sys, t, y, f, hh, t_new, y_new, f_new, err)
+            if (.not. err <= 1.0_dp) then
+                rejected = .true.
+                h = hh * ode_dop853_factor(err)
+                cycle
+            end if
+            u1 = rs_ * y_new(1)
+            if (st%from_zero .and. .not. u1 > 0.0_dp) then
+                ! the first step of a flight must leave the base: shorter
+                h = 0.25_dp * hh
+                cycle
+            end if
+            fac = ode_dop853_factor(err)
+            if (rejected) fac = min(fac, 1.0_dp)
             rejected = .false.
-            do kk = 1, sim%max_steps
-                if (.not. t < t_stop) return
-                if (steps >= sim%max_steps) then
-                    why = R_LIMIT
-                    return
+            st%from_zero = .false.
+            u0 = rs_ * y(1)
+            w0 = rs_ * y(2)
+            w1 = rs_ * y_new(2)
+            ! turning point: a maximum of s theta (w from >= 0 to < 0) or a minimum
+            max_turn = w0 >= 0.0_dp .and. w1 < 0.0_dp
+            turn = max_turn .or. (w0 < 0.0_dp .and. w1 > 0.0_dp)
+            need = u1 <= 0.0_dp .or. u1 >= half_pi .or. (turn .and. .not. max_turn)
+            if (sim%track) need = need .or. turn .or. (u0 < sim%alpha .and. u1 >= sim%alpha)
+            if (ig <= ng) need = need .or. st%t_grid(ig) <= t_new
+            ev = 0
+            x_ev = 1.0_dp
+            x_turn = 0.0_dp
+            u_turn = u0
+            if (need) then
+                call ode%dense_setup(st%sys, t, y, f, hh, y_new, f_new)
+                if (turn) then
+                    ! w0 = 0 only at an uplift, where the block starts outward
+                    fa = w0
+                    if (.not. abs(w0) > 0.0_dp) fa = tiny(fa)
+                    call locate(st, 2, rs_, 0.0_dp, 0.0_dp, 1.0_dp, fa, w1, x_turn)
+                    if (st%stat /= SEISPULSE_SUCCESS) return
+                    call ode%value(x_turn, yv)
+                    u_turn = rs_ * yv(1)
                 end if
-                steps = steps + 1
-                ! at most half the block's time scale: one turning point per step at most
-                h = min(h, 0.5_dp / sim%p)
-                clamped = .not. h < t_stop - t
-                if (clamped) then
-                    t_new = t_stop
-                else
-                    t_new = t + h
-                end if
-                hh = t_new - t
-                if (hh < min_step(sim, t)) then
-                    if (from_zero) then
-                        ! no flight of any length leaves the base: not an uplift
-                        why = R_TOUCH
-                        return
-                    else if (clamped) then
-                        ! a sliver of a piece below the time resolution: step over it
-                        t = t_new
-                        cycle
-                    end if
-                    why = R_LIMIT
-                    return
-                end if
-                call dop_step(sim, gr, sa, t, y, f, hh, t_new, y_new, f_new, kst, err)
-                if (.not. err <= 1.0_dp) then
-                    rejected = .true.
-                    h = hh * max(0.2_dp, 0.9_dp * err**(-0.125_dp))
-                    cycle
-                end if
-                u1 = rs_ * y_new(1)
-                if (from_zero .and. .not. u1 > 0.0_dp) then
-                    ! the first step of a flight must leave the base: shorter
-                    h = 0.25_dp * hh
-                    cycle
-                end if
-                if (err > 0.0_dp) then
-                    fac = min(10.0_dp, 0.9_dp * err**(-0.125_dp))
-                else
-                    fac = 10.0_dp
-                end if
-                if (rejected) fac = min(fac, 1.0_dp)
-                rejected = .false.
-                from_zero = .false.
-                u0 = rs_ * y(1)
-                w0 = rs_ * y(2)
-                w1 = rs_ * y_new(2)
-                ! turning point: a maximum of s theta (w from >= 0 to < 0) or a minimum
-                max_turn = w0 >= 0.0_dp .and. w1 < 0.0_dp
-                turn = max_turn .or. (w0 < 0.0_dp .and. w1 > 0.0_dp)
-                need = u1 <= 0.0_dp .or. u1 >= half_pi .or. (turn .and. .not. max_turn)
-                if (sim%track) need = need .or. turn .or. (u0 < sim%alpha .and. u1 >= sim%alpha)
-                if (ig <= ng) need = need .or. t_grid(ig) <= t_new
-                ev = 0
-                x_ev = 1.0_dp
-                x_turn = 0.0_dp
-                u_turn = u0
-                if (need) then
-                    call dense_setup(sim, gr, sa, t, y, f, hh, y_new, f_new, kst, df)
-                    df%sgn = rs_
-                    if (turn) then
-                        ! w0 = 0 only at an uplift, where the block starts outward
-                        fa = w0
-                        if (.not. abs(w0) > 0.0_dp) fa = tiny(fa)
-                        call locate(df, 2, 0.0_dp, 0.0_dp, 1.0_dp, fa, w1, x_turn)
-                        if (stat /= SEISPULSE_SUCCESS) return
-                        yv = dense_value(df, x_turn)
-                        u_turn = rs_ * yv(1)
-                    end if
-                    if (max_turn) then
-                        if (u_turn >= half_pi) then
-                            ev = R_CAP
-                            call locate(df, 1, half_pi, 0.0_dp, x_turn, u0 - half_pi, &
-                                        u_turn - half_pi, x_ev)
-                        else if (u1 <= 0.0_dp) then
-                            ev = R_IMPACT
-                            call locate(df, 1, 0.0_dp, x_turn, 1.0_dp, u_turn, u1, x_ev)
-                        end if
-                    else if (turn) then
-                        if (u_turn <= 0.0_dp) then
-                            ev = R_IMPACT
-                            call locate(df, 1, 0.0_dp, 0.0_dp, x_turn, u0, u_turn, x_ev)
-                        else if (u1 >= half_pi) then
-                            ev = R_CAP
-                            call locate(df, 1, half_pi, x_turn, 1.0_dp, u_turn - half_pi, &
-                                        u1 - half_pi, x_ev)
-                        end if
+                if (max_turn) then
+                    if (u_turn >= half_pi) then
+                        ev = R_CAP
+                        call locate(st, 1, rs_, half_pi, 0.0_dp, x_turn, u0 - half_pi, &
+                                    u_turn - half_pi, x_ev)
                     else if (u1 <= 0.0_dp) then
                         ev = R_IMPACT
-                        call locate(df, 1, 0.0_dp, 0.0_dp, 1.0_dp, u0, u1, x_ev)
+                        call locate(st, 1, rs_, 0.0_dp, x_turn, 1.0_dp, u_turn, u1, x_ev)
+                    end if
+                else if (turn) then
+                    if (u_turn <= 0.0_dp) then
+                        ev = R_IMPACT
+                        call locate(st, 1, rs_, 0.0_dp, 0.0_dp, x_turn, u0, u_turn, x_ev)
                     else if (u1 >= half_pi) then
                         ev = R_CAP
-                        call locate(df, 1, half_pi, 0.0_dp, 1.0_dp, u0 - half_pi, &
+                        call locate(st, 1, rs_, half_pi, x_turn, 1.0_dp, u_turn - half_pi, &
                                     u1 - half_pi, x_ev)
                     end if
-                    if (stat /= SEISPULSE_SUCCESS) return
+                else if (u1 <= 0.0_dp) then
+                    ev = R_IMPACT
+                    call locate(st, 1, rs_, 0.0_dp, 0.0_dp, 1.0_dp, u0, u1, x_ev)
+                else if (u1 >= half_pi) then
+                    ev = R_CAP
+                    call locate(st, 1, rs_, half_pi, 0.0_dp, 1.0_dp, u0 - half_pi, &
+                                u1 - half_pi, x_ev)
                 end if
-                x_end = x_ev
-                if (ev == R_IMPACT) then
-                    u_end = 0.0_dp
-                else if (ev == R_CAP) then
-                    u_end = half_pi
-                else
-                    u_end = u1
-                end if
-                if (sim%track) then
-                    ! extremes of theta and the last outward crossing of |theta| = alpha
-                    ! (not when the step ends in an impact: the block is then back at 0)
-                    if (turn .and. x_turn <= x_end) call extremes(rs_ * u_turn)
-                    call extremes(rs_ * u_end)
-                    if (ev /= R_IMPACT) then
-                        xr = -1.0_dp
-                        if (max_turn .and. x_turn <= x_end) then
-                            if (u0 < sim%alpha .and. u_turn >= sim%alpha) &
-                                call locate(df, 1, sim%alpha, 0.0_dp, x_turn, &
-                                            u0 - sim%alpha, u_turn - sim%alpha, xr)
-                        else if (turn .and. x_turn <= x_end) then
-                            if (u_turn < sim%alpha .and. u_end >= sim%alpha) &
-                                call locate(df, 1, sim%alpha, x_turn, x_end, &
-                                            u_turn - sim%alpha, u_end - sim%alpha, xr)
-                        else if (u0 < sim%alpha .and. u_end >= sim%alpha) then
-                            call locate(df, 1, sim%alpha, 0.0_dp, x_end, u0 - sim%alpha, &
-                                        u_end - sim%alpha, xr)
-                        end if
-                        if (stat /= SEISPULSE_SUCCESS) return
-                        if (xr >= 0.0_dp) t_cross = t + xr * hh
-                    end if
-                end if
-                ! grid points inside the step
-                do while (ig <= ng)
-                    if (ev == 0) then
-                        if (t_grid(ig) > t_new) exit
-                    else
-                        if (t_grid(ig) > t + x_ev * hh) exit
-                    end if
-                    yv = dense_value(df, min(max((t_grid(ig) - t) / hh, 0.0_dp), 1.0_dp))
-                    th_grid(ig) = yv(1)
-                    om_grid(ig) = yv(2)
-                    ig = ig + 1
-                end do
-                if (clamped) then
-                    h = max(h, hh * fac)
-                else
-                    h = hh * fac
-                end if
-                if (ev == 0) then
-                    t = t_new
-                    y = y_new
-                    f = f_new
-                    cycle
-                end if
-                ! an event ends the step
-                yv = dense_value(df, x_ev)
-                if (x_ev < 1.0_dp) then
-                    t = t + x_ev * hh
-                else
-                    t = t_new
-                end if
-                if (ev == R_CAP) then
-                    y = [rs_ * half_pi, yv(2)]
-                    why = R_CAP
-                    return
-                end if
-                ! impact (rocking.md 7): onto the other corner, theta' times e
-                n_imp = n_imp + 1
-                if (sim%track) call push_impact(t)
-                s = -s
-                rs_ = real(s, dp)
-                sa = sim%alpha * rs_
-                y = [0.0_dp, sim%e * yv(2)]
-                f = rhs(sim, gr, sa, t, y)
-                acc0 = f(2)
-                if (.not. rs_ * acc0 > 0.0_dp) then
-                    ! pushed back onto the base: the next flight rises theta'^2/(2|theta''|)
-                    if (abs(acc0) > 0.0_dp) then
-                        amp = 0.5_dp * y(2)**2 / abs(acc0)
-                    else if (abs(y(2)) > 0.0_dp) then
-                        amp = huge(amp)
-                    else
-                        amp = 0.0_dp
-                    end if
-                    if (amp <= sim%rest_amp) then
-                        ! rest (ends a Zeno sequence): flights tau, e tau, ... sum tau/(1-e)
-                        t_r = t
-                        if (abs(acc0) > 0.0_dp .and. sim%e < 1.0_dp) then
-                            tau = 2.0_dp * abs(y(2)) / abs(acc0)
-                            t_r = t + tau / (1.0_dp - sim%e)
-                        end if
-                        call set_rest(min(t_r, t_stop))
-                        why = R_REST
-                        return
-                    end if
-                    ! a flight of 2|theta'|/|theta''|: start with a quarter of it
-                    h = min(h, 0.5_dp * abs(y(2)) / abs(acc0))
-                end if
-                from_zero = .true.
-                if (stop_on_impact) then
-                    why = R_IMPACT
-                    return
-                end if
-            end do
-            why = R_LIMIT
-        end subroutine advance
-
-        !> Root of sgn * component - level of the dense output on [xa, xb], given the
-        !> values fa, fb at the ends (of opposite signs, or one of them 0).
-        subroutine locate(df, comp, level, xa, xb, fa, fb, x)
-            type(dense_fn), intent(inout) :: df
-            integer, intent(in) :: comp
-            real(dp), intent(in) :: level, xa, xb, fa, fb
-            real(dp), intent(out) :: x
-            df%comp = comp
-            df%level = level
-            if (.not. xb > xa) then
-                x = xa
-                return
+                if (st%stat /= SEISPULSE_SUCCESS) return
             end if
-            call find_root(df, xa, xb, x, stat, rmsg, fa_known=fa, fb_known=fb)
-            if (stat /= SEISPULSE_SUCCESS) then
-                call set_error(stat, errmsg, SEISPULSE_INTERNAL, 'rocking: event location ' &
-                               //'failed after t = '//real_str(t)//': '//trim(rmsg)//' (a bug)')
-                done = .true.
-                return
-            end if
-            x = min(max(x, xa), xb)
-        end subroutine locate
-
-        !> The block is back at rest at tt (grid points up to tt: 0).
-        subroutine set_rest(tt)
-            real(dp), intent(in) :: tt
-            call fill_rest(tt)
-            t = max(t, tt)
-            t_rest = t
-            mode = 0
-            s = 0
-            sa = 0.0_dp
-            y = 0.0_dp
-            from_zero = .false.
-        end subroutine set_rest
-
-        subroutine extremes(th)
-            real(dp), intent(in) :: th
-            run%theta_max = max(run%theta_max, th)
-            run%theta_min = min(run%theta_min, th)
-        end subroutine extremes
-
-        subroutine push_impact(tt)
-            real(dp), intent(in) :: tt
-            real(dp), allocatable :: tmp(:)
-            if (n_imp > size(imp)) then
-                allocate(tmp(2 * size(imp)))
-                tmp(1:size(imp)) = imp
-                call move_alloc(tmp, imp)
-            end if
-            imp(n_imp) = tt
-        end subroutine push_impact
-
-        !> Grid points up to tt while at rest.
-        subroutine fill_rest(tt)
-            real(dp), intent(in) :: tt
-            do while (ig <= ng)
-                if (t_grid(ig) > tt) exit
-                th_grid(ig) = 0.0_dp
-                om_grid(ig) = 0.0_dp
-                ig = ig + 1
-            end do
-        end subroutine fill_rest
-
-        !> Overturned (|theta| = pi/2, or certain once the excitation is over).
-        subroutine finish_overturn()
-            if (n_imp == 0) then
-                call finish(ROCK_RUN_OVERTURN_NO_IMPACT)
-            else if (n_imp == 1) then
-                call finish(ROCK_RUN_OVERTURN_ONE_IMPACT)
+            x_end = x_ev
+            if (ev == R_IMPACT) then
+                u_end = 0.0_dp
+            else if (ev == R_CAP) then
+                u_end = half_pi
             else
-                call finish(ROCK_RUN_OVERTURN_MANY)
+                u_end = u1
             end if
-        end subroutine finish_overturn
-
-        subroutine finish_rest()
-            if (ever_up) then
-                call finish(ROCK_RUN_REST)
-            else
-                call finish(ROCK_RUN_NO_UPLIFT)
-            end if
-        end subroutine finish_rest
-
-        !> Fill the run and the rest of the grid.
-        subroutine finish(outcome)
-            integer, intent(in) :: outcome
-            real(dp) :: th_after, om_after
-            done = .true.
-            run%outcome = outcome
-            run%n_impacts = n_imp
-            run%n_steps = steps
-            select case (outcome)
-            case (ROCK_RUN_NO_UPLIFT)
-                run%t_end = 0.0_dp
-                th_after = 0.0_dp
-                om_after = 0.0_dp
-            case (ROCK_RUN_REST)
-                run%t_end = t_rest
-                th_after = 0.0_dp
-                om_after = 0.0_dp
-            case (ROCK_RUN_TIME_LIMIT)
-                run%t_end = t
-                th_after = ieee_value(th_after, ieee_quiet_nan)
-                om_after = th_after
-            case default
-                ! overturned: on its side
-                run%t_end = t
-                run%t_overturn = t_cross
-                if (s < 0) then
-                    th_after = -half_pi
-                else
-                    th_after = half_pi
-                end if
-                om_after = 0.0_dp
-            end select
-            do while (ig <= ng)
-                th_grid(ig) = th_after
-                om_grid(ig) = om_after
-                ig = ig + 1
-            end do
             if (sim%track) then
-                if (allocated(run%t_impacts)) deallocate(run%t_impacts)
-                allocate(run%t_impacts(n_imp))
-                run%t_impacts(:) = imp(1:n_imp)
+                ! extremes of theta and the last outward crossing of |theta| = alpha
+                ! (not when the step ends in an impact: the block is then back at 0)
+                if (turn .and. x_turn <= x_end) call extremes(run, rs_ * u_turn)
+                call extremes(run, rs_ * u_end)
+                if (ev /= R_IMPACT) then
+                    xr = -1.0_dp
+                    if (max_turn .and. x_turn <= x_end) then
+                        if (u0 < sim%alpha .and. u_turn >= sim%alpha) &
+                            call locate(st, 1, rs_, sim%alpha, 0.0_dp, x_turn, &
+                                        u0 - sim%alpha, u_turn - sim%alpha, xr)
+                    else if (turn .and. x_turn <= x_end) then
+                        if (u_turn < sim%alpha .and. u_end >= sim%alpha) &
+                            call locate(st, 1, rs_, sim%alpha, x_turn, x_end, &
+                                        u_turn - sim%alpha, u_end - sim%alpha, xr)
+                    else if (u0 < sim%alpha .and. u_end >= sim%alpha) then
+                        call locate(st, 1, rs_, sim%alpha, 0.0_dp, x_end, u0 - sim%alpha, &
+                                    u_end - sim%alpha, xr)
+                    end if
+                    if (st%stat /= SEISPULSE_SUCCESS) return
+                    if (xr >= 0.0_dp) st%t_cross = t + xr * hh
+                end if
             end if
-        end subroutine finish
+            ! grid points inside the step
+            do while (ig <= ng)
+                if (ev == 0) then
+                    if (st%t_grid(ig) > t_new) exit
+                else
+                    if (st%t_grid(ig) > t + x_ev * hh) exit
+                end if
+                call ode%value(min(max((st%t_grid(ig) - t) / hh, 0.0_dp), 1.0_dp), yv)
+                st%th_grid(ig) = yv(1)
+                st%om_grid(ig) = yv(2)
+                ig = ig + 1
+            end do
+            if (clamped) then
+                h = max(h, hh * fac)
+            else
+                h = hh * fac
+            end if
+            if (ev == 0) then
+                t = t_new
+                y = y_new
+                f = f_new
+                cycle
+            end if
+            ! an event ends the step
+            call ode%value(x_ev, yv)
+            if (x_ev < 1.0_dp) then
+                t = t + x_ev * hh
+            else
+                t = t_new
+            end if
+            if (ev == R_CAP) then
+                y = [rs_ * half_pi, yv(2)]
+                why = R_CAP
+                return
+            end if
+            ! impact (rocking.md 7): onto the other corner, theta' times e
+            st%n_imp = st%n_imp + 1
+            if (sim%track) call push_impact(st, t)
+            st%s = -st%s
+            rs_ = real(st%s, dp)
+            st%sys%sa = sim%alpha * rs_
+            y = [0.0_dp, sim%e * yv(2)]
+            call st%sys%rhs(t, y, f)
+            acc0 = f(2)
+            if (.not. rs_ * acc0 > 0.0_dp) then
+                ! pushed back onto the base: the next flight rises theta'^2/(2|theta''|)
+                if (abs(acc0) > 0.0_dp) then
+                    amp = 0.5_dp * y(2)**2 / abs(acc0)
+                else if (abs(y(2)) > 0.0_dp) then
+                    amp = huge(amp)
+                else
+                    amp = 0.0_dp
+                end if
+                if (amp <= sim%rest_amp) then
+                    ! rest (ends a Zeno sequence): flights tau, e tau, ... sum tau/(1-e)
+                    t_r = t
+                    if (abs(acc0) > 0.0_dp .and. sim%e < 1.0_dp) then
+                        tau = 2.0_dp * abs(y(2)) / abs(acc0)
+                        t_r = t + tau / (1.0_dp - sim%e)
+                    end if
+                    call set_rest(st, min(t_r, t_stop))
+                    why = R_REST
+                    return
+                end if
+                ! a flight of 2|theta'|/|theta''|: start with a quarter of it
+                h = min(h, 0.5_dp * abs(y(2)) / abs(acc0))
+            end if
+            st%from_zero = .true.
+            if (stop_on_impact) then
+                why = R_IMPACT
+                return
+            end if
+        end do
+        why = R_LIMIT
+        end associate
+    end subroutine advance
 
-    end subroutine simulate
+    !> Root of sgn * component - level of the dense output on [xa, xb], given the
+    !> values fa, fb at the ends (of opposite signs, or one of them 0).
+    subroutine locate(st, comp, sgn, level, xa, xb, fa, fb, x)
+        type(rocking_state_t), intent(inout) :: st
+        integer, intent(in) :: comp
+        real(dp), intent(in) :: sgn, level, xa, xb, fa, fb
+        real(dp), intent(out) :: x
+        character(len=120) :: rmsg
+        rmsg = ''
+        call st%ode%locate(comp, sgn, level, xa, xb, fa, fb, x, st%stat, rmsg)
+        if (st%stat /= SEISPULSE_SUCCESS) then
+            st%msg = 'rocking: event location failed after t = '//real_str(st%t)//': ' &
+                     //trim(rmsg)//' (a bug)'
+            st%stat = SEISPULSE_INTERNAL
+            st%done = .true.
+        end if
+    end subroutine locate
+
+    !> The block is back at rest at tt (grid points up to tt: 0).
+    subroutine set_rest(st, tt)
+        type(rocking_state_t), intent(inout) :: st
+        real(dp), intent(in) :: tt
+        call fill_rest(st, tt)
+        st%t = max(st%t, tt)
+        st%t_rest = st%t
+        st%mode = 0
+        st%s = 0
+        st%sys%sa = 0.0_dp
+        st%y = 0.0_dp
+        st%from_zero = .false.
+    end subroutine set_rest
+
+    pure subroutine extremes(run, th)
+        type(rocking_run_t), intent(inout) :: run
+        real(dp), intent(in) :: th
+        run%theta_max = max(run%theta_max, th)
+        run%theta_min = min(run%theta_min, th)
+    end subroutine extremes
+
+    subroutine push_impact(st, tt)
+        type(rocking_state_t), intent(inout) :: st
+        real(dp), intent(in) :: tt
+        real(dp), allocatable :: tmp(:)
+        if (st%n_imp > size(st%imp)) then
+            allocate(tmp(2 * size(st%imp)))
+            tmp(1:size(st%imp)) = st%imp
+            call move_alloc(tmp, st%imp)
+        end if
+        st%imp(st%n_imp) = tt
+    end subroutine push_impact
+
+    !> Grid points up to tt while at rest.
+    subroutine fill_rest(st, tt)
+        type(rocking_state_t), intent(inout) :: st
+        real(dp), intent(in) :: tt
+        do while (st%ig <= st%ng)
+            if (st%t_grid(st%ig) > tt) exit
+            st%th_grid(st%ig) = 0.0_dp
+            st%om_grid(st%ig) = 0.0_dp
+            st%ig = st%ig + 1
+        end do
+    end subroutine fill_rest
+
+    !> Overturned (|theta| = pi/2, or certain once the excitation is over).
+    subroutine finish_overturn(st, run)
+        type(rocking_state_t), intent(inout) :: st
+        type(rocking_run_t), intent(inout) :: run
+        if (st%n_imp == 0) then
+            call finish(st, run, ROCK_RUN_OVERTURN_NO_IMPACT)
+        else if (st%n_imp == 1) then
+            call finish(st, run, ROCK_RUN_OVERTURN_ONE_IMPACT)
+        else
+            call finish(st, run, ROCK_RUN_OVERTURN_MANY)
+        end if
+    end subroutine finish_overturn
+
+    subroutine finish_rest(st, run)
+        type(rocking_state_t), intent(inout) :: st
+        type(rocking_run_t), intent(inout) :: run
+        if (st%ever_up) then
+            call finish(st, run, ROCK_RUN_REST)
+        else
+            call finish(st, run, ROCK_RUN_NO_UPLIFT)
+        end if
+    end subroutine finish_rest
+
+    !> Fill the run and the rest of the grid.
+    subroutine finish(st, run, outcome)
+        type(rocking_state_t), intent(inout) :: st
+        type(rocking_run_t), intent(inout) :: run
+        integer, intent(in) :: outcome
+        real(dp) :: th_after, om_after
+        st%done = .true.
+        run%outcome = outcome
+        run%n_impacts = st%n_imp
+        run%n_steps = st%steps
+        select case (outcome)
+        case (ROCK_RUN_NO_UPLIFT)
+            run%t_end = 0.0_dp
+            th_after = 0.0_dp
+            om_after = 0.0_dp
+        case (ROCK_RUN_REST)
+            run%t_end = st%t_rest
+            th_after = 0.0_dp
+            om_after = 0.0_dp
+        case (ROCK_RUN_TIME_LIMIT)
+            run%t_end = st%t
+            th_after = ieee_value(th_after, ieee_quiet_nan)
+            om_after = th_after
+        case default
+            ! overturned: on its side
+            run%t_end = st%t
+            run%t_overturn = st%t_cross
+            if (st%s < 0) then
+                th_after = -half_pi
+            else
+                th_after = half_pi
+            end if
+            om_after = 0.0_dp
+        end select
+        do while (st%ig <= st%ng)
+            st%th_grid(st%ig) = th_after
+            st%om_grid(st%ig) = om_after
+            st%ig = st%ig + 1
+        end do
+        if (st%sys%sim%track) then
+            if (allocated(run%t_impacts)) deallocate(run%t_impacts)
+            allocate(run%t_impacts(st%n_imp))
+            run%t_impacts(:) = st%imp(1:st%n_imp)
+        end if
+    end subroutine finish
 
     !> Outcome known once the excitation is over (module notes; rocking.md 5): the energy
     !> above the barrier, D, is kept by every flight and lowered by every impact.
@@ -1331,132 +1303,27 @@ contains
     end function min_step
 
     ! ------------------------------------------------------------------------------
-    ! Equation of motion and the DOP853 step
+    ! Equation of motion
     ! ------------------------------------------------------------------------------
 
-    !> (theta', theta'') on side s (sa = alpha s): Eqs. 2.5/2.6 or 2.7.
-    pure function rhs(sim, gr, sa, t, y) result(f)
-        type(sim_t), intent(in) :: sim
-        type(ground_t), intent(in) :: gr
-        real(dp), intent(in) :: sa, t, y(2)
-        real(dp) :: f(2)
-        real(dp) :: a, phi
-        a = ground_accel(gr, t) * sim%inv_g
+    !> (theta', theta'') on side s (sa = alpha s): Eqs. 2.5/2.6 or 2.7; the right-hand
+    !> side of the flight for seispulse_ode (a static call from this module).
+    subroutine flight_ode_rhs(self, t, y, dydt)
+        class(flight_ode_t), intent(inout) :: self
+        real(dp), intent(in) :: t
+        real(dp), contiguous, intent(in) :: y(:)
+        real(dp), contiguous, intent(out) :: dydt(:)
+        real(dp) :: a, phi, f(2)
+        a = ground_accel(self%gr, t) * self%sim%inv_g
         f(1) = y(2)
-        if (sim%lin) then
-            f(2) = sim%p2 * (y(1) + a - sa)
+        if (self%sim%lin) then
+            f(2) = self%sim%p2 * (y(1) + a - self%sa)
         else
-            phi = sa - y(1)
-            f(2) = -sim%p2 * (sin(phi) - a * cos(phi))
+            phi = self%sa - y(1)
+            f(2) = -self%sim%p2 * (sin(phi) - a * cos(phi))
         end if
-    end function rhs
-
-    !> One DOP853 step of size h from (t, y) with f = rhs(t, y) (Hairer, Norsett & Wanner,
-    !> Solving ODEs I, II.10): the 8th-order solution, rhs at its end, the stages (for the
-    !> dense output) and the error norm of the 5th/3rd-order estimators (<= 1: accept).
-    !> Stage 12 and the end are evaluated at t_new exactly (the piece end, if clamped).
-    pure subroutine dop_step(sim, gr, sa, t, y, f, h, t_new, y_new, f_new, k, err)
-        type(sim_t), intent(in) :: sim
-        type(ground_t), intent(in) :: gr
-        real(dp), intent(in) :: sa, t, y(2), f(2), h, t_new
-        real(dp), intent(out) :: y_new(2), f_new(2), k(2, 16), err
-        real(dp) :: ys(2), e5(2), e3(2), sc(2), n5, n3, tc
-        integer :: i, j
-        k = 0.0_dp
-        k(:, 1) = f
-        do i = 2, 12
-            ys = y
-            do j = 1, i - 1
-                ys = ys + (h * dop_a(i, j)) * k(:, j)
-            end do
-            if (i == 12) then
-                tc = t_new
-            else
-                tc = t + dop_c(i) * h
-            end if
-            k(:, i) = rhs(sim, gr, sa, tc, ys)
-        end do
-        ys = 0.0_dp
-        do j = 1, 12
-            ys = ys + dop_b(j) * k(:, j)
-        end do
-        y_new = y + h * ys
-        f_new = rhs(sim, gr, sa, t_new, y_new)
-        k(:, 13) = f_new
-        e5 = 0.0_dp
-        e3 = 0.0_dp
-        do j = 1, 13
-            e5 = e5 + dop_e5(j) * k(:, j)
-            e3 = e3 + dop_e3(j) * k(:, j)
-        end do
-        sc = sim%atol + sim%rtol * max(abs(y), abs(y_new))
-        e5 = e5 / sc
-        e3 = e3 / sc
-        n5 = e5(1)**2 + e5(2)**2
-        n3 = e3(1)**2 + e3(2)**2
-        if (n5 > 0.0_dp) then
-            err = abs(h) * n5 / sqrt(2.0_dp * (n5 + 0.01_dp * n3))
-        else
-            err = 0.0_dp
-        end if
-    end subroutine dop_step
-
-    !> The three extra stages and the coefficients of the 7th-order dense output of the
-    !> step just taken (y -> y_new over h; k holds stages 1-13).
-    pure subroutine dense_setup(sim, gr, sa, t, y, f, h, y_new, f_new, k, df)
-        type(sim_t), intent(in) :: sim
-        type(ground_t), intent(in) :: gr
-        real(dp), intent(in) :: sa, t, y(2), f(2), h, y_new(2), f_new(2)
-        real(dp), intent(inout) :: k(2, 16)
-        type(dense_fn), intent(inout) :: df
-        real(dp) :: ys(2), dy(2)
-        integer :: i, j, m
-        do i = 14, 16
-            ys = y
-            do j = 1, i - 1
-                ys = ys + (h * dop_a(i, j)) * k(:, j)
-            end do
-            k(:, i) = rhs(sim, gr, sa, t + dop_c(i) * h, ys)
-        end do
-        dy = y_new - y
-        df%f(1, :) = dy
-        df%f(2, :) = h * f - dy
-        df%f(3, :) = 2.0_dp * dy - h * (f_new + f)
-        do m = 1, 4
-            ys = 0.0_dp
-            do j = 1, 16
-                ys = ys + dop_d(m, j) * k(:, j)
-            end do
-            df%f(3 + m, :) = h * ys
-        end do
-        df%y0 = y
-    end subroutine dense_setup
-
-    !> Dense output (theta, theta') at the fraction x of the step.
-    pure function dense_value(df, x) result(y)
-        type(dense_fn), intent(in) :: df
-        real(dp), intent(in) :: x
-        real(dp) :: y(2)
-        real(dp) :: xm
-        xm = 1.0_dp - x
-        y = df%f(7, :) * x
-        y = (y + df%f(6, :)) * xm
-        y = (y + df%f(5, :)) * x
-        y = (y + df%f(4, :)) * xm
-        y = (y + df%f(3, :)) * x
-        y = (y + df%f(2, :)) * xm
-        y = (y + df%f(1, :)) * x
-        y = y + df%y0
-    end function dense_value
-
-    function dense_eval(self, x) result(y)
-        class(dense_fn), intent(inout) :: self
-        real(dp), intent(in) :: x
-        real(dp) :: y
-        real(dp) :: v(2)
-        v = dense_value(self, x)
-        y = self%sgn * v(self%comp) - self%level
-    end function dense_eval
+        dydt(1:2) = f   ! one store: the integrator reads the pair at once
+    end subroutine flight_ode_rhs
 
     ! ------------------------------------------------------------------------------
     ! Ground acceleration
