@@ -11,21 +11,10 @@ Also prints the displacements, so the speed is seen next to the answer.
 usage: PYTHONPATH=build/python python3 bench/newmark.py [--runs R] [--ky KY] [--pga PGA]
 """
 import argparse
-import statistics
-import time
 from pathlib import Path
 
 from seispulse import newmark, records
-
-
-def median_time(fn, runs, inner=1):
-    times = []
-    for _ in range(runs):
-        t0 = time.perf_counter()
-        for _ in range(inner):
-            fn()
-        times.append((time.perf_counter() - t0) / inner)
-    return statistics.median(times)
+from timing import median_time
 
 
 def main():

@@ -10,12 +10,11 @@ these machines are shared and noisy. Targets: under 20 ns per point.
 usage: PYTHONPATH=build/python python3 bench/pulses.py [--points N] [--runs R] [--beta B]
 """
 import argparse
-import statistics
-import time
 
 import numpy as np
 
 from seispulse import pulse
+from timing import median_time
 
 
 def numpy_peer(tau, beta):
@@ -35,15 +34,6 @@ def numpy_peer(tau, beta):
     v = np.where(tau < 0, 0.0, np.where(after, vg, v))
     d = np.where(tau < 0, 0.0, np.where(after, vg * (tau - 0.5), d))
     return a, v, d
-
-
-def median_time(fn, runs):
-    times = []
-    for _ in range(runs):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times)
 
 
 def main():

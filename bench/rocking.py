@@ -17,26 +17,17 @@ usage: PYTHONPATH=build/python python3 bench/rocking.py [--cases N] [--runs R] [
 """
 import argparse
 import math
-import statistics
 import time
 
 import numpy as np
 
 from seispulse import rocking
+from timing import median_time
 
 try:
     from scipy.integrate import solve_ivp
 except ImportError:  # the peer is optional
     solve_ivp = None
-
-
-def median_time(fn, runs):
-    times = []
-    for _ in range(runs):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times)
 
 
 def shape(tau, beta):

@@ -14,25 +14,14 @@ single-threaded. Also prints the largest relative difference from eqsig at T >= 
 usage: PYTHONPATH=build/python python3 bench/sdof.py [--runs R] [--periods N]
 """
 import argparse
-import statistics
-import time
 from pathlib import Path
 
 import numpy as np
 
 from seispulse import records, sdof
+from timing import median_time
 
 G = 9.80665
-
-
-def median_time(fn, runs, inner=1):
-    times = []
-    for _ in range(runs):
-        t0 = time.perf_counter()
-        for _ in range(inner):
-            fn()
-        times.append((time.perf_counter() - t0) / inner)
-    return statistics.median(times)
 
 
 def opensees_spectrum(accel, dt, periods, zeta):

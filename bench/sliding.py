@@ -11,21 +11,11 @@ full-cycle cases per second on one core.
 usage: PYTHONPATH=build/python python3 bench/sliding.py [--cases N] [--runs R] [--seed S]
 """
 import argparse
-import statistics
-import time
 
 import numpy as np
 
 from seispulse import sliding
-
-
-def median_time(fn, runs):
-    times = []
-    for _ in range(runs):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times)
+from timing import median_time
 
 
 def main():

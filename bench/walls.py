@@ -13,22 +13,11 @@ Also times the one-term solution on the same grid and one Mononobe-Okabe coeffic
 usage: PYTHONPATH=build/python python3 bench/walls.py [--runs R] [--frequencies N]
 """
 import argparse
-import statistics
-import time
 
 import numpy as np
 
 from seispulse import codes, walls
-
-
-def median_time(fn, runs, inner=1):
-    times = []
-    for _ in range(runs):
-        t0 = time.perf_counter()
-        for _ in range(inner):
-            fn()
-        times.append((time.perf_counter() - t0) / inner)
-    return statistics.median(times)
+from timing import median_time
 
 
 def numpy_vy(ratios, delta, nu, n_terms):

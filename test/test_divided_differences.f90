@@ -5,12 +5,11 @@
 !> quotient cancels, nodes just either side of the series/recurrence switch, conjugate
 !> pairs, complex zeros (e[2 pi i, 0] = 0), large |x|; symmetry in the nodes and conjugation.
 module test_divided_differences
-    use, intrinsic :: iso_fortran_env, only: int64
     use seispulse_kinds, only: dp
     use seispulse_special, only: pi
     use seispulse_divided_differences, only: exp_dd1, exp_dd2, exp_dd_pack, cexp_dd1, &
                                              cexp_dd2_at0, cexp_dd2, cexp_dd3
-    use testing, only: test_error, unit_test, new_unittest, check
+    use testing, only: test_error, unit_test, new_unittest, check, same_bits
     implicit none
     private
 
@@ -297,7 +296,7 @@ contains
             y = exp_dd1(a, exp(a), b, exp(b))
             call check(error, y, r1(3, i), rtol=rtol_real, message='e[a, b], case '//istr(i))
             if (allocated(error)) return
-            call check(error, same(exp_dd1(b, exp(b), a, exp(a)), y), &
+            call check(error, same_bits(exp_dd1(b, exp(b), a, exp(a)), y), &
                        'e[b, a] /= e[a, b], case '//istr(i))
             if (allocated(error)) return
         end do
@@ -316,8 +315,8 @@ contains
             if (allocated(error)) return
             do k = 2, 6
                 associate (p => perm(:, k))
-                    call check(error, same(exp_dd2(x(p(1)), e(p(1)), x(p(2)), e(p(2)), x(p(3)), &
-                                                   e(p(3))), y), &
+                    call check(error, same_bits(exp_dd2(x(p(1)), e(p(1)), x(p(2)), e(p(2)), &
+                                                        x(p(3)), e(p(3))), y), &
                                'node order changes e[x1, x2, x3], case '//istr(i))
                 end associate
                 if (allocated(error)) return
@@ -505,11 +504,6 @@ contains
     end function node_scale
 
     !> Bitwise equality.
-    pure logical function same(a, b)
-        real(dp), intent(in) :: a, b
-        same = transfer(a, 1_int64) == transfer(b, 1_int64)
-    end function same
-
     pure function istr(i) result(s)
         integer, intent(in) :: i
         character(len=:), allocatable :: s

@@ -1,7 +1,7 @@
 !> Pulses: closed forms against quad-precision printed formulas, published values,
 !> exact limits, and adaptive Gauss-Legendre quadrature of a and v.
 module test_pulses
-    use, intrinsic :: iso_fortran_env, only: qp => real128, int64
+    use, intrinsic :: iso_fortran_env, only: qp => real128
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, &
                                              ieee_negative_inf, ieee_is_finite
     use seispulse_kinds, only: dp
@@ -14,7 +14,7 @@ module test_pulses
         PULSE_EXPONENTIAL, PULSE_MP, pulse_accel, pulse_peak_accel, ricker_accel, &
         ricker_window, ricker_x_cut, mp_terms, mp_jerk_t, mp_jerk_of, mp_jerk, mp_jerk_slope, &
         exp_consts_t, exp_consts
-    use testing, only: test_error, unit_test, new_unittest, check
+    use testing, only: test_error, unit_test, new_unittest, check, same_bits
     implicit none
     private
 
@@ -697,12 +697,12 @@ contains
                 call pulse_at(ps(k), t, a, v, d)
                 a1 = pulse_accel(ps(k), t)
                 a2 = pulse_accel(ps(k), t, c)
-                call check(error, same(a2, a1), 'consts changes pulse_accel, kind ' &
+                call check(error, same_bits(a2, a1), 'consts changes pulse_accel, kind ' &
                            //pulse_kind_name(ps(k)%kind)//' t = '//num(t))
                 if (allocated(error)) return
                 if (t < 0.0_dp .or. t >= t_end) then
-                    call check(error, same(a1, a), 'pulse_accel /= pulse_at outside the pulse, ' &
-                               //pulse_kind_name(ps(k)%kind)//' t = '//num(t))
+                    call check(error, same_bits(a1, a), 'pulse_accel /= pulse_at outside the ' &
+                               //'pulse, '//pulse_kind_name(ps(k)%kind)//' t = '//num(t))
                 else
                     call check(error, a1, a, rtol=1.0e-14_dp, atol=1.0e-14_dp * abs(ps(k)%amp), &
                                message=pulse_kind_name(ps(k)%kind)//' t = '//num(t))
@@ -746,13 +746,13 @@ contains
                        message='ricker_accel /= formula at w = '//num(w))
             if (allocated(error)) return
             if (x * x >= 750.0_dp) then
-                call check(error, same(a, 0.0_dp), 'expected +0 at w = '//num(w))
+                call check(error, same_bits(a, 0.0_dp), 'expected +0 at w = '//num(w))
                 if (allocated(error)) return
             end if
         end do
         big = 1.0e150_dp   ! w ~ 1e300: finite (an infinite w is caught by the same branch)
         a = ricker_accel(p, big)
-        call check(error, same(a, 0.0_dp), 'a(1e150) should be +0')
+        call check(error, same_bits(a, 0.0_dp), 'a(1e150) should be +0')
         if (allocated(error)) return
         call pulse_at(p, big, a, v, d)
         call check(error, .not. abs(a) > 0.0_dp .and. ieee_is_finite(v) .and. ieee_is_finite(d), &
@@ -778,7 +778,7 @@ contains
                    abs(ricker_accel(p, te)) > 0.0_dp, '|a(te)| should be in (0, 1e-40 a_p)')
         if (allocated(error)) return
         call ricker_window(ricker_pulse(1.0_dp, 1.0_dp, 0.5_dp), ts, te)
-        call check(error, same(ts, 0.0_dp), 'window should start at t = 0')
+        call check(error, same_bits(ts, 0.0_dp), 'window should start at t = 0')
     end subroutine test_ricker_cutoff
 
     !> mp_terms, and mp_jerk, mp_jerk_slope against the second and third derivatives of the
@@ -824,7 +824,7 @@ contains
                            atol=1.0e-12_dp * 1000.0_dp * (1.0_dp + abs(x)), &
                            message='jerk slope, gamma = '//num(gam)//' x = '//num(x))
                 if (allocated(error)) return
-                call check(error, same(f%eval(x), mp_jerk(f, x)), 'eval /= mp_jerk')
+                call check(error, same_bits(f%eval(x), mp_jerk(f, x)), 'eval /= mp_jerk')
                 if (allocated(error)) return
             end do
         end do
@@ -867,11 +867,6 @@ contains
     end subroutine test_peak_accel
 
     !> Bitwise equality (+0 and -0 differ).
-    pure logical function same(a, b)
-        real(dp), intent(in) :: a, b
-        same = transfer(a, 1_int64) == transfer(b, 1_int64)
-    end function same
-
     pure function piq_dp() result(y)
         real(dp) :: y
         y = real(piq, dp)

@@ -1240,6 +1240,13 @@ contains
         call sdof_pulse_response(p, 1.0_dp, 0.05_dp, [0.1_dp, nan], z, v, a, stat, msg)
         call expect_error(error, stat, msg, 't(2)')
         if (allocated(error)) return
+        call check(error, trim(msg) == 't(2) = NaN: must be a finite number (s)', trim(msg))
+        if (allocated(error)) return
+        call sdof_pulse_response(p, 1.0_dp, 0.05_dp, [inf, 0.1_dp], z, v, a, stat, msg)
+        call expect_error(error, stat, msg, 't(1) = ')
+        if (allocated(error)) return
+        call check(error, index(msg, ': must be a finite number (s)') > 0, trim(msg))
+        if (allocated(error)) return
         call sdof_pulse_spectrum(p, [0.5_dp, -0.5_dp], 0.05_dp, z, v, a, stat, msg)
         call expect_error(error, stat, msg, 'periods(2)')
         if (allocated(error)) return

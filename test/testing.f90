@@ -4,11 +4,12 @@
 !> message and the test returns at once (`if (allocated(error)) return`).
 module testing
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+    use, intrinsic :: iso_fortran_env, only: int64
     use seispulse_kinds, only: dp
     implicit none
     private
 
-    public :: test_error, unit_test, new_unittest, check, run_suite
+    public :: test_error, unit_test, new_unittest, check, run_suite, same_bits
 
     type :: test_error
         character(len=:), allocatable :: message
@@ -143,5 +144,11 @@ contains
             end if
         end do
     end subroutine run_suite
+
+    !> a and b have the same bits (a NaN equals only the same NaN, -0 differs from +0).
+    pure logical function same_bits(a, b)
+        real(dp), intent(in) :: a, b  !! the two values
+        same_bits = transfer(a, 1_int64) == transfer(b, 1_int64)
+    end function same_bits
 
 end module testing

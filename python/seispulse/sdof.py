@@ -80,6 +80,19 @@ def _threads(threads):
     return int(threads)
 
 
+def _number_or_vector(name, value, item):
+    """value as a contiguous 1-d float array and whether it was a number; a 2-d or more
+    array, or an empty one, raises InvalidInputError naming `name` (`item`: one element)."""
+    arr = _core.as_float_array(name, value)
+    if arr.ndim > 1:
+        raise InvalidInputError(f"{name}: must be a number or a 1-d array (got shape {arr.shape})")
+    scalar = arr.ndim == 0
+    arr = np.ascontiguousarray(arr.reshape(-1))
+    if arr.size == 0:
+        raise InvalidInputError(f"{name}: at least one {item} is needed")
+    return arr, scalar
+
+
 def default_threads():
     """Number of OpenMP threads :func:`spectrum` uses when ``threads`` is None (1 when
     the library was built without OpenMP). Set OMP_NUM_THREADS to change it."""
@@ -151,20 +164,8 @@ def spectrum(accel, dt=None, periods=None, damping=0.05, g=STANDARD_GRAVITY, pea
     rec, step = _core.record_and_step(accel, dt)
     if periods is None:
         raise InvalidInputError("periods: the natural periods (s, >= 0) are required")
-    per = _core.as_float_array("periods", periods)
-    if per.ndim > 1:
-        raise InvalidInputError(f"periods: must be a number or a 1-d array (got shape {per.shape})")
-    scalar_period = per.ndim == 0
-    per = np.ascontiguousarray(per.reshape(-1))
-    if per.size == 0:
-        raise InvalidInputError("periods: at least one period is needed")
-    damp = _core.as_float_array("damping", damping)
-    if damp.ndim > 1:
-        raise InvalidInputError(f"damping: must be a number or a 1-d array (got shape {damp.shape})")
-    scalar_damping = damp.ndim == 0
-    damp = np.ascontiguousarray(damp.reshape(-1))
-    if damp.size == 0:
-        raise InvalidInputError("damping: at least one damping ratio is needed")
+    per, scalar_period = _number_or_vector("periods", periods, "period")
+    damp, scalar_damping = _number_or_vector("damping", damping, "damping ratio")
     g = _core.as_scalar("g", g)
     out = sp_sdof_spectrum(rec, step, per, damp, g, _peaks_code(peaks), _threads(threads))
     *arrays, stat, msg = out

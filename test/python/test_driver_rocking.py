@@ -3,7 +3,6 @@ independent physics (the linearized closed forms of doc/rocking.md written out h
 numpy, and Housner's nonlinear equations integrated here with scipy), the history, the
 overturning map against the stability wall and against summary runs of its cells, the
 progress line of long maps, and the located one-line errors (exit 2, no output)."""
-import csv
 import math
 import re
 import subprocess
@@ -12,6 +11,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+
+from driver_tables import read_table, run_example
 
 G = 9.80665
 PI = "3.141592653589793"
@@ -33,15 +34,6 @@ def run(driver, cwd, text, name="case.nml"):
                           timeout=300)
 
 
-def read_table(path):
-    """{column name: array} of a CSV table of the driver (names without units)."""
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    names = [h.rsplit(" (", 1)[0] for h in rows[0]]
-    data = np.array([[float(x) for x in row] for row in rows[1:]], ndmin=2)
-    return {n: data[:, j] for j, n in enumerate(names)}
-
-
 def rocking(driver, tmp_path, block, pulse=None, opts="", extra="", output="r"):
     """Run a rocking case; return its one table as {name: array} (scalars for a summary)."""
     text = f"&run analysis='rocking', output='{output}' /\n&block {block} /\n"
@@ -57,13 +49,6 @@ def rocking(driver, tmp_path, block, pulse=None, opts="", extra="", output="r"):
     if tables[0].name == f"{output}_rocking.csv":
         return {k: v[0] for k, v in t.items()}
     return t
-
-
-def run_example(driver, source_root, tmp_path, name):
-    proc = subprocess.run([driver, str(source_root / "input" / name)], cwd=tmp_path,
-                          capture_output=True, text=True, timeout=120)
-    assert proc.returncode == 0, proc.stderr
-    return proc
 
 
 # ---------------------------------------------------------------- independent physics

@@ -2,7 +2,6 @@
 input files under input/), the located one-line errors (exit 2, no output), sweeps,
 the history table, and the agreement of the closed forms with the event-driven
 integrator."""
-import csv
 import math
 import subprocess
 from pathlib import Path
@@ -10,6 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from driver_tables import read_table, run_example
 import sliding_reference
 
 PI = "3.141592653589793"
@@ -24,15 +24,6 @@ def run(driver, cwd, text, name="case.nml"):
     return subprocess.run([driver, name], cwd=cwd, capture_output=True, text=True, timeout=120)
 
 
-def read_table(path):
-    """{column name: array} of a CSV table of the driver (names without units)."""
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    names = [h.rsplit(" (", 1)[0] for h in rows[0]]
-    data = np.array([[float(x) for x in row] for row in rows[1:]], ndmin=2)
-    return {n: data[:, j] for j, n in enumerate(names)}
-
-
 def sliding(driver, tmp_path, pulse, block, extra="", output="s"):
     """Run a sliding case; return (main table, history table or None)."""
     proc = run(driver, tmp_path, f"&run analysis='sliding', output='{output}' /\n"
@@ -41,13 +32,6 @@ def sliding(driver, tmp_path, pulse, block, extra="", output="s"):
     hist = tmp_path / f"{output}_sliding_history.csv"
     return (read_table(tmp_path / f"{output}_sliding.csv"),
             read_table(hist) if hist.exists() else None)
-
-
-def run_example(driver, source_root, tmp_path, name):
-    proc = subprocess.run([driver, str(source_root / "input" / name)], cwd=tmp_path,
-                          capture_output=True, text=True, timeout=120)
-    assert proc.returncode == 0, proc.stderr
-    return proc
 
 
 def near(x, value, digits):

@@ -10,7 +10,7 @@ module seispulse_checks
     private
 
     public :: outside, finite_positive, finite_at_least, positive, in_open, in_closed, &
-              check_ascending_times, check_output_grid
+              check_finite_times, check_ascending_times, check_output_grid
 
 contains
 
@@ -73,6 +73,29 @@ contains
         end if
     end function outside
 
+    !> Times that must all be finite: a message naming the first one that is not, name(i),
+    !> with `unit` (e.g. ' (s)') at its end when given.
+    subroutine check_finite_times(t, name, stat, errmsg, unit)
+        real(dp), intent(in) :: t(:)                          !! the times
+        character(len=*), intent(in) :: name                  !! their name in messages
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        character(len=*), intent(in), optional :: unit        !! appended to the message
+        integer :: i
+        character(len=24) :: idx
+        character(len=:), allocatable :: msg
+        stat = SEISPULSE_SUCCESS
+        do i = 1, size(t)
+            if (.not. ieee_is_finite(t(i))) then
+                write(idx, '(i0)') i
+                msg = name//'('//trim(idx)//') = '//real_str(t(i))//': must be a finite number'
+                if (present(unit)) msg = msg//unit
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, msg)
+                return
+            end if
+        end do
+    end subroutine check_finite_times
+
     !> Output times of an integrator: finite and ascending (a message naming t(i)).
     subroutine check_ascending_times(t, name, stat, errmsg)
         real(dp), intent(in) :: t(:)                          !! the times
@@ -81,15 +104,8 @@ contains
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         integer :: i
         character(len=24) :: idx
-        stat = SEISPULSE_SUCCESS
-        do i = 1, size(t)
-            if (.not. ieee_is_finite(t(i))) then
-                write(idx, '(i0)') i
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, name//'('//trim(idx) &
-                               //') = '//real_str(t(i))//': must be a finite number')
-                return
-            end if
-        end do
+        call check_finite_times(t, name, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         do i = 2, size(t)
             if (t(i) < t(i - 1)) then
                 write(idx, '(i0)') i

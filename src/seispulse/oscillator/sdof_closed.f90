@@ -90,7 +90,7 @@ module seispulse_sdof_closed
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_SINGULAR, &
                                 set_error
-    use seispulse_checks, only: outside
+    use seispulse_checks, only: outside, check_finite_times
     use seispulse_format, only: real_str, int_str
     use seispulse_special, only: expm1, exp_phis, phi1, sin_pi, cos_pi, pi
     use seispulse_divided_differences, only: cexp_dd1, cexp_dd2, cexp_dd3
@@ -311,7 +311,7 @@ contains
                            //': must be 1 (sine) or 2 (cosine)')
             return
         end if
-        call check_times(t, stat, errmsg)
+        call check_finite_times(t, 't', stat, errmsg, ' (s)')
         if (stat /= SEISPULSE_SUCCESS) return
         osc = make_osc(period, damping)
         ! a_g = Re(c e^(i theta t)): -W0 sin = Re(i W0 e^(i theta t)), -W0 cos = Re(-W0 e^(...))
@@ -382,7 +382,7 @@ contains
         end if
         call check_oscillator(period, 0.0_dp, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call check_times(t, stat, errmsg)
+        call check_finite_times(t, 't', stat, errmsg, ' (s)')
         if (stat /= SEISPULSE_SUCCESS) return
         om = two_pi / period
         ! sin(omega t1/2) = sin(pi t1/T) with exact argument reduction
@@ -489,7 +489,7 @@ contains
         if (stat /= SEISPULSE_SUCCESS) return
         call check_oscillator(period, damping, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call check_times(t, stat, errmsg)
+        call check_finite_times(t, 't', stat, errmsg, ' (s)')
         if (stat /= SEISPULSE_SUCCESS) return
         osc = make_osc(period, damping)
         do i = 1, size(t)
@@ -526,7 +526,7 @@ contains
         if (stat /= SEISPULSE_SUCCESS) return
         call check_pulse_oscillator(p, period, damping, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call check_times(t, stat, errmsg)
+        call check_finite_times(t, 't', stat, errmsg, ' (s)')
         if (stat /= SEISPULSE_SUCCESS) return
         call build_model(p, period, damping, m)
         do i = 1, size(t)
@@ -670,21 +670,6 @@ contains
         v = 0.0_dp
         a = 0.0_dp
     end subroutine check_sizes
-
-    subroutine check_times(t, stat, errmsg)
-        real(dp), intent(in) :: t(:)
-        integer, intent(out) :: stat
-        character(len=*), intent(inout), optional :: errmsg
-        integer :: i
-        stat = SEISPULSE_SUCCESS
-        do i = 1, size(t)
-            if (.not. ieee_is_finite(t(i))) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 't('//int_str(i)//') = ' &
-                               //real_str(t(i))//': must be a finite number (s)')
-                return
-            end if
-        end do
-    end subroutine check_times
 
     subroutine check_amplitude(x, name, stat, errmsg)
         real(dp), intent(in) :: x

@@ -138,9 +138,7 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         tau_y = ieee_value(tau_y, ieee_quiet_nan)
-        call check_eta(eta, 'eta', stat, errmsg)
-        if (stat == SEISPULSE_SUCCESS) call check_beta(beta, stat, errmsg)
-        if (stat == SEISPULSE_SUCCESS) call check_static(static_factor, stat, errmsg)
+        call check_half(eta, beta, static_factor, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         if (static_factor * eta < 1.0_dp) tau_y = exp_rise_time(static_factor * eta, beta)
     end subroutine yield_time
@@ -261,9 +259,7 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         type(exp_consts_t) :: c
-        call check_eta(eta, 'eta', stat, errmsg)
-        if (stat == SEISPULSE_SUCCESS) call check_beta(beta, stat, errmsg)
-        if (stat == SEISPULSE_SUCCESS) call check_static(static_factor, stat, errmsg)
+        call check_half(eta, beta, static_factor, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         res%tau_y = ieee_value(res%tau_y, ieee_quiet_nan)
         res%tau_m = res%tau_y
@@ -296,10 +292,7 @@ contains
         type(exp_consts_t) :: c
         real(dp) :: nan, on2, tbar0, tbar_m, dug
         integer :: regime
-        call check_eta(eta1, 'eta1', stat, errmsg)
-        if (stat == SEISPULSE_SUCCESS) call check_eta(eta2, 'eta2', stat, errmsg)
-        if (stat == SEISPULSE_SUCCESS) call check_beta(beta, stat, errmsg)
-        if (stat == SEISPULSE_SUCCESS) call check_static(static_factor, stat, errmsg)
+        call check_full(eta1, eta2, beta, static_factor, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         nan = ieee_value(nan, ieee_quiet_nan)
         res%tau_y1 = nan
@@ -413,10 +406,7 @@ contains
         type(stickslip_result_t) :: ss
         type(exp_consts_t) :: c
         real(dp) :: on2
-        call check_eta(eta1, 'eta1', stat, errmsg)
-        if (stat == SEISPULSE_SUCCESS) call check_eta(eta2, 'eta2', stat, errmsg)
-        if (stat == SEISPULSE_SUCCESS) call check_beta(beta, stat, errmsg)
-        if (stat == SEISPULSE_SUCCESS) call check_static(static_factor, stat, errmsg)
+        call check_full(eta1, eta2, beta, static_factor, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         call stickslip_pulse(exponential_pulse(1.0_dp, 1.0_dp, beta, full), &
                              friction_t(ay_fwd=eta1, ay_rev=eta2, static_factor=static_factor, &
@@ -803,6 +793,27 @@ contains
             name = 'unknown'
         end if
     end function sliding_mode_name
+
+    !> Arguments of a half-cycle case, in this order: eta, beta, static_factor.
+    subroutine check_half(eta, beta, static_factor, stat, errmsg)
+        real(dp), intent(in) :: eta, beta, static_factor
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        call check_eta(eta, 'eta', stat, errmsg)
+        if (stat == SEISPULSE_SUCCESS) call check_beta(beta, stat, errmsg)
+        if (stat == SEISPULSE_SUCCESS) call check_static(static_factor, stat, errmsg)
+    end subroutine check_half
+
+    !> Arguments of a full-cycle case, in this order: eta1, eta2, beta, static_factor.
+    subroutine check_full(eta1, eta2, beta, static_factor, stat, errmsg)
+        real(dp), intent(in) :: eta1, eta2, beta, static_factor
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        call check_eta(eta1, 'eta1', stat, errmsg)
+        if (stat == SEISPULSE_SUCCESS) call check_eta(eta2, 'eta2', stat, errmsg)
+        if (stat == SEISPULSE_SUCCESS) call check_beta(beta, stat, errmsg)
+        if (stat == SEISPULSE_SUCCESS) call check_static(static_factor, stat, errmsg)
+    end subroutine check_full
 
     subroutine check_eta(eta, name, stat, errmsg)
         real(dp), intent(in) :: eta
