@@ -23,7 +23,7 @@ from collections import namedtuple
 
 import numpy as np
 
-from . import _core
+from . import _core, _fortran_codes
 from ._seispulse import (sp_exp_pulse, sp_exp_pulse_impulse_amplitude, sp_exp_pulse_peaks,
                          sp_pulse_eval, sp_pulse_kind)
 from .errors import InvalidInputError
@@ -58,9 +58,11 @@ name, the Fortran kind code and the packed SI parameter vector of pulse_from_par
 # Passed as t by define(): _evaluate then returns the packed pulse instead of values.
 _DEFINE = object()
 
-# Order of the packed parameter vector of Fortran pulse_from_params.
-_PARAM_ORDER = ("amp", "duration", "beta", "full", "peak_frac", "freq", "t0", "gamma",
-                "nu_deg")
+# Order of the packed parameter vector of Fortran pulse_from_params: the positions
+# PULSE_PARAM_<NAME> generated from the Fortran source.
+_PARAM_ORDER = tuple(name[len("PULSE_PARAM_"):].lower() for name, _ in sorted(
+    ((n, v) for n, v in vars(_fortran_codes).items() if n.startswith("PULSE_PARAM_")),
+    key=lambda item: item[1]))
 _PARAM_DEFAULTS = {"amp": 1.0, "duration": 1.0, "beta": 0.0, "full": 0.0, "peak_frac": 0.5,
                    "freq": 1.0, "t0": 0.0, "gamma": 2.0, "nu_deg": 0.0}
 

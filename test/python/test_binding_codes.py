@@ -76,3 +76,18 @@ def test_loop_wrapper_with_a_derived_type_result(gen):
     call = lines.index("        call demo(x(i), flag, r, stat, errmsg)")
     assert lines[call + 1:call + 4] == ["        if (stat /= SEISPULSE_SUCCESS) return",
                                         "        a(i) = r%a", "        k(i) = r%k"]
+
+
+def test_pulse_parameter_positions_from_fortran():
+    # pulse.define packs by the positions PULSE_PARAM_<NAME> of pulses.f90: one position
+    # per parameter, 1 .. PULSE_NPARAM, none missing, in the order pulse_from_params reads
+    from seispulse import pulse
+    positions = sorted(v for n, v in vars(_fortran_codes).items()
+                       if n.startswith("PULSE_PARAM_"))
+    assert positions == list(range(1, _fortran_codes.PULSE_NPARAM + 1))
+    assert pulse._PARAM_ORDER == ("amp", "duration", "beta", "full", "peak_frac", "freq",
+                                  "t0", "gamma", "nu_deg")
+    packed = pulse.define("mavroeidis_papageorgiou", vamp=0.7, freq=1.3, gamma=2.5,
+                          nu_deg=40.0, t0=1.5).params
+    assert packed[_fortran_codes.PULSE_PARAM_FREQ - 1] == 1.3
+    assert packed[_fortran_codes.PULSE_PARAM_NU_DEG - 1] == 40.0

@@ -40,7 +40,9 @@ module seispulse_pulses
     public :: pulse_kind_from_name, pulse_kind_name
     public :: exponential_pulse, half_sine_pulse, sine_cycle_pulse, cosine_cycle_pulse, &
               rectangular_pulse, triangular_pulse, ricker_pulse, mp_pulse
-    public :: pulse_from_params, PULSE_NPARAM
+    public :: pulse_from_params, PULSE_NPARAM, PULSE_PARAM_AMP, PULSE_PARAM_DURATION, &
+              PULSE_PARAM_BETA, PULSE_PARAM_FULL, PULSE_PARAM_PEAK_FRAC, PULSE_PARAM_FREQ, &
+              PULSE_PARAM_T0, PULSE_PARAM_GAMMA, PULSE_PARAM_NU_DEG
     ! acceleration only (inner loops), peak acceleration, and the formulas solvers share
     public :: pulse_accel, pulse_peak_accel
     public :: ricker_accel, ricker_window, ricker_x_cut
@@ -60,6 +62,10 @@ module seispulse_pulses
 
     !> Length of the packed parameter vector of `pulse_from_params` (the f2py layer).
     integer, parameter :: PULSE_NPARAM = 9
+    !> Positions in that vector, by name (the Python layer packs by these names).
+    integer, parameter :: PULSE_PARAM_AMP = 1, PULSE_PARAM_DURATION = 2, PULSE_PARAM_BETA = 3, &
+                          PULSE_PARAM_FULL = 4, PULSE_PARAM_PEAK_FRAC = 5, PULSE_PARAM_FREQ = 6, &
+                          PULSE_PARAM_T0 = 7, PULSE_PARAM_GAMMA = 8, PULSE_PARAM_NU_DEG = 9
 
     character(len=*), parameter :: kind_names(PULSE_NKINDS) = [character(len=24) :: &
         'exponential', 'half_sine', 'sine_cycle', 'cosine_cycle', 'rectangular', &
@@ -858,22 +864,22 @@ contains
         p%t0 = t0
     end function mp_pulse
 
-    !> Build a pulse from its kind and a packed vector (used by the f2py layer):
-    !> [amp, duration, beta, full (0/1), peak_frac, freq, t0, gamma, nu_deg].
+    !> Build a pulse from its kind and a packed vector (used by the f2py layer), each
+    !> parameter at its position PULSE_PARAM_<name> (full: 0 or 1).
     pure function pulse_from_params(kind, params) result(p)
         integer, intent(in) :: kind                  !! PULSE_* code
         real(dp), intent(in) :: params(PULSE_NPARAM) !! packed parameters
         type(pulse_t) :: p
         p%kind = kind
-        p%amp = params(1)
-        p%duration = params(2)
-        p%beta = params(3)
-        p%full = params(4) > 0.5_dp
-        p%peak_frac = params(5)
-        p%freq = params(6)
-        p%t0 = params(7)
-        p%gamma = params(8)
-        p%nu_deg = params(9)
+        p%amp = params(PULSE_PARAM_AMP)
+        p%duration = params(PULSE_PARAM_DURATION)
+        p%beta = params(PULSE_PARAM_BETA)
+        p%full = params(PULSE_PARAM_FULL) > 0.5_dp
+        p%peak_frac = params(PULSE_PARAM_PEAK_FRAC)
+        p%freq = params(PULSE_PARAM_FREQ)
+        p%t0 = params(PULSE_PARAM_T0)
+        p%gamma = params(PULSE_PARAM_GAMMA)
+        p%nu_deg = params(PULSE_PARAM_NU_DEG)
     end function pulse_from_params
 
     !> Check a pulse; the message names the offending parameter and its range.
