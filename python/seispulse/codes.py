@@ -237,7 +237,8 @@ def mononobe_okabe(phi_deg, kh, kv, delta_deg=0.0, psi_deg=90.0, beta_deg=0.0, p
         _scalar("phi_deg", phi_deg), _scalar("kh", kh), _scalar("kv", kv),
         _scalar("delta_deg", delta_deg), _scalar("psi_deg", psi_deg),
         _scalar("beta_deg", beta_deg), int(is_passive), _scalar("gamma_phi", gamma_phi))
-    if STATUS_ERRORS.get(int(stat)) is NoSolutionError and mode == "en1998" and not is_passive and k_e3 > 0.0:
+    no_solution = STATUS_ERRORS.get(int(stat)) is NoSolutionError
+    if no_solution and mode == "en1998" and not is_passive and k_e3 > 0.0:
         return MononobeOkabe(float(k_e3), float(theta))
     _core.raise_for_status(stat, msg)
     return MononobeOkabe(float(k), float(theta))

@@ -270,6 +270,27 @@ _BY_NAME = {
 }
 
 
+def _excitation(pulse, accel, dt, dt_missing, t):
+    """What the integrators of the other modules are driven by, as the f2py layer takes it:
+    (kind, params, rec, step, grid) for a Pulse from :func:`define` (kind > 0) or a sampled
+    record accel with its time step dt (kind = 0), and the output times t as a flat array
+    (empty for none). The caller has checked that exactly one of pulse and accel is given;
+    dt_missing is the message when dt is not."""
+    if pulse is not None:
+        if not isinstance(pulse, Pulse):
+            raise InvalidInputError("pulse: must be a seispulse.pulse.Pulse from "
+                                    "seispulse.pulse.define()")
+        kind, params, rec, step = pulse.code, np.asarray(pulse.params, float), np.zeros(1), 1.0
+    else:
+        rec = np.ascontiguousarray(_core.as_float_array("accel", accel).reshape(-1))
+        if dt is None:
+            raise InvalidInputError(dt_missing)
+        kind, params, step = 0, np.zeros(_fortran_codes.PULSE_NPARAM), _core.as_scalar("dt", dt)
+    grid = np.zeros(0) if t is None else np.ascontiguousarray(
+        _core.as_float_array("t", t).reshape(-1))
+    return kind, params, rec, step, grid
+
+
 def define(kind, **params):
     """A pulse, validated, to pass to other modules (e.g.
     :func:`seispulse.sliding.simulate`): ``define('half_sine', amp=0.3, amp_unit='g',

@@ -23,11 +23,11 @@ import numpy as np
 
 from . import _core
 from . import _fortran_codes as _f
-from ._seispulse import (sp_fetch_impacts, sp_overturning_map, sp_rock, sp_rocking_block, sp_rocking_curve,
-                         sp_rocking_extremes, sp_rocking_rect_normalized, sp_rocking_response,
-                         sp_rocking_summary)
+from ._seispulse import (sp_fetch_impacts, sp_overturning_map, sp_rock, sp_rocking_block,
+                         sp_rocking_curve, sp_rocking_extremes, sp_rocking_rect_normalized,
+                         sp_rocking_response, sp_rocking_summary)
 from .errors import InvalidInputError
-from .pulse import STANDARD_GRAVITY, Pulse, define
+from .pulse import STANDARD_GRAVITY, _excitation, define
 
 __all__ = ["REGIONS", "Response", "Summary", "uplift_time", "response", "summary",
            "extremes", "classify", "critical_time", "time_of_max", "max_rotation", "impact_time",
@@ -263,18 +263,8 @@ def simulate(block, pulse=None, *, accel=None, dt=None, linearized=False, t=None
     if (pulse is None) == (accel is None):
         raise InvalidInputError("pulse, accel: give exactly one of them")
     linearized = _core.check_bool("linearized", linearized)
-    if pulse is not None:
-        if not isinstance(pulse, Pulse):
-            raise InvalidInputError("pulse: must be a seispulse.pulse.Pulse from "
-                                    "seispulse.pulse.define()")
-        kind, params, rec, step = pulse.code, np.asarray(pulse.params, float), np.zeros(1), 1.0
-    else:
-        rec = np.ascontiguousarray(_core.as_float_array("accel", accel).reshape(-1))
-        if dt is None:
-            raise InvalidInputError("dt: the time step (> 0, s) of accel is required")
-        kind, params, step = 0, np.zeros(9), _core.as_scalar("dt", dt)
-    grid = np.zeros(0) if t is None else np.ascontiguousarray(
-        _core.as_float_array("t", t).reshape(-1))
+    kind, params, rec, step, grid = _excitation(
+        pulse, accel, dt, "dt: the time step (> 0, s) of accel is required", t)
     limit = t_max is not None
     t_lim = _core.check_positive("t_max", t_max, " (s)") if limit else 0.0
     theta0 = _core.as_scalar("theta0", theta0)

@@ -37,7 +37,8 @@ from ._seispulse import (sp_design_envelope, sp_sdof_response, sp_sdof_spectrum,
 from .errors import InvalidInputError
 
 __all__ = ["STANDARD_GRAVITY", "PEAKS", "Response", "Spectrum", "Shape", "response",
-           "spectrum", "envelope", "normalized_shape", "default_threads"] + list(getattr(_sdof_pulse, "__all__", []))
+           "spectrum", "envelope", "normalized_shape", "default_threads"]
+__all__ += list(getattr(_sdof_pulse, "__all__", []))
 
 #: Standard gravity (m/s^2), the default g.
 STANDARD_GRAVITY = 9.80665

@@ -25,7 +25,7 @@ from ._seispulse import (sp_basic_lengths, sp_block, sp_characteristic_length,
                          sp_inclined, sp_limit_form, sp_stickslip, sp_table_1_2, sp_table_1_3,
                          sp_yield_time)
 from .errors import InvalidInputError
-from .pulse import STANDARD_GRAVITY, Pulse
+from .pulse import STANDARD_GRAVITY, _excitation
 
 __all__ = ["REGIMES", "MODES", "HalfCycle", "FullCycle", "Resistances", "BlockResponse",
            "yield_time", "half_cycle", "full_cycle", "inclined_resistances", "block",
@@ -289,7 +289,8 @@ def rectangle_full(eta):
 
 def triangle_half(eta):
     """Triangular half cycle (beta = 0; Eq. 1.10b with its sign corrected: doc/sliding.md,
-    Corrections 3), 0 < eta < 1: (tau_y, tau_m, um, vm, regime) in closed form (doc/sliding.md section 3)."""
+    Corrections 3), 0 < eta < 1: (tau_y, tau_m, um, vm, regime) in closed form
+    (doc/sliding.md section 3)."""
     tau_y, tau_m, um, vm, code = _limit_form(3, eta, 5)
     shape = np.shape(tau_y)
     return tau_y, tau_m, um, vm, _core.names(REGIMES, np.asarray(code, dtype=int), shape)
@@ -405,19 +406,8 @@ def simulate(pulse=None, ay=None, *, accel=None, dt=None, ay_rev=None, static_fa
     ay_rev = ay if ay_rev is None else _core.as_scalar("ay_rev", ay_rev)
     static_factor = _core.as_scalar("static_factor", static_factor)
     static_all = _core.check_bool("static_all", static_all)
-    if pulse is not None:
-        if not isinstance(pulse, Pulse):
-            raise InvalidInputError("pulse: must be a seispulse.pulse.Pulse from "
-                                    "seispulse.pulse.define()")
-        kind, params, rec, step = pulse.code, np.asarray(pulse.params, float), np.zeros(1), 1.0
-    else:
-        rec = np.ascontiguousarray(_core.as_float_array("accel", accel).reshape(-1))
-        if dt is None:
-            raise InvalidInputError("dt: must be the time step (> 0) of accel")
-        step = _core.as_scalar("dt", dt)
-        kind, params = 0, np.zeros(9)
-    grid = np.zeros(0) if t is None else np.ascontiguousarray(
-        _core.as_float_array("t", t).reshape(-1))
+    kind, params, rec, step, grid = _excitation(
+        pulse, accel, dt, "dt: must be the time step (> 0) of accel", t)
     with _core.HELD_LOCK:
         ug, wg, nslides, u_final, u_max, u_min, t_end, stat, msg = sp_stickslip(
             kind, params, rec, step, ay, ay_rev, static_factor, int(static_all), grid)
