@@ -38,6 +38,7 @@ subroutine sp_exp_pulse(n, tau, nb, beta, full, a, v, d, stat, errmsg)
     call exp_pulse(tau, beta, full /= 0, a, v, d, stat, errmsg)
 end subroutine sp_exp_pulse
 
+! Hand-written (not in _wrap_loops.txt): one parameter row evaluates the whole t in one call.
 !> Any pulse in SI units; params(np, 9) packed as in pulse_from_params, np = 1 or n.
 subroutine sp_pulse_eval(kind, n, t, np, params, a, v, d, stat, errmsg)
     use seispulse_kinds, only: dp
@@ -79,106 +80,6 @@ end subroutine sp_pulse_kind
 ! Sliding block (seispulse_sliding_closed); every array has length n (broadcast in Python)
 ! ---------------------------------------------------------------------------------
 
-!> Half-cycle response; regime codes as REGIME_*; method 0 closed forms, 1 integrator.
-subroutine sp_half_cycle(n, eta, beta, sfac, method, tau_y, tau_m, regime, um, dugm, vm, &
-                         stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding_closed, only: half_cycle, half_cycle_integrated, half_cycle_t
-    implicit none
-    !f2py intent(hide) :: n
-    integer, intent(in) :: n, method
-    real(dp), intent(in) :: eta(n), beta(n), sfac(n)
-    real(dp), intent(out) :: tau_y(n), tau_m(n), um(n), dugm(n), vm(n)
-    integer, intent(out) :: regime(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    type(half_cycle_t) :: r
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        if (method == 0) then
-            call half_cycle(eta(i), beta(i), sfac(i), r, stat, errmsg)
-        else
-            call half_cycle_integrated(eta(i), beta(i), sfac(i), r, stat, errmsg)
-        end if
-        if (stat /= SEISPULSE_SUCCESS) return
-        tau_y(i) = r%tau_y
-        tau_m(i) = r%tau_m
-        regime(i) = r%regime
-        um(i) = r%um
-        dugm(i) = r%dugm
-        vm(i) = r%vm
-    end do
-end subroutine sp_half_cycle
-
-!> Full-cycle response; mode codes as SLIDING_MODE_*; method 0 closed forms, 1 integrator.
-subroutine sp_full_cycle(n, eta1, eta2, beta, sfac, static_reverse, method, mode, tau_y1, &
-                         tau_m1, um1, tau_y2, tau_m2, um2, ures, vm1, vm2, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding_closed, only: full_cycle, full_cycle_integrated, full_cycle_t
-    implicit none
-    !f2py intent(hide) :: n
-    integer, intent(in) :: n, static_reverse, method
-    real(dp), intent(in) :: eta1(n), eta2(n), beta(n), sfac(n)
-    integer, intent(out) :: mode(n)
-    real(dp), intent(out) :: tau_y1(n), tau_m1(n), um1(n), tau_y2(n), tau_m2(n), um2(n), &
-                             ures(n), vm1(n), vm2(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    type(full_cycle_t) :: r
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        if (method == 0) then
-            call full_cycle(eta1(i), eta2(i), beta(i), sfac(i), static_reverse /= 0, r, stat, &
-                            errmsg)
-        else
-            call full_cycle_integrated(eta1(i), eta2(i), beta(i), sfac(i), static_reverse /= 0, &
-                                       .true., r, stat, errmsg)
-        end if
-        if (stat /= SEISPULSE_SUCCESS) return
-        mode(i) = r%mode
-        tau_y1(i) = r%tau_y1
-        tau_m1(i) = r%tau_m1
-        um1(i) = r%um1
-        tau_y2(i) = r%tau_y2
-        tau_m2(i) = r%tau_m2
-        um2(i) = r%um2
-        ures(i) = r%ures
-        vm1(i) = r%vm1
-        vm2(i) = r%vm2
-    end do
-end subroutine sp_full_cycle
-
-!> Stick/slip boundary: exact (method 0) or Eq. 1.22 (method 1).
-subroutine sp_eta_critical(n, beta, method, eta_cr, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_sliding_closed, only: eta_critical, eta_critical_regression
-    implicit none
-    !f2py intent(hide) :: n
-    integer, intent(in) :: n, method
-    real(dp), intent(in) :: beta(n)
-    real(dp), intent(out) :: eta_cr(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        if (method == 0) then
-            call eta_critical(beta(i), eta_cr(i), stat, errmsg)
-            if (stat /= SEISPULSE_SUCCESS) return
-        else
-            eta_cr(i) = eta_critical_regression(beta(i))
-        end if
-    end do
-end subroutine sp_eta_critical
-
 !> Closed forms: which = 1 rectangle half (tau_m, um, um/dugm, vm), 2 rectangle full
 !> (tau_m1, um1, tau_m2, um2, ures), 3 triangle half (tau_y, tau_m, um, vm, regime),
 !> 4 spike (vm), 5 regression 1.30 (um/D_g; beta in out(:, 1) on entry). eta in (0, 1).
@@ -212,6 +113,7 @@ end subroutine sp_limit_form
 ! Normalization of sliding displacements (seispulse_sliding_norm)
 ! ---------------------------------------------------------------------------------
 
+! Hand-written (not in _wrap_loops.txt): a rows x cols table from two loops, not one.
 !> Exponents (a, b, c, d) of every cell of Table 1.2 `table` for the given row and
 !> column values.
 subroutine sp_table_1_2(table, nr, rows, nc, cols, exps, stat, errmsg)
@@ -300,47 +202,6 @@ end subroutine sp_stickslip
 ! ---------------------------------------------------------------------------------
 ! Rocking blocks: linearized closed forms (seispulse_rocking_closed)
 ! ---------------------------------------------------------------------------------
-
-!> Boundaries in the (f, eta) plane and their inverses, per element. which: 1 uplift time
-!> (x = eta), 2 stability wall (x = f), 3 its inverse (x = eta), 4 overturn boundary at the
-!> end (x = f), 5 at mid-pulse (x = f), 6/7 their inverses (x = eta), 8 S1/S2 boundary (x = f).
-subroutine sp_rocking_curve(n, which, x, beta, y, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_rocking_closed, only: uplift_time, stability_wall, stability_wall_inverse, &
-                                 overturn_boundary, overturn_boundary_inverse, s1_s2_boundary
-    implicit none
-    !f2py intent(hide) :: n
-    integer, intent(in) :: n, which
-    real(dp), intent(in) :: x(n), beta(n)
-    real(dp), intent(out) :: y(n)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    do i = 1, n
-        select case (which)
-        case (1)
-            call uplift_time(x(i), beta(i), y(i), stat, errmsg)
-        case (2)
-            call stability_wall(x(i), beta(i), y(i), stat, errmsg)
-        case (3)
-            call stability_wall_inverse(x(i), beta(i), y(i), stat, errmsg)
-        case (4)
-            call overturn_boundary(x(i), beta(i), .true., y(i), stat, errmsg)
-        case (5)
-            call overturn_boundary(x(i), beta(i), .false., y(i), stat, errmsg)
-        case (6)
-            call overturn_boundary_inverse(x(i), beta(i), .true., y(i), stat, errmsg)
-        case (7)
-            call overturn_boundary_inverse(x(i), beta(i), .false., y(i), stat, errmsg)
-        case default
-            call s1_s2_boundary(x(i), beta(i), y(i), stat, errmsg)
-        end select
-        if (stat /= SEISPULSE_SUCCESS) return
-    end do
-end subroutine sp_rocking_curve
 
 !> Normalized rectangle forms (2.27, corrected 2.30, corrected 2.35); 0 < fbar < 1, 0 < eta < 1.
 subroutine sp_rocking_rect_normalized(n, fbar, eta, out)
@@ -524,6 +385,7 @@ subroutine sp_newmark_rigid(n, accel, dt, mode, ky, ky_up, k_down, k_up, method,
     call move_alloc(res%slides, held_slides)
 end subroutine sp_newmark_rigid
 
+! Hand-written (not in _wrap_loops.txt): each block runs the whole record accel(n).
 !> Summaries for many blocks on one record (ky, ky_up, k_down, k_up of length nk).
 subroutine sp_newmark_rigid_many(n, accel, dt, mode, nk, ky, ky_up, k_down, k_up, method, g, &
                                  max_disp, final_disp, u_max, u_min, max_vel, t_end, stat, &

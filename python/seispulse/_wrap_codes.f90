@@ -143,6 +143,7 @@ subroutine sp_ec8_ground_parameters(spectrum_type, ground, s, tb, tc, td, stat, 
     call ec8_ground_parameters(spectrum_type, ground, s, tb, tc, td, stat, errmsg)
 end subroutine sp_ec8_ground_parameters
 
+! Hand-written (not in _wrap_loops.txt): checks all xi, then one elemental call; index in errmsg.
 !> eta(xi) per element; stops at the first bad xi (xi_percent(i) in the message).
 subroutine sp_ec8_damping_correction(n, xi_percent, eta, stat, errmsg)
     use seispulse_kinds, only: dp

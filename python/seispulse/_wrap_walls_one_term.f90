@@ -56,27 +56,3 @@ subroutine sp_ot_displacement(omega_ratio, delta, nu, shape, expo, d_theta, l_ov
     call one_term_displacement(omega_ratio, delta, nu, shape, expo, d_theta, l_over_h, x, y, u, &
                                stat, errmsg)
 end subroutine sp_ot_displacement
-
-!> power_law_cutoff alone, with the exponent checked (check_exponent).
-subroutine sp_ot_cutoff(nn, expo, wc, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_walls_one_term, only: power_law_cutoff, check_exponent
-    implicit none
-    !f2py intent(hide) :: nn
-    integer, intent(in) :: nn
-    real(dp), intent(in) :: expo(nn)
-    real(dp), intent(out) :: wc(nn)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    integer :: i
-    errmsg = ''
-    stat = SEISPULSE_SUCCESS
-    wc = 0.0_dp
-    do i = 1, nn
-        call check_exponent(expo(i), stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-        wc(i) = power_law_cutoff(expo(i))
-    end do
-end subroutine sp_ot_cutoff
-

@@ -16,6 +16,7 @@ subroutine sp_free_field_frequencies(height, vs, n, omegas, stat, errmsg)
     call free_field_frequencies(height, vs, omegas, stat, errmsg)
 end subroutine sp_free_field_frequencies
 
+! Hand-written (not in _wrap_loops.txt): puts the element index into the error message.
 !> vy_rigid element by element: omega_ratio(i), delta(i), nu(i).
 subroutine sp_vy_rigid(n, omega_ratio, delta, nu, tol, q, m, h_ratio, nterms, stat, errmsg)
     use seispulse_kinds, only: dp

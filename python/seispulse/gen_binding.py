@@ -187,15 +187,16 @@ def cmd_codes(args):
 
 
 LOOP_HEAD_RE = re.compile(r"^(sp_\w+)\((.*)\)$")
-LOOP_CALL_RE = re.compile(r"^(\w+):\s*(\w+)\((.*)\)$", re.S)
+LOOP_CALL_RE = re.compile(r"^(\w+):\s*(?:(\w+)\s*=\s*)?(\w+)\((.*)\)$", re.S)
 LOOP_ARG_RE = re.compile(r"^(>?)(\w+)(?:\((\d+)\))?(?::(int|real|complex))?(?:=(\w+%\w+))?$")
+LOOP_MODULE_RE = re.compile(r"^\w+:\s")
 LOOP_LOCAL_RE = re.compile(r"^type\((\w+)\)\s*::\s*(\w+)$")
 TYPES = {"int": "integer", "real": "real(dp)", "complex": "complex(dp)"}
 ZERO = {"int": "0", "real": "0.0_dp", "complex": "(0.0_dp, 0.0_dp)"}
 
 
 def loop_entries(text):
-    """(doc lines, head, call) of each entry of a _wrap_loops.txt text."""
+    """(doc lines, head, calls, local) of each entry of a _wrap_loops.txt text."""
     entries, doc, lines = [], [], []
     for raw in text.splitlines() + [""]:
         if raw.startswith("#"):
@@ -210,7 +211,13 @@ def loop_entries(text):
             while k < len(lines) and " ".join(lines[:k]).count("(") > \
                     " ".join(lines[:k]).count(")"):
                 k += 1
-            entries.append((doc, " ".join(lines[:k]), " ".join(lines[k:]), local))
+            calls = []                              # a statement starts with `module:`
+            for line in lines[k:]:
+                if LOOP_MODULE_RE.match(line) or not calls:
+                    calls.append(line)
+                else:
+                    calls[-1] += " " + line
+            entries.append((doc, " ".join(lines[:k]), calls, local))
             doc, lines = [], []
     return entries
 
@@ -226,12 +233,12 @@ def wrap_line(text, indent, width=100):
     return "\n".join(out + [line])
 
 
-def loop_routine(doc, head, call, local=None):
+def loop_routine(doc, head, calls, local=None):
     """The Fortran of one element-by-element wrapper."""
-    m, c = LOOP_HEAD_RE.match(head), LOOP_CALL_RE.match(call)
-    if not m or not c:
-        raise StepFailed(f"loops: cannot read {head!r} / {call!r}")
-    name, module, routine = m.group(1), c.group(1), c.group(2)
+    m, cs = LOOP_HEAD_RE.match(head), [LOOP_CALL_RE.match(call) for call in calls]
+    if not m or not all(cs):
+        raise StepFailed(f"loops: cannot read {head!r} / {calls!r}")
+    name = m.group(1)
     args, decls, zero, arrays, after = [], [], [], {}, []
     for token in (t.strip() for t in m.group(2).split(",")):
         a = LOOP_ARG_RE.match(token)
@@ -257,16 +264,24 @@ def loop_routine(doc, head, call, local=None):
         if sub:
             return f"{arg}(i, {sub})"
         return f"{arg}(i, :)" if arrays[arg] else f"{arg}(i)"
-    actual = re.sub(r"\b([a-z_]\w*)\b(?:\((\d+)\))?", element, c.group(3))
-    uses, locals_ = routine, []
+    uses, locals_, body = {}, [], []           # {module: names}, declarations, loop body
     if local:
         ltype, lname = LOOP_LOCAL_RE.match(local).groups()
-        uses, locals_ = f"{ltype}, {routine}", [f"    type({ltype}) :: {lname}"]
+        uses[cs[0].group(1)], locals_ = [ltype], [f"    type({ltype}) :: {lname}"]
+    for c in cs:
+        module, result, routine = c.group(1), c.group(2), c.group(3)
+        uses.setdefault(module, []).append(routine)
+        actual = re.sub(r"\b([a-z_]\w*)\b(?:\((\d+)\))?", element, c.group(4))
+        if result:                              # a function without stat: y(i) = f(...)
+            body.append(wrap_line(f"{result}(i) = {routine}({actual})", " " * 8))
+        else:
+            body += [wrap_line(f"call {routine}({actual})", " " * 8),
+                     "        if (stat /= SEISPULSE_SUCCESS) return"]
     lines = doc + [wrap_line(f"subroutine {name}(n, {', '.join(args)}, stat, errmsg)", "")]
     lines += ["    use seispulse_kinds, only: dp",
-              "    use seispulse_errors, only: SEISPULSE_SUCCESS",
-              f"    use {module}, only: {uses}",
-              "    implicit none",
+              "    use seispulse_errors, only: SEISPULSE_SUCCESS"]
+    lines += [f"    use {module}, only: {', '.join(names)}" for module, names in uses.items()]
+    lines += ["    implicit none",
               "    !f2py intent(hide) :: n",
               "    integer, intent(in) :: n"]
     lines += ["    " + d for d in decls]
@@ -276,9 +291,7 @@ def loop_routine(doc, head, call, local=None):
               "    errmsg = ''",
               "    stat = SEISPULSE_SUCCESS"]
     lines += ["    " + z for z in zero]
-    lines += ["    do i = 1, n",
-              wrap_line(f"call {routine}({actual})", " " * 8),
-              "        if (stat /= SEISPULSE_SUCCESS) return"]
+    lines += ["    do i = 1, n"] + body
     lines += ["        " + a for a in after]
     lines += ["    end do",
               f"end subroutine {name}"]

@@ -23,9 +23,11 @@ import numpy as np
 
 from . import _core
 from . import _fortran_codes as _f
-from ._seispulse import (sp_fetch_impacts, sp_overturning_map, sp_rock, sp_rocking_block,
-                         sp_rocking_curve, sp_rocking_extremes, sp_rocking_rect_normalized,
-                         sp_rocking_response, sp_rocking_summary)
+from ._seispulse import (sp_fetch_impacts, sp_overturn_boundary, sp_overturn_boundary_inverse,
+                         sp_overturning_map, sp_rock, sp_rocking_block, sp_rocking_extremes,
+                         sp_rocking_rect_normalized, sp_rocking_response, sp_rocking_summary,
+                         sp_s1_s2_boundary, sp_stability_wall, sp_stability_wall_inverse,
+                         sp_uplift_time)
 from .errors import InvalidInputError
 from .pulse import STANDARD_GRAVITY, _excitation, define
 
@@ -50,14 +52,18 @@ Summary.__doc__ = """Everything of the first excursion: region, uplift tau_up, c
 impact tau_i (S regions, else NaN), psi_max = theta_max/alpha (0 without rocking,
 +inf when the block overturns). Times are t/t_d."""
 
-_CURVES = {"uplift": 1, "wall": 2, "wall_inverse": 3, "end": 4, "mid": 5, "end_inverse": 6,
-           "mid_inverse": 7, "s1_s2": 8}
+# Each curve: its wrapper and the extra arguments after (x, beta) (at_end of the overturn
+# boundaries).
+_CURVES = {"uplift": (sp_uplift_time,), "wall": (sp_stability_wall,),
+           "wall_inverse": (sp_stability_wall_inverse,), "end": (sp_overturn_boundary, 1),
+           "mid": (sp_overturn_boundary, 0), "end_inverse": (sp_overturn_boundary_inverse, 1),
+           "mid_inverse": (sp_overturn_boundary_inverse, 0), "s1_s2": (sp_s1_s2_boundary,)}
 
 
 def _curve(which, x_name, x, beta, rename=None):
     shape, arr = _core.broadcast(**{x_name: x, "beta": beta})
-    y, stat, msg = sp_rocking_curve(_CURVES[which], _core.flat(arr[x_name], shape),
-                                    _core.flat(arr["beta"], shape))
+    run, *extra = _CURVES[which]
+    y, stat, msg = run(_core.flat(arr[x_name], shape), _core.flat(arr["beta"], shape), *extra)
     _core.raise_for_status(stat, msg, rename)
     return _core.shaped(shape, y)[0]
 

@@ -21,8 +21,9 @@ import numpy as np
 from . import _core
 from . import _fortran_codes as _f
 from ._seispulse import (sp_basic_lengths, sp_block, sp_characteristic_length,
-                         sp_eta_critical, sp_fetch_slides, sp_full_cycle, sp_half_cycle,
-                         sp_inclined, sp_limit_form, sp_stickslip, sp_table_1_2, sp_table_1_3,
+                         sp_eta_critical, sp_eta_critical_regression, sp_fetch_slides,
+                         sp_full_cycle, sp_full_cycle_integrated, sp_half_cycle,
+                         sp_half_cycle_integrated, sp_inclined, sp_limit_form, sp_stickslip, sp_table_1_2, sp_table_1_3,
                          sp_yield_time)
 from .errors import InvalidInputError
 from .pulse import STANDARD_GRAVITY, _excitation
@@ -76,7 +77,6 @@ peak sliding velocities v_m1, v_m2 (m/s)."""
 #: Names of the six basic lengths of Eq. 1.28 a-f, in the order returned.
 BASIC_LENGTHS = ("Ag*t^2", "Vg^2/Ag", "Dg", "Vg*t", "Vg*Dg/(Ag*t)", "Ag*Dg*t/Vg")
 
-_EXACT, _REGRESSION = 0, 1
 _METHODS = ("closed", "integrator")
 
 
@@ -119,9 +119,10 @@ def half_cycle(eta, beta, static_factor=1.0, method="closed"):
     HalfCycle
         tau_y, tau_m, regime, um, dugm, vm (see :class:`HalfCycle`).
     """
-    code = int(_core.check_choice("method", method, _METHODS) == "integrator")
+    run = {"closed": sp_half_cycle, "integrator": sp_half_cycle_integrated}[
+        _core.check_choice("method", method, _METHODS)]
     shape, arr = _core.broadcast(eta=eta, beta=beta, static_factor=static_factor)
-    tau_y, tau_m, regime, um, dugm, vm, stat, msg = sp_half_cycle(*_flat_all(shape, arr), code)
+    tau_y, tau_m, regime, um, dugm, vm, stat, msg = run(*_flat_all(shape, arr))
     _core.raise_for_status(stat, msg)
     tau_y, tau_m, um, dugm, vm = _core.shaped(shape, tau_y, tau_m, um, dugm, vm)
     return HalfCycle(tau_y, tau_m, _core.names(REGIMES, regime, shape), um, dugm, vm)
@@ -154,10 +155,11 @@ def full_cycle(eta1, beta, eta2=None, static_factor=1.0, static_reverse=False,
     if eta2 is None:
         eta2 = eta1
     static_reverse = _core.check_bool("static_reverse", static_reverse)
-    code = int(_core.check_choice("method", method, _METHODS) == "integrator")
+    run = {"closed": sp_full_cycle, "integrator": sp_full_cycle_integrated}[
+        _core.check_choice("method", method, _METHODS)]
     shape, arr = _core.broadcast(eta1=eta1, eta2=eta2, beta=beta, static_factor=static_factor)
     (mode, tau_y1, tau_m1, um1, tau_y2, tau_m2, um2, ures, vm1, vm2, stat,
-     msg) = sp_full_cycle(*_flat_all(shape, arr), int(static_reverse), code)
+     msg) = run(*_flat_all(shape, arr), int(static_reverse))
     _core.raise_for_status(stat, msg)
     return FullCycle(_core.names(MODES, mode, shape),
                      *_core.shaped(shape, tau_y1, tau_m1, um1, tau_y2, tau_m2, um2, ures, vm1,
@@ -230,8 +232,8 @@ def eta_critical(beta, method="exact"):
         if np.any(np.abs(finite) > 4 * np.pi):
             warnings.warn("eta_critical: the regression 1.22 was fitted on "
                           "-4 pi <= beta <= 4 pi", stacklevel=2)
-    code = _EXACT if method == "exact" else _REGRESSION
-    eta_cr, stat, msg = sp_eta_critical(_core.flat(beta_arr, shape), code)
+    run = sp_eta_critical if method == "exact" else sp_eta_critical_regression
+    eta_cr, stat, msg = run(_core.flat(beta_arr, shape))
     _core.raise_for_status(stat, msg)
     return _core.shaped(shape, eta_cr)[0]
 

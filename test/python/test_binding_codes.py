@@ -78,6 +78,24 @@ def test_loop_wrapper_with_a_derived_type_result(gen):
                                         "        a(i) = r%a", "        k(i) = r%k"]
 
 
+def test_loop_wrapper_with_a_check_then_a_function(gen):
+    # two statements in their order: the checking call (stat tested), then a function
+    # without stat whose result is y(i); each module used once with its names
+    spec = ("sp_demo(x, s:real, >y)\n"
+            "    mod_a: check(x, stat, errmsg)\n"
+            "    mod_b: y = f(x, s,\n"
+            "                 x)\n")
+    (entry,) = gen.loop_entries(spec)
+    lines = gen.loop_routine(*entry).splitlines()
+    assert lines[0] == "subroutine sp_demo(n, x, s, y, stat, errmsg)"
+    assert "    use mod_a, only: check" in lines and "    use mod_b, only: f" in lines
+    loop = lines.index("    do i = 1, n")
+    assert lines[loop + 1:loop + 5] == ["        call check(x(i), stat, errmsg)",
+                                        "        if (stat /= SEISPULSE_SUCCESS) return",
+                                        "        y(i) = f(x(i), s, x(i))",
+                                        "    end do"]
+
+
 def test_pulse_parameter_positions_from_fortran():
     # pulse.define packs by the positions PULSE_PARAM_<NAME> of pulses.f90: one position
     # per parameter, 1 .. PULSE_NPARAM, none missing, in the order pulse_from_params reads
