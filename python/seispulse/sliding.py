@@ -23,8 +23,8 @@ from . import _fortran_codes as _f
 from ._seispulse import (sp_basic_lengths, sp_block, sp_characteristic_length,
                          sp_eta_critical, sp_eta_critical_regression, sp_fetch_slides,
                          sp_full_cycle, sp_full_cycle_integrated, sp_half_cycle,
-                         sp_half_cycle_integrated, sp_inclined, sp_limit_form, sp_stickslip, sp_table_1_2, sp_table_1_3,
-                         sp_yield_time)
+                         sp_half_cycle_integrated, sp_inclined, sp_limit_form, sp_stickslip,
+                         sp_table_1_2, sp_table_1_3, sp_yield_time)
 from .errors import InvalidInputError
 from .pulse import STANDARD_GRAVITY, _excitation
 
