@@ -22,6 +22,8 @@ module test_sliding_sim
     !> samples of pulses in the pulse's own units, so g = 1 (u in those units times s^2)
     real(dp), parameter :: g_unit = 1.0_dp
     real(dp), parameter :: g0 = 9.80665_dp
+    !> a g for which the floating-point product (huge/g) g overflows
+    real(dp), parameter :: g_edge = 11.527021957185141_dp
 
 contains
 
@@ -1061,6 +1063,12 @@ contains
         call check(error, rg%u_max, r1%u_max, rtol=0.0_dp, message='u_max')
         if (allocated(error)) return
         call check(error, rg%u_min, r1%u_min, rtol=0.0_dp, message='u_min')
+        if (allocated(error)) return
+        ! at g = 11.527021957185141, (huge/g) g rounds up to +inf: a sample of huge/g must be
+        ! refused by name, not turned into an infinite acceleration
+        call stickslip_record([1.0_dp, huge(dt) / g_edge], 0.01_dp, fric(0.1_dp, 0.1_dp), &
+                              g_edge, rg, stat)
+        call check(error, stat, SEISPULSE_INVALID_INPUT, 'sample huge/g: refused')
     end subroutine test_record_in_g
 
 end module test_sliding_sim

@@ -28,7 +28,7 @@ module seispulse_pieces
     use seispulse_checks, only: finite_positive
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
                                 set_error
-    use seispulse_format, only: real_str
+    use seispulse_format, only: real_str, int_str
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_special, only: pi
     use seispulse_pulses, only: pulse_t, pulse_at, pulse_breaks, exp_consts_t, exp_consts, &
@@ -40,6 +40,7 @@ module seispulse_pieces
     private
 
     public :: piece_t, piece_iter_t, pulse_pieces_check, record_pieces_check, record_step_check
+    public :: record_in_si, g_product_max
     public :: pulse_pieces_init, record_pieces_init, next_piece, exceeds, onset_on_piece
 
     !> M&P: largest gamma accepted (64 gamma coarse pieces are generated).
@@ -154,6 +155,39 @@ contains
             call record_pieces_check(accel, stat, errmsg)
         end if
     end subroutine record_step_check
+
+    !> A record in g taken to m/s^2, accel_si = g * accel, every product finite: a sample
+    !> whose product would overflow is an error naming it, found before the product.
+    subroutine record_in_si(accel, g, accel_si, stat, errmsg)
+        real(dp), intent(in) :: accel(:)                      !! samples (g), finite
+        real(dp), intent(in) :: g                             !! gravity (m/s^2), finite, > 0
+        real(dp), allocatable, intent(out) :: accel_si(:)     !! g * accel (m/s^2)
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp) :: a_max
+        integer :: i
+        stat = SEISPULSE_SUCCESS
+        a_max = g_product_max(g)
+        do i = 1, size(accel)
+            if (abs(accel(i)) > a_max) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel(' &
+                               //int_str(i)//') = '//real_str(accel(i)) &
+                               //': g * accel overflows (g = '//real_str(g)//' m/s^2)')
+                return
+            end if
+        end do
+        allocate(accel_si(size(accel)))
+        accel_si(:) = g * accel
+    end subroutine record_in_si
+
+    !> Largest |x| whose product g x is sure to be finite (g > 0): huge for g <= 1, else
+    !> huge/g less a margin of 4 ulps for the rounding of the quotient and of the product.
+    elemental function g_product_max(g) result(x_max)
+        real(dp), intent(in) :: g  !! the factor, > 0
+        real(dp) :: x_max
+        x_max = huge(g)
+        if (g > 1.0_dp) x_max = (huge(g) / g) * (1.0_dp - 4.0_dp * epsilon(g))
+    end function g_product_max
 
     !> The pieces of a (valid) pulse: its break list, or the M&P generator state.
     subroutine pulse_pieces_init(it, p)

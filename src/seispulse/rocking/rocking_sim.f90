@@ -59,7 +59,7 @@ module seispulse_rocking_sim
                                 check_output_grid
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
                                 set_error
-    use seispulse_format, only: real_str, int_str
+    use seispulse_format, only: real_str
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_special, only: pi
     use seispulse_ode, only: ode_system, ode_dop853_t, ode_dop853_factor
@@ -69,7 +69,7 @@ module seispulse_rocking_sim
                                 PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
                                 PULSE_RICKER
     use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_step_check, &
-                                pulse_pieces_init, record_pieces_init, next_piece, &
+                                record_in_si, pulse_pieces_init, record_pieces_init, next_piece, &
                                 exceeds, onset_on_piece
     implicit none
     private
@@ -367,8 +367,6 @@ contains
         type(piece_iter_t) :: it
         real(dp) :: th0, om0
         real(dp), allocatable :: accel_si(:)
-        real(dp) :: a_max
-        integer :: i
 
         call empty_run(run)
         call rocking_block_validate(blk, stat, errmsg)
@@ -378,21 +376,9 @@ contains
         call check_options(t_grid, theta_grid, omega_grid, t_max, theta0, omega0, rtol, &
                            th0, om0, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        ! the samples in m/s^2 (g = 1: the very same numbers); an overflow of g * accel is
-        ! caught before the product (g <= 1 cannot overflow)
-        if (g > 1.0_dp) then
-            a_max = (huge(g) / g) * (1.0_dp - 4.0_dp * epsilon(g))
-            do i = 1, size(accel)
-                if (abs(accel(i)) > a_max) then
-                    call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel(' &
-                                   //int_str(i)//') = '//real_str(accel(i)) &
-                                   //': g * accel overflows (g = '//real_str(g)//' m/s^2)')
-                    return
-                end if
-            end do
-        end if
-        allocate(accel_si(size(accel)))
-        accel_si(:) = g * accel
+        ! the samples in m/s^2 (g = 1: the very same numbers)
+        call record_in_si(accel, g, accel_si, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         call setup_sim(blk, st%sys%sim, t_max, rtol)
         if (real(steps_per_sample, dp) * size(accel) > real(huge(1) - max_steps_default, dp)) then
             st%sys%sim%max_steps = huge(1)

@@ -41,12 +41,12 @@ module seispulse_sliding_sim
     use seispulse_checks, only: positive, finite_at_least, check_output_grid
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
                                 set_error
-    use seispulse_format, only: real_str, int_str
+    use seispulse_format, only: real_str
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_pulses, only: pulse_t, pulse_validate, pulse_at, exp_consts_t, exp_consts, &
                                 PULSE_EXPONENTIAL
     use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_step_check, &
-                                pulse_pieces_init, record_pieces_init, next_piece, &
+                                record_in_si, g_product_max, pulse_pieces_init, record_pieces_init, next_piece, &
                                 exceeds, onset_on_piece
     implicit none
     private
@@ -202,7 +202,6 @@ contains
         type(friction_t) :: fr_si
         real(dp), allocatable :: accel_si(:)
         real(dp) :: big
-        integer :: i
 
         call empty_result(res)
         call friction_validate(fr, stat, errmsg)
@@ -212,20 +211,10 @@ contains
         call check_output_grid('u_grid', 'w_grid', stat, errmsg, t_grid, u_grid, w_grid)
         if (stat /= SEISPULSE_SUCCESS) return
 
-        ! to m/s^2: one product per value; the overflow is tested before it happens (a
-        ! product below huge can only overflow for g > 1); ay g = +inf if it would overflow
-        ! (no sliding that way)
-        big = huge(g)
-        if (g > 1.0_dp) big = huge(g) / g
-        allocate(accel_si(size(accel)))
-        do i = 1, size(accel)
-            if (abs(accel(i)) > big) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel('//int_str(i) &
-                               //') = '//real_str(accel(i))//': accel g overflows')
-                return
-            end if
-            accel_si(i) = accel(i) * g
-        end do
+        ! to m/s^2; ay g = +inf where the product would overflow (no sliding that way)
+        call record_in_si(accel, g, accel_si, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        big = g_product_max(g)
         fr_si = fr
         fr_si%ay_fwd = ieee_value(g, ieee_positive_inf)
         fr_si%ay_rev = fr_si%ay_fwd
