@@ -17,8 +17,8 @@ module test_divided_differences
 
     !> Tolerances: real results to a few ulps; complex ones relative, or absolute on the scale
     !> of the largest |e^x| over the nodes.
-    real(dp), parameter :: rtol_real = 5.0e-15_dp
-    real(dp), parameter :: rtol_cplx = 5.0e-15_dp
+    real(dp), parameter :: rtol_real = 1.0e-15_dp
+    real(dp), parameter :: rtol_cplx = 1.0e-15_dp
     real(dp), parameter :: atol_cplx = 5.0e-16_dp
 
     ! real e[a, b]: a, b, e[a, b]
@@ -503,7 +503,7 @@ contains
         s = exp(maxval(real(x, dp)))
     end function node_scale
 
-    !> Bitwise equality.
+    !> An integer as text for messages.
     pure function istr(i) result(s)
         integer, intent(in) :: i
         character(len=:), allocatable :: s

@@ -2,12 +2,11 @@
 !> compiler's own conversion of the same literal, done at compile time), refused
 !> tokens, values out of range, and the message of value_at.
 module test_number_reader
-    use, intrinsic :: iso_fortran_env, only: int64
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT
     use seispulse_number_reader, only: parse_real, value_at, at_line, NUM_OK, NUM_INVALID, &
                                        NUM_RANGE
-    use testing, only: test_error, unit_test, new_unittest, check
+    use testing, only: test_error, unit_test, new_unittest, check, same_bits
     implicit none
     private
 
@@ -32,7 +31,7 @@ contains
         call parse_real(tok, x, code)
         call check(error, code, NUM_OK, 'code of '//tok)
         if (allocated(error)) return
-        call check(error, transfer(x, 1_int64) == transfer(expected, 1_int64), 'bits of '//tok)
+        call check(error, same_bits(x, expected), 'bits of '//tok)
     end subroutine check_exact
 
     subroutine test_values(error)

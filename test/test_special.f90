@@ -254,8 +254,6 @@ contains
                        <= 2.0e-15_dp * abs(phi1(z)), 'complex phi1 at '//num(real(z, dp)) &
                        //' + i '//num(aimag(z)))
             if (allocated(error)) return
-            call check(error, abs(phi1(z) - p1) <= 0.0_dp, 'phi1 /= p1 of complex_phis')
-            if (allocated(error)) return
         end do
     end subroutine test_phi1_forms
 
