@@ -24,6 +24,7 @@
 !> right-hand side, if the caller clamps the step there).
 module seispulse_ode
     use seispulse_kinds, only: dp
+    use seispulse_checks, only: in_open, finite_at_least
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error
     use seispulse_roots, only: scalar_function, find_root
     implicit none
@@ -244,11 +245,11 @@ contains
         else if (size(atol) /= n) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'atol: must have n elements')
             return
-        else if (.not. (rtol > 0.0_dp .and. rtol < 1.0_dp)) then
+        else if (.not. in_open(rtol, 0.0_dp, 1.0_dp)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'rtol: must be in (0, 1)')
             return
-        else if (.not. all(atol >= 0.0_dp)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'atol: must be >= 0')
+        else if (.not. all(finite_at_least(atol, 0.0_dp))) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'atol: must be finite and >= 0')
             return
         end if
         if (self%n /= n .or. .not. allocated(self%k)) then
