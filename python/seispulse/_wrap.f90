@@ -39,7 +39,8 @@ subroutine sp_exp_pulse(n, tau, nb, beta, full, a, v, d, stat, errmsg)
 end subroutine sp_exp_pulse
 
 ! Hand-written (not in _wrap_loops.txt): one parameter row evaluates the whole t in one call.
-!> Any pulse in SI units; params(np, 9) packed as in pulse_from_params, np = 1 or n.
+!> Any pulse in SI units; params(np, PULSE_NPARAM) packed as in pulse_from_params,
+!> np = 1 or n.
 subroutine sp_pulse_eval(kind, n, t, np, params, a, v, d, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
@@ -152,14 +153,15 @@ subroutine sp_stickslip(kind, params, nrec, accel, dt, ay_fwd, ay_rev, sfac, sta
                         ngrid, tg, ug, wg, nslides, u_final, u_max, u_min, t_end, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_pulses, only: pulse_from_params
+    use seispulse_pulses, only: pulse_from_params, PULSE_NPARAM
     use seispulse_sliding_sim, only: friction_t, stickslip_result_t, stickslip_pulse, &
                                    stickslip_record
     use sp_runs_held, only: held_slides
     implicit none
     !f2py intent(hide) :: nrec, ngrid
     integer, intent(in) :: kind, nrec, static_all, ngrid
-    real(dp), intent(in) :: params(9), accel(nrec), dt, ay_fwd, ay_rev, sfac, tg(ngrid)
+    real(dp), intent(in) :: params(PULSE_NPARAM), accel(nrec), dt, ay_fwd, ay_rev, sfac, &
+                            tg(ngrid)
     real(dp), intent(out) :: ug(ngrid), wg(ngrid)
     real(dp), intent(out) :: u_final, u_max, u_min, t_end
     integer, intent(out) :: nslides, stat
@@ -257,14 +259,14 @@ subroutine sp_rock(kind, params, nrec, accel, dt, alpha, p, e, g, linearized, ha
                    t_overturn, theta_max, theta_min, t_end, n_steps, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_pulses, only: pulse_from_params
+    use seispulse_pulses, only: pulse_from_params, PULSE_NPARAM
     use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rock_pulse, rock_record
     use sp_runs_held, only: held_impacts
     implicit none
     !f2py intent(hide) :: nrec, ngrid
     integer, intent(in) :: kind, nrec, linearized, has_t_max, ngrid
-    real(dp), intent(in) :: params(9), accel(nrec), dt, alpha, p, e, g, t_max, theta0, omega0, &
-                            rtol, tg(ngrid)
+    real(dp), intent(in) :: params(PULSE_NPARAM), accel(nrec), dt, alpha, p, e, g, t_max, &
+                            theta0, omega0, rtol, tg(ngrid)
     real(dp), intent(out) :: thg(ngrid), omg(ngrid)
     real(dp), intent(out) :: t_uplift, t_overturn, theta_max, theta_min, t_end
     integer, intent(out) :: n_imp, outcome, n_steps, stat
@@ -320,12 +322,12 @@ end subroutine sp_rock
 subroutine sp_overturning_map(alpha, e, kind, params, linearized, nf, freq, na, amp, classes, &
                               stat, errmsg)
     use seispulse_kinds, only: dp
-    use seispulse_pulses, only: pulse_from_params
+    use seispulse_pulses, only: pulse_from_params, PULSE_NPARAM
     use seispulse_rocking_sim, only: overturning_map
     implicit none
     !f2py intent(hide) :: nf, na
     integer, intent(in) :: kind, linearized, nf, na
-    real(dp), intent(in) :: alpha, e, params(9), freq(nf), amp(na)
+    real(dp), intent(in) :: alpha, e, params(PULSE_NPARAM), freq(nf), amp(na)
     integer, intent(out) :: classes(na, nf)
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg

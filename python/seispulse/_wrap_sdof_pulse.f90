@@ -1,6 +1,6 @@
 !> Thin f2py layer of seispulse_sdof_closed (linear oscillator closed forms): plain external
 !> subroutines, explicit-shape arrays, int flags, `stat` + `errmsg` out, no numerics.
-!> Pulses arrive as (kind, params(9)) packed as in pulse_from_params.
+!> Pulses arrive as (kind, params(PULSE_NPARAM)) packed as in pulse_from_params.
 
 !> Harmonic base motion; law 1 sine, 2 cosine; transient 0/1.
 subroutine sp_harmonic_response(n, t, w0, period, ratio, damping, law, transient, z, v, a, &
@@ -52,12 +52,12 @@ end subroutine sp_impulse_response
 !> Response to a pulse at times t.
 subroutine sp_sdof_pulse_response(kind, params, period, damping, n, t, z, v, a, stat, errmsg)
     use seispulse_kinds, only: dp
-    use seispulse_pulses, only: pulse_from_params
+    use seispulse_pulses, only: pulse_from_params, PULSE_NPARAM
     use seispulse_sdof_closed, only: sdof_pulse_response
     implicit none
     !f2py intent(hide) :: n
     integer, intent(in) :: kind, n
-    real(dp), intent(in) :: params(9), period, damping, t(n)
+    real(dp), intent(in) :: params(PULSE_NPARAM), period, damping, t(n)
     real(dp), intent(out) :: z(n), v(n), a(n)
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg
@@ -69,11 +69,11 @@ end subroutine sp_sdof_pulse_response
 !> Peaks under a pulse: out = [z_max, t_z, v_max, t_v, a_max, t_a].
 subroutine sp_sdof_pulse_peaks(kind, params, period, damping, out, stat, errmsg)
     use seispulse_kinds, only: dp
-    use seispulse_pulses, only: pulse_from_params
+    use seispulse_pulses, only: pulse_from_params, PULSE_NPARAM
     use seispulse_sdof_closed, only: sdof_pulse_peaks
     implicit none
     integer, intent(in) :: kind
-    real(dp), intent(in) :: params(9), period, damping
+    real(dp), intent(in) :: params(PULSE_NPARAM), period, damping
     real(dp), intent(out) :: out(6)
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg
@@ -86,12 +86,12 @@ end subroutine sp_sdof_pulse_peaks
 subroutine sp_sdof_pulse_spectrum(kind, params, n, periods, damping, sd, sv, sa, tsd, tsv, tsa, &
                                   stat, errmsg)
     use seispulse_kinds, only: dp
-    use seispulse_pulses, only: pulse_from_params
+    use seispulse_pulses, only: pulse_from_params, PULSE_NPARAM
     use seispulse_sdof_closed, only: sdof_pulse_spectrum
     implicit none
     !f2py intent(hide) :: n
     integer, intent(in) :: kind, n
-    real(dp), intent(in) :: params(9), periods(n), damping
+    real(dp), intent(in) :: params(PULSE_NPARAM), periods(n), damping
     real(dp), intent(out) :: sd(n), sv(n), sa(n), tsd(n), tsv(n), tsa(n)
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg
@@ -103,10 +103,10 @@ end subroutine sp_sdof_pulse_spectrum
 !> Peak |a_g| of a pulse and its time.
 subroutine sp_pulse_peak_accel(kind, params, amax, tmax, stat, errmsg)
     use seispulse_kinds, only: dp
-    use seispulse_pulses, only: pulse_from_params, pulse_peak_accel
+    use seispulse_pulses, only: pulse_from_params, pulse_peak_accel, PULSE_NPARAM
     implicit none
     integer, intent(in) :: kind
-    real(dp), intent(in) :: params(9)
+    real(dp), intent(in) :: params(PULSE_NPARAM)
     real(dp), intent(out) :: amax, tmax
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg

@@ -39,10 +39,23 @@ def test_parameters_with_continuations_comments_and_conflicts(gen, tmp_path):
 def test_library_codes_reach_python():
     assert _fortran_codes.SEISPULSE_SUCCESS == 0
     assert errors.STATUS_ERRORS[_fortran_codes.SEISPULSE_IO] is errors.FileError
-    assert rocking.REGIONS[_fortran_codes.ROCK_S2] == "S2"
-    assert rocking.OUTCOMES[_fortran_codes.ROCK_RUN_TIME_LIMIT] == "time_limit"
-    assert sliding.MODES[_fortran_codes.SLIDING_MODE_REVERSE_ONLY] == "reverse_only"
-    assert records.FORMATS == ("auto", "at2", "slammer", "column", "time_accel")
+    # every name table against the Fortran constant names themselves: the code of
+    # SLIDING_MODE_STICK must index "stick", and so on for each entry
+    codes = vars(_fortran_codes)
+
+    def by_names(prefix, rename=None):
+        table = {v: n[len(prefix):].lower() for n, v in codes.items()
+                 if n.startswith(prefix) and not n[len(prefix):].startswith("RUN_")}
+        for old, new in (rename or {}).items():
+            table = {k: (new if v == old else v) for k, v in table.items()}
+        return tuple(table[k] for k in sorted(table))
+
+    assert rocking.REGIONS == tuple(n if n in ("no_rocking",) else n.upper() for n in
+                                    by_names("ROCK_", {"none": "no_rocking"}))
+    assert rocking.OUTCOMES == by_names("ROCK_RUN_", {"overturn_many": "overturn_many_impacts"})
+    assert sliding.MODES == by_names("SLIDING_MODE_")
+    assert sliding.REGIMES == by_names("SLIDING_REGIME_")
+    assert records.FORMATS == by_names("RECORD_")
 
 
 def test_loop_wrapper_from_its_description(gen):
