@@ -114,7 +114,8 @@ $(BUILDDIR)/build.ninja: $(STAMP)
 build: sysdeps $(BUILDDIR)/build.ninja
 	@log=$(BUILDDIR)/meson-logs/compile-output.txt; \
 	echo "meson compile -C $(BUILDDIR) (output: $$log)"; \
-	$(MESON) compile -C $(BUILDDIR) >$$log 2>&1 || { cat $$log; exit 1; }
+	$(MESON) compile -C $(BUILDDIR) >$$log 2>&1 || { cat $$log; exit 1; }; \
+	! grep -B4 -E '^Warning:|: warning:' $$log || echo "*** compiler warnings: see $$log"
 
 run: build
 	$(abspath $(DRIVER)) $(EXAMPLE)

@@ -43,6 +43,7 @@ PYTEST_LINE_RE = re.compile(
     r"^=*\s*((?:\d+ [a-z]+(?:, )?)+|no tests ran)(?: in [\d.]+s(?: \([\d:]+\))?)?\s*=*\s*$")
 PYTEST_ITEM_RE = re.compile(r"(\d+) ([a-z]+)")
 CHECK_LINE_RE = re.compile(r"^(ok|FAIL)\s+(\S+?)(?::\s*(.*))?$")
+WARNING_RE = re.compile(r"(^Warning:|: warning:)")
 ANSI_RE = re.compile(r"\x1b\[[0-9;]*[A-Za-z]")
 OK_RESULTS = {"OK", "EXPECTEDFAIL", "SKIP"}
 
@@ -87,9 +88,19 @@ def run_quiet(cmd, env, log):
     except OSError as exc:
         print(f"cannot run {cmd[0]}: {exc}", flush=True)
         return 127
+    text = log.read_text(encoding="utf-8", errors="replace")
     if rc != 0:
-        sys.stdout.write(log.read_text(encoding="utf-8", errors="replace"))
-        sys.stdout.flush()
+        sys.stdout.write(text)
+    else:
+        # a compiler warning stays visible even when the step succeeds (gfortran's
+        # "Warning:" comes after the line it is about, gcc's ": warning:" on it)
+        lines = text.splitlines()
+        shown = [i for i, line in enumerate(lines) if WARNING_RE.search(line)]
+        for i in shown:
+            sys.stdout.write("\n".join(lines[max(0, i - 4):i + 1]) + "\n")
+        if shown:
+            print(f"*** {len(shown)} compiler warning(s) in {log}")
+    sys.stdout.flush()
     return rc
 
 
