@@ -1,5 +1,5 @@
 !> Rocking integrator: block properties, free rocking (energy, Housner's period, the
-!> exact nonlinear period by quadrature), closed forms of rocking.md for the linearized
+!> exact nonlinear period by quadrature), closed forms of doc/rocking.md for the linearized
 !> model (rectangle 2.12/2.13/2.25/2.29/2.33, triangle 2.14, exponential 2.4/2.10 and the
 !> O3 critical time, Housner's wall 2.21), restitution and rest, nonlinear vs linearized
 !> as alpha -> 0, the two overturning modes of Zhang & Makris (2001), records against
@@ -265,7 +265,7 @@ contains
         call check(error, run%n_impacts >= 20, 'linearized: many periods checked')
     end subroutine test_free_rocking
 
-    !> Rectangular pulse of duration t_d, eta = alpha g/A, f = p t_d (rocking.md 4, 6, 7).
+    !> Rectangular pulse of duration t_d, eta = alpha g/A, f = p t_d (doc/rocking.md 2, 4, 6).
     subroutine test_rectangle_closed_form(error)
         type(test_error), allocatable, intent(out) :: error
         type(rocking_block_t) :: blk
@@ -332,7 +332,7 @@ contains
     end subroutine test_rectangle_closed_form
 
     !> Triangle (Eq. 2.14) and the exponential pulse beta = pi in the stable phase-wise
-    !> form of rocking.md 4.1 (Eqs. 2.4, 2.10), and the O3 critical time of section 5.4.
+    !> form of doc/rocking.md section 2 (Eqs. 2.4, 2.10), and the O3 critical time of its section 3.
     subroutine test_exponential_closed_form(error)
         type(test_error), allocatable, intent(out) :: error
         type(rocking_block_t) :: blk
@@ -427,7 +427,7 @@ contains
         aa = 0.5_dp * (psi1 - 1.0_dp + dpsi1 / f)
         bb = 0.5_dp * (psi1 - 1.0_dp - dpsi1 / f)
         tau_c = 1.0_dp + log(-bb / aa) / (2.0_dp * f)
-        ! rocking.md 5.4 oracle: beta = pi, f = 1, eta = 0.15 -> tau_c = 1.4103182142
+        ! doc/rocking.md section 3 oracle: beta = pi, f = 1, eta = 0.15 -> tau_c = 1.4103182142
         call check(error, tau_c, 1.4103182142_dp, atol=1.0e-9_dp, message='tau_c formula')
         if (allocated(error)) return
         pl = exponential_pulse(g0 * alpha / eta, td, beta, .false.)

@@ -300,7 +300,7 @@ def triangle_half(eta):
 
 def spike_velocity_ratio(eta):
     """V_m/V_g under the spike (beta -> +inf): 1 - eta (1 - ln eta), 0 < eta <= 1, the
-    lower bound over all shapes (section 3.6)."""
+    lower bound over all shapes (doc/sliding.md section 3)."""
     return _limit_form(4, eta, 1, upper_closed=True)[0]
 
 

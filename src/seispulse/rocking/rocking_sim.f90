@@ -2,17 +2,17 @@
 !> seispulse_pulses or a sampled accelerogram: uplift, impacts with restitution,
 !> overturning; and overturning maps over (frequency, amplitude) grids.
 !>
-!> Model (rocking.md 2-3; the forcing enters with +, so a_g > 0 drives theta > 0):
+!> Model (doc/rocking.md section 1; the forcing enters with +, so a_g > 0 drives theta > 0):
 !>     theta'' = -p^2 [sin(alpha s - theta) - (a_g/g) cos(alpha s - theta)]   Eqs. 2.5/2.6
 !>     theta'' =  p^2 [theta + a_g/g - alpha s]                  Eq. 2.7 (`linearized`)
 !> with s = +1 while the block pivots on one corner (theta > 0) and s = -1 on the other.
 !> From rest it uplifts when a_g > g tan(alpha) (s = +1) or a_g < -g tan(alpha) (s = -1);
 !> alpha instead of tan(alpha) in the linearized model (Eq. 2.3). At an impact
-!> (theta = 0, rocking.md 7) the rotation carries on about the other corner, s -> -s,
+!> (theta = 0, doc/rocking.md section 6) the rotation carries on about the other corner, s -> -s,
 !> and the angular velocity is multiplied by e (Housner: e = 1 - 1.5 sin^2(alpha) for a
 !> uniform rectangle, 1 - (2 m R^2/I_o) sin^2(alpha) for a symmetric body).
 !>
-!> Overturning, as defined here (rocking.md 5: theta = alpha is only the static limit).
+!> Overturning, as defined here (doc/rocking.md section 3: theta = alpha is only the static limit).
 !> - During the excitation the ground may still bring a block back from beyond
 !>   |theta| = alpha, so the block has overturned when |theta| reaches pi/2 (it lies on
 !>   its side); the same cap in the linearized model keeps every run finite.
@@ -26,7 +26,7 @@
 !>   overturns; otherwise (inward with D > 0) the next impact decides.
 !> - A run follows an overturning block to |theta| = pi/2: `t_end` is that time and
 !>   `t_overturn` the last outward crossing of |theta| = alpha (the critical time
-!>   tau_c of rocking.md 5.4). The class counts the impacts before overturning.
+!>   tau_c of doc/rocking.md section 3). The class counts the impacts before overturning.
 !> Rest. When after an impact the next flight would rise less than 1e-10 alpha (the
 !> forcing pushing the block back), the block is at rest: this ends a Zeno sequence of
 !> impacts (e < 1) in finite time, estimated as the impact time plus tau/(1 - e), tau the
@@ -87,7 +87,7 @@ module seispulse_rocking_sim
     integer, parameter :: ROCK_RUN_OVERTURN_MANY = 4        !! overturned after two or more impacts
     integer, parameter :: ROCK_RUN_TIME_LIMIT = 5           !! t_max or the step budget reached first
 
-    !> A rigid block rocking on a rigid base (no sliding, no jumping; rocking.md 2).
+    !> A rigid block rocking on a rigid base (no sliding, no jumping; doc/rocking.md section 1).
     type :: rocking_block_t
         real(dp) :: alpha = 0.2_dp        !! slenderness angle (rad), 0 < alpha < pi/2
         real(dp) :: p = 2.0_dp            !! frequency parameter (rad/s), p^2 = m g R / I_o
@@ -229,9 +229,9 @@ contains
         end if
     end subroutine rocking_block_validate
 
-    !> Uniform rectangular block of half-width b and half-height h (rocking.md 2):
+    !> Uniform rectangular block of half-width b and half-height h (doc/rocking.md section 1):
     !> R = sqrt(b^2 + h^2), alpha = atan(b/h), I_o = (4/3) m R^2 so p = sqrt(3 g/(4 R)),
-    !> and Housner's restitution e = max(0, 1 - 1.5 sin^2(alpha)) (rocking.md 7; 0 for
+    !> and Housner's restitution e = max(0, 1 - 1.5 sin^2(alpha)) (doc/rocking.md section 6; 0 for
     !> squat blocks, b/h > sqrt 2; change blk%e afterwards for another value).
     subroutine rectangular_block(b, h, g, blk, stat, errmsg)
         real(dp), intent(in) :: b                             !! half-width (m), > 0
@@ -257,11 +257,11 @@ contains
         call symmetric_block(hypot(b, h), atan2(b, h), 4.0_dp / 3.0_dp, g, blk, stat, errmsg)
     end subroutine rectangular_block
 
-    !> Block symmetric about the vertical through its centre of mass (rocking.md 2):
+    !> Block symmetric about the vertical through its centre of mass (doc/rocking.md section 1):
     !> R from the pivot corner to the centre of mass, slenderness alpha, and
     !> I_o = io_over_mr2 m R^2 about the corner (>= m R^2; 4/3 for a uniform rectangle).
     !> p = sqrt(g/(io_over_mr2 R)) and Housner's e = 1 - (2/io_over_mr2) sin^2(alpha)
-    !> (angular momentum about the new corner, rocking.md 7), set to 0 where the formula
+    !> (angular momentum about the new corner, doc/rocking.md section 6), set to 0 where the formula
     !> is negative (squat bodies: the impact then stops the rocking).
     subroutine symmetric_block(r, alpha, io_over_mr2, g, blk, stat, errmsg)
         real(dp), intent(in) :: r                             !! pivot to centre of mass (m), > 0
@@ -352,7 +352,7 @@ contains
         type(rocking_block_t), intent(in) :: blk              !! the block
         real(dp), intent(in) :: accel(:)                      !! ground acceleration (g), finite
         real(dp), intent(in) :: dt                            !! sampling interval (s), > 0
-        real(dp), intent(in) :: g                             !! gravity (m/s^2), > 0
+        real(dp), intent(in) :: g                             !! the unit g of accel (m/s^2), > 0
         type(rocking_run_t), intent(out) :: run               !! the result
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
@@ -838,7 +838,7 @@ contains
         call finish(st, run, ROCK_RUN_TIME_LIMIT)
     end subroutine run_segment
 
-    !> At rest on a monotone piece: find the uplift (rocking.md 2, Eq. 2.3), a root of
+    !> At rest on a monotone piece: find the uplift (doc/rocking.md section 1, Eq. 2.3), a root of
     !> a_g -+ threshold (Brent), or move to t_stop.
     subroutine rest_scan(st, run, t_stop)
         type(rocking_state_t), intent(inout) :: st
@@ -1080,7 +1080,7 @@ contains
                 why = R_CAP
                 return
             end if
-            ! impact (rocking.md 7): onto the other corner, theta' times e
+            ! impact (doc/rocking.md section 6): onto the other corner, theta' times e
             st%n_imp = st%n_imp + 1
             if (sim%track) call push_impact(st, t)
             st%s = -st%s
@@ -1254,8 +1254,8 @@ contains
         end if
     end subroutine finish
 
-    !> Outcome known once the excitation is over (module notes; rocking.md 5): the energy
-    !> above the barrier, D, is kept by every flight and lowered by every impact.
+    !> Outcome known once the excitation is over (module notes; doc/rocking.md (R.7), (R.8)): the
+    !> energy above the barrier, D, is kept by every flight and lowered by every impact.
     pure function decide(sim, y, s) result(dec)
         type(sim_t), intent(in) :: sim
         real(dp), intent(in) :: y(2)

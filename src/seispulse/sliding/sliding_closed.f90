@@ -65,7 +65,7 @@ module seispulse_sliding_closed
     type :: half_cycle_t
         real(dp) :: tau_y = 0.0_dp         !! onset t_y/t_d (NaN without sliding)
         real(dp) :: tau_m = 0.0_dp         !! stop = time of the peak slip t_m/t_d (NaN without)
-        integer :: regime = SLIDING_REGIME_NONE    !! REGIME_*
+        integer :: regime = SLIDING_REGIME_NONE    !! SLIDING_REGIME_*
         real(dp) :: um = 0.0_dp            !! peak (= residual) slip u_m/(A_g t_d^2)
         real(dp) :: dugm = 0.0_dp          !! ground displacement during the slide / (A_g t_d^2)
         real(dp) :: vm = 0.0_dp            !! peak sliding velocity V_m/V_g
@@ -73,7 +73,7 @@ module seispulse_sliding_closed
 
     !> Full-cycle response (sections 4, 5, 7), dimensionless; times from the pulse start.
     type :: full_cycle_t
-        integer :: mode = SLIDING_MODE_NO_SLIDING  !! MODE_*
+        integer :: mode = SLIDING_MODE_NO_SLIDING  !! SLIDING_MODE_*
         real(dp) :: tau_y1 = 0.0_dp        !! forward onset (NaN without a forward slide)
         real(dp) :: tau_m1 = 0.0_dp        !! forward stop = time of the peak slip
         real(dp) :: um1 = 0.0_dp           !! forward (peak) slip / (A_g t_d^2), >= 0
@@ -87,7 +87,7 @@ module seispulse_sliding_closed
 
     !> A block on an incline hit by a pulse, in SI (section 7): along-plane slips.
     type :: sliding_block_t
-        integer :: mode = SLIDING_MODE_NO_SLIDING  !! SLIDING_MODE_* (half cycle: no sliding or unilateral)
+        integer :: mode = SLIDING_MODE_NO_SLIDING  !! SLIDING_MODE_* (no sliding or unilateral)
         real(dp) :: eta1 = 0.0_dp          !! resistance to downhill sliding / A_g
         real(dp) :: eta2 = 0.0_dp          !! resistance to uphill sliding / A_g
         real(dp) :: t_y1 = 0.0_dp          !! downhill onset (s from the pulse start)
@@ -774,7 +774,7 @@ contains
 
     !> 'none', 'forced' or 'free'.
     pure function sliding_regime_name(regime) result(name)
-        integer, intent(in) :: regime  !! REGIME_*
+        integer, intent(in) :: regime  !! SLIDING_REGIME_*
         character(len=:), allocatable :: name
         if (regime >= 0 .and. regime <= 2) then
             name = trim(regime_names(regime))
@@ -785,7 +785,7 @@ contains
 
     !> 'no_sliding', 'unilateral', 'stick', 'slip', 'stuck' or 'reverse_only'.
     pure function sliding_mode_name(mode) result(name)
-        integer, intent(in) :: mode  !! MODE_*
+        integer, intent(in) :: mode  !! SLIDING_MODE_*
         character(len=:), allocatable :: name
         if (mode >= 0 .and. mode <= 5) then
             name = trim(mode_names(mode))

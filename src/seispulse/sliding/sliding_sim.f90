@@ -35,8 +35,7 @@
 !> (any times: u = 0 before the first onset, u = u_final and u' = 0 after `t_end`);
 !> values come from the same closed forms as the events, not from interpolation.
 module seispulse_sliding_sim
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
-                                             ieee_positive_inf
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
     use seispulse_kinds, only: dp
     use seispulse_checks, only: positive, finite_at_least, check_output_grid
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
@@ -46,8 +45,8 @@ module seispulse_sliding_sim
     use seispulse_pulses, only: pulse_t, pulse_validate, pulse_at, exp_consts_t, exp_consts, &
                                 PULSE_EXPONENTIAL
     use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_step_check, &
-                                record_in_si, g_product_max, pulse_pieces_init, record_pieces_init, next_piece, &
-                                exceeds, onset_on_piece
+                                record_in_si, g_product_max, pulse_pieces_init, &
+                                record_pieces_init, next_piece, exceeds, onset_on_piece
     implicit none
     private
 
@@ -189,7 +188,7 @@ contains
         real(dp), intent(in) :: accel(:)                      !! ground acceleration (g), finite
         real(dp), intent(in) :: dt                            !! time step (s), > 0
         type(friction_t), intent(in) :: fr                    !! friction of the block (g)
-        real(dp), intent(in) :: g                             !! gravity (m/s^2), > 0
+        real(dp), intent(in) :: g                             !! unit g of accel, ay (m/s^2), > 0
         type(stickslip_result_t), intent(out) :: res          !! slides (u in m, u' in m/s)
                                                               !! and summary
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
