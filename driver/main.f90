@@ -3,8 +3,9 @@
 !> Reads &run (analysis, output) and the groups of that analysis, echoes the
 !> effective input, writes the tables and says where they went. Any problem is one
 !> line on stderr naming file, line, group, key and problem, and exit status 2.
-!> Analyses 'newmark' and 'sdof' go on past a record that cannot be read: its rows
-!> fail, the tables are written with all rows, and the exit status is 1.
+!> Analyses 'newmark', 'sdof' and 'cylinder' (a history on records) go on past a record
+!> that cannot be read: its rows fail, the tables are written with all rows, and the exit
+!> status is 1.
 program seispulse_driver
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     use, intrinsic :: iso_c_binding, only: c_int
@@ -18,6 +19,7 @@ program seispulse_driver
     use driver_sdof_beta, only: run_sdof_beta, sdof_beta_groups
     use driver_sdof_shock, only: run_sdof_shock, sdof_shock_groups
     use driver_walls, only: run_walls, walls_groups
+    use driver_cylinder, only: run_cylinder, cylinder_groups
     use driver_run_group, only: run_analysis, run_output, read_run, run_keys, write_run
     implicit none
 
@@ -33,12 +35,13 @@ program seispulse_driver
     !> error (nothing written).
     integer, parameter :: EXIT_OK = 0, EXIT_ROWS_FAILED = 1, EXIT_INPUT_ERROR = 2
 
-    character(len=10), parameter :: analyses(8) = [character(len=10) :: 'pulse', 'sliding', &
-        'rocking', 'newmark', 'sdof', 'sdof_beta', 'sdof_shock', 'walls']
+    character(len=10), parameter :: analyses(9) = [character(len=10) :: 'pulse', 'sliding', &
+        'rocking', 'newmark', 'sdof', 'sdof_beta', 'sdof_shock', 'walls', 'cylinder']
     !> Every group of any analysis (besides run), for the first check.
-    character(len=12), parameter :: all_groups(16) = [character(len=12) :: 'pulse', 'time', &
+    character(len=12), parameter :: all_groups(18) = [character(len=12) :: 'pulse', 'time', &
         'block', 'method', 'history', 'rocking', 'map', 'records', 'newmark', 'sdof', &
-        'sdof_history', 'sdof_beta', 'sdof_shock', 'wall', 'backfill', 'seismic']
+        'sdof_history', 'sdof_beta', 'sdof_shock', 'wall', 'backfill', 'seismic', 'body', &
+        'cylinder']
 
     character(len=:), allocatable :: path, errmsg
     character(len=4096) :: arg
@@ -104,6 +107,11 @@ program seispulse_driver
     case ('walls')
         call start(walls_groups)
         call run_walls(path, groups, run_output(), stat, errmsg)
+    case ('cylinder')
+        call start(cylinder_groups)
+        call run_cylinder(path, groups, run_output(), stat, errmsg)
+        ! the tables are written; some records failed (each already reported)
+        if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
     case ('')
         call fail(located(path, groups(irun))//'analysis: missing (allowed: '//join(analyses)//')')
     case default

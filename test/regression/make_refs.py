@@ -511,6 +511,240 @@ def make_rocking_ref(nml_path, nml):
 
 
 # ---------------------------------------------------------------------------
+# Analysis 'cylinder': a rigid body of revolution or a block on a rigid base, written
+# from doc/cylinder.md and the mechanics of a rigid body (never from the driver)
+# ---------------------------------------------------------------------------
+
+CYLINDER_PROPS_LABELS = ("shape (-)", "r (m)", "r_inner (m)", "h (m)", "mass (kg)",
+                         "g (m/s2)", "theta_c (rad)", "theta_c (deg)", "h/r (-)", "R (m)",
+                         "J_o (kg m2)", "J_G (kg m2)", "J_axis (kg m2)", "J_o/(m R2) (-)",
+                         "p (rad/s)", "e (-)", "W (N)", "M_max (N m)", "F_uplift (N)",
+                         "tan(theta_c) (g)")
+CYLINDER_PROPS_HEADER = "quantity (in name),body (as named),equivalent (as named)"
+CYLINDER_PUSHOVER_HEADER = ("theta (rad),theta_ratio (-),force (N),moment (N m),"
+                            "m_ratio (-),stable (-)")
+CYLINDER_HISTORY_HEADER = "t (s),a_g (m/s2),theta (rad),omega (rad/s)"
+SHAPES = {"solid": 1, "hollow": 2, "custom": 3, "block": 4}
+
+
+def rigid_body(shape, r, h, m, g, r_inner=None, j_o=None, j_axis=None):
+    """Properties of a body on a rigid base, from the parallel-axis theorem: J_G of a
+    solid cylinder about a transverse diameter m (3 r^2 + 4 h^2)/12 (h: half-height),
+    hollow m (3 (r^2 + r_i^2) + 4 h^2)/12, uniform block (half-width b = r) m (b^2 + h^2)/3;
+    J_o = J_G + m R^2 with R = sqrt(r^2 + h^2); p = sqrt(m g R/J_o); Housner's
+    e = max(0, 1 - (2 m R^2/J_o) sin^2 theta_c) (doc/cylinder.md)."""
+    nan = mp.nan
+    big_r2 = r**2 + h**2
+    ri = mpf(0)
+    if shape == "solid":
+        j_g, j_ax = m * (3 * r**2 + 4 * h**2) / 12, m * r**2 / 2
+    elif shape == "hollow":
+        ri = r_inner
+        j_g, j_ax = m * (3 * (r**2 + ri**2) + 4 * h**2) / 12, m * (r**2 + ri**2) / 2
+    elif shape == "custom":
+        j_g, j_ax = j_o - m * big_r2, (j_axis if j_axis is not None else nan)
+    else:
+        j_g, j_ax = m * big_r2 / 3, nan
+    jo = j_g + m * big_r2
+    big_r = mp.sqrt(big_r2)
+    tc = mp.atan(r / h)
+    p = mp.sqrt(m * g * big_r / jo)
+    e = max(mpf(0), 1 - 2 * m * big_r2 / jo * mp.sin(tc)**2)
+    w = m * g
+    return dict(shape=SHAPES[shape], r=r, r_inner=ri, h=h, mass=m, g=g, theta_c=tc,
+                theta_c_deg=tc * 180 / mp.pi, h_over_r=h / r, R=big_r, J_o=jo, J_G=j_g,
+                J_axis=j_ax, j=jo / (m * big_r2), p=p, e=e, W=w, M_max=w * r,
+                F_uplift=w * r / h, tan_c=mp.tan(tc))
+
+
+def props_values(bd):
+    keys = ("shape", "r", "r_inner", "h", "mass", "g", "theta_c", "theta_c_deg", "h_over_r",
+            "R", "J_o", "J_G", "J_axis", "j", "p", "e", "W", "M_max", "F_uplift", "tan_c")
+    return [bd[k] for k in keys]
+
+
+def cylinder_body(b):
+    """The body of &body (SI, mpf)."""
+    shape = str(b.get("shape", "solid")).lower()
+    g = mpf(b.get("g", 9.80665))
+    m = mpf(b.get("mass", 1.0))
+    h = mpf(b["h"])
+    if shape == "block":
+        return rigid_body("block", mpf(b["b"]), h, m, g)
+    kw = {}
+    if shape == "hollow":
+        kw["r_inner"] = mpf(b["r_inner"])
+    if shape == "custom":
+        kw["j_o"] = mpf(b["j_o"])
+        if "j_axis" in b:
+            kw["j_axis"] = mpf(b["j_axis"])
+    return rigid_body(shape, mpf(b["r"]), h, m, g, **kw)
+
+
+def equivalent_of(bd, angle=None):
+    """The equivalent body: the same p and the same static M_max = m g r (doc/cylinder.md).
+    Of a cylinder, the uniform block with slenderness alpha (default theta_c): p^2 =
+    3 g/(4 R_b) gives R_b, then b = R_b sin(alpha), h = R_b cos(alpha), m_b = m r/b. Of a
+    block, the solid cylinder with slenderness theta_c (default alpha): J_o/(m R^2) =
+    (5/4) sin^2 + (4/3) cos^2 = j, R = g/(p^2 j), r = R sin, h = R cos, m_c = m b/r."""
+    g, p = bd["g"], bd["p"]
+    a = bd["theta_c"] if angle is None else mpf(angle)
+    if bd["shape"] == 4:
+        j = mpf(5) / 4 * mp.sin(a)**2 + mpf(4) / 3 * mp.cos(a)**2
+        big_r = g / (p**2 * j)
+        r = big_r * mp.sin(a)
+        return rigid_body("solid", r, big_r * mp.cos(a), bd["mass"] * bd["r"] / r, g)
+    big_r = 3 * g / (4 * p**2)
+    b = big_r * mp.sin(a)
+    return rigid_body("block", b, big_r * mp.cos(a), bd["mass"] * bd["r"] / b, g)
+
+
+def cylinder_axis(group, lname, stem, count_default):
+    """The values of a list key or of a range (the driver's doubles, the last one exact)."""
+    if lname in group:
+        return [mpf(x) for x in _as_list(group[lname])]
+    lo, hi = (float(x) for x in group[f"{stem}_range"])
+    n = int(group.get(f"{stem}_count", count_default))
+    return [mpf(lo + (hi - lo) * ((k - 1) / (n - 1))) for k in range(1, n)] + [mpf(hi)]
+
+
+def cylinder_pushover_rows(bd, c):
+    """F = W tan(theta_c - theta) at the centre of mass, M = W (r cos theta - h sin theta)
+    about the pivot, M/(m g r), stable = theta <= theta_c (doc/cylinder.md)."""
+    if "theta" in c or "theta_range" in c:
+        th = cylinder_axis(c, "theta", "theta", 21)
+        us = [t / bd["theta_c"] for t in th]
+    else:
+        if "theta_ratio" in c or "theta_ratio_range" in c:
+            us = cylinder_axis(c, "theta_ratio", "theta_ratio", 21)
+        else:
+            us = [mpf(float(i / 20)) for i in range(21)]
+        # the driver's theta: the double u times the double theta_c (stable: u <= 1)
+        th = [mpf(float(u) * float(bd["theta_c"])) for u in us]
+    rows = []
+    for t, u in zip(th, us):
+        w, r, h = bd["W"], bd["r"], bd["h"]
+        force = w * mp.tan(bd["theta_c"] - t)
+        moment = w * (r * mp.cos(t) - h * mp.sin(t))
+        rows.append([t, u, force, moment, moment / (bd["mass"] * bd["g"] * r),
+                     mpf(1 if u <= 1 else 0)])
+    return rows
+
+
+def cylinder_history_rows(nml, bd):
+    """The linearized rocking of the body under a rectangular half-cycle pulse, e = 0:
+    the block's closed forms of doc/rocking.md with alpha = theta_c and the body's p."""
+    body = nml["body"]
+    if str(body.get("model", "nonlinear")).lower() != "linearized" or float(body["e"]) != 0:
+        raise ValueError("cylinder history references: model = 'linearized', e = 0 only")
+    amp, amp_g, td, g = rectangle_pulse(nml["pulse"])
+    alpha, p = bd["theta_c"], bd["p"]
+    f, eta = p * td, alpha / amp_g
+    r = rect_summary(f, eta, mp.pi / 2 / alpha)
+    if r["region"] != 5:
+        raise ValueError("cylinder history references: a stable body (S2)")
+    func, _ = pulse_function(nml["pulse"])
+    rows = []
+    for t in time_grid(nml["cylinder"]):
+        tau = mpf(t) / td
+        if abs(tau - r["tau_i"]) < mpf(10)**-6 or abs(tau - 1) < mpf(10)**-6:
+            raise ValueError(f"t = {t}: too close to the impact or the end of the pulse")
+        psi, dpsi = rect_psi(tau, f, eta) if tau < r["tau_i"] else (mpf(0), mpf(0))
+        rows.append([mpf(t), func(t)[0], psi * alpha, dpsi * alpha * p])
+    return rows
+
+
+def map_class(alpha, fr, a):
+    """Class of a linearized rectangular-pulse cell (see rocking_map_rows)."""
+    if a == 0:
+        return 0
+    f = 2 * mp.pi / fr
+    eta = alpha / (a * mp.tan(alpha))
+    wall = 1 - mp.exp(-f)
+    if abs(eta - wall) < mpf(10)**-6 * wall or abs(eta - 1) < mpf(10)**-6:
+        raise ValueError(f"cell ({fr}, {a}) is too close to a boundary")
+    return 1 if eta < wall else 0
+
+
+def cylinder_map_rows(nml, bd):
+    """Overturning map of the rectangular family, linearized model, on either axis
+    system: freq_ratio = 2 pi f_p/p, amp_ratio = PGA/tan(theta_c); with compare_block the
+    equivalent block (same p; its own slenderness) on the same cells and the difference
+    code (0 same, 1 only the body, 2 only the block, 3 both by other classes)."""
+    m = nml["map"]
+    if str(nml["body"].get("model", "nonlinear")).lower() != "linearized":
+        raise ValueError("cylinder map references: model = 'linearized' only")
+    kind = m.get("kind", "sine_cycle").lower()
+    if kind not in ("rectangular", "rect"):
+        raise ValueError("cylinder map references: the rectangular family only")
+    dimensional = str(m.get("axes", "dimensionless")).lower() == "dimensional"
+    compare = bool(m.get("compare_block", False))
+    eq = equivalent_of(bd, nml["body"].get("equivalent_angle")) if compare else None
+    if dimensional:
+        xs, ys = cylinder_axis(m, "freq_hz", "freq_hz", 21), cylinder_axis(m, "pga", "pga", 21)
+    else:
+        xs = cylinder_axis(m, "freq_ratio", "freq", 21)
+        ys = cylinder_axis(m, "amp_ratio", "amp", 21)
+    rows = []
+    for y in ys:
+        for x in xs:
+            if dimensional:
+                fr, ar = 2 * mp.pi * x / bd["p"], y / bd["tan_c"]
+                row = [x, y, fr, ar]
+            else:
+                fr, ar = x, y
+                row = [x, y, x * bd["p"] / (2 * mp.pi), y * bd["tan_c"]]
+            cls = map_class(bd["theta_c"], fr, ar)
+            row.append(mpf(cls))
+            if compare:
+                if dimensional:
+                    frb, arb = 2 * mp.pi * x / eq["p"], y / eq["tan_c"]
+                else:
+                    frb, arb = fr, ar
+                clb = map_class(eq["theta_c"], frb, arb)
+                if cls == clb:
+                    diff = 0
+                elif clb == 0:
+                    diff = 1
+                elif cls == 0:
+                    diff = 2
+                else:
+                    diff = 3
+                row += [mpf(clb), mpf(diff)]
+            rows.append(row)
+    header = (("freq_hz (Hz),pga (g),freq_ratio (-),amp_ratio (-)" if dimensional else
+               "freq_ratio (-),amp_ratio (-),freq_hz (Hz),pga (g)") + ",class (-)"
+              + (",class_block (-),diff (-)" if compare else ""))
+    return header, rows
+
+
+def make_cylinder_ref(nml_path, nml):
+    c = nml.get("cylinder", {})
+    what = str(c.get("what", "props")).lower()
+    with mp.workdps(40):
+        bd = cylinder_body(nml["body"])
+        if what == "props":
+            eq = equivalent_of(bd, nml["body"].get("equivalent_angle"))
+            lines = [CYLINDER_PROPS_HEADER] + [
+                f'"{label}",' + ",".join(repr(float(x)) for x in (u, v))
+                for label, u, v in zip(CYLINDER_PROPS_LABELS, props_values(bd),
+                                       props_values(eq))]
+        else:
+            if what == "pushover":
+                header, rows = CYLINDER_PUSHOVER_HEADER, cylinder_pushover_rows(bd, c)
+            elif what == "history":
+                header, rows = CYLINDER_HISTORY_HEADER, cylinder_history_rows(nml, bd)
+            elif what == "map":
+                header, rows = cylinder_map_rows(nml, bd)
+            else:
+                raise ValueError(f"cylinder references: no reference for what = {what!r}")
+            lines = [header] + [",".join(repr(float(x)) for x in row) for row in rows]
+    out = Path(nml_path).with_suffix(".ref")
+    out.write_text("\n".join(lines) + "\n")
+    print(f"wrote {out} ({len(lines) - 1} rows)")
+
+
+# ---------------------------------------------------------------------------
 # Analysis 'newmark': rigid-block sliding on record files, event by event in mpmath
 # ---------------------------------------------------------------------------
 
@@ -1223,6 +1457,9 @@ def make_ref(nml_path):
         return
     if analysis == "walls":
         make_walls_ref(nml_path, nml)
+        return
+    if analysis == "cylinder":
+        make_cylinder_ref(nml_path, nml)
         return
     func, g = pulse_function(nml["pulse"])
     lines = [HEADER]

@@ -1,0 +1,1352 @@
+!> Analysis 'cylinder': a rigid body of revolution (solid or hollow circular cylinder, or
+!> a body with a given J_o) or a uniform block on a rigid base, statically pushed over or
+!> rocking in a vertical plane (doc/cylinder.md; [AD11], [SK84], [H63]).
+!>
+!> Groups: &body (the body, its restitution and model), &cylinder (what to compute, run
+!> limits, the pushover grid, the history grid), &pulse (driver_pulse_group) or &records
+!> (driver_records) for a history, &map (the pulse family and the grids of an
+!> overturning map). Five modes (`what`):
+!>   * 'props': <output>_cylinder_props, the body and its equivalent body;
+!>   * 'pushover': <output>_cylinder_pushover, F, M, M/(m g r) against theta;
+!>   * 'history': <output>_cylinder (summary) and <output>_cylinder_history, planar
+!>     rocking under one pulse or each record;
+!>   * 'map': <output>_cylinder_map, an overturning map on either axis system, with the
+!>     equivalent block's map and the difference map on request.
+!> The numbers come from seispulse_cylinder (properties, pushover, maps) and
+!> seispulse_rocking_sim (the integrator); the driver only reads, checks, converts units
+!> and writes. Every table is computed before the first is written.
+module driver_cylinder
+    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan, &
+                                             ieee_positive_inf
+    use seispulse, only: dp, pi, pulse_t, pulse_validate, pulse_eval, pulse_kind_name, &
+                         pulse_kind_from_name, SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, &
+                         PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP, real_str, int_str, &
+                         rocking_block_t, rocking_run_t, rock_pulse, rock_record, &
+                         ROCK_RUN_TIME_LIMIT, positive, in_closed, in_open, finite_at_least, &
+                         rocking_body_t, cylinder_props, block_props, body_rocking_block, &
+                         equivalent_cylinder, equivalent_block, rigid_pushover, &
+                         normalized_pushover, body_overturning_map, map_difference, &
+                         BODY_SOLID_CYLINDER, BODY_HOLLOW_CYLINDER, BODY_CUSTOM, BODY_BLOCK, &
+                         MAP_AXES_DIMENSIONLESS, MAP_AXES_DIMENSIONAL
+    use driver_namelist_scan, only: nml_group, lower
+    use driver_input, only: find_group, located, join, read_optional, given, list_item, &
+                            ROWS_FAILED
+    use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
+                                  write_pulse_group, pulse_end, check_time_grid, time_grid
+    use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
+                              read_records, check_records, echo_records, load_record, &
+                              records_missing, record_line, failed_records
+    use driver_tables, only: write_tables, say_written, code_legend, delete_files
+    use driver_axis, only: axis_values
+    implicit none
+    private
+
+    public :: run_cylinder, cylinder_groups
+
+    !> Groups this analysis reads (besides &run).
+    character(len=8), parameter :: cylinder_groups(5) = [character(len=8) :: 'body', &
+        'cylinder', 'pulse', 'records', 'map']
+
+    character(len=16), parameter :: body_keys(12) = [character(len=16) :: 'shape', 'r', &
+        'b', 'r_inner', 'h', 'mass', 'j_o', 'j_axis', 'g', 'e', 'model', 'equivalent_angle']
+    character(len=17), parameter :: cylinder_keys(12) = [character(len=17) :: 'what', &
+        't_max', 'rtol', 't_end', 'npts', 'dt', 'theta', 'theta_range', 'theta_count', &
+        'theta_ratio', 'theta_ratio_range', 'theta_ratio_count']
+    character(len=13), parameter :: map_keys(19) = [character(len=13) :: 'axes', 'kind', &
+        'beta', 'full', 'peak_frac', 't0_periods', 'freq_ratio', 'freq_range', 'freq_count', &
+        'amp_ratio', 'amp_range', 'amp_count', 'freq_hz', 'freq_hz_range', 'freq_hz_count', &
+        'pga', 'pga_range', 'pga_count', 'compare_block']
+    character(len=8), parameter :: what_names(4) = [character(len=8) :: 'props', &
+        'pushover', 'history', 'map']
+    !> In the order of the BODY_* codes.
+    character(len=6), parameter :: shape_names(4) = [character(len=6) :: 'solid', 'hollow', &
+        'custom', 'block']
+    character(len=10), parameter :: model_names(2) = [character(len=10) :: 'nonlinear', &
+        'linearized']
+    !> In the order of the MAP_AXES_* codes.
+    character(len=13), parameter :: axes_names(2) = [character(len=13) :: 'dimensionless', &
+        'dimensional']
+    character(len=24), parameter :: outcome_names(0:5) = [character(len=24) :: 'rest', &
+        'no_uplift', 'overturn_no_impact', 'overturn_one_impact', 'overturn_many_impacts', &
+        'time_limit']
+    character(len=16), parameter :: diff_names(0:3) = [character(len=16) :: 'same', &
+        'only_cylinder', 'only_block', 'other_mode']
+
+    !> Most values of a list (pushover grid, map axes).
+    integer, parameter :: max_list = 1000
+    !> A map prints progress once it has run this long (s), then at most every
+    !> `progress_every` seconds.
+    real(dp), parameter :: progress_after = 2.0_dp, progress_every = 3.0_dp
+    !> Points of the default pushover grid (theta/theta_c = 0 .. 1).
+    integer, parameter :: pushover_default_count = 21
+
+    ! namelist variables (defaults are set in set_defaults)
+    character(len=32) :: shape, model
+    real(dp) :: r, b, r_inner, h, mass, j_o, j_axis, g, e, equivalent_angle
+    character(len=32) :: what
+    real(dp) :: t_max, rtol, t_end, dt
+    integer :: npts
+    real(dp) :: theta(max_list), theta_range(2), theta_ratio(max_list), theta_ratio_range(2)
+    integer :: theta_count, theta_ratio_count
+    character(len=32) :: axes, kind
+    real(dp) :: beta, peak_frac, t0_periods
+    logical :: full, compare_block
+    real(dp) :: freq_ratio(max_list), freq_range(2), amp_ratio(max_list), amp_range(2)
+    real(dp) :: freq_hz(max_list), freq_hz_range(2), pga(max_list), pga_range(2)
+    integer :: freq_count, amp_count, freq_hz_count, pga_count
+    namelist /body/ shape, r, b, r_inner, h, mass, j_o, j_axis, g, e, model, equivalent_angle
+    namelist /cylinder/ what, t_max, rtol, t_end, npts, dt, theta, theta_range, theta_count, &
+        theta_ratio, theta_ratio_range, theta_ratio_count
+    namelist /map/ axes, kind, beta, full, peak_frac, t0_periods, freq_ratio, freq_range, &
+        freq_count, amp_ratio, amp_range, amp_count, freq_hz, freq_hz_range, freq_hz_count, &
+        pga, pga_range, pga_count, compare_block
+
+    !> The checked input of a run.
+    type :: setup_t
+        character(len=:), allocatable :: task     !! 'props', 'pushover', 'history', 'map'
+        type(rocking_body_t) :: body              !! the body (SI)
+        type(rocking_block_t) :: blk              !! its planar rocking model
+        real(dp) :: e_run = 0.0_dp                !! restitution of the runs (given or Housner)
+        logical :: e_given = .false.              !! e given in &body
+        logical :: linearized = .false.           !! model = 'linearized'
+        logical :: use_records = .false.          !! a history on &records
+        type(pulse_input_t) :: pin                !! the pulse of a history
+        type(record_in_t), allocatable :: recs(:) !! the records of a history
+        logical :: slammer_rounding = .false.
+        type(nml_group) :: gb, gc, gm, gr         !! &body, &cylinder, &map, &records
+    end type setup_t
+
+contains
+
+    subroutine set_defaults()
+        real(dp) :: nan
+        nan = ieee_value(nan, ieee_quiet_nan)
+        shape = 'solid'
+        r = nan
+        b = nan
+        r_inner = nan
+        h = nan
+        mass = nan        ! NaN: required by 'props' and 'pushover', else 1 kg (not used)
+        j_o = nan
+        j_axis = nan
+        g = 9.80665_dp
+        e = nan           ! NaN: Housner's value from the geometry
+        model = 'nonlinear'
+        equivalent_angle = nan   ! NaN: the body's own slenderness
+        what = 'props'
+        t_max = ieee_value(t_max, ieee_positive_inf)
+        rtol = 1.0e-12_dp
+        t_end = nan       ! NaN: 1.25 x the end of the motion, at least the excitation's
+        npts = 0          ! neither dt nor npts: 1001 points
+        dt = 0.0_dp
+        theta = nan
+        theta_range = nan
+        theta_count = pushover_default_count
+        theta_ratio = nan
+        theta_ratio_range = nan
+        theta_ratio_count = pushover_default_count
+        axes = 'dimensionless'
+        kind = 'sine_cycle'
+        beta = 0.0_dp
+        full = .false.
+        peak_frac = 0.5_dp
+        t0_periods = 1.5_dp
+        compare_block = .false.
+        freq_ratio = nan
+        freq_range = nan
+        freq_count = 21
+        amp_ratio = nan
+        amp_range = nan
+        amp_count = 21
+        freq_hz = nan
+        freq_hz_range = nan
+        freq_hz_count = 21
+        pga = nan
+        pga_range = nan
+        pga_count = 21
+    end subroutine set_defaults
+
+    subroutine read_body(unit, text, ios, iomsg)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: text
+        integer, intent(out) :: ios
+        character(len=*), intent(inout) :: iomsg
+        if (len(text) > 0) then
+            read(text, nml=body, iostat=ios, iomsg=iomsg)
+        else
+            read(unit, nml=body, iostat=ios, iomsg=iomsg)
+        end if
+    end subroutine read_body
+
+    subroutine read_cylinder(unit, text, ios, iomsg)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: text
+        integer, intent(out) :: ios
+        character(len=*), intent(inout) :: iomsg
+        if (len(text) > 0) then
+            read(text, nml=cylinder, iostat=ios, iomsg=iomsg)
+        else
+            read(unit, nml=cylinder, iostat=ios, iomsg=iomsg)
+        end if
+    end subroutine read_cylinder
+
+    subroutine read_map(unit, text, ios, iomsg)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: text
+        integer, intent(out) :: ios
+        character(len=*), intent(inout) :: iomsg
+        if (len(text) > 0) then
+            read(text, nml=map, iostat=ios, iomsg=iomsg)
+        else
+            read(unit, nml=map, iostat=ios, iomsg=iomsg)
+        end if
+    end subroutine read_map
+
+    !> Read the groups, compute, write the tables; print where they went. stat: 0,
+    !> ROWS_FAILED (a history on records: the tables are written, some records failed;
+    !> errmsg says which), or > 0 for an input or output error (nothing written).
+    subroutine run_cylinder(path, groups, prefix, stat, errmsg)
+        character(len=*), intent(in) :: path              !! input file (for messages)
+        type(nml_group), intent(in) :: groups(:)          !! scanned groups
+        character(len=*), intent(in) :: prefix            !! output prefix
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        type(setup_t) :: s
+        real(dp) :: g_pulse
+        logical :: g_from_pulse
+
+        call set_defaults()
+        call records_defaults()
+        call read_pulse_group(path, groups, s%pin, stat, errmsg)
+        if (stat /= 0) return
+        call read_optional(path, groups, 'body', body_keys, read_body, s%gb, stat, errmsg)
+        if (stat /= 0) return
+        call read_optional(path, groups, 'cylinder', cylinder_keys, read_cylinder, s%gc, &
+                           stat, errmsg)
+        if (stat /= 0) return
+        call read_optional(path, groups, 'map', map_keys, read_map, s%gm, stat, errmsg)
+        if (stat /= 0) return
+        call read_optional(path, groups, 'records', records_keys, read_records, s%gr, stat, &
+                           errmsg)
+        if (stat /= 0) return
+        stat = 1
+
+        ! --- what to compute, and which groups go with it
+        s%task = trim(lower(adjustl(what)))
+        if (.not. any(what_names == s%task)) then
+            errmsg = located(path, s%gc)//'what = '''//trim(what)//''': unknown (allowed: ' &
+                     //join(what_names)//')'
+            return
+        end if
+        call check_groups(path, groups, s, errmsg)
+        if (len(errmsg) > 0) return
+        call check_cylinder(path, s%gc, s%task, errmsg)
+        if (len(errmsg) > 0) return
+
+        ! --- the excitation of a history, then the body (which uses its g)
+        g_from_pulse = .false.
+        g_pulse = 9.80665_dp
+        if (s%task == 'history') then
+            if (s%use_records) then
+                call check_records(path, s%gr, s%recs, s%slammer_rounding, errmsg)
+                if (len(errmsg) > 0) return
+            else
+                call build_pulse(path, s%pin, stat, errmsg, g_used=.true.)
+                if (stat /= 0) return
+                stat = 1
+                g_from_pulse = .true.
+                g_pulse = s%pin%g
+            end if
+        end if
+        call check_body(path, s, g_from_pulse, g_pulse, errmsg)
+        if (len(errmsg) > 0) return
+
+        select case (s%task)
+        case ('props')
+            call do_props(path, prefix, s, stat, errmsg)
+        case ('pushover')
+            call do_pushover(path, prefix, s, stat, errmsg)
+        case ('history')
+            if (s%use_records) then
+                call do_history_records(path, prefix, s, stat, errmsg)
+            else
+                call do_history_pulse(path, prefix, s, stat, errmsg)
+            end if
+        case default
+            call do_map(path, prefix, s, stat, errmsg)
+        end select
+    end subroutine run_cylinder
+
+    ! ------------------------------------------------------------------------------
+    ! Checks
+    ! ------------------------------------------------------------------------------
+
+    !> Which groups the task needs and allows. errmsg is empty on success.
+    subroutine check_groups(path, groups, s, errmsg)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: groups(:)
+        type(setup_t), intent(inout) :: s
+        character(len=:), allocatable, intent(out) :: errmsg
+        logical :: has_pulse, has_records
+
+        errmsg = ''
+        has_pulse = find_group(groups, 'pulse') > 0
+        has_records = find_group(groups, 'records') > 0
+        if (find_group(groups, 'body') == 0) then
+            errmsg = path//': &body: missing group (it gives the body: shape, r and h, ' &
+                     //'or b and h for a block)'
+            return
+        end if
+        if (s%task /= 'map' .and. find_group(groups, 'map') > 0) then
+            errmsg = located(path, s%gm)//'only with what = ''map'' (&cylinder; now what = ''' &
+                     //s%task//''')'
+            return
+        end if
+        select case (s%task)
+        case ('history')
+            if (has_pulse .and. has_records) then
+                errmsg = located(path, s%gr)//'not with &pulse (a history runs under one ' &
+                         //'pulse or under records: give one of the two groups)'
+            else if (.not. (has_pulse .or. has_records)) then
+                errmsg = path//': &pulse: missing group (what = ''history'' needs the ' &
+                         //'excitation: &pulse, or &records with the record files)'
+            end if
+            s%use_records = has_records
+        case default
+            if (has_pulse) then
+                errmsg = located(path, s%pin%group)//'only with what = ''history'''
+                if (s%task == 'map') errmsg = located(path, s%pin%group)//'not used by ' &
+                    //'what = ''map'' (the pulse family and shape of a map are in &map)'
+            else if (has_records) then
+                errmsg = located(path, s%gr)//'only with what = ''history'''
+            else if (s%task == 'map' .and. find_group(groups, 'map') == 0) then
+                errmsg = path//': &map: missing group (what = ''map'' needs the grids: ' &
+                         //'freq_ratio or freq_range, amp_ratio or amp_range, or on axes = ' &
+                         //'''dimensional'' freq_hz or freq_hz_range, pga or pga_range)'
+            end if
+        end select
+    end subroutine check_groups
+
+    !> Check &cylinder for the task. errmsg is empty on success.
+    subroutine check_cylinder(path, gc, task, errmsg)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gc
+        character(len=*), intent(in) :: task
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=:), allocatable :: where
+        character(len=8), parameter :: grid_keys(3) = [character(len=8) :: 't_end', 'npts', &
+            'dt']
+        character(len=17), parameter :: push_keys(6) = [character(len=17) :: 'theta', &
+            'theta_range', 'theta_count', 'theta_ratio', 'theta_ratio_range', &
+            'theta_ratio_count']
+        integer :: i
+
+        where = located(path, gc)
+        errmsg = ''
+        if (task /= 'history') then
+            do i = 1, size(grid_keys)
+                if (given(gc, trim(grid_keys(i)))) then
+                    errmsg = where//trim(grid_keys(i))//': only with what = ''history'' ' &
+                             //'(the grid of the history table)'
+                    return
+                end if
+            end do
+        end if
+        if (task /= 'pushover') then
+            do i = 1, size(push_keys)
+                if (given(gc, trim(push_keys(i)))) then
+                    errmsg = where//trim(push_keys(i))//': only with what = ''pushover'' ' &
+                             //'(the grid of the pushover table)'
+                    return
+                end if
+            end do
+        end if
+        if (task /= 'history' .and. given(gc, 't_max')) then
+            errmsg = where//'t_max: only with what = ''history'''
+            if (task == 'map') errmsg = where//'t_max: not with what = ''map'' (each cell ' &
+                                        //'runs until its class is known)'
+            return
+        end if
+        if ((task == 'props' .or. task == 'pushover') .and. given(gc, 'rtol')) then
+            errmsg = where//'rtol: only with what = ''history'' or ''map'' (the tolerance ' &
+                     //'of the integration)'
+            return
+        end if
+        if (.not. positive(t_max)) then
+            errmsg = where//'t_max = '//real_str(t_max)//': must be a number > 0 (s) or ' &
+                     //'+Inf (no limit)'
+            return
+        end if
+        if (.not. in_closed(rtol, 1.0e-14_dp, 1.0e-3_dp)) then
+            errmsg = where//'rtol = '//real_str(rtol)//': must be in [1e-14, 1e-3]'
+            return
+        end if
+        if (task == 'history') call check_time_grid(where, gc, t_end, dt, npts, errmsg)
+    end subroutine check_cylinder
+
+    !> Check &body and build the body (and its planar rocking model); g_pulse is the
+    !> gravity of the pulse when g_from_pulse. errmsg is empty on success.
+    subroutine check_body(path, s, g_from_pulse, g_pulse, errmsg)
+        character(len=*), intent(in) :: path
+        type(setup_t), intent(inout) :: s
+        logical, intent(in) :: g_from_pulse
+        real(dp), intent(in) :: g_pulse
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=:), allocatable :: where, name
+        character(len=512) :: msg
+        real(dp) :: m_used
+        integer :: code, stat
+
+        where = located(path, s%gb)
+        errmsg = ''
+        msg = ''
+        name = trim(lower(adjustl(shape)))
+        code = 0
+        if (any(shape_names == name)) code = findloc(shape_names, name, 1)
+        if (code == 0) then
+            errmsg = where//'shape = '''//trim(shape)//''': unknown shape (allowed: ' &
+                     //join(shape_names)//')'
+            return
+        end if
+        shape = name
+        ! --- the keys of this shape
+        if (code == BODY_BLOCK) then
+            call only_with('r', 'shape = ''block'' takes the half-width b')
+            call only_with('r_inner', 'a hollow cylinder (shape = ''hollow'')')
+            call only_with('j_o', 'a custom body (shape = ''custom'')')
+            call only_with('j_axis', 'a custom body (shape = ''custom'')')
+            call required('b', 'the half-width of the block, m')
+        else
+            call only_with('b', 'a block (shape = ''block''); a cylinder takes the radius r')
+            call required('r', 'the base radius, m')
+            if (code == BODY_HOLLOW_CYLINDER) then
+                call required('r_inner', 'the inner radius of the hollow cylinder, m')
+                if (len(errmsg) == 0 .and. .not. r_inner > 0.0_dp) errmsg = where &
+                    //'r_inner = '//real_str(r_inner)//': the inner radius of a hollow ' &
+                    //'cylinder must be > 0 (m; shape = ''solid'' for none)'
+            else
+                call only_with('r_inner', 'a hollow cylinder (shape = ''hollow'')')
+            end if
+            if (code == BODY_CUSTOM) then
+                call required('j_o', 'the moment of inertia about the pivot, kg m2')
+            else
+                call only_with('j_o', 'a custom body (shape = ''custom'')')
+                call only_with('j_axis', 'a custom body (shape = ''custom'')')
+            end if
+        end if
+        if (len(errmsg) > 0) return
+        call required('h', 'the height of the centre of mass above the base, m')
+        if (len(errmsg) > 0) return
+        if (s%task == 'props' .or. s%task == 'pushover') then
+            call required('mass', 'kg; the forces and moments scale with it')
+            if (len(errmsg) > 0) return
+        end if
+        m_used = mass
+        if (.not. given(s%gb, 'mass')) m_used = 1.0_dp     ! dynamics do not depend on it
+        ! --- gravity: the pulse's, or &body's; not two different values
+        if (g_from_pulse) then
+            if (given(s%gb, 'g') .and. given(s%pin%group, 'g') .and. &
+                abs(g - g_pulse) > 0.0_dp) then
+                errmsg = where//'g = '//real_str(g)//': not the g of &pulse (' &
+                         //real_str(g_pulse)//' m/s2): give g in one of the two groups'
+                return
+            end if
+            if (.not. given(s%gb, 'g')) g = g_pulse
+        end if
+        ! --- the body
+        select case (code)
+        case (BODY_SOLID_CYLINDER)
+            call cylinder_props(r, h, m_used, g, s%body, stat, msg)
+        case (BODY_HOLLOW_CYLINDER)
+            call cylinder_props(r, h, m_used, g, s%body, stat, msg, r_inner=r_inner)
+        case (BODY_CUSTOM)
+            if (given(s%gb, 'j_axis')) then
+                call cylinder_props(r, h, m_used, g, s%body, stat, msg, j_o=j_o, &
+                                    j_axis=j_axis)
+            else
+                call cylinder_props(r, h, m_used, g, s%body, stat, msg, j_o=j_o)
+            end if
+        case default
+            call block_props(b, h, m_used, g, s%body, stat, msg)
+        end select
+        if (stat /= SEISPULSE_SUCCESS) then
+            errmsg = where//trim(msg)
+            return
+        end if
+        ! --- restitution, model, the equivalent body's slenderness
+        s%e_given = given(s%gb, 'e')
+        s%e_run = s%body%e
+        if (s%e_given) then
+            if (.not. in_closed(e, 0.0_dp, 1.0_dp)) then
+                errmsg = where//'e = '//real_str(e)//': the coefficient of restitution ' &
+                         //'must be in [0, 1]'
+                return
+            end if
+            s%e_run = e
+        end if
+        name = trim(lower(adjustl(model)))
+        select case (name)
+        case ('nonlinear')
+            s%linearized = .false.
+        case ('linearized')
+            s%linearized = .true.
+        case default
+            errmsg = where//'model = '''//trim(model)//''': unknown model (allowed: ' &
+                     //join(model_names)//')'
+            return
+        end select
+        model = name
+        if (given(s%gb, 'equivalent_angle')) then
+            if (.not. in_open(equivalent_angle, 0.0_dp, 0.5_dp * pi)) then
+                errmsg = where//'equivalent_angle = '//real_str(equivalent_angle) &
+                         //': must be a number in (0, pi/2) (rad)'
+                return
+            end if
+        end if
+        call body_rocking_block(s%body, s%blk, stat, msg, e=s%e_run, &
+                                linearized=s%linearized)
+        if (stat /= SEISPULSE_SUCCESS) then
+            errmsg = where//trim(msg)
+            return
+        end if
+        ! the effective values, for the echo
+        e = s%e_run
+        if (.not. given(s%gb, 'mass')) mass = m_used
+
+    contains
+
+        subroutine required(key, meaning)
+            character(len=*), intent(in) :: key, meaning
+            if (len(errmsg) > 0) return
+            if (.not. given(s%gb, key)) errmsg = where//key//': missing ('//meaning//')'
+        end subroutine required
+
+        subroutine only_with(key, what_for)
+            character(len=*), intent(in) :: key, what_for
+            if (len(errmsg) > 0) return
+            if (given(s%gb, key)) errmsg = where//key//': only with '//what_for//' (now ' &
+                                           //'shape = '''//name//''')'
+        end subroutine only_with
+
+    end subroutine check_body
+
+    !> The body's equivalent (same p, same M_max): a block for a cylinder, a solid
+    !> cylinder for a block; with the slenderness equivalent_angle when given.
+    subroutine equivalent_body(s, eq, stat, msg)
+        type(setup_t), intent(in) :: s
+        type(rocking_body_t), intent(out) :: eq
+        integer, intent(out) :: stat
+        character(len=*), intent(inout) :: msg
+        if (s%body%shape == BODY_BLOCK) then
+            if (given(s%gb, 'equivalent_angle')) then
+                call equivalent_cylinder(s%body, eq, stat, msg, theta_c=equivalent_angle)
+            else
+                call equivalent_cylinder(s%body, eq, stat, msg)
+            end if
+        else
+            if (given(s%gb, 'equivalent_angle')) then
+                call equivalent_block(s%body, eq, stat, msg, alpha=equivalent_angle)
+            else
+                call equivalent_block(s%body, eq, stat, msg)
+            end if
+        end if
+    end subroutine equivalent_body
+
+    !> "solid cylinder", "block", ... of a BODY_* code.
+    pure function shape_text(code) result(text)
+        integer, intent(in) :: code
+        character(len=:), allocatable :: text
+        select case (code)
+        case (BODY_SOLID_CYLINDER)
+            text = 'solid cylinder'
+        case (BODY_HOLLOW_CYLINDER)
+            text = 'hollow cylinder'
+        case (BODY_CUSTOM)
+            text = 'body of revolution with a given J_o'
+        case default
+            text = 'uniform block'
+        end select
+    end function shape_text
+
+    !> Header line of the body.
+    function body_line(s) result(line)
+        type(setup_t), intent(in) :: s
+        character(len=:), allocatable :: line
+        line = 'body: '//shape_text(s%body%shape)//', theta_c = '//real_str(s%body%theta_c) &
+               //' rad, p = '//real_str(s%body%p)//' rad/s, e = '//real_str(s%e_run)
+        if (s%e_given) then
+            line = line//' (given; Housner: '//real_str(s%body%e)//')'
+        else
+            line = line//' (Housner)'
+        end if
+        line = line//', g = '//real_str(s%body%g)//' m/s2'
+    end function body_line
+
+    ! ------------------------------------------------------------------------------
+    ! Properties
+    ! ------------------------------------------------------------------------------
+
+    subroutine do_props(path, prefix, s, stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(setup_t), intent(in) :: s
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        integer, parameter :: nrow = 20
+        type(rocking_body_t) :: eq
+        character(len=512) :: msg, files(2), comments(6)
+        character(len=20) :: labels(nrow)
+        real(dp) :: table(nrow, 2)
+
+        call echo(s)
+        msg = ''
+        call equivalent_body(s, eq, stat, msg)
+        if (stat /= SEISPULSE_SUCCESS) then
+            stat = 1
+            errmsg = located(path, s%gb)//'equivalent body: '//trim(msg)
+            return
+        end if
+        labels = [character(len=20) :: 'shape (-)', 'r (m)', 'r_inner (m)', 'h (m)', &
+                  'mass (kg)', 'g (m/s2)', 'theta_c (rad)', 'theta_c (deg)', 'h/r (-)', &
+                  'R (m)', 'J_o (kg m2)', 'J_G (kg m2)', 'J_axis (kg m2)', 'J_o/(m R2) (-)', &
+                  'p (rad/s)', 'e (-)', 'W (N)', 'M_max (N m)', 'F_uplift (N)', &
+                  'tan(theta_c) (g)']
+        table(:, 1) = props_column(s%body)
+        table(:, 2) = props_column(eq)
+        comments(1) = 'seispulse analysis cylinder: properties of the body and of its ' &
+                      //'equivalent '//trim(merge('solid cylinder', 'block         ', &
+                      s%body%shape == BODY_BLOCK))//' (seispulse_cylinder)'
+        comments(2) = 'shape: 1 solid cylinder, 2 hollow cylinder, 3 custom J_o, 4 block; ' &
+                      //'r: base radius, or the half-width b of a block; h: height of the ' &
+                      //'centre of mass'
+        comments(3) = 'equivalent: the same p and the same M_max = m g r, slenderness ' &
+                      //merge('equivalent_angle (given)', 'theta_c of the body     ', &
+                      given(s%gb, 'equivalent_angle'))
+        comments(4) = 'R = sqrt(r^2 + h^2), p = sqrt(m g R/J_o), e = max(0, 1 - (2 m R^2/' &
+                      //'J_o) sin^2 theta_c) (Housner), uplift at |a_g| > g tan(theta_c)'
+        comments(5) = 'M_max: pushover moment at theta = 0; F_uplift = W r/h at the centre ' &
+                      //'of mass; J_axis NaN: unknown (a block''s depth)'
+        comments(6) = 'input: '//trim(path)
+        call write_tables(prefix, 'cylinder_props', comments, &
+            [character(len=10) :: 'quantity', 'body', 'equivalent'], &
+            [character(len=8) :: 'in name', 'as named', 'as named'], table, files, stat, &
+            errmsg, labels=labels)
+        if (stat /= 0) then
+            errmsg = path//': &run: output: '//errmsg
+            return
+        end if
+        call say_written('cylinder properties', files)
+    end subroutine do_props
+
+    !> The rows of the properties table for one body.
+    function props_column(bd) result(col)
+        type(rocking_body_t), intent(in) :: bd
+        real(dp) :: col(20)
+        col = [real(bd%shape, dp), bd%r, bd%r_inner, bd%h, bd%mass, bd%g, bd%theta_c, &
+               bd%theta_c * (180.0_dp / pi), bd%h / bd%r, bd%big_r, bd%j_o, bd%j_g, &
+               bd%j_axis, bd%j_o / (bd%mass * bd%big_r**2), bd%p, bd%e, bd%weight, &
+               bd%m_max, bd%f_uplift, tan(bd%theta_c)]
+    end function props_column
+
+    ! ------------------------------------------------------------------------------
+    ! Pushover
+    ! ------------------------------------------------------------------------------
+
+    subroutine do_pushover(path, prefix, s, stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(setup_t), intent(in) :: s
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=:), allocatable :: where, grid, key
+        character(len=512) :: msg, files(2), comments(6)
+        real(dp), allocatable :: th(:), u(:), table(:, :)
+        real(dp) :: force, moment
+        logical :: stable, by_ratio
+        integer :: i, n
+
+        where = located(path, s%gc)
+        stat = 1
+        msg = ''
+        if ((given(s%gc, 'theta') .or. given(s%gc, 'theta_range') .or. &
+             given(s%gc, 'theta_count')) .and. (given(s%gc, 'theta_ratio') .or. &
+             given(s%gc, 'theta_ratio_range') .or. given(s%gc, 'theta_ratio_count'))) then
+            errmsg = where//'theta, theta_ratio: give the grid in one of them (theta in ' &
+                     //'rad, or theta_ratio = theta/theta_c)'
+            return
+        end if
+        by_ratio = .not. (given(s%gc, 'theta') .or. given(s%gc, 'theta_range') .or. &
+                          given(s%gc, 'theta_count'))
+        if (by_ratio) then
+            key = 'theta_ratio'
+            if (given(s%gc, 'theta_ratio') .or. given(s%gc, 'theta_ratio_range') .or. &
+                given(s%gc, 'theta_ratio_count')) then
+                call axis_values(s%gc, 'theta_ratio', 'theta_ratio', theta_ratio, &
+                                 theta_ratio_range, theta_ratio_count, 'linear', .false., &
+                                 .true., max_list, th, grid, errmsg, required=.true., &
+                                 count_optional=.true.)
+            else
+                ! the default grid: theta/theta_c = 0, 0.05, .., 1
+                th = [(real(i, dp) / real(pushover_default_count - 1, dp), &
+                       i = 0, pushover_default_count - 1)]
+                grid = 'theta_ratio = 0 .. 1, '//int_str(pushover_default_count)//' values ' &
+                       //'(default)'
+            end if
+        else
+            key = 'theta'
+            call axis_values(s%gc, 'theta', 'theta', theta, theta_range, theta_count, &
+                             'linear', .false., .true., max_list, th, grid, errmsg, &
+                             required=.true., count_optional=.true.)
+        end if
+        if (len(errmsg) > 0) then
+            errmsg = where//errmsg
+            return
+        end if
+        n = size(th)
+        allocate(u(n))
+        if (by_ratio) then
+            u = th
+            th = u * s%body%theta_c
+        else
+            u = th / s%body%theta_c
+        end if
+        do i = 1, n
+            if (th(i) > 0.5_dp * pi) then
+                errmsg = where//list_item(key, i)//': theta = '//real_str(th(i))//' rad: ' &
+                         //'must be <= pi/2 (the body lies on its side)'
+                return
+            end if
+        end do
+        allocate(table(n, 6))
+        do i = 1, n
+            call rigid_pushover(s%body, th(i), force, moment, stable, stat, msg)
+            if (stat /= SEISPULSE_SUCCESS) then
+                stat = 1
+                errmsg = where//list_item(key, i)//': '//trim(msg)
+                return
+            end if
+            table(i, :) = [th(i), u(i), force, moment, &
+                           normalized_pushover(s%body%theta_c, u(i)), &
+                           merge(1.0_dp, 0.0_dp, stable)]
+        end do
+
+        call echo(s)
+        comments(1) = 'seispulse analysis cylinder: static pushover on a rigid base ' &
+                      //'(seispulse_cylinder, doc/cylinder.md)'
+        comments(2) = body_line(s)//', W = '//real_str(s%body%weight)//' N, M_max = ' &
+                      //real_str(s%body%m_max)//' N m'
+        comments(3) = 'force: horizontal force at the centre of mass (N) that holds the ' &
+                      //'body at theta, W tan(theta_c - theta); moment about the pivot ' &
+                      //'(N m), W R sin(theta_c - theta)'
+        comments(4) = 'm_ratio = M/(m g r) (r: the half-width of a block); stable: 1 for ' &
+                      //'theta <= theta_c, 0 beyond (F < 0: the body falls on its own)'
+        comments(5) = 'grid: '//grid
+        comments(6) = 'input: '//trim(path)
+        call write_tables(prefix, 'cylinder_pushover', comments, &
+            [character(len=12) :: 'theta', 'theta_ratio', 'force', 'moment', 'm_ratio', &
+             'stable'], &
+            [character(len=4) :: 'rad', '-', 'N', 'N m', '-', '-'], table, files, stat, errmsg)
+        if (stat /= 0) then
+            errmsg = path//': &run: output: '//errmsg
+            return
+        end if
+        call say_written('cylinder pushover', files)
+    end subroutine do_pushover
+
+    ! ------------------------------------------------------------------------------
+    ! History
+    ! ------------------------------------------------------------------------------
+
+    !> The summary columns of a run (after any label and pga).
+    function summary_row(s, run) result(row)
+        type(setup_t), intent(in) :: s
+        type(rocking_run_t), intent(in) :: run
+        real(dp) :: row(13)
+        real(dp) :: nan
+        nan = ieee_value(nan, ieee_quiet_nan)
+        row = nan
+        row(1:4) = [s%body%theta_c, s%body%p, s%e_run, real(run%outcome, dp)]
+        row(5:6) = [run%t_uplift, run%t_overturn]
+        row(7) = real(run%n_impacts, dp)
+        if (run%n_impacts > 0) row(8) = run%t_impacts(1)
+        row(9:13) = [run%theta_max, run%theta_min, run%theta_max / s%body%theta_c, &
+                     run%theta_min / s%body%theta_c, run%t_end]
+    end function summary_row
+
+    !> Header lines shared by the two tables of a history.
+    subroutine history_comments(s, excitation, lines)
+        type(setup_t), intent(in) :: s
+        character(len=*), intent(in) :: excitation
+        character(len=*), intent(out) :: lines(4)
+        lines(1) = 'seispulse analysis cylinder: planar rocking on a rigid base under ' &
+                   //excitation//', '//trim(model)//' model (seispulse_rocking_sim)'
+        lines(2) = body_line(s)
+        lines(3) = 'uplift at |a_g| > g tan(theta_c) (nonlinear) or g theta_c ' &
+                   //'(linearized); a_g > 0 drives theta > 0'
+        lines(4) = code_legend('outcome', outcome_names)
+    end subroutine history_comments
+
+    subroutine do_history_pulse(path, prefix, s, stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(setup_t), intent(in) :: s
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        type(rocking_run_t) :: run
+        character(len=512) :: msg, files(2), files2(2), comments(8)
+        real(dp), allocatable :: t(:), table(:, :), v(:), d(:)
+        real(dp) :: t_last
+        integer :: n, i
+
+        call echo(s)
+        stat = 1
+        msg = ''
+        call rock_pulse(s%blk, s%pin%p, run, i, msg, t_max=t_max, rtol=rtol)
+        if (i /= SEISPULSE_SUCCESS) then
+            errmsg = locate_message(path, trim(msg), s)
+            return
+        end if
+        ! --- the grid: up to t_end, or past the end of the motion
+        t_last = t_end
+        if (ieee_is_nan(t_end)) then
+            if (run%outcome == ROCK_RUN_TIME_LIMIT .and. run%t_end > 0.0_dp) then
+                t_last = run%t_end               ! no solution beyond it
+            else
+                t_last = max(1.25_dp * run%t_end, pulse_end(s%pin))
+            end if
+        end if
+        call time_grid(t_last, dt, npts, t, errmsg)
+        if (len(errmsg) > 0) then
+            errmsg = located(path, s%gc)//errmsg
+            return
+        end if
+        n = size(t)
+        allocate(table(n, 4), v(n), d(n))
+        call rock_pulse(s%blk, s%pin%p, run, i, msg, t_grid=t, theta_grid=table(:, 3), &
+                        omega_grid=table(:, 4), t_max=t_max, rtol=rtol)
+        if (i == SEISPULSE_SUCCESS) call pulse_eval(s%pin%p, t, table(:, 2), v, d, i, msg)
+        if (i /= SEISPULSE_SUCCESS) then
+            errmsg = locate_message(path, trim(msg), s)
+            return
+        end if
+        table(:, 1) = t
+
+        call history_comments(s, pulse_kind_name(s%pin%code)//' pulse', comments(1:4))
+        comments(5) = 't_overturn: last outward crossing of |theta| = theta_c before ' &
+                      //'overturning; t_impact1: first impact; t_end: rest, overturned ' &
+                      //'(|theta| = pi/2) or the time limit; 0 without uplift'
+        comments(6) = 'psi = theta/theta_c; NaN: no such event'
+        comments(7) = 'input: '//trim(path)
+        call write_tables(prefix, 'cylinder', comments(1:7), summary_names(.false.), &
+            summary_units(.false.), reshape(summary_row(s, run), [1, 13]), files, stat, &
+            errmsg)
+        if (stat /= 0) then
+            errmsg = path//': &run: output: '//errmsg
+            return
+        end if
+        comments(5) = 'outcome: '//trim(outcome_names(run%outcome))//', t_uplift = ' &
+                      //real_str(run%t_uplift)//' s, impacts: '//int_str(run%n_impacts) &
+                      //', theta_max = '//real_str(run%theta_max)//' rad, theta_min = ' &
+                      //real_str(run%theta_min)//' rad, t_end = '//real_str(run%t_end)//' s'
+        comments(6) = 'theta: rotation (rad; > 0 about one edge, < 0 about the other), ' &
+                      //'omega = dtheta/dt (rad/s); overturned: theta = +-pi/2, omega = 0 ' &
+                      //'after t_end; NaN after a time limit'
+        call write_tables(prefix, 'cylinder_history', comments(1:7), &
+            [character(len=8) :: 't', 'a_g', 'theta', 'omega'], &
+            [character(len=8) :: 's', 'm/s2', 'rad', 'rad/s'], table, files2, stat, errmsg)
+        if (stat /= 0) then
+            call delete_files(files)
+            errmsg = path//': &run: output: '//errmsg
+            return
+        end if
+        write(output_unit, '(a)') 'cylinder: '//trim(outcome_names(run%outcome))
+        call say_written('cylinder summary', files)
+        call say_written('cylinder history', files2)
+    end subroutine do_history_pulse
+
+    !> Names of the summary table (with the record and pga columns for records).
+    function summary_names(records) result(names)
+        logical, intent(in) :: records
+        character(len=12), allocatable :: names(:)
+        character(len=12), parameter :: base(13) = [character(len=12) :: 'theta_c', 'p', &
+            'e', 'outcome', 't_uplift', 't_overturn', 'n_impacts', 't_impact1', 'theta_max', &
+            'theta_min', 'psi_max', 'psi_min', 't_end']
+        if (records) then
+            names = [character(len=12) :: 'record', 'pga', base]
+        else
+            names = base
+        end if
+    end function summary_names
+
+    function summary_units(records) result(units)
+        logical, intent(in) :: records
+        character(len=6), allocatable :: units(:)
+        character(len=6), parameter :: base(13) = [character(len=6) :: 'rad', 'rad/s', '-', &
+            '-', 's', 's', '-', 's', 'rad', 'rad', '-', '-', 's']
+        if (records) then
+            units = [character(len=6) :: '-', 'g', base]
+        else
+            units = base
+        end if
+    end function summary_units
+
+    !> Planar rocking under each record of &records: a summary row and the history rows
+    !> of each (a record that cannot be read or run: NaN, status 1, the others go on).
+    subroutine do_history_records(path, prefix, s, stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(setup_t), intent(in) :: s
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        type(rocking_run_t) :: run
+        type(record_out_t), allocatable :: outs(:)
+        character(len=:), allocatable :: where
+        character(len=512) :: msg, files(2), files2(2)
+        character(len=1024), allocatable :: comments(:)
+        character(len=256), allocatable :: labels(:), hlabels(:)
+        real(dp), allocatable :: accel(:), t(:), summary(:, :), hist(:, :), part(:, :)
+        real(dp) :: t_last, nan
+        integer :: nrec, ir, i, st, nfailed
+        logical, allocatable :: failed(:)
+
+        nan = ieee_value(nan, ieee_quiet_nan)
+        where = located(path, s%gr)
+        call echo(s)
+        nrec = size(s%recs)
+        allocate(outs(nrec), labels(nrec), summary(nrec, 14), failed(nrec))
+        allocate(hlabels(0), hist(0, 4))
+        summary = nan
+        failed = .false.
+        do ir = 1, nrec
+            call load_record(where, s%recs(ir), ir, nrec, 'cylinder', s%slammer_rounding, &
+                             outs(ir), accel)
+            labels(ir) = outs(ir)%name
+            failed(ir) = .not. outs(ir)%ok
+            if (outs(ir)%ok) then
+                msg = ''
+                call rock_record(s%blk, accel, outs(ir)%dt, s%body%g, run, st, msg, &
+                                 t_max=t_max, rtol=rtol)
+                if (st == SEISPULSE_SUCCESS) then
+                    t_last = t_end
+                    if (ieee_is_nan(t_end)) then
+                        if (run%outcome == ROCK_RUN_TIME_LIMIT .and. run%t_end > 0.0_dp) then
+                            t_last = run%t_end
+                        else
+                            t_last = max(1.25_dp * run%t_end, &
+                                         outs(ir)%dt * real(size(accel) - 1, dp))
+                        end if
+                    end if
+                    call time_grid(t_last, dt, npts, t, errmsg)
+                    if (len(errmsg) > 0) then
+                        stat = 1
+                        errmsg = located(path, s%gc)//list_item('files', ir)//': '//errmsg
+                        return
+                    end if
+                    allocate(part(size(t), 4))
+                    part(:, 1) = t
+                    part(:, 2) = s%body%g * record_at(accel, outs(ir)%dt, t)
+                    call rock_record(s%blk, accel, outs(ir)%dt, s%body%g, run, st, msg, &
+                                     t_grid=t, theta_grid=part(:, 3), &
+                                     omega_grid=part(:, 4), t_max=t_max, rtol=rtol)
+                end if
+                if (st /= SEISPULSE_SUCCESS) then
+                    failed(ir) = .true.
+                    outs(ir)%message = trim(msg)
+                    write(error_unit, '(a)') 'seispulse: error: '//where &
+                        //list_item('files', ir)//' = '''//s%recs(ir)%file//''': '//trim(msg)
+                    if (allocated(part)) deallocate(part)
+                else
+                    summary(ir, 1) = outs(ir)%pga
+                    summary(ir, 2:14) = summary_row(s, run)
+                    hist = stack(hist, part)
+                    hlabels = [character(len=256) :: hlabels, &
+                               (labels(ir), i = 1, size(part, 1))]
+                    deallocate(part)
+                    cycle
+                end if
+            end if
+            ! a failed record: one row of NaN in each table
+            hist = stack(hist, reshape([(nan, i = 1, 4)], [1, 4]))
+            hlabels = [character(len=256) :: hlabels, labels(ir)]
+        end do
+
+        allocate(comments(6 + nrec))
+        call history_comments(s, 'records (&records; the samples in g, linear in between, ' &
+                              //'0 after the last)', comments(1:4))
+        comments(5) = 'pga: after scaling (g); psi = theta/theta_c; NaN: no such event, or ' &
+                      //'a record that failed; t_end: rest, overturned or the time limit'
+        do ir = 1, nrec
+            comments(5 + ir) = record_line(ir, s%recs(ir), outs(ir))
+            if (outs(ir)%ok .and. failed(ir)) comments(5 + ir) = trim(comments(5 + ir)) &
+                //'; FAILED: '//outs(ir)%message
+        end do
+        comments(6 + nrec) = 'input: '//trim(path)
+        call write_tables(prefix, 'cylinder', comments, summary_names(.true.), &
+            summary_units(.true.), summary, files, stat, errmsg, labels=labels)
+        if (stat /= 0) then
+            errmsg = path//': &run: output: '//errmsg
+            return
+        end if
+        comments(5) = 'rows: each record from t = 0; theta (rad), omega = dtheta/dt ' &
+                      //'(rad/s), a_g = g x the record (m/s2); NaN: a record that failed'
+        call write_tables(prefix, 'cylinder_history', comments, &
+            [character(len=8) :: 'record', 't', 'a_g', 'theta', 'omega'], &
+            [character(len=8) :: '-', 's', 'm/s2', 'rad', 'rad/s'], hist, files2, stat, &
+            errmsg, labels=hlabels)
+        if (stat /= 0) then
+            call delete_files(files)
+            errmsg = path//': &run: output: '//errmsg
+            return
+        end if
+        call say_written('cylinder summary', files)
+        call say_written('cylinder history', files2)
+        stat = 0
+        nfailed = count(failed)
+        if (nfailed > 0) then
+            stat = ROWS_FAILED
+            errmsg = int_str(nfailed)//' of '//int_str(nrec)//' records failed (' &
+                     //failed_records(outs, failed)//')'
+        end if
+    end subroutine do_history_records
+
+    !> Rows of b under the rows of a.
+    pure function stack(a, b) result(c)
+        real(dp), intent(in) :: a(:, :), b(:, :)
+        real(dp) :: c(size(a, 1) + size(b, 1), size(a, 2))
+        c(1:size(a, 1), :) = a
+        c(size(a, 1) + 1:, :) = b
+    end function stack
+
+    !> The record (samples accel(i) at (i - 1) dt, linear in between, 0 after the last,
+    !> as the integrator takes it) at the times t (s); in the unit of the record.
+    pure function record_at(accel, step, t) result(a)
+        real(dp), intent(in) :: accel(:), step, t(:)
+        real(dp) :: a(size(t))
+        real(dp) :: x
+        integer :: i, k, n
+        n = size(accel)
+        do i = 1, size(t)
+            x = t(i) / step
+            k = int(x) + 1                     ! sample at or before t(i)
+            if (k >= n) then
+                a(i) = 0.0_dp
+                if (k == n .and. .not. x > real(n - 1, dp)) a(i) = accel(n)
+            else
+                a(i) = accel(k) + (accel(k + 1) - accel(k)) * (x - real(k - 1, dp))
+            end if
+        end do
+    end function record_at
+
+    !> Where a library message about a run belongs: &pulse, &cylinder or &body.
+    function locate_message(path, msg, s) result(full_msg)
+        character(len=*), intent(in) :: path, msg
+        type(setup_t), intent(in) :: s
+        character(len=:), allocatable :: full_msg
+        character(len=:), allocatable :: key
+        integer :: k
+        k = scan(msg, ' =:(')
+        key = ''
+        if (k > 1) key = msg(1:k - 1)
+        if (any(pulse_keys == key)) then
+            full_msg = located(path, s%pin%group)//msg
+        else if (any(cylinder_keys == key)) then
+            full_msg = located(path, s%gc)//msg
+        else
+            full_msg = located(path, s%gb)//msg
+        end if
+    end function locate_message
+
+    ! ------------------------------------------------------------------------------
+    ! Overturning map
+    ! ------------------------------------------------------------------------------
+
+    subroutine do_map(path, prefix, s, stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(setup_t), intent(in) :: s
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=:), allocatable :: where, grid
+        character(len=512) :: msg, files(2), comments(9)
+        character(len=12), allocatable :: names(:)
+        character(len=4), allocatable :: units(:)
+        real(dp), allocatable :: xs(:), ys(:), table(:, :)
+        integer, allocatable :: classes(:, :), classes_b(:, :), diff(:, :)
+        type(rocking_body_t) :: eq
+        type(pulse_t) :: tpl
+        integer :: code, i, j, row, st, axes_code, ncol
+        integer(int64) :: c_start, c_now, c_last, rate
+        real(dp) :: elapsed, fr, ar
+        logical :: printed
+
+        where = located(path, s%gm)
+        stat = 1
+        msg = ''
+        axes_code = 0
+        if (any(axes_names == trim(lower(adjustl(axes))))) &
+            axes_code = findloc(axes_names, trim(lower(adjustl(axes))), 1)
+        if (axes_code == 0) then
+            errmsg = where//'axes = '''//trim(axes)//''': unknown axes (allowed: ' &
+                     //join(axes_names)//')'
+            return
+        end if
+        axes = axes_names(axes_code)
+        call pulse_kind_from_name(kind, code, st, msg)
+        if (st /= SEISPULSE_SUCCESS) then
+            errmsg = where//trim(msg)
+            return
+        end if
+        if (code == PULSE_MP) then
+            errmsg = where//'kind = '''//trim(kind)//''': maps take an acceleration pulse ' &
+                     //'with a time scale (not mavroeidis_papageorgiou)'
+            return
+        end if
+        if (compare_block .and. s%body%shape == BODY_BLOCK) then
+            errmsg = where//'compare_block: the body is a block already (shape = ''block'')'
+            return
+        end if
+        ! --- the two axes, on the chosen system only
+        if (axes_code == MAP_AXES_DIMENSIONLESS) then
+            call refuse('freq_hz', 'dimensional')
+            call refuse('pga', 'dimensional')
+            if (len(errmsg) > 0) return
+            call axis_values(s%gm, 'freq_ratio', 'freq', freq_ratio, freq_range, freq_count, &
+                             'linear', .true., .false., max_list, xs, grid, errmsg, &
+                             required=.true., count_optional=.true., hint=.false., &
+                             real_numbers=.true.)
+            if (len(errmsg) == 0) call axis_values(s%gm, 'amp_ratio', 'amp', amp_ratio, &
+                amp_range, amp_count, 'linear', .false., .false., max_list, ys, grid, errmsg, &
+                required=.true., count_optional=.true., hint=.false., real_numbers=.true.)
+        else
+            call refuse('freq', 'dimensionless')
+            call refuse('amp', 'dimensionless')
+            if (len(errmsg) > 0) return
+            call axis_values(s%gm, 'freq_hz', 'freq_hz', freq_hz, freq_hz_range, &
+                             freq_hz_count, 'linear', .true., .false., max_list, xs, grid, &
+                             errmsg, required=.true., count_optional=.true., hint=.false., &
+                             real_numbers=.true.)
+            if (len(errmsg) == 0) call axis_values(s%gm, 'pga', 'pga', pga, pga_range, &
+                pga_count, 'linear', .false., .false., max_list, ys, grid, errmsg, &
+                required=.true., count_optional=.true., hint=.false., real_numbers=.true.)
+        end if
+        if (len(errmsg) > 0) then
+            errmsg = where//errmsg
+            return
+        end if
+        if (code == PULSE_RICKER .and. .not. finite_at_least(t0_periods, 0.0_dp)) then
+            errmsg = where//'t0_periods = '//real_str(t0_periods)//': must be a finite ' &
+                     //'number >= 0 (the centre of the wavelet times f_p)'
+            return
+        end if
+        tpl = pulse_t(kind=code, amp=1.0_dp, duration=1.0_dp, beta=beta, full=full, &
+                      peak_frac=peak_frac, freq=1.0_dp, t0=t0_periods)
+        ! the shape at a unit time scale (the map checks every time scale)
+        call pulse_validate(tpl, st, msg)
+        if (st /= SEISPULSE_SUCCESS) then
+            errmsg = where//trim(msg)
+            return
+        end if
+        if (compare_block) then
+            call equivalent_body(s, eq, st, msg)
+            if (st /= SEISPULSE_SUCCESS) then
+                errmsg = located(path, s%gb)//'equivalent block: '//trim(msg)
+                return
+            end if
+        end if
+        call warn_unused_template(path, s%gm, code)
+
+        call echo(s)
+        allocate(classes(size(ys), size(xs)), classes_b(size(ys), size(xs)), &
+                 diff(size(ys), size(xs)))
+        call system_clock(c_start, rate)
+        c_last = c_start
+        printed = .false.
+        do i = 1, size(ys)
+            call body_overturning_map(s%body, code, xs, ys(i:i), axes_code, &
+                                      classes(i:i, :), st, msg, template=tpl, &
+                                      linearized=s%linearized, e=s%e_run, rtol=rtol)
+            if (st == SEISPULSE_SUCCESS .and. compare_block) &
+                call body_overturning_map(eq, code, xs, ys(i:i), axes_code, &
+                                          classes_b(i:i, :), st, msg, template=tpl, &
+                                          linearized=s%linearized, rtol=rtol)
+            if (st /= SEISPULSE_SUCCESS) then
+                if (index(msg, 'rtol') == 1) then
+                    errmsg = located(path, s%gc)//trim(msg)
+                else
+                    errmsg = where//trim(msg)
+                end if
+                return
+            end if
+            call system_clock(c_now)
+            elapsed = real(c_now - c_start, dp) / real(max(rate, 1_int64), dp)
+            if (i < size(ys) .and. elapsed >= progress_after .and. (.not. printed .or. &
+                real(c_now - c_last, dp) / real(max(rate, 1_int64), dp) >= progress_every)) &
+                then
+                write(error_unit, '(a, i0, a, i0)') 'map: row ', i, '/', size(ys)
+                flush(error_unit)
+                c_last = c_now
+                printed = .true.
+            end if
+        end do
+        if (printed) then
+            write(error_unit, '(a, i0, a, i0, a)') 'map: row ', size(ys), '/', size(ys), &
+                ' (done)'
+            flush(error_unit)
+        end if
+        if (compare_block) then
+            call map_difference(classes, classes_b, diff, st, msg)
+            if (st /= SEISPULSE_SUCCESS) then
+                errmsg = where//'compare_block: '//trim(msg)
+                return
+            end if
+        end if
+
+        ! --- the table: both axis systems, the chosen one first
+        ncol = merge(7, 5, compare_block)
+        allocate(table(size(ys) * size(xs), ncol))
+        row = 0
+        do i = 1, size(ys)
+            do j = 1, size(xs)
+                row = row + 1
+                if (axes_code == MAP_AXES_DIMENSIONLESS) then
+                    fr = xs(j)
+                    ar = ys(i)
+                    table(row, 1:4) = [fr, ar, fr * s%body%p / (2.0_dp * pi), &
+                                       ar * tan(s%body%theta_c)]
+                else
+                    fr = 2.0_dp * pi * xs(j) / s%body%p
+                    ar = ys(i) / tan(s%body%theta_c)
+                    table(row, 1:4) = [xs(j), ys(i), fr, ar]
+                end if
+                table(row, 5) = real(classes(i, j), dp)
+                if (compare_block) table(row, 6:7) = [real(classes_b(i, j), dp), &
+                                                      real(diff(i, j), dp)]
+            end do
+        end do
+        if (axes_code == MAP_AXES_DIMENSIONLESS) then
+            names = [character(len=12) :: 'freq_ratio', 'amp_ratio', 'freq_hz', 'pga', 'class']
+            units = [character(len=4) :: '-', '-', 'Hz', 'g', '-']
+        else
+            names = [character(len=12) :: 'freq_hz', 'pga', 'freq_ratio', 'amp_ratio', 'class']
+            units = [character(len=4) :: 'Hz', 'g', '-', '-', '-']
+        end if
+        if (compare_block) then
+            names = [character(len=12) :: names, 'class_block', 'diff']
+            units = [character(len=4) :: units, '-', '-']
+        end if
+        comments(1) = 'seispulse analysis cylinder: overturning map, '//pulse_kind_name(code) &
+                      //' pulse family, '//trim(model)//' model (seispulse_cylinder)'
+        comments(2) = body_line(s)
+        comments(3) = 'class: 0 safe, 1 overturns without impact, 2 overturns after one ' &
+                      //'impact, 3 after more impacts, -1 undecided (step budget)'
+        comments(4) = 'freq_ratio = omega_p/p = 2 pi freq_hz/p (T_p: t_d of the ' &
+                      //'exponential pulse, the period of sine/cosine cycles, the length ' &
+                      //'of the others; Ricker: f_p); amp_ratio = a_p/(g tan theta_c) = ' &
+                      //'pga/tan theta_c'
+        comments(5) = 'axes = '''//trim(axes)//''' (the first two columns); rows: '// &
+                      trim(names(2))//' outer, '//trim(names(1))//' inner'
+        comments(6) = template_text(code)
+        if (compare_block) then
+            comments(7) = 'class_block: the equivalent block (same p, same M_max, alpha = ' &
+                          //real_str(eq%theta_c)//' rad, Housner e = '//real_str(eq%e) &
+                          //') on the same '//trim(names(1))//', '//trim(names(2))
+            comments(8) = code_legend('diff', diff_names)
+        else
+            comments(7) = 'compare_block = .false.: no block map'
+            comments(8) = 'grid: '//grid
+        end if
+        comments(9) = 'input: '//trim(path)
+        call write_tables(prefix, 'cylinder_map', comments, names, units, table, files, &
+                          stat, errmsg)
+        if (stat /= 0) then
+            errmsg = path//': &run: output: '//errmsg
+            return
+        end if
+        call say_written('cylinder map', files)
+
+    contains
+
+        !> The keys of the other axis system are an error.
+        subroutine refuse(stem, other)
+            character(len=*), intent(in) :: stem, other
+            character(len=:), allocatable :: list_key
+            integer :: k
+            if (len(errmsg) > 0) return
+            list_key = stem
+            if (stem == 'freq') list_key = 'freq_ratio'
+            if (stem == 'amp') list_key = 'amp_ratio'
+            do k = 1, 3
+                select case (k)
+                case (1)
+                    if (given(s%gm, list_key)) errmsg = list_key
+                case (2)
+                    if (given(s%gm, stem//'_range')) errmsg = stem//'_range'
+                case default
+                    if (given(s%gm, stem//'_count')) errmsg = stem//'_count'
+                end select
+                if (len(errmsg) > 0) exit
+            end do
+            if (len(errmsg) > 0) errmsg = where//errmsg//': only with axes = '''//other &
+                                          //''' (now axes = '''//trim(axes)//''')'
+        end subroutine refuse
+
+    end subroutine do_map
+
+    !> Warn (stderr) about template keys of &map the pulse family does not use.
+    subroutine warn_unused_template(path, gm, code)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gm
+        integer, intent(in) :: code
+        integer :: i
+        logical :: used
+        do i = 1, size(gm%items)
+            select case (gm%items(i)%key)
+            case ('beta', 'full')
+                used = code == PULSE_EXPONENTIAL
+            case ('peak_frac')
+                used = code == PULSE_TRIANGULAR
+            case ('t0_periods')
+                used = code == PULSE_RICKER
+            case default
+                used = .true.
+            end select
+            if (.not. used) write(error_unit, '(a)') 'warning: '//located(path, gm) &
+                //gm%items(i)%key//': not used by kind '//pulse_kind_name(code)
+        end do
+    end subroutine warn_unused_template
+
+    !> The shape parameters of a map's pulse family, for the header.
+    function template_text(code) result(text)
+        integer, intent(in) :: code
+        character(len=:), allocatable :: text
+        select case (code)
+        case (PULSE_EXPONENTIAL)
+            text = 'pulse shape: beta = '//real_str(beta)//', full = ' &
+                   //trim(merge('.true. ', '.false.', full))
+        case (PULSE_TRIANGULAR)
+            text = 'pulse shape: peak_frac = '//real_str(peak_frac)
+        case (PULSE_RICKER)
+            text = 'pulse shape: t0 f_p = '//real_str(t0_periods)
+        case default
+            text = 'pulse shape: '//pulse_kind_name(code)
+        end select
+    end function template_text
+
+    ! ------------------------------------------------------------------------------
+    ! Helpers
+    ! ------------------------------------------------------------------------------
+
+    !> Echo the effective input: &pulse or &records for a history, &body, &cylinder, &map
+    !> for a map.
+    subroutine echo(s)
+        type(setup_t), intent(in) :: s
+        what = s%task
+        if (s%task == 'history') then
+            if (s%use_records) then
+                call echo_records(s%recs, s%slammer_rounding)
+            else
+                call write_pulse_group(output_unit)
+            end if
+        end if
+        write(output_unit, nml=body)
+        write(output_unit, nml=cylinder)
+        if (s%task == 'map') write(output_unit, nml=map)
+    end subroutine echo
+
+end module driver_cylinder
