@@ -427,16 +427,17 @@ contains
                                //int_str(size(accel))//'), at the same dt')
                 return
             end if
-            call record_step_check(accel_v, dt, g, stat, errmsg)
-            if (stat /= SEISPULSE_SUCCESS) then
-                if (present(errmsg)) errmsg = 'accel_v: '//errmsg
-                return
-            end if
-            call record_in_si(accel_v, g, st%acc_v, stat, errmsg)
-            if (stat /= SEISPULSE_SUCCESS) then
-                if (present(errmsg)) errmsg = 'accel_v: '//errmsg
-                return
-            end if
+            ! finite samples, far from overflow in g accel_v(i) (dt and g checked above)
+            do i = 1, size(accel_v)
+                if (.not. abs(accel_v(i)) <= 0.5_dp * (huge(g) / max(g, 1.0_dp))) then
+                    call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel_v(' &
+                                   //int_str(i)//') = '//real_str(accel_v(i)) &
+                                   //': must be a finite number (g; g = '//real_str(g) &
+                                   //' m/s^2)')
+                    return
+                end if
+            end do
+            st%acc_v = g * accel_v
             do i = 1, size(accel_v)
                 if (st%acc_v(i) < -blk%g) then
                     call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel_v(' &
