@@ -11,6 +11,10 @@
 !> (theta = 0, doc/rocking.md section 6) the rotation carries on about the other corner, s -> -s,
 !> and the angular velocity is multiplied by e (Housner: e = 1 - 1.5 sin^2(alpha) for a
 !> uniform rectangle, 1 - (2 m R^2/I_o) sin^2(alpha) for a symmetric body).
+!> Vertical ground acceleration a_v (optional; doc/rocking.md section 7): gravity g + a_v,
+!>     theta'' = -p^2 [(1 + a_v/g) sin(alpha s - theta) - (a_g/g) cos(alpha s - theta)]  (R.9)
+!> with a_v = kv a_g under a pulse (constant uplift thresholds, (R.11)) or a second record
+!> (a line on each sample step, so the uplift function (R.10) is a line there).
 !>
 !> Overturning, as defined here (doc/rocking.md section 3: theta = alpha is only the static limit).
 !> - During the excitation the ground may still bring a block back from beyond
