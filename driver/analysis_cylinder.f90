@@ -50,8 +50,8 @@ module driver_cylinder
 
     character(len=16), parameter :: body_keys(12) = [character(len=16) :: 'shape', 'r', &
         'b', 'r_inner', 'h', 'mass', 'j_o', 'j_axis', 'g', 'e', 'model', 'equivalent_angle']
-    character(len=17), parameter :: cylinder_keys(12) = [character(len=17) :: 'what', &
-        't_max', 'rtol', 't_end', 'npts', 'dt', 'theta', 'theta_range', 'theta_count', &
+    character(len=17), parameter :: cylinder_keys(13) = [character(len=17) :: 'what', &
+        't_max', 'rtol', 't_end', 'npts', 'dt', 'kv', 'theta', 'theta_range', 'theta_count', &
         'theta_ratio', 'theta_ratio_range', 'theta_ratio_count']
     character(len=13), parameter :: map_keys(19) = [character(len=13) :: 'axes', 'kind', &
         'beta', 'full', 'peak_frac', 't0_periods', 'freq_ratio', 'freq_range', 'freq_count', &
@@ -86,6 +86,7 @@ module driver_cylinder
     real(dp) :: r, b, r_inner, h, mass, j_o, j_axis, g, e, equivalent_angle
     character(len=32) :: what
     real(dp) :: t_max, rtol, t_end, dt
+    real(dp) :: kv       !! vertical ground acceleration a_v = kv a_g (doc/rocking.md section 7)
     integer :: npts
     real(dp) :: theta(max_list), theta_range(2), theta_ratio(max_list), theta_ratio_range(2)
     integer :: theta_count, theta_ratio_count
@@ -96,8 +97,8 @@ module driver_cylinder
     real(dp) :: freq_hz(max_list), freq_hz_range(2), pga(max_list), pga_range(2)
     integer :: freq_count, amp_count, freq_hz_count, pga_count
     namelist /body/ shape, r, b, r_inner, h, mass, j_o, j_axis, g, e, model, equivalent_angle
-    namelist /cylinder/ what, t_max, rtol, t_end, npts, dt, theta, theta_range, theta_count, &
-        theta_ratio, theta_ratio_range, theta_ratio_count
+    namelist /cylinder/ what, t_max, rtol, t_end, npts, dt, kv, theta, theta_range, &
+        theta_count, theta_ratio, theta_ratio_range, theta_ratio_count
     namelist /map/ axes, kind, beta, full, peak_frac, t0_periods, freq_ratio, freq_range, &
         freq_count, amp_ratio, amp_range, amp_count, freq_hz, freq_hz_range, freq_hz_count, &
         pga, pga_range, pga_count, compare_block
@@ -137,6 +138,7 @@ contains
         what = 'props'
         t_max = ieee_value(t_max, ieee_positive_inf)
         rtol = 1.0e-12_dp
+        kv = 0.0_dp       ! no vertical ground acceleration
         t_end = nan       ! NaN: 1.25 x the end of the motion, at least the excitation's
         npts = 0          ! neither dt nor npts: 1001 points
         dt = 0.0_dp
@@ -380,6 +382,16 @@ contains
         end if
         if (.not. in_closed(rtol, 1.0e-14_dp, 1.0e-3_dp)) then
             errmsg = where//'rtol = '//real_str(rtol)//': must be in [1e-14, 1e-3]'
+            return
+        end if
+        if (task /= 'history' .and. given(gc, 'kv')) then
+            errmsg = where//'kv: only with what = ''history'' (a vertical ground ' &
+                     //'acceleration a_v = kv a_g during the motion)'
+            return
+        end if
+        if (.not. abs(kv) <= huge(kv)) then
+            errmsg = where//'kv = '//real_str(kv)//': must be a finite number (vertical ' &
+                     //'ground acceleration a_v = kv a_g)'
             return
         end if
         if (task == 'history') call check_time_grid(where, gc, t_end, dt, npts, errmsg)
@@ -782,6 +794,10 @@ contains
         lines(2) = body_line(s)
         lines(3) = 'uplift at |a_g| > g tan(theta_c) (nonlinear) or g theta_c ' &
                    //'(linearized); a_g > 0 drives theta > 0'
+        if (abs(kv) > 0.0_dp) lines(3) = 'vertical ground acceleration a_v = kv a_g, kv = ' &
+            //real_str(kv)//' (doc/rocking.md section 7): uplift at a_g > g t/(1 - kv t) or ' &
+            //'a_g < -g t/(1 + kv t), t = tan(theta_c) (nonlinear) or theta_c ' &
+            //'(linearized); a_g > 0 drives theta > 0'
         lines(4) = code_legend('outcome', outcome_names)
     end subroutine history_comments
 
@@ -799,7 +815,7 @@ contains
         call echo(s)
         stat = 1
         msg = ''
-        call rock_pulse(s%blk, s%pin%p, run, i, msg, t_max=t_max, rtol=rtol)
+        call rock_pulse(s%blk, s%pin%p, run, i, msg, t_max=t_max, rtol=rtol, kv=kv)
         if (i /= SEISPULSE_SUCCESS) then
             errmsg = locate_message(path, trim(msg), s)
             return
@@ -821,7 +837,7 @@ contains
         n = size(t)
         allocate(table(n, 4), v(n), d(n))
         call rock_pulse(s%blk, s%pin%p, run, i, msg, t_grid=t, theta_grid=table(:, 3), &
-                        omega_grid=table(:, 4), t_max=t_max, rtol=rtol)
+                        omega_grid=table(:, 4), t_max=t_max, rtol=rtol, kv=kv)
         if (i == SEISPULSE_SUCCESS) call pulse_eval(s%pin%p, t, table(:, 2), v, d, i, msg)
         if (i /= SEISPULSE_SUCCESS) then
             errmsg = locate_message(path, trim(msg), s)
@@ -901,7 +917,7 @@ contains
         character(len=512) :: msg, files(2), files2(2)
         character(len=1024), allocatable :: comments(:)
         character(len=256), allocatable :: labels(:), hlabels(:)
-        real(dp), allocatable :: accel(:), t(:), summary(:, :), hist(:, :), part(:, :)
+        real(dp), allocatable :: accel(:), av(:), t(:), summary(:, :), hist(:, :), part(:, :)
         real(dp) :: t_last, nan
         integer :: nrec, ir, i, st, nfailed
         logical, allocatable :: failed(:)
@@ -921,8 +937,11 @@ contains
             failed(ir) = .not. outs(ir)%ok
             if (outs(ir)%ok) then
                 msg = ''
+                ! a_v = kv a_g; not allocated (kv = 0): no vertical record (not present)
+                if (allocated(av)) deallocate(av)
+                if (abs(kv) > 0.0_dp) av = kv * accel
                 call rock_record(s%blk, accel, outs(ir)%dt, s%body%g, run, st, msg, &
-                                 t_max=t_max, rtol=rtol)
+                                 t_max=t_max, rtol=rtol, accel_v=av)
                 if (st == SEISPULSE_SUCCESS) then
                     t_last = t_end
                     if (ieee_is_nan(t_end)) then
@@ -944,7 +963,8 @@ contains
                     part(:, 2) = s%body%g * record_at(accel, outs(ir)%dt, t)
                     call rock_record(s%blk, accel, outs(ir)%dt, s%body%g, run, st, msg, &
                                      t_grid=t, theta_grid=part(:, 3), &
-                                     omega_grid=part(:, 4), t_max=t_max, rtol=rtol)
+                                     omega_grid=part(:, 4), t_max=t_max, rtol=rtol, &
+                                     accel_v=av)
                 end if
                 if (st /= SEISPULSE_SUCCESS) then
                     failed(ir) = .true.

@@ -335,6 +335,39 @@ def test_history_on_records(driver, tmp_path):
     assert n == len(h_tab["t"]) - 1 and np.isnan(h_tab["theta"][-1])
 
 
+def test_vertical_acceleration(driver, tmp_path):
+    """kv (a_v = kv a_g, doc/rocking.md section 7) under a pulse and under a record: the
+    history is seispulse.rocking's with kv, and with accel_v = kv x the record, for the
+    symmetric block of the body; kv changes the answer."""
+    from seispulse import pulse as sp_pulse
+    from seispulse import rocking as sp_rocking
+    r, h = 0.3, 1.2
+    ref = solid(r, h)
+    blk = sp_rocking.symmetric_block(ref["R"], ref["theta_c"], ref["J_o"] / ref["R"]**2)
+    t = np.linspace(0.0, 3.0, 61)
+    pul = sp_pulse.define("sine_cycle", amp=0.6, amp_unit="g", period=0.8)
+    out = cylinder(driver, tmp_path, f"r={r}, h={h}", "what='history', kv=0.4, t_end=3.0, "
+                   "npts=61", "&pulse kind='sine_cycle', amp=0.6, amp_unit='g', "
+                   "duration=0.8 /\n", output="p")
+    run_kv = sp_rocking.simulate(blk, pul, t=t, kv=0.4)
+    run_0 = sp_rocking.simulate(blk, pul, t=t)
+    np.testing.assert_allclose(out["cylinder_history"]["theta"], run_kv.theta, rtol=1e-9,
+                               atol=1e-12)
+    assert np.max(np.abs(run_kv.theta - run_0.theta)) > 1e-3
+    dt = 0.02
+    tt = np.arange(0, 2.0, dt)
+    acc = 0.6 * np.sin(2 * np.pi * tt / 0.8) * (tt < 0.8)
+    (tmp_path / "rec.txt").write_text("\n".join(repr(float(x)) for x in acc) + "\n")
+    out = cylinder(driver, tmp_path, f"r={r}, h={h}", "what='history', kv=-0.3, t_end=3.0, "
+                   "npts=61", f"&records files='rec.txt', format='column', dt={dt} /\n",
+                   output="q")
+    run_rec = sp_rocking.simulate(blk, accel=acc * G, dt=dt, t=t, kv=0.0,
+                                  accel_v=-0.3 * acc * G)
+    np.testing.assert_allclose(out["cylinder_history"]["theta"], run_rec.theta, rtol=1e-9,
+                               atol=1e-12)
+    assert OUTCOMES[int(out["cylinder"]["outcome"][0])] == run_rec.outcome
+
+
 # ---------------------------------------------------------------- errors
 
 ERRORS = [
@@ -406,6 +439,10 @@ ERRORS = [
      ["&body", "radius: unknown key"]),
     ("r=1.0, h=2.0", "what='history', rtol=0.1", "&pulse amp=3.0 /\n",
      ["&cylinder", "rtol = 0.1", "[1e-14, 1e-3]"]),
+    ("r=1.0, h=2.0, mass=1.0", "what='pushover', kv=0.2", "",
+     ["&cylinder", "kv: only with what = 'history'"]),
+    ("r=1.0, h=2.0", "what='history', kv=-3.0", "&pulse amp=5.0 /\n",
+     ["&cylinder", "kv = -3", "below -g"]),
 ]
 
 
