@@ -63,6 +63,13 @@ module seispulse
                                   BODY_HOLLOW_CYLINDER, BODY_CUSTOM, BODY_BLOCK, &
                                   MAP_AXES_DIMENSIONLESS, MAP_AXES_DIMENSIONAL, MAP_DIFF_SAME, &
                                   MAP_DIFF_ONLY_FIRST, MAP_DIFF_ONLY_SECOND, MAP_DIFF_OTHER_MODE
+    use seispulse_cylinder_roll, only: cylinder_roll, roll_run_t, roll_output_name, &
+                                       roll_outcome_name, ROLL_NOUT, ROLL_OUT_THETA, &
+                                       ROLL_OUT_PSI, ROLL_OUT_SPIN, ROLL_OUT_THETA_RATE, &
+                                       ROLL_OUT_PSI_RATE, ROLL_OUT_SPIN_RATE, ROLL_OUT_XP, &
+                                       ROLL_OUT_YP, ROLL_OUT_XG, ROLL_OUT_YG, ROLL_OUT_NORMAL, &
+                                       ROLL_OUT_FRICTION, ROLL_OUT_ENERGY, ROLL_RUN_REST, &
+                                       ROLL_RUN_NO_UPLIFT, ROLL_RUN_OVERTURN, ROLL_RUN_TIME_LIMIT
     use seispulse_records, only: record_t, read_record, record_pga, pga_scale_factor, &
                                  ground_motion, record_format_name, record_units_name, &
                                  RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, &

@@ -2,7 +2,8 @@
 module test_lapack
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_SINGULAR, SEISPULSE_INVALID_INPUT
-    use seispulse_lapack, only: solve_linear
+    use seispulse_lapack, only: solve_linear, solve_linear_inplace
+    use seispulse_kinds, only: ik
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
     private
@@ -15,7 +16,9 @@ contains
         type(unit_test), allocatable, intent(out) :: tests(:)
         tests = [new_unittest('solve 3x3', test_solve), &
                  new_unittest('singular matrix is a status', test_singular), &
-                 new_unittest('shape mismatch is a status', test_shapes)]
+                 new_unittest('shape mismatch is a status', test_shapes), &
+                 new_unittest('in-place solve 3x3', test_inplace), &
+                 new_unittest('in-place: singular and shape mismatch', test_inplace_errors)]
     end subroutine collect_lapack
 
     subroutine test_solve(error)
@@ -50,5 +53,57 @@ contains
         call solve_linear(a, [1.0_dp, 1.0_dp], x, stat)
         call check(error, stat, SEISPULSE_INVALID_INPUT, 'status')
     end subroutine test_shapes
+
+    !> The caller-owned variant: same system, solution in b, LU factors in a (L U = P A).
+    subroutine test_inplace(error)
+        type(test_error), allocatable, intent(out) :: error
+        real(dp) :: a(3, 3), a0(3, 3), b(3), l(3, 3), u(3, 3), pa(3, 3), row(3)
+        integer(ik) :: ipiv(3)
+        integer :: stat, i
+        a0 = reshape([4.0_dp, 2.0_dp, 1.0_dp, 1.0_dp, 5.0_dp, 2.0_dp, 0.0_dp, 1.0_dp, 3.0_dp], &
+                     [3, 3])
+        a = a0
+        b = [2.0_dp, -5.0_dp, 6.0_dp]
+        call solve_linear_inplace(a, b, ipiv, stat)
+        call check(error, stat == SEISPULSE_SUCCESS, 'status')
+        if (allocated(error)) return
+        call check(error, b, [1.0_dp, -2.0_dp, 3.0_dp], rtol=1.0e-14_dp, atol=1.0e-14_dp)
+        if (allocated(error)) return
+        ! the factors: unit lower L and upper U with L U = A with rows swapped as ipiv says
+        l = 0.0_dp
+        u = 0.0_dp
+        do i = 1, 3
+            l(i, i) = 1.0_dp
+            l(i + 1:, i) = a(i + 1:, i)
+            u(i, i:) = a(i, i:)
+        end do
+        pa = a0
+        do i = 1, 3
+            row = pa(i, :)
+            pa(i, :) = pa(ipiv(i), :)
+            pa(ipiv(i), :) = row
+        end do
+        call check(error, reshape(matmul(l, u), [9]), reshape(pa, [9]), rtol=1.0e-14_dp, &
+                   atol=1.0e-14_dp)
+    end subroutine test_inplace
+
+    subroutine test_inplace_errors(error)
+        type(test_error), allocatable, intent(out) :: error
+        real(dp) :: a(2, 2), b(2), a3(3, 3)
+        integer(ik) :: ipiv(2)
+        integer :: stat
+        character(len=100) :: msg
+        a = reshape([1.0_dp, 2.0_dp, 2.0_dp, 4.0_dp], [2, 2])
+        b = 1.0_dp
+        msg = ''
+        call solve_linear_inplace(a, b, ipiv, stat, msg)
+        call check(error, stat, SEISPULSE_SINGULAR, 'singular status')
+        if (allocated(error)) return
+        call check(error, index(msg, 'singular') > 0, 'message names the problem: '//trim(msg))
+        if (allocated(error)) return
+        a3 = 1.0_dp
+        call solve_linear_inplace(a3, b, ipiv, stat, msg)
+        call check(error, stat, SEISPULSE_INVALID_INPUT, 'shape status')
+    end subroutine test_inplace_errors
 
 end module test_lapack

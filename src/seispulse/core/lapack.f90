@@ -6,7 +6,7 @@ module seispulse_lapack
     implicit none
     private
 
-    public :: solve_linear
+    public :: solve_linear, solve_linear_inplace
 
     interface
         !> LU factorisation and solution of A X = B (LAPACK).
@@ -46,6 +46,26 @@ contains
         call handle_gesv_info(info, stat, errmsg)
         if (stat == SEISPULSE_SUCCESS) x = rhs(:, 1)
     end subroutine solve_linear
+
+    !> Solve A x = b in place on arrays the caller owns (LAPACK dgesv; no allocation: for
+    !> small systems solved many times, e.g. once per right-hand-side evaluation of an ODE).
+    !> On return `a` holds the LU factors and `b` the solution x (undefined if stat /= 0).
+    subroutine solve_linear_inplace(a, b, ipiv, stat, errmsg)
+        real(dp), contiguous, intent(inout) :: a(:, :)        !! n x n in, LU factors out
+        real(dp), contiguous, intent(inout) :: b(:)           !! right-hand side in (n), x out
+        integer(ik), contiguous, intent(out) :: ipiv(:)       !! pivot indices, n
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        integer(ik) :: n, info
+        n = int(size(b), ik)
+        if (size(a, 1) /= n .or. size(a, 2) /= n .or. size(ipiv) /= n) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'a: must be square with the length of b and ipiv')
+            return
+        end if
+        call dgesv(n, 1_ik, a, max(1_ik, n), ipiv, b, max(1_ik, n), info)
+        call handle_gesv_info(info, stat, errmsg)
+    end subroutine solve_linear_inplace
 
     !> dgesv: info < 0 is our bug (bad argument), info > 0 a singular matrix.
     subroutine handle_gesv_info(info, stat, errmsg)
