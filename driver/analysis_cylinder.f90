@@ -5,15 +5,20 @@
 !> Groups: &body (the body, its restitution and model), &cylinder (what to compute, run
 !> limits, the pushover grid, the history grid), &pulse (driver_pulse_group) or &records
 !> (driver_records) for a history, &map (the pulse family and the grids of an
-!> overturning map). Five modes (`what`):
+!> overturning map), &roll (the initial state and the pulse direction of 'roll'). Five
+!> modes (`what`):
 !>   * 'props': <output>_cylinder_props, the body and its equivalent body;
 !>   * 'pushover': <output>_cylinder_pushover, F, M, M/(m g r) against theta;
 !>   * 'history': <output>_cylinder (summary) and <output>_cylinder_history, planar
 !>     rocking under one pulse or each record;
 !>   * 'map': <output>_cylinder_map, an overturning map on either axis system, with the
-!>     equivalent block's map and the difference map on request.
-!> The numbers come from seispulse_cylinder (properties, pushover, maps) and
-!> seispulse_rocking_sim (the integrator); the driver only reads, checks, converts units
+!>     equivalent block's map and the difference map on request;
+!>   * 'roll': <output>_cylinder_roll (summary) and <output>_cylinder_roll_history, the
+!>     3-D rocking with rolling of a circular cylinder on its rim ([KM90]) under a pulse
+!>     along a direction, one or two records (x, y), or free from an initial state
+!>     (&roll).
+!> The numbers come from seispulse_cylinder (properties, pushover, maps),
+!> seispulse_rocking_sim (the planar integrator) and seispulse_cylinder_roll (rolling); the driver only reads, checks, converts units
 !> and writes. Every table is computed before the first is written.
 module driver_cylinder
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
@@ -28,7 +33,9 @@ module driver_cylinder
                          equivalent_cylinder, equivalent_block, rigid_pushover, &
                          normalized_pushover, body_overturning_map, map_difference, &
                          BODY_SOLID_CYLINDER, BODY_HOLLOW_CYLINDER, BODY_CUSTOM, BODY_BLOCK, &
-                         MAP_AXES_DIMENSIONLESS, MAP_AXES_DIMENSIONAL
+                         MAP_AXES_DIMENSIONLESS, MAP_AXES_DIMENSIONAL, cylinder_roll, &
+                         roll_run_t, roll_output_name, roll_outcome_name, ROLL_NOUT, &
+                         ROLL_RUN_TIME_LIMIT
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, list_item, &
                             ROWS_FAILED
@@ -45,8 +52,8 @@ module driver_cylinder
     public :: run_cylinder, cylinder_groups
 
     !> Groups this analysis reads (besides &run).
-    character(len=8), parameter :: cylinder_groups(5) = [character(len=8) :: 'body', &
-        'cylinder', 'pulse', 'records', 'map']
+    character(len=8), parameter :: cylinder_groups(6) = [character(len=8) :: 'body', &
+        'cylinder', 'pulse', 'records', 'map', 'roll']
 
     character(len=16), parameter :: body_keys(12) = [character(len=16) :: 'shape', 'r', &
         'b', 'r_inner', 'h', 'mass', 'j_o', 'j_axis', 'g', 'e', 'model', 'equivalent_angle']
@@ -57,8 +64,13 @@ module driver_cylinder
         'beta', 'full', 'peak_frac', 't0_periods', 'freq_ratio', 'freq_range', 'freq_count', &
         'amp_ratio', 'amp_range', 'amp_count', 'freq_hz', 'freq_hz_range', 'freq_hz_count', &
         'pga', 'pga_range', 'pga_count', 'compare_block']
-    character(len=8), parameter :: what_names(4) = [character(len=8) :: 'props', &
-        'pushover', 'history', 'map']
+    character(len=8), parameter :: what_names(5) = [character(len=8) :: 'props', &
+        'pushover', 'history', 'map', 'roll']
+    character(len=12), parameter :: roll_keys(7) = [character(len=12) :: 'theta0', 'psi0', &
+        'spin0', 'theta_rate0', 'psi_rate0', 'spin_rate0', 'direction']
+    !> Units of the ROLL_OUT_* columns of cylinder_roll.
+    character(len=5), parameter :: roll_units(13) = [character(len=5) :: 'rad', 'rad', &
+        'rad', 'rad/s', 'rad/s', 'rad/s', 'm', 'm', 'm', 'm', 'N', '-', 'J']
     !> In the order of the BODY_* codes.
     character(len=6), parameter :: shape_names(4) = [character(len=6) :: 'solid', 'hollow', &
         'custom', 'block']
@@ -93,6 +105,7 @@ module driver_cylinder
     character(len=32) :: axes, kind
     real(dp) :: beta, peak_frac, t0_periods
     logical :: full, compare_block
+    real(dp) :: theta0, psi0, spin0, theta_rate0, psi_rate0, spin_rate0, direction
     real(dp) :: freq_ratio(max_list), freq_range(2), amp_ratio(max_list), amp_range(2)
     real(dp) :: freq_hz(max_list), freq_hz_range(2), pga(max_list), pga_range(2)
     integer :: freq_count, amp_count, freq_hz_count, pga_count
@@ -102,6 +115,7 @@ module driver_cylinder
     namelist /map/ axes, kind, beta, full, peak_frac, t0_periods, freq_ratio, freq_range, &
         freq_count, amp_ratio, amp_range, amp_count, freq_hz, freq_hz_range, freq_hz_count, &
         pga, pga_range, pga_count, compare_block
+    namelist /roll/ theta0, psi0, spin0, theta_rate0, psi_rate0, spin_rate0, direction
 
     !> The checked input of a run.
     type :: setup_t
@@ -115,7 +129,7 @@ module driver_cylinder
         type(pulse_input_t) :: pin                !! the pulse of a history
         type(record_in_t), allocatable :: recs(:) !! the records of a history
         logical :: slammer_rounding = .false.
-        type(nml_group) :: gb, gc, gm, gr         !! &body, &cylinder, &map, &records
+        type(nml_group) :: gb, gc, gm, gr, gl     !! &body, &cylinder, &map, &records, &roll
     end type setup_t
 
 contains
@@ -167,6 +181,13 @@ contains
         pga = nan
         pga_range = nan
         pga_count = 21
+        theta0 = 0.0_dp
+        psi0 = 0.0_dp
+        spin0 = 0.0_dp
+        theta_rate0 = 0.0_dp
+        psi_rate0 = 0.0_dp
+        spin_rate0 = 0.0_dp
+        direction = 0.0_dp
     end subroutine set_defaults
 
     subroutine read_body(unit, text, ios, iomsg)
@@ -205,6 +226,18 @@ contains
         end if
     end subroutine read_map
 
+    subroutine read_roll(unit, text, ios, iomsg)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: text
+        integer, intent(out) :: ios
+        character(len=*), intent(inout) :: iomsg
+        if (len(text) > 0) then
+            read(text, nml=roll, iostat=ios, iomsg=iomsg)
+        else
+            read(unit, nml=roll, iostat=ios, iomsg=iomsg)
+        end if
+    end subroutine read_roll
+
     !> Read the groups, compute, write the tables; print where they went. stat: 0,
     !> ROWS_FAILED (a history on records: the tables are written, some records failed;
     !> errmsg says which), or > 0 for an input or output error (nothing written).
@@ -232,6 +265,8 @@ contains
         call read_optional(path, groups, 'records', records_keys, read_records, s%gr, stat, &
                            errmsg)
         if (stat /= 0) return
+        call read_optional(path, groups, 'roll', roll_keys, read_roll, s%gl, stat, errmsg)
+        if (stat /= 0) return
         stat = 1
 
         ! --- what to compute, and which groups go with it
@@ -249,11 +284,11 @@ contains
         ! --- the excitation of a history, then the body (which uses its g)
         g_from_pulse = .false.
         g_pulse = 9.80665_dp
-        if (s%task == 'history') then
+        if (s%task == 'history' .or. s%task == 'roll') then
             if (s%use_records) then
                 call check_records(path, s%gr, s%recs, s%slammer_rounding, errmsg)
                 if (len(errmsg) > 0) return
-            else
+            else if (find_group(groups, 'pulse') > 0) then
                 call build_pulse(path, s%pin, stat, errmsg, g_used=.true.)
                 if (stat /= 0) return
                 stat = 1
@@ -275,8 +310,10 @@ contains
             else
                 call do_history_pulse(path, prefix, s, stat, errmsg)
             end if
-        case default
+        case ('map')
             call do_map(path, prefix, s, stat, errmsg)
+        case default
+            call do_roll(path, prefix, s, stat, errmsg)
         end select
     end subroutine run_cylinder
 
@@ -305,7 +342,17 @@ contains
                      //s%task//''')'
             return
         end if
+        if (s%task /= 'roll' .and. find_group(groups, 'roll') > 0) then
+            errmsg = located(path, s%gl)//'only with what = ''roll'' (&cylinder; now what = ''' &
+                     //s%task//''')'
+            return
+        end if
         select case (s%task)
+        case ('roll')
+            if (has_pulse .and. has_records) errmsg = located(path, s%gr)//'not with ' &
+                //'&pulse (the base moves under one pulse or under records: give one of ' &
+                //'the two groups, or neither for free rocking from &roll)'
+            s%use_records = has_records
         case ('history')
             if (has_pulse .and. has_records) then
                 errmsg = located(path, s%gr)//'not with &pulse (a history runs under one ' &
@@ -346,11 +393,11 @@ contains
 
         where = located(path, gc)
         errmsg = ''
-        if (task /= 'history') then
+        if (task /= 'history' .and. task /= 'roll') then
             do i = 1, size(grid_keys)
                 if (given(gc, trim(grid_keys(i)))) then
-                    errmsg = where//trim(grid_keys(i))//': only with what = ''history'' ' &
-                             //'(the grid of the history table)'
+                    errmsg = where//trim(grid_keys(i))//': only with what = ''history'' or ' &
+                             //'''roll'' (the grid of the history table)'
                     return
                 end if
             end do
@@ -364,15 +411,15 @@ contains
                 end if
             end do
         end if
-        if (task /= 'history' .and. given(gc, 't_max')) then
-            errmsg = where//'t_max: only with what = ''history'''
+        if (task /= 'history' .and. task /= 'roll' .and. given(gc, 't_max')) then
+            errmsg = where//'t_max: only with what = ''history'' or ''roll'''
             if (task == 'map') errmsg = where//'t_max: not with what = ''map'' (each cell ' &
                                         //'runs until its class is known)'
             return
         end if
         if ((task == 'props' .or. task == 'pushover') .and. given(gc, 'rtol')) then
-            errmsg = where//'rtol: only with what = ''history'' or ''map'' (the tolerance ' &
-                     //'of the integration)'
+            errmsg = where//'rtol: only with what = ''history'', ''map'' or ''roll'' (the ' &
+                     //'tolerance of the integration)'
             return
         end if
         if (.not. positive(t_max)) then
@@ -394,7 +441,8 @@ contains
                      //'ground acceleration a_v = kv a_g)'
             return
         end if
-        if (task == 'history') call check_time_grid(where, gc, t_end, dt, npts, errmsg)
+        if (task == 'history' .or. task == 'roll') call check_time_grid(where, gc, t_end, &
+                                                                        dt, npts, errmsg)
     end subroutine check_cylinder
 
     !> Check &body and build the body (and its planar rocking model); g_pulse is the
@@ -450,8 +498,18 @@ contains
         if (len(errmsg) > 0) return
         call required('h', 'the height of the centre of mass above the base, m')
         if (len(errmsg) > 0) return
-        if (s%task == 'props' .or. s%task == 'pushover') then
+        if (s%task == 'props' .or. s%task == 'pushover' .or. s%task == 'roll') then
             call required('mass', 'kg; the forces and moments scale with it')
+            if (len(errmsg) > 0) return
+        end if
+        if (s%task == 'roll') then
+            if (code == BODY_BLOCK) then
+                errmsg = where//'shape = ''block'': what = ''roll'' is for a body of ' &
+                         //'revolution rolling on its rim (solid, hollow, custom)'
+            else if (code == BODY_CUSTOM) then
+                call required('j_axis', 'the rolling needs J about the axis of symmetry, ' &
+                              //'kg m2')
+            end if
             if (len(errmsg) > 0) return
         end if
         m_used = mass
@@ -509,6 +567,11 @@ contains
             return
         end select
         model = name
+        if (s%task == 'roll' .and. s%linearized) then
+            errmsg = where//'model = ''linearized'': what = ''roll'' has the nonlinear ' &
+                     //'model only'
+            return
+        end if
         if (given(s%gb, 'equivalent_angle')) then
             if (.not. in_open(equivalent_angle, 0.0_dp, 0.5_dp * pi)) then
                 errmsg = where//'equivalent_angle = '//real_str(equivalent_angle) &
@@ -1349,6 +1412,251 @@ contains
     end function template_text
 
     ! ------------------------------------------------------------------------------
+    ! Rocking with rolling (3-D)
+    ! ------------------------------------------------------------------------------
+
+    !> The 3-D motion of a circular cylinder rocking and rolling on its rim without slip
+    !> (seispulse_cylinder_roll, [KM90]): under the pulse of &pulse along `direction`,
+    !> under one record (x) or two (x, y) of &records, or free from the state of &roll.
+    subroutine do_roll(path, prefix, s, stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(setup_t), intent(in) :: s
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        integer, parameter :: nsum = 14
+        type(roll_run_t) :: run
+        type(record_out_t) :: outs(2)
+        type(pulse_t), allocatable :: pl
+        character(len=:), allocatable :: where, excitation
+        character(len=512) :: msg, files(2), files2(2), comments(9)
+        character(len=16) :: names(3 + ROLL_NOUT)
+        character(len=6) :: units(3 + ROLL_NOUT), onames(0:3)
+        real(dp), allocatable :: ax(:), ay(:), accel(:), t(:), hist(:, :), table(:, :), &
+                                 v(:), d(:), a(:), rt
+        real(dp) :: one_time(1), one_hist(ROLL_NOUT, 1), t_last, t_exc, rec_dt, row(nsum), nan, &
+                    t_run
+        integer :: nrec, ir, k, st, n
+        logical :: echoed
+
+        nan = ieee_value(nan, ieee_quiet_nan)
+        echoed = .false.
+        where = located(path, s%gc)
+        stat = 1
+        msg = ''
+        rec_dt = 1.0_dp
+        t_exc = 0.0_dp
+        ! --- the excitation
+        if (s%use_records) then
+            nrec = size(s%recs)
+            if (nrec > 2) then
+                errmsg = located(path, s%gr)//'files: what = ''roll'' takes one record (the ' &
+                         //'x component) or two (x, y), not '//int_str(nrec)
+                return
+            end if
+            do ir = 1, nrec
+                call load_record(located(path, s%gr), s%recs(ir), ir, nrec, 'cylinder', &
+                                 s%slammer_rounding, outs(ir), accel)
+                if (.not. outs(ir)%ok) then
+                    errmsg = located(path, s%gr)//list_item('files', ir)//' = ''' &
+                             //s%recs(ir)%file//''': '//outs(ir)%message
+                    return
+                end if
+                if (ir == 1) then
+                    ax = accel
+                    rec_dt = outs(1)%dt
+                else
+                    ay = accel
+                end if
+            end do
+            if (nrec == 2) then
+                if (abs(outs(2)%dt - outs(1)%dt) > 0.0_dp) then
+                    errmsg = located(path, s%gr)//'files: the two components have different ' &
+                             //'time steps ('//real_str(outs(1)%dt)//' s, ' &
+                             //real_str(outs(2)%dt)//' s)'
+                    return
+                end if
+                ! the shorter one is 0 after its last sample
+                n = max(size(ax), size(ay))
+                ax = [ax, spread(0.0_dp, 1, n - size(ax))]
+                ay = [ay, spread(0.0_dp, 1, n - size(ay))]
+            else
+                allocate(ay(size(ax)))
+                ay = 0.0_dp
+            end if
+            t_exc = rec_dt * real(size(ax) - 1, dp)
+            excitation = 'records (x: '//outs(1)%name
+            if (nrec == 2) excitation = excitation//', y: '//outs(2)%name
+            excitation = excitation//'; in g, linear in between, 0 after the last sample)'
+        else if (s%pin%group%line > 0) then
+            pl = s%pin%p
+            t_exc = pulse_end(s%pin)
+            excitation = pulse_kind_name(s%pin%code)//' pulse along direction = ' &
+                         //real_str(direction)//' rad from the x axis'
+        else
+            if (.not. (abs(theta0) > 0.0_dp .or. abs(theta_rate0) > 0.0_dp)) then
+                if (s%gl%line > 0) then
+                    errmsg = located(path, s%gl)//'theta0, theta_rate0: the body starts ' &
+                             //'upright at rest and nothing moves the base (give &pulse, ' &
+                             //'&records, or an initial tilt or rate)'
+                else
+                    errmsg = path//': &pulse: missing group (what = ''roll'' needs an ' &
+                             //'excitation, &pulse or &records, or an initial state in &roll)'
+                end if
+                return
+            end if
+            excitation = 'no ground motion (free rocking from the initial state)'
+        end if
+        if (given(s%gl, 'direction') .and. .not. allocated(pl)) write(error_unit, '(a)') &
+            'warning: '//located(path, s%gl)//'direction: not used without &pulse (records ' &
+            //'give x and y)'
+        if (given(s%gc, 'rtol')) rt = rtol
+        ! the end of the run: t_max, else t_end, else the excitation and 20 periods 2 pi/p
+        ! (with spin the body may roll round its rim for ever without an impact)
+        t_run = t_max
+        if (.not. given(s%gc, 't_max')) then
+            if (ieee_is_nan(t_end)) then
+                t_run = t_exc + 20.0_dp * (2.0_dp * pi / s%body%p)
+            else
+                t_run = t_end
+            end if
+        end if
+
+        ! --- the grid: up to t_end, or past the end of the motion
+        t_last = t_end
+        if (ieee_is_nan(t_end)) then
+            one_time = 0.0_dp
+            call roll_once(one_time, one_hist)
+            if (st /= SEISPULSE_SUCCESS) return
+            if (run%outcome == ROLL_RUN_TIME_LIMIT .and. run%t_end > 0.0_dp) then
+                t_last = run%t_end
+            else
+                t_last = max(1.25_dp * run%t_end, t_exc)
+            end if
+            if (.not. t_last > 0.0_dp) t_last = 1.0_dp       ! nothing moves: a short grid
+        end if
+        call time_grid(t_last, dt, npts, t, errmsg)
+        if (len(errmsg) > 0) then
+            errmsg = where//errmsg
+            return
+        end if
+        n = size(t)
+        allocate(hist(ROLL_NOUT, n), table(n, 3 + ROLL_NOUT), a(n))
+        call roll_once(t, hist)
+        if (st /= SEISPULSE_SUCCESS) return
+        table(:, 1) = t
+        table(:, 2:3) = 0.0_dp
+        if (allocated(pl)) then
+            allocate(v(n), d(n))
+            call pulse_eval(pl, t, a, v, d, st, msg)
+            if (st /= SEISPULSE_SUCCESS) then
+                errmsg = located(path, s%pin%group)//trim(msg)
+                return
+            end if
+            table(:, 2) = a * cos(direction)
+            table(:, 3) = a * sin(direction)
+        else if (s%use_records) then
+            table(:, 2) = s%body%g * record_at(ax, rec_dt, t)
+            table(:, 3) = s%body%g * record_at(ay, rec_dt, t)
+        end if
+        table(:, 4:) = transpose(hist)
+
+        ! --- the summary
+        row = nan
+        row(1:4) = [s%body%theta_c, s%body%p, s%e_run, real(run%outcome, dp)]
+        row(5:7) = [run%t_uplift, real(run%n_impacts, dp), real(run%n_floor, dp)]
+        if (run%n_impacts > 0) row(8) = run%t_impacts(1)
+        row(9:14) = [run%theta_max, run%theta_max / s%body%theta_c, run%friction_max, &
+                     run%t_lift_off, run%energy_drift, run%t_end]
+        do k = 0, 3
+            onames(k) = roll_outcome_name(k)
+        end do
+        comments(1) = 'seispulse analysis cylinder: rocking with rolling on the base rim ' &
+                      //'without slip ([KM90]; seispulse_cylinder_roll) under '//excitation
+        comments(2) = body_line(s)//', J_G = '//real_str(s%body%j_g)//' kg m2, J_axis = ' &
+                      //real_str(s%body%j_axis)//' kg m2, m = '//real_str(s%body%mass)//' kg'
+        comments(3) = 'initial state: theta0 = '//real_str(theta0)//' rad, psi0 = ' &
+                      //real_str(psi0)//' rad, spin0 = '//real_str(spin0)//' rad, rates ' &
+                      //real_str(theta_rate0)//', '//real_str(psi_rate0)//', ' &
+                      //real_str(spin_rate0)//' rad/s'
+        comments(4) = code_legend('outcome', onames)
+        comments(5) = 'theta: tilt (>= 0), psi: heading of the rocking plane (jumps by pi at ' &
+                      //'an impact), spin: about the axis of symmetry; contact point and ' &
+                      //'centre of mass in the ground frame (m), from the centre of mass at (0, 0)'
+        comments(6) = 'friction_demand = |F_t|/N (no slip needs mu >= it); energy: kinetic + ' &
+                      //'potential (J); n_floor: impacts counted by the floor rule; ' &
+                      //'energy_drift: largest |E - E0|/E0 in free flight'
+        comments(7) = 'overturned: theta = pi/2 and the rates 0 after t_end (N, friction, ' &
+                      //'energy NaN); NaN after a time limit; t_lift_off: first N <= 0 (NaN: never)'
+        comments(8) = 'input: '//trim(path)
+        call write_tables(prefix, 'cylinder_roll', comments(1:8), &
+            [character(len=16) :: 'theta_c', 'p', 'e', 'outcome', 't_uplift', 'n_impacts', &
+             'n_floor', 't_impact1', 'theta_max', 'theta_ratio_max', 'friction_max', &
+             't_lift_off', 'energy_drift', 't_end'], &
+            [character(len=6) :: 'rad', 'rad/s', '-', '-', 's', '-', '-', 's', 'rad', '-', &
+             '-', 's', '-', 's'], reshape(row, [1, nsum]), files, stat, errmsg)
+        if (stat /= 0) then
+            errmsg = path//': &run: output: '//errmsg
+            return
+        end if
+        names(1:3) = [character(len=16) :: 't', 'a_x', 'a_y']
+        units(1:3) = [character(len=6) :: 's', 'm/s2', 'm/s2']
+        do k = 1, ROLL_NOUT
+            names(3 + k) = roll_output_name(k)
+            units(3 + k) = roll_units(k)
+        end do
+        comments(9) = 'outcome: '//roll_outcome_name(run%outcome)//', impacts: ' &
+                      //int_str(run%n_impacts)//', theta_max = '//real_str(run%theta_max) &
+                      //' rad, t_end = '//real_str(run%t_end)//' s'
+        call write_tables(prefix, 'cylinder_roll_history', [comments(1:3), comments(5:7), &
+            comments(9), comments(8)], names, units, table, files2, stat, errmsg)
+        if (stat /= 0) then
+            call delete_files(files)
+            errmsg = path//': &run: output: '//errmsg
+            return
+        end if
+        write(output_unit, '(a)') 'cylinder: '//roll_outcome_name(run%outcome)
+        call say_written('cylinder roll summary', files)
+        call say_written('cylinder roll history', files2)
+
+    contains
+
+        !> One run on the grid tg; st and errmsg (located) on failure.
+        subroutine roll_once(tg, hg)
+            real(dp), intent(in) :: tg(:)
+            real(dp), intent(out) :: hg(:, :)
+            character(len=:), allocatable :: key
+            call echo_once()
+            call cylinder_roll(s%body, tg, hg, run, st, msg, theta0=theta0, psi0=psi0, &
+                               spin0=spin0, theta_rate0=theta_rate0, psi_rate0=psi_rate0, &
+                               spin_rate0=spin_rate0, pulse=pl, direction=direction, &
+                               accel_x=ax, accel_y=ay, dt=rec_dt, g_rec=s%body%g, e=s%e_run, &
+                               t_max=t_run, rtol=rt)
+            if (st == SEISPULSE_SUCCESS) return
+            k = scan(msg, ' =:(,')
+            key = ''
+            if (k > 1) key = msg(1:k - 1)
+            if (any(roll_keys == key)) then
+                errmsg = located(path, s%gl)//trim(msg)
+            else if (any(cylinder_keys == key)) then
+                errmsg = located(path, s%gc)//trim(msg)
+            else if (any(pulse_keys == key) .or. key == 'pulse') then
+                errmsg = located(path, s%pin%group)//trim(msg)
+            else if (index(key, 'accel') == 1) then
+                errmsg = located(path, s%gr)//trim(msg)
+            else
+                errmsg = located(path, s%gb)//trim(msg)
+            end if
+        end subroutine roll_once
+
+        subroutine echo_once()
+            if (echoed) return
+            echoed = .true.
+            call echo(s)
+        end subroutine echo_once
+
+    end subroutine do_roll
+
+    ! ------------------------------------------------------------------------------
     ! Helpers
     ! ------------------------------------------------------------------------------
 
@@ -1357,16 +1665,17 @@ contains
     subroutine echo(s)
         type(setup_t), intent(in) :: s
         what = s%task
-        if (s%task == 'history') then
+        if (s%task == 'history' .or. s%task == 'roll') then
             if (s%use_records) then
                 call echo_records(s%recs, s%slammer_rounding)
-            else
+            else if (s%pin%group%line > 0) then
                 call write_pulse_group(output_unit)
             end if
         end if
         write(output_unit, nml=body)
         write(output_unit, nml=cylinder)
         if (s%task == 'map') write(output_unit, nml=map)
+        if (s%task == 'roll') write(output_unit, nml=roll)
     end subroutine echo
 
 end module driver_cylinder

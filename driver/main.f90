@@ -38,10 +38,10 @@ program seispulse_driver
     character(len=10), parameter :: analyses(9) = [character(len=10) :: 'pulse', 'sliding', &
         'rocking', 'newmark', 'sdof', 'sdof_beta', 'sdof_shock', 'walls', 'cylinder']
     !> Every group of any analysis (besides run), for the first check.
-    character(len=12), parameter :: all_groups(18) = [character(len=12) :: 'pulse', 'time', &
+    character(len=12), parameter :: all_groups(19) = [character(len=12) :: 'pulse', 'time', &
         'block', 'method', 'history', 'rocking', 'map', 'records', 'newmark', 'sdof', &
         'sdof_history', 'sdof_beta', 'sdof_shock', 'wall', 'backfill', 'seismic', 'body', &
-        'cylinder']
+        'cylinder', 'roll']
 
     character(len=:), allocatable :: path, errmsg
     character(len=4096) :: arg

@@ -368,6 +368,100 @@ def test_vertical_acceleration(driver, tmp_path):
     assert OUTCOMES[int(out["cylinder"]["outcome"][0])] == run_rec.outcome
 
 
+ROLL_SUMMARY = ["theta_c", "p", "e", "outcome", "t_uplift", "n_impacts", "n_floor",
+                "t_impact1", "theta_max", "theta_ratio_max", "friction_max", "t_lift_off",
+                "energy_drift", "t_end"]
+ROLL_COLUMNS = ["t", "a_x", "a_y", "theta", "psi", "spin", "theta_rate", "psi_rate",
+                "spin_rate", "x_contact", "y_contact", "x_g", "y_g", "normal_force",
+                "friction_demand", "energy"]
+ROLL_UNITS = ["s", "m/s2", "m/s2", "rad", "rad", "rad", "rad/s", "rad/s", "rad/s", "m", "m",
+              "m", "m", "N", "-", "J"]
+ROLL_OUTCOMES = ["rest", "no_uplift", "overturn", "time_limit"]
+
+
+def test_example_roll(driver, source_root, tmp_path):
+    """input/cylinder_roll.nml: a pulse along 0.5 rad and no spin keep the motion in one
+    vertical plane: theta = |theta| of seispulse.rocking's planar history of the
+    cylinder's symmetric block, the heading is the direction -+ pi/2, the ground
+    acceleration and the centre of mass lie along the direction."""
+    from seispulse import pulse as sp_pulse
+    from seispulse import rocking as sp_rocking
+    proc = run_example(driver, source_root, tmp_path, "cylinder_roll.nml")
+    assert "cylinder: overturn" in proc.stdout
+    out = tmp_path / "out"
+    assert header(out / "cylinder_roll_cylinder_roll.csv") == (
+        ROLL_SUMMARY, ["rad", "rad/s", "-", "-", "s", "-", "-", "s", "rad", "-", "-", "s",
+                       "-", "s"])
+    assert header(out / "cylinder_roll_cylinder_roll_history.csv") == (ROLL_COLUMNS,
+                                                                       ROLL_UNITS)
+    s = {k: v[0] for k, v in read_table(out / "cylinder_roll_cylinder_roll.csv").items()}
+    h = read_table(out / "cylinder_roll_cylinder_roll_history.csv")
+    ref = solid(1.0, 3.0)
+    blk = sp_rocking.symmetric_block(ref["R"], ref["theta_c"], ref["J_o"] / ref["R"]**2)
+    planar = sp_rocking.simulate(blk, sp_pulse.define("sine_cycle", amp=0.8, amp_unit="g",
+                                                      period=1.0), t=h["t"])
+    assert ROLL_OUTCOMES[int(s["outcome"])] == "overturn"
+    assert planar.outcome == "overturn_one_impact" and s["n_impacts"] == 1
+    assert s["t_impact1"] == pytest.approx(planar.t_impacts[0], rel=1e-8)
+    assert s["t_end"] == pytest.approx(planar.t_end, rel=1e-8)
+    np.testing.assert_allclose(h["theta"], np.abs(planar.theta), atol=1e-7)
+    up = h["theta"] > 0
+    assert set(np.round(h["psi"][up] - 0.5, 9)) <= {round(-math.pi / 2, 9),
+                                                    round(math.pi / 2, 9)}
+    a = np.hypot(h["a_x"], h["a_y"])
+    np.testing.assert_allclose(h["a_x"], np.sign(h["a_x"]) * a * math.cos(0.5), atol=1e-9)
+    moved = np.hypot(h["x_g"], h["y_g"]) > 1e-6
+    np.testing.assert_allclose(h["y_g"][moved] / h["x_g"][moved], math.tan(0.5), rtol=1e-8)
+    assert np.all(h["friction_demand"][up & (h["normal_force"] > 0)] >= 0)
+
+
+def test_roll_free_energy(driver, tmp_path):
+    """Free rocking from theta0 = 0.2 rad at rest: the planar free rocking of
+    seispulse.rocking (theta = |theta|), and before the first impact the energy is the
+    potential energy at the start, m g R cos(theta_c - theta0)."""
+    from seispulse import rocking as sp_rocking
+    r, h, m = 0.5, 1.5, 20.0
+    ref = solid(r, h, m)
+    out = cylinder(driver, tmp_path, f"r={r}, h={h}, mass={m}",
+                   "what='roll', t_end=3.0, npts=301, rtol=1e-12",
+                   "&roll theta0=0.2 /\n")
+    t = out["cylinder_roll_history"]
+    blk = sp_rocking.symmetric_block(ref["R"], ref["theta_c"], ref["J_o"] / (m * ref["R"]**2))
+    # the planar free rocking of the same body: a zero pulse is no excitation at all
+    planar = sp_rocking.simulate(blk, accel=np.zeros(2), dt=1.0, theta0=0.2, t=t["t"],
+                                 t_max=3.0)
+    np.testing.assert_allclose(t["theta"], np.abs(planar.theta), atol=1e-8)
+    first = out["cylinder_roll"]["t_impact1"][0]
+    before = t["t"] < first
+    e0 = m * G * ref["R"] * math.cos(ref["theta_c"] - 0.2)
+    np.testing.assert_allclose(t["energy"][before], e0, rtol=1e-9)
+    assert out["cylinder_roll"]["n_impacts"][0] >= 1
+
+
+def test_roll_two_components(driver, tmp_path):
+    """Two equal record components x and y: the ground moves along 45 degrees with
+    sqrt(2) times the record; the tilt is the planar history under that record."""
+    from seispulse import rocking as sp_rocking
+    dt = 0.02
+    tt = np.arange(0, 1.6, dt)
+    acc = 0.45 * np.sin(2 * np.pi * tt / 0.8) * (tt < 0.8)
+    text = "\n".join(repr(float(x)) for x in acc) + "\n"
+    (tmp_path / "x.txt").write_text(text)
+    (tmp_path / "y.txt").write_text(text)
+    r, h, m = 0.4, 1.6, 100.0
+    out = cylinder(driver, tmp_path, f"r={r}, h={h}, mass={m}",
+                   "what='roll', t_end=3.0, npts=151, rtol=1e-12",
+                   f"&records files='x.txt', 'y.txt', format='column', dt={dt} /\n")
+    t = out["cylinder_roll_history"]
+    ref = solid(r, h, m)
+    blk = sp_rocking.symmetric_block(ref["R"], ref["theta_c"], ref["J_o"] / (m * ref["R"]**2))
+    planar = sp_rocking.simulate(blk, accel=math.sqrt(2) * acc * G, dt=dt, t=t["t"],
+                                 t_max=3.0)
+    np.testing.assert_allclose(t["theta"], np.abs(planar.theta), atol=1e-8)
+    assert np.max(t["theta"]) > 0.01
+    np.testing.assert_allclose(t["a_x"], t["a_y"], rtol=0, atol=0)
+
+
 # ---------------------------------------------------------------- errors
 
 ERRORS = [
@@ -378,7 +472,7 @@ ERRORS = [
     ("r=1.0, h=2.0", "what='props'", "", ["&body", "mass: missing"]),
     ("r=1.0, h=2.0, mass=-5.0", "what='props'", "", ["&body", "mass = -5", "> 0"]),
     ("r=1.0, h=2.0, mass=1.0", "what='stress'", "",
-     ["case.nml:3:", "&cylinder", "what = 'stress'", "props, pushover, history, map"]),
+     ["case.nml:3:", "&cylinder", "what = 'stress'", "props, pushover, history, map, roll"]),
     ("r=1.0, h=2.0", "what='map'", "&map axes='polar', freq_ratio=1.0, amp_ratio=1.0 /\n",
      ["case.nml:4:", "&map", "axes = 'polar'", "dimensionless, dimensional"]),
     ("shape='hollow', r=1.0, r_inner=1.0, h=2.0, mass=1.0", "what='props'", "",
@@ -439,6 +533,25 @@ ERRORS = [
      ["&body", "radius: unknown key"]),
     ("r=1.0, h=2.0", "what='history', rtol=0.1", "&pulse amp=3.0 /\n",
      ["&cylinder", "rtol = 0.1", "[1e-14, 1e-3]"]),
+    ("shape='block', b=1.0, h=2.0, mass=1.0", "what='roll'", "&roll theta0=0.1 /\n",
+     ["&body", "shape = 'block'", "body of revolution"]),
+    ("shape='custom', r=1.0, h=2.0, mass=1.0, j_o=7.0", "what='roll'",
+     "&roll theta0=0.1 /\n", ["&body", "j_axis: missing"]),
+    ("r=1.0, h=2.0, mass=1.0, model='linearized'", "what='roll'", "&roll theta0=0.1 /\n",
+     ["&body", "model = 'linearized'", "nonlinear model only"]),
+    ("r=1.0, h=2.0", "what='roll'", "&roll theta0=0.1 /\n", ["&body", "mass: missing"]),
+    ("r=1.0, h=2.0, mass=1.0", "what='roll'", "&roll theta0=2.0 /\n",
+     ["case.nml:4:", "&roll", "theta0 = 2", "[0, pi/2)"]),
+    ("r=1.0, h=2.0, mass=1.0", "what='roll'", "&roll psi0=1.0 /\n",
+     ["&roll", "theta0, theta_rate0", "upright at rest"]),
+    ("r=1.0, h=2.0, mass=1.0", "what='roll'", "", ["&pulse: missing group", "&roll"]),
+    ("r=1.0, h=2.0, mass=1.0", "what='roll'",
+     "&records files='a.txt', 'b.txt', 'c.txt', format='column', dt=0.01 /\n",
+     ["&records", "files", "one record", "not 3"]),
+    ("r=1.0, h=2.0", "what='history'", "&pulse amp=3.0 /\n&roll theta0=0.1 /\n",
+     ["&roll", "only with what = 'roll'"]),
+    ("r=1.0, h=2.0, mass=1.0", "what='roll', kv=0.2", "&roll theta0=0.1 /\n",
+     ["&cylinder", "kv: only with what = 'history'"]),
     ("r=1.0, h=2.0, mass=1.0", "what='pushover', kv=0.2", "",
      ["&cylinder", "kv: only with what = 'history'"]),
     ("r=1.0, h=2.0", "what='history', kv=-3.0", "&pulse amp=5.0 /\n",
