@@ -18,8 +18,9 @@
 !>     along a direction, one or two records (x, y), or free from an initial state
 !>     (&roll).
 !> The numbers come from seispulse_cylinder (properties, pushover, maps),
-!> seispulse_rocking_sim (the planar integrator) and seispulse_cylinder_roll (rolling); the driver only reads, checks, converts units
-!> and writes. Every table is computed before the first is written.
+!> seispulse_rocking_sim (the planar integrator) and seispulse_cylinder_roll (rolling); the
+!> driver only reads, checks, converts units and writes. Every table is computed before the
+!> first is written.
 module driver_cylinder
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan, &

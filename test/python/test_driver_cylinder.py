@@ -141,7 +141,8 @@ def test_example_history(driver, source_root, tmp_path):
     proc = run_example(driver, source_root, tmp_path, "cylinder_history.nml")
     assert "cylinder: overturn_one_impact" in proc.stdout
     out = tmp_path / "out"
-    s_path, h_path = out / "cylinder_history_cylinder.csv", out / "cylinder_history_cylinder_history.csv"
+    s_path = out / "cylinder_history_cylinder.csv"
+    h_path = out / "cylinder_history_cylinder_history.csv"
     assert header(s_path) == (SUMMARY, SUMMARY_UNITS)
     assert header(h_path) == (["t", "a_g", "theta", "omega"], ["s", "m/s2", "rad", "rad/s"])
     s = {k: v[0] for k, v in read_table(s_path).items()}
