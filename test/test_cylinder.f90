@@ -99,7 +99,7 @@ contains
 
     ! ---------------------------------------------------------------- tests
 
-    !> doc/cylinder.md (Y.1)-(Y.7), (Y.10): the parallel-axis sum, p = sqrt(m g R/J_o),
+    !> doc/cylinder.md (Y.1)-(Y.7), (Y.11): the parallel-axis sum, p = sqrt(m g R/J_o),
     !> Res = 1 - 24 r^2/(15 r^2 + 16 h^2); h/r = 2: J_o/(m r^2) = 79/12 = 6.5833..,
     !> Res = 55/79 = 0.6962.., p = 1.825 rad/s for r = 1 m, g = 9.81 m/s^2 ([AD11] p.12-13).
     subroutine test_solid(error)
@@ -295,7 +295,7 @@ contains
         end do
     end subroutine test_custom_block
 
-    !> (Y.9)-(Y.11): F = W tan(theta_c - theta), M = W (r cos theta - h sin theta); F(0) = W r/h,
+    !> (Y.10)-(Y.12): F = W tan(theta_c - theta), M = W (r cos theta - h sin theta); F(0) = W r/h,
     !> M(0) = m g r, M(theta_c) = 0; M/(m g r) at theta_c/2 is 1/(2 cos(theta_c/2)):
     !> 0.514, 0.541, 0.588 for h/r = 2, 1, 0.5.
     subroutine test_pushover(error)
@@ -421,7 +421,7 @@ contains
                    'p is rad/s, not Hz')
     end subroutine test_free_period
 
-    !> (Y.12)-(Y.14): same p, same M_max; block -> cylinder -> block and cylinder -> block ->
+    !> (Y.13)-(Y.15): same p, same M_max; block -> cylinder -> block and cylinder -> block ->
     !> cylinder give the body back; a stated theta_c or alpha is kept.
     subroutine test_equivalence(error)
         type(test_error), allocatable, intent(out) :: error
@@ -698,6 +698,21 @@ contains
         end do
         ! a higher frequency needs a larger PGA
         call check(error, pga(2) > pga(1), 'threshold grows with frequency')
+        if (allocated(error)) return
+        ! the linearized model with e = 0.5 (both options reach the runs)
+        call overturning_threshold(c, PULSE_SINE_CYCLE, f(1:1), pga(1:1), stat, msg, e=0.5_dp, &
+                                   linearized=.true.)
+        call check(error, stat, SEISPULSE_SUCCESS, 'linearized threshold '//trim(msg))
+        if (allocated(error)) return
+        call body_rocking_block(c, blk, stat, msg, e=0.5_dp, linearized=.true.)
+        call check(error, blk%linearized .and. abs(blk%e - 0.5_dp) <= 0.0_dp, 'options kept')
+        if (allocated(error)) return
+        call rock_pulse(blk, sine_cycle_pulse(pga(1) * g0, 1.0_dp / f(1)), run, stat, msg)
+        call check(error, overturned(run), 'linearized: the threshold PGA overturns')
+        if (allocated(error)) return
+        a = pga(1) * (1.0_dp - 1.0e-5_dp)
+        call rock_pulse(blk, sine_cycle_pulse(a * g0, 1.0_dp / f(1)), run, stat, msg)
+        call check(error, .not. overturned(run), 'linearized: PGA (1 - 1e-5) does not')
         if (allocated(error)) return
         call overturning_threshold(c, PULSE_SINE_CYCLE, f(1:1), pga(1:1), stat, msg, &
                                    pga_max_g=1.05_dp * tan(c%theta_c), n_scan=5)

@@ -1,10 +1,10 @@
 !> Rigid circular cylinder (solid, hollow, or any body of revolution with a given J_o) and
 !> uniform rectangular block rocking on a rigid base in one vertical plane, after [AD11]
 !> chapter 1 (doc/cylinder.md): geometry and inertia (Y.1)-(Y.5), frequency parameter p
-!> (Y.6, rad/s) and Housner's restitution (Y.7), the static rigid pushover (Y.9)-(Y.11), the
+!> (Y.6, rad/s) and Housner's restitution (Y.7), the static rigid pushover (Y.10)-(Y.12), the
 !> equivalent cylinder of a block and the equivalent block of a cylinder (same p, same
-!> M_max, a stated slenderness: Y.12-Y.14), overturning maps on dimensionless or g-Hz axes
-!> (Y.15) and the overturning PGA of a pulse of given frequency.
+!> M_max, a stated slenderness: Y.13-Y.15), overturning maps on dimensionless or g-Hz axes
+!> (Y.16) and the overturning PGA of a pulse of given frequency.
 !>
 !> The planar rocking itself is that of seispulse_rocking_sim: a body is the symmetric
 !> block symmetric_block(R, theta_c, J_o/(m R^2), g) (doc/rocking.md section 1), run by
@@ -94,7 +94,7 @@ contains
     !>   >= m R^2), J_G = J_o - m R^2; j_axis given (finite, > 0) or NaN (unknown).
     !> Then theta_c = atan(r/h), R = sqrt(r^2 + h^2) (Y.1), p = sqrt(m g R/J_o) in rad/s
     !> (Y.6), Housner's e = max(0, 1 - (2 m R^2/J_o) sin^2 theta_c) (Y.7), W = m g,
-    !> M_max = m g r and F_uplift = W r/h (Y.10). A NaN j_axis counts as not given;
+    !> M_max = m g r and F_uplift = W r/h (Y.11). A NaN j_axis counts as not given;
     !> j_axis is only taken with j_o (solid and hollow cylinders compute theirs).
     subroutine cylinder_props(r, h, mass, g, body, stat, errmsg, r_inner, j_o, j_axis)
         real(dp), intent(in) :: r                             !! base radius (m), > 0
@@ -236,8 +236,8 @@ contains
 
     !> The solid cylinder equivalent to a body (usually a BODY_BLOCK) on a rigid base: the
     !> same p and the same static M_max = m g r (m_c r_c = m_b b), plus the slenderness
-    !> theta_c (default: the block's own), which fixes the second unknown (Y.13):
-    !> R_c = g/(p^2 j(theta_c)), j = J_o/(m R^2) = 4/3 - sin^2(theta_c)/12 (Y.12),
+    !> theta_c (default: the block's own), which fixes the second unknown (Y.14):
+    !> R_c = g/(p^2 j(theta_c)), j = J_o/(m R^2) = 4/3 - sin^2(theta_c)/12 (Y.13),
     !> r_c = R_c sin theta_c, h_c = R_c cos theta_c, m_c = M_max/(g r_c). Same g.
     subroutine equivalent_cylinder(block, cyl, stat, errmsg, theta_c)
         type(rocking_body_t), intent(in) :: block             !! the given body
@@ -258,8 +258,8 @@ contains
             th = theta_c
         end if
         s = sin(th)
-        jr = 4.0_dp / 3.0_dp - s * s / 12.0_dp                              ! (Y.12)
-        big_r = block%g / (block%p**2 * jr)                                 ! (Y.13)
+        jr = 4.0_dp / 3.0_dp - s * s / 12.0_dp                              ! (Y.13)
+        big_r = block%g / (block%p**2 * jr)                                 ! (Y.14)
         r = big_r * s
         call cylinder_props(r, big_r * cos(th), block%m_max / (block%g * r), block%g, cyl, &
                             stat, errmsg)
@@ -267,7 +267,7 @@ contains
 
     !> The uniform block equivalent to a body (usually a cylinder): the same p, so
     !> R_b = 3 g/(4 p^2), the slenderness alpha (default: the body's theta_c), b = R_b
-    !> sin(alpha), h = R_b cos(alpha), and the same M_max: m_b = M_max/(g b) (Y.14). Same g.
+    !> sin(alpha), h = R_b cos(alpha), and the same M_max: m_b = M_max/(g b) (Y.15). Same g.
     subroutine equivalent_block(cyl, block, stat, errmsg, alpha)
         type(rocking_body_t), intent(in) :: cyl               !! the given body
         type(rocking_body_t), intent(out) :: block            !! its uniform block
@@ -286,7 +286,7 @@ contains
             end if
             al = alpha
         end if
-        big_r = 0.75_dp * cyl%g / cyl%p**2                                  ! (Y.14)
+        big_r = 0.75_dp * cyl%g / cyl%p**2                                  ! (Y.15)
         b = big_r * sin(al)
         call block_props(b, big_r * cos(al), cyl%m_max / (cyl%g * b), cyl%g, block, stat, &
                          errmsg)
@@ -300,7 +300,7 @@ contains
     !> is the mirror image, rotation about the other edge, with F and M of opposite sign):
     !> the horizontal force at the centre of mass that holds the body, F = W tan(theta_c -
     !> |theta|) (N), and the moment about the pivot M = W R sin(theta_c - |theta|) = W (r cos
-    !> theta - h sin theta) (N m) (Y.9). stable = |theta| <= theta_c; beyond theta_c, F and
+    !> theta - h sin theta) (N m) (Y.10). stable = |theta| <= theta_c; beyond theta_c, F and
     !> M have the opposite sign: the body falls on its own (not an equilibrium).
     subroutine rigid_pushover(body, theta, force, moment, stable, stat, errmsg)
         type(rocking_body_t), intent(in) :: body              !! the body
@@ -324,13 +324,13 @@ contains
         t = abs(theta)
         s = 1.0_dp
         if (theta < 0.0_dp) s = -1.0_dp
-        force = s * body%weight * tan(body%theta_c - t)                     ! (Y.9)
-        moment = s * body%weight * body%big_r * sin(body%theta_c - t)       ! (Y.9)
+        force = s * body%weight * tan(body%theta_c - t)                     ! (Y.10)
+        moment = s * body%weight * body%big_r * sin(body%theta_c - t)       ! (Y.10)
         stable = t <= body%theta_c
     end subroutine rigid_pushover
 
     !> Normalized rigid pushover M/(m g r) = sin(theta_c (1 - u))/sin(theta_c) at
-    !> u = theta/theta_c (Y.11): 1 at u = 0, 0 at u = 1, 1/(2 cos(theta_c/2)) at u = 1/2.
+    !> u = theta/theta_c (Y.12): 1 at u = 0, 0 at u = 1, 1/(2 cos(theta_c/2)) at u = 1/2.
     !> NaN unless theta_c is in (0, pi/2) and u is finite.
     elemental function normalized_pushover(theta_c, u) result(m_ratio)
         real(dp), intent(in) :: theta_c  !! overturning angle atan(r/h) (rad), in (0, pi/2)
@@ -350,7 +350,7 @@ contains
     !> Overturning map of the body under a pulse family: classes(i, j) for y(i) and x(j)
     !> (0 safe, 1 overturns without impact, 2 after one impact, 3 after more, -1 undecided),
     !> from overturning_map of seispulse_rocking_sim with alpha = theta_c and e = body%e (or
-    !> `e`). Axes (Y.15): MAP_AXES_DIMENSIONLESS: x = omega_p/p, y = a_p/(g tan theta_c);
+    !> `e`). Axes (Y.16): MAP_AXES_DIMENSIONLESS: x = omega_p/p, y = a_p/(g tan theta_c);
     !> MAP_AXES_DIMENSIONAL: x = f_p (Hz), y = PGA (g), taken to omega_p/p = 2 pi f_p/p and
     !> a_p/(g tan theta_c) = PGA/tan(theta_c). f_p = omega_p/(2 pi) as overturning_map
     !> defines omega_p: 1/T_p of the pulse duration (the period of the cycle pulses, the
@@ -395,7 +395,7 @@ contains
                 if (axes == MAP_AXES_DIMENSIONAL) then
                     fr(j) = 0.0_dp
                     if (quotient_fits(x(j), body%p / 8.0_dp)) fr(j) = two_pi * x(j) / body%p
-                end if                                                      ! (Y.15)
+                end if                                                      ! (Y.16)
             end if
             if (.not. finite_positive(fr(j))) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'x('//int_str(j) &
@@ -410,7 +410,7 @@ contains
                 ar(i) = y(i)
                 if (axes == MAP_AXES_DIMENSIONAL) then
                     ar(i) = -1.0_dp
-                    if (quotient_fits(y(i), tan_c)) ar(i) = y(i) / tan_c    ! (Y.15)
+                    if (quotient_fits(y(i), tan_c)) ar(i) = y(i) / tan_c    ! (Y.16)
                 end if
             end if
             if (.not. finite_at_least(ar(i), 0.0_dp)) then
@@ -551,7 +551,7 @@ contains
         end do
         ratio = log(top / lo0)
         do k = 1, size(freq_hz)
-            fr = two_pi * freq_hz(k) / body%p                               ! (Y.15)
+            fr = two_pi * freq_hz(k) / body%p                               ! (Y.16)
             found = .false.
             lo = lo0
             hi = lo0
@@ -642,7 +642,7 @@ contains
     end subroutine check_geometry
 
     !> p and e from symmetric_block with I_o/(m R^2) = io (Y.6, Y.7), then W, M_max,
-    !> F_uplift (Y.10); an overflow of the derived values is reported.
+    !> F_uplift (Y.11); an overflow of the derived values is reported.
     subroutine finish_body(body, io, stat, errmsg)
         type(rocking_body_t), intent(inout) :: body
         real(dp), intent(in) :: io
@@ -654,8 +654,8 @@ contains
         body%p = blk%p                                                      ! (Y.6)
         body%e = blk%e                                                      ! (Y.7)
         body%weight = body%mass * body%g
-        body%m_max = body%weight * body%r                                   ! (Y.10)
-        body%f_uplift = body%weight * (body%r / body%h)                     ! (Y.10)
+        body%m_max = body%weight * body%r                                   ! (Y.11)
+        body%f_uplift = body%weight * (body%r / body%h)                     ! (Y.11)
         call check_body(body, stat, errmsg)
     end subroutine finish_body
 
