@@ -17,7 +17,8 @@ module driver_rocking
                                              ieee_positive_inf
     use seispulse, only: dp, pulse_t, pulse_validate, pulse_eval, pulse_kind_name, &
                          pulse_kind_from_name, SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, &
-                         PULSE_RECTANGULAR, PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP, real_str, &
+                         PULSE_RECTANGULAR, PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP, &
+                         PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE, real_str, &
                          int_str, rocking_summary, rocking_region_name, rocking_block_t, &
                          rocking_run_t, rectangular_block, symmetric_block, &
                          rocking_block_validate, rock_pulse, overturning_map, ROCK_RUN_TIME_LIMIT, &
@@ -41,9 +42,9 @@ module driver_rocking
         'alpha', 'alpha_deg', 'r', 'io_over_mr2', 'e', 'model']
     character(len=8), parameter :: rocking_keys(7) = [character(len=8) :: 'what', 't_max', &
         'rtol', 't_end', 'npts', 'dt', 'kv']
-    character(len=12), parameter :: map_keys(11) = [character(len=12) :: 'kind', 'beta', &
+    character(len=12), parameter :: map_keys(12) = [character(len=12) :: 'kind', 'beta', &
         'full', 'peak_frac', 't0_periods', 'freq_ratio', 'freq_range', 'freq_count', &
-        'amp_ratio', 'amp_range', 'amp_count']
+        'amp_ratio', 'amp_range', 'amp_count', 'cycles']
     character(len=8), parameter :: what_names(3) = [character(len=8) :: 'summary', &
         'history', 'map']
     character(len=10), parameter :: model_names(2) = [character(len=10) :: 'nonlinear', &
@@ -67,13 +68,14 @@ module driver_rocking
     integer :: npts
     character(len=32) :: kind
     real(dp) :: beta, peak_frac, t0_periods
+    real(dp) :: cycles   !! sine_cycle, cosine_cycle: whole number of cycles (read as a real)
     logical :: full
     real(dp) :: freq_ratio(max_list), freq_range(2), amp_ratio(max_list), amp_range(2)
     integer :: freq_count, amp_count
     namelist /block/ b, h, alpha, alpha_deg, r, io_over_mr2, e, model
     ! &rocking is read (with kv) in read_rocking and echoed in echo_rocking
     namelist /map/ kind, beta, full, peak_frac, t0_periods, freq_ratio, freq_range, &
-        freq_count, amp_ratio, amp_range, amp_count
+        freq_count, amp_ratio, amp_range, amp_count, cycles
 
 contains
 
@@ -100,6 +102,7 @@ contains
         full = .false.
         peak_frac = 0.5_dp
         t0_periods = 1.5_dp
+        cycles = 1.0_dp
         freq_ratio = nan
         freq_range = nan
         freq_count = 21
@@ -646,7 +649,7 @@ contains
             return
         end if
         tpl = pulse_t(kind=code, amp=1.0_dp, duration=1.0_dp, beta=beta, full=full, &
-                      peak_frac=peak_frac, freq=1.0_dp, t0=t0_periods)
+                      peak_frac=peak_frac, freq=1.0_dp, t0=t0_periods, cycles=cycles)
         if (code == PULSE_RICKER .and. .not. finite_at_least(t0_periods, 0.0_dp)) then
             errmsg = where//'t0_periods = '//real_str(t0_periods)//': must be a finite ' &
                      //'number >= 0 (the centre of the wavelet times f_p)'
@@ -783,6 +786,8 @@ contains
                 used = code == PULSE_TRIANGULAR
             case ('t0_periods')
                 used = code == PULSE_RICKER
+            case ('cycles')
+                used = code == PULSE_SINE_CYCLE .or. code == PULSE_COSINE_CYCLE
             case default
                 used = .true.
             end select
@@ -803,6 +808,9 @@ contains
             text = 'pulse shape: peak_frac = '//real_str(peak_frac)
         case (PULSE_RICKER)
             text = 'pulse shape: t0 f_p = '//real_str(t0_periods)
+        case (PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE)
+            text = 'pulse shape: '//pulse_kind_name(code)
+            if (abs(cycles - 1.0_dp) > 0.0_dp) text = text//', cycles = '//real_str(cycles)
         case default
             text = 'pulse shape: '//pulse_kind_name(code)
         end select
@@ -824,7 +832,13 @@ contains
         else
             call echo_rocking()
         end if
-        if (task == 'map') write(output_unit, nml=map)
+        if (task == 'map') then
+            if (abs(cycles - 1.0_dp) > 0.0_dp) then
+                write(output_unit, nml=map)
+            else
+                call echo_map_without_cycles()
+            end if
+        end if
     end subroutine echo
 
     !> Echo &rocking as before kv existed (kv = 0: the same output as without it).
@@ -838,5 +852,14 @@ contains
         namelist /rocking/ what, t_max, rtol, t_end, npts, dt, kv
         write(output_unit, nml=rocking)
     end subroutine echo_rocking_kv
+
+    !> The echo of &map without `cycles` when it is 1 (the default), so that the echo of
+    !> an input without it stays as it was: a local namelist of the same name hides the
+    !> module's one here.
+    subroutine echo_map_without_cycles()
+        namelist /map/ kind, beta, full, peak_frac, t0_periods, freq_ratio, freq_range, &
+            freq_count, amp_ratio, amp_range, amp_count
+        write(output_unit, nml=map)
+    end subroutine echo_map_without_cycles
 
 end module driver_rocking

@@ -8,7 +8,8 @@ module driver_pulse_group
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan
     use seispulse, only: dp, pulse_t, pulse_validate, pulse_kind_from_name, pulse_kind_name, &
                          SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, PULSE_TRIANGULAR, PULSE_RICKER, &
-                         PULSE_MP, finite_positive, pulse_end_time, real_str
+                         PULSE_MP, PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE, finite_positive, &
+                         pulse_end_time, real_str
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, check_keys, read_group, located, given
     implicit none
@@ -18,9 +19,9 @@ module driver_pulse_group
     public :: pulse_end, check_time_grid, time_grid
 
     !> Every key of &pulse.
-    character(len=12), parameter :: pulse_keys(13) = [character(len=12) :: 'kind', 'amp', &
+    character(len=12), parameter :: pulse_keys(14) = [character(len=12) :: 'kind', 'amp', &
         'amp_unit', 'g', 'duration', 'beta', 'full', 'peak_frac', 'freq', 't0', 'gamma', &
-        'nu_deg', 'vamp']
+        'nu_deg', 'vamp', 'cycles']
 
     !> What an analysis gets from &pulse.
     type :: pulse_input_t
@@ -38,9 +39,12 @@ module driver_pulse_group
     ! namelist variables (defaults are set in set_defaults)
     character(len=32) :: kind, amp_unit
     real(dp) :: amp, g, duration, beta, peak_frac, freq, t0, gamma, nu_deg, vamp
+    !> sine_cycle, cosine_cycle: number of cycles, a whole number in [1, 1e6]; read as a
+    !> real so that 2.5 or NaN reach the library's check (which names `cycles`)
+    real(dp) :: cycles
     logical :: full
     namelist /pulse/ kind, amp, amp_unit, g, duration, beta, full, peak_frac, freq, t0, &
-        gamma, nu_deg, vamp
+        gamma, nu_deg, vamp, cycles
 
 contains
 
@@ -60,6 +64,7 @@ contains
         gamma = 2.0_dp
         nu_deg = 0.0_dp
         vamp = 1.0_dp
+        cycles = 1.0_dp
     end subroutine set_defaults
 
     subroutine read_pulse(unit, text, ios, iomsg)
@@ -152,7 +157,8 @@ contains
             end if
         end if
         pin%p = pulse_t(kind=code, amp=amp_si, duration=duration, beta=beta, full=full, &
-                        peak_frac=peak_frac, freq=freq, t0=t0, gamma=gamma, nu_deg=nu_deg)
+                        peak_frac=peak_frac, freq=freq, t0=t0, gamma=gamma, nu_deg=nu_deg, &
+                        cycles=cycles)
         call pulse_validate(pin%p, i, msg)
         if (i /= SEISPULSE_SUCCESS) then
             errmsg = located(path, pin%group)//trim(msg)
@@ -223,11 +229,25 @@ contains
         t = step * [(real(j, dp), j = 0, n - 1)]
     end subroutine time_grid
 
-    !> Echo the group as read and completed (for the log).
+    !> Echo the group as read and completed (for the log). `cycles` is echoed only when it
+    !> is not 1 (the default), so that the echo of an input without it stays as it was.
     subroutine write_pulse_group(unit)
         integer, intent(in) :: unit
-        write(unit, nml=pulse)
+        if (abs(cycles - 1.0_dp) > 0.0_dp) then
+            write(unit, nml=pulse)
+        else
+            call echo_without_cycles(unit)
+        end if
     end subroutine write_pulse_group
+
+    !> The echo of &pulse without `cycles`: a local namelist of the same name hides the
+    !> module's one here.
+    subroutine echo_without_cycles(unit)
+        integer, intent(in) :: unit
+        namelist /pulse/ kind, amp, amp_unit, g, duration, beta, full, peak_frac, freq, t0, &
+            gamma, nu_deg, vamp
+        write(unit, nml=pulse)
+    end subroutine echo_without_cycles
 
     !> Warn (stderr) about keys the chosen kind does not use: a likely slip.
     subroutine warn_unused(path, group, code, g_always)
@@ -253,6 +273,8 @@ contains
                 used = code == PULSE_TRIANGULAR
             case ('freq', 't0')
                 used = code == PULSE_MP .or. code == PULSE_RICKER
+            case ('cycles')
+                used = code == PULSE_SINE_CYCLE .or. code == PULSE_COSINE_CYCLE
             case default   ! gamma, nu_deg, vamp
                 used = code == PULSE_MP
             end select

@@ -9,7 +9,7 @@ module test_cylinder_roll
     use seispulse_pulses, only: pulse_t, sine_cycle_pulse, half_sine_pulse
     use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, symmetric_block, rock_pulse, &
                                      rock_record
-    use seispulse_cylinder, only: rocking_body_t
+    use seispulse_cylinder, only: rocking_body_t, cylinder_props
     use seispulse_cylinder_roll, only: cylinder_roll, roll_run_t, roll_output_name, ROLL_NOUT, &
                                        ROLL_OUT_THETA, ROLL_OUT_PSI, ROLL_OUT_ENERGY, &
                                        ROLL_OUT_THETA_RATE, ROLL_OUT_PSI_RATE, ROLL_OUT_NORMAL, &
@@ -42,21 +42,16 @@ contains
                  new_unittest('output column names', test_names)]
     end subroutine collect_cylinder_roll
 
-    !> Solid cylinder, radius r, CoM height h (half the height), mass m.
+    !> Solid cylinder, radius r, CoM height h (half the height), mass m (cylinder_props),
+    !> its inertias checked against the closed forms.
     function solid(r, h, m) result(b)
         real(dp), intent(in) :: r, h, m
         type(rocking_body_t) :: b
-        b%r = r
-        b%h = h
-        b%mass = m
-        b%g = grav
-        b%theta_c = atan2(r, h)
-        b%big_r = hypot(r, h)
-        b%j_g = m * (3.0_dp * r**2 + 4.0_dp * h**2) / 12.0_dp
-        b%j_o = b%j_g + m * b%big_r**2
-        b%j_axis = 0.5_dp * m * r**2
-        b%p = sqrt(m * grav * b%big_r / b%j_o)
-        b%e = max(0.0_dp, 1.0_dp - 2.0_dp * m * b%big_r**2 / b%j_o * sin(b%theta_c)**2)
+        integer :: stat
+        call cylinder_props(r, h, m, grav, b, stat)
+        if (stat /= SEISPULSE_SUCCESS .or. abs(b%j_g - m * (3.0_dp * r**2 + 4.0_dp * h**2) &
+                / 12.0_dp) > 1.0e-12_dp * b%j_g .or. abs(b%j_axis - 0.5_dp * m * r**2) &
+                > 1.0e-12_dp * b%j_axis) error stop 'cylinder_props'
     end function solid
 
     subroutine grid(t_end, n, t)

@@ -13,7 +13,10 @@ module test_pulses
         rectangular_pulse, triangular_pulse, ricker_pulse, mp_pulse, PULSE_NKINDS, &
         PULSE_EXPONENTIAL, PULSE_MP, pulse_accel, pulse_peak_accel, ricker_accel, &
         ricker_window, ricker_x_cut, mp_terms, mp_jerk_t, mp_jerk_of, mp_jerk, mp_jerk_slope, &
-        exp_consts_t, exp_consts
+        exp_consts_t, exp_consts, pulse_from_params, PULSE_NPARAM, PULSE_PARAM_AMP, &
+        PULSE_PARAM_DURATION, PULSE_PARAM_CYCLES, PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE
+    use seispulse_special, only: sin_pi, tau_minus_sinpi
+    use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_init, next_piece
     use testing, only: test_error, unit_test, new_unittest, check, same_bits
     implicit none
     private
@@ -56,7 +59,13 @@ contains
                  new_unittest('pulse_accel = pulse_at acceleration', test_pulse_accel), &
                  new_unittest('Ricker: one underflow rule, window', test_ricker_cutoff), &
                  new_unittest('M&P jerk vs product-form derivatives', test_mp_jerk), &
-                 new_unittest('peak acceleration vs a dense sample', test_peak_accel)]
+                 new_unittest('peak acceleration vs a dense sample', test_peak_accel), &
+                 new_unittest('cycles = 1: the single-cycle formulas, bit for bit', &
+                              test_cycles_one_bits), &
+                 new_unittest('n cycles: v, d vs composite Simpson, continuity at cycle ends', &
+                              test_cycles_simpson), &
+                 new_unittest('n cycles: monotone pieces at every extremum', test_cycles_pieces), &
+                 new_unittest('n cycles: bad cycles refused naming cycles', test_cycles_bad)]
     end subroutine collect_pulses
 
     ! ---------------------------------------------------------------- references
@@ -389,6 +398,8 @@ contains
               half_sine_pulse(4.0_dp, 0.6_dp), &
               sine_cycle_pulse(2.5_dp, 1.2_dp), &
               cosine_cycle_pulse(-1.5_dp, 0.8_dp), &
+              sine_cycle_pulse(2.5_dp, 1.2_dp, 3), &
+              cosine_cycle_pulse(-1.5_dp, 0.8_dp, 3), &
               rectangular_pulse(1.0_dp, 0.3_dp), &
               triangular_pulse(2.0_dp, 0.9_dp, 0.25_dp), &
               triangular_pulse(2.0_dp, 0.9_dp, 0.0_dp), &
@@ -879,5 +890,246 @@ contains
         write(buf, '(g0.6)') x
         s = trim(adjustl(buf))
     end function num
+
+    ! ---------------------------------------------------------------- n cycles
+
+    !> cycles = 1 (the default, given, or packed) gives the formulas of the single cycle
+    !> written out here as they were before cycles existed, bit for bit, inside the pulse
+    !> and after it (sine: rest at d = A T^2/(2 pi); cosine: rest at 0).
+    subroutine test_cycles_one_bits(error)
+        type(test_error), allocatable, intent(out) :: error
+        real(dp), parameter :: amp = 2.5_dp, tp = 1.2_dp, pi_ = acos(-1.0_dp)
+        type(pulse_t) :: ps(3), pc(3)
+        real(dp) :: params(PULSE_NPARAM), t, tau, a, v, d, ea, ev, ed
+        integer :: i, j
+        params = 0.0_dp
+        params(PULSE_PARAM_AMP) = amp
+        params(PULSE_PARAM_DURATION) = tp
+        params(PULSE_PARAM_CYCLES) = 1.0_dp
+        ps = [sine_cycle_pulse(amp, tp), sine_cycle_pulse(amp, tp, 1), &
+              pulse_from_params(PULSE_SINE_CYCLE, params)]
+        pc = [cosine_cycle_pulse(amp, tp), cosine_cycle_pulse(amp, tp, 1), &
+              pulse_from_params(PULSE_COSINE_CYCLE, params)]
+        do j = 0, 300
+            t = 1.5_dp * tp * real(j, dp) / 300.0_dp
+            tau = t / tp
+            do i = 1, 3
+                call pulse_at(ps(i), t, a, v, d)
+                if (tau < 1.0_dp) then
+                    ea = amp * sin_pi(2.0_dp * tau)
+                    ev = amp * (tp * (sin_pi(tau)**2 / pi_))
+                    ed = amp * (tp * (tp * (tau_minus_sinpi(2.0_dp * tau) / (4.0_dp * pi_))))
+                else
+                    ea = 0.0_dp
+                    ev = 0.0_dp
+                    ed = amp * (tp * (tp * (0.5_dp / pi_)))
+                end if
+                call check(error, same_bits(a, ea) .and. same_bits(v, ev) .and. &
+                           same_bits(d, ed), 'sine cycle #'//num(real(i, dp))//', t = '//num(t))
+                if (allocated(error)) return
+                call pulse_at(pc(i), t, a, v, d)
+                if (tau < 1.0_dp) then
+                    ea = amp * cos_pi_ref(2.0_dp * tau)
+                    ev = amp * (tp * (sin_pi(2.0_dp * tau) / (2.0_dp * pi_)))
+                    ed = amp * (tp * (tp * (sin_pi(tau)**2 / (2.0_dp * pi_ * pi_))))
+                else
+                    ea = 0.0_dp
+                    ev = 0.0_dp
+                    ed = 0.0_dp
+                end if
+                call check(error, same_bits(a, ea) .and. same_bits(v, ev) .and. &
+                           same_bits(d, ed), 'cosine cycle #'//num(real(i, dp))//', t = '//num(t))
+                if (allocated(error)) return
+            end do
+            call check(error, same_bits(pulse_end_time(ps(1)), tp), 'end time of one cycle')
+            if (allocated(error)) return
+        end do
+    contains
+        real(dp) function cos_pi_ref(x)
+            use seispulse_special, only: cos_pi
+            real(dp), intent(in) :: x
+            cos_pi_ref = cos_pi(x)
+        end function cos_pi_ref
+    end subroutine test_cycles_one_bits
+
+    !> n = 3 cycles: v and d against composite Simpson integration of a and v (2^14 panels
+    !> per cycle, error ~ (2 pi)^4 h^4/180 ~ 1e-15 relative, each integrand smooth on
+    !> [0, n T]); at every cycle end v(kT-) = v(kT) = 0 (sine and cosine) and d(kT) = k A T^2
+    !> /(2 pi) (sine) or 0 (cosine), continuous; after the end v = 0 and d constant.
+    subroutine test_cycles_simpson(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 3, m = 2**14
+        real(dp), parameter :: amp = 1.7_dp, tp = 0.9_dp, pi_ = acos(-1.0_dp)
+        type(pulse_t) :: p
+        real(dp) :: h, t, a, v, d, sv, sd, a0, v0, vm, dm, a1, v1, d1, vscale, dscale, dk
+        integer :: kind, j, k
+        do kind = 1, 2
+            if (kind == 1) then
+                p = sine_cycle_pulse(amp, tp, n)
+                vscale = amp * tp / pi_
+                dscale = n * amp * tp * tp / (2.0_dp * pi_)
+            else
+                p = cosine_cycle_pulse(amp, tp, n)
+                vscale = amp * tp / (2.0_dp * pi_)
+                dscale = amp * tp * tp / (2.0_dp * pi_**2)
+            end if
+            call check(error, pulse_end_time(p), n * tp, rtol=1.0e-15_dp, message='end time')
+            if (allocated(error)) return
+            ! Simpson on 2 panels of h at a time, checked at every k T/4
+            h = tp / real(m, dp)
+            sv = 0.0_dp
+            sd = 0.0_dp
+            call pulse_at(p, 0.0_dp, a0, v0, d1)
+            do j = 1, n * m / 2
+                t = 2.0_dp * real(j - 1, dp) * h
+                call pulse_at(p, t + h, vm, dm, d1)      ! vm = a, dm = v at the midpoint
+                if (j < n * m / 2) then
+                    call pulse_at(p, t + 2.0_dp * h, a1, v1, d1)
+                else
+                    ! the cosine jumps to 0 at n T: the left limit closes the integral
+                    call pulse_at(p, n * tp * (1.0_dp - 4.0_dp * epsilon(t)), a1, v1, d1)
+                end if
+                sv = sv + h / 3.0_dp * (a0 + 4.0_dp * vm + a1)
+                sd = sd + h / 3.0_dp * (v0 + 4.0_dp * dm + v1)
+                a0 = a1
+                v0 = v1
+                if (mod(2 * j, m / 4) == 0) then
+                    call check(error, v1, sv, atol=1.0e-12_dp * vscale, message=trim( &
+                               pulse_kind_name(p%kind))//': v = int a at t = '//num(t + 2 * h))
+                    if (allocated(error)) return
+                    call check(error, d1, sd, atol=1.0e-12_dp * dscale, message=trim( &
+                               pulse_kind_name(p%kind))//': d = int v at t = '//num(t + 2 * h))
+                    if (allocated(error)) return
+                end if
+            end do
+            do k = 1, n
+                t = real(k, dp) * tp
+                call pulse_at(p, t * (1.0_dp - 4.0_dp * epsilon(t)), a, vm, dm)
+                call pulse_at(p, t, a, v, d)
+                ! the left sample is 4 k eps T before k T: |v| there ~ 2 pi 4 k eps vscale
+                call check(error, abs(vm) <= 1.0e-13_dp * vscale .and. &
+                           abs(v) <= 1.0e-14_dp * vscale, 'v at the end of cycle ' &
+                           //num(real(k, dp))//': '//num(vm)//', '//num(v))
+                if (allocated(error)) return
+                dk = 0.0_dp
+                if (kind == 1) dk = k * amp * tp * tp / (2.0_dp * pi_)
+                call check(error, d, dk, atol=1.0e-14_dp * dscale, &
+                           message='d at the end of cycle '//num(real(k, dp)))
+                if (allocated(error)) return
+                call check(error, dm, d, atol=1.0e-14_dp * dscale, &
+                           message='d continuous at the end of cycle '//num(real(k, dp)))
+                if (allocated(error)) return
+            end do
+            call pulse_at(p, 7.3_dp * tp, a, v, d)
+            call check(error, .not. (abs(a) > 0.0_dp .or. abs(v) > 0.0_dp), &
+                       'rest after n cycles')
+            if (allocated(error)) return
+            call check(error, d, dk, atol=1.0e-14_dp * dscale, message='d after n cycles')
+            if (allocated(error)) return
+        end do
+    end subroutine test_cycles_simpson
+
+    !> The pieces of 3 sine cycles: 0, T/4, 3T/4, ..., 11T/4, 3T (7 pieces); of 3 cosine
+    !> cycles 0, T/2, ..., 3T (6 pieces); a_g monotone on each (dense sample), the ends
+    !> at the extrema +-A, the last piece ending at n T.
+    subroutine test_cycles_pieces(error)
+        type(test_error), allocatable, intent(out) :: error
+        real(dp), parameter :: amp = 1.3_dp, tp = 0.7_dp
+        type(pulse_t) :: p
+        type(piece_iter_t) :: it
+        type(piece_t) :: pc
+        logical :: found
+        real(dp) :: no_record(0), texp, a, v, d, prev, sgn
+        integer :: kind, npieces, stat, j, nexp
+        do kind = 1, 2
+            if (kind == 1) then
+                p = sine_cycle_pulse(amp, tp, 3)
+                nexp = 7
+            else
+                p = cosine_cycle_pulse(amp, tp, 3)
+                nexp = 6
+            end if
+            call pulse_pieces_init(it, p)
+            npieces = 0
+            do
+                call next_piece(it, no_record, 'test', pc, found, stat)
+                call check(error, stat == SEISPULSE_SUCCESS, 'next_piece status')
+                if (allocated(error)) return
+                if (.not. found) exit
+                npieces = npieces + 1
+                if (kind == 1) then
+                    if (npieces == 1) then
+                        texp = 0.25_dp * tp
+                    else if (npieces == nexp) then
+                        texp = 3.0_dp * tp
+                    else
+                        texp = (0.25_dp + 0.5_dp * (npieces - 1)) * tp
+                    end if
+                else
+                    texp = 0.5_dp * npieces * tp
+                end if
+                call check(error, pc%tb, texp, rtol=1.0e-15_dp, &
+                           message='piece '//num(real(npieces, dp))//' end')
+                if (allocated(error)) return
+                ! monotone: a_g - aa keeps the sign of ab - aa, values in between
+                sgn = sign(1.0_dp, pc%ab - pc%aa)
+                prev = pc%aa
+                do j = 1, 200
+                    call pulse_at(p, pc%ta + (pc%tb - pc%ta) * j / 201.0_dp, a, v, d)
+                    call check(error, sgn * (a - prev) >= -1.0e-15_dp * amp, &
+                               'monotone on piece '//num(real(npieces, dp)))
+                    if (allocated(error)) return
+                    prev = a
+                end do
+                call check(error, sgn * (pc%ab - prev) >= -1.0e-15_dp * amp, &
+                           'monotone to the end of piece '//num(real(npieces, dp)))
+                if (allocated(error)) return
+                if (npieces < nexp) then
+                    call check(error, abs(pc%ab), amp, rtol=1.0e-14_dp, &
+                               message='piece ends at an extremum')
+                    if (allocated(error)) return
+                end if
+            end do
+            call check(error, npieces == nexp, trim(pulse_kind_name(p%kind))//': ' &
+                       //num(real(npieces, dp))//' pieces, expected '//num(real(nexp, dp)))
+            if (allocated(error)) return
+        end do
+    end subroutine test_cycles_pieces
+
+    !> cycles must be a whole number in [1, 1e6]: 0, 2.5, NaN, 1e7, -3, +inf are refused
+    !> with a message starting with "cycles "; 1e6 and 20 are accepted.
+    subroutine test_cycles_bad(error)
+        type(test_error), allocatable, intent(out) :: error
+        real(dp) :: bad(6), good(3)
+        type(pulse_t) :: p
+        integer :: i, kind, stat
+        character(len=200) :: msg
+        bad = [0.0_dp, 2.5_dp, ieee_value(1.0_dp, ieee_quiet_nan), 1.0e7_dp, -3.0_dp, &
+               ieee_value(1.0_dp, ieee_positive_inf)]
+        good = [1.0_dp, 20.0_dp, 1.0e6_dp]
+        do kind = PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE
+            p = sine_cycle_pulse(1.0_dp, 1.0_dp)
+            p%kind = kind
+            do i = 1, size(bad)
+                p%cycles = bad(i)
+                msg = ''
+                call pulse_validate(p, stat, msg)
+                call check(error, stat == SEISPULSE_INVALID_INPUT .and. msg(1:7) == 'cycles ', &
+                           'cycles = '//num(bad(i))//': got "'//trim(msg)//'"')
+                if (allocated(error)) return
+            end do
+            do i = 1, size(good)
+                p%cycles = good(i)
+                call pulse_validate(p, stat, msg)
+                call check(error, stat == SEISPULSE_SUCCESS, 'cycles = '//num(good(i)))
+                if (allocated(error)) return
+            end do
+        end do
+        ! not a parameter of the other kinds: ignored there
+        p = half_sine_pulse(1.0_dp, 1.0_dp)
+        p%cycles = 2.5_dp
+        call pulse_validate(p, stat, msg)
+        call check(error, stat == SEISPULSE_SUCCESS, 'half_sine ignores cycles')
+    end subroutine test_cycles_bad
 
 end module test_pulses

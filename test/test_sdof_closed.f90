@@ -81,6 +81,8 @@ contains
                               test_impulse), &
                  new_unittest('every pulse = Duhamel quadrature (1e-8 of the max)', &
                               test_pulses_quadrature), &
+                 new_unittest('n cycles = superposition of n shifted single cycles, = quadrature', &
+                              test_cycles_superposition), &
                  new_unittest('exponential limits: beta -> 0, +-1, -inf, +inf, huge', &
                               test_exp_limits), &
                  new_unittest('zeta -> 0 is continuous', test_zeta_limit), &
@@ -1356,5 +1358,77 @@ contains
         if (allocated(error)) return
         call check(error, index(msg, name) == 1, 'message must start with '//name//': '//trim(msg))
     end subroutine expect_error
+
+    !> n sine or cosine cycles: the response is the sum of the responses to the single cycle
+    !> shifted by k T_p, k = 0 .. n - 1 (linearity; the single cycle's own closed form is
+    !> tested against quadrature above), at times inside, at and after the pulse; also
+    !> against the Duhamel quadrature directly; peaks >= a dense sample of the superposition
+    !> and equal to its maximum to 1e-6; more than 32768 cycles refused by the peak search.
+    subroutine test_cycles_superposition(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: nt = 241
+        real(dp) :: periods(3), zetas(3), tp, t(nt), z(nt), v(nt), a(nt), zs(nt), vs(nt), &
+                    as(nt), z1(nt), v1(nt), a1(nt), zm, tz, vm, tv, am, ta
+        type(pulse_t) :: pn, p1
+        integer :: kind, j, k, n, stat
+        character(len=200) :: msg
+        character(len=64) :: label
+        tp = 0.8_dp
+        periods = [0.8_dp, 0.33_dp, 2.1_dp]    ! resonant, short, long
+        zetas = [0.0_dp, 0.05_dp, 0.2_dp]
+        do kind = 1, 2
+            do j = 1, 3
+                n = merge(3, 20, j /= 1)
+                if (kind == 1) then
+                    pn = sine_cycle_pulse(1.3_dp, tp, n)
+                    p1 = sine_cycle_pulse(1.3_dp, tp)
+                else
+                    pn = cosine_cycle_pulse(1.3_dp, tp, n)
+                    p1 = cosine_cycle_pulse(1.3_dp, tp)
+                end if
+                t = linspace(-0.1_dp, (n + 2.5_dp) * tp, nt)
+                call sdof_pulse_response(pn, periods(j), zetas(j), t, z, v, a, stat, msg)
+                call check(error, stat, SEISPULSE_SUCCESS, trim(msg))
+                if (allocated(error)) return
+                zs = 0.0_dp
+                vs = 0.0_dp
+                as = 0.0_dp
+                do k = 0, n - 1
+                    call sdof_pulse_response(p1, periods(j), zetas(j), t - k * tp, z1, v1, a1, &
+                                             stat, msg)
+                    zs = zs + z1
+                    vs = vs + v1
+                    as = as + a1
+                end do
+                write(label, '(a, i0, a, i0, a, i0)') 'kind ', kind, ' n = ', n, ' case ', j
+                call check(error, z, zs, atol=1.0e-11_dp * maxval(abs(zs)), &
+                           message=trim(label)//' z')
+                if (allocated(error)) return
+                call check(error, v, vs, atol=1.0e-11_dp * maxval(abs(vs)), &
+                           message=trim(label)//' v')
+                if (allocated(error)) return
+                call check(error, a, as, atol=1.0e-11_dp * maxval(abs(as)), &
+                           message=trim(label)//' a_abs')
+                if (allocated(error)) return
+                call check_against_quadrature(error, pn, periods(j), zetas(j), t(1:nt:20), &
+                                              1.0e-9_dp, trim(label)//' quadrature')
+                if (allocated(error)) return
+                call sdof_pulse_peaks(pn, periods(j), zetas(j), zm, tz, vm, tv, am, ta, stat, msg)
+                call check(error, stat, SEISPULSE_SUCCESS, trim(msg))
+                if (allocated(error)) return
+                call check(error, zm >= maxval(abs(zs)) * (1.0_dp - 1.0e-12_dp) .and. &
+                           zm <= maxval(abs(zs)) * (1.0_dp + 2.0e-3_dp), trim(label) &
+                           //' peak |z| vs the superposition''s sample')
+                if (allocated(error)) return
+            end do
+        end do
+        pn = sine_cycle_pulse(1.0_dp, 1.0_dp, 32769)
+        call sdof_pulse_peaks(pn, 1.0_dp, 0.05_dp, zm, tz, vm, tv, am, ta, stat, msg)
+        call check(error, stat == SEISPULSE_INVALID_INPUT .and. msg(1:7) == 'cycles ', trim(msg))
+        if (allocated(error)) return
+        pn = sine_cycle_pulse(1.0_dp, 1.0_dp, 32768)
+        call sdof_pulse_peaks(pn, 100.0_dp, 0.05_dp, zm, tz, vm, tv, am, ta, stat, msg)
+        call check(error, stat, SEISPULSE_SUCCESS, trim(msg))
+    end subroutine test_cycles_superposition
 
 end module test_sdof_closed

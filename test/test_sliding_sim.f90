@@ -57,7 +57,9 @@ contains
                               test_degenerate), &
                  new_unittest('bad input is a status naming the parameter', test_bad_input), &
                  new_unittest('record in g with g: m and m/s, the products accel g, ay g', &
-                              test_record_in_g)]
+                              test_record_in_g), &
+                 new_unittest('2 sine/cosine cycles = a record of sin, cos at order dt^2', &
+                              test_cycles_record)]
     end subroutine collect_sliding_sim
 
     ! ---------------------------------------------------------------- helpers
@@ -1070,5 +1072,82 @@ contains
                               g_edge, rg, stat)
         call check(error, stat, SEISPULSE_INVALID_INPUT, 'sample huge/g: refused')
     end subroutine test_record_in_g
+
+    !> Two sine and two cosine cycles (A = 1, T = 1, ay = 0.3: two-way slides in each cycle)
+    !> against records of A sin(2 pi t/T), A cos(2 pi t/T) sampled here with the intrinsic
+    !> functions (not through seispulse_pulses) and zero after 2 T: same slides, and the
+    !> u_final and t_end errors fall as dt^2 (ratio 4 when dt halves; the linear
+    !> interpolation error of a_g is <= A (2 pi/T)^2 dt^2/8, about 1.9e-5 A at dt = 2^-9 s).
+    !> The cosine jumps from A to 0 at 2 T, which a record can only ramp over its last step
+    !> (an impulse error of A dt/2): its errors fall as dt (ratio 2 when dt halves).
+    subroutine test_cycles_record(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(stickslip_result_t) :: rp, rr, r1
+        type(pulse_t) :: p
+        real(dp), allocatable :: acc(:)
+        real(dp) :: eu(2), et(2), dt
+        integer :: c, k, i, n, stat
+        do c = 1, 2
+            if (c == 1) then
+                p = sine_cycle_pulse(1.0_dp, 1.0_dp, 2)
+                call run_pulse(error, sine_cycle_pulse(1.0_dp, 1.0_dp), fric(0.3_dp, 0.3_dp), &
+                               -1, r1, 'one sine cycle')
+            else
+                p = cosine_cycle_pulse(1.0_dp, 1.0_dp, 2)
+                call run_pulse(error, cosine_cycle_pulse(1.0_dp, 1.0_dp), fric(0.3_dp, 0.3_dp), &
+                               -1, r1, 'one cosine cycle')
+            end if
+            if (allocated(error)) return
+            call run_pulse(error, p, fric(0.3_dp, 0.3_dp), -1, rp, 'two cycles')
+            if (allocated(error)) return
+            call check(error, size(rp%slides) > size(r1%slides) .and. rp%t_end > 1.0_dp, &
+                       'two cycles slide more than one and end after T')
+            if (allocated(error)) return
+            do k = 1, 2
+                dt = 1.0_dp / real(2**(8 + k), dp)
+                n = nint(4.0_dp / dt) + 1
+                allocate(acc(n))
+                do i = 1, n
+                    if (i - 1 < nint(2.0_dp / dt)) then
+                        if (c == 1) then
+                            acc(i) = sin(2.0_dp * pi * real(i - 1, dp) * dt)
+                        else
+                            acc(i) = cos(2.0_dp * pi * real(i - 1, dp) * dt)
+                        end if
+                    else
+                        acc(i) = 0.0_dp
+                    end if
+                end do
+                call stickslip_record(acc, dt, fric(0.3_dp, 0.3_dp), g_unit, rr, stat)
+                deallocate(acc)
+                call check(error, stat, SEISPULSE_SUCCESS, 'record status')
+                if (allocated(error)) return
+                call check(error, size(rr%slides), size(rp%slides), 'record: same slides')
+                if (allocated(error)) return
+                eu(k) = abs(rr%u_final - rp%u_final)
+                et(k) = abs(rr%t_end - rp%t_end)
+            end do
+            if (c == 1) then
+                call check(error, eu(1) < 1.0e-5_dp .and. et(1) < 1.0e-4_dp, &
+                           'sine: close at dt = 2^-9')
+                if (allocated(error)) return
+                call check(error, eu(1) / eu(2), 4.0_dp, rtol=0.15_dp, &
+                           message='sine: u_final error ratio')
+                if (allocated(error)) return
+                call check(error, et(1) / et(2), 4.0_dp, rtol=0.15_dp, &
+                           message='sine: t_end error ratio')
+            else
+                call check(error, eu(1) < 1.0e-3_dp .and. et(1) < 1.0e-2_dp, &
+                           'cosine: close at dt = 2^-9')
+                if (allocated(error)) return
+                call check(error, eu(1) / eu(2), 2.0_dp, rtol=0.1_dp, &
+                           message='cosine: u_final error ratio')
+                if (allocated(error)) return
+                call check(error, et(1) / et(2), 2.0_dp, rtol=0.1_dp, &
+                           message='cosine: t_end error ratio')
+            end if
+            if (allocated(error)) return
+        end do
+    end subroutine test_cycles_record
 
 end module test_sliding_sim

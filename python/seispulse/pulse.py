@@ -64,7 +64,8 @@ _PARAM_ORDER = tuple(name[len("PULSE_PARAM_"):].lower() for name, _ in sorted(
     ((n, v) for n, v in vars(_fortran_codes).items() if n.startswith("PULSE_PARAM_")),
     key=lambda item: item[1]))
 _PARAM_DEFAULTS = {"amp": 1.0, "duration": 1.0, "beta": 0.0, "full": 0.0, "peak_frac": 0.5,
-                   "freq": 1.0, "t0": 0.0, "gamma": 2.0, "nu_deg": 0.0}
+                   "freq": 1.0, "t0": 0.0, "gamma": 2.0, "nu_deg": 0.0,
+                   "cycles": 1.0}
 
 
 # ------------------------------------------------------------------ exponential pulse
@@ -176,24 +177,30 @@ def half_sine(t, amp, duration, amp_unit="m/s2", g=STANDARD_GRAVITY):
     return _evaluate("half_sine", t, amp=_amplitude(amp, amp_unit, g), duration=duration)
 
 
-def sine_cycle(t, amp, period, amp_unit="m/s2", g=STANDARD_GRAVITY):
-    """One-cycle sine acceleration pulse a = A sin(2 pi t / T_p) for 0 <= t < T_p.
+def sine_cycle(t, amp, period, cycles=1, amp_unit="m/s2", g=STANDARD_GRAVITY):
+    """Sine acceleration pulse of n cycles, a = A sin(2 pi t / T_p) for 0 <= t < n T_p.
 
-    The velocity returns to zero; the ground keeps the displacement A T_p^2 / (2 pi)
-    (a fling step). Returns PulseHistory in m/s^2, m/s, m.
+    ``amp`` = A (m/s^2, or g with ``amp_unit='g'``), ``period`` = T_p (s), ``cycles`` = n,
+    a whole number 1 <= n <= 10^6 (default 1; e.g. 20 cycles of harmonic shaking).
+    The velocity v = A T_p sin^2(pi t / T_p) / pi returns to zero at every cycle end;
+    the displacement grows by A T_p^2 / (2 pi) per cycle and the ground keeps
+    n A T_p^2 / (2 pi) after the pulse (a fling step). Returns PulseHistory in m/s^2,
+    m/s, m.
     """
     return _evaluate("sine_cycle", t, rename={"duration": "period"},
-                     amp=_amplitude(amp, amp_unit, g), duration=period)
+                     amp=_amplitude(amp, amp_unit, g), duration=period, cycles=cycles)
 
 
-def cosine_cycle(t, amp, period, amp_unit="m/s2", g=STANDARD_GRAVITY):
-    """One-cycle cosine acceleration pulse a = A cos(2 pi t / T_p) for 0 <= t < T_p.
+def cosine_cycle(t, amp, period, cycles=1, amp_unit="m/s2", g=STANDARD_GRAVITY):
+    """Cosine acceleration pulse of n cycles, a = A cos(2 pi t / T_p) for 0 <= t < n T_p.
 
-    The acceleration jumps to A at t = 0; velocity and displacement return to zero at
-    T_p. Returns PulseHistory in m/s^2, m/s, m.
+    ``amp`` = A (m/s^2, or g with ``amp_unit='g'``), ``period`` = T_p (s), ``cycles`` = n,
+    a whole number 1 <= n <= 10^6 (default 1). The acceleration jumps to A at t = 0
+    and back to 0 at n T_p; velocity and displacement are periodic and return to zero
+    at every cycle end. Returns PulseHistory in m/s^2, m/s, m.
     """
     return _evaluate("cosine_cycle", t, rename={"duration": "period"},
-                     amp=_amplitude(amp, amp_unit, g), duration=period)
+                     amp=_amplitude(amp, amp_unit, g), duration=period, cycles=cycles)
 
 
 def rectangular(t, amp, duration, amp_unit="m/s2", g=STANDARD_GRAVITY):
@@ -294,7 +301,8 @@ def _excitation(pulse, accel, dt, dt_missing, t):
 def define(kind, **params):
     """A pulse, validated, to pass to other modules (e.g.
     :func:`seispulse.sliding.simulate`): ``define('half_sine', amp=0.3, amp_unit='g',
-    duration=0.8)`` takes the keyword parameters of the pulse's function, scalars only.
+    duration=0.8)`` or ``define('sine_cycle', amp=0.4, amp_unit='g', period=1.0,
+    cycles=20)`` takes the keyword parameters of the pulse's function, scalars only.
     Returns :class:`Pulse`."""
     if not isinstance(kind, str) or kind.strip().lower() not in _BY_NAME:
         raise InvalidInputError(

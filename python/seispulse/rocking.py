@@ -317,7 +317,8 @@ def overturning_map(kind, freq_ratio, amp_ratio, alpha, e=None, linearized=False
     omega_p = 2 pi/T_p with T_p the period (sine_cycle, cosine_cycle), the pulse length
     (half_sine, rectangular, triangular) or t_d (exponential: f = p t_d =
     2 pi/freq_ratio); omega_p = 2 pi f_p for the Ricker wavelet. `shape` takes beta and
-    full (exponential), peak_frac (triangular). e defaults to Housner's
+    full (exponential), peak_frac (triangular), cycles (sine_cycle, cosine_cycle: n whole
+    periods of 2 pi/omega_p each, 1 <= n <= 10^6, default 1). e defaults to Housner's
     1 - 1.5 sin^2(alpha). method='closed' (exponential half cycle only) classifies with
     the linearized closed forms (regions O -> 1, S and no rocking -> 0), with the
     linearized uplift amplitude g alpha: eta = alpha/(amp_ratio tan alpha).
@@ -366,7 +367,7 @@ def _template_params(kind, shape):
         return {"amp": 1.0, "td": 1.0, "beta": shape.get("beta", 0.0),
                 "full": shape.get("full", False)}
     if k in ("sine_cycle", "sine", "cosine_cycle", "cosine"):
-        return {"amp": 1.0, "period": 1.0}
+        return {"amp": 1.0, "period": 1.0, "cycles": shape.get("cycles", 1)}
     if k in ("triangular", "triangle"):
         return {"amp": 1.0, "duration": 1.0, "peak_frac": shape.get("peak_frac", 0.5)}
     if k == "ricker":

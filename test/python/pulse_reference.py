@@ -172,19 +172,20 @@ def half_sine(t, amp, duration, amp_unit="m/s2", g=G_STANDARD):
     return A * mp.sin(w * t), A * _omc(w * t) / w, A * _xms(w * t) / w**2
 
 
-def sine_cycle(t, amp, period, amp_unit="m/s2", g=G_STANDARD):
+def sine_cycle(t, amp, period, amp_unit="m/s2", g=G_STANDARD, cycles=1):
     A, T, t = _amp(amp, amp_unit, g), mpf(period), mpf(t)
+    n = int(cycles)
     if t < 0:
         return mpf(0), mpf(0), mpf(0)
-    if t >= T:    # v(T) = 0, d(T) = A T / w = A T^2 / (2 pi)
-        return mpf(0), mpf(0), A * T**2 / (2 * mp.pi)
+    if t >= n * T:    # v(nT) = 0, d(nT) = n A T / w = n A T^2 / (2 pi)
+        return mpf(0), mpf(0), n * A * T**2 / (2 * mp.pi)
     w = 2 * mp.pi / T
     return A * mp.sin(w * t), A * _omc(w * t) / w, A * _xms(w * t) / w**2
 
 
-def cosine_cycle(t, amp, period, amp_unit="m/s2", g=G_STANDARD):
+def cosine_cycle(t, amp, period, amp_unit="m/s2", g=G_STANDARD, cycles=1):
     A, T, t = _amp(amp, amp_unit, g), mpf(period), mpf(t)
-    if t < 0 or t >= T:   # v(T) = d(T) = 0
+    if t < 0 or t >= int(cycles) * T:   # v(nT) = d(nT) = 0
         return mpf(0), mpf(0), mpf(0)
     w = 2 * mp.pi / T
     return A * mp.cos(w * t), A * mp.sin(w * t) / w, A * _omc(w * t) / w**2

@@ -117,8 +117,11 @@ def test_pulse_parameter_positions_from_fortran():
                        if n.startswith("PULSE_PARAM_"))
     assert positions == list(range(1, _fortran_codes.PULSE_NPARAM + 1))
     assert pulse._PARAM_ORDER == ("amp", "duration", "beta", "full", "peak_frac", "freq",
-                                  "t0", "gamma", "nu_deg")
+                                  "t0", "gamma", "nu_deg", "cycles")
     packed = pulse.define("mavroeidis_papageorgiou", vamp=0.7, freq=1.3, gamma=2.5,
                           nu_deg=40.0, t0=1.5).params
     assert packed[_fortran_codes.PULSE_PARAM_FREQ - 1] == 1.3
     assert packed[_fortran_codes.PULSE_PARAM_NU_DEG - 1] == 40.0
+    assert packed[_fortran_codes.PULSE_PARAM_CYCLES - 1] == 1.0
+    packed = pulse.define("sine_cycle", amp=2.0, period=0.5, cycles=20).params
+    assert packed[_fortran_codes.PULSE_PARAM_CYCLES - 1] == 20.0

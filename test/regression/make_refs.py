@@ -164,7 +164,8 @@ def pulse_function(pgroup):
     elif kind == "triangular":
         kw = dict(duration=float(p.pop("duration")), peak_frac=float(p.pop("peak_frac", 0.5)))
     elif kind in ("sine_cycle", "cosine_cycle"):
-        kw = dict(period=float(p.pop("period") if "period" in p else p.pop("duration")))
+        kw = dict(period=float(p.pop("period") if "period" in p else p.pop("duration")),
+                  cycles=int(float(p.pop("cycles", 1))))
     elif kind == "ricker":
         kw = dict(freq=float(p.pop("freq")))
         if "t0" in p:

@@ -30,13 +30,16 @@
 !>   step): the contact jumps to the opposite rim point, psi -> psi + pi,
 !>   theta' -> e |theta'|, psi', phi_s' (the vertical angular velocity) kept.
 !> - Floor: a pass with spin turns around above theta = 0 (physically: no impact, the
-!>   contact runs round the rim fast). A pass that goes below theta_floor = 1e-8 theta_c
-!>   counts as an impact at the downward crossing of theta_floor (theta kept, mirrored to
-!>   the opposite rim point); a step that cannot be resolved above the time resolution
-!>   with theta < 1e-3 theta_c also counts as an impact (a touch). Every loop is bounded
-!>   by the step budget (2e6 attempted steps).
+!>   contact runs round the rim fast, psi' ~ 1/theta^2). A pass whose minimum lies below
+!>   theta_floor = 1e-4 theta_c (the opposite rim within 2 r theta_floor of the ground)
+!>   counts as an impact at the downward crossing of theta_floor (theta kept, the contact
+!>   mirrored to the opposite rim point); a step that cannot be resolved above the time
+!>   resolution with theta < 1e-3 theta_c also counts as one (a touch). Every loop is
+!>   bounded by the step budget (2e6 attempted steps, 40 more per record sample).
 !> - Rest: after an impact, when the next flight would rise less than 1e-10 theta_c (the
-!>   planar model's rule): the body sits on its base (all rates set to 0) from the impact
+!>   planar model's rule); after a floor pass, also when the energy of the rocking,
+!>   E - m g h - C omega_Z^2/2, is below m g r 1e-10 theta_c (the same measure): the body
+!>   sits on its base (all rates set to 0: no base torque is modelled) from the impact
 !>   time plus the Zeno estimate tau/(1 - e).
 !> - Overturned when theta reaches pi/2. After the excitation, E < m g R with
 !>   theta < theta_c proves that the body never overturns (doc/rolling.md section 4).
@@ -115,7 +118,9 @@ module seispulse_cylinder_roll
     !> A flight rising less than rest_tol theta_c is rest (as the planar model).
     real(dp), parameter :: rest_tol = 1.0e-10_dp
     !> Floor of a pass, and the tilt below which an unresolvable step is a touch (x theta_c).
-    real(dp), parameter :: floor_tol = 1.0e-8_dp, touch_tol = 1.0e-3_dp
+    real(dp), parameter :: floor_tol = 1.0e-4_dp, touch_tol = 1.0e-3_dp
+    !> The regularisation of 1/sin(theta) (L.7), x theta_c.
+    real(dp), parameter :: reg_tol = 1.0e-8_dp
     integer, parameter :: max_steps_default = 2000000, steps_per_sample = 40
     integer, parameter :: RG_ZERO = 0, RG_PULSE = 1, RG_RECORD = 2
     integer, parameter :: WHY_REACHED = 0, WHY_REST = 2, WHY_CAP = 3, WHY_LIMIT = 4, &
@@ -483,7 +488,7 @@ contains
         st%sys%ia = body%j_g
         st%sys%ic = body%j_axis
         st%theta_c = atan2(body%r, body%h)
-        st%sys%s_reg = floor_tol * st%theta_c
+        st%sys%s_reg = reg_tol * st%theta_c
         st%big_r = hypot(body%r, body%h)
         j_o = body%j_g + body%mass * st%big_r**2
         st%p = sqrt(body%mass * body%g * st%big_r / j_o)
@@ -856,11 +861,9 @@ contains
                         call locate(st, 1, half_pi, 0.0_dp, x_turn, th0 - half_pi, &
                                     th_turn - half_pi, x_ev)
                     else if (th1 <= 0.0_dp) then
+                        ! (th_turn >= th0 >= 0; th0 = 0 only on a first step, which rises)
                         ev = EV_IMPACT
                         call locate(st, 1, 0.0_dp, x_turn, 1.0_dp, th_turn, th1, x_ev)
-                    else if (th1 < fl) then
-                        ev = EV_FLOOR
-                        call locate(st, 1, fl, x_turn, 1.0_dp, th_turn - fl, th1 - fl, x_ev)
                     end if
                 else if (turn_min) then
                     if (th0 <= fl) then
@@ -876,13 +879,6 @@ contains
                 else if (th1 <= 0.0_dp) then
                     ev = EV_IMPACT
                     call locate(st, 1, 0.0_dp, 0.0_dp, 1.0_dp, th0, th1, x_ev)
-                else if (th1 < fl .and. w1 < 0.0_dp) then
-                    ev = EV_FLOOR
-                    if (th0 <= fl) then
-                        x_ev = 0.0_dp
-                    else
-                        call locate(st, 1, fl, 0.0_dp, 1.0_dp, th0 - fl, th1 - fl, x_ev)
-                    end if
                 else if (th1 >= half_pi) then
                     ev = EV_CAP
                     call locate(st, 1, half_pi, 0.0_dp, 1.0_dp, th0 - half_pi, th1 - half_pi, &
@@ -962,6 +958,13 @@ contains
         call st%sys%rhs(st%t, st%y, st%f)
         if (st%sys%gr%src == RG_ZERO) st%e_ref = energy(st%sys, st%y)
         acc0 = st%f(4)
+        if (ev /= EV_IMPACT .and. rocking_energy(st) <= rest_tol * st%theta_c * st%sys%m &
+                * st%sys%g * st%sys%r) then
+            ! a floor pass left (almost) nothing but the turn about the vertical: rest
+            call set_rest(st, hist, run, st%t)
+            why = WHY_REST
+            return
+        end if
         if (.not. acc0 > 0.0_dp) then
             ! pushed back onto the base: the next flight rises theta'^2/(2|theta''|)
             if (abs(acc0) > 0.0_dp) then
@@ -1134,7 +1137,11 @@ contains
         case (ROLL_RUN_OVERTURN)
             run%t_end = st%t
             ! on its side: frozen, no contact model any more
-            call put_state(st, st%t, st%y, col, run)
+            col(1:6) = st%y(1:6)
+            col(ROLL_OUT_XP) = st%y(7) - st%sys%h * sin(st%y(2))
+            col(ROLL_OUT_YP) = st%y(8) + st%sys%h * cos(st%y(2))
+            col(ROLL_OUT_XG) = st%y(7)
+            col(ROLL_OUT_YG) = st%y(8)
             col(1) = half_pi
             col(4:6) = 0.0_dp
             col(ROLL_OUT_NORMAL:ROLL_OUT_ENERGY) = nan
@@ -1158,6 +1165,15 @@ contains
         logical :: safe
         safe = st%y(1) < st%theta_c .and. energy(st%sys, st%y) < st%sys%m * st%sys%g * st%big_r
     end function never_overturns
+
+    !> Energy above rest, E - m g h, less the turn about the vertical C omega_Z^2/2 (J): the
+    !> energy of the rocking (the rest rule of the floor passes, doc/rolling.md section 4).
+    pure function rocking_energy(st) result(en)
+        type(roll_state_t), intent(in) :: st
+        real(dp) :: en
+        en = energy(st%sys, st%y) - st%sys%m * st%sys%g * st%sys%h &
+             - 0.5_dp * st%sys%ic * (st%y(5) + st%y(6) * cos(st%y(1)))**2
+    end function rocking_energy
 
     pure function min_step(st, t) result(h)
         type(roll_state_t), intent(in) :: st

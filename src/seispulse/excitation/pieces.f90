@@ -11,7 +11,8 @@
 !> ground object, so this module knows nothing of sliding or rocking.
 !>
 !> The pieces (breaks in t) of a pulse: exponential 0, t_d/2, t_d (3t_d/2, 2t_d);
-!> half-sine and cosine cycle 0, T/2, T; sine cycle 0, T/4, 3T/4, T; rectangular 0, T;
+!> half-sine 0, T/2, T; n cosine cycles 0, T/2, T, ..., n T (every extremum); n sine cycles
+!> 0, T/4, 3T/4, 5T/4, ..., (n - 1/4) T, n T (every extremum and the end); rectangular 0, T;
 !> triangular 0, rT, T. The spike (beta = +inf) has none: it exceeds any threshold at
 !> one instant only, with no area. Ricker: from t = 0, breaks at the extrema
 !> x = pi f_p (t - t0) = -sqrt(1.5), 0, +sqrt(1.5), the last piece cut at x = 10
@@ -19,7 +20,7 @@
 !> a_g are not closed form: the window is cut into pieces of 1/(64 f_p), each split at
 !> the sign changes of the closed-form jerk (see `mp_next_break`). A record, accel(i)
 !> at t = (i - 1) dt and linear in between: each step is a piece.
-!> Where a_g jumps (the box at t_d and 2 t_d, the rectangle and the cosine cycle at T,
+!> Where a_g jumps (the box at t_d and 2 t_d, the rectangle at T, the cosine cycles at n T,
 !> the triangle with r = 1 at T) the values at the ends are the limits from inside the
 !> piece. The generator stores nothing that grows with the run.
 module seispulse_pieces
@@ -73,6 +74,8 @@ module seispulse_pieces
         integer :: nbreaks = 0
         integer :: next = 1
         real(dp) :: breaks(8) = 0.0_dp
+        ! sine and cosine cycles: breaks made on the fly (2n + 2 or 2n + 1 of them)
+        integer :: cyc = 0                  !! 0 the list above; 1 sine, 2 cosine cycles
         ! record
         integer :: nsamp = 0
         integer :: step = 0
@@ -208,12 +211,17 @@ contains
             else
                 call pulse_breaks(p, it%breaks(1:5), it%nbreaks)
             end if
-        case (PULSE_HALF_SINE, PULSE_COSINE_CYCLE)
+        case (PULSE_HALF_SINE)
             it%nbreaks = 3
             it%breaks(1:3) = [0.0_dp, 0.5_dp * td, td]
+        case (PULSE_COSINE_CYCLE)
+            ! k T/2, k = 0 .. 2n (cycle_break)
+            it%cyc = 2
+            it%nbreaks = 2 * nint(p%cycles) + 1
         case (PULSE_SINE_CYCLE)
-            it%nbreaks = 4
-            it%breaks(1:4) = [0.0_dp, 0.25_dp * td, 0.75_dp * td, td]
+            ! 0, (2k - 3) T/4 for k = 2 .. 2n + 1, n T (cycle_break)
+            it%cyc = 1
+            it%nbreaks = 2 * nint(p%cycles) + 2
         case (PULSE_RICKER)
             ! extrema of (1 - 2x^2) e^(-x^2) at x = 0, +-sqrt(3/2); cut at x = 10
             xs = [-sqrt(1.5_dp), 0.0_dp, sqrt(1.5_dp), ricker_x_cut]
@@ -322,8 +330,13 @@ contains
             end do
         else
             do while (it%next < it%nbreaks)
-                ta = it%breaks(it%next)
-                tb = it%breaks(it%next + 1)
+                if (it%cyc == 0) then
+                    ta = it%breaks(it%next)
+                    tb = it%breaks(it%next + 1)
+                else
+                    ta = cycle_break(it, it%next)
+                    tb = cycle_break(it, it%next + 1)
+                end if
                 it%next = it%next + 1
                 if (tb > ta) then
                     call pulse_at(it%p, ta, aa, v, d, it%cexp)
@@ -336,9 +349,31 @@ contains
         end if
     end subroutine next_piece
 
+    !> Break k (s) of n sine (it%cyc = 1) or cosine (2) cycles of period T: the extrema of
+    !> a_g and the ends. Sine: 0, then (2k - 3) T/4 for k = 2 .. 2n + 1, then n T; cosine:
+    !> (k - 1) T/2 for k = 1 .. 2n + 1. The factors are exact (multiples of 1/4 below 2^50),
+    !> so n = 1 gives 0, T/4, 3T/4, T and 0, T/2, T, and the last break is n T, the end
+    !> time of seispulse_pulses.
+    pure function cycle_break(it, k) result(t)
+        type(piece_iter_t), intent(in) :: it
+        integer, intent(in) :: k
+        real(dp) :: t
+        if (it%cyc == 1) then
+            if (k <= 1) then
+                t = 0.0_dp
+            else if (k >= it%nbreaks) then
+                t = it%p%duration * it%p%cycles
+            else
+                t = (0.25_dp * real(2 * k - 3, dp)) * it%p%duration
+            end if
+        else
+            t = (0.5_dp * real(k - 1, dp)) * it%p%duration
+        end if
+    end function cycle_break
+
     !> a_g just before the break t (left limit): pulse_at is right-continuous, so it
     !> differs only where the pulse jumps: the box (beta = -inf) at t_d and 2 t_d,
-    !> the rectangle and the cosine cycle at T, the triangle with r = 1 at T.
+    !> the rectangle at T, the cosine cycles at n T, the triangle with r = 1 at T.
     pure function accel_before(p, t) result(a)
         type(pulse_t), intent(in) :: p
         real(dp), intent(in) :: t
@@ -354,8 +389,10 @@ contains
                     a = p%amp
                 end if
             end if
-        case (PULSE_RECTANGULAR, PULSE_COSINE_CYCLE)
+        case (PULSE_RECTANGULAR)
             if (t >= p%duration) a = p%amp
+        case (PULSE_COSINE_CYCLE)
+            if (t >= p%duration * p%cycles) a = p%amp
         case (PULSE_TRIANGULAR)
             if (t >= p%duration .and. p%peak_frac >= 1.0_dp) a = p%amp
         end select

@@ -42,7 +42,8 @@ module seispulse_pulses
               rectangular_pulse, triangular_pulse, ricker_pulse, mp_pulse
     public :: pulse_from_params, PULSE_NPARAM, PULSE_PARAM_AMP, PULSE_PARAM_DURATION, &
               PULSE_PARAM_BETA, PULSE_PARAM_FULL, PULSE_PARAM_PEAK_FRAC, PULSE_PARAM_FREQ, &
-              PULSE_PARAM_T0, PULSE_PARAM_GAMMA, PULSE_PARAM_NU_DEG
+              PULSE_PARAM_T0, PULSE_PARAM_GAMMA, PULSE_PARAM_NU_DEG, PULSE_PARAM_CYCLES, &
+              PULSE_MAX_CYCLES
     ! acceleration only (inner loops), peak acceleration, and the formulas solvers share
     public :: pulse_accel, pulse_peak_accel
     public :: ricker_accel, ricker_window, ricker_x_cut
@@ -52,8 +53,8 @@ module seispulse_pulses
 
     integer, parameter :: PULSE_EXPONENTIAL = 1   !! Jacobsen & Ayre exponential pulse
     integer, parameter :: PULSE_HALF_SINE = 2     !! a = A sin(pi t/T), 0 <= t < T
-    integer, parameter :: PULSE_SINE_CYCLE = 3    !! a = A sin(2 pi t/T), 0 <= t < T
-    integer, parameter :: PULSE_COSINE_CYCLE = 4  !! a = A cos(2 pi t/T), 0 <= t < T
+    integer, parameter :: PULSE_SINE_CYCLE = 3    !! a = A sin(2 pi t/T), 0 <= t < n T
+    integer, parameter :: PULSE_COSINE_CYCLE = 4  !! a = A cos(2 pi t/T), 0 <= t < n T
     integer, parameter :: PULSE_RECTANGULAR = 5   !! a = A, 0 <= t < T
     integer, parameter :: PULSE_TRIANGULAR = 6    !! rises to A at t = r T, back to 0 at T
     integer, parameter :: PULSE_RICKER = 7        !! Ricker wavelet (acceleration)
@@ -61,11 +62,14 @@ module seispulse_pulses
     integer, parameter :: PULSE_NKINDS = 8
 
     !> Length of the packed parameter vector of `pulse_from_params` (the f2py layer).
-    integer, parameter :: PULSE_NPARAM = 9
+    integer, parameter :: PULSE_NPARAM = 10
     !> Positions in that vector, by name (the Python layer packs by these names).
     integer, parameter :: PULSE_PARAM_AMP = 1, PULSE_PARAM_DURATION = 2, PULSE_PARAM_BETA = 3, &
                           PULSE_PARAM_FULL = 4, PULSE_PARAM_PEAK_FRAC = 5, PULSE_PARAM_FREQ = 6, &
-                          PULSE_PARAM_T0 = 7, PULSE_PARAM_GAMMA = 8, PULSE_PARAM_NU_DEG = 9
+                          PULSE_PARAM_T0 = 7, PULSE_PARAM_GAMMA = 8, PULSE_PARAM_NU_DEG = 9, &
+                          PULSE_PARAM_CYCLES = 10
+    !> Largest number of cycles of a sine or cosine cycle pulse.
+    real(dp), parameter :: PULSE_MAX_CYCLES = 1.0e6_dp
 
     character(len=*), parameter :: kind_names(PULSE_NKINDS) = [character(len=24) :: &
         'exponential', 'half_sine', 'sine_cycle', 'cosine_cycle', 'rectangular', &
@@ -105,12 +109,16 @@ module seispulse_pulses
     !> |---|---|---|---|
     !> | exponential | A_g, peak acceleration (m/s^2) | duration = t_d, one lobe (s) | beta, full |
     !> | half_sine | peak acceleration | duration = pulse length | |
-    !> | sine_cycle, cosine_cycle | peak acceleration | duration = period T_p | |
+    !> | sine_cycle, cosine_cycle | peak acceleration | duration = period T_p | cycles n |
     !> | rectangular | acceleration | duration | |
     !> | triangular | peak acceleration | duration | peak_frac r in [0, 1] |
     !> | ricker | peak acceleration a_p at t0 | freq f_p (Hz) | t0 >= 0 (s) |
     !> | mavroeidis_papageorgiou | velocity amplitude A (m/s) | freq f_p (Hz) | gamma > 1, nu_deg,
     !> t0 |
+    !>
+    !> Sine and cosine cycles: n = `cycles` whole periods (1 <= n <= 10^6, default 1), so the
+    !> pulse lasts n T_p: a = A sin(2 pi t/T_p) or A cos(2 pi t/T_p) on 0 <= t < n T_p
+    !> (doc/pulses.md (P.11), (P.12)).
     !>
     !> Ricker: a = a_p (1 - 2 pi^2 f_p^2 (t - t0)^2) exp(-pi^2 f_p^2 (t - t0)^2) for t >= 0
     !> (f_p is the frequency of the Fourier amplitude peak; omega_p = 2 pi f_p gives
@@ -130,6 +138,7 @@ module seispulse_pulses
         real(dp) :: t0 = 1.5_dp              !! Ricker, M&P: centre time (s)
         real(dp) :: gamma = 2.0_dp           !! M&P: oscillatory character, > 1
         real(dp) :: nu_deg = 0.0_dp          !! M&P: phase (degrees)
+        real(dp) :: cycles = 1.0_dp          !! sine, cosine cycle: number of periods n, whole
     end type pulse_t
 
     !> Constants of the exponential pulse that depend on beta only.
@@ -412,28 +421,32 @@ contains
         end if
     end subroutine half_sine_eval
 
-    !> a = sin(2 pi tau) on [0, 1): v = sin^2(pi tau)/pi,
-    !> d = (2 tau - sin(2 pi tau)/pi)/(4 pi); afterwards v = 0, d = 1/(2 pi).
-    elemental subroutine sine_cycle_eval(tau, a, v, d)
+    !> n cycles a = sin(2 pi tau) on [0, n) (doc/pulses.md (P.11)): v = sin^2(pi tau)/pi
+    !> (periodic, zero at every cycle end), d = (2 tau - sin(2 pi tau)/pi)/(4 pi) (growing by
+    !> 1/(2 pi) per cycle); afterwards v = 0, d = n/(2 pi). n = 1 is the single cycle.
+    elemental subroutine sine_cycle_eval(tau, n, a, v, d)
         real(dp), intent(in) :: tau
+        real(dp), intent(in) :: n   !! number of cycles, whole, >= 1
         real(dp), intent(out) :: a, v, d
-        if (tau < 1.0_dp) then
+        if (tau < n) then
             a = sin_pi(2.0_dp * tau)
             v = sin_pi(tau)**2 / pi
             d = tau_minus_sinpi(2.0_dp * tau) / (4.0_dp * pi)
         else
             a = 0.0_dp
             v = 0.0_dp
-            d = 0.5_dp / pi
+            d = n * (0.5_dp / pi)
         end if
     end subroutine sine_cycle_eval
 
-    !> a = cos(2 pi tau) on [0, 1): v = sin(2 pi tau)/(2 pi), d = sin^2(pi tau)/(2 pi^2);
-    !> velocity and displacement return to zero at tau = 1.
-    elemental subroutine cosine_cycle_eval(tau, a, v, d)
+    !> n cycles a = cos(2 pi tau) on [0, n) (doc/pulses.md (P.12)): v = sin(2 pi tau)/(2 pi),
+    !> d = sin^2(pi tau)/(2 pi^2), both periodic; velocity and displacement return to zero
+    !> at every cycle end and stay zero after tau = n.
+    elemental subroutine cosine_cycle_eval(tau, n, a, v, d)
         real(dp), intent(in) :: tau
+        real(dp), intent(in) :: n   !! number of cycles, whole, >= 1
         real(dp), intent(out) :: a, v, d
-        if (tau >= 1.0_dp) then
+        if (tau >= n) then
             a = 0.0_dp
             v = 0.0_dp
             d = 0.0_dp
@@ -552,17 +565,20 @@ contains
     !> cycles, the half sine and the rectangle take one transcendental call,
     !> sin(2 pi t/T) etc. (pulse_at reduces the argument exactly with sin_pi: the two
     !> agree to a few ulps, not bitwise), and the Ricker wavelet is `ricker_accel`; every
-    !> other case, and t < 0 or t >= T (rest, end of the pulse), is pulse_at's value.
+    !> other case, and t < 0 or t >= the end of the pulse (rest), is pulse_at's value.
     !> `consts` as in pulse_at.
     elemental function pulse_accel(p, t, consts) result(a)
         type(pulse_t), intent(in) :: p                          !! a valid pulse
         real(dp), intent(in) :: t                               !! time (s)
         type(exp_consts_t), intent(in), optional :: consts      !! exp_consts(p%beta)
         real(dp) :: a                                           !! a_g(t) (m/s^2)
-        real(dp) :: v, d
+        real(dp) :: v, d, te
         select case (p%kind)
         case (PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE, PULSE_HALF_SINE, PULSE_RECTANGULAR)
-            if (t >= 0.0_dp .and. t < p%duration) then
+            te = p%duration
+            if (p%kind == PULSE_SINE_CYCLE .or. p%kind == PULSE_COSINE_CYCLE) &
+                te = p%duration * p%cycles
+            if (t >= 0.0_dp .and. t < te) then
                 select case (p%kind)
                 case (PULSE_SINE_CYCLE)
                     a = p%amp * sin(two_pi * (t / p%duration))
@@ -792,20 +808,24 @@ contains
         p = timed_pulse(PULSE_HALF_SINE, amp, duration)
     end function half_sine_pulse
 
-    !> One-cycle sine acceleration pulse a = A sin(2 pi t/T_p) on [0, T_p).
-    pure function sine_cycle_pulse(amp, period) result(p)
+    !> Sine acceleration pulse of n cycles, a = A sin(2 pi t/T_p) on [0, n T_p).
+    pure function sine_cycle_pulse(amp, period, cycles) result(p)
         real(dp), intent(in) :: amp     !! peak acceleration (m/s^2)
         real(dp), intent(in) :: period  !! T_p (s)
+        integer, intent(in), optional :: cycles  !! n, 1 <= n <= 10^6 (default 1)
         type(pulse_t) :: p
         p = timed_pulse(PULSE_SINE_CYCLE, amp, period)
+        if (present(cycles)) p%cycles = real(cycles, dp)
     end function sine_cycle_pulse
 
-    !> One-cycle cosine acceleration pulse a = A cos(2 pi t/T_p) on [0, T_p).
-    pure function cosine_cycle_pulse(amp, period) result(p)
+    !> Cosine acceleration pulse of n cycles, a = A cos(2 pi t/T_p) on [0, n T_p).
+    pure function cosine_cycle_pulse(amp, period, cycles) result(p)
         real(dp), intent(in) :: amp     !! peak acceleration (m/s^2)
         real(dp), intent(in) :: period  !! T_p (s)
+        integer, intent(in), optional :: cycles  !! n, 1 <= n <= 10^6 (default 1)
         type(pulse_t) :: p
         p = timed_pulse(PULSE_COSINE_CYCLE, amp, period)
+        if (present(cycles)) p%cycles = real(cycles, dp)
     end function cosine_cycle_pulse
 
     !> Rectangular acceleration pulse a = A on [0, T).
@@ -880,6 +900,7 @@ contains
         p%t0 = params(PULSE_PARAM_T0)
         p%gamma = params(PULSE_PARAM_GAMMA)
         p%nu_deg = params(PULSE_PARAM_NU_DEG)
+        p%cycles = params(PULSE_PARAM_CYCLES)
     end function pulse_from_params
 
     !> Check a pulse; the message names the offending parameter and its range.
@@ -920,6 +941,8 @@ contains
         select case (p%kind)
         case (PULSE_EXPONENTIAL)
             call check_beta(p%beta, stat, errmsg)
+        case (PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE)
+            call check_cycles(p%cycles, stat, errmsg)
         case (PULSE_TRIANGULAR)
             if (ieee_is_nan(p%peak_frac) .or. p%peak_frac < 0.0_dp &
                 .or. p%peak_frac > 1.0_dp) then
@@ -1034,9 +1057,9 @@ contains
             case (PULSE_HALF_SINE)
                 call half_sine_eval(tau, a, v, d)
             case (PULSE_SINE_CYCLE)
-                call sine_cycle_eval(tau, a, v, d)
+                call sine_cycle_eval(tau, p%cycles, a, v, d)
             case (PULSE_COSINE_CYCLE)
-                call cosine_cycle_eval(tau, a, v, d)
+                call cosine_cycle_eval(tau, p%cycles, a, v, d)
             case (PULSE_RECTANGULAR)
                 call box_eval(tau, .false., a, v, d)
             case (PULSE_TRIANGULAR)
@@ -1076,7 +1099,8 @@ contains
     end subroutine scale_to_si
 
     !> Times (s) where the acceleration has a kink or a jump, ascending: an integrator
-    !> steps exactly onto them. The last one is where the pulse ends (none for Ricker).
+    !> steps exactly onto them. The last one is where the pulse ends (none for Ricker;
+    !> n T for n sine or cosine cycles).
     pure subroutine pulse_breaks(p, breaks, nbreaks)
         type(pulse_t), intent(in) :: p   !! a valid pulse
         real(dp), intent(out) :: breaks(5) !! break times (s), first nbreaks valid
@@ -1101,6 +1125,10 @@ contains
             nbreaks = 2
             half = 0.5_dp * p%gamma / p%freq
             breaks(1:2) = [p%t0 - half, p%t0 + half]
+        case (PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE)
+            ! smooth across the cycle ends: the jumps and kinks are at 0 and n T only
+            nbreaks = 2
+            breaks(2) = p%duration * p%cycles
         case default
             nbreaks = 2
             breaks(2) = p%duration
@@ -1175,6 +1203,22 @@ contains
             list = list//', '//trim(kind_names(i))
         end do
     end function kind_list
+
+    !> Number of cycles of a sine or cosine cycle pulse: a whole number 1 <= n <= 10^6.
+    subroutine check_cycles(cycles, stat, errmsg)
+        real(dp), intent(in) :: cycles                        !! number of cycles
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        stat = SEISPULSE_SUCCESS
+        ! NaN fails the range test; inside the range aint is exact
+        if (.not. (cycles >= 1.0_dp .and. cycles <= PULSE_MAX_CYCLES)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'cycles = ' &
+                           //real_str(cycles)//': must be a whole number in [1, 1000000]')
+        else if (aint(cycles) /= cycles) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'cycles = ' &
+                           //real_str(cycles)//': must be a whole number in [1, 1000000]')
+        end if
+    end subroutine check_cycles
 
     !> beta of the exponential pulse: any real number or +-inf, not NaN.
     subroutine check_beta(beta, stat, errmsg)

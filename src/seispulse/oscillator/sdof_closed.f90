@@ -52,7 +52,9 @@
 !>   the spike (no area: zero response); a huge finite beta gives the impulse of area
 !>   A t_d/beta at t_d/2 (and 3 t_d/2 negated).
 !> * half_sine, sine_cycle, cosine_cycle, mavroeidis_papageorgiou: sums of sinusoids (M&P:
-!>   three, the derivative of (A/2)(1 + cos(2 pi f x/gamma)) cos(2 pi f x + nu)).
+!>   three, the derivative of (A/2)(1 + cos(2 pi f x/gamma)) cos(2 pi f x + nu)); n sine or
+!>   cosine cycles are one segment of n T with A sin(2 pi n s) or A cos(2 pi n s), the same
+!>   closed form as one cycle (the peak search needs n <= 32768: 32 scan steps per cycle).
 !> * rectangular: a constant; triangular: two linear ramps.
 !> * ricker: no elementary closed form (the complex error function would be needed); its
 !>   Duhamel integral is evaluated by composite 20-node Gauss-Legendre on equal panels no
@@ -539,7 +541,8 @@ contains
     !> rest, free vibration included, and the (earliest) times where they occur. Zero response
     !> (the spike, amp = 0): zero maxima at t = 0. The scan and refinement are described in
     !> the module documentation; a period too short for the scan (below 32/2^20 of the
-    !> pulse's longest segment) or an M&P pulse with gamma > 32767 is refused
+    !> pulse's longest segment), an M&P pulse with gamma > 32767 or more than 32768 sine or
+    !> cosine cycles is refused
     !> (SEISPULSE_INVALID_INPUT, the message names the shortest period allowed).
     subroutine sdof_pulse_peaks(p, period, damping, z_max, t_z, v_max, t_v, a_max, t_a, &
                                 stat, errmsg)
@@ -773,7 +776,8 @@ contains
     !> The peak scan takes at most max_scan steps per segment and at least scan_per_cycle per
     !> period of the oscillator and of each sinusoidal term: a longest segment d needs
     !> T >= scan_per_cycle d/max_scan (= d/32768), an M&P pulse gamma + 1 <= 32768 cycles
-    !> (its fastest term has gamma + 1 cycles in the window). A coarser scan would alias.
+    !> (its fastest term has gamma + 1 cycles in the window), sine and cosine cycles
+    !> n <= 32768. A coarser scan would alias.
     subroutine check_scan_period(p, period, name, stat, errmsg)
         type(pulse_t), intent(in) :: p
         real(dp), intent(in) :: period
@@ -782,6 +786,15 @@ contains
         character(len=*), intent(inout), optional :: errmsg
         real(dp) :: dmax, tmin
         stat = SEISPULSE_SUCCESS
+        if (p%kind == PULSE_SINE_CYCLE .or. p%kind == PULSE_COSINE_CYCLE) then
+            if (p%cycles > real(max_scan, dp) / scan_per_cycle) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'cycles = ' &
+                    //real_str(p%cycles)//': too many cycles for the peak search (must be <= ' &
+                    //real_str(real(max_scan, dp) / scan_per_cycle) &
+                    //': at most 2^20 scan steps, 32 per cycle)')
+                return
+            end if
+        end if
         if (p%kind == PULSE_MP) then
             if (p%gamma + 1.0_dp > real(max_scan, dp) / scan_per_cycle) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'gamma = ' &
@@ -1180,11 +1193,13 @@ contains
             call add_seg(m, 0.0_dp, td)
             call add_sin(m%seg(1), cmplx(0.0_dp, -a, dp), pi)           ! A sin(pi s)
         case (PULSE_SINE_CYCLE)
-            call add_seg(m, 0.0_dp, td)
-            call add_sin(m%seg(1), cmplx(0.0_dp, -a, dp), two_pi)       ! A sin(2 pi s)
+            ! n cycles: one segment of n T, A sin(2 pi n s) (exact: the same a_g, no
+            ! superposition error; n = 1 is the single cycle)
+            call add_seg(m, 0.0_dp, td * p%cycles)
+            call add_sin(m%seg(1), cmplx(0.0_dp, -a, dp), two_pi * p%cycles)   ! A sin(2 pi n s)
         case (PULSE_COSINE_CYCLE)
-            call add_seg(m, 0.0_dp, td)
-            call add_sin(m%seg(1), cmplx(a, 0.0_dp, dp), two_pi)        ! A cos(2 pi s)
+            call add_seg(m, 0.0_dp, td * p%cycles)
+            call add_sin(m%seg(1), cmplx(a, 0.0_dp, dp), two_pi * p%cycles)    ! A cos(2 pi n s)
         case (PULSE_RECTANGULAR)
             call add_seg(m, 0.0_dp, td)
             call add_exp(m%seg(1), a, 0.0_dp, 0.0_dp)

@@ -475,14 +475,15 @@ contains
     !> integrator of `rock_pulse` (nonlinear, or Eq. 2.7 with `linearized`; the amplitude
     !> is scaled by g tan(alpha) in both). The map is dimensionless: p = 1 rad/s, g = 1.
     !> Time scale: omega_p = 2 pi/T_p with T_p the pulse duration (sine_cycle and
-    !> cosine_cycle: the period; half_sine, rectangular, triangular: the pulse length;
-    !> exponential: t_d, so f = p t_d = 2 pi/freq_ratio) and, for the Ricker wavelet,
+    !> cosine_cycle: the period of one cycle; half_sine, rectangular, triangular: the pulse
+    !> length; exponential: t_d, so f = p t_d = 2 pi/freq_ratio) and, for the Ricker wavelet,
     !> omega_p = 2 pi f_p. `template` supplies beta and full (exponential), peak_frac
-    !> (triangular) and, for the Ricker wavelet, the centre in periods, t0 f_p (default
-    !> 1.5); its amplitude and time scale are ignored. Each cell stops as soon as its
-    !> class is known (at most one impact after the end of the pulse). Optional vertical
-    !> ground acceleration a_v = kv a_g in every cell (doc/rocking.md section 7); a cell
-    !> whose kv a_g goes below -g is an error naming kv and its amp_ratio.
+    !> (triangular), cycles (sine_cycle, cosine_cycle: n cycles of T_p each, default 1) and,
+    !> for the Ricker wavelet, the centre in periods, t0 f_p (default 1.5); its amplitude
+    !> and time scale are ignored. Each cell stops as soon as its class is known (at most
+    !> one impact after the end of the pulse). Optional vertical ground acceleration
+    !> a_v = kv a_g in every cell (doc/rocking.md section 7); a cell whose kv a_g goes below
+    !> -g is an error naming kv and its amp_ratio.
     subroutine overturning_map(alpha, e, kind, freq_ratio, amp_ratio, classes, stat, errmsg, &
                                linearized, template, rtol, kv)
         real(dp), intent(in) :: alpha                         !! slenderness (rad), in (0, pi/2)

@@ -1,0 +1,236 @@
+"""Rocking with rolling of a cylinder (seispulse._cylinder_roll.roll): an independent
+Newton-Euler integration (rotation as a quaternion, contact point from the body's
+geometry, scipy solve_ivp) of the same motion, the planar limit against
+seispulse.rocking.simulate, energy, the [AD11] free-rocking scenarios (geometry of our
+choice, r = 1 m, h = 3 m), bad input."""
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from seispulse import pulse, rocking
+from seispulse._cylinder_roll import ROLL_COLUMNS, RollRun, plot_roll, roll
+from seispulse.errors import InvalidInputError
+
+G = 9.80665
+
+
+def solid(r=1.0, h=3.0, mass=1000.0):
+    """Any object with these attributes will do (duck typing)."""
+    big_r2 = r * r + h * h
+    j_g = mass * (3 * r * r + 4 * h * h) / 12
+    j_o = j_g + mass * big_r2
+    e = 1 - 2 * mass * big_r2 / j_o * (r * r / big_r2)
+    return SimpleNamespace(r=r, h=h, mass=mass, g=G, j_g=j_g, j_axis=mass * r * r / 2, e=e,
+                           theta_c=np.arctan2(r, h))
+
+
+# ---- independent reference: quaternion + world-frame Newton-Euler ---------------------
+
+def quat_mul(a, b):
+    w1, x1, y1, z1 = a
+    w2, x2, y2, z2 = b
+    return np.array([w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2, w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
+                     w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2, w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2])
+
+
+def quat_matrix(q):
+    w, x, y, z = q / np.linalg.norm(q)
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+
+
+def euler_zxz(psi, theta, phi):
+    """Quaternion of R = Rz(psi) Rx(theta) Rz(phi)."""
+    qz1 = np.array([np.cos(psi / 2), 0, 0, np.sin(psi / 2)])
+    qx = np.array([np.cos(theta / 2), np.sin(theta / 2), 0, 0])
+    qz2 = np.array([np.cos(phi / 2), 0, 0, np.sin(phi / 2)])
+    return quat_mul(quat_mul(qz1, qx), qz2)
+
+
+def reference_rhs(body, accel):
+    """y = (q (4), omega in the world frame (3), x_G, y_G). The contact point is the
+    lowest rim point: P = B - r u, u = (Z - (Z.e3) e3)/|.|; rho = G - P = h e3 + r u and
+    its time derivative from e3' = omega x e3; a_G = omega' x rho + omega x rho'; moments
+    about G of the contact force R = m (a_G + g Z + a_g) acting at P."""
+    m, r, h = body.mass, body.r, body.h
+    a_t, c_ax = body.j_g, body.j_axis
+    z = np.array([0.0, 0.0, 1.0])
+
+    def rhs(t, y):
+        q, om = y[:4], y[4:7]
+        e3 = quat_matrix(q)[:, 2]
+        e3d = np.cross(om, e3)
+        w = z - e3[2] * e3
+        wd = -e3d[2] * e3 - e3[2] * e3d
+        nw = np.linalg.norm(w)
+        u = w / nw
+        ud = wd / nw - w * np.dot(w, wd) / nw**3
+        rho = h * e3 + r * u
+        rhod = h * e3d + r * ud
+        i_g = a_t * np.eye(3) + (c_ax - a_t) * np.outer(e3, e3)
+        i_p = i_g + m * (np.dot(rho, rho) * np.eye(3) - np.outer(rho, rho))
+        ag = np.array([*accel(t), 0.0])
+        b = -np.cross(om, i_g @ om) - m * np.cross(rho, np.cross(om, rhod) + G * z + ag)
+        omd = np.linalg.solve(i_p, b)
+        qd = 0.5 * quat_mul(np.array([0.0, *om]), q)
+        vg = np.cross(om, rho)
+        return np.concatenate([qd, omd, vg[:2]])
+
+    return rhs
+
+
+def reference_angles(y):
+    e3 = quat_matrix(y[:4])[:, 2]
+    return np.arccos(np.clip(e3[2], -1, 1)), np.arctan2(e3[0], -e3[1])
+
+
+def run_reference(body, state, t_out, accel):
+    from scipy.integrate import solve_ivp
+    theta, psi, spin, thd, psd, phd = state
+    n = np.array([np.cos(psi), np.sin(psi), 0.0])
+    e3 = np.array([np.sin(theta) * np.sin(psi), -np.sin(theta) * np.cos(psi), np.cos(theta)])
+    om = thd * n + psd * np.array([0.0, 0.0, 1.0]) + phd * e3
+    y0 = np.concatenate([euler_zxz(psi, theta, spin), om, [0.0, 0.0]])
+    sol = solve_ivp(reference_rhs(body, accel), (0.0, t_out[-1]), y0, method="DOP853",
+                    rtol=1e-12, atol=1e-13, t_eval=t_out)
+    assert sol.success
+    return sol.y
+
+
+@pytest.mark.parametrize("case", ["free", "pulse"])
+def test_against_independent_newton_euler(case):
+    pytest.importorskip("scipy")
+    body = solid(0.8, 2.0, 350.0)
+    state = (0.18, 0.4, 0.2, 0.15, 0.6, 2.0)
+    t_out = np.linspace(0.0, 0.9, 10)
+    if case == "free":
+        accel, pl, beta = (lambda t: (0.0, 0.0)), None, 0.0
+    else:
+        beta = np.radians(70.0)
+        amp, period = 0.25 * G, 0.6
+
+        def accel(t):
+            a = amp * np.sin(2 * np.pi * t / period) if t < period else 0.0
+            return a * np.cos(beta), a * np.sin(beta)
+
+        pl = pulse.define("sine_cycle", amp=amp, period=period)
+    run = roll(body, pl, direction_deg=np.degrees(beta), theta0=state[0], psi0=state[1],
+               spin0=state[2], theta_rate0=state[3], psi_rate0=state[4], spin_rate0=state[5],
+               t=t_out, rtol=1e-12)
+    assert run.n_impacts == 0
+    ref = run_reference(body, state, t_out, accel)
+    th_ref, psi_ref = zip(*(reference_angles(ref[:, k]) for k in range(t_out.size)))
+    np.testing.assert_allclose(run.theta, th_ref, rtol=0, atol=1e-8)
+    dpsi = np.angle(np.exp(1j * (run.psi - np.array(psi_ref))))
+    np.testing.assert_allclose(dpsi, 0.0, atol=1e-8)
+    np.testing.assert_allclose(run.x_g, ref[7], rtol=0, atol=1e-8)
+    np.testing.assert_allclose(run.y_g, ref[8], rtol=0, atol=1e-8)
+    # the motion is genuinely 3-D
+    assert np.ptp(run.psi) > 0.3 and np.ptp(run.y_g) > 1e-3
+
+
+def test_planar_limit_equals_rocking_simulate():
+    body = solid(1.0, 3.0, 1000.0)
+    j_o = body.j_g + body.mass * (body.r**2 + body.h**2)
+    blk = rocking.symmetric_block(np.hypot(body.r, body.h), body.theta_c,
+                                  j_o / (body.mass * (body.r**2 + body.h**2)), g=G)
+    pl = pulse.define("sine_cycle", amp=0.6, amp_unit="g", period=1.0)
+    t = np.linspace(0.0, 12.0, 601)
+    planar = rocking.simulate(blk, pl, t=t, t_max=12.0, rtol=1e-12)
+    run = roll(body, pl, direction_deg=-40.0, t=t, t_max=12.0, rtol=1e-12, e=blk.e)
+    assert planar.n_impacts >= 3
+    assert run.n_impacts == planar.n_impacts
+    np.testing.assert_allclose(run.t_impacts, planar.t_impacts, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(run.theta, np.abs(planar.theta), rtol=0, atol=1e-9)
+    # after the uplift (rocking plane along the pulse: psi = -40 - 90 degrees) psi jumps
+    # by pi at each impact (several impacts between two output times: k pi), nothing else
+    up = t > run.t_uplift
+    assert abs(run.psi[up][0] - np.radians(-130.0)) < 1e-12
+    jumps = np.diff(run.psi[up])
+    k = np.round(jumps / np.pi)
+    np.testing.assert_allclose(jumps, k * np.pi, rtol=0, atol=1e-11)
+    assert k.sum() == run.n_impacts
+
+
+def test_energy_conserved_in_free_motion_with_spin():
+    body = solid(1.0, 3.0, 1000.0)
+    run = roll(body, theta0=0.25, theta_rate0=-0.1, psi_rate0=0.3, spin_rate0=0.8,
+               t=np.linspace(0, 1.2, 121), rtol=1e-12)
+    assert run.n_impacts == 0
+    assert run.energy_drift < 1e-9
+    np.testing.assert_allclose(run.energy, run.energy[0], rtol=1e-9)
+
+
+def test_thesis_free_rocking_scenarios():
+    """theta0 = 0.2 rad, spin rates 0, 0.01, 0.1 rad/s ([AD11] section 1.2; r = 1 m,
+    h = 3 m is our choice: the thesis' geometry is lost)."""
+    body = solid(1.0, 3.0, 1000.0)
+    t = np.linspace(0.0, 4.0, 4001)
+    runs = [roll(body, theta0=0.2, spin_rate0=w, t=t, rtol=1e-11) for w in (0.0, 0.01, 0.1)]
+    t_hit = runs[0].t_impacts[0]
+    first = t < t_hit
+    for other in runs[1:]:
+        np.testing.assert_allclose(other.theta[first], runs[0].theta[first], atol=0.004)
+    # zero spin: psi 0 then pi, no intermediate value
+    assert set(np.round(runs[0].psi[t < t_hit + 0.5], 12)) == {0.0, round(np.pi, 12)}
+    # with spin 0.1 rad/s the heading sweeps through intermediate values near theta ~ 0
+    near = (t > t_hit - 0.5) & (t < t_hit + 0.5)
+    folded = np.mod(runs[2].psi[near], np.pi)
+    assert np.any((folded > 0.1 * np.pi) & (folded < 0.9 * np.pi))
+
+
+def test_result_fields_and_plot(tmp_path):
+    body = solid()
+    run = roll(body, pulse.define("half_sine", amp=0.5, amp_unit="g", duration=0.5),
+               direction_deg=20.0, t_max=3.0)
+    assert isinstance(run, RollRun)
+    assert run.t.size == 1001 and run.theta.size == 1001
+    assert set(ROLL_COLUMNS) <= set(RollRun._fields)
+    assert run.t_uplift > 0 and run.outcome in ("rest", "time_limit", "overturn")
+    assert np.all(run.normal_force[np.isfinite(run.normal_force)] > 0)
+    mpl = pytest.importorskip("matplotlib")
+    mpl.use("Agg")
+    axes = plot_roll(run, title="half-sine 0.5 g")
+    assert len(axes) == 3
+    axes[0].figure.savefig(tmp_path / "roll.png")
+
+
+def test_two_component_record_rotating_direction():
+    """A record whose direction turns: the heading follows, energy is finite, the run
+    completes within its step budget."""
+    body = solid(0.5, 1.5, 100.0)
+    dt = 0.01
+    tt = np.arange(0, 3.0, dt)
+    amp = 0.5 * np.sin(np.pi * tt / 3.0)
+    run = roll(body, accel_x=amp * np.cos(2 * tt), accel_y=amp * np.sin(2 * tt), dt=dt,
+               t=np.linspace(0, 5, 501))
+    assert run.t_uplift > 0
+    assert np.all(np.isfinite(run.theta)) and np.ptp(run.psi) > 0.5
+
+
+@pytest.mark.parametrize("kwargs, name", [
+    (dict(theta0=-0.1), "theta0"),
+    (dict(theta0=np.pi / 2), "theta0"),
+    (dict(theta0=0.1, theta_rate0=np.nan), "theta_rate0"),
+    (dict(theta0=0.1, psi_rate0=np.nan), "psi_rate0"),
+    (dict(theta0=0.1, spin_rate0=np.inf), "spin_rate0"),
+    (dict(theta0=0.1, e=1.2), "e ="),
+    (dict(theta0=0.1, e=-0.1), "e ="),
+    (dict(accel_x=[0.1, 0.2], accel_y=[0.1, 0.2], dt=0.0), "dt"),
+    (dict(accel_x=[0.1, 0.2], accel_y=[0.1, 0.2], dt=-0.01), "dt"),
+    (dict(accel_x=[0.1, 0.2], accel_y=[0.1], dt=0.01), "accel_y"),
+    (dict(accel_x=[0.1, 0.2], dt=0.01), "accel_x, accel_y"),
+    (dict(theta0=0.1, rtol=0.5), "rtol"),
+])
+def test_bad_input_names_the_parameter(kwargs, name):
+    kwargs.setdefault("t", [0.0, 1.0])
+    with pytest.raises(InvalidInputError, match=name):
+        roll(solid(), **kwargs)
+
+
+def test_body_duck_typing():
+    with pytest.raises(InvalidInputError, match="j_axis"):
+        roll(SimpleNamespace(r=1.0, h=3.0, mass=1.0, g=G, j_g=1.0, e=0.8), theta0=0.1,
+             t=[0.0, 1.0])
