@@ -26,8 +26,8 @@ module driver_cylinder
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan, &
                                              ieee_positive_inf
     use seispulse, only: dp, pi, pulse_t, pulse_validate, pulse_eval, pulse_kind_name, &
-                         pulse_kind_from_name, SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, &
-                         PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP, real_str, int_str, &
+                         pulse_kind_from_name, SEISPULSE_SUCCESS, PULSE_RICKER, PULSE_MP, &
+                         real_str, int_str, &
                          rocking_block_t, rocking_run_t, rock_pulse, rock_record, &
                          ROCK_RUN_TIME_LIMIT, positive, in_closed, in_open, finite_at_least, &
                          rocking_body_t, cylinder_props, block_props, body_rocking_block, &
@@ -41,7 +41,8 @@ module driver_cylinder
     use driver_input, only: find_group, located, join, read_optional, given, list_item, &
                             ROWS_FAILED
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
-                                  write_pulse_group, pulse_end, check_time_grid, time_grid
+                                  write_pulse_group, pulse_end, check_time_grid, time_grid, &
+                                  warn_unused_template, template_text
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, &
                               records_missing, record_line, failed_records
@@ -61,8 +62,8 @@ module driver_cylinder
     character(len=17), parameter :: cylinder_keys(13) = [character(len=17) :: 'what', &
         't_max', 'rtol', 't_end', 'npts', 'dt', 'kv', 'theta', 'theta_range', 'theta_count', &
         'theta_ratio', 'theta_ratio_range', 'theta_ratio_count']
-    character(len=13), parameter :: map_keys(19) = [character(len=13) :: 'axes', 'kind', &
-        'beta', 'full', 'peak_frac', 't0_periods', 'freq_ratio', 'freq_range', 'freq_count', &
+    character(len=13), parameter :: map_keys(20) = [character(len=13) :: 'axes', 'kind', &
+        'beta', 'full', 'peak_frac', 't0_periods', 'cycles', 'freq_ratio', 'freq_range', 'freq_count', &
         'amp_ratio', 'amp_range', 'amp_count', 'freq_hz', 'freq_hz_range', 'freq_hz_count', &
         'pga', 'pga_range', 'pga_count', 'compare_block']
     character(len=8), parameter :: what_names(5) = [character(len=8) :: 'props', &
@@ -105,6 +106,7 @@ module driver_cylinder
     integer :: theta_count, theta_ratio_count
     character(len=32) :: axes, kind
     real(dp) :: beta, peak_frac, t0_periods
+    real(dp) :: cycles   !! sine_cycle, cosine_cycle: whole number of cycles (read as a real)
     logical :: full, compare_block
     real(dp) :: theta0, psi0, spin0, theta_rate0, psi_rate0, spin_rate0, direction
     real(dp) :: freq_ratio(max_list), freq_range(2), amp_ratio(max_list), amp_range(2)
@@ -113,7 +115,7 @@ module driver_cylinder
     namelist /body/ shape, r, b, r_inner, h, mass, j_o, j_axis, g, e, model, equivalent_angle
     namelist /cylinder/ what, t_max, rtol, t_end, npts, dt, kv, theta, theta_range, &
         theta_count, theta_ratio, theta_ratio_range, theta_ratio_count
-    namelist /map/ axes, kind, beta, full, peak_frac, t0_periods, freq_ratio, freq_range, &
+    namelist /map/ axes, kind, beta, full, peak_frac, t0_periods, cycles, freq_ratio, freq_range, &
         freq_count, amp_ratio, amp_range, amp_count, freq_hz, freq_hz_range, freq_hz_count, &
         pga, pga_range, pga_count, compare_block
     namelist /roll/ theta0, psi0, spin0, theta_rate0, psi_rate0, spin_rate0, direction
@@ -169,6 +171,7 @@ contains
         full = .false.
         peak_frac = 0.5_dp
         t0_periods = 1.5_dp
+        cycles = 1.0_dp
         compare_block = .false.
         freq_ratio = nan
         freq_range = nan
@@ -1219,7 +1222,7 @@ contains
             return
         end if
         tpl = pulse_t(kind=code, amp=1.0_dp, duration=1.0_dp, beta=beta, full=full, &
-                      peak_frac=peak_frac, freq=1.0_dp, t0=t0_periods)
+                      peak_frac=peak_frac, freq=1.0_dp, t0=t0_periods, cycles=cycles)
         ! the shape at a unit time scale (the map checks every time scale)
         call pulse_validate(tpl, st, msg)
         if (st /= SEISPULSE_SUCCESS) then
@@ -1325,7 +1328,7 @@ contains
                       //'pga/tan theta_c'
         comments(5) = 'axes = '''//trim(axes)//''' (the first two columns); rows: '// &
                       trim(names(2))//' outer, '//trim(names(1))//' inner'
-        comments(6) = template_text(code)
+        comments(6) = template_text(tpl)
         if (compare_block) then
             comments(7) = 'class_block: the equivalent block (same p, same M_max, alpha = ' &
                           //real_str(eq%theta_c)//' rad, Housner e = '//real_str(eq%e) &
@@ -1371,46 +1374,6 @@ contains
         end subroutine refuse
 
     end subroutine do_map
-
-    !> Warn (stderr) about template keys of &map the pulse family does not use.
-    subroutine warn_unused_template(path, gm, code)
-        character(len=*), intent(in) :: path
-        type(nml_group), intent(in) :: gm
-        integer, intent(in) :: code
-        integer :: i
-        logical :: used
-        do i = 1, size(gm%items)
-            select case (gm%items(i)%key)
-            case ('beta', 'full')
-                used = code == PULSE_EXPONENTIAL
-            case ('peak_frac')
-                used = code == PULSE_TRIANGULAR
-            case ('t0_periods')
-                used = code == PULSE_RICKER
-            case default
-                used = .true.
-            end select
-            if (.not. used) write(error_unit, '(a)') 'warning: '//located(path, gm) &
-                //gm%items(i)%key//': not used by kind '//pulse_kind_name(code)
-        end do
-    end subroutine warn_unused_template
-
-    !> The shape parameters of a map's pulse family, for the header.
-    function template_text(code) result(text)
-        integer, intent(in) :: code
-        character(len=:), allocatable :: text
-        select case (code)
-        case (PULSE_EXPONENTIAL)
-            text = 'pulse shape: beta = '//real_str(beta)//', full = ' &
-                   //trim(merge('.true. ', '.false.', full))
-        case (PULSE_TRIANGULAR)
-            text = 'pulse shape: peak_frac = '//real_str(peak_frac)
-        case (PULSE_RICKER)
-            text = 'pulse shape: t0 f_p = '//real_str(t0_periods)
-        case default
-            text = 'pulse shape: '//pulse_kind_name(code)
-        end select
-    end function template_text
 
     ! ------------------------------------------------------------------------------
     ! Rocking with rolling (3-D)

@@ -17,8 +17,7 @@ module driver_rocking
                                              ieee_positive_inf
     use seispulse, only: dp, pulse_t, pulse_validate, pulse_eval, pulse_kind_name, &
                          pulse_kind_from_name, SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, &
-                         PULSE_RECTANGULAR, PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP, &
-                         PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE, real_str, &
+                         PULSE_RECTANGULAR, PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP, real_str, &
                          int_str, rocking_summary, rocking_region_name, rocking_block_t, &
                          rocking_run_t, rectangular_block, symmetric_block, &
                          rocking_block_validate, rock_pulse, overturning_map, ROCK_RUN_TIME_LIMIT, &
@@ -26,7 +25,8 @@ module driver_rocking
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
-                                  write_pulse_group, pulse_end, check_time_grid, time_grid
+                                  write_pulse_group, pulse_end, check_time_grid, time_grid, &
+                                  warn_unused_template, template_text
     use driver_tables, only: write_tables, say_written, code_legend
     use driver_axis, only: axis_values
     implicit none
@@ -744,7 +744,7 @@ contains
         comments(5) = 'block: alpha = '//real_str(blk%alpha)//' rad, e = '//real_str(blk%e)
         if (abs(kv) > 0.0_dp) comments(5) = trim(comments(5))//'; vertical ground ' &
             //'acceleration a_v = kv a_g, kv = '//real_str(kv)//' (doc/rocking.md section 7)'
-        comments(6) = template_text(code)
+        comments(6) = template_text(tpl)
         comments(7) = 'input: '//trim(path)
         call write_tables(prefix, 'rocking_map', comments, &
             [character(len=12) :: 'freq_ratio', 'amp_ratio', 'class'], &
@@ -770,51 +770,6 @@ contains
                          .false., max_list, values, grid, errmsg, required=.true., &
                          count_optional=.true., hint=.false., real_numbers=.true.)
     end subroutine map_axis
-
-    !> Warn (stderr) about template keys of &map the pulse family does not use.
-    subroutine warn_unused_template(path, gm, code)
-        character(len=*), intent(in) :: path
-        type(nml_group), intent(in) :: gm
-        integer, intent(in) :: code
-        integer :: i
-        logical :: used
-        do i = 1, size(gm%items)
-            select case (gm%items(i)%key)
-            case ('beta', 'full')
-                used = code == PULSE_EXPONENTIAL
-            case ('peak_frac')
-                used = code == PULSE_TRIANGULAR
-            case ('t0_periods')
-                used = code == PULSE_RICKER
-            case ('cycles')
-                used = code == PULSE_SINE_CYCLE .or. code == PULSE_COSINE_CYCLE
-            case default
-                used = .true.
-            end select
-            if (.not. used) write(error_unit, '(a)') 'warning: '//located(path, gm) &
-                //gm%items(i)%key//': not used by kind '//pulse_kind_name(code)
-        end do
-    end subroutine warn_unused_template
-
-    !> The shape parameters of a map's pulse family, for the header.
-    function template_text(code) result(text)
-        integer, intent(in) :: code
-        character(len=:), allocatable :: text
-        select case (code)
-        case (PULSE_EXPONENTIAL)
-            text = 'pulse shape: beta = '//real_str(beta)//', full = ' &
-                   //trim(merge('.true. ', '.false.', full))
-        case (PULSE_TRIANGULAR)
-            text = 'pulse shape: peak_frac = '//real_str(peak_frac)
-        case (PULSE_RICKER)
-            text = 'pulse shape: t0 f_p = '//real_str(t0_periods)
-        case (PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE)
-            text = 'pulse shape: '//pulse_kind_name(code)
-            if (abs(cycles - 1.0_dp) > 0.0_dp) text = text//', cycles = '//real_str(cycles)
-        case default
-            text = 'pulse shape: '//pulse_kind_name(code)
-        end select
-    end function template_text
 
     ! ------------------------------------------------------------------------------
     ! Helpers

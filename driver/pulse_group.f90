@@ -1,8 +1,9 @@
 !> The &pulse group, shared by every analysis that drives something with one pulse
 !> ('pulse', 'sliding', 'rocking', 'sdof_shock'): its keys, defaults, reading,
 !> validation and the pulse_t it builds; and the time grid of a history under the pulse
-!> (&history of 'sliding', &rocking of 'rocking'). One code path, so that a pulse means
-!> the same in every analysis.
+!> (&history of 'sliding', &rocking of 'rocking'); the pulse family of an overturning
+!> map (&map of 'rocking' and 'cylinder': unused keys, the header line). One code path,
+!> so that a pulse means the same in every analysis.
 module driver_pulse_group
     use, intrinsic :: iso_fortran_env, only: error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan
@@ -17,6 +18,7 @@ module driver_pulse_group
 
     public :: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, write_pulse_group
     public :: pulse_end, check_time_grid, time_grid
+    public :: warn_unused_template, template_text
 
     !> Every key of &pulse.
     character(len=12), parameter :: pulse_keys(14) = [character(len=12) :: 'kind', 'amp', &
@@ -282,5 +284,56 @@ contains
                 //group%items(i)%key//': not used by kind '//pulse_kind_name(code)
         end do
     end subroutine warn_unused
+
+    ! ------------------------------------------------------------------------------
+    ! The pulse family of an overturning map (&map of 'rocking' and 'cylinder')
+    ! ------------------------------------------------------------------------------
+
+    !> Warn (stderr) about template keys of a &map group the pulse family does not use.
+    subroutine warn_unused_template(path, gm, code)
+        character(len=*), intent(in) :: path              !! input file (for messages)
+        type(nml_group), intent(in) :: gm                 !! the &map group
+        integer, intent(in) :: code                       !! PULSE_* code of the family
+        integer :: i
+        logical :: used
+        do i = 1, size(gm%items)
+            select case (gm%items(i)%key)
+            case ('beta', 'full')
+                used = code == PULSE_EXPONENTIAL
+            case ('peak_frac')
+                used = code == PULSE_TRIANGULAR
+            case ('t0_periods')
+                used = code == PULSE_RICKER
+            case ('cycles')
+                used = code == PULSE_SINE_CYCLE .or. code == PULSE_COSINE_CYCLE
+            case default
+                used = .true.
+            end select
+            if (.not. used) write(error_unit, '(a)') 'warning: '//located(path, gm) &
+                //gm%items(i)%key//': not used by kind '//pulse_kind_name(code)
+        end do
+    end subroutine warn_unused_template
+
+    !> The shape parameters of a map's pulse family (the template at f_p = 1, so that its
+    !> t0 is t0 f_p), for the header.
+    function template_text(tpl) result(text)
+        type(pulse_t), intent(in) :: tpl
+        character(len=:), allocatable :: text
+        select case (tpl%kind)
+        case (PULSE_EXPONENTIAL)
+            text = 'pulse shape: beta = '//real_str(tpl%beta)//', full = ' &
+                   //trim(merge('.true. ', '.false.', tpl%full))
+        case (PULSE_TRIANGULAR)
+            text = 'pulse shape: peak_frac = '//real_str(tpl%peak_frac)
+        case (PULSE_RICKER)
+            text = 'pulse shape: t0 f_p = '//real_str(tpl%t0)
+        case (PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE)
+            text = 'pulse shape: '//pulse_kind_name(tpl%kind)
+            if (abs(tpl%cycles - 1.0_dp) > 0.0_dp) text = text//', cycles = ' &
+                                                         //real_str(tpl%cycles)
+        case default
+            text = 'pulse shape: '//pulse_kind_name(tpl%kind)
+        end select
+    end function template_text
 
 end module driver_pulse_group
