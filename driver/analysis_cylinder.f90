@@ -22,21 +22,18 @@
 !> driver only reads, checks, converts units and writes. Every table is computed before the
 !> first is written.
 module driver_cylinder
-    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
+    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan, &
                                              ieee_positive_inf
-    use seispulse, only: dp, pi, pulse_t, pulse_validate, pulse_eval, pulse_kind_name, &
-                         pulse_kind_from_name, SEISPULSE_SUCCESS, PULSE_RICKER, PULSE_MP, &
-                         real_str, int_str, &
-                         rocking_block_t, rocking_run_t, rock_pulse, rock_record, &
-                         ROCK_RUN_TIME_LIMIT, positive, in_closed, in_open, finite_at_least, &
-                         rocking_body_t, cylinder_props, block_props, body_rocking_block, &
-                         equivalent_cylinder, equivalent_block, rigid_pushover, &
-                         normalized_pushover, body_overturning_map, map_difference, &
-                         BODY_SOLID_CYLINDER, BODY_HOLLOW_CYLINDER, BODY_CUSTOM, BODY_BLOCK, &
-                         MAP_AXES_DIMENSIONLESS, MAP_AXES_DIMENSIONAL, cylinder_roll, &
-                         roll_run_t, roll_output_name, roll_outcome_name, ROLL_NOUT, &
-                         ROLL_RUN_TIME_LIMIT
+    use seispulse, only: dp, pi, pulse_t, pulse_eval, pulse_kind_name, SEISPULSE_SUCCESS, &
+                         real_str, int_str, rocking_block_t, rocking_run_t, rock_pulse, &
+                         rock_record, ROCK_RUN_TIME_LIMIT, in_open, rocking_body_t, &
+                         cylinder_props, block_props, body_rocking_block, equivalent_cylinder, &
+                         equivalent_block, rigid_pushover, normalized_pushover, &
+                         body_overturning_map, map_difference, BODY_SOLID_CYLINDER, &
+                         BODY_HOLLOW_CYLINDER, BODY_CUSTOM, BODY_BLOCK, MAP_AXES_DIMENSIONLESS, &
+                         cylinder_roll, roll_run_t, roll_output_name, roll_outcome_name, &
+                         ROLL_NOUT, ROLL_RUN_TIME_LIMIT
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, list_item, &
                             ROWS_FAILED
@@ -45,9 +42,11 @@ module driver_cylinder
                                   warn_unused_template, template_text
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, &
-                              records_missing, record_line, failed_records
+                              record_line, failed_records
     use driver_tables, only: write_tables, say_written, code_legend, delete_files
     use driver_axis, only: axis_values
+    use driver_rocking_common, only: check_run_options, restitution_and_model, &
+                                     locate_run_message, map_kind, map_template, progress_t
     implicit none
     private
 
@@ -76,8 +75,6 @@ module driver_cylinder
     !> In the order of the BODY_* codes.
     character(len=6), parameter :: shape_names(4) = [character(len=6) :: 'solid', 'hollow', &
         'custom', 'block']
-    character(len=10), parameter :: model_names(2) = [character(len=10) :: 'nonlinear', &
-        'linearized']
     !> In the order of the MAP_AXES_* codes.
     character(len=13), parameter :: axes_names(2) = [character(len=13) :: 'dimensionless', &
         'dimensional']
@@ -89,9 +86,6 @@ module driver_cylinder
 
     !> Most values of a list (pushover grid, map axes).
     integer, parameter :: max_list = 1000
-    !> A map prints progress once it has run this long (s), then at most every
-    !> `progress_every` seconds.
-    real(dp), parameter :: progress_after = 2.0_dp, progress_every = 3.0_dp
     !> Points of the default pushover grid (theta/theta_c = 0 .. 1).
     integer, parameter :: pushover_default_count = 21
 
@@ -426,15 +420,8 @@ contains
                      //'tolerance of the integration)'
             return
         end if
-        if (.not. positive(t_max)) then
-            errmsg = where//'t_max = '//real_str(t_max)//': must be a number > 0 (s) or ' &
-                     //'+Inf (no limit)'
-            return
-        end if
-        if (.not. in_closed(rtol, 1.0e-14_dp, 1.0e-3_dp)) then
-            errmsg = where//'rtol = '//real_str(rtol)//': must be in [1e-14, 1e-3]'
-            return
-        end if
+        call check_run_options(where, t_max, rtol, errmsg)
+        if (len(errmsg) > 0) return
         if (task /= 'history' .and. given(gc, 'kv')) then
             errmsg = where//'kv: only with what = ''history'' (a vertical ground ' &
                      //'acceleration a_v = kv a_g during the motion)'
@@ -551,26 +538,8 @@ contains
         ! --- restitution, model, the equivalent body's slenderness
         s%e_given = given(s%gb, 'e')
         s%e_run = s%body%e
-        if (s%e_given) then
-            if (.not. in_closed(e, 0.0_dp, 1.0_dp)) then
-                errmsg = where//'e = '//real_str(e)//': the coefficient of restitution ' &
-                         //'must be in [0, 1]'
-                return
-            end if
-            s%e_run = e
-        end if
-        name = trim(lower(adjustl(model)))
-        select case (name)
-        case ('nonlinear')
-            s%linearized = .false.
-        case ('linearized')
-            s%linearized = .true.
-        case default
-            errmsg = where//'model = '''//trim(model)//''': unknown model (allowed: ' &
-                     //join(model_names)//')'
-            return
-        end select
-        model = name
+        call restitution_and_model(where, s%gb, e, model, s%e_run, s%linearized, errmsg)
+        if (len(errmsg) > 0) return
         if (s%task == 'roll' .and. s%linearized) then
             errmsg = where//'model = ''linearized'': what = ''roll'' has the nonlinear ' &
                      //'model only'
@@ -1126,18 +1095,8 @@ contains
         character(len=*), intent(in) :: path, msg
         type(setup_t), intent(in) :: s
         character(len=:), allocatable :: full_msg
-        character(len=:), allocatable :: key
-        integer :: k
-        k = scan(msg, ' =:(')
-        key = ''
-        if (k > 1) key = msg(1:k - 1)
-        if (any(pulse_keys == key)) then
-            full_msg = located(path, s%pin%group)//msg
-        else if (any(cylinder_keys == key)) then
-            full_msg = located(path, s%gc)//msg
-        else
-            full_msg = located(path, s%gb)//msg
-        end if
+        full_msg = locate_run_message(path, msg, s%pin%group, pulse_keys, s%gc, cylinder_keys, &
+                                      s%gb)
     end function locate_message
 
     ! ------------------------------------------------------------------------------
@@ -1158,9 +1117,8 @@ contains
         type(rocking_body_t) :: eq
         type(pulse_t) :: tpl
         integer :: code, i, j, row, st, axes_code, ncol
-        integer(int64) :: c_start, c_now, c_last, rate
-        real(dp) :: elapsed, fr, ar
-        logical :: printed
+        type(progress_t) :: progress
+        real(dp) :: fr, ar
 
         where = located(path, s%gm)
         stat = 1
@@ -1174,16 +1132,8 @@ contains
             return
         end if
         axes = axes_names(axes_code)
-        call pulse_kind_from_name(kind, code, st, msg)
-        if (st /= SEISPULSE_SUCCESS) then
-            errmsg = where//trim(msg)
-            return
-        end if
-        if (code == PULSE_MP) then
-            errmsg = where//'kind = '''//trim(kind)//''': maps take an acceleration pulse ' &
-                     //'with a time scale (not mavroeidis_papageorgiou)'
-            return
-        end if
+        call map_kind(where, kind, code, errmsg)
+        if (len(errmsg) > 0) return
         if (compare_block .and. s%body%shape == BODY_BLOCK) then
             errmsg = where//'compare_block: the body is a block already (shape = ''block'')'
             return
@@ -1216,19 +1166,9 @@ contains
             errmsg = where//errmsg
             return
         end if
-        if (code == PULSE_RICKER .and. .not. finite_at_least(t0_periods, 0.0_dp)) then
-            errmsg = where//'t0_periods = '//real_str(t0_periods)//': must be a finite ' &
-                     //'number >= 0 (the centre of the wavelet times f_p)'
-            return
-        end if
-        tpl = pulse_t(kind=code, amp=1.0_dp, duration=1.0_dp, beta=beta, full=full, &
-                      peak_frac=peak_frac, freq=1.0_dp, t0=t0_periods, cycles=cycles)
         ! the shape at a unit time scale (the map checks every time scale)
-        call pulse_validate(tpl, st, msg)
-        if (st /= SEISPULSE_SUCCESS) then
-            errmsg = where//trim(msg)
-            return
-        end if
+        call map_template(where, code, beta, full, peak_frac, t0_periods, cycles, tpl, errmsg)
+        if (len(errmsg) > 0) return
         if (compare_block) then
             call equivalent_body(s, eq, st, msg)
             if (st /= SEISPULSE_SUCCESS) then
@@ -1241,9 +1181,7 @@ contains
         call echo(s)
         allocate(classes(size(ys), size(xs)), classes_b(size(ys), size(xs)), &
                  diff(size(ys), size(xs)))
-        call system_clock(c_start, rate)
-        c_last = c_start
-        printed = .false.
+        call progress%start()
         do i = 1, size(ys)
             call body_overturning_map(s%body, code, xs, ys(i:i), axes_code, &
                                       classes(i:i, :), st, msg, template=tpl, &
@@ -1260,22 +1198,9 @@ contains
                 end if
                 return
             end if
-            call system_clock(c_now)
-            elapsed = real(c_now - c_start, dp) / real(max(rate, 1_int64), dp)
-            if (i < size(ys) .and. elapsed >= progress_after .and. (.not. printed .or. &
-                real(c_now - c_last, dp) / real(max(rate, 1_int64), dp) >= progress_every)) &
-                then
-                write(error_unit, '(a, i0, a, i0)') 'map: row ', i, '/', size(ys)
-                flush(error_unit)
-                c_last = c_now
-                printed = .true.
-            end if
+            call progress%row(i, size(ys))
         end do
-        if (printed) then
-            write(error_unit, '(a, i0, a, i0, a)') 'map: row ', size(ys), '/', size(ys), &
-                ' (done)'
-            flush(error_unit)
-        end if
+        call progress%done(size(ys))
         if (compare_block) then
             call map_difference(classes, classes_b, diff, st, msg)
             if (st /= SEISPULSE_SUCCESS) then

@@ -12,16 +12,16 @@
 !> half-cycle exponential pulse, shown side by side); the driver only reads, checks,
 !> converts units and writes.
 module driver_rocking
-    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
+    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan, &
                                              ieee_positive_inf
     use seispulse, only: dp, pulse_t, pulse_validate, pulse_eval, pulse_kind_name, &
-                         pulse_kind_from_name, SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, &
-                         PULSE_RECTANGULAR, PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP, real_str, &
+                         SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, PULSE_RECTANGULAR, &
+                         PULSE_TRIANGULAR, PULSE_RICKER, real_str, &
                          int_str, rocking_summary, rocking_region_name, rocking_block_t, &
                          rocking_run_t, rectangular_block, symmetric_block, &
                          rocking_block_validate, rock_pulse, overturning_map, ROCK_RUN_TIME_LIMIT, &
-                         pi, positive, in_closed, in_open, finite_at_least
+                         pi, in_open
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
@@ -29,6 +29,8 @@ module driver_rocking
                                   warn_unused_template, template_text
     use driver_tables, only: write_tables, say_written, code_legend
     use driver_axis, only: axis_values
+    use driver_rocking_common, only: check_run_options, restitution_and_model, &
+                                     locate_run_message, map_kind, map_template, progress_t
     implicit none
     private
 
@@ -47,17 +49,12 @@ module driver_rocking
         'amp_ratio', 'amp_range', 'amp_count', 'cycles']
     character(len=8), parameter :: what_names(3) = [character(len=8) :: 'summary', &
         'history', 'map']
-    character(len=10), parameter :: model_names(2) = [character(len=10) :: 'nonlinear', &
-        'linearized']
     character(len=24), parameter :: outcome_names(0:5) = [character(len=24) :: 'rest', &
         'no_uplift', 'overturn_no_impact', 'overturn_one_impact', 'overturn_many_impacts', &
         'time_limit']
 
     !> Most values on one axis of a map (freq_ratio, amp_ratio).
     integer, parameter :: max_list = 1000
-    !> A map prints progress once it has run this long (s), then at most every
-    !> `progress_every` seconds.
-    real(dp), parameter :: progress_after = 2.0_dp, progress_every = 3.0_dp
 
     ! namelist variables (defaults are set in set_defaults)
     real(dp) :: b, h, alpha, alpha_deg, r, io_over_mr2, e
@@ -255,15 +252,8 @@ contains
                      //'class is known)'
             return
         end if
-        if (.not. positive(t_max)) then
-            errmsg = where//'t_max = '//real_str(t_max)//': must be a number > 0 (s) or ' &
-                     //'+Inf (no limit)'
-            return
-        end if
-        if (.not. in_closed(rtol, 1.0e-14_dp, 1.0e-3_dp)) then
-            errmsg = where//'rtol = '//real_str(rtol)//': must be in [1e-14, 1e-3]'
-            return
-        end if
+        call check_run_options(where, t_max, rtol, errmsg)
+        if (len(errmsg) > 0) return
         if (.not. abs(kv) <= huge(kv)) then
             errmsg = where//'kv = '//real_str(kv)//': must be a finite number (vertical ' &
                      //'ground acceleration a_v = kv a_g)'
@@ -282,7 +272,7 @@ contains
         logical, intent(in) :: for_map
         type(rocking_block_t), intent(out) :: blk
         character(len=:), allocatable, intent(out) :: errmsg
-        character(len=:), allocatable :: where, name
+        character(len=:), allocatable :: where
         character(len=512) :: msg
         real(dp) :: a, radius
         integer :: stat
@@ -352,33 +342,15 @@ contains
         end if
         if (for_map .and. given(gb, 'r')) write(error_unit, '(a)') 'warning: '//where &
             //'r: not used by what = ''map'' (the map is dimensionless)'
-        if (given(gb, 'e')) then
-            if (.not. in_closed(e, 0.0_dp, 1.0_dp)) then
-                errmsg = where//'e = '//real_str(e)//': the coefficient of restitution ' &
-                         //'must be in [0, 1]'
-                return
-            end if
-            blk%e = e
-        end if
-        name = trim(lower(adjustl(model)))
-        select case (name)
-        case ('nonlinear')
-            blk%linearized = .false.
-        case ('linearized')
-            blk%linearized = .true.
-        case default
-            errmsg = where//'model = '''//trim(model)//''': unknown model (allowed: ' &
-                     //join(model_names)//')'
-            return
-        end select
+        call restitution_and_model(where, gb, e, model, blk%e, blk%linearized, errmsg)
+        if (len(errmsg) > 0) return
         call rocking_block_validate(blk, stat, msg)
         if (stat /= SEISPULSE_SUCCESS) then
             errmsg = where//trim(msg)
             return
         end if
-        ! the effective values, for the echo
+        ! the effective value, for the echo
         e = blk%e
-        model = name
     end subroutine check_block
 
     !> Where a library message about a run belongs: &pulse, &rocking or &block.
@@ -387,18 +359,7 @@ contains
         type(pulse_input_t), intent(in) :: pin
         type(nml_group), intent(in) :: gb, gr
         character(len=:), allocatable :: full_msg
-        character(len=:), allocatable :: key
-        integer :: k
-        k = scan(msg, ' =:(')
-        key = ''
-        if (k > 1) key = msg(1:k - 1)
-        if (any(pulse_keys == key)) then
-            full_msg = located(path, pin%group)//msg
-        else if (any(rocking_keys == key)) then
-            full_msg = located(path, gr)//msg
-        else
-            full_msg = located(path, gb)//msg
-        end if
+        full_msg = locate_run_message(path, msg, pin%group, pulse_keys, gr, rocking_keys, gb)
     end function locate_message
 
     ! ------------------------------------------------------------------------------
@@ -621,23 +582,13 @@ contains
         integer, allocatable :: classes(:, :)
         type(pulse_t) :: tpl, pl
         integer :: code, i, j, row, st
-        integer(int64) :: c_start, c_now, c_last, rate
-        real(dp) :: elapsed
-        logical :: printed
+        type(progress_t) :: progress
 
         where = located(path, gm)
         stat = 1
         msg = ''
-        call pulse_kind_from_name(kind, code, st, msg)
-        if (st /= SEISPULSE_SUCCESS) then
-            errmsg = where//trim(msg)
-            return
-        end if
-        if (code == PULSE_MP) then
-            errmsg = where//'kind = '''//trim(kind)//''': maps take an acceleration pulse ' &
-                     //'with a time scale (not mavroeidis_papageorgiou)'
-            return
-        end if
+        call map_kind(where, kind, code, errmsg)
+        if (len(errmsg) > 0) return
         call map_axis(gm, 'freq', freq_ratio, freq_range, freq_count, .true., freqs, errmsg)
         if (len(errmsg) > 0) then
             errmsg = where//errmsg
@@ -648,19 +599,9 @@ contains
             errmsg = where//errmsg
             return
         end if
-        tpl = pulse_t(kind=code, amp=1.0_dp, duration=1.0_dp, beta=beta, full=full, &
-                      peak_frac=peak_frac, freq=1.0_dp, t0=t0_periods, cycles=cycles)
-        if (code == PULSE_RICKER .and. .not. finite_at_least(t0_periods, 0.0_dp)) then
-            errmsg = where//'t0_periods = '//real_str(t0_periods)//': must be a finite ' &
-                     //'number >= 0 (the centre of the wavelet times f_p)'
-            return
-        end if
         ! the shape first (at a unit time scale), then every time scale of the map
-        call pulse_validate(tpl, st, msg)
-        if (st /= SEISPULSE_SUCCESS) then
-            errmsg = where//trim(msg)
-            return
-        end if
+        call map_template(where, code, beta, full, peak_frac, t0_periods, cycles, tpl, errmsg)
+        if (len(errmsg) > 0) return
         do j = 1, size(freqs)
             pl = tpl
             pl%amp = tan(blk%alpha)
@@ -685,9 +626,7 @@ contains
 
         call echo()
         allocate(classes(size(amps), size(freqs)))
-        call system_clock(c_start, rate)
-        c_last = c_start
-        printed = .false.
+        call progress%start()
         do i = 1, size(amps)
             call overturning_map(blk%alpha, blk%e, code, freqs, amps(i:i), &
                                  classes(i:i, :), st, msg, linearized=blk%linearized, &
@@ -707,22 +646,9 @@ contains
                 end if
                 return
             end if
-            call system_clock(c_now)
-            elapsed = real(c_now - c_start, dp) / real(max(rate, 1_int64), dp)
-            if (i < size(amps) .and. elapsed >= progress_after .and. (.not. printed .or. &
-                real(c_now - c_last, dp) / real(max(rate, 1_int64), dp) >= progress_every)) &
-                then
-                write(error_unit, '(a, i0, a, i0)') 'map: row ', i, '/', size(amps)
-                flush(error_unit)
-                c_last = c_now
-                printed = .true.
-            end if
+            call progress%row(i, size(amps))
         end do
-        if (printed) then
-            write(error_unit, '(a, i0, a, i0, a)') 'map: row ', size(amps), '/', &
-                size(amps), ' (done)'
-            flush(error_unit)
-        end if
+        call progress%done(size(amps))
 
         allocate(table(size(amps) * size(freqs), 3))
         row = 0
