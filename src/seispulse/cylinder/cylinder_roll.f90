@@ -40,9 +40,9 @@
 !>   bounded by the step budget (2e6 attempted steps, 40 more per record sample).
 !> - Rest: after an impact, when the next flight would rise less than 1e-10 theta_c (the
 !>   planar model's rule); after a floor pass, also when the energy of the rocking,
-!>   E - m g h - C omega_Z^2/2, is below m g r 1e-10 theta_c (the same measure): the body
-!>   sits on its base (all rates set to 0: no base torque is modelled) from the impact
-!>   time plus the Zeno estimate tau/(1 - e).
+!>   E - m g h - C omega_Z^2/2, is below m g r 1e-10 theta_c (the same measure). The body
+!>   then sits on its base (all rates set to 0: no base torque is modelled), from the
+!>   impact time plus the Zeno estimate tau/(1 - e) (after a floor pass: at once).
 !> - Overturned when theta reaches pi/2. After the excitation, E < m g R with
 !>   theta < theta_c proves that the body never overturns (doc/rolling.md section 4).
 !>
@@ -961,6 +961,7 @@ contains
             call move_alloc(tmp, st%imp)
         end if
         st%imp(st%n_imp) = st%t
+        ! (L.11)
         if (ev == EV_IMPACT) yv(1) = 0.0_dp
         yv(2) = yv(2) + pi
         yv(4) = st%e * abs(yv(4))
