@@ -26,7 +26,8 @@ module driver_rocking
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
-                                  write_pulse_group, pulse_end, check_time_grid, time_grid
+                                  write_pulse_group, pulse_end, check_time_grid, time_grid, &
+                                  not_one
     use driver_tables, only: write_tables, say_written, code_legend
     use driver_axis, only: axis_values
     implicit none
@@ -788,7 +789,7 @@ contains
             text = 'pulse shape: t0 f_p = '//real_str(t0_periods)
         case (PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE)
             text = 'pulse shape: '//pulse_kind_name(code)
-            if (abs(cycles - 1.0_dp) > 0.0_dp) text = text//', cycles = '//real_str(cycles)
+            if (not_one(cycles)) text = text//', cycles = '//real_str(cycles)
         case default
             text = 'pulse shape: '//pulse_kind_name(code)
         end select
@@ -807,7 +808,7 @@ contains
         write(output_unit, nml=block)
         write(output_unit, nml=rocking)
         if (task == 'map') then
-            if (abs(cycles - 1.0_dp) > 0.0_dp) then
+            if (not_one(cycles)) then
                 write(output_unit, nml=map)
             else
                 call echo_map_without_cycles()
