@@ -26,7 +26,7 @@ module driver_rocking
     use driver_input, only: find_group, located, join, read_optional, given
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid, &
-                                  warn_unused_template, template_text
+                                  warn_unused_template, template_text, not_one
     use driver_tables, only: write_tables, say_written, code_legend
     use driver_axis, only: axis_values
     use driver_rocking_common, only: check_run_options, restitution_and_model, &
@@ -714,7 +714,7 @@ contains
             call echo_rocking()
         end if
         if (task == 'map') then
-            if (abs(cycles - 1.0_dp) > 0.0_dp) then
+            if (not_one(cycles)) then
                 write(output_unit, nml=map)
             else
                 call echo_map_without_cycles()

@@ -17,7 +17,7 @@ module driver_pulse_group
     private
 
     public :: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, write_pulse_group
-    public :: pulse_end, check_time_grid, time_grid
+    public :: pulse_end, check_time_grid, time_grid, not_one
     public :: warn_unused_template, template_text
 
     !> Every key of &pulse.
@@ -235,12 +235,22 @@ contains
     !> is not 1 (the default), so that the echo of an input without it stays as it was.
     subroutine write_pulse_group(unit)
         integer, intent(in) :: unit
-        if (abs(cycles - 1.0_dp) > 0.0_dp) then
+        if (not_one(cycles)) then
             write(unit, nml=pulse)
         else
             call echo_without_cycles(unit)
         end if
     end subroutine write_pulse_group
+
+    !> x /= 1, NaN included (tested without an ordered comparison with NaN).
+    elemental logical function not_one(x)
+        real(dp), intent(in) :: x
+        if (ieee_is_nan(x)) then
+            not_one = .true.
+        else
+            not_one = abs(x - 1.0_dp) > 0.0_dp
+        end if
+    end function not_one
 
     !> The echo of &pulse without `cycles`: a local namelist of the same name hides the
     !> module's one here.
@@ -329,8 +339,7 @@ contains
             text = 'pulse shape: t0 f_p = '//real_str(tpl%t0)
         case (PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE)
             text = 'pulse shape: '//pulse_kind_name(tpl%kind)
-            if (abs(tpl%cycles - 1.0_dp) > 0.0_dp) text = text//', cycles = ' &
-                                                         //real_str(tpl%cycles)
+            if (not_one(tpl%cycles)) text = text//', cycles = '//real_str(tpl%cycles)
         case default
             text = 'pulse shape: '//pulse_kind_name(tpl%kind)
         end select

@@ -2,7 +2,7 @@
 !> rocking_sim, energy in free motion, the free-rocking scenarios of [AD11] section 1.2
 !> with a geometry of our choice (r = 1 m, h = 3 m), the floor rule, bad input.
 module test_cylinder_roll
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT
     use seispulse_special, only: pi
@@ -330,8 +330,7 @@ contains
         character(len=200) :: msg
         b = solid(1.0_dp, 3.0_dp, 1.0_dp)
         t = [0.0_dp, 1.0_dp]
-        nan = 0.0_dp
-        nan = nan / nan
+        nan = ieee_value(nan, ieee_quiet_nan)
         msg = ''
         call cylinder_roll(b, t, hist, run, stat, msg, theta0=-0.1_dp)
         call expect(error, stat, msg, 'theta0')

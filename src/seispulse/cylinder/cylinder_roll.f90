@@ -17,7 +17,8 @@
 !> orthonormal triad (n, Z, -d), so the 3x3 system (L.6) is the inertia about P on that
 !> triad, never singular; it is solved by LAPACK (seispulse_lapack's
 !> solve_linear_inplace, no allocation). The Euler-angle singularity is then a division
-!> by sin(theta) alone (phi_s'' = 0 is taken where sin(theta) = 0 exactly).
+!> by sin(theta) alone, replaced below the floor theta_floor (see Rules) by the continuous
+!> ramp sin(theta)/sin^2(theta_floor), where no pass is followed anyway.
 !> The contact force is R = m (a_G + g Z + a_g) (L.8), N = R.Z; the friction demand is
 !> |R_t|/N. Energy in the ground frame E = m v_G^2/2 + omega.I_G omega/2 + m g z_G (L.9),
 !> conserved between impacts in free motion.
@@ -31,16 +32,17 @@
 !>   theta' -> e |theta'|, psi', phi_s' (the vertical angular velocity) kept.
 !> - Floor: a pass with spin turns around above theta = 0 (physically: no impact, the
 !>   contact runs round the rim fast, psi' ~ 1/theta^2). A pass whose minimum lies below
-!>   theta_floor = 1e-4 theta_c (the opposite rim within 2 r theta_floor of the ground)
+!>   theta_floor = 1e-5 theta_c (the opposite rim within 2 r theta_floor of the ground)
 !>   counts as an impact at the downward crossing of theta_floor (theta kept, the contact
-!>   mirrored to the opposite rim point); a step that cannot be resolved above the time
+!>   mirrored to the opposite rim point; a motion in a fixed plane, psi' = phi_s' = 0,
+!>   goes on to its impact at theta = 0); a step that cannot be resolved above the time
 !>   resolution with theta < 1e-3 theta_c also counts as one (a touch). Every loop is
 !>   bounded by the step budget (2e6 attempted steps, 40 more per record sample).
 !> - Rest: after an impact, when the next flight would rise less than 1e-10 theta_c (the
 !>   planar model's rule); after a floor pass, also when the energy of the rocking,
-!>   E - m g h - C omega_Z^2/2, is below m g r 1e-10 theta_c (the same measure): the body
-!>   sits on its base (all rates set to 0: no base torque is modelled) from the impact
-!>   time plus the Zeno estimate tau/(1 - e).
+!>   E - m g h - C omega_Z^2/2, is below m g r 1e-10 theta_c (the same measure). The body
+!>   then sits on its base (all rates set to 0: no base torque is modelled), from the
+!>   impact time plus the Zeno estimate tau/(1 - e) (after a floor pass: at once).
 !> - Overturned when theta reaches pi/2. After the excitation, E < m g R with
 !>   theta < theta_c proves that the body never overturns (doc/rolling.md section 4).
 !>
@@ -118,9 +120,7 @@ module seispulse_cylinder_roll
     !> A flight rising less than rest_tol theta_c is rest (as the planar model).
     real(dp), parameter :: rest_tol = 1.0e-10_dp
     !> Floor of a pass, and the tilt below which an unresolvable step is a touch (x theta_c).
-    real(dp), parameter :: floor_tol = 1.0e-4_dp, touch_tol = 1.0e-3_dp
-    !> The regularisation of 1/sin(theta) (L.7), x theta_c.
-    real(dp), parameter :: reg_tol = 1.0e-8_dp
+    real(dp), parameter :: floor_tol = 1.0e-5_dp, touch_tol = 1.0e-3_dp
     integer, parameter :: max_steps_default = 2000000, steps_per_sample = 40
     integer, parameter :: RG_ZERO = 0, RG_PULSE = 1, RG_RECORD = 2
     integer, parameter :: WHY_REACHED = 0, WHY_REST = 2, WHY_CAP = 3, WHY_LIMIT = 4, &
@@ -488,7 +488,7 @@ contains
         st%sys%ia = body%j_g
         st%sys%ic = body%j_axis
         st%theta_c = atan2(body%r, body%h)
-        st%sys%s_reg = reg_tol * st%theta_c
+        st%sys%s_reg = sin(floor_tol * st%theta_c)
         st%big_r = hypot(body%r, body%h)
         j_o = body%j_g + body%mass * st%big_r**2
         st%p = sqrt(body%mass * body%g * st%big_r / j_o)
@@ -774,7 +774,7 @@ contains
         real(dp) :: hh, t_new, y_new(NY), f_new(NY), err, fac, th0, th1, w0, w1, x_turn, &
                     th_turn, x_ev, yv(NY), fl, fa
         integer :: ev, kk
-        logical :: clamped, rejected, turn_min, turn_max, need
+        logical :: clamped, rejected, turn_min, turn_max, need, planar
 
         why = WHY_REACHED
         fl = floor_tol * st%theta_c
@@ -837,6 +837,10 @@ contains
             th0 = st%y(1)
             w0 = st%y(4)
             w1 = y_new(4)
+            ! a motion in a fixed plane (psi' = phi_s' = 0 exactly, section 3 of
+            ! doc/rolling.md) crosses theta = 0 smoothly: no floor rule for it
+            planar = .not. (abs(st%y(5)) > 0.0_dp .or. abs(st%y(6)) > 0.0_dp .or. &
+                            abs(y_new(5)) > 0.0_dp .or. abs(y_new(6)) > 0.0_dp)
             turn_max = w0 >= 0.0_dp .and. w1 < 0.0_dp
             turn_min = w0 < 0.0_dp .and. w1 > 0.0_dp
             need = th1 < fl .or. th1 >= half_pi .or. turn_max .or. turn_min
@@ -860,6 +864,9 @@ contains
                         ev = EV_CAP
                         call locate(st, 1, half_pi, 0.0_dp, x_turn, th0 - half_pi, &
                                     th_turn - half_pi, x_ev)
+                    else if (th1 < fl .and. .not. planar .and. th_turn > fl) then
+                        ev = EV_FLOOR
+                        call locate(st, 1, fl, x_turn, 1.0_dp, th_turn - fl, th1 - fl, x_ev)
                     else if (th1 <= 0.0_dp) then
                         ! (th_turn >= th0 >= 0; th0 = 0 only on a first step, which rises)
                         ev = EV_IMPACT
@@ -876,6 +883,9 @@ contains
                         ev = EV_FLOOR
                         call locate(st, 1, fl, 0.0_dp, x_turn, th0 - fl, th_turn - fl, x_ev)
                     end if
+                else if (th1 < fl .and. .not. planar .and. th0 > fl) then
+                    ev = EV_FLOOR
+                    call locate(st, 1, fl, 0.0_dp, 1.0_dp, th0 - fl, th1 - fl, x_ev)
                 else if (th1 <= 0.0_dp) then
                     ev = EV_IMPACT
                     call locate(st, 1, 0.0_dp, 0.0_dp, 1.0_dp, th0, th1, x_ev)
@@ -951,6 +961,7 @@ contains
             call move_alloc(tmp, st%imp)
         end if
         st%imp(st%n_imp) = st%t
+        ! (L.11)
         if (ev == EV_IMPACT) yv(1) = 0.0_dp
         yv(2) = yv(2) + pi
         yv(4) = st%e * abs(yv(4))
@@ -1244,8 +1255,13 @@ contains
             sys%vec = 0.0_dp
         end if
         qdd(1) = sys%vec(1)
-        ! phi_s'' = b/sin(theta), regularised below sin(theta) ~ s_reg (L.7)
-        qdd(3) = sys%vec(3) * s / (s**2 + sys%s_reg**2)
+        ! phi_s'' = b/sin(theta) (L.7); below the floor, |sin(theta)| < s_reg, the ramp
+        ! b sin(theta)/s_reg^2 (continuous there) keeps it finite where a flight starts
+        if (abs(s) >= sys%s_reg) then
+            qdd(3) = sys%vec(3) / s
+        else
+            qdd(3) = sys%vec(3) * s / sys%s_reg**2
+        end if
         qdd(2) = sys%vec(2) - c * qdd(3)                              ! (L.7)
         v = cross(om, rho)                                            ! (L.3)
         vg = [v(1) * cp - v(2) * sp, v(1) * sp + v(2) * cp]

@@ -1210,11 +1210,14 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         stat = SEISPULSE_SUCCESS
-        ! NaN fails the range test; inside the range aint is exact
-        if (.not. (cycles >= 1.0_dp .and. cycles <= PULSE_MAX_CYCLES)) then
+        ! NaN first (no ordered comparison with NaN: it traps under -ffpe-trap=invalid)
+        if (ieee_is_nan(cycles)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'cycles = ' &
                            //real_str(cycles)//': must be a whole number in [1, 1000000]')
-        else if (aint(cycles) /= cycles) then
+        else if (cycles < 1.0_dp .or. cycles > PULSE_MAX_CYCLES) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'cycles = ' &
+                           //real_str(cycles)//': must be a whole number in [1, 1000000]')
+        else if (abs(aint(cycles) - cycles) > 0.0_dp) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'cycles = ' &
                            //real_str(cycles)//': must be a whole number in [1, 1000000]')
         end if
