@@ -426,6 +426,7 @@ contains
         real(dp) :: th0, om0
         real(dp), allocatable :: accel_si(:)
         integer :: i
+        logical :: bad
 
         call empty_run(run)
         call rocking_block_validate(blk, stat, errmsg)
@@ -447,7 +448,9 @@ contains
             end if
             ! finite samples, far from overflow in g accel_v(i) (dt and g checked above)
             do i = 1, size(accel_v)
-                if (.not. abs(accel_v(i)) <= 0.5_dp * (huge(g) / max(g, 1.0_dp))) then
+                bad = .not. ieee_is_finite(accel_v(i))   ! NaN-safe: no comparison with NaN
+                if (.not. bad) bad = abs(accel_v(i)) > 0.5_dp * (huge(g) / max(g, 1.0_dp))
+                if (bad) then
                     call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel_v(' &
                                    //int_str(i)//') = '//real_str(accel_v(i)) &
                                    //': must be a finite number (g; g = '//real_str(g) &
