@@ -368,12 +368,9 @@ contains
         call check_options(t_grid, theta_grid, omega_grid, t_max, theta0, omega0, rtol, &
                            th0, om0, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
+        call check_kv(kv, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         if (present(kv)) then
-            if (.not. ieee_is_finite(kv)) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'kv = '//real_str(kv) &
-                               //': must be a finite number (a_v = kv a_g)')
-                return
-            end if
             call kv_floor(p, kv, blk%g, bad, a_bad, t_bad, stat, errmsg)
             if (stat /= SEISPULSE_SUCCESS) return
             if (bad) then
@@ -573,13 +570,8 @@ contains
                 return
             end if
         end if
-        if (present(kv)) then
-            if (.not. ieee_is_finite(kv)) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'kv = '//real_str(kv) &
-                               //': must be a finite number (a_v = kv a_g)')
-                return
-            end if
-        end if
+        call check_kv(kv, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         if (present(template)) pl = template
         pl%kind = kind
         t0f = 1.5_dp
@@ -700,6 +692,17 @@ contains
             gr%kv = kv
         end if
     end subroutine set_kv
+
+    !> kv, when given, is a finite number.
+    subroutine check_kv(kv, stat, errmsg)
+        real(dp), intent(in), optional :: kv
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        stat = SEISPULSE_SUCCESS
+        if (.not. present(kv)) return
+        if (.not. ieee_is_finite(kv)) call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+            'kv = '//real_str(kv)//': must be a finite number (a_v = kv a_g)')
+    end subroutine check_kv
 
     !> Does kv a_g go below -g anywhere under the (valid) pulse p? The pieces are monotone,
     !> so a_g has its extremes at their ends (limits from inside): bad, with the lowest
@@ -1594,15 +1597,24 @@ contains
                 a = pulse_accel(gr%p, t, gr%cexp)
             end if
         case (GR_RECORD)
-            if (t >= gr%tb) then
-                a = gr%ab
-            else
-                a = gr%a0 + gr%slope * (t - gr%ta)
-            end if
+            a = step_line(gr, t, gr%a0, gr%slope, gr%ab)
         case default
             a = 0.0_dp
         end select
     end function ground_accel
+
+    !> On a record step: the line a0 + slope (t - ta), and from its end on the limit from
+    !> inside, ab (the horizontal or the vertical record).
+    pure function step_line(gr, t, a0, slope, ab) result(a)
+        type(ground_t), intent(in) :: gr
+        real(dp), intent(in) :: t, a0, slope, ab
+        real(dp) :: a
+        if (t >= gr%tb) then
+            a = ab
+        else
+            a = a0 + slope * (t - gr%ta)
+        end if
+    end function step_line
 
     !> Vertical ground acceleration a_v (m/s^2, positive up) at t on the current piece
     !> (doc/rocking.md section 7); 0 once the excitation is over.
@@ -1616,11 +1628,7 @@ contains
         case (V_SCALED)
             a = gr%kv * ground_accel(gr, t)
         case (V_RECORD)
-            if (t >= gr%tb) then
-                a = gr%vb
-            else
-                a = gr%v0 + gr%vslope * (t - gr%ta)
-            end if
+            a = step_line(gr, t, gr%v0, gr%vslope, gr%vb)
         end select
     end function ground_vert
 
