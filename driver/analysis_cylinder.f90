@@ -24,10 +24,10 @@
 module driver_cylinder
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan, &
-                                             ieee_positive_inf
+                                             ieee_positive_inf, ieee_is_finite
     use seispulse, only: dp, pi, pulse_t, pulse_eval, pulse_kind_name, SEISPULSE_SUCCESS, &
                          real_str, int_str, rocking_block_t, rocking_run_t, rock_pulse, &
-                         rock_record, ROCK_RUN_TIME_LIMIT, in_open, rocking_body_t, &
+                         rock_record, ROCK_RUN_TIME_LIMIT, in_open, positive, rocking_body_t, &
                          cylinder_props, block_props, body_rocking_block, equivalent_cylinder, &
                          equivalent_block, rigid_pushover, normalized_pushover, &
                          body_overturning_map, map_difference, BODY_SOLID_CYLINDER, &
@@ -427,7 +427,7 @@ contains
                      //'acceleration a_v = kv a_g during the motion)'
             return
         end if
-        if (.not. abs(kv) <= huge(kv)) then
+        if (.not. ieee_is_finite(kv)) then
             errmsg = where//'kv = '//real_str(kv)//': must be a finite number (vertical ' &
                      //'ground acceleration a_v = kv a_g)'
             return
@@ -473,7 +473,7 @@ contains
             call required('r', 'the base radius, m')
             if (code == BODY_HOLLOW_CYLINDER) then
                 call required('r_inner', 'the inner radius of the hollow cylinder, m')
-                if (len(errmsg) == 0 .and. .not. r_inner > 0.0_dp) errmsg = where &
+                if (len(errmsg) == 0 .and. .not. positive(r_inner)) errmsg = where &
                     //'r_inner = '//real_str(r_inner)//': the inner radius of a hollow ' &
                     //'cylinder must be > 0 (m; shape = ''solid'' for none)'
             else
