@@ -62,9 +62,9 @@ module driver_cylinder
         't_max', 'rtol', 't_end', 'npts', 'dt', 'kv', 'theta', 'theta_range', 'theta_count', &
         'theta_ratio', 'theta_ratio_range', 'theta_ratio_count']
     character(len=13), parameter :: map_keys(20) = [character(len=13) :: 'axes', 'kind', &
-        'beta', 'full', 'peak_frac', 't0_periods', 'cycles', 'freq_ratio', 'freq_range', 'freq_count', &
-        'amp_ratio', 'amp_range', 'amp_count', 'freq_hz', 'freq_hz_range', 'freq_hz_count', &
-        'pga', 'pga_range', 'pga_count', 'compare_block']
+        'beta', 'full', 'peak_frac', 't0_periods', 'cycles', 'freq_ratio', 'freq_range', &
+        'freq_count', 'amp_ratio', 'amp_range', 'amp_count', 'freq_hz', 'freq_hz_range', &
+        'freq_hz_count', 'pga', 'pga_range', 'pga_count', 'compare_block']
     character(len=8), parameter :: what_names(5) = [character(len=8) :: 'props', &
         'pushover', 'history', 'map', 'roll']
     character(len=12), parameter :: roll_keys(7) = [character(len=12) :: 'theta0', 'psi0', &
@@ -109,9 +109,9 @@ module driver_cylinder
     namelist /body/ shape, r, b, r_inner, h, mass, j_o, j_axis, g, e, model, equivalent_angle
     namelist /cylinder/ what, t_max, rtol, t_end, npts, dt, kv, theta, theta_range, &
         theta_count, theta_ratio, theta_ratio_range, theta_ratio_count
-    namelist /map/ axes, kind, beta, full, peak_frac, t0_periods, cycles, freq_ratio, freq_range, &
-        freq_count, amp_ratio, amp_range, amp_count, freq_hz, freq_hz_range, freq_hz_count, &
-        pga, pga_range, pga_count, compare_block
+    namelist /map/ axes, kind, beta, full, peak_frac, t0_periods, cycles, freq_ratio, &
+        freq_range, freq_count, amp_ratio, amp_range, amp_count, freq_hz, freq_hz_range, &
+        freq_hz_count, pga, pga_range, pga_count, compare_block
     namelist /roll/ theta0, psi0, spin0, theta_rate0, psi_rate0, spin_rate0, direction
 
     !> The checked input of a run.
@@ -1258,7 +1258,7 @@ contains
             comments(7) = 'class_block: the equivalent block (same p, same M_max, alpha = ' &
                           //real_str(eq%theta_c)//' rad, Housner e = '//real_str(eq%e) &
                           //') on the same '//trim(names(1))//', '//trim(names(2))
-            comments(8) = code_legend('diff', diff_names)
+            comments(8) = code_legend('diff', diff_names)//', -1 undecided'
         else
             comments(7) = 'compare_block = .false.: no block map'
             comments(8) = 'grid: '//grid
