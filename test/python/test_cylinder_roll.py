@@ -172,6 +172,8 @@ def test_energy_between_impacts_any_spin(spin):
     assert run.energy_drift < 1e-9
     with_impacts = run.n_impacts > 0
     assert with_impacts == (spin < 1e-3)
+    # with spin every impact is a pass below the floor (doc/rolling.md section 4)
+    assert run.n_floor == run.n_impacts
 
 
 def test_thesis_free_rocking_scenarios():
