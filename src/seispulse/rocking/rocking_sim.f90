@@ -181,25 +181,11 @@ module seispulse_rocking_sim
         procedure :: eval => ground_eval
     end type ground_t
 
-    abstract interface
-        !> theta'' of a flight with a vertical component (flight_vert_rhs).
-        subroutine vert_rhs_iface(sim, gr, sa, t, theta, acc)
-            import :: dp, sim_t, ground_t
-            type(sim_t), intent(in) :: sim
-            type(ground_t), intent(in) :: gr
-            real(dp), intent(in) :: sa, t, theta
-            real(dp), intent(out) :: acc
-        end subroutine vert_rhs_iface
-    end interface
-
     !> The flight of the block as a system of seispulse_ode: (theta, theta') on side s.
     type, extends(ode_system) :: flight_ode_t
         type(sim_t) :: sim                 !! settings of the run
         type(ground_t) :: gr               !! ground acceleration on the current piece
         real(dp) :: sa = 0.0_dp            !! alpha s, s = +-1 the side (0 at rest)
-        !> the right-hand side with a vertical component, called through a pointer so that
-        !> the horizontal-only lines of flight_ode_rhs compile as they would without it
-        procedure(vert_rhs_iface), pointer, nopass :: vert_rhs => flight_vert_rhs
     contains
         procedure :: rhs => flight_ode_rhs
     end type flight_ode_t
@@ -1540,9 +1526,10 @@ contains
         real(dp), contiguous, intent(out) :: dydt(:)
         real(dp) :: a, phi, f(2)
         if (self%gr%vsrc /= V_NONE) then
-            ! with a vertical component (apart: the lines below stay as they were)
+            ! with a vertical component: apart, with scalar arguments, so that the lines
+            ! below compile (and run) as they do without it
             f(1) = y(2)
-            call self%vert_rhs(self%sim, self%gr, self%sa, t, y(1), f(2))
+            call flight_vert_rhs(self%sim, self%gr, self%sa, t, y(1), f(2))
             dydt(1:2) = f
             return
         end if
