@@ -507,13 +507,13 @@ contains
         if (.not. given(s%gb, 'mass')) m_used = 1.0_dp     ! dynamics do not depend on it
         ! --- gravity: the pulse's, or &body's; not two different values
         if (g_from_pulse) then
-            if (given(s%gb, 'g') .and. given(s%pin%group, 'g') .and. &
-                abs(g - g_pulse) > 0.0_dp) then
+            ! the pulse's amplitude in g was converted with its own g (default 9.80665)
+            if (given(s%gb, 'g') .and. .not. abs(g - g_pulse) <= 0.0_dp) then
                 errmsg = where//'g = '//real_str(g)//': not the g of &pulse (' &
-                         //real_str(g_pulse)//' m/s2): give g in one of the two groups'
+                         //real_str(g_pulse)//' m/s2): with a pulse give g in &pulse'
                 return
             end if
-            if (.not. given(s%gb, 'g')) g = g_pulse
+            g = g_pulse
         end if
         ! --- the body
         select case (code)

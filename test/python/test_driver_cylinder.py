@@ -530,6 +530,8 @@ ERRORS = [
      ["&map", "compare_block", "a block already"]),
     ("r=1.0, h=2.0, g=9.81", "what='history'", "&pulse amp=3.0, g=9.8 /\n",
      ["&body", "g = 9.81", "&pulse"]),
+    ("r=1.0, h=2.0, g=9.81", "what='history'", "&pulse amp=0.5, amp_unit='g' /\n",
+     ["&body", "g = 9.81", "not the g of &pulse (9.80665 m/s2)", "give g in &pulse"]),
     ("r=1.0, h=2.0, mass=1.0, radius=2.0", "what='props'", "",
      ["&body", "radius: unknown key"]),
     ("r=1.0, h=2.0", "what='history', rtol=0.1", "&pulse amp=3.0 /\n",
