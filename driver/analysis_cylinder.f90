@@ -131,6 +131,7 @@ module driver_cylinder
 
 contains
 
+    !> The defaults of &body, &cylinder, &map and &roll, set before they are read.
     subroutine set_defaults()
         real(dp) :: nan
         nan = ieee_value(nan, ieee_quiet_nan)
@@ -635,6 +636,7 @@ contains
     ! Properties
     ! ------------------------------------------------------------------------------
 
+    !> 'props': the table of the body and of its equivalent body.
     subroutine do_props(path, prefix, s, stat, errmsg)
         character(len=*), intent(in) :: path, prefix
         type(setup_t), intent(in) :: s
@@ -700,6 +702,8 @@ contains
     ! Pushover
     ! ------------------------------------------------------------------------------
 
+    !> 'pushover': F, M, M/(m g r) and the stable flag over the grid of tilts
+    !> (doc/cylinder.md section 4).
     subroutine do_pushover(path, prefix, s, stat, errmsg)
         character(len=*), intent(in) :: path, prefix
         type(setup_t), intent(in) :: s
@@ -837,6 +841,7 @@ contains
         lines(4) = code_legend('outcome', outcome_names)
     end subroutine history_comments
 
+    !> 'history' under the pulse of &pulse: the summary and the history tables.
     subroutine do_history_pulse(path, prefix, s, stat, errmsg)
         character(len=*), intent(in) :: path, prefix
         type(setup_t), intent(in) :: s
@@ -928,6 +933,7 @@ contains
         end if
     end function summary_names
 
+    !> Units of the summary table (with the record and pga columns for records).
     function summary_units(records) result(units)
         logical, intent(in) :: records
         character(len=6), allocatable :: units(:)
@@ -1103,6 +1109,8 @@ contains
     ! Overturning map
     ! ------------------------------------------------------------------------------
 
+    !> 'map': the overturning map on the chosen axes (doc/cylinder.md section 6), with the
+    !> equivalent block's map and the difference on request.
     subroutine do_map(path, prefix, s, stat, errmsg)
         character(len=*), intent(in) :: path, prefix
         type(setup_t), intent(in) :: s
