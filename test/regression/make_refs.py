@@ -37,6 +37,15 @@ blocks need none); maps use the wall alone (the rectangle's impacts come after t
 pulse, where a stable block cannot overturn: doc/rocking.md section 3), with cells at least 1e-6
 (relative) away from it.
 
+Analysis 'cylinder' (never by running the driver): the properties of the body and of its
+equivalent body (J_G by the parallel-axis theorem, J_o, p, Housner's e, the equivalence by
+the same p and the same M_max) and the rigid pushover (F, M, M/(m g r)), written out from
+doc/cylinder.md; a linearized history (e = 0) under a rectangular pulse and a map of the
+rectangular family (dimensional axes, with the equivalent block) from the block's closed
+forms above with alpha = theta_c and the body's own p; and a linearized history (e = 0)
+under a record, solved piece by piece in closed form (cosh, sinh and the linear
+particular solution) with uplifts, impacts and rests located in mpmath.
+
 Analysis 'newmark' (never by running the driver): the record files are read here by a
 small parser of their own (AT2, SLAMMER CSV, two columns, one column; the decimals taken
 exactly), turned over by the polarity and scaled (scale, or target_pga over the PGA,
@@ -655,6 +664,114 @@ def cylinder_history_rows(nml, bd):
     return rows
 
 
+def linearized_record_segments(acc, dt, alpha, p, g, t_stop):
+    """Linearized rocking (doc/rocking.md (2.7), a_g > 0 drives theta > 0) with e = 0 under a
+    record acc (g) at t = k dt, linear in between, 0 after the last sample, from rest, up
+    to t_stop: on side s, theta'' = p^2 (theta - s alpha + a/g); on a piece where
+    a = a0 + k (t - t0) the solution is C1 cosh p(t - t0) + C2 sinh p(t - t0) + s alpha
+    - a/g. Uplift when |a| > g alpha (side sign(a)); an impact (theta = 0) stops the body
+    (e = 0) and it waits for the next uplift. Returns the segments (t0, t1, state) with
+    state None (rest) or (s, C1, C2, a0, k) on [t0, t1], and the impact times."""
+    n = len(acc)
+    knots = [k * dt for k in range(n)]
+    pieces = [(knots[k], knots[k + 1], g * acc[k], g * (acc[k + 1] - acc[k]) / dt)
+              for k in range(n - 1)]
+    if knots[-1] < t_stop:
+        pieces.append((knots[-1], mpf(t_stop), mpf(0), mpf(0)))
+    thr = g * alpha
+    segs, impacts = [], []
+
+    def theta(st, t0, u):
+        s, c1, c2, a0, k = st
+        x = p * (u - t0)
+        return (c1 * mp.cosh(x) + c2 * mp.sinh(x) + s * alpha - (a0 + k * (u - t0)) / g,
+                p * (c1 * mp.sinh(x) + c2 * mp.cosh(x)) - k / g)
+
+    state, t, th, om = None, mpf(0), mpf(0), mpf(0)
+    for ta, tb, a0, k in pieces:
+        def acc_at(u):
+            return a0 + k * (u - ta)
+        while t < tb:
+            if state is None:
+                # the first time in [t, tb) where |a| > g alpha
+                up = t if abs(acc_at(t)) > thr else None
+                if up is None and k != 0:
+                    cands = [ta + (lvl - a0) / k for lvl in (thr, -thr)]
+                    cands = [u for u in cands if t < u < tb and k * mp.sign(acc_at(u)) > 0]
+                    up = min(cands) if cands else None
+                if up is None:
+                    segs.append((t, tb, None))
+                    t = tb
+                    continue
+                if up > t:
+                    segs.append((t, up, None))
+                # at the uplift a is at the threshold or beyond: the side is its sign
+                side = mp.sign(acc_at(up)) if acc_at(up) != 0 else mp.sign(k)
+                t, th, om, state = up, mpf(0), mpf(0), side
+            s = state
+            c1 = th - s * alpha + acc_at(t) / g
+            c2 = (om + k / g) / p
+            st = (s, c1, c2, acc_at(t), k)
+            # the first return to theta = 0 on this piece, by sampling and bisection
+            m = 400
+            prev = t
+            hit = None
+            for j in range(1, m + 1):
+                u = t + (tb - t) * j / m
+                if s * theta(st, t, u)[0] <= 0:
+                    hit = mp.findroot(lambda v: theta(st, t, v)[0], (prev, u),
+                                      solver="anderson")
+                    break
+                prev = u
+            if hit is None:
+                segs.append((t, tb, (st, t)))
+                th, om = theta(st, t, tb)
+                if abs(th) >= mp.pi / 2:
+                    raise ValueError("cylinder record references: the body overturns")
+                t = tb
+                continue
+            segs.append((t, hit, (st, t)))
+            impacts.append(hit)
+            t, th, om, state = hit, mpf(0), mpf(0), None
+    return segs, impacts, theta
+
+
+def cylinder_record_rows(nml_path, nml, bd):
+    """The history table of one record (label, t, a_g, theta, omega) from
+    linearized_record_segments, for a body with alpha = theta_c and the body's own p."""
+    body, nr = nml["body"], nml["records"]
+    if str(body.get("model", "nonlinear")).lower() != "linearized" or float(body["e"]) != 0:
+        raise ValueError("cylinder record references: model = 'linearized', e = 0 only")
+    if isinstance(nr["files"], list) or any(k in nr for k in ("scale", "target_pga",
+                                                               "polarity")):
+        raise ValueError("cylinder record references: one record as read")
+    path = Path(nml_path).parent / nr["files"]
+    acc, step = read_record(path, nr.get("format", "auto").lower(),
+                            nr.get("units", "auto").lower(), nr.get("dt", 0.0))
+    grid = time_grid(nml["cylinder"])
+    g, alpha, p = bd["g"], bd["theta_c"], bd["p"]
+    segs, impacts, theta = linearized_record_segments(acc, step, alpha, p, g, grid[-1])
+    label = Path(path).stem
+    rows = []
+    for t in grid:
+        tt = mpf(t)
+        if any(abs(tt - u) < mpf(10)**-6 for u in impacts):
+            raise ValueError(f"t = {t}: too close to an impact")
+        k = min(int(tt / step), len(acc) - 1)
+        if k < len(acc) - 1:
+            a = acc[k] + (acc[k + 1] - acc[k]) * (tt / step - k)
+        else:
+            a = acc[-1] if tt == (len(acc) - 1) * step else mpf(0)
+        th = om = mpf(0)
+        for t0, t1, state in segs:
+            if t0 <= tt <= t1:
+                if state is not None:
+                    th, om = theta(state[0], state[1], tt)
+                break
+        rows.append([label, tt, g * a, th, om])
+    return rows
+
+
 def map_class(alpha, fr, a):
     """Class of a linearized rectangular-pulse cell (see rocking_map_rows)."""
     if a == 0:
@@ -733,13 +850,16 @@ def make_cylinder_ref(nml_path, nml):
         else:
             if what == "pushover":
                 header, rows = CYLINDER_PUSHOVER_HEADER, cylinder_pushover_rows(bd, c)
+            elif what == "history" and "records" in nml:
+                header = "record (-)," + CYLINDER_HISTORY_HEADER
+                rows = cylinder_record_rows(nml_path, nml, bd)
             elif what == "history":
                 header, rows = CYLINDER_HISTORY_HEADER, cylinder_history_rows(nml, bd)
             elif what == "map":
                 header, rows = cylinder_map_rows(nml, bd)
             else:
                 raise ValueError(f"cylinder references: no reference for what = {what!r}")
-            lines = [header] + [",".join(repr(float(x)) for x in row) for row in rows]
+            lines = [header] + [",".join(csv_cell(x) for x in row) for row in rows]
     out = Path(nml_path).with_suffix(".ref")
     out.write_text("\n".join(lines) + "\n")
     print(f"wrote {out} ({len(lines) - 1} rows)")
