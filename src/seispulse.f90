@@ -56,6 +56,13 @@ module seispulse
                                      ROCK_RUN_NO_UPLIFT, ROCK_RUN_OVERTURN_NO_IMPACT, &
                                      ROCK_RUN_OVERTURN_ONE_IMPACT, ROCK_RUN_OVERTURN_MANY, &
                                      ROCK_RUN_TIME_LIMIT
+    use seispulse_cylinder, only: rocking_body_t, cylinder_props, block_props, &
+                                  body_rocking_block, equivalent_cylinder, equivalent_block, &
+                                  rigid_pushover, normalized_pushover, body_overturning_map, &
+                                  map_difference, overturning_threshold, BODY_SOLID_CYLINDER, &
+                                  BODY_HOLLOW_CYLINDER, BODY_CUSTOM, BODY_BLOCK, &
+                                  MAP_AXES_DIMENSIONLESS, MAP_AXES_DIMENSIONAL, MAP_DIFF_SAME, &
+                                  MAP_DIFF_ONLY_FIRST, MAP_DIFF_ONLY_SECOND, MAP_DIFF_OTHER_MODE
     use seispulse_records, only: record_t, read_record, record_pga, pga_scale_factor, &
                                  ground_motion, record_format_name, record_units_name, &
                                  RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, &

@@ -13,6 +13,7 @@ program tester
     use test_sliding_closed, only: collect_sliding_closed
     use test_rocking_closed, only: collect_rocking_closed
     use test_rocking_sim, only: collect_rocking_sim
+    use test_cylinder, only: collect_cylinder
     use test_records, only: collect_records
     use test_number_reader, only: collect_number_reader
     use test_newmark, only: collect_newmark
@@ -70,6 +71,10 @@ program tester
     if (selected('rocking_sim')) then
         call collect_rocking_sim(tests)
         call run_suite('rocking_sim', tests, output_unit, npass, nfail)
+    end if
+    if (selected('cylinder')) then
+        call collect_cylinder(tests)
+        call run_suite('cylinder', tests, output_unit, npass, nfail)
     end if
     if (selected('records')) then
         call collect_records(tests)
