@@ -39,8 +39,8 @@ module driver_rocking
 
     character(len=12), parameter :: block_keys(8) = [character(len=12) :: 'b', 'h', &
         'alpha', 'alpha_deg', 'r', 'io_over_mr2', 'e', 'model']
-    character(len=8), parameter :: rocking_keys(6) = [character(len=8) :: 'what', 't_max', &
-        'rtol', 't_end', 'npts', 'dt']
+    character(len=8), parameter :: rocking_keys(7) = [character(len=8) :: 'what', 't_max', &
+        'rtol', 't_end', 'npts', 'dt', 'kv']
     character(len=12), parameter :: map_keys(11) = [character(len=12) :: 'kind', 'beta', &
         'full', 'peak_frac', 't0_periods', 'freq_ratio', 'freq_range', 'freq_count', &
         'amp_ratio', 'amp_range', 'amp_count']
@@ -63,6 +63,7 @@ module driver_rocking
     character(len=32) :: model
     character(len=32) :: what
     real(dp) :: t_max, rtol, t_end, dt
+    real(dp) :: kv       !! vertical ground acceleration a_v = kv a_g (doc/rocking.md section 7)
     integer :: npts
     character(len=32) :: kind
     real(dp) :: beta, peak_frac, t0_periods
@@ -70,7 +71,7 @@ module driver_rocking
     real(dp) :: freq_ratio(max_list), freq_range(2), amp_ratio(max_list), amp_range(2)
     integer :: freq_count, amp_count
     namelist /block/ b, h, alpha, alpha_deg, r, io_over_mr2, e, model
-    namelist /rocking/ what, t_max, rtol, t_end, npts, dt
+    ! &rocking is read (with kv) in read_rocking and echoed in echo_rocking
     namelist /map/ kind, beta, full, peak_frac, t0_periods, freq_ratio, freq_range, &
         freq_count, amp_ratio, amp_range, amp_count
 
@@ -90,6 +91,7 @@ contains
         what = 'summary'
         t_max = ieee_value(t_max, ieee_positive_inf)
         rtol = 1.0e-12_dp
+        kv = 0.0_dp       ! no vertical ground acceleration
         t_end = nan       ! NaN: 1.25 x the end of the motion, at least the end of the pulse
         npts = 0          ! neither dt nor npts: 1001 points
         dt = 0.0_dp
@@ -123,6 +125,7 @@ contains
         character(len=*), intent(in) :: text
         integer, intent(out) :: ios
         character(len=*), intent(inout) :: iomsg
+        namelist /rocking/ what, t_max, rtol, t_end, npts, dt, kv
         if (len(text) > 0) then
             read(text, nml=rocking, iostat=ios, iomsg=iomsg)
         else
@@ -256,6 +259,11 @@ contains
         end if
         if (.not. in_closed(rtol, 1.0e-14_dp, 1.0e-3_dp)) then
             errmsg = where//'rtol = '//real_str(rtol)//': must be in [1e-14, 1e-3]'
+            return
+        end if
+        if (.not. abs(kv) <= huge(kv)) then
+            errmsg = where//'kv = '//real_str(kv)//': must be a finite number (vertical ' &
+                     //'ground acceleration a_v = kv a_g)'
             return
         end if
         if (task /= 'history') return
@@ -433,12 +441,13 @@ contains
         call echo()
         stat = 1
         msg = ''
-        call rock_pulse(blk, pin%p, run, i, msg, t_max=t_max, rtol=rtol)
+        call rock_pulse(blk, pin%p, run, i, msg, t_max=t_max, rtol=rtol, kv=kv)
         if (i /= SEISPULSE_SUCCESS) then
             errmsg = locate_message(path, trim(msg), pin, gb, gr)
             return
         end if
-        cf = closed_form_pulse(pin%p, beta_cf)
+        ! the closed forms have no vertical acceleration
+        cf = closed_form_pulse(pin%p, beta_cf) .and. .not. abs(kv) > 0.0_dp
         f = nan
         eta = nan
         region = -1
@@ -486,6 +495,8 @@ contains
             comments(8) = 'closed forms (_cf): NaN, they exist for the half-cycle ' &
                           //'exponential pulse (also rectangular, symmetric triangular) ' &
                           //'with amp > 0 only'
+            if (abs(kv) > 0.0_dp) comments(8) = 'closed forms (_cf): NaN, they have no ' &
+                                               //'vertical ground acceleration (kv = 0 only)'
         end if
         call write_tables(prefix, 'rocking', comments, &
             [character(len=12) :: 'alpha', 'p', 'e', 'f', 'eta', 'outcome', 't_uplift', &
@@ -514,6 +525,10 @@ contains
                    //' rad/s, e = '//real_str(blk%e)//', g = '//real_str(blk%g)//' m/s2'
         lines(3) = 'uplift at |a_g| > g tan(alpha) (nonlinear) or g alpha (linearized); ' &
                    //'a_g > 0 drives theta > 0'
+        if (abs(kv) > 0.0_dp) lines(3) = 'vertical ground acceleration a_v = kv a_g, kv = ' &
+            //real_str(kv)//' (doc/rocking.md section 7): uplift at a_g > g t/(1 - kv t) or ' &
+            //'a_g < -g t/(1 + kv t), t = tan(alpha) (nonlinear) or alpha (linearized); ' &
+            //'a_g > 0 drives theta > 0'
     end subroutine block_comments
 
     ! ------------------------------------------------------------------------------
@@ -539,7 +554,7 @@ contains
         ! --- the grid: up to t_end, or past the end of the motion
         t_last = t_end
         if (ieee_is_nan(t_end)) then
-            call rock_pulse(blk, pin%p, run, i, msg, t_max=t_max, rtol=rtol)
+            call rock_pulse(blk, pin%p, run, i, msg, t_max=t_max, rtol=rtol, kv=kv)
             if (i /= SEISPULSE_SUCCESS) then
                 errmsg = locate_message(path, trim(msg), pin, gb, gr)
                 return
@@ -558,7 +573,7 @@ contains
         n = size(t)
         allocate(table(n, 4), v(n), d(n))
         call rock_pulse(blk, pin%p, run, i, msg, t_grid=t, theta_grid=table(:, 3), &
-                        omega_grid=table(:, 4), t_max=t_max, rtol=rtol)
+                        omega_grid=table(:, 4), t_max=t_max, rtol=rtol, kv=kv)
         if (i == SEISPULSE_SUCCESS) call pulse_eval(pin%p, t, table(:, 2), v, d, i, msg)
         if (i /= SEISPULSE_SUCCESS) then
             errmsg = locate_message(path, trim(msg), pin, gb, gr)
@@ -673,9 +688,14 @@ contains
         do i = 1, size(amps)
             call overturning_map(blk%alpha, blk%e, code, freqs, amps(i:i), &
                                  classes(i:i, :), st, msg, linearized=blk%linearized, &
-                                 template=tpl, rtol=rtol)
+                                 template=tpl, rtol=rtol, kv=kv)
             if (st /= SEISPULSE_SUCCESS) then
-                if (index(msg, 'rtol') == 1) then
+                if (index(msg, 'kv ') == 1) then
+                    ! one row at a time: name the amplitude, not the library's amp_ratio(1)
+                    errmsg = located(path, gr)//'kv = '//real_str(kv)//': at amp_ratio = ' &
+                             //real_str(amps(i))//' the vertical acceleration kv a_g goes ' &
+                             //'below -g (the block would leave the ground)'
+                else if (index(msg, 'rtol') == 1) then
                     errmsg = located(path, gr)//trim(msg)
                 else if (index(msg, 'alpha') == 1 .or. msg(1:2) == 'e ') then
                     errmsg = located(path, gb)//trim(msg)
@@ -719,6 +739,8 @@ contains
         comments(4) = 'amp_ratio = a_p/(g tan alpha) (both models); rows: amp_ratio ' &
                       //'outer, freq_ratio inner'
         comments(5) = 'block: alpha = '//real_str(blk%alpha)//' rad, e = '//real_str(blk%e)
+        if (abs(kv) > 0.0_dp) comments(5) = trim(comments(5))//'; vertical ground ' &
+            //'acceleration a_v = kv a_g, kv = '//real_str(kv)//' (doc/rocking.md section 7)'
         comments(6) = template_text(code)
         comments(7) = 'input: '//trim(path)
         call write_tables(prefix, 'rocking_map', comments, &
@@ -797,8 +819,24 @@ contains
         what = task
         if (task /= 'map') call write_pulse_group(output_unit)
         write(output_unit, nml=block)
-        write(output_unit, nml=rocking)
+        if (abs(kv) > 0.0_dp) then
+            call echo_rocking_kv()
+        else
+            call echo_rocking()
+        end if
         if (task == 'map') write(output_unit, nml=map)
     end subroutine echo
+
+    !> Echo &rocking as before kv existed (kv = 0: the same output as without it).
+    subroutine echo_rocking()
+        namelist /rocking/ what, t_max, rtol, t_end, npts, dt
+        write(output_unit, nml=rocking)
+    end subroutine echo_rocking
+
+    !> Echo &rocking with kv.
+    subroutine echo_rocking_kv()
+        namelist /rocking/ what, t_max, rtol, t_end, npts, dt, kv
+        write(output_unit, nml=rocking)
+    end subroutine echo_rocking_kv
 
 end module driver_rocking

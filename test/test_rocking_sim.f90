@@ -18,7 +18,7 @@ module test_rocking_sim
                                      rock_record, overturning_map, ROCK_RUN_REST, ROCK_RUN_NO_UPLIFT, &
                                      ROCK_RUN_OVERTURN_NO_IMPACT, ROCK_RUN_OVERTURN_ONE_IMPACT, &
                                      ROCK_RUN_OVERTURN_MANY, ROCK_RUN_TIME_LIMIT
-    use testing, only: test_error, unit_test, new_unittest, check
+    use testing, only: test_error, unit_test, new_unittest, check, same_bits
     implicit none
     private
 
@@ -56,7 +56,15 @@ contains
                  new_unittest('maps: single runs, the linearized wall, monotone cells', &
                               test_maps), &
                  new_unittest('grid output, outcomes, initial states', test_grid_outcomes), &
-                 new_unittest('bad input is a status naming the parameter', test_bad_input)]
+                 new_unittest('bad input is a status naming the parameter', test_bad_input), &
+                 new_unittest('vertical: kv = 0 and a zero accel_v are bit for bit', &
+                              test_vertical_identity), &
+                 new_unittest('vertical: constant a_v = block with g + a_v, p^2 (1 + a_v/g)', &
+                              test_vertical_constant), &
+                 new_unittest('vertical: uplift thresholds (R.11), (R.10) on a record', &
+                              test_vertical_uplift), &
+                 new_unittest('vertical: a_v < -g refused naming kv / accel_v', &
+                              test_vertical_bad)]
     end subroutine collect_rocking_sim
 
     ! ---------------------------------------------------------------- helpers
@@ -1172,5 +1180,291 @@ contains
             msg = ''
         end subroutine expect
     end subroutine test_bad_input
+
+    ! ---------------------------------------------------------------- vertical (section 7)
+
+    !> Two runs equal bit for bit (every field the run reports).
+    subroutine identical_run(error, a, b, label)
+        type(test_error), allocatable, intent(inout) :: error
+        type(rocking_run_t), intent(in) :: a, b
+        character(len=*), intent(in) :: label
+        logical :: same
+        same = a%outcome == b%outcome .and. a%n_impacts == b%n_impacts .and. &
+               a%n_steps == b%n_steps
+        if (same) same = all(same_bits_v([a%t_end, a%theta_max, a%theta_min, a%t_uplift, &
+                                          a%t_overturn, a%t_impacts], &
+                                         [b%t_end, b%theta_max, b%theta_min, b%t_uplift, &
+                                          b%t_overturn, b%t_impacts]))
+        call check(error, same, label//': runs differ')
+    contains
+        elemental logical function same_bits_v(x, y)
+            real(dp), intent(in) :: x, y
+            same_bits_v = same_bits(x, y)
+        end function same_bits_v
+    end subroutine identical_run
+
+    !> (a) kv = 0 and a vertical record of zeros take the horizontal-only results bit for
+    !> bit (pulses, records, maps; nonlinear and linearized).
+    subroutine test_vertical_identity(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(rocking_block_t) :: blk
+        type(rocking_run_t) :: r0, r1
+        type(pulse_t) :: pl
+        real(dp) :: acc(61), zero(61), tg(50), th0(50), th1(50), om0(50), om1(50)
+        integer :: stat, i, j, c0(3, 4), c1(3, 4)
+        logical :: lin
+        character(len=200) :: msg
+        do i = 1, size(acc)
+            acc(i) = 0.6_dp * sin(real(i - 1, dp) * 0.21_dp)
+            zero(i) = 0.0_dp
+        end do
+        do i = 1, size(tg)
+            tg(i) = 0.05_dp * real(i, dp)
+        end do
+        do j = 1, 2
+            lin = j == 2
+            blk = make_block(0.2_dp, 2.0_dp, 0.9_dp, lin)
+            pl = sine_cycle_pulse(3.0_dp * g0 * tan(0.2_dp), 2.0_dp * pi / 6.0_dp)
+            call rock_pulse(blk, pl, r0, stat, msg, tg, th0, om0)
+            call rock_pulse(blk, pl, r1, stat, msg, tg, th1, om1, kv=0.0_dp)
+            call identical_run(error, r0, r1, 'pulse, kv = 0')
+            if (allocated(error)) return
+            call check(error, th1, th0, rtol=0.0_dp, message='pulse grid, kv = 0')
+            if (allocated(error)) return
+            call check(error, om1, om0, rtol=0.0_dp, message='pulse grid, kv = 0')
+            if (allocated(error)) return
+            call rock_record(blk, acc, 0.02_dp, g0, r0, stat, msg, tg, th0, om0)
+            call check(error, r0%n_impacts >= 2, 'the test record makes the block impact')
+            if (allocated(error)) return
+            call rock_record(blk, acc, 0.02_dp, g0, r1, stat, msg, tg, th1, om1, accel_v=zero)
+            call check(error, stat, SEISPULSE_SUCCESS, 'zero accel_v: status')
+            if (allocated(error)) return
+            call identical_run(error, r0, r1, 'record, accel_v = 0')
+            if (allocated(error)) return
+            call check(error, th1, th0, rtol=0.0_dp, message='record grid, accel_v = 0')
+            if (allocated(error)) return
+            call check(error, om1, om0, rtol=0.0_dp, message='record grid, accel_v = 0')
+            if (allocated(error)) return
+            call overturning_map(0.2_dp, 0.9_dp, PULSE_SINE_CYCLE, [1.0_dp, 2.0_dp, 4.0_dp, &
+                                 8.0_dp], [1.5_dp, 3.0_dp, 6.0_dp], c0, stat, linearized=lin)
+            call overturning_map(0.2_dp, 0.9_dp, PULSE_SINE_CYCLE, [1.0_dp, 2.0_dp, 4.0_dp, &
+                                 8.0_dp], [1.5_dp, 3.0_dp, 6.0_dp], c1, stat, linearized=lin, &
+                                 kv=0.0_dp)
+            call check(error, all(c0 == c1), 'map, kv = 0')
+            if (allocated(error)) return
+        end do
+    end subroutine test_vertical_identity
+
+    !> (b), (e) With a_v = c constant, doc/rocking.md (R.9) is
+    !> theta'' = -p^2 (1 + c/g) [sin(alpha s - theta) - a_g/(g + c) cos(alpha s - theta)]:
+    !> the block with p'^2 = p^2 (1 + c/g) and gravity g' = g + c under the same a_g (m/s^2),
+    !> uplift at a_g > (g + c) tan(alpha) included. Checked while the excitation lasts
+    !> (afterwards a_v = 0): a record with a constant vertical, and a rectangular pulse with
+    !> kv (a_v = kv A on the pulse); nonlinear and linearized (the same rescaling).
+    subroutine test_vertical_constant(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(rocking_block_t) :: blk, blk2
+        type(rocking_run_t) :: ra, rb
+        real(dp) :: acc(201), vert(201), tg(40), tha(40), thb(40), oma(40), omb(40)
+        real(dp) :: dt, c, amp, kv, td
+        integer :: stat, i, j, k
+        character(len=200) :: msg
+        dt = 0.01_dp
+        do i = 1, size(acc)
+            acc(i) = 0.5_dp * sin(real(i - 1, dp) * 0.08_dp)   ! in g: up to 0.5 g
+        end do
+        do i = 1, size(tg)
+            tg(i) = 0.05_dp * real(i, dp)          ! up to 2 s = the end of the record
+        end do
+        do j = 1, 4
+            blk = make_block(0.18_dp, 2.0_dp, 0.85_dp, j > 2)
+            ! c = -0.3 g (lighter) and +0.4 g (heavier)
+            c = -0.3_dp * g0
+            if (mod(j, 2) == 0) c = 0.4_dp * g0
+            vert = c / g0
+            msg = ''
+            call rock_record(blk, acc, dt, g0, ra, stat, msg, tg, tha, oma, accel_v=vert)
+            call check(error, stat, SEISPULSE_SUCCESS, 'constant vertical ('//trim(msg)//')')
+            if (allocated(error)) return
+            call check(error, maxval(abs(tha)) > 1.0e-3_dp, 'the test record rocks the block')
+            if (allocated(error)) return
+            blk2 = blk
+            blk2%g = g0 + c
+            blk2%p = blk%p * sqrt(1.0_dp + c / g0)
+            ! the same a_g in m/s^2: samples g0 acc in units of 1 m/s^2
+            call rock_record(blk2, g0 * acc, dt, 1.0_dp, rb, stat, msg, tg, thb, omb)
+            call check(error, stat, SEISPULSE_SUCCESS, 'rescaled block')
+            if (allocated(error)) return
+            call check(error, ra%t_uplift, rb%t_uplift, rtol=1.0e-12_dp, &
+                       message='constant vertical: uplift')
+            if (allocated(error)) return
+            do k = 1, min(ra%n_impacts, rb%n_impacts)
+                if (rb%t_impacts(k) > 2.0_dp) exit
+                call check(error, ra%t_impacts(k), rb%t_impacts(k), rtol=1.0e-9_dp, &
+                           message='constant vertical: impact time')
+                if (allocated(error)) return
+            end do
+            do k = 1, size(tg)
+                call check(error, tha(k), thb(k), rtol=1.0e-8_dp, atol=1.0e-10_dp, &
+                           message='constant vertical: theta')
+                if (allocated(error)) return
+                call check(error, oma(k), omb(k), rtol=1.0e-8_dp, atol=1.0e-10_dp, &
+                           message='constant vertical: omega')
+                if (allocated(error)) return
+            end do
+            ! rectangular pulse with kv: a_v = kv amp while it lasts
+            kv = c / g0
+            td = 1.2_dp
+            amp = 1.8_dp * g0 * tan(0.18_dp) * (1.0_dp + kv)
+            call rock_pulse(blk, rectangular_pulse(amp, td), ra, stat, msg, tg(1:24), &
+                            tha(1:24), oma(1:24), kv=kv)
+            call check(error, stat, SEISPULSE_SUCCESS, 'kv pulse ('//trim(msg)//')')
+            if (allocated(error)) return
+            blk2%g = g0 + kv * amp
+            blk2%p = blk%p * sqrt(1.0_dp + kv * amp / g0)
+            call rock_pulse(blk2, rectangular_pulse(amp, td), rb, stat, msg, tg(1:24), &
+                            thb(1:24), omb(1:24))
+            call check(error, ra%t_uplift, rb%t_uplift, atol=1.0e-14_dp, &
+                       message='kv pulse: uplift')
+            if (allocated(error)) return
+            call check(error, maxval(abs(thb(1:24))) > 1.0e-3_dp, 'kv pulse: the block rocks')
+            if (allocated(error)) return
+            do k = 1, 24
+                call check(error, tha(k), thb(k), rtol=1.0e-8_dp, atol=1.0e-10_dp, &
+                           message='kv pulse: theta')
+                if (allocated(error)) return
+            end do
+        end do
+    end subroutine test_vertical_constant
+
+    !> (c), (e) Uplift from rest: a rectangular pulse of amplitude 1 +- 1e-6 times the
+    !> thresholds (R.11), g tan(alpha)/(1 - kv tan(alpha)) on side +1 and
+    !> g tan(alpha)/(1 + kv tan(alpha)) on side -1 (alpha for tan(alpha) when linearized),
+    !> uplifts at t = 0 or never; kv tan(alpha) >= 1: never on side +1. On a record with a
+    !> constant a_g = A and a_v from v0 to v1 (linear), the uplift is where
+    !> s A = (g + a_v) tan(alpha), (R.10), in closed form.
+    subroutine test_vertical_uplift(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(rocking_block_t) :: blk
+        type(rocking_run_t) :: run
+        real(dp) :: alpha, tu, kv, thr, acc(11), vert(11), dt, v0, v1, a, t_ex
+        integer :: stat, j, s, m
+        character(len=200) :: msg
+        alpha = 0.25_dp
+        do j = 1, 4
+            blk = make_block(alpha, 2.0_dp, 0.9_dp, j > 2)
+            tu = tan(alpha)
+            if (j > 2) tu = alpha
+            kv = 0.6_dp
+            if (mod(j, 2) == 0) kv = -0.45_dp
+            do s = 1, -1, -2
+                thr = g0 * tu / (1.0_dp - real(s, dp) * kv * tu)
+                call rock_pulse(blk, rectangular_pulse(real(s, dp) * thr * (1.0_dp + 1.0e-6_dp), &
+                                0.5_dp), run, stat, msg, kv=kv)
+                call check(error, run%outcome /= ROCK_RUN_NO_UPLIFT .and. .not. run%t_uplift > 0.0_dp, &
+                           'just above the threshold: uplift at 0')
+                if (allocated(error)) return
+                call check(error, s * run%theta_max + s * run%theta_min > 0.0_dp, &
+                           'uplift on side s')
+                if (allocated(error)) return
+                call rock_pulse(blk, rectangular_pulse(real(s, dp) * thr * (1.0_dp - 1.0e-6_dp), &
+                                0.5_dp), run, stat, msg, kv=kv)
+                call check(error, run%outcome, ROCK_RUN_NO_UPLIFT, 'just below: no uplift')
+                if (allocated(error)) return
+                ! and kv = 0 uplifts below it when kv s > 0 (the threshold moved)
+                call rock_pulse(blk, rectangular_pulse(real(s, dp) * g0 * tu * 1.001_dp, &
+                                0.5_dp), run, stat, msg, kv=kv)
+                if (s * kv > 0.0_dp) then
+                    call check(error, run%outcome, ROCK_RUN_NO_UPLIFT, 'kv s > 0 raises it')
+                else
+                    call check(error, run%outcome /= ROCK_RUN_NO_UPLIFT, 'kv s < 0 lowers it')
+                end if
+                if (allocated(error)) return
+            end do
+            ! kv tan(alpha) >= 1: side +1 never, whatever the amplitude
+            call rock_pulse(blk, rectangular_pulse(50.0_dp * g0, 0.5_dp), run, stat, msg, &
+                            kv=1.0_dp / tu)
+            call check(error, stat, SEISPULSE_SUCCESS, 'kv tan(alpha) = 1: status')
+            if (allocated(error)) return
+            call check(error, run%outcome, ROCK_RUN_NO_UPLIFT, 'kv tan(alpha) = 1: no uplift')
+            if (allocated(error)) return
+            ! record: A = g tu (the threshold at a_v = 0), a_v from v0 to v1 on 10 steps
+            m = 10
+            dt = 0.03_dp
+            do s = 1, -1, -2
+                v0 = 0.2_dp
+                v1 = -0.3_dp
+                a = real(s, dp) * tu * 1.1_dp     ! in g: uplift where 1.1 = 1 + a_v/g
+                acc = a
+                do m = 1, 11
+                    vert(m) = v0 + (v1 - v0) * real(m - 1, dp) / 10.0_dp
+                end do
+                call rock_record(blk, acc, dt, g0, run, stat, msg, accel_v=vert)
+                call check(error, stat, SEISPULSE_SUCCESS, 'vertical record: status')
+                if (allocated(error)) return
+                ! 1 + v(t) = 1.1: v = 0.1 at t = 10 dt (v0 - 0.1)/(v0 - v1)
+                t_ex = 10.0_dp * dt * (v0 - 0.1_dp) / (v0 - v1)
+                call check(error, run%t_uplift, t_ex, rtol=1.0e-12_dp, &
+                           message='vertical record: uplift time')
+                if (allocated(error)) return
+                call check(error, s * run%theta_max + s * run%theta_min > 0.0_dp, &
+                           'vertical record: side s')
+                if (allocated(error)) return
+            end do
+        end do
+    end subroutine test_vertical_uplift
+
+    !> (d) a_v < -g is an input error naming kv (with the time), accel_v(i), or kv and
+    !> amp_ratio(i) in a map; a_v = -g exactly is allowed.
+    subroutine test_vertical_bad(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(rocking_block_t) :: blk
+        type(rocking_run_t) :: run
+        real(dp) :: acc(5), vert(5), nan
+        integer :: stat, cls(2, 1)
+        character(len=300) :: msg
+        nan = ieee_value(nan, ieee_quiet_nan)
+        blk = make_block(0.2_dp, 2.0_dp, 0.9_dp, .false.)
+        ! sine cycle of 0.5 g: kv = 2.5 gives -1.25 g on the negative lobe (at t = 0.75)
+        msg = ''
+        call rock_pulse(blk, sine_cycle_pulse(0.5_dp * g0, 1.0_dp), run, stat, msg, kv=2.5_dp)
+        call check(error, stat, SEISPULSE_INVALID_INPUT, 'kv: status')
+        if (allocated(error)) return
+        call check(error, index(msg, 'kv = 2.5') == 1 .and. index(msg, 't = 0.75') > 0, &
+                   'kv message: '//trim(msg))
+        if (allocated(error)) return
+        ! kv = 2: -g exactly, allowed
+        call rock_pulse(blk, sine_cycle_pulse(0.5_dp * g0, 1.0_dp), run, stat, msg, kv=2.0_dp)
+        call check(error, stat, SEISPULSE_SUCCESS, 'kv a_g = -g: allowed')
+        if (allocated(error)) return
+        call rock_pulse(blk, sine_cycle_pulse(0.5_dp * g0, 1.0_dp), run, stat, msg, kv=nan)
+        call check(error, stat == SEISPULSE_INVALID_INPUT .and. index(msg, 'kv') == 1, &
+                   'kv = NaN: '//trim(msg))
+        if (allocated(error)) return
+        acc = 0.1_dp
+        vert = [0.0_dp, -0.5_dp, -1.01_dp, 0.0_dp, 0.0_dp]
+        msg = ''
+        call rock_record(blk, acc, 0.01_dp, g0, run, stat, msg, accel_v=vert)
+        call check(error, stat == SEISPULSE_INVALID_INPUT .and. index(msg, 'accel_v(3)') == 1, &
+                   'accel_v below -g: '//trim(msg))
+        if (allocated(error)) return
+        msg = ''
+        call rock_record(blk, acc, 0.01_dp, g0, run, stat, msg, accel_v=vert(1:4))
+        call check(error, stat == SEISPULSE_INVALID_INPUT .and. index(msg, 'accel_v') == 1, &
+                   'accel_v size: '//trim(msg))
+        if (allocated(error)) return
+        vert(3) = nan
+        msg = ''
+        call rock_record(blk, acc, 0.01_dp, g0, run, stat, msg, accel_v=vert)
+        call check(error, stat == SEISPULSE_INVALID_INPUT .and. index(msg, 'accel_v') == 1, &
+                   'accel_v NaN: '//trim(msg))
+        if (allocated(error)) return
+        ! map: amp_ratio(2) tan(alpha) kv = 3 tan(0.2) 2 > 1 on the negative lobe
+        msg = ''
+        call overturning_map(0.2_dp, 0.9_dp, PULSE_SINE_CYCLE, [1.0_dp], [1.0_dp, 3.0_dp], &
+                             cls, stat, msg, kv=2.0_dp)
+        call check(error, stat == SEISPULSE_INVALID_INPUT .and. index(msg, 'kv = 2') == 1 &
+                   .and. index(msg, 'amp_ratio(2)') > 0, 'map kv: '//trim(msg))
+    end subroutine test_vertical_bad
 
 end module test_rocking_sim

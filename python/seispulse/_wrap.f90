@@ -252,11 +252,12 @@ end subroutine sp_rocking_block
 !> One run under a pulse (kind > 0, params packed as in pulse_from_params) or a record
 !> (kind = 0: accel(nrec) in m/s^2, handed to rock_record as a record in units of 1 m/s^2, so
 !> that g * accel is accel bit for bit; dt); the block is alpha, p, e, g; t_max only when
-!> has_t_max /= 0.
+!> has_t_max /= 0. Vertical ground acceleration: a_v = kv a_g under a pulse; under a record
+!> accel_v(nrec) (m/s^2, as accel) when has_v /= 0.
 !> The n_imp impact times are kept for sp_fetch_impacts.
 subroutine sp_rock(kind, params, nrec, accel, dt, alpha, p, e, g, linearized, has_t_max, t_max, &
-                   theta0, omega0, rtol, ngrid, tg, thg, omg, n_imp, outcome, t_uplift, &
-                   t_overturn, theta_max, theta_min, t_end, n_steps, stat, errmsg)
+                   theta0, omega0, rtol, kv, has_v, accel_v, ngrid, tg, thg, omg, n_imp, outcome, &
+                   t_uplift, t_overturn, theta_max, theta_min, t_end, n_steps, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_pulses, only: pulse_from_params, PULSE_NPARAM
@@ -264,9 +265,9 @@ subroutine sp_rock(kind, params, nrec, accel, dt, alpha, p, e, g, linearized, ha
     use sp_runs_held, only: held_impacts
     implicit none
     !f2py intent(hide) :: nrec, ngrid
-    integer, intent(in) :: kind, nrec, linearized, has_t_max, ngrid
+    integer, intent(in) :: kind, nrec, linearized, has_t_max, ngrid, has_v
     real(dp), intent(in) :: params(PULSE_NPARAM), accel(nrec), dt, alpha, p, e, g, t_max, &
-                            theta0, omega0, rtol, tg(ngrid)
+                            theta0, omega0, rtol, tg(ngrid), kv, accel_v(nrec)
     real(dp), intent(out) :: thg(ngrid), omg(ngrid)
     real(dp), intent(out) :: t_uplift, t_overturn, theta_max, theta_min, t_end
     integer, intent(out) :: n_imp, outcome, n_steps, stat
@@ -292,10 +293,19 @@ subroutine sp_rock(kind, params, nrec, accel, dt, alpha, p, e, g, linearized, ha
     if (kind > 0) then
         if (ngrid > 0) then
             call rock_pulse(blk, pulse_from_params(kind, params), run, stat, errmsg, tg, thg, &
-                            omg, t_max=t_lim, theta0=theta0, omega0=omega0, rtol=rtol)
+                            omg, t_max=t_lim, theta0=theta0, omega0=omega0, rtol=rtol, kv=kv)
         else
             call rock_pulse(blk, pulse_from_params(kind, params), run, stat, errmsg, &
-                            t_max=t_lim, theta0=theta0, omega0=omega0, rtol=rtol)
+                            t_max=t_lim, theta0=theta0, omega0=omega0, rtol=rtol, kv=kv)
+        end if
+    else if (has_v /= 0) then
+        if (ngrid > 0) then
+            call rock_record(blk, accel, dt, 1.0_dp, run, stat, errmsg, tg, thg, omg, &
+                             t_max=t_lim, theta0=theta0, omega0=omega0, rtol=rtol, &
+                             accel_v=accel_v)
+        else
+            call rock_record(blk, accel, dt, 1.0_dp, run, stat, errmsg, t_max=t_lim, &
+                             theta0=theta0, omega0=omega0, rtol=rtol, accel_v=accel_v)
         end if
     else
         if (ngrid > 0) then
@@ -318,8 +328,9 @@ subroutine sp_rock(kind, params, nrec, accel, dt, alpha, p, e, g, linearized, ha
     n_steps = run%n_steps
 end subroutine sp_rock
 
-!> Overturning map of a pulse family (template params packed as in pulse_from_params).
-subroutine sp_overturning_map(alpha, e, kind, params, linearized, nf, freq, na, amp, classes, &
+!> Overturning map of a pulse family (template params packed as in pulse_from_params);
+!> a_v = kv a_g in every cell.
+subroutine sp_overturning_map(alpha, e, kind, params, linearized, nf, freq, na, amp, kv, classes, &
                               stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_pulses, only: pulse_from_params, PULSE_NPARAM
@@ -327,13 +338,14 @@ subroutine sp_overturning_map(alpha, e, kind, params, linearized, nf, freq, na, 
     implicit none
     !f2py intent(hide) :: nf, na
     integer, intent(in) :: kind, linearized, nf, na
-    real(dp), intent(in) :: alpha, e, params(PULSE_NPARAM), freq(nf), amp(na)
+    real(dp), intent(in) :: alpha, e, params(PULSE_NPARAM), freq(nf), amp(na), kv
     integer, intent(out) :: classes(na, nf)
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg
     errmsg = ''
     call overturning_map(alpha, e, kind, freq, amp, classes, stat, errmsg, &
-                         linearized=linearized /= 0, template=pulse_from_params(kind, params))
+                         linearized=linearized /= 0, template=pulse_from_params(kind, params), &
+                         kv=kv)
 end subroutine sp_overturning_map
 
 ! ---------------------------------------------------------------------------------

@@ -246,7 +246,7 @@ def _restitution(e):
 
 
 def simulate(block, pulse=None, *, accel=None, dt=None, linearized=False, t=None,
-             t_max=None, theta0=0.0, omega0=0.0, rtol=1e-12):
+             t_max=None, theta0=0.0, omega0=0.0, rtol=1e-12, kv=0.0, accel_v=None):
     """Rocking of `block` (:class:`Block`) under a pulse (from
     :func:`seispulse.pulse.define`, SI) or a sampled accelerogram (accel in m/s^2 at
     t = i dt, linear in between, zero after), from rest (or theta0 in rad, omega0 in
@@ -262,6 +262,12 @@ def simulate(block, pulse=None, *, accel=None, dt=None, linearized=False, t=None
     once the excitation is over, as soon as the energy settles it). Returns
     :class:`RockingRun`. rtol: relative tolerance of the integration steps (absolute:
     alpha and p alpha times it), in [1e-14, 1e-3].
+
+    Vertical ground acceleration a_v (positive up; doc/rocking.md section 7): gravity
+    becomes g + a_v. With a pulse, ``kv`` gives a_v = kv a_g (the same pulse scaled; uplift
+    at a_g > g tan(alpha)/(1 - kv tan(alpha)) or a_g < -g tan(alpha)/(1 + kv tan(alpha)));
+    with a record, ``accel_v`` is a second record in m/s^2 like accel (same dt and length,
+    linear in between, zero after). a_v < -g anywhere is an InvalidInputError.
     """
     if not isinstance(block, Block):
         raise InvalidInputError("block: must be a seispulse.rocking.Block (rectangular_block "
@@ -269,6 +275,12 @@ def simulate(block, pulse=None, *, accel=None, dt=None, linearized=False, t=None
     if (pulse is None) == (accel is None):
         raise InvalidInputError("pulse, accel: give exactly one of them")
     linearized = _core.check_bool("linearized", linearized)
+    kv = _core.as_scalar("kv", kv)
+    if accel_v is not None and accel is None:
+        raise InvalidInputError("accel_v: a vertical record goes with a record (accel); "
+                                "with a pulse give kv")
+    if kv != 0.0 and pulse is None:
+        raise InvalidInputError("kv: scales a pulse; with a record give accel_v")
     kind, params, rec, step, grid = _excitation(
         pulse, accel, dt, "dt: the time step (> 0, s) of accel is required", t)
     limit = t_max is not None
@@ -276,12 +288,19 @@ def simulate(block, pulse=None, *, accel=None, dt=None, linearized=False, t=None
     theta0 = _core.as_scalar("theta0", theta0)
     omega0 = _core.as_scalar("omega0", omega0)
     rtol = _core.as_scalar("rtol", rtol)
+    rec_v = np.zeros_like(rec)
+    if accel_v is not None:
+        rec_v = np.ascontiguousarray(_core.as_float_array("accel_v", accel_v).reshape(-1))
+        if rec_v.size != rec.size:
+            raise InvalidInputError(f"accel_v: {rec_v.size} samples: must have as many as "
+                                    f"accel ({rec.size}), at the same dt")
     with _core.HELD_LOCK:
         (thg, omg, n_imp, outcome, t_uplift, t_overturn, theta_max, theta_min, t_end,
          _, stat, msg) = sp_rock(kind, params, rec, step, block.alpha, block.p, block.e, block.g,
-                                 int(linearized), int(limit), t_lim, theta0, omega0, rtol, grid)
+                                 int(linearized), int(limit), t_lim, theta0, omega0, rtol,
+                                 kv, int(accel_v is not None), rec_v, grid)
         impacts = sp_fetch_impacts(n_imp if stat == 0 else 0)
-    _core.raise_for_status(stat, msg, rename={"t_grid": "t"})
+    _core.raise_for_status(stat, msg, rename={"t_grid": "t"}, indexed=("accel_v",))
     hist = (None, None, None) if t is None else (grid.copy(), thg.copy(), omg.copy())
     return RockingRun(OUTCOMES[outcome], float(t_uplift), float(t_overturn), int(n_imp),
                       impacts, float(theta_max), float(theta_min), float(t_end),
@@ -289,7 +308,7 @@ def simulate(block, pulse=None, *, accel=None, dt=None, linearized=False, t=None
 
 
 def overturning_map(kind, freq_ratio, amp_ratio, alpha, e=None, linearized=False,
-                    method="integrator", **shape):
+                    method="integrator", kv=0.0, **shape):
     """Overturning map of a pulse family over frequency ratios omega_p/p and amplitude
     ratios a_p/(g tan alpha): an integer array of shape (len(amp_ratio),
     len(freq_ratio)) with 0 safe, 1 overturns without impact, 2 after one impact,
@@ -302,9 +321,17 @@ def overturning_map(kind, freq_ratio, amp_ratio, alpha, e=None, linearized=False
     1 - 1.5 sin^2(alpha). method='closed' (exponential half cycle only) classifies with
     the linearized closed forms (regions O -> 1, S and no rocking -> 0), with the
     linearized uplift amplitude g alpha: eta = alpha/(amp_ratio tan alpha).
+
+    kv: vertical ground acceleration a_v = kv a_g in every cell (doc/rocking.md section 7;
+    integrator only); a cell whose kv a_g goes below -g is an InvalidInputError naming kv
+    and amp_ratio[i].
     """
     _core.check_choice("method", method, ("integrator", "closed"))
     alpha = _core.as_scalar("alpha", alpha)
+    kv = _core.as_scalar("kv", kv)
+    if kv != 0.0 and method == "closed":
+        raise InvalidInputError("kv: method = 'closed' has no vertical acceleration; use "
+                                "method = 'integrator'")
     if not 0.0 < alpha < np.pi / 2:
         raise InvalidInputError(f"alpha = {alpha!r}: must be in (0, pi/2) (rad)")
     freq = np.ascontiguousarray(_core.as_float_array("freq_ratio", freq_ratio).reshape(-1))
@@ -327,8 +354,8 @@ def overturning_map(kind, freq_ratio, amp_ratio, alpha, e=None, linearized=False
     linearized = _core.check_bool("linearized", linearized)
     template = define(kind, **_template_params(kind, shape))
     classes, stat, msg = sp_overturning_map(alpha, e, template.code, template.params,
-                                            int(linearized), freq, amp)
-    _core.raise_for_status(stat, msg)
+                                            int(linearized), freq, amp, kv)
+    _core.raise_for_status(stat, msg, indexed=("amp_ratio",))
     return np.array(classes)
 
 

@@ -688,3 +688,99 @@ def test_unwritable_output_leaves_nothing(driver, tmp_path):
     assert proc.returncode == 2
     assert "&run: output" in proc.stderr and len(proc.stderr.strip().splitlines()) == 1
     assert sorted(x.name for x in tmp_path.iterdir()) == ["case.nml", "o_rocking.txt"]
+
+
+# ---------------------------------------------------------------- vertical acceleration
+
+def test_kv_zero_is_the_plain_run(driver, tmp_path):
+    """kv = 0 given: the same echo and the same table, byte for byte."""
+    pulse = "kind='sine_cycle', amp=0.5, amp_unit='g', duration=0.5"
+    outs = []
+    for name, opts in (("a", "what = 'summary'"), ("b", "what = 'summary', kv = 0")):
+        text = ("&run analysis='rocking', output='o' /\n&block b = 0.2, h = 0.8 /\n"
+                f"&pulse {pulse} /\n&rocking {opts} /\n")
+        (tmp_path / name).mkdir()
+        proc = run(driver, tmp_path / name, text)
+        assert proc.returncode == 0, proc.stderr
+        outs.append((proc.stdout, (tmp_path / name / "o_rocking.csv").read_text()))
+    assert outs[0] == outs[1]
+    assert "KV" not in outs[0][0].upper()
+
+
+def test_kv_summary_against_scipy(driver, tmp_path):
+    """kv = 0.3 under the example's one-sine pulse: the uplift where
+    0.5 g sin(w t) = g tan(alpha)/(1 - kv tan(alpha)) (doc/rocking.md section 7), the first
+    impact by scipy on theta'' = -p^2 [(1 + kv a_g/g) sin(alpha - theta)
+    - (a_g/g) cos(alpha - theta)] written here."""
+    from scipy.integrate import solve_ivp
+    kv, amp, period = 0.3, 0.5 * G, 0.5
+    s = rocking(driver, tmp_path, "b = 0.2, h = 0.8",
+                f"kind='sine_cycle', amp=0.5, amp_unit='g', duration={period}",
+                opts=f"kv = {kv}")
+    alpha = math.atan(0.25)
+    p = math.sqrt(0.75 * G / math.hypot(0.2, 0.8))
+    w = 2 * math.pi / period
+    t_up = math.asin(math.tan(alpha) / (1 - kv * math.tan(alpha)) * G / amp) / w
+    assert math.isclose(s["t_uplift"], t_up, rel_tol=1e-12)
+    assert math.isnan(s["t_up_cf"])
+    ag = sine_cycle(amp, period)
+
+    def rhs(t, y):
+        a = ag(t) / G
+        return [y[1], -p * p * ((1 + kv * a) * math.sin(alpha - y[0])
+                                - a * math.cos(alpha - y[0]))]
+
+    hit = lambda t, y: y[0]
+    hit.terminal, hit.direction = True, -1
+    y, t_hit = [0.0, 0.0], None
+    for ta, tb in ((t_up, period), (period, 20.0)):      # a_g has a kink at the end
+        sol = solve_ivp(rhs, (ta, tb), y, method="DOP853", rtol=1e-12, atol=1e-14,
+                        events=hit)
+        if sol.t_events[0].size:
+            t_hit = sol.t_events[0][0]
+            break
+        y = list(sol.y[:, -1])
+    assert s["n_impacts"] >= 1 and t_hit is not None
+    assert math.isclose(s["t_impact1"], t_hit, rel_tol=1e-9)
+
+
+def test_kv_map_cells_equal_summary_runs(driver, tmp_path):
+    block, kv = "b = 0.2, h = 0.8", 0.6
+    freqs, amps = [1.0, 4.0, 9.0], [1.2, 2.5, 4.0]
+    m = rocking(driver, tmp_path, block, opts=f"what = 'map', kv = {kv}", output="map",
+                extra=f"&map kind='sine_cycle', freq_ratio = {', '.join(map(str, freqs))}, "
+                      f"amp_ratio = {', '.join(map(str, amps))} /\n")
+    classes = m["class"].reshape(len(amps), len(freqs))
+    header = (tmp_path / "map_rocking_map.txt").read_text()
+    assert "kv = 0.6" in header
+    alpha, p = math.atan(0.25), math.sqrt(0.75 * G / math.hypot(0.2, 0.8))
+    for i, a in enumerate(amps):
+        for j, fr in enumerate(freqs):
+            s = rocking(driver, tmp_path, block,
+                        f"kind='sine_cycle', amp={a * math.tan(alpha)!r}, amp_unit='g', "
+                        f"duration={2 * math.pi / (fr * p)!r}", opts=f"kv = {kv}",
+                        output=f"c{i}{j}")
+            assert CLASS_OF[int(s["outcome"])] == classes[i, j], (fr, a)
+
+
+KV_BAD = [
+    (HEAD + BLK + "&pulse kind='sine_cycle', amp=0.5, amp_unit='g', duration=0.5 /\n"
+     "&rocking kv = nan /\n", ["case.nml:4:", "&rocking", "kv = NaN", "finite"]),
+    (HEAD + BLK + "&pulse kind='sine_cycle', amp=0.5, amp_unit='g', duration=0.5 /\n"
+     "&rocking kv = 2.5 /\n", ["case.nml:4:", "&rocking", "kv = 2.5", "below -g"]),
+    (MAP.replace("what='map'", "what='map', kv = 2") + "&map kind='sine_cycle', "
+     "freq_ratio = 1, amp_ratio = 1, 3 /\n", ["case.nml:3:", "&rocking", "kv = 2.0",
+                                              "amp_ratio = 3.0", "below -g"]),
+]
+
+
+@pytest.mark.parametrize("text, words", KV_BAD)
+def test_kv_bad_input_one_line_exit_2_no_output(driver, tmp_path, text, words):
+    proc = run(driver, tmp_path, text)
+    assert proc.returncode == 2, (proc.stdout, proc.stderr)
+    lines = [x for x in proc.stderr.strip().splitlines() if not x.startswith("warning:")]
+    assert len(lines) == 1, proc.stderr
+    for word in words:
+        assert word in lines[0], lines[0]
+    assert lines[0].startswith("seispulse: error: case.nml")
+    assert sorted(x.name for x in tmp_path.iterdir()) == ["case.nml"], "no output left behind"

@@ -183,3 +183,141 @@ def test_grid_closed_forms_against_linearized_integrator(beta):
                 assert run.outcome == "rest" and run.n_impacts == 1, where   # e = 0
                 assert run.t_impacts[0] / td == pytest.approx(s.tau_i, rel=1e-9), where
                 assert run.theta_max / block.alpha == pytest.approx(s.psi_max, rel=1e-9), where
+
+
+# ------------------------------------------------ vertical ground acceleration (section 7)
+
+def _same_run(a, b):
+    assert (a.outcome, a.n_impacts) == (b.outcome, b.n_impacts)
+    for x, y in [(a.t_uplift, b.t_uplift), (a.t_overturn, b.t_overturn), (a.t_end, b.t_end),
+                 (a.theta_max, b.theta_max), (a.theta_min, b.theta_min)]:
+        assert np.array_equal([x], [y], equal_nan=True)
+    np.testing.assert_array_equal(a.t_impacts, b.t_impacts)
+    if a.t is not None:
+        np.testing.assert_array_equal(a.theta, b.theta)
+        np.testing.assert_array_equal(a.omega, b.omega)
+
+
+@pytest.mark.parametrize("linearized", [False, True])
+def test_vertical_zero_is_bit_identical(linearized):
+    block = R.rectangular_block(0.2, 0.8, e=0.9)
+    pulse = P.define("sine_cycle", amp=3 * G * math.tan(block.alpha), period=1.1)
+    t = np.linspace(0, 4, 81)
+    _same_run(R.simulate(block, pulse, linearized=linearized, t=t),
+              R.simulate(block, pulse, linearized=linearized, t=t, kv=0.0))
+    acc = 0.6 * G * np.sin(0.21 * np.arange(61))
+    a = R.simulate(block, accel=acc, dt=0.02, linearized=linearized, t=t)
+    assert a.n_impacts >= 1
+    _same_run(a, R.simulate(block, accel=acc, dt=0.02, linearized=linearized, t=t,
+                            accel_v=np.zeros_like(acc)))
+    freq, amp = [1.0, 3.0, 8.0], [1.5, 3.0, 6.0]
+    np.testing.assert_array_equal(
+        R.overturning_map("sine_cycle", freq, amp, alpha=0.2, linearized=linearized),
+        R.overturning_map("sine_cycle", freq, amp, alpha=0.2, linearized=linearized, kv=0.0))
+
+
+def _housner_vertical(block, ag, av, t0, t1, linearized=False):
+    """First impact after an uplift at t0 on side +1 (theta = 0, theta' = 0), by solve_ivp
+    of doc/rocking.md (R.9) written here: theta'' = -p^2 [(1 + a_v/g) sin(alpha - theta)
+    - (a_g/g) cos(alpha - theta)] (linearized: sin x ~ x, cos x ~ 1)."""
+    from scipy.integrate import solve_ivp
+    g, p2, al = block.g, block.p ** 2, block.alpha
+
+    def rhs(t, y):
+        gv, a = 1 + av(t) / g, ag(t) / g
+        if linearized:
+            return [y[1], -p2 * (gv * (al - y[0]) - a)]
+        return [y[1], -p2 * (gv * math.sin(al - y[0]) - a * math.cos(al - y[0]))]
+
+    hit = lambda t, y: y[0]
+    hit.terminal, hit.direction = True, -1
+    sol = solve_ivp(rhs, (t0, t1), [0.0, 0.0], method="DOP853", rtol=1e-12, atol=1e-15,
+                    events=hit, max_step=0.002)
+    return sol.t_events[0][0]
+
+
+@pytest.mark.parametrize("kv, linearized", [(0.5, False), (-0.4, False), (0.5, True)])
+def test_vertical_pulse_against_solve_ivp(kv, linearized):
+    """a_v = kv a_g under a one-sine pulse: the uplift at A sin(w t) = g tu/(1 - kv tu)
+    (tu = tan(alpha), alpha when linearized), and the first impact by solve_ivp."""
+    pytest.importorskip("scipy")
+    block = R.rectangular_block(0.2, 0.8, e=0.9)
+    tu = block.alpha if linearized else math.tan(block.alpha)
+    amp, period = 2.5 * G * tu, 0.5
+    w = 2 * PI / period
+    run = R.simulate(block, P.define("sine_cycle", amp=amp, period=period), kv=kv,
+                     linearized=linearized)
+    t_up = math.asin(G * tu / (1 - kv * tu) / amp) / w
+    assert run.t_uplift == pytest.approx(t_up, rel=1e-12)
+    ag = lambda t: amp * math.sin(w * t) if t < period else 0.0
+    t_hit = _housner_vertical(block, ag, lambda t: kv * ag(t), t_up, 20.0, linearized)
+    assert run.n_impacts >= 1
+    assert run.t_impacts[0] == pytest.approx(t_hit, rel=1e-7)
+
+
+def test_vertical_record_against_solve_ivp():
+    """A sampled horizontal and vertical record (linear in between): the uplift where
+    a_g = (g + a_v) tan(alpha) on a step (a root of a line), the first impact by
+    solve_ivp of (R.9)."""
+    pytest.importorskip("scipy")
+    block = R.rectangular_block(0.2, 0.8, e=0.9)
+    dt, n = 0.02, 101
+    ts = dt * np.arange(n)
+    acc = 0.3 * G * np.sin(2 * PI * ts / 0.6)
+    vert = 0.6 * G * np.sin(2 * PI * ts / 0.37 + 0.4)
+    run = R.simulate(block, accel=acc, dt=dt, accel_v=vert)
+    f = acc - math.tan(block.alpha) * (G + vert)
+    k = int(np.argmax(f > 0))
+    t_up = ts[k - 1] + dt * f[k - 1] / (f[k - 1] - f[k])
+    assert run.t_uplift == pytest.approx(t_up, rel=1e-12)
+    t_plain = R.simulate(block, accel=acc, dt=dt).t_uplift
+    assert abs(t_plain - t_up) > 1e-3        # the vertical record matters
+    ag = lambda t: np.interp(t, ts, acc)
+    av = lambda t: np.interp(t, ts, vert)
+    t_hit = _housner_vertical(block, ag, av, t_up, ts[-1])
+    assert run.n_impacts >= 1
+    assert run.t_impacts[0] == pytest.approx(t_hit, rel=1e-6)
+
+
+def test_vertical_map_equals_single_runs():
+    alpha, e, kv = 0.2, 0.85, 0.7
+    freq, amp = np.array([1.0, 2.5, 6.0]), np.array([1.2, 2.0, 4.0])
+    classes = R.overturning_map("sine_cycle", freq, amp, alpha=alpha, e=e, kv=kv)
+    plain = R.overturning_map("sine_cycle", freq, amp, alpha=alpha, e=e)
+    assert not np.array_equal(classes, plain)
+    block = R.Block(alpha, 1.0, e, 1.0, 1.0)
+    code = {"rest": 0, "no_uplift": 0, "overturn_no_impact": 1, "overturn_one_impact": 2,
+            "overturn_many_impacts": 3}
+    for j, fr in enumerate(freq):
+        for i, a in enumerate(amp):
+            pulse = P.define("sine_cycle", amp=a * math.tan(alpha), period=2 * PI / fr)
+            run = R.simulate(block, pulse, kv=kv, t_max=200.0)
+            assert code[run.outcome] == classes[i, j], (fr, a)
+
+
+@pytest.mark.parametrize("call, pattern", [
+    (lambda: R.simulate(R.rectangular_block(0.2, 0.8), P.define("sine_cycle", amp=5.0,
+                                                                period=1.0), kv=2.5),
+     r"^kv = 2.5: .* below -g"),
+    (lambda: R.simulate(R.rectangular_block(0.2, 0.8), P.define("sine_cycle", amp=5.0,
+                                                                period=1.0), kv=math.nan),
+     r"^kv = NaN"),
+    (lambda: R.simulate(R.rectangular_block(0.2, 0.8), accel=[1.0, 2.0, 0.0], dt=0.01,
+                        accel_v=[0.0, -10.0, 0.0]), r"^accel_v\[1\] = -10.0 at t = .*leave the ground"),
+    (lambda: R.simulate(R.rectangular_block(0.2, 0.8), accel=[1.0, 2.0, 0.0], dt=0.01,
+                        accel_v=[0.0, 0.0]), r"^accel_v: 2 samples"),
+    (lambda: R.simulate(R.rectangular_block(0.2, 0.8), accel=[1.0, 2.0, 0.0], dt=0.01,
+                        accel_v=[0.0, math.inf, 0.0]), r"^accel_v\[1\] = \+?Inf"),
+    (lambda: R.simulate(R.rectangular_block(0.2, 0.8), accel=[1.0, 2.0, 0.0], dt=0.01,
+                        kv=0.3), r"^kv: scales a pulse"),
+    (lambda: R.simulate(R.rectangular_block(0.2, 0.8), P.define("sine_cycle", amp=5.0,
+                                                                period=1.0),
+                        accel_v=[0.0]), r"^accel_v: a vertical record"),
+    (lambda: R.overturning_map("sine_cycle", [1.0], [1.0, 3.0], alpha=0.2, kv=2.0),
+     r"^kv = 2.0, amp_ratio\[1\] = 3.0"),
+    (lambda: R.overturning_map("exponential", [1.0], [1.0], alpha=0.2, kv=0.5,
+                               method="closed"), r"^kv: method = 'closed'"),
+])
+def test_vertical_bad_input(call, pattern):
+    with pytest.raises(InvalidInputError, match=pattern):
+        call()

@@ -11,6 +11,10 @@
 !> (theta = 0, doc/rocking.md section 6) the rotation carries on about the other corner, s -> -s,
 !> and the angular velocity is multiplied by e (Housner: e = 1 - 1.5 sin^2(alpha) for a
 !> uniform rectangle, 1 - (2 m R^2/I_o) sin^2(alpha) for a symmetric body).
+!> Vertical ground acceleration a_v (optional; doc/rocking.md section 7): gravity g + a_v,
+!>     theta'' = -p^2 [(1 + a_v/g) sin(alpha s - theta) - (a_g/g) cos(alpha s - theta)]  (R.9)
+!> with a_v = kv a_g under a pulse (constant uplift thresholds, (R.11)) or a second record
+!> (a line on each sample step, so the uplift function (R.10) is a line there).
 !>
 !> Overturning, as defined here (doc/rocking.md section 3: theta = alpha is only the static limit).
 !> - During the excitation the ground may still bring a block back from beyond
@@ -59,7 +63,7 @@ module seispulse_rocking_sim
                                 check_output_grid
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
                                 set_error
-    use seispulse_format, only: real_str
+    use seispulse_format, only: real_str, int_str
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_special, only: pi
     use seispulse_ode, only: ode_system, ode_dop853_t, ode_dop853_factor
@@ -126,6 +130,8 @@ module seispulse_rocking_sim
     integer, parameter :: max_steps_map = 200000
 
     integer, parameter :: GR_ZERO = 0, GR_PULSE = 1, GR_RECORD = 2
+    !> Vertical ground acceleration (doc/rocking.md section 7): none, kv a_g, a record.
+    integer, parameter :: V_NONE = 0, V_SCALED = 1, V_RECORD = 2
     !> Why `advance` returned.
     integer, parameter :: R_REACHED = 0, R_IMPACT = 1, R_REST = 2, R_CAP = 3, &
                           R_LIMIT = 4, R_TOUCH = 5
@@ -139,7 +145,9 @@ module seispulse_rocking_sim
         real(dp) :: p = 2.0_dp
         real(dp) :: e = 1.0_dp           !! restitution
         real(dp) :: inv_g = 1.0_dp       !! 1/g
-        real(dp) :: thr = 0.0_dp         !! uplift threshold on |a_g| (m/s^2)
+        real(dp) :: thr_pos = 0.0_dp     !! uplift on side +1 at a_g > thr_pos (m/s^2)
+        real(dp) :: thr_neg = 0.0_dp     !! uplift on side -1 at a_g < -thr_neg (m/s^2)
+        real(dp) :: tan_u = 0.0_dp       !! tan(alpha), or alpha when linearized (R.10)
         logical :: lin = .false.         !! linearized Eq. 2.7
         real(dp) :: rtol = rtol_default
         real(dp) :: atol(2) = 0.0_dp     !! absolute tolerances of theta and theta'
@@ -162,6 +170,13 @@ module seispulse_rocking_sim
         real(dp) :: a0 = 0.0_dp            !! record step: a_g(ta)
         real(dp) :: slope = 0.0_dp         !! record step: da_g/dt
         real(dp) :: level = 0.0_dp         !! subtracted by eval (uplift threshold)
+        integer :: vsrc = V_NONE           !! vertical: V_NONE, V_SCALED (kv a_g), V_RECORD
+        real(dp) :: kv = 0.0_dp            !! V_SCALED: a_v = kv a_g
+        real(dp) :: vdt = 0.0_dp           !! V_RECORD: sampling interval (s)
+        real(dp) :: v0 = 0.0_dp            !! V_RECORD step: a_v(ta) (m/s^2)
+        real(dp) :: vslope = 0.0_dp        !! V_RECORD step: da_v/dt (m/s^3)
+        real(dp) :: vb = 0.0_dp            !! V_RECORD step: a_v(tb) (m/s^2)
+        real(dp) :: vmix = 0.0_dp          !! V_RECORD: eval adds vmix a_v (uplift function)
     contains
         procedure :: eval => ground_eval
     end type ground_t
@@ -197,6 +212,7 @@ module seispulse_rocking_sim
         logical :: ever_up = .false.       !! the block has uplifted
         logical :: done = .false.          !! the run is over
         real(dp), allocatable :: imp(:)    !! impact times (when tracked)
+        real(dp), allocatable :: acc_v(:)  !! vertical record (m/s^2), V_RECORD only
         real(dp), allocatable :: t_grid(:), th_grid(:), om_grid(:)  !! output grid
         integer :: stat = SEISPULSE_SUCCESS              !! event or uplift location failed
         character(len=:), allocatable :: msg             !! its message
@@ -304,8 +320,12 @@ contains
     !> exceeds any threshold at one instant only: the block never uplifts. Ricker
     !> wavelets end at pi f_p (t - t0) = 10 (|a_g| < 1e-40 a_p) and M&P pulses need
     !> gamma <= 1e6, as in seispulse_sliding_sim.
+    !>
+    !> Optional vertical ground acceleration (doc/rocking.md section 7): a_v = kv a_g
+    !> (m/s^2, positive up), the same pulse scaled; kv finite, and g + kv a_g >= 0 at every
+    !> instant (checked at the ends of the monotone pieces, where a_g has its extremes).
     subroutine rock_pulse(blk, p, run, stat, errmsg, t_grid, theta_grid, omega_grid, t_max, &
-                          theta0, omega0, rtol)
+                          theta0, omega0, rtol, kv)
         type(rocking_block_t), intent(in) :: blk              !! the block
         type(pulse_t), intent(in) :: p                        !! ground acceleration pulse (SI)
         type(rocking_run_t), intent(out) :: run               !! the result
@@ -318,9 +338,11 @@ contains
         real(dp), intent(in), optional :: theta0              !! initial theta (rad), |.| < pi/2
         real(dp), intent(in), optional :: omega0              !! initial theta' (rad/s)
         real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
+        real(dp), intent(in), optional :: kv                  !! a_v/a_g (1), default 0
         type(rocking_state_t) :: st
         type(piece_iter_t) :: it
-        real(dp) :: th0, om0, no_record(0)
+        real(dp) :: th0, om0, no_record(0), a_bad, t_bad
+        logical :: bad
 
         call empty_run(run)
         call rocking_block_validate(blk, stat, errmsg)
@@ -332,7 +354,24 @@ contains
         call check_options(t_grid, theta_grid, omega_grid, t_max, theta0, omega0, rtol, &
                            th0, om0, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call setup_sim(blk, st%sys%sim, t_max, rtol)
+        if (present(kv)) then
+            if (.not. ieee_is_finite(kv)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'kv = '//real_str(kv) &
+                               //': must be a finite number (a_v = kv a_g)')
+                return
+            end if
+            call kv_floor(p, kv, blk%g, bad, a_bad, t_bad, stat, errmsg)
+            if (stat /= SEISPULSE_SUCCESS) return
+            if (bad) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'kv = '//real_str(kv) &
+                               //': the vertical acceleration kv a_g = '//real_str(a_bad) &
+                               //' m/s^2 at t = '//real_str(t_bad)//' s is below -g = ' &
+                               //real_str(-blk%g)//' m/s^2 (the block would leave the ground)')
+                return
+            end if
+        end if
+        call setup_sim(blk, st%sys%sim, t_max, rtol, kv)
+        if (present(kv)) call set_kv(st%sys%gr, kv)
         st%sys%gr%src = GR_PULSE
         st%sys%gr%p = p
         if (p%kind == PULSE_EXPONENTIAL) st%sys%gr%cexp = exp_consts(p%beta)
@@ -347,8 +386,12 @@ contains
     !> block's own blk%g sets the uplift threshold and the equation of motion; a record
     !> already in m/s^2 is one in units of g = 1 m/s^2, taken as it is). Everything else
     !> as `rock_pulse`; the step budget grows with the record (40 per sample).
+    !>
+    !> Optional vertical record `accel_v` (g, positive up; doc/rocking.md section 7): same dt
+    !> and size as accel, linear in between, 0 after the last sample, taken to m/s^2 as
+    !> g * accel_v(i); every sample must keep blk%g + g accel_v(i) >= 0.
     subroutine rock_record(blk, accel, dt, g, run, stat, errmsg, t_grid, theta_grid, &
-                           omega_grid, t_max, theta0, omega0, rtol)
+                           omega_grid, t_max, theta0, omega0, rtol, accel_v)
         type(rocking_block_t), intent(in) :: blk              !! the block
         real(dp), intent(in) :: accel(:)                      !! ground acceleration (g), finite
         real(dp), intent(in) :: dt                            !! sampling interval (s), > 0
@@ -363,10 +406,12 @@ contains
         real(dp), intent(in), optional :: theta0              !! initial theta (rad), |.| < pi/2
         real(dp), intent(in), optional :: omega0              !! initial theta' (rad/s)
         real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
+        real(dp), intent(in), optional :: accel_v(:)          !! vertical acceleration (g), finite
         type(rocking_state_t) :: st
         type(piece_iter_t) :: it
         real(dp) :: th0, om0
         real(dp), allocatable :: accel_si(:)
+        integer :: i
 
         call empty_run(run)
         call rocking_block_validate(blk, stat, errmsg)
@@ -379,7 +424,40 @@ contains
         ! the samples in m/s^2 (g = 1: the very same numbers)
         call record_in_si(accel, g, accel_si, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
+        if (present(accel_v)) then
+            if (size(accel_v) /= size(accel)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel_v: '//int_str( &
+                               size(accel_v))//' samples: must have as many as accel (' &
+                               //int_str(size(accel))//'), at the same dt')
+                return
+            end if
+            ! finite samples, far from overflow in g accel_v(i) (dt and g checked above)
+            do i = 1, size(accel_v)
+                if (.not. abs(accel_v(i)) <= 0.5_dp * (huge(g) / max(g, 1.0_dp))) then
+                    call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel_v(' &
+                                   //int_str(i)//') = '//real_str(accel_v(i)) &
+                                   //': must be a finite number (g; g = '//real_str(g) &
+                                   //' m/s^2)')
+                    return
+                end if
+            end do
+            st%acc_v = g * accel_v
+            do i = 1, size(accel_v)
+                if (st%acc_v(i) < -blk%g) then
+                    call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel_v(' &
+                                   //int_str(i)//') = '//real_str(accel_v(i))//' at t = ' &
+                                   //real_str(real(i - 1, dp) * dt)//' s: g + a_v < 0 (g = ' &
+                                   //real_str(blk%g)//' m/s^2; the block would leave the' &
+                                   //' ground)')
+                    return
+                end if
+            end do
+        end if
         call setup_sim(blk, st%sys%sim, t_max, rtol)
+        if (present(accel_v)) then
+            st%sys%gr%vsrc = V_RECORD
+            st%sys%gr%vdt = dt
+        end if
         if (real(steps_per_sample, dp) * size(accel) > real(huge(1) - max_steps_default, dp)) then
             st%sys%sim%max_steps = huge(1)
         else
@@ -402,9 +480,11 @@ contains
     !> omega_p = 2 pi f_p. `template` supplies beta and full (exponential), peak_frac
     !> (triangular) and, for the Ricker wavelet, the centre in periods, t0 f_p (default
     !> 1.5); its amplitude and time scale are ignored. Each cell stops as soon as its
-    !> class is known (at most one impact after the end of the pulse).
+    !> class is known (at most one impact after the end of the pulse). Optional vertical
+    !> ground acceleration a_v = kv a_g in every cell (doc/rocking.md section 7); a cell
+    !> whose kv a_g goes below -g is an error naming kv and its amp_ratio.
     subroutine overturning_map(alpha, e, kind, freq_ratio, amp_ratio, classes, stat, errmsg, &
-                               linearized, template, rtol)
+                               linearized, template, rtol, kv)
         real(dp), intent(in) :: alpha                         !! slenderness (rad), in (0, pi/2)
         real(dp), intent(in) :: e                             !! coefficient of restitution, [0, 1]
         integer, intent(in) :: kind                           !! PULSE_* code (not PULSE_MP)
@@ -416,13 +496,15 @@ contains
         logical, intent(in), optional :: linearized           !! Eq. 2.7 (default .false.)
         type(pulse_t), intent(in), optional :: template       !! shape parameters of the kind
         real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
+        real(dp), intent(in), optional :: kv                  !! a_v/a_g (1), default 0
         type(rocking_block_t) :: blk
         type(rocking_state_t) :: st
         type(piece_iter_t) :: it
         type(pulse_t) :: pl
         type(rocking_run_t) :: run
-        real(dp) :: no_record(0), tan_a, t0f
+        real(dp) :: no_record(0), tan_a, t0f, a_bad, t_bad
         integer :: i, j
+        logical :: bad
         character(len=24) :: idx
 
         classes = -1
@@ -474,6 +556,13 @@ contains
                 return
             end if
         end if
+        if (present(kv)) then
+            if (.not. ieee_is_finite(kv)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'kv = '//real_str(kv) &
+                               //': must be a finite number (a_v = kv a_g)')
+                return
+            end if
+        end if
         if (present(template)) pl = template
         pl%kind = kind
         t0f = 1.5_dp
@@ -483,7 +572,8 @@ contains
                            //': template%t0 * template%freq must be a finite number >= 0')
             return
         end if
-        call setup_sim(blk, st%sys%sim, rtol=rtol)
+        call setup_sim(blk, st%sys%sim, rtol=rtol, kv=kv)
+        if (present(kv)) call set_kv(st%sys%gr, kv)
         st%sys%sim%map_mode = .true.
         st%sys%sim%track = .false.
         st%sys%sim%max_steps = max_steps_map
@@ -502,6 +592,19 @@ contains
                 if (i == 1) then
                     call pulse_validate(pl, stat, errmsg)
                     if (stat /= SEISPULSE_SUCCESS) return
+                end if
+                if (st%sys%gr%vsrc /= V_NONE) then
+                    call kv_floor(pl, kv, 1.0_dp, bad, a_bad, t_bad, stat, errmsg)
+                    if (stat /= SEISPULSE_SUCCESS) return
+                    if (bad) then
+                        write(idx, '(i0)') i
+                        call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'kv = ' &
+                                       //real_str(kv)//', amp_ratio('//trim(idx)//') = ' &
+                                       //real_str(amp_ratio(i))//': kv a_g reaches ' &
+                                       //real_str(a_bad)//' g, below -g (the block would' &
+                                       //' leave the ground)')
+                        return
+                    end if
                 end if
                 st%sys%gr%src = GR_PULSE
                 st%sys%gr%p = pl
@@ -529,23 +632,35 @@ contains
     ! ------------------------------------------------------------------------------
 
     !> Settings of a run from a (valid) block.
-    subroutine setup_sim(blk, sim, t_max, rtol)
+    subroutine setup_sim(blk, sim, t_max, rtol, kv)
         type(rocking_block_t), intent(in) :: blk
         type(sim_t), intent(out) :: sim
         real(dp), intent(in), optional :: t_max
         real(dp), intent(in), optional :: rtol
+        real(dp), intent(in), optional :: kv     !! a_v = kv a_g (finite; default 0)
+        real(dp) :: k
         sim%alpha = blk%alpha
         sim%p = blk%p
         sim%p2 = blk%p * blk%p
         sim%e = blk%e
         sim%inv_g = 1.0_dp / blk%g
         sim%lin = blk%linearized
-        ! uplift at |a_g| > g tan(alpha), or g alpha in the linearized model (Eq. 2.3)
+        ! uplift at |a_g| > g tan(alpha), or g alpha in the linearized model (Eq. 2.3);
+        ! with a_v = kv a_g at a_g > g tan(alpha)/(1 - kv tan(alpha)) on side +1 and
+        ! a_g < -g tan(alpha)/(1 + kv tan(alpha)) on side -1, never where the denominator
+        ! is <= 0 (doc/rocking.md (R.11); kv = 0: the thresholds g tan(alpha) bit for bit)
         if (sim%lin) then
-            sim%thr = blk%g * blk%alpha
+            sim%tan_u = blk%alpha
         else
-            sim%thr = blk%g * tan(blk%alpha)
+            sim%tan_u = tan(blk%alpha)
         end if
+        k = 0.0_dp
+        if (present(kv)) k = kv
+        sim%thr_pos = huge(1.0_dp)
+        sim%thr_neg = huge(1.0_dp)
+        if (k * sim%tan_u < 1.0_dp) sim%thr_pos = blk%g * sim%tan_u / (1.0_dp - k * sim%tan_u)
+        if (1.0_dp + k * sim%tan_u > 0.0_dp) &
+            sim%thr_neg = blk%g * sim%tan_u / (1.0_dp + k * sim%tan_u)
         sim%rtol = rtol_default
         if (present(rtol)) sim%rtol = rtol
         sim%atol = sim%rtol * [blk%alpha, blk%p * blk%alpha]
@@ -558,6 +673,52 @@ contains
             end if
         end if
     end subroutine setup_sim
+
+    !> Vertical ground acceleration a_v = kv a_g on gr (kv = 0: none, the horizontal path).
+    pure subroutine set_kv(gr, kv)
+        type(ground_t), intent(inout) :: gr
+        real(dp), intent(in) :: kv
+        if (abs(kv) > 0.0_dp) then
+            gr%vsrc = V_SCALED
+            gr%kv = kv
+        end if
+    end subroutine set_kv
+
+    !> Does kv a_g go below -g anywhere under the (valid) pulse p? The pieces are monotone,
+    !> so a_g has its extremes at their ends (limits from inside): bad, with the lowest
+    !> kv a_g (m/s^2) and its time (s).
+    subroutine kv_floor(p, kv, g, bad, a_low, t_low, stat, errmsg)
+        type(pulse_t), intent(in) :: p
+        real(dp), intent(in) :: kv, g
+        logical, intent(out) :: bad
+        real(dp), intent(out) :: a_low, t_low
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        type(piece_iter_t) :: it
+        type(piece_t) :: piece
+        real(dp) :: no_record(0)
+        integer :: k
+        logical :: found
+        bad = .false.
+        a_low = 0.0_dp
+        t_low = 0.0_dp
+        stat = SEISPULSE_SUCCESS
+        if (.not. abs(kv) > 0.0_dp) return
+        call pulse_pieces_init(it, p)
+        do k = 1, huge(k) - 1   ! next_piece ends the list
+            call next_piece(it, no_record, 'rocking', piece, found, stat, errmsg)
+            if (stat /= SEISPULSE_SUCCESS .or. .not. found) exit
+            if (kv * piece%aa < a_low) then
+                a_low = kv * piece%aa
+                t_low = piece%ta
+            end if
+            if (kv * piece%ab < a_low) then
+                a_low = kv * piece%ab
+                t_low = piece%tb
+            end if
+        end do
+        bad = a_low < -g
+    end subroutine kv_floor
 
     !> Checks shared by rock_pulse and rock_record; th0, om0 receive the initial state.
     subroutine check_options(t_grid, theta_grid, omega_grid, t_max, theta0, omega0, rtol, &
@@ -678,7 +839,7 @@ contains
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
         type(piece_t) :: piece
-        integer :: reason, dec, k, src_saved
+        integer :: reason, dec, k, src_saved, k_step
         logical :: found
 
         stat = SEISPULSE_SUCCESS
@@ -729,11 +890,17 @@ contains
         end if
         st%sys%sa = sim%alpha * real(st%s, dp)
 
+        k_step = 0
         pieces: do
             call next_piece(it, accel, 'rocking', piece, found, stat, errmsg)
             if (stat /= SEISPULSE_SUCCESS) return
             if (.not. found) exit pieces
             call load_piece(gr, piece)
+            if (gr%vsrc == V_RECORD) then
+                ! record pieces are the sample steps, in order
+                k_step = k_step + 1
+                call load_vert(gr, st%acc_v, k_step)
+            end if
             if (st%t < piece%ta) then
                 ! no excitation before this piece (M&P window): free flight or rest
                 if (st%mode == 1) then
@@ -844,39 +1011,91 @@ contains
         type(rocking_state_t), intent(inout) :: st
         type(rocking_run_t), intent(inout) :: run
         real(dp), intent(in) :: t_stop
-        real(dp) :: a_c, a_e, lev, t_u, thr
-        integer :: dir
-        logical :: now
-        character(len=120) :: rmsg
-        associate(gr => st%sys%gr)
+        real(dp) :: a_c, a_e, lev, t_u, v_c, v_e, tu, lev_n, t_n
+        integer :: dir, dir_n
+        logical :: now, now_n
+        associate(gr => st%sys%gr, sim => st%sys%sim)
         if (gr%src == GR_ZERO) then
             call fill_rest(st, t_stop)
             st%t = t_stop
             return
         end if
-        thr = st%sys%sim%thr
         a_c = ground_accel(gr, st%t)
         a_e = gr%ab
-        call onset_on_piece(a_c, a_e, thr, thr, st%blocked, dir, lev, now)
+        t_u = st%t
+        if (gr%vsrc == V_RECORD) then
+            ! doc/rocking.md (R.10): side +1 when a_g - tan_u a_v > g tan_u, side -1 when
+            ! a_g + tan_u a_v < -g tan_u: two lines in t on a record step (never both at
+            ! once, as a_v >= -g); the earlier root when both are crossed later
+            tu = sim%tan_u
+            v_c = ground_vert(gr, st%t)
+            v_e = gr%vb
+            call onset_on_piece(a_c - tu * v_c, a_e - tu * v_e, sim%thr_pos, huge(1.0_dp), &
+                                st%blocked, dir, lev, now)
+            call onset_on_piece(a_c + tu * v_c, a_e + tu * v_e, huge(1.0_dp), sim%thr_neg, &
+                                st%blocked, dir_n, lev_n, now_n)
+            if (dir /= 0 .and. now) then
+                dir_n = 0
+            else if (dir_n /= 0 .and. now_n) then
+                dir = dir_n
+            else
+                if (dir /= 0) then
+                    call uplift_root(st, tu, lev, a_c - tu * v_c, a_e - tu * v_e, t_stop, t_u)
+                    if (st%stat /= SEISPULSE_SUCCESS) return
+                end if
+                if (dir_n /= 0) then
+                    call uplift_root(st, -tu, lev_n, a_c + tu * v_c, a_e + tu * v_e, t_stop, t_n)
+                    if (st%stat /= SEISPULSE_SUCCESS) return
+                    if (dir == 0 .or. t_n < t_u) then
+                        dir = dir_n
+                        t_u = t_n
+                    end if
+                end if
+            end if
+        else
+            call onset_on_piece(a_c, a_e, sim%thr_pos, sim%thr_neg, st%blocked, dir, lev, now)
+            if (dir /= 0 .and. .not. now) then
+                call uplift_root(st, 0.0_dp, lev, a_c, a_e, t_stop, t_u)
+                if (st%stat /= SEISPULSE_SUCCESS) return
+            end if
+        end if
         if (dir == 0) then
             call fill_rest(st, t_stop)
             st%t = t_stop
             return
         end if
-        t_u = st%t
-        if (.not. now) then
-            gr%level = lev
-            rmsg = ''
-            call find_root(gr, st%t, t_stop, t_u, st%stat, rmsg, fa_known=a_c - lev, &
-                           fb_known=a_e - lev)
-            if (st%stat /= SEISPULSE_SUCCESS) then
-                st%msg = 'rocking: uplift location failed after t = '//real_str(st%t)//': ' &
-                         //trim(rmsg)//' (a bug)'
-                st%stat = SEISPULSE_INTERNAL
-                return
-            end if
-            t_u = min(max(t_u, st%t), t_stop)
+        call start_flight(st, run, t_u, dir)
+        end associate
+    end subroutine rest_scan
+
+    !> Uplift on a monotone piece: the root in [st%t, t_stop] of a_g - tu a_v - lev (Brent;
+    !> tu = 0 without a vertical record, else +-tan_u), fa and fb the values of a_g - tu a_v
+    !> at the ends.
+    subroutine uplift_root(st, tu, lev, fa, fb, t_stop, t_u)
+        type(rocking_state_t), intent(inout) :: st
+        real(dp), intent(in) :: tu, lev, fa, fb, t_stop
+        real(dp), intent(out) :: t_u
+        character(len=120) :: rmsg
+        st%sys%gr%level = lev
+        st%sys%gr%vmix = -tu
+        rmsg = ''
+        call find_root(st%sys%gr, st%t, t_stop, t_u, st%stat, rmsg, fa_known=fa - lev, &
+                       fb_known=fb - lev)
+        if (st%stat /= SEISPULSE_SUCCESS) then
+            st%msg = 'rocking: uplift location failed after t = '//real_str(st%t)//': ' &
+                     //trim(rmsg)//' (a bug)'
+            st%stat = SEISPULSE_INTERNAL
+            return
         end if
+        t_u = min(max(t_u, st%t), t_stop)
+    end subroutine uplift_root
+
+    !> The block at rest uplifts at t_u on side dir (or the run reaches its limit first).
+    subroutine start_flight(st, run, t_u, dir)
+        type(rocking_state_t), intent(inout) :: st
+        type(rocking_run_t), intent(inout) :: run
+        real(dp), intent(in) :: t_u
+        integer, intent(in) :: dir
         if (t_u > st%t_lim) then
             call fill_rest(st, st%t_lim)
             st%t = st%t_lim
@@ -894,8 +1113,7 @@ contains
             st%ever_up = .true.
             run%t_uplift = t_u
         end if
-        end associate
-    end subroutine rest_scan
+    end subroutine start_flight
 
     !> Integrate the flight from (t, y) on side s up to t_stop, handling impacts
     !> (restitution, rest), the outward crossings of alpha and |theta| = pi/2.
@@ -1299,14 +1517,29 @@ contains
         real(dp), intent(in) :: t
         real(dp), contiguous, intent(in) :: y(:)
         real(dp), contiguous, intent(out) :: dydt(:)
-        real(dp) :: a, phi, f(2)
+        real(dp) :: a, phi, gv, f(2)
         a = ground_accel(self%gr, t) * self%sim%inv_g
         f(1) = y(2)
-        if (self%sim%lin) then
-            f(2) = self%sim%p2 * (y(1) + a - self%sa)
+        if (self%gr%vsrc == V_NONE) then
+            if (self%sim%lin) then
+                f(2) = self%sim%p2 * (y(1) + a - self%sa)
+            else
+                phi = self%sa - y(1)
+                f(2) = -self%sim%p2 * (sin(phi) - a * cos(phi))
+            end if
         else
-            phi = self%sa - y(1)
-            f(2) = -self%sim%p2 * (sin(phi) - a * cos(phi))
+            ! gravity g + a_v: doc/rocking.md (R.9); gv = 1 gives the lines above bit for bit
+            if (self%gr%vsrc == V_SCALED) then
+                gv = 1.0_dp + self%gr%kv * a
+            else
+                gv = 1.0_dp + ground_vert(self%gr, t) * self%sim%inv_g
+            end if
+            if (self%sim%lin) then
+                f(2) = self%sim%p2 * (gv * y(1) + a - gv * self%sa)
+            else
+                phi = self%sa - y(1)
+                f(2) = -self%sim%p2 * (gv * sin(phi) - a * cos(phi))
+            end if
         end if
         dydt(1:2) = f   ! one store: the integrator reads the pair at once
     end subroutine flight_ode_rhs
@@ -1338,6 +1571,37 @@ contains
         end select
     end function ground_accel
 
+    !> Vertical ground acceleration a_v (m/s^2, positive up) at t on the current piece
+    !> (doc/rocking.md section 7); 0 once the excitation is over.
+    pure function ground_vert(gr, t) result(a)
+        type(ground_t), intent(in) :: gr
+        real(dp), intent(in) :: t
+        real(dp) :: a
+        a = 0.0_dp
+        if (gr%src == GR_ZERO) return
+        select case (gr%vsrc)
+        case (V_SCALED)
+            a = gr%kv * ground_accel(gr, t)
+        case (V_RECORD)
+            if (t >= gr%tb) then
+                a = gr%vb
+            else
+                a = gr%v0 + gr%vslope * (t - gr%ta)
+            end if
+        end select
+    end function ground_vert
+
+    !> Record step k (from t = (k - 1) dt to k dt) of the vertical record acc_v (m/s^2):
+    !> the line v0 + vslope (t - ta), vb at the end, as the horizontal of `load_piece`.
+    pure subroutine load_vert(gr, acc_v, k)
+        type(ground_t), intent(inout) :: gr
+        real(dp), intent(in) :: acc_v(:)
+        integer, intent(in) :: k
+        gr%v0 = acc_v(k)
+        gr%vb = acc_v(k + 1)
+        gr%vslope = (gr%vb - gr%v0) / gr%vdt
+    end subroutine load_vert
+
     !> Make a piece of seispulse_pieces the current piece of gr: from its end on, a_g is
     !> the limit from inside, ab; a record step is the line aa + slope (t - ta).
     pure subroutine load_piece(gr, piece)
@@ -1356,7 +1620,12 @@ contains
         class(ground_t), intent(inout) :: self
         real(dp), intent(in) :: x
         real(dp) :: y
-        y = ground_accel(self, x) - self%level
+        if (self%vsrc == V_RECORD) then
+            ! uplift function s a_g - (g + a_v) tan(alpha) up to a constant: doc/rocking.md (R.10)
+            y = ground_accel(self, x) + self%vmix * ground_vert(self, x) - self%level
+        else
+            y = ground_accel(self, x) - self%level
+        end if
     end function ground_eval
 
 end module seispulse_rocking_sim
