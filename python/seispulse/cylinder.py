@@ -15,7 +15,6 @@ the body's J_o, p and restitution): :func:`simulate` returns its
 module checks, broadcasts and names.
 """
 
-import inspect
 from collections import namedtuple
 
 import numpy as np
@@ -224,29 +223,22 @@ def rocking_block(body, e=None, linearized=False):
     return rocking.Block(float(alpha), float(p), float(e_out), body.g, body.R)
 
 
-_VERTICAL = ("kv", "accel_v")
-
-
 def simulate(body, pulse=None, *, accel=None, dt=None, t_max=None, t=None, e=None,
-             linearized=False, theta0=0.0, omega0=0.0, rtol=1e-12, **vertical):
+             linearized=False, theta0=0.0, omega0=0.0, rtol=1e-12, kv=0.0, accel_v=None):
     """Planar rocking of a body on a rigid base under a pulse (from
     :func:`seispulse.pulse.define`, SI) or a sampled horizontal ground acceleration accel
     (m/s^2, as :func:`seispulse.rocking.simulate`; not g) at t = i dt (s): Housner's
     equations with the body's J_o (through p) and restitution (e overrides it), impacts at
     theta = 0, overturning at |theta| = pi/2. t (s): output times for theta(t), omega(t);
-    t_max (s), theta0 (rad), omega0 (rad/s), rtol as in rocking.simulate; kv, accel_v (the
-    vertical excitation) are passed on to it when it has them. Returns
+    t_max (s), theta0 (rad), omega0 (rad/s), rtol as in rocking.simulate. Vertical ground
+    acceleration (positive up): kv scales a pulse (a_v = kv a_g), accel_v is a vertical
+    record in m/s^2 with accel (as rocking.simulate). Returns
     :class:`seispulse.rocking.RockingRun`, exactly as rocking.simulate does for the block
     :func:`rocking_block` (body, e, linearized)."""
-    unknown = sorted(set(vertical) - set(_VERTICAL))
-    if unknown:
-        raise InvalidInputError(f"{', '.join(unknown)}: unknown argument(s) of simulate")
-    if vertical and not set(vertical) <= set(inspect.signature(rocking.simulate).parameters):
-        raise InvalidInputError(f"{', '.join(sorted(vertical))}: this build's "
-                                "seispulse.rocking.simulate has no vertical excitation")
     block = rocking_block(body, e=e, linearized=linearized)
     return rocking.simulate(block, pulse, accel=accel, dt=dt, linearized=linearized, t=t,
-                            t_max=t_max, theta0=theta0, omega0=omega0, rtol=rtol, **vertical)
+                            t_max=t_max, theta0=theta0, omega0=omega0, rtol=rtol, kv=kv,
+                            accel_v=accel_v)
 
 
 # ------------------------------------------------------------------ overturning maps

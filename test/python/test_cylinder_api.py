@@ -170,6 +170,31 @@ def test_custom_body_equals_rocking_block():
     assert C.rocking_block(body).p == pytest.approx(blk.p, rel=1e-14)
 
 
+def test_vertical_excitation_is_passed_on():
+    """kv and accel_v reach rocking.simulate: the same run as its block's, and an upward
+    vertical acceleration kv a_g (gravity g + kv a_g) delays the uplift under a one-sine
+    pulse to a_g (1 - kv tan(theta_c)) = g tan(theta_c)."""
+    body = C.props(0.25, 1.0, mass=10.0)
+    pulse = P.define("sine_cycle", amp=0.5, amp_unit="g", period=1.0)
+    blk = C.rocking_block(body)
+    for kv in (0.0, 0.4):
+        ours = C.simulate(body, pulse, kv=kv, t_max=5.0)
+        ref = R.simulate(blk, pulse, kv=kv, t_max=5.0)
+        assert (ours.outcome, ours.t_uplift, ours.theta_max, ours.t_end) == \
+            (ref.outcome, ref.t_uplift, ref.theta_max, ref.t_end)
+    tan_c = 0.25
+    t_up = math.asin(tan_c / (1 - 0.4 * tan_c) / 0.5) / (2 * math.pi)
+    assert C.simulate(body, pulse, kv=0.4, t_max=5.0).t_uplift == pytest.approx(t_up, rel=1e-9)
+    dt = 0.01
+    tt = np.arange(200) * dt
+    acc = 0.5 * G * np.sin(2 * np.pi * tt)
+    acc[100:] = 0.0
+    ours = C.simulate(body, accel=acc, dt=dt, accel_v=0.4 * acc, t_max=5.0)
+    ref = R.simulate(blk, accel=acc, dt=dt, accel_v=0.4 * acc, t_max=5.0)
+    assert ours.t_uplift == ref.t_uplift and ours.theta_max == ref.theta_max
+    assert ours.t_uplift > C.simulate(body, accel=acc, dt=dt, t_max=5.0).t_uplift
+
+
 def test_free_rocking_period_housner():
     """e = 1, linearized: theta = alpha - (alpha - theta0) cosh(p t) until the impact, so
     impacts come every T/2 = (2/p) acosh(1/(1 - theta0/alpha)) with the cylinder's p."""
@@ -387,8 +412,8 @@ def test_bad_input():
         C.simulate(body, pulse, e=1.5)
     with pytest.raises(InvalidInputError, match="body"):
         C.simulate(R.rectangular_block(0.3, 1.2), pulse)
-    with pytest.raises(InvalidInputError, match="foo"):
-        C.simulate(body, pulse, foo=1.0)
+    with pytest.raises(InvalidInputError, match="kv"):
+        C.simulate(body, accel=np.zeros(3), dt=0.01, kv=0.5)
     with pytest.raises(InvalidInputError, match="axes"):
         C.overturning_map(body, "sine_cycle", [1.0], [1.0], axes="hz")
     with pytest.raises(InvalidInputError, match="axes"):
