@@ -144,7 +144,10 @@ def _check_body(body, name="body"):
 def _body_args(body, name="body"):
     """The defining numbers of a body for the wrappers (see _wrap_cylinder.f90)."""
     _check_body(body, name)
-    code = {v: k for k, v in SHAPES.items()}[body.shape]
+    code = {v: k for k, v in SHAPES.items()}.get(body.shape)
+    if code is None:
+        raise InvalidInputError(f"{name}.shape = {body.shape!r}: unknown (allowed: "
+                                f"{', '.join(map(repr, SHAPES.values()))})")
     has_axis = code == _f.BODY_CUSTOM and not np.isnan(body.J_axis)
     return (code, body.r, body.h, body.mass, body.g, body.r_inner,
             body.J_o if code == _f.BODY_CUSTOM else 0.0, int(has_axis),
@@ -351,7 +354,8 @@ def thresholds_side_by_side(body, kind, freq_hz, alpha=None, pga_max_g=None, n_s
                             shape)
     blk, up_b = _thresholds(block, kind, freq_hz, pga_max_g, n_scan, None, linearized, rtol,
                             shape)
-    return Thresholds(freq_hz, cyl, blk, up_c, up_b, block)
+    f = _core.as_float_array("freq_hz", freq_hz)
+    return Thresholds(float(f) if f.ndim == 0 else f, cyl, blk, up_c, up_b, block)
 
 
 # ------------------------------------------------------------------ plots

@@ -430,6 +430,10 @@ def test_bad_input():
         C.equivalent_cylinder(body)
     with pytest.raises(InvalidInputError, match="n_scan"):
         C.overturning_threshold(body, "sine_cycle", 1.0, n_scan=2.5)
+    with pytest.raises(InvalidInputError, match="shape"):
+        C.simulate(body._replace(shape="cone"), pulse)
+    with pytest.raises(InvalidInputError, match="^e "):
+        C.simulate(body._replace(restitution=1.2), pulse)
     with pytest.raises(InvalidInputError, match="linearized"):
         C.overturning_map(body, "sine_cycle", [1.0], [1.0], linearized="yes")
 
