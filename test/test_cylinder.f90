@@ -699,6 +699,21 @@ contains
         ! a higher frequency needs a larger PGA
         call check(error, pga(2) > pga(1), 'threshold grows with frequency')
         if (allocated(error)) return
+        ! the linearized model with e = 0.5 (both options reach the runs)
+        call overturning_threshold(c, PULSE_SINE_CYCLE, f(1:1), pga(1:1), stat, msg, e=0.5_dp, &
+                                   linearized=.true.)
+        call check(error, stat, SEISPULSE_SUCCESS, 'linearized threshold '//trim(msg))
+        if (allocated(error)) return
+        call body_rocking_block(c, blk, stat, msg, e=0.5_dp, linearized=.true.)
+        call check(error, blk%linearized .and. abs(blk%e - 0.5_dp) <= 0.0_dp, 'options kept')
+        if (allocated(error)) return
+        call rock_pulse(blk, sine_cycle_pulse(pga(1) * g0, 1.0_dp / f(1)), run, stat, msg)
+        call check(error, overturned(run), 'linearized: the threshold PGA overturns')
+        if (allocated(error)) return
+        a = pga(1) * (1.0_dp - 1.0e-5_dp)
+        call rock_pulse(blk, sine_cycle_pulse(a * g0, 1.0_dp / f(1)), run, stat, msg)
+        call check(error, .not. overturned(run), 'linearized: PGA (1 - 1e-5) does not')
+        if (allocated(error)) return
         call overturning_threshold(c, PULSE_SINE_CYCLE, f(1:1), pga(1:1), stat, msg, &
                                    pga_max_g=1.05_dp * tan(c%theta_c), n_scan=5)
         call check(error, stat, SEISPULSE_SUCCESS, 'low top '//trim(msg))
