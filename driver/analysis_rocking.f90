@@ -14,7 +14,7 @@
 module driver_rocking
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan, &
-                                             ieee_positive_inf
+                                             ieee_positive_inf, ieee_is_finite
     use seispulse, only: dp, pulse_t, pulse_validate, pulse_eval, pulse_kind_name, &
                          pulse_kind_from_name, SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, &
                          PULSE_RECTANGULAR, PULSE_TRIANGULAR, PULSE_RICKER, PULSE_MP, real_str, &
@@ -261,7 +261,7 @@ contains
             errmsg = where//'rtol = '//real_str(rtol)//': must be in [1e-14, 1e-3]'
             return
         end if
-        if (.not. abs(kv) <= huge(kv)) then
+        if (.not. ieee_is_finite(kv)) then
             errmsg = where//'kv = '//real_str(kv)//': must be a finite number (vertical ' &
                      //'ground acceleration a_v = kv a_g)'
             return

@@ -181,11 +181,25 @@ module seispulse_rocking_sim
         procedure :: eval => ground_eval
     end type ground_t
 
+    abstract interface
+        !> theta'' of a flight with a vertical component (flight_vert_rhs).
+        subroutine vert_rhs_iface(sim, gr, sa, t, theta, acc)
+            import :: dp, sim_t, ground_t
+            type(sim_t), intent(in) :: sim
+            type(ground_t), intent(in) :: gr
+            real(dp), intent(in) :: sa, t, theta
+            real(dp), intent(out) :: acc
+        end subroutine vert_rhs_iface
+    end interface
+
     !> The flight of the block as a system of seispulse_ode: (theta, theta') on side s.
     type, extends(ode_system) :: flight_ode_t
         type(sim_t) :: sim                 !! settings of the run
         type(ground_t) :: gr               !! ground acceleration on the current piece
         real(dp) :: sa = 0.0_dp            !! alpha s, s = +-1 the side (0 at rest)
+        !> the right-hand side with a vertical component, called through a pointer so that
+        !> the horizontal-only lines of flight_ode_rhs compile as they would without it
+        procedure(vert_rhs_iface), pointer, nopass :: vert_rhs => flight_vert_rhs
     contains
         procedure :: rhs => flight_ode_rhs
     end type flight_ode_t
@@ -412,6 +426,7 @@ contains
         real(dp) :: th0, om0
         real(dp), allocatable :: accel_si(:)
         integer :: i
+        logical :: bad
 
         call empty_run(run)
         call rocking_block_validate(blk, stat, errmsg)
@@ -433,7 +448,9 @@ contains
             end if
             ! finite samples, far from overflow in g accel_v(i) (dt and g checked above)
             do i = 1, size(accel_v)
-                if (.not. abs(accel_v(i)) <= 0.5_dp * (huge(g) / max(g, 1.0_dp))) then
+                bad = .not. ieee_is_finite(accel_v(i))   ! NaN-safe: no comparison with NaN
+                if (.not. bad) bad = abs(accel_v(i)) > 0.5_dp * (huge(g) / max(g, 1.0_dp))
+                if (bad) then
                     call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel_v(' &
                                    //int_str(i)//') = '//real_str(accel_v(i)) &
                                    //': must be a finite number (g; g = '//real_str(g) &
@@ -1517,32 +1534,48 @@ contains
         real(dp), intent(in) :: t
         real(dp), contiguous, intent(in) :: y(:)
         real(dp), contiguous, intent(out) :: dydt(:)
-        real(dp) :: a, phi, gv, f(2)
+        real(dp) :: a, phi, f(2)
+        if (self%gr%vsrc /= V_NONE) then
+            ! with a vertical component (apart: the lines below stay as they were)
+            f(1) = y(2)
+            call self%vert_rhs(self%sim, self%gr, self%sa, t, y(1), f(2))
+            dydt(1:2) = f
+            return
+        end if
         a = ground_accel(self%gr, t) * self%sim%inv_g
         f(1) = y(2)
-        if (self%gr%vsrc == V_NONE) then
-            if (self%sim%lin) then
-                f(2) = self%sim%p2 * (y(1) + a - self%sa)
-            else
-                phi = self%sa - y(1)
-                f(2) = -self%sim%p2 * (sin(phi) - a * cos(phi))
-            end if
+        if (self%sim%lin) then
+            f(2) = self%sim%p2 * (y(1) + a - self%sa)
         else
-            ! gravity g + a_v: doc/rocking.md (R.9); gv = 1 gives the lines above bit for bit
-            if (self%gr%vsrc == V_SCALED) then
-                gv = 1.0_dp + self%gr%kv * a
-            else
-                gv = 1.0_dp + ground_vert(self%gr, t) * self%sim%inv_g
-            end if
-            if (self%sim%lin) then
-                f(2) = self%sim%p2 * (gv * y(1) + a - gv * self%sa)
-            else
-                phi = self%sa - y(1)
-                f(2) = -self%sim%p2 * (gv * sin(phi) - a * cos(phi))
-            end if
+            phi = self%sa - y(1)
+            f(2) = -self%sim%p2 * (sin(phi) - a * cos(phi))
         end if
         dydt(1:2) = f   ! one store: the integrator reads the pair at once
     end subroutine flight_ode_rhs
+
+    !> theta'' (rad/s^2) with gravity g + a_v (doc/rocking.md (R.9)): flight_ode_rhs with a
+    !> vertical component (gv = 1 gives its horizontal-only lines bit for bit).
+    subroutine flight_vert_rhs(sim, gr, sa, t, theta, acc)
+        type(sim_t), intent(in) :: sim             !! settings of the run
+        type(ground_t), intent(in) :: gr           !! ground on the current piece
+        real(dp), intent(in) :: sa                 !! alpha s
+        real(dp), intent(in) :: t                  !! time (s)
+        real(dp), intent(in) :: theta              !! rotation (rad)
+        real(dp), intent(out) :: acc               !! theta''
+        real(dp) :: a, gv, phi
+        a = ground_accel(gr, t) * sim%inv_g
+        if (gr%vsrc == V_SCALED) then
+            gv = 1.0_dp + gr%kv * a
+        else
+            gv = 1.0_dp + ground_vert(gr, t) * sim%inv_g
+        end if
+        if (sim%lin) then
+            acc = sim%p2 * (gv * theta + a - gv * sa)
+        else
+            phi = sa - theta
+            acc = -sim%p2 * (gv * sin(phi) - a * cos(phi))
+        end if
+    end subroutine flight_vert_rhs
 
     ! ------------------------------------------------------------------------------
     ! Ground acceleration
