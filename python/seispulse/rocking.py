@@ -375,20 +375,30 @@ def _template_params(kind, shape):
     return {"amp": 1.0, "duration": 1.0}
 
 
+#: Colour of each class of :data:`MAP_CLASSES` in the plots of overturning maps.
+_MAP_COLOURS = ("#f0f0f0", "#d7301f", "#fc8d59", "#fdcc8a")
+
+
+def _draw_classes(ax, classes, x, y):
+    """The cells of a class map on ax in the colours of _MAP_COLOURS (shared with
+    seispulse.cylinder; the caller has imported matplotlib)."""
+    from matplotlib.colors import ListedColormap
+    return ax.pcolormesh(np.asarray(x), np.asarray(y), np.asarray(classes),
+                         cmap=ListedColormap(list(_MAP_COLOURS)), vmin=-0.5, vmax=3.5,
+                         shading="nearest")
+
+
 def plot_overturning_map(classes, freq_ratio, amp_ratio, ax=None, title=None):
     """Draw a map of :func:`overturning_map` with matplotlib (an optional dependency):
     one colour per class over (omega_p/p, a_p/(g tan alpha)). Returns the axes."""
     try:
         import matplotlib.pyplot as plt
-        from matplotlib.colors import ListedColormap
     except ImportError as exc:  # optional
         raise ImportError("plot_overturning_map needs matplotlib (pip install matplotlib)") \
             from exc
     if ax is None:
         _, ax = plt.subplots()
-    cmap = ListedColormap(["#f0f0f0", "#d7301f", "#fc8d59", "#fdcc8a"])
-    mesh = ax.pcolormesh(np.asarray(freq_ratio), np.asarray(amp_ratio), np.asarray(classes),
-                         cmap=cmap, vmin=-0.5, vmax=3.5, shading="nearest")
+    mesh = _draw_classes(ax, classes, freq_ratio, amp_ratio)
     bar = ax.figure.colorbar(mesh, ax=ax, ticks=range(4))
     bar.ax.set_yticklabels(MAP_CLASSES)
     ax.set_xlabel("omega_p / p")
