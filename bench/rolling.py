@@ -16,12 +16,10 @@ usage: PYTHONPATH=build/python python3 bench/rolling.py [--runs R]  (scipy for t
 """
 import argparse
 import time
-from types import SimpleNamespace
-
 import numpy as np
 
-from seispulse import pulse
-from seispulse._cylinder_roll import roll
+from seispulse import cylinder, pulse
+from seispulse.cylinder import roll
 from timing import median_time
 
 try:
@@ -92,7 +90,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", type=int, default=7)
     args = parser.parse_args()
-    body = SimpleNamespace(r=R, h=H, mass=M, g=G, j_g=A, j_axis=C, e=E)
+    body = cylinder.props(R, H, M, g=G)
     shaking = pulse.define("sine_cycle", amp=PGA, period=PERIOD, cycles=CYCLES)
     t_out = np.linspace(0.0, 20.0, 2001)
     kw = dict(theta0=STATE0[0], psi0=STATE0[1], spin0=STATE0[2], theta_rate0=STATE0[3],

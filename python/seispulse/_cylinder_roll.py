@@ -55,37 +55,28 @@ the forces are NaN; after a time limit everything is NaN."""
 _NIMP = 1024
 
 
-def _body_scalars(body):
-    """r, h, mass, g, j_g, j_axis, e of any object that has them (duck typing)."""
-    values = []
-    for name in ("r", "h", "mass", "g", "j_g", "j_axis", "e"):
-        if not hasattr(body, name):
-            raise InvalidInputError(f"body: needs the attribute {name} (e.g. the result of "
-                                    "seispulse.cylinder.props)")
-        values.append(_core.as_scalar(f"body.{name}", getattr(body, name)))
-    return values
-
-
 def roll(body, pulse=None, *, accel_x=None, accel_y=None, dt=None, direction_deg=0.0,
          theta0=0.0, psi0=0.0, spin0=0.0, theta_rate0=0.0, psi_rate0=0.0, spin_rate0=0.0,
          e=None, t=None, t_max=None, rtol=1e-10):
-    """Rocking with rolling of `body` (any object with r, h (m: base radius and height of
-    the centre of mass), mass (kg), g (m/s^2), j_g, j_axis (kg m^2: about the centre of
-    mass, transverse, and about the axis) and e; e.g. seispulse.cylinder.props).
+    """Rocking with rolling of `body`, a cylinder of :func:`seispulse.cylinder.props` (solid,
+    hollow, or custom with j_axis given: the model needs the moment of inertia about the
+    axis).
 
     Excitation: a pulse (:func:`seispulse.pulse.define`, SI) along the horizontal
     direction `direction_deg` (degrees from x), or a record of two components accel_x,
     accel_y (in g = body.g, sampled at dt s, linear in between, 0 after), or none (free
     rocking from the initial state). Initial state at t = 0: theta0 in [0, pi/2) (rad),
     psi0, spin0 (rad) and the rates (rad/s); from rest the body uplifts when |a_g| >
-    g tan(theta_c), its rocking plane along a_g. e: restitution (default body.e).
+    g tan(theta_c), its rocking plane along a_g. e: restitution in [0, 1] (default body.restitution).
 
     t: output times (s, ascending); default 1001 points on [0, t_max]. t_max: end of the
     run (s; default the last output time). rtol: step tolerance in [1e-14, 1e-3].
     Returns :class:`RollRun`.
     """
-    r, h, mass, g, j_g, j_axis, e_body = _body_scalars(body)
-    e_run = e_body if e is None else _core.as_scalar("e", e)
+    from .cylinder import _body_args   # seispulse.cylinder imports this module
+    args = _body_args(body)
+    e_run = body.restitution if e is None else _core.as_scalar("e", e)
+    g = body.g
     rec_given = accel_x is not None or accel_y is not None
     if pulse is not None and rec_given:
         raise InvalidInputError("pulse, accel_x: give a pulse or a record, not both")
@@ -125,7 +116,7 @@ def roll(body, pulse=None, *, accel_x=None, accel_y=None, dt=None, direction_deg
     rtol = _core.as_scalar("rtol", rtol)
     nimp = _NIMP
     for _ in range(2):
-        out = sp_cylinder_roll(r, h, mass, g, j_g, j_axis, e_run, kind, params, direction,
+        out = sp_cylinder_roll(*args, e_run, kind, params, direction,
                                ax, ay, step, g, *state, int(limit), t_lim, rtol, grid, nimp)
         (hist, t_imp, n_imp, n_floor, outcome, t_uplift, theta_max, friction_max, t_lift_off,
          energy_drift, t_end, n_steps, stat, msg) = out

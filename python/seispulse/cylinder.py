@@ -34,7 +34,8 @@ __all__ = ["SHAPES", "Body", "props", "block_props", "equivalent_cylinder",
            "rocking_block", "simulate", "MAP_AXES", "MAP_CLASSES", "MAP_DIFF",
            "overturning_map", "map_difference", "BlockComparison", "compare_with_block",
            "overturning_threshold", "Thresholds", "thresholds_side_by_side",
-           "plot_overturning_map", "plot_history", "RockingRun"]
+           "plot_overturning_map", "plot_history", "RockingRun", "roll", "RollRun",
+           "ROLL_OUTCOMES", "ROLL_COLUMNS", "plot_roll"]
 
 #: Names of the body shapes, by Fortran code (BODY_*).
 SHAPES = {_f.BODY_SOLID_CYLINDER: "solid_cylinder", _f.BODY_HOLLOW_CYLINDER: "hollow_cylinder",
@@ -419,3 +420,6 @@ def plot_history(run, body=None, ax=None, title=None):
     ax.set_title(title or f"outcome: {run.outcome}")
     return ax
 
+
+# 3-D rocking with rolling on the base rim (doc/rolling.md): its own module, re-exported here
+from ._cylinder_roll import ROLL_COLUMNS, ROLL_OUTCOMES, RollRun, plot_roll, roll  # noqa: E402
