@@ -211,8 +211,8 @@ end subroutine sp_cyl_rigid_pushover
 !> Overturning map of a body under a pulse family (template packed as in pulse_from_params)
 !> on the axes MAP_AXES_*: classes(i, j) for y(i), x(j). e when has_e /= 0.
 subroutine sp_body_overturning_map(shape, r, h, mass, g, r_inner, j_o, has_j_axis, j_axis, &
-                                   kind, params, axes, linearized, has_e, e, rtol, nx, x, ny, &
-                                   y, classes, stat, errmsg)
+                                   kind, params, axes, linearized, has_e, e, rtol, kv, nx, x, &
+                                   ny, y, classes, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_pulses, only: pulse_from_params, PULSE_NPARAM
@@ -222,7 +222,7 @@ subroutine sp_body_overturning_map(shape, r, h, mass, g, r_inner, j_o, has_j_axi
     !f2py intent(hide) :: nx, ny
     integer, intent(in) :: shape, has_j_axis, kind, axes, linearized, has_e, nx, ny
     real(dp), intent(in) :: r, h, mass, g, r_inner, j_o, j_axis, params(PULSE_NPARAM), e, rtol
-    real(dp), intent(in) :: x(nx), y(ny)
+    real(dp), intent(in) :: kv, x(nx), y(ny)
     integer, intent(out) :: classes(ny, nx)
     integer, intent(out) :: stat
     character(len=256), intent(out) :: errmsg
@@ -235,7 +235,7 @@ subroutine sp_body_overturning_map(shape, r, h, mass, g, r_inner, j_o, has_j_axi
     if (has_e /= 0) allocate(e_opt, source=e)
     call body_overturning_map(body, kind, x, y, axes, classes, stat, errmsg, &
                               template=pulse_from_params(kind, params), &
-                              linearized=linearized /= 0, e=e_opt, rtol=rtol)
+                              linearized=linearized /= 0, e=e_opt, rtol=rtol, kv=kv)
 end subroutine sp_body_overturning_map
 
 !> Cell-by-cell comparison of two class maps of equal shape (MAP_DIFF_* codes).

@@ -238,7 +238,9 @@ def simulate(body, pulse=None, *, accel=None, dt=None, t_max=None, t=None, e=Non
     acceleration (positive up): kv scales a pulse (a_v = kv a_g), accel_v is a vertical
     record in m/s^2 with accel (as rocking.simulate). Returns
     :class:`seispulse.rocking.RockingRun`, exactly as rocking.simulate does for the block
-    :func:`rocking_block` (body, e, linearized)."""
+    :func:`rocking_block` (body, e, linearized). The body's g sets the uplift threshold and
+    the equation of motion; a pulse defined with amp_unit='g' was converted with its own g
+    (seispulse.pulse.STANDARD_GRAVITY unless given): use the same g for both."""
     block = rocking_block(body, e=e, linearized=linearized)
     return rocking.simulate(block, pulse, accel=accel, dt=dt, linearized=linearized, t=t,
                             t_max=t_max, theta0=theta0, omega0=omega0, rtol=rtol, kv=kv,
@@ -256,18 +258,25 @@ def _e_args(e):
 
 
 def _vector(name, x):
-    return np.ascontiguousarray(_core.as_float_array(name, x).reshape(-1))
+    """A 1-d axis of a map (a 2-d meshgrid is refused: the map makes the grid itself)."""
+    v = _core.as_float_array(name, x)
+    if v.ndim > 1:
+        raise InvalidInputError(f"{name}: must be a 1-d list of axis values (got shape "
+                                f"{v.shape}); the map forms the grid of x and y itself")
+    return np.ascontiguousarray(v.reshape(-1))
 
 
 def overturning_map(body, kind, x, y, axes="dimensionless", e=None, linearized=False,
-                    rtol=1e-12, **shape):
+                    rtol=1e-12, kv=0.0, **shape):
     """Overturning map of a body under a pulse family (kind as in
     :func:`seispulse.rocking.overturning_map`; shape: beta, full, peak_frac, t0_periods) on
     either axis system: axes='dimensionless', x = omega_p/p, y = a_p/(g tan theta_c); or
     axes='dimensional', x = pulse frequency f_p = omega_p/(2 pi) (Hz), y = PGA (g). Returns
     the classes, an int array of shape (len(y), len(x)): 0 safe, 1 overturns without
     impact, 2 after one impact, 3 after more (:data:`MAP_CLASSES`). e defaults to
-    body.restitution; rtol: the integrator's step tolerance."""
+    body.restitution; rtol: the integrator's step tolerance; kv: vertical ground
+    acceleration a_v = kv a_g in every cell (doc/rocking.md section 7; a cell where a_v
+    would fall below -g is an error)."""
     axes_code = _core.choice_code("axes", axes, MAP_AXES)
     linearized = _core.check_bool("linearized", linearized)
     tpl = _template(kind, shape)
@@ -275,7 +284,8 @@ def overturning_map(body, kind, x, y, axes="dimensionless", e=None, linearized=F
     has_e, ee = _e_args(e)
     classes, stat, msg = sp_body_overturning_map(
         *_body_args(body), tpl.code, tpl.params, axes_code, int(linearized), has_e, ee,
-        _core.as_scalar("rtol", rtol), _vector("x", x), _vector("y", y))
+        _core.as_scalar("rtol", rtol), _core.as_scalar("kv", kv), _vector("x", x),
+        _vector("y", y))
     _core.raise_for_status(stat, msg, indexed=("x", "y"))
     return np.array(classes)
 
@@ -290,24 +300,28 @@ def map_difference(a, b):
         raise InvalidInputError(f"a, b: must be 2-d maps of the same shape (got {ma.shape} "
                                 f"and {mb.shape})")
     for name, m in (("a", ma), ("b", mb)):
-        if np.any(m != np.round(m)):
-            raise InvalidInputError(f"{name}: must hold the integer classes of a map")
+        bad = np.flatnonzero(~((m == np.round(m)) & (m >= -1) & (m <= 3)))
+        if bad.size:
+            where = np.unravel_index(bad[0], m.shape)
+            raise InvalidInputError(f"{name}[{where[0]}, {where[1]}] = {float(m[where])!r}: must be "
+                                    "a class of a map, an integer in [-1, 3]")
     diff, stat, msg = sp_map_difference(ma.astype(np.int32), mb.astype(np.int32))
     _core.raise_for_status(stat, msg)
     return np.array(diff)
 
 
 def compare_with_block(body, kind, f_hz, pga_g, alpha=None, linearized=False, rtol=1e-12,
-                       **shape):
+                       kv=0.0, **shape):
     """The body's overturning map, its equivalent block's (:func:`equivalent_block`, same p
     and M_max, slenderness alpha, default theta_c) and their :func:`map_difference`, on
     the same grid of pulse frequencies f_hz (Hz) and PGA pga_g (g); each body with its own
-    restitution. Returns :class:`BlockComparison`."""
+    restitution; kv: vertical ground acceleration a_v = kv a_g as in
+    :func:`overturning_map`. Returns :class:`BlockComparison`."""
     block = equivalent_block(body, alpha)
     cyl_map = overturning_map(body, kind, f_hz, pga_g, "dimensional", linearized=linearized,
-                              rtol=rtol, **shape)
+                              rtol=rtol, kv=kv, **shape)
     blk_map = overturning_map(block, kind, f_hz, pga_g, "dimensional", linearized=linearized,
-                              rtol=rtol, **shape)
+                              rtol=rtol, kv=kv, **shape)
     return BlockComparison(block, cyl_map, blk_map, map_difference(cyl_map, blk_map))
 
 

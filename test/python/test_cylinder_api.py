@@ -408,9 +408,9 @@ def test_bad_input():
     pulse = P.define("sine_cycle", amp=0.5, amp_unit="g", period=1.0)
     with pytest.raises(InvalidInputError, match="^b"):
         C.block_props(-1.0, 1.0)
-    with pytest.raises(InvalidInputError, match="e"):
+    with pytest.raises(InvalidInputError, match=r"^e = 1\.5"):
         C.simulate(body, pulse, e=1.5)
-    with pytest.raises(InvalidInputError, match="body"):
+    with pytest.raises(InvalidInputError, match=r"^body: "):
         C.simulate(R.rectangular_block(0.3, 1.2), pulse)
     with pytest.raises(InvalidInputError, match="kv"):
         C.simulate(body, accel=np.zeros(3), dt=0.01, kv=0.5)
@@ -459,3 +459,33 @@ def test_readme_example_runs(source_root):
     assert np.bincount(ns["cmp"].difference.ravel()).tolist() == [3599, 0, 1]
     np.testing.assert_allclose(ns["side"].cylinder_pga_g, [0.2965, 0.3725, 1.499], atol=6e-4)
     np.testing.assert_allclose(ns["side"].block_pga_g, [0.2965, 0.3724, 1.497], atol=6e-4)
+
+
+def test_map_with_vertical_acceleration_is_the_blocks_map_with_kv():
+    """kv reaches every cell: the cylinder's dimensionless map with kv equals
+    rocking.overturning_map with the same kv, alpha = theta_c and the cylinder's e, and
+    differs from the map without it."""
+    body = C.props(0.4, 1.6)
+    x = np.array([1.5, 3.0, 6.0])
+    y = np.linspace(1.2, 6.0, 9)
+    with_kv = C.overturning_map(body, "sine_cycle", x, y, kv=-0.5)
+    ref = R.overturning_map("sine_cycle", x, y, body.theta_c, e=body.restitution, kv=-0.5)
+    np.testing.assert_array_equal(with_kv, ref)
+    assert np.any(with_kv != C.overturning_map(body, "sine_cycle", x, y))
+    with pytest.raises(InvalidInputError, match="kv"):
+        C.overturning_map(body, "sine_cycle", x, [40.0], kv=-1.0)
+
+
+def test_map_inputs_refused_with_the_place():
+    body = C.props(0.4, 1.6)
+    xx, yy = np.meshgrid([1.0, 2.0], [2.0, 3.0])
+    with pytest.raises(InvalidInputError, match=r"^x: must be a 1-d"):
+        C.overturning_map(body, "sine_cycle", xx, [2.0])
+    a = np.zeros((2, 3))
+    b = np.zeros((2, 3))
+    b[1, 2] = 1e12
+    with pytest.raises(InvalidInputError, match=r"^b\[1, 2\] = 1e\+12: must be a class"):
+        C.map_difference(a, b)
+    b[1, 2] = 4
+    with pytest.raises(InvalidInputError, match=r"^b\[1, 2\] = 4\.0"):
+        C.map_difference(a, b)

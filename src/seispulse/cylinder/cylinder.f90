@@ -357,9 +357,10 @@ contains
     !> length of the others, t_d of the exponential) and f_p of the Ricker wavelet. The PGA
     !> is the pulse's amp: every kind the map takes peaks at |a_g| = amp (the exponential at
     !> its lobe centre, the Ricker wavelet at t0; checked in test/test_cylinder.f90).
-    !> template, linearized, rtol: as overturning_map.
+    !> template, linearized, rtol and the vertical acceleration a_v = kv a_g (doc/rocking.md
+    !> section 7): as overturning_map.
     subroutine body_overturning_map(body, kind, x, y, axes, classes, stat, errmsg, template, &
-                                    linearized, e, rtol)
+                                    linearized, e, rtol, kv)
         type(rocking_body_t), intent(in) :: body              !! the body
         integer, intent(in) :: kind                           !! PULSE_* code (not PULSE_MP)
         real(dp), intent(in) :: x(:)                          !! frequencies (axes), > 0
@@ -372,6 +373,7 @@ contains
         logical, intent(in), optional :: linearized           !! Eq. 2.7 (default .false.)
         real(dp), intent(in), optional :: e                   !! restitution, [0, 1]
         real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
+        real(dp), intent(in), optional :: kv                  !! a_v/a_g, vertical (default 0)
         real(dp) :: fr(size(x)), ar(size(y)), ee, tan_c
         integer :: i, j
 
@@ -421,7 +423,7 @@ contains
             end if
         end do
         call overturning_map(body%theta_c, ee, kind, fr, ar, classes, stat, errmsg, &
-                             linearized=linearized, template=template, rtol=rtol)
+                             linearized=linearized, template=template, rtol=rtol, kv=kv)
     end subroutine body_overturning_map
 
     !> Cell-by-cell comparison of two class maps of equal shape (classes of
