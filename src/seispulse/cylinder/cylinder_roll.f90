@@ -28,8 +28,9 @@
 !>   along a_g at that instant (the body leans away from a_g: d = a_g/|a_g|).
 !> - Impact when theta reaches 0 with theta' < 0 (the equations are continued past
 !>   theta = 0 on the same rim point, so the root is located on the dense output of the
-!>   step): the contact jumps to the opposite rim point, psi -> psi + pi,
-!>   theta' -> e |theta'|, psi', phi_s' (the vertical angular velocity) kept.
+!>   step): the contact jumps to the opposite rim point, psi -> psi + pi and
+!>   phi_s -> phi_s - pi (the same pose: psi + phi_s continuous), theta' -> e |theta'|,
+!>   psi', phi_s' (the vertical angular velocity) kept.
 !> - Floor: a pass with spin turns around above theta = 0 (physically: no impact, the
 !>   contact runs round the rim fast, psi' ~ 1/theta^2). A pass whose minimum lies below
 !>   theta_floor = 1e-5 theta_c (the opposite rim within 2 r theta_floor of the ground)
@@ -39,12 +40,14 @@
 !>   resolution with theta < 1e-3 theta_c also counts as one (a touch). Every loop is
 !>   bounded by the step budget (2e6 attempted steps, 40 more per record sample).
 !> - Rest: after an impact, when the next flight would rise less than 1e-10 theta_c (the
-!>   planar model's rule); after a floor pass, also when the energy of the rocking,
-!>   E - m g h - C omega_Z^2/2, is below m g r 1e-10 theta_c (the same measure). The body
+!>   planar model's rule); after a floor pass, also when the rocking left, J_n theta'^2/2
+!>   (about the rim tangent; the potential from the floor), is below m g r 1e-10 theta_c
+!>   (the same measure). The body
 !>   then sits on its base (all rates set to 0: no base torque is modelled), from the
 !>   impact time plus the Zeno estimate tau/(1 - e) (after a floor pass: at once).
 !> - Overturned when theta reaches pi/2. After the excitation, E < m g R with
-!>   theta < theta_c proves that the body never overturns (doc/rolling.md section 4).
+!>   theta < theta_c proves that the body never overturns (doc/rolling.md section 4):
+!>   with e = 1 and t_max = +inf the run then ends at the last output time.
 !>
 !> Method: DOP853 of seispulse_ode on the state (theta, psi, phi_s, theta', psi', phi_s',
 !> x_G, y_G), steps ending on the pieces of the excitation (seispulse_pieces), at most
@@ -472,6 +475,7 @@ contains
         if (.not. y0(1) > 0.0_dp .and. y0(4) < 0.0_dp) then
             ! upright and falling the other way: the same state on the opposite rim point
             y0(2) = y0(2) + pi
+            y0(3) = y0(3) - pi
             y0(4) = -y0(4)
         end if
     end subroutine initial_state
@@ -529,6 +533,7 @@ contains
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
         type(piece_t) :: piece
+        real(dp) :: t_run
         integer :: src, i, why, kk
         logical :: found
 
@@ -594,12 +599,14 @@ contains
                     call finish_rest(st, hist, run)
                     exit
                 end if
+                t_run = st%t_lim
                 if (st%e >= 1.0_dp .and. st%t_lim >= huge(1.0_dp) .and. never_overturns(st)) then
-                    ! perpetual rocking: nothing more to learn without t_max
-                    call finish(st, hist, run, ROLL_RUN_TIME_LIMIT)
-                    exit
+                    ! perpetual rocking: nothing more to learn without t_max beyond the last
+                    ! output time
+                    t_run = st%t
+                    if (st%ng > 0) t_run = max(st%t, st%tg(st%ng))
                 end if
-                call advance(st, hist, run, st%t_lim, why)
+                call advance(st, hist, run, t_run, why)
                 if (st%stat /= SEISPULSE_SUCCESS) exit
                 select case (why)
                 case (WHY_REST)
@@ -752,7 +759,10 @@ contains
         end if
         psi_t = atan2(-dx, dy)
         st%y(1) = 0.0_dp
-        st%y(2) = psi_t + 2.0_dp * pi * anint((st%y(2) - psi_t) / (2.0_dp * pi))
+        ! upright, the pose is Rz(psi + phi_s): re-aiming psi turns phi_s back
+        psi_t = psi_t + 2.0_dp * pi * anint((st%y(2) - psi_t) / (2.0_dp * pi))
+        st%y(3) = st%y(3) - (psi_t - st%y(2))
+        st%y(2) = psi_t
         st%y(4:6) = 0.0_dp
         st%mode = 1
         st%from_zero = .true.
@@ -963,7 +973,10 @@ contains
         st%imp(st%n_imp) = st%t
         ! (L.11)
         if (ev == EV_IMPACT) yv(1) = 0.0_dp
+        ! Rz(psi) Rx(-theta) Rz(phi_s) = Rz(psi + pi) Rx(theta) Rz(phi_s - pi): the body
+        ! keeps its pose (psi + phi_s continuous)
         yv(2) = yv(2) + pi
+        yv(3) = yv(3) - pi
         yv(4) = st%e * abs(yv(4))
         st%y = yv
         call st%sys%rhs(st%t, st%y, st%f)
@@ -971,7 +984,8 @@ contains
         acc0 = st%f(4)
         if (ev /= EV_IMPACT .and. rocking_energy(st) <= rest_tol * st%theta_c * st%sys%m &
                 * st%sys%g * st%sys%r) then
-            ! a floor pass left (almost) nothing but the turn about the vertical: rest
+            ! a floor pass left (almost) no rocking, only the turn round the rim at theta
+            ! ~ theta_floor: rest
             call set_rest(st, hist, run, st%t)
             why = WHY_REST
             return
@@ -1177,13 +1191,20 @@ contains
         safe = st%y(1) < st%theta_c .and. energy(st%sys, st%y) < st%sys%m * st%sys%g * st%big_r
     end function never_overturns
 
-    !> Energy above rest, E - m g h, less the turn about the vertical C omega_Z^2/2 (J): the
-    !> energy of the rocking (the rest rule of the floor passes, doc/rolling.md section 4).
+    !> Energy of the rocking left after a floor pass (J): the theta' part
+    !> J_n theta'^2/2 (J_n = n.I_P n, the inertia about the rim tangent through P), the
+    !> potential being the floor's (theta = theta_floor is kept at a floor pass). The turn
+    !> about the vertical and the run of the contact round the rim are not rocking
+    !> (the rest rule of the floor passes, doc/rolling.md section 4).
     pure function rocking_energy(st) result(en)
         type(roll_state_t), intent(in) :: st
         real(dp) :: en
-        en = energy(st%sys, st%y) - st%sys%m * st%sys%g * st%sys%h &
-             - 0.5_dp * st%sys%ic * (st%y(5) + st%y(6) * cos(st%y(1)))**2
+        real(dp) :: s, c, j_n(3)
+        s = sin(st%y(1))
+        c = cos(st%y(1))
+        j_n = inertia_p(st%sys, [0.0_dp, -s, c], [0.0_dp, st%sys%r * c - st%sys%h * s, &
+                        st%sys%r * s + st%sys%h * c], [1.0_dp, 0.0_dp, 0.0_dp])
+        en = 0.5_dp * j_n(1) * st%y(4)**2
     end function rocking_energy
 
     pure function min_step(st, t) result(h)
