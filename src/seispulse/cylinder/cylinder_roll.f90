@@ -37,7 +37,9 @@
 !>   counts as an impact at the downward crossing of theta_floor (theta kept, the contact
 !>   mirrored to the opposite rim point; a motion in a fixed plane, psi' = phi_s' = 0,
 !>   goes on to its impact at theta = 0); a step that cannot be resolved above the time
-!>   resolution with theta < 1e-3 theta_c also counts as one (a touch). Every loop is
+!>   resolution with theta < 1e-3 theta_c also counts as one (a touch; the flight goes
+!>   on with a fresh step). A first step from theta = 0 that cannot rise is no flight:
+!>   after an uplift the threshold was only touched, after an impact rest. Every loop is
 !>   bounded by the step budget (2e6 attempted steps, 40 more per record sample).
 !> - Rest: after an impact, when the next flight would rise less than 1e-10 theta_c (the
 !>   planar model's rule); after a floor pass, also when the rocking left, J_n theta'^2/2
@@ -51,7 +53,8 @@
 !>
 !> Method: DOP853 of seispulse_ode on the state (theta, psi, phi_s, theta', psi', phi_s',
 !> x_G, y_G), steps ending on the pieces of the excitation (seispulse_pieces), at most
-!> 0.5/p long (one turning point of theta per step), events on the dense output.
+!> 0.5/max(p, |psi'|, C |omega_Z|/A) long (one turning point of theta per step), events on
+!> the dense output; a step that is not finite or whose theta leaves [-pi, pi] is rejected.
 module seispulse_cylinder_roll
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan, ieee_value, &
                                              ieee_quiet_nan
@@ -178,6 +181,7 @@ module seispulse_cylinder_roll
         integer :: n_imp = 0, n_floor = 0, steps = 0, max_steps = max_steps_default
         integer :: ig = 1, ng = 0
         logical :: from_zero = .false., ever_up = .false., done = .false.
+        logical :: uplifting = .false.      !! from_zero after an uplift from rest
         real(dp), allocatable :: imp(:)
         real(dp), allocatable :: tg(:)
         integer :: stat = SEISPULSE_SUCCESS
@@ -766,6 +770,7 @@ contains
         st%y(4:6) = 0.0_dp
         st%mode = 1
         st%from_zero = .true.
+        st%uplifting = .true.
         if (.not. st%ever_up) then
             st%ever_up = .true.
             run%t_uplift = t_u
@@ -799,8 +804,10 @@ contains
                 return
             end if
             st%steps = st%steps + 1
-            ! at most half the rocking time scale: one turning point of theta per step
-            st%h = min(st%h, 0.5_dp / st%p)
+            ! at most half the fastest time scale of theta: the rocking 1/p, the heading
+            ! 1/|psi'| and the nutation A/(C |omega_Z|): one turning point of theta per step
+            st%h = min(st%h, 0.5_dp / max(st%p, abs(st%y(5)), st%sys%ic &
+                       * abs(st%y(5) + st%y(6) * cos(st%y(1))) / st%sys%ia))
             clamped = .not. st%h < t_stop - st%t
             if (clamped) then
                 t_new = t_stop
@@ -810,8 +817,14 @@ contains
             hh = t_new - st%t
             if (hh < min_step(st, st%t)) then
                 if (st%from_zero) then
-                    ! no flight of any length leaves the base: not an uplift
-                    why = WHY_TOUCH
+                    ! no flight of any length leaves the base: not an uplift (WHY_TOUCH), or
+                    ! after an impact, rest
+                    if (st%uplifting) then
+                        why = WHY_TOUCH
+                    else
+                        call set_rest(st, hist, run, st%t)
+                        why = WHY_REST
+                    end if
                     return
                 else if (clamped) then
                     ! a sliver of a piece below the time resolution: step over it
@@ -823,18 +836,23 @@ contains
                     yv = st%y
                     call impact(st, hist, run, yv, EV_FLOOR, t_stop, why)
                     if (why /= WHY_REACHED) return
+                    ! the flight goes on from theta > 0: a fresh step size
+                    st%h = 0.05_dp / st%p
+                    rejected = .false.
                     cycle
                 end if
                 why = WHY_LIMIT
                 return
             end if
             call st%ode%step(st%sys, st%t, st%y, st%f, hh, t_new, y_new, f_new, err)
-            if (.not. err <= 1.0_dp) then
+            th1 = y_new(1)
+            if (.not. (err <= 1.0_dp .and. abs(th1) <= pi .and. all(ieee_is_finite(y_new)))) then
+                ! (a blown-up step can pass the error test relative to its own size)
                 rejected = .true.
                 st%h = hh * ode_dop853_factor(err)
+                if (err <= 1.0_dp) st%h = 0.25_dp * hh
                 cycle
             end if
-            th1 = y_new(1)
             if (st%from_zero .and. .not. th1 > 0.0_dp) then
                 ! the first step of a flight must leave the base: shorter
                 st%h = 0.25_dp * hh
@@ -844,6 +862,7 @@ contains
             if (rejected) fac = min(fac, 1.0_dp)
             rejected = .false.
             st%from_zero = .false.
+            st%uplifting = .false.
             th0 = st%y(1)
             w0 = st%y(4)
             w1 = y_new(4)
@@ -1010,7 +1029,9 @@ contains
             end if
             st%h = min(st%h, 0.5_dp * abs(st%y(4)) / abs(acc0))
         end if
-        st%from_zero = .true.
+        ! from theta = 0 the first step must rise (a floor pass keeps theta > 0)
+        st%from_zero = .not. st%y(1) > 0.0_dp
+        st%uplifting = .false.
     end subroutine impact
 
     !> Root of y(comp) - level on the dense output in [xa, xb] (fa, fb the values there).
@@ -1128,6 +1149,7 @@ contains
         st%t = max(st%t, tt)
         st%t_rest = st%t
         st%from_zero = .false.
+        st%uplifting = .false.
         st%e_ref = ieee_value(1.0_dp, ieee_quiet_nan)
     end subroutine set_rest
 
