@@ -114,8 +114,9 @@ module seispulse_cylinder_roll
         real(dp) :: theta_max = 0.0_dp           !! largest theta (rad)
         real(dp) :: friction_max = 0.0_dp        !! largest |F_t|/N while N > 0 (-)
         real(dp) :: t_lift_off = 0.0_dp          !! first time N <= 0 (s), NaN if never
-        real(dp) :: energy_drift = 0.0_dp        !! largest |E - E_0|/E_0 over the flights
-                                                 !! in free motion (E_0 at each start)
+        real(dp) :: energy_drift = 0.0_dp        !! largest |E - E_0|/(E_0 - m g h) over the
+                                                 !! flights in free motion (E_0 at each
+                                                 !! start; E_0 - m g h: above rest)
         real(dp) :: t_end = 0.0_dp               !! rest, overturning or limit time (s)
         integer :: n_steps = 0                   !! integration steps tried
     end type roll_run_t
@@ -1057,10 +1058,14 @@ contains
         type(roll_run_t), intent(inout) :: run
         real(dp), intent(in) :: t, y(NY)
         real(dp) :: col(ROLL_NOUT)
+        real(dp) :: e_rock
         call put_state(st, t, y, col, run)
-        if (st%sys%gr%src == RG_ZERO .and. ieee_is_finite(st%e_ref)) &
-            run%energy_drift = max(run%energy_drift, abs(col(ROLL_OUT_ENERGY) - st%e_ref) &
-                                   / st%e_ref)
+        if (st%sys%gr%src == RG_ZERO .and. ieee_is_finite(st%e_ref)) then
+            ! relative to the energy above rest at the start of the flight (L.9)
+            e_rock = st%e_ref - st%sys%m * st%sys%g * st%sys%h
+            if (e_rock > 0.0_dp) run%energy_drift = max(run%energy_drift, &
+                abs(col(ROLL_OUT_ENERGY) - st%e_ref) / e_rock)
+        end if
     end subroutine step_end
 
     !> The output columns of a rocking state y at t (and the run's friction and lift-off).
