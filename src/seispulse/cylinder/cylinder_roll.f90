@@ -112,8 +112,10 @@ module seispulse_cylinder_roll
         integer :: n_floor = 0                   !! of which counted by the floor rule
         real(dp), allocatable :: t_impacts(:)    !! impact times (s)
         real(dp) :: theta_max = 0.0_dp           !! largest theta (rad)
-        real(dp) :: friction_max = 0.0_dp        !! largest |F_t|/N while N > 0 (-)
-        real(dp) :: t_lift_off = 0.0_dp          !! first time N <= 0 (s), NaN if never
+        real(dp) :: friction_max = 0.0_dp        !! largest |F_t|/N while N > 0 (-), at the
+                                                 !! step ends and output times
+        real(dp) :: t_lift_off = 0.0_dp          !! first step end or output time with
+                                                 !! N <= 0 (s), NaN if never
         real(dp) :: energy_drift = 0.0_dp        !! largest |E - E_0|/(E_0 - m g h) over the
                                                  !! flights in free motion (E_0 at each
                                                  !! start; E_0 - m g h: above rest)
