@@ -219,6 +219,23 @@ def test_loose_tolerance_near_grazing_completes():
         assert np.all(np.isfinite(run.theta)), w
 
 
+def test_small_spins_end_at_rest_like_the_planar_run():
+    """doc/rolling.md section 7: spin rates up to 1e-4 rad/s from theta0 = 0.2 rad pass
+    below the floor as often as the planar run impacts, and end at rest (t_max = inf),
+    from the planar rest time on, within 13400 steps."""
+    body = solid(1.0, 3.0, 1000.0)
+    t = np.linspace(0.0, 20.0, 201)
+    planar = roll(body, theta0=0.2, t=t, t_max=np.inf)
+    assert planar.outcome == "rest" and planar.n_floor == 0
+    assert planar.n_impacts == 68 and abs(planar.t_end - 8.73) < 0.005
+    for w, t_end in ((1e-12, 8.73), (1e-5, 9.27), (1e-4, 15.47)):
+        run = roll(body, theta0=0.2, spin_rate0=w, t=t, t_max=np.inf)
+        assert run.outcome == "rest", w
+        assert run.n_impacts == run.n_floor == planar.n_impacts, w
+        assert abs(run.t_end - t_end) < 0.005, (w, run.t_end)
+        assert run.n_steps <= 13400, (w, run.n_steps)
+
+
 def test_thesis_free_rocking_scenarios():
     """theta0 = 0.2 rad, spin rates 0, 0.01, 0.1 rad/s ([AD11] section 1.2; r = 1 m,
     h = 3 m is our choice: the thesis' geometry is lost)."""
