@@ -398,15 +398,12 @@ contains
     !> not wobble at theta ~ theta_floor until the step budget (doc/rolling.md section 4).
     subroutine test_floor_rest(error)
         type(test_error), allocatable, intent(out) :: error
-        type(rocking_body_t) :: b
         type(roll_run_t) :: run
-        real(dp), allocatable :: t(:), hist(:, :)
+        real(dp) :: t(2) = [0.0_dp, 4.0_dp], hist(ROLL_NOUT, 2)
+        character(len=200) :: msg = ''
+        type(rocking_body_t) :: b
         integer :: stat
-        character(len=200) :: msg
         b = solid(1.0_dp, 3.0_dp, 1000.0_dp)
-        call grid(4.0_dp, 41, t)
-        allocate(hist(ROLL_NOUT, size(t)))
-        msg = ''
         call cylinder_roll(b, t, hist, run, stat, msg, theta0=0.2_dp, spin_rate0=1.0e-5_dp, &
                            t_max=huge(1.0_dp))
         call check(error, stat == SEISPULSE_SUCCESS, 'cylinder_roll: '//trim(msg))

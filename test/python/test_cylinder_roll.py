@@ -101,6 +101,17 @@ def run_reference(body, state, t_out, accel):
     return sol.y
 
 
+def assert_matches_reference(run, body, state, t_out, accel):
+    """theta, psi (mod 2 pi), x_G, y_G of `run` against run_reference to 1e-8 (rad, m)."""
+    ref = run_reference(body, state, t_out, accel)
+    th_ref, psi_ref = zip(*(reference_angles(ref[:, k]) for k in range(t_out.size)))
+    np.testing.assert_allclose(run.theta, th_ref, rtol=0, atol=1e-8)
+    dpsi = np.angle(np.exp(1j * (run.psi - np.array(psi_ref))))
+    np.testing.assert_allclose(dpsi, 0.0, atol=1e-8)
+    np.testing.assert_allclose(run.x_g, ref[7], rtol=0, atol=1e-8)
+    np.testing.assert_allclose(run.y_g, ref[8], rtol=0, atol=1e-8)
+
+
 @pytest.mark.parametrize("case", ["free", "pulse"])
 def test_against_independent_newton_euler(case):
     pytest.importorskip("scipy")
@@ -122,13 +133,7 @@ def test_against_independent_newton_euler(case):
                spin0=state[2], theta_rate0=state[3], psi_rate0=state[4], spin_rate0=state[5],
                t=t_out, rtol=1e-12)
     assert run.n_impacts == 0
-    ref = run_reference(body, state, t_out, accel)
-    th_ref, psi_ref = zip(*(reference_angles(ref[:, k]) for k in range(t_out.size)))
-    np.testing.assert_allclose(run.theta, th_ref, rtol=0, atol=1e-8)
-    dpsi = np.angle(np.exp(1j * (run.psi - np.array(psi_ref))))
-    np.testing.assert_allclose(dpsi, 0.0, atol=1e-8)
-    np.testing.assert_allclose(run.x_g, ref[7], rtol=0, atol=1e-8)
-    np.testing.assert_allclose(run.y_g, ref[8], rtol=0, atol=1e-8)
+    assert_matches_reference(run, body, state, t_out, accel)
     # the motion is genuinely 3-D
     assert np.ptp(run.psi) > 0.3 and np.ptp(run.y_g) > 1e-3
 
@@ -147,13 +152,7 @@ def test_near_grazing_against_independent_newton_euler(spin):
     t_out = np.linspace(0.0, 1.3, 14)
     run = roll(body, theta0=0.2, spin_rate0=spin, t=t_out, rtol=1e-12)
     assert run.n_impacts == 0
-    ref = run_reference(body, state, t_out, lambda t: (0.0, 0.0))
-    th_ref, psi_ref = zip(*(reference_angles(ref[:, k]) for k in range(t_out.size)))
-    np.testing.assert_allclose(run.theta, th_ref, rtol=0, atol=1e-8)
-    dpsi = np.angle(np.exp(1j * (run.psi - np.array(psi_ref))))
-    np.testing.assert_allclose(dpsi, 0.0, atol=1e-8)
-    np.testing.assert_allclose(run.x_g, ref[7], rtol=0, atol=1e-8)
-    np.testing.assert_allclose(run.y_g, ref[8], rtol=0, atol=1e-8)
+    assert_matches_reference(run, body, state, t_out, lambda t: (0.0, 0.0))
     # the pass did turn the heading
     assert abs(run.psi[-1]) > 1.0
 
