@@ -85,7 +85,8 @@ module seispulse_cylinder_roll
     integer, parameter :: ROLL_OUT_THETA = 1       !! tilt theta (rad), >= 0
     integer, parameter :: ROLL_OUT_PSI = 2         !! heading psi (rad), continuous but for
                                                    !! the jumps of pi at impacts
-    integer, parameter :: ROLL_OUT_SPIN = 3        !! spin phi_s (rad)
+    integer, parameter :: ROLL_OUT_SPIN = 3        !! spin phi_s (rad), jumps by -pi where
+                                                   !! psi jumps by pi (psi + phi_s continuous)
     integer, parameter :: ROLL_OUT_THETA_RATE = 4  !! theta' (rad/s)
     integer, parameter :: ROLL_OUT_PSI_RATE = 5    !! psi' (rad/s)
     integer, parameter :: ROLL_OUT_SPIN_RATE = 6   !! phi_s' (rad/s)
