@@ -1481,7 +1481,7 @@ contains
                       //'centre of mass in the ground frame (m), from the centre of mass at (0, 0)'
         comments(6) = 'friction_demand = |F_t|/N (no slip needs mu >= it); energy: kinetic + ' &
                       //'potential (J); n_floor: impacts counted by the floor rule; ' &
-                      //'energy_drift: largest |E - E0|/E0 in free flight'
+                      //'energy_drift: largest |E - E0|/(E0 - m g h) in free flight'
         comments(7) = 'overturned: theta = pi/2 and the rates 0 after t_end (N, friction, ' &
                       //'energy NaN); NaN after a time limit; t_lift_off: first N <= 0 (NaN: never)'
         comments(8) = 'input: '//trim(path)

@@ -14,7 +14,7 @@ module test_cylinder_roll
                                        ROLL_OUT_THETA, ROLL_OUT_PSI, ROLL_OUT_ENERGY, &
                                        ROLL_OUT_THETA_RATE, ROLL_OUT_PSI_RATE, ROLL_OUT_NORMAL, &
                                        ROLL_OUT_FRICTION, ROLL_OUT_XG, ROLL_OUT_YG, &
-                                       ROLL_OUT_XP, ROLL_OUT_YP, ROLL_RUN_REST, &
+                                       ROLL_OUT_XP, ROLL_OUT_YP, ROLL_OUT_SPIN, ROLL_RUN_REST, &
                                        ROLL_RUN_OVERTURN, ROLL_RUN_TIME_LIMIT, ROLL_RUN_NO_UPLIFT
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
@@ -39,7 +39,12 @@ contains
                               test_planar_forces), &
                  new_unittest('overturning at theta = pi/2', test_overturn), &
                  new_unittest('bad input names the parameter', test_bad_input), &
-                 new_unittest('output column names', test_names)]
+                 new_unittest('output column names', test_names), &
+                 new_unittest('small spin: floor passes end at rest, quickly', test_floor_rest), &
+                 new_unittest('the body pose is continuous across impacts and floor passes', &
+                              test_pose_continuous), &
+                 new_unittest('e = 1, t_max = inf: integrated to the last output time', &
+                              test_elastic_open_end)]
     end subroutine collect_cylinder_roll
 
     !> Solid cylinder, radius r, CoM height h (half the height), mass m (cylinder_props),
@@ -152,11 +157,14 @@ contains
         if (allocated(error)) return
         call check(error, run%n_impacts, prun%n_impacts, 'impacts')
         if (allocated(error)) return
+        call check(error, run%t_impacts, prun%t_impacts(1:prun%n_impacts), atol=1.0e-9_dp, &
+                   rtol=0.0_dp)
+        if (allocated(error)) return
         call check(error, hist(ROLL_OUT_THETA, :), abs(th), atol=1.0e-9_dp, rtol=0.0_dp)
     end subroutine test_planar_record
 
-    !> Free motion from a tilt with heading rate and spin: E constant to 1e-9 relative
-    !> between impacts (the run's drift), and on the output grid.
+    !> Free motion from a tilt with heading rate and spin: E constant to 1e-9 of the energy
+    !> above rest E - m g h between impacts (the run's drift), and on the output grid.
     subroutine test_energy(error)
         type(test_error), allocatable, intent(out) :: error
         type(rocking_body_t) :: b
@@ -177,8 +185,9 @@ contains
         if (allocated(error)) return
         call check(error, run%energy_drift < 1.0e-9_dp, 'drift '//trim(num(run%energy_drift)))
         if (allocated(error)) return
+        ! on the grid too, relative to the energy above rest (b%h is the height of G at rest)
         call check(error, hist(ROLL_OUT_ENERGY, :), spread(hist(ROLL_OUT_ENERGY, 1), 1, size(t)), &
-                   rtol=1.0e-9_dp)
+                   rtol=0.0_dp, atol=1.0e-9_dp * (hist(ROLL_OUT_ENERGY, 1) - b%mass * grav * b%h))
         if (allocated(error)) return
         ! the heading does turn
         call check(error, abs(hist(ROLL_OUT_PSI, size(t)) - 0.3_dp) > 0.1_dp, 'psi moves')
@@ -293,9 +302,10 @@ contains
             call check(error, hist(ROLL_OUT_FRICTION, i), fref, rtol=1.0e-8_dp, atol=1.0e-12_dp)
             if (allocated(error)) return
         end do
-        ! the contact point is the rim point under the lean, r cos(theta) from the axis
+        ! the contact point is the rim point under the lean: horizontally
+        ! r cos(theta) - h sin(theta) from G (the horizontal part of rho, (L.1)), G at (0, 0)
         call check(error, hypot(hist(ROLL_OUT_XP, 1), hist(ROLL_OUT_YP, 1)), &
-                   b%r * cos(0.1_dp) - b%h * sin(0.1_dp) + 0.0_dp, rtol=1.0e-13_dp)
+                   b%r * cos(0.1_dp) - b%h * sin(0.1_dp), rtol=1.0e-13_dp)
     end subroutine test_planar_forces
 
     !> A strong pulse overturns the body; the history ends on its side.
@@ -381,9 +391,134 @@ contains
         call check(error, roll_output_name(ROLL_OUT_THETA) == 'theta', 'theta')
         if (allocated(error)) return
         call check(error, len(roll_output_name(ROLL_NOUT + 1)) == 0, 'beyond the table')
-        if (allocated(error)) return
-        call check(error, ROLL_RUN_REST /= ROLL_RUN_TIME_LIMIT, 'codes')
     end subroutine test_names
+
+    !> A free run from theta0 = 0.2 rad with a spin rate of 1e-5 rad/s: the floor passes
+    !> damp theta' (restitution) until the rocking left is negligible, then rest; it must
+    !> not wobble at theta ~ theta_floor until the step budget (doc/rolling.md section 4).
+    subroutine test_floor_rest(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(roll_run_t) :: run
+        real(dp) :: t(2) = [0.0_dp, 4.0_dp], hist(ROLL_NOUT, 2)
+        character(len=200) :: msg = ''
+        type(rocking_body_t) :: b
+        integer :: stat
+        b = solid(1.0_dp, 3.0_dp, 1000.0_dp)
+        call cylinder_roll(b, t, hist, run, stat, msg, theta0=0.2_dp, spin_rate0=1.0e-5_dp, &
+                           t_max=huge(1.0_dp))
+        call check(error, stat == SEISPULSE_SUCCESS, 'cylinder_roll: '//trim(msg))
+        if (allocated(error)) return
+        call check(error, run%outcome, ROLL_RUN_REST, 'outcome')
+        if (allocated(error)) return
+        call check(error, run%n_floor > 0 .and. run%n_floor == run%n_impacts, 'floor passes')
+        if (allocated(error)) return
+        ! planar: the Zeno sequence of e = Housner's from 0.2 rad ends near 8.7 s
+        call check(error, run%t_end > 4.0_dp .and. run%t_end < 20.0_dp, &
+                   't_end '//trim(num(run%t_end)))
+        if (allocated(error)) return
+        call check(error, run%n_steps < 50000, 'steps')
+        if (allocated(error)) return
+        ! the same run with the default t_max (the last output time) is still rocking there
+        call cylinder_roll(b, t, hist, run, stat, msg, theta0=0.2_dp, spin_rate0=1.0e-5_dp)
+        call check(error, run%outcome, ROLL_RUN_TIME_LIMIT, 'outcome at t = 4 s')
+    end subroutine test_floor_rest
+
+    !> Rz(psi) Rx(theta) Rz(phi_s) (the body's rotation) from the output columns.
+    pure function pose(col) result(rm)
+        real(dp), intent(in) :: col(:)
+        real(dp) :: rm(3, 3)
+        real(dp) :: cz(3, 3), cx(3, 3), cs(3, 3)
+        cz = rz(col(ROLL_OUT_PSI))
+        cs = rz(col(ROLL_OUT_SPIN))
+        cx = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, cos(col(ROLL_OUT_THETA)), &
+                      sin(col(ROLL_OUT_THETA)), 0.0_dp, -sin(col(ROLL_OUT_THETA)), &
+                      cos(col(ROLL_OUT_THETA))], [3, 3])
+        rm = matmul(cz, matmul(cx, cs))
+    end function pose
+
+    pure function rz(a) result(rm)
+        real(dp), intent(in) :: a
+        real(dp) :: rm(3, 3)
+        rm = reshape([cos(a), sin(a), 0.0_dp, -sin(a), cos(a), 0.0_dp, 0.0_dp, 0.0_dp, &
+                      1.0_dp], [3, 3])
+    end function rz
+
+    !> Across an impact (zero spin, theta = 0) and a floor pass (spin 1e-5 rad/s, theta
+    !> kept at theta_floor), output times 1e-7 s either side: the contact jumps to the
+    !> opposite rim point (psi + pi), but the body's rotation matrix does not jump (the
+    !> tilt changes by theta' 2e-7 s at an impact, by 2 theta_floor = 6.4e-6 rad at a
+    !> floor pass), and psi + phi_s is continuous.
+    subroutine test_pose_continuous(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(rocking_body_t) :: b
+        type(roll_run_t) :: run
+        real(dp) :: t(2), hist(ROLL_NOUT, 2), t1(1), h1(ROLL_NOUT, 1), spin, tol
+        integer :: stat, k
+        character(len=200) :: msg
+        b = solid(1.0_dp, 3.0_dp, 1000.0_dp)
+        do k = 1, 2
+            spin = 0.0_dp
+            tol = 1.0e-6_dp
+            if (k == 2) then
+                spin = 1.0e-5_dp
+                tol = 1.0e-5_dp
+            end if
+            msg = ''
+            t1 = 2.0_dp
+            call cylinder_roll(b, t1, h1, run, stat, msg, theta0=0.2_dp, psi0=0.4_dp, &
+                               spin0=0.3_dp, spin_rate0=spin)
+            call check(error, stat == SEISPULSE_SUCCESS .and. run%n_impacts > 0, &
+                       'a first impact: '//trim(msg))
+            if (allocated(error)) return
+            call check(error, run%n_floor, k - 1, 'kind of the first impact')
+            if (allocated(error)) return
+            t = run%t_impacts(1) + [-1.0e-7_dp, 1.0e-7_dp]
+            call cylinder_roll(b, t, hist, run, stat, msg, theta0=0.2_dp, psi0=0.4_dp, &
+                               spin0=0.3_dp, spin_rate0=spin)
+            call check(error, stat == SEISPULSE_SUCCESS .and. run%n_impacts == 1, 'one impact')
+            if (allocated(error)) return
+            ! the contact point does jump (to the opposite rim point)
+            call check(error, hypot(hist(ROLL_OUT_XP, 2) - hist(ROLL_OUT_XP, 1), &
+                                    hist(ROLL_OUT_YP, 2) - hist(ROLL_OUT_YP, 1)) > 1.9_dp, &
+                       'contact jumps')
+            if (allocated(error)) return
+            call check(error, maxval(abs(pose(hist(:, 2)) - pose(hist(:, 1)))) < tol, &
+                       'pose jumps by '//trim(num(maxval(abs(pose(hist(:, 2)) &
+                                                             - pose(hist(:, 1)))))))
+            if (allocated(error)) return
+            call check(error, abs(hist(ROLL_OUT_PSI, 2) + hist(ROLL_OUT_SPIN, 2) &
+                                  - hist(ROLL_OUT_PSI, 1) - hist(ROLL_OUT_SPIN, 1)) < tol, &
+                       'psi + phi_s continuous')
+            if (allocated(error)) return
+        end do
+    end subroutine test_pose_continuous
+
+    !> e = 1 and t_max = +inf: rocking never ends, but the output up to the last output time
+    !> is computed (the same as with t_max = that time), the run ends there.
+    subroutine test_elastic_open_end(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(rocking_body_t) :: b
+        type(roll_run_t) :: run, ref
+        real(dp) :: t(2), hist(ROLL_NOUT, 2), href(ROLL_NOUT, 2)
+        integer :: stat
+        character(len=200) :: msg
+        b = solid(1.0_dp, 3.0_dp, 1000.0_dp)
+        t = [0.0_dp, 3.0_dp]
+        msg = ''
+        call cylinder_roll(b, t, hist, run, stat, msg, theta0=0.1_dp, e=1.0_dp, &
+                           t_max=huge(1.0_dp))
+        call check(error, stat == SEISPULSE_SUCCESS, 'cylinder_roll: '//trim(msg))
+        if (allocated(error)) return
+        call cylinder_roll(b, t, href, ref, stat, msg, theta0=0.1_dp, e=1.0_dp, t_max=3.0_dp)
+        call check(error, run%outcome, ROLL_RUN_TIME_LIMIT, 'outcome')
+        if (allocated(error)) return
+        call check(error, run%t_end, 3.0_dp, rtol=0.0_dp, atol=0.0_dp)
+        if (allocated(error)) return
+        call check(error, ref%n_impacts > 0 .and. run%n_impacts == ref%n_impacts, 'impacts')
+        if (allocated(error)) return
+        call check(error, hist(ROLL_OUT_THETA, :), href(ROLL_OUT_THETA, :), rtol=0.0_dp, &
+                   atol=1.0e-12_dp)
+    end subroutine test_elastic_open_end
 
     function num(x) result(s)
         real(dp), intent(in) :: x

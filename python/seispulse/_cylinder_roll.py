@@ -41,10 +41,11 @@ RollRun.__doc__ = """Result of :func:`roll`.
 
 Summary: outcome (:data:`ROLL_OUTCOMES`), first uplift t_uplift (s; 0 for an initial
 tilt, NaN if none), n_impacts and their times t_impacts (s), n_floor of them counted by the
-floor rule (passes below 1e-8 theta_c, doc/rolling.md section 4), theta_max (rad),
+floor rule (passes below 1e-5 theta_c, doc/rolling.md section 4), theta_max (rad),
 friction_max (largest |F_t|/N while in contact), t_lift_off (first time N <= 0, s: the model
-does not cover it; NaN if never), energy_drift (largest relative change of the energy
-within a free flight), t_end (rest, overturning or limit, s), n_steps.
+does not cover it; NaN if never) -- both sampled at the step ends and output times, not
+located --, energy_drift (largest |E - E0|/(E0 - m g h) within a free flight, E0 at its
+start: relative to the energy above rest), t_end (rest, overturning or limit, s), n_steps.
 
 Histories at the output times t (s): theta, psi, spin (rad), their rates (rad/s), the
 contact point x_contact, y_contact and the centre of mass x_g, y_g on the ground (m,

@@ -28,27 +28,33 @@
 !>   along a_g at that instant (the body leans away from a_g: d = a_g/|a_g|).
 !> - Impact when theta reaches 0 with theta' < 0 (the equations are continued past
 !>   theta = 0 on the same rim point, so the root is located on the dense output of the
-!>   step): the contact jumps to the opposite rim point, psi -> psi + pi,
-!>   theta' -> e |theta'|, psi', phi_s' (the vertical angular velocity) kept.
+!>   step): the contact jumps to the opposite rim point, psi -> psi + pi and
+!>   phi_s -> phi_s - pi (the same pose: psi + phi_s continuous), theta' -> e |theta'|,
+!>   psi', phi_s' (the vertical angular velocity) kept.
 !> - Floor: a pass with spin turns around above theta = 0 (physically: no impact, the
 !>   contact runs round the rim fast, psi' ~ 1/theta^2). A pass whose minimum lies below
 !>   theta_floor = 1e-5 theta_c (the opposite rim within 2 r theta_floor of the ground)
 !>   counts as an impact at the downward crossing of theta_floor (theta kept, the contact
 !>   mirrored to the opposite rim point; a motion in a fixed plane, psi' = phi_s' = 0,
 !>   goes on to its impact at theta = 0); a step that cannot be resolved above the time
-!>   resolution with theta < 1e-3 theta_c also counts as one (a touch). Every loop is
+!>   resolution with theta < 1e-3 theta_c also counts as one (a touch; the flight goes
+!>   on with a fresh step). A first step from theta = 0 that cannot rise is no flight:
+!>   after an uplift the threshold was only touched, after an impact rest. Every loop is
 !>   bounded by the step budget (2e6 attempted steps, 40 more per record sample).
 !> - Rest: after an impact, when the next flight would rise less than 1e-10 theta_c (the
-!>   planar model's rule); after a floor pass, also when the energy of the rocking,
-!>   E - m g h - C omega_Z^2/2, is below m g r 1e-10 theta_c (the same measure). The body
+!>   planar model's rule); after a floor pass, also when the rocking left, J_n theta'^2/2
+!>   (about the rim tangent; the potential from the floor), is below m g r 1e-10 theta_c
+!>   (the same measure). The body
 !>   then sits on its base (all rates set to 0: no base torque is modelled), from the
 !>   impact time plus the Zeno estimate tau/(1 - e) (after a floor pass: at once).
 !> - Overturned when theta reaches pi/2. After the excitation, E < m g R with
-!>   theta < theta_c proves that the body never overturns (doc/rolling.md section 4).
+!>   theta < theta_c proves that the body never overturns (doc/rolling.md section 4):
+!>   with e = 1 and t_max = +inf the run then ends at the last output time.
 !>
 !> Method: DOP853 of seispulse_ode on the state (theta, psi, phi_s, theta', psi', phi_s',
 !> x_G, y_G), steps ending on the pieces of the excitation (seispulse_pieces), at most
-!> 0.5/p long (one turning point of theta per step), events on the dense output.
+!> 0.5/max(p, |psi'|, C |omega_Z|/A) long (one turning point of theta per step), events on
+!> the dense output; a step that is not finite or whose theta leaves [-pi, pi] is rejected.
 module seispulse_cylinder_roll
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan, ieee_value, &
                                              ieee_quiet_nan
@@ -79,7 +85,8 @@ module seispulse_cylinder_roll
     integer, parameter :: ROLL_OUT_THETA = 1       !! tilt theta (rad), >= 0
     integer, parameter :: ROLL_OUT_PSI = 2         !! heading psi (rad), continuous but for
                                                    !! the jumps of pi at impacts
-    integer, parameter :: ROLL_OUT_SPIN = 3        !! spin phi_s (rad)
+    integer, parameter :: ROLL_OUT_SPIN = 3        !! spin phi_s (rad), jumps by -pi where
+                                                   !! psi jumps by pi (psi + phi_s continuous)
     integer, parameter :: ROLL_OUT_THETA_RATE = 4  !! theta' (rad/s)
     integer, parameter :: ROLL_OUT_PSI_RATE = 5    !! psi' (rad/s)
     integer, parameter :: ROLL_OUT_SPIN_RATE = 6   !! phi_s' (rad/s)
@@ -106,10 +113,13 @@ module seispulse_cylinder_roll
         integer :: n_floor = 0                   !! of which counted by the floor rule
         real(dp), allocatable :: t_impacts(:)    !! impact times (s)
         real(dp) :: theta_max = 0.0_dp           !! largest theta (rad)
-        real(dp) :: friction_max = 0.0_dp        !! largest |F_t|/N while N > 0 (-)
-        real(dp) :: t_lift_off = 0.0_dp          !! first time N <= 0 (s), NaN if never
-        real(dp) :: energy_drift = 0.0_dp        !! largest |E - E_0|/E_0 over the flights
-                                                 !! in free motion (E_0 at each start)
+        real(dp) :: friction_max = 0.0_dp        !! largest |F_t|/N while N > 0 (-), at the
+                                                 !! step ends and output times
+        real(dp) :: t_lift_off = 0.0_dp          !! first step end or output time with
+                                                 !! N <= 0 (s), NaN if never
+        real(dp) :: energy_drift = 0.0_dp        !! largest |E - E_0|/(E_0 - m g h) over the
+                                                 !! flights in free motion (E_0 at each
+                                                 !! start; E_0 - m g h: above rest)
         real(dp) :: t_end = 0.0_dp               !! rest, overturning or limit time (s)
         integer :: n_steps = 0                   !! integration steps tried
     end type roll_run_t
@@ -175,6 +185,7 @@ module seispulse_cylinder_roll
         integer :: n_imp = 0, n_floor = 0, steps = 0, max_steps = max_steps_default
         integer :: ig = 1, ng = 0
         logical :: from_zero = .false., ever_up = .false., done = .false.
+        logical :: uplifting = .false.      !! from_zero after an uplift from rest
         real(dp), allocatable :: imp(:)
         real(dp), allocatable :: tg(:)
         integer :: stat = SEISPULSE_SUCCESS
@@ -472,6 +483,7 @@ contains
         if (.not. y0(1) > 0.0_dp .and. y0(4) < 0.0_dp) then
             ! upright and falling the other way: the same state on the opposite rim point
             y0(2) = y0(2) + pi
+            y0(3) = y0(3) - pi
             y0(4) = -y0(4)
         end if
     end subroutine initial_state
@@ -529,6 +541,7 @@ contains
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
         type(piece_t) :: piece
+        real(dp) :: t_run
         integer :: src, i, why, kk
         logical :: found
 
@@ -594,12 +607,14 @@ contains
                     call finish_rest(st, hist, run)
                     exit
                 end if
+                t_run = st%t_lim
                 if (st%e >= 1.0_dp .and. st%t_lim >= huge(1.0_dp) .and. never_overturns(st)) then
-                    ! perpetual rocking: nothing more to learn without t_max
-                    call finish(st, hist, run, ROLL_RUN_TIME_LIMIT)
-                    exit
+                    ! perpetual rocking: nothing more to learn without t_max beyond the last
+                    ! output time
+                    t_run = st%t
+                    if (st%ng > 0) t_run = max(st%t, st%tg(st%ng))
                 end if
-                call advance(st, hist, run, st%t_lim, why)
+                call advance(st, hist, run, t_run, why)
                 if (st%stat /= SEISPULSE_SUCCESS) exit
                 select case (why)
                 case (WHY_REST)
@@ -752,10 +767,14 @@ contains
         end if
         psi_t = atan2(-dx, dy)
         st%y(1) = 0.0_dp
-        st%y(2) = psi_t + 2.0_dp * pi * anint((st%y(2) - psi_t) / (2.0_dp * pi))
+        ! upright, the pose is Rz(psi + phi_s): re-aiming psi turns phi_s back
+        psi_t = psi_t + 2.0_dp * pi * anint((st%y(2) - psi_t) / (2.0_dp * pi))
+        st%y(3) = st%y(3) - (psi_t - st%y(2))
+        st%y(2) = psi_t
         st%y(4:6) = 0.0_dp
         st%mode = 1
         st%from_zero = .true.
+        st%uplifting = .true.
         if (.not. st%ever_up) then
             st%ever_up = .true.
             run%t_uplift = t_u
@@ -789,8 +808,10 @@ contains
                 return
             end if
             st%steps = st%steps + 1
-            ! at most half the rocking time scale: one turning point of theta per step
-            st%h = min(st%h, 0.5_dp / st%p)
+            ! at most half the fastest time scale of theta: the rocking 1/p, the heading
+            ! 1/|psi'| and the nutation A/(C |omega_Z|): one turning point of theta per step
+            st%h = min(st%h, 0.5_dp / max(st%p, abs(st%y(5)), st%sys%ic &
+                       * abs(st%y(5) + st%y(6) * cos(st%y(1))) / st%sys%ia))
             clamped = .not. st%h < t_stop - st%t
             if (clamped) then
                 t_new = t_stop
@@ -800,8 +821,14 @@ contains
             hh = t_new - st%t
             if (hh < min_step(st, st%t)) then
                 if (st%from_zero) then
-                    ! no flight of any length leaves the base: not an uplift
-                    why = WHY_TOUCH
+                    ! no flight of any length leaves the base: not an uplift (WHY_TOUCH), or
+                    ! after an impact, rest
+                    if (st%uplifting) then
+                        why = WHY_TOUCH
+                    else
+                        call set_rest(st, hist, run, st%t)
+                        why = WHY_REST
+                    end if
                     return
                 else if (clamped) then
                     ! a sliver of a piece below the time resolution: step over it
@@ -813,18 +840,23 @@ contains
                     yv = st%y
                     call impact(st, hist, run, yv, EV_FLOOR, t_stop, why)
                     if (why /= WHY_REACHED) return
+                    ! the flight goes on from theta > 0: a fresh step size
+                    st%h = 0.05_dp / st%p
+                    rejected = .false.
                     cycle
                 end if
                 why = WHY_LIMIT
                 return
             end if
             call st%ode%step(st%sys, st%t, st%y, st%f, hh, t_new, y_new, f_new, err)
-            if (.not. err <= 1.0_dp) then
+            th1 = y_new(1)
+            if (.not. (err <= 1.0_dp .and. abs(th1) <= pi .and. all(ieee_is_finite(y_new)))) then
+                ! (a blown-up step can pass the error test relative to its own size)
                 rejected = .true.
                 st%h = hh * ode_dop853_factor(err)
+                if (err <= 1.0_dp) st%h = 0.25_dp * hh
                 cycle
             end if
-            th1 = y_new(1)
             if (st%from_zero .and. .not. th1 > 0.0_dp) then
                 ! the first step of a flight must leave the base: shorter
                 st%h = 0.25_dp * hh
@@ -834,6 +866,7 @@ contains
             if (rejected) fac = min(fac, 1.0_dp)
             rejected = .false.
             st%from_zero = .false.
+            st%uplifting = .false.
             th0 = st%y(1)
             w0 = st%y(4)
             w1 = y_new(4)
@@ -963,7 +996,10 @@ contains
         st%imp(st%n_imp) = st%t
         ! (L.11)
         if (ev == EV_IMPACT) yv(1) = 0.0_dp
+        ! Rz(psi) Rx(-theta) Rz(phi_s) = Rz(psi + pi) Rx(theta) Rz(phi_s - pi): the body
+        ! keeps its pose (psi + phi_s continuous)
         yv(2) = yv(2) + pi
+        yv(3) = yv(3) - pi
         yv(4) = st%e * abs(yv(4))
         st%y = yv
         call st%sys%rhs(st%t, st%y, st%f)
@@ -971,7 +1007,8 @@ contains
         acc0 = st%f(4)
         if (ev /= EV_IMPACT .and. rocking_energy(st) <= rest_tol * st%theta_c * st%sys%m &
                 * st%sys%g * st%sys%r) then
-            ! a floor pass left (almost) nothing but the turn about the vertical: rest
+            ! a floor pass left (almost) no rocking, only the turn round the rim at theta
+            ! ~ theta_floor: rest
             call set_rest(st, hist, run, st%t)
             why = WHY_REST
             return
@@ -996,7 +1033,9 @@ contains
             end if
             st%h = min(st%h, 0.5_dp * abs(st%y(4)) / abs(acc0))
         end if
-        st%from_zero = .true.
+        ! from theta = 0 the first step must rise (a floor pass keeps theta > 0)
+        st%from_zero = .not. st%y(1) > 0.0_dp
+        st%uplifting = .false.
     end subroutine impact
 
     !> Root of y(comp) - level on the dense output in [xa, xb] (fa, fb the values there).
@@ -1022,10 +1061,14 @@ contains
         type(roll_run_t), intent(inout) :: run
         real(dp), intent(in) :: t, y(NY)
         real(dp) :: col(ROLL_NOUT)
+        real(dp) :: e_rock
         call put_state(st, t, y, col, run)
-        if (st%sys%gr%src == RG_ZERO .and. ieee_is_finite(st%e_ref)) &
-            run%energy_drift = max(run%energy_drift, abs(col(ROLL_OUT_ENERGY) - st%e_ref) &
-                                   / st%e_ref)
+        if (st%sys%gr%src == RG_ZERO .and. ieee_is_finite(st%e_ref)) then
+            ! relative to the energy above rest at the start of the flight (L.9)
+            e_rock = st%e_ref - st%sys%m * st%sys%g * st%sys%h
+            if (e_rock > 0.0_dp) run%energy_drift = max(run%energy_drift, &
+                abs(col(ROLL_OUT_ENERGY) - st%e_ref) / e_rock)
+        end if
     end subroutine step_end
 
     !> The output columns of a rocking state y at t (and the run's friction and lift-off).
@@ -1114,6 +1157,7 @@ contains
         st%t = max(st%t, tt)
         st%t_rest = st%t
         st%from_zero = .false.
+        st%uplifting = .false.
         st%e_ref = ieee_value(1.0_dp, ieee_quiet_nan)
     end subroutine set_rest
 
@@ -1177,13 +1221,20 @@ contains
         safe = st%y(1) < st%theta_c .and. energy(st%sys, st%y) < st%sys%m * st%sys%g * st%big_r
     end function never_overturns
 
-    !> Energy above rest, E - m g h, less the turn about the vertical C omega_Z^2/2 (J): the
-    !> energy of the rocking (the rest rule of the floor passes, doc/rolling.md section 4).
+    !> Energy of the rocking left after a floor pass (J): the theta' part
+    !> J_n theta'^2/2 (J_n = n.I_P n, the inertia about the rim tangent through P), the
+    !> potential being the floor's (theta = theta_floor is kept at a floor pass). The turn
+    !> about the vertical and the run of the contact round the rim are not rocking
+    !> (the rest rule of the floor passes, doc/rolling.md section 4).
     pure function rocking_energy(st) result(en)
         type(roll_state_t), intent(in) :: st
         real(dp) :: en
-        en = energy(st%sys, st%y) - st%sys%m * st%sys%g * st%sys%h &
-             - 0.5_dp * st%sys%ic * (st%y(5) + st%y(6) * cos(st%y(1)))**2
+        real(dp) :: s, c, j_n(3)
+        s = sin(st%y(1))
+        c = cos(st%y(1))
+        j_n = inertia_p(st%sys, [0.0_dp, -s, c], [0.0_dp, st%sys%r * c - st%sys%h * s, &
+                        st%sys%r * s + st%sys%h * c], [1.0_dp, 0.0_dp, 0.0_dp])
+        en = 0.5_dp * j_n(1) * st%y(4)**2
     end function rocking_energy
 
     pure function min_step(st, t) result(h)
