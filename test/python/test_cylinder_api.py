@@ -459,6 +459,10 @@ def test_readme_example_runs(source_root):
     assert np.bincount(ns["cmp"].difference.ravel()).tolist() == [3599, 0, 1]
     np.testing.assert_allclose(ns["side"].cylinder_pga_g, [0.2965, 0.3725, 1.499], atol=6e-4)
     np.testing.assert_allclose(ns["side"].block_pga_g, [0.2965, 0.3724, 1.497], atol=6e-4)
+    run3d = ns["run3d"]
+    assert run3d.outcome == "time_limit" and run3d.n_impacts == 0
+    assert (round(run3d.theta_max, 4), round(run3d.friction_max, 3)) == (0.2753, 0.357)
+    assert round(run3d.psi[-1], 2) == -25.19
 
 
 def test_map_with_vertical_acceleration_is_the_blocks_map_with_kv():
