@@ -423,8 +423,8 @@ contains
         end if
         call check_run_options(where, t_max, rtol, errmsg)
         if (len(errmsg) > 0) return
-        if (task /= 'history' .and. given(gc, 'kv')) then
-            errmsg = where//'kv: only with what = ''history'' (a vertical ground ' &
+        if (task /= 'history' .and. task /= 'map' .and. given(gc, 'kv')) then
+            errmsg = where//'kv: only with what = ''history'' or ''map'' (a vertical ground ' &
                      //'acceleration a_v = kv a_g during the motion)'
             return
         end if
@@ -1193,13 +1193,13 @@ contains
         do i = 1, size(ys)
             call body_overturning_map(s%body, code, xs, ys(i:i), axes_code, &
                                       classes(i:i, :), st, msg, template=tpl, &
-                                      linearized=s%linearized, e=s%e_run, rtol=rtol)
+                                      linearized=s%linearized, e=s%e_run, rtol=rtol, kv=kv)
             if (st == SEISPULSE_SUCCESS .and. compare_block) &
                 call body_overturning_map(eq, code, xs, ys(i:i), axes_code, &
                                           classes_b(i:i, :), st, msg, template=tpl, &
-                                          linearized=s%linearized, rtol=rtol)
+                                          linearized=s%linearized, rtol=rtol, kv=kv)
             if (st /= SEISPULSE_SUCCESS) then
-                if (index(msg, 'rtol') == 1) then
+                if (index(msg, 'rtol') == 1 .or. index(msg, 'kv') == 1) then
                     errmsg = located(path, s%gc)//trim(msg)
                 else
                     errmsg = where//trim(msg)
@@ -1262,6 +1262,8 @@ contains
         comments(5) = 'axes = '''//trim(axes)//''' (the first two columns); rows: '// &
                       trim(names(2))//' outer, '//trim(names(1))//' inner'
         comments(6) = template_text(tpl)
+        if (abs(kv) > 0.0_dp) comments(6) = comments(6)//'; vertical ground acceleration ' &
+            //'a_v = kv a_g in every cell, kv = '//real_str(kv)//' (doc/rocking.md section 7)'
         if (compare_block) then
             comments(7) = 'class_block: the equivalent block (same p, same M_max, alpha = ' &
                           //real_str(eq%theta_c)//' rad, Housner e = '//real_str(eq%e) &

@@ -264,6 +264,34 @@ def test_map_axes_and_block_equivalence(driver, tmp_path):
     assert d["class"].tolist() == a["class"].tolist()
 
 
+def test_map_with_vertical_acceleration(driver, tmp_path):
+    """kv in a map: the classes are seispulse.rocking's overturning map with the same kv
+    (alpha = theta_c, the body's e), they differ from the map without it, and a cell where
+    a_v would fall below -g is an error located at &cylinder's kv."""
+    from seispulse import cylinder as sp_cyl
+    from seispulse import rocking as sp_rocking
+    body = sp_cyl.props(0.4, 1.6)
+    freq = [1.5, 3.0, 6.0]
+    amp = [1.2, 2.0, 3.0, 4.5, 6.0]
+    grid = (f"&map kind='sine_cycle', freq_ratio={', '.join(map(str, freq))}, "
+            f"amp_ratio={', '.join(map(str, amp))} /\n")
+    out = cylinder(driver, tmp_path, "r=0.4, h=1.6", "what='map', kv=-0.5", grid,
+                   output="k")["cylinder_map"]
+    ref = sp_rocking.overturning_map("sine_cycle", freq, amp, body.theta_c,
+                                     e=body.restitution, kv=-0.5)
+    assert out["class"].reshape(len(amp), len(freq)).tolist() == ref.tolist()
+    plain = cylinder(driver, tmp_path, "r=0.4, h=1.6", "what='map'", grid,
+                     output="n")["cylinder_map"]
+    assert out["class"].tolist() != plain["class"].tolist()
+    text = ("&run analysis='cylinder', output='bad' /\n&body r=0.4, h=1.6 /\n"
+            "&cylinder what='map', kv=-1.0 /\n&map kind='sine_cycle', freq_ratio=2.0, "
+            "amp_ratio=40.0 /\n")
+    proc = run(driver, tmp_path, text, name="bad.nml")
+    assert proc.returncode == 2
+    assert "bad.nml:3: &cylinder: kv = " in proc.stderr, proc.stderr
+    assert not list(tmp_path.glob("bad_*"))
+
+
 def test_map_compare_block(driver, tmp_path):
     """compare_block on the dimensional axes with a block of another slenderness: the
     block's classes are seispulse.rocking's map of that block (same p, its own tan alpha
