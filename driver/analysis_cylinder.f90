@@ -363,11 +363,11 @@ contains
             s%use_records = has_records
         case default
             if (has_pulse) then
-                errmsg = located(path, s%pin%group)//'only with what = ''history'''
+                errmsg = located(path, s%pin%group)//'only with what = ''history'' or ''roll'''
                 if (s%task == 'map') errmsg = located(path, s%pin%group)//'not used by ' &
                     //'what = ''map'' (the pulse family and shape of a map are in &map)'
             else if (has_records) then
-                errmsg = located(path, s%gr)//'only with what = ''history'''
+                errmsg = located(path, s%gr)//'only with what = ''history'' or ''roll'''
             else if (s%task == 'map' .and. find_group(groups, 'map') == 0) then
                 errmsg = path//': &map: missing group (what = ''map'' needs the grids: ' &
                          //'freq_ratio or freq_range, amp_ratio or amp_range, or on axes = ' &
@@ -546,6 +546,18 @@ contains
                      //'model only'
             return
         end if
+        ! keys that would be echoed but change nothing in this mode
+        if (s%task == 'props' .or. s%task == 'pushover') then
+            if (given(s%gb, 'e')) errmsg = where//'e: only with what = ''history'', ''map'' ' &
+                //'or ''roll'' (the restitution at the impacts; the table shows Housner''s)'
+            if (len(errmsg) == 0 .and. given(s%gb, 'model')) errmsg = where//'model: only ' &
+                //'with what = ''history'' or ''map'' (the equation of motion)'
+        end if
+        if (len(errmsg) == 0 .and. given(s%gb, 'equivalent_angle') .and. &
+            (s%task == 'pushover' .or. s%task == 'history' .or. s%task == 'roll')) &
+            errmsg = where//'equivalent_angle: only with what = ''props'' or ''map'' (the ' &
+                     //'slenderness of the equivalent body)'
+        if (len(errmsg) > 0) return
         if (given(s%gb, 'equivalent_angle')) then
             if (.not. in_open(equivalent_angle, 0.0_dp, 0.5_dp * pi)) then
                 errmsg = where//'equivalent_angle = '//real_str(equivalent_angle) &
@@ -1010,6 +1022,9 @@ contains
                 end if
                 if (st /= SEISPULSE_SUCCESS) then
                     failed(ir) = .true.
+                    ! the vertical record is kv times this one: the key at fault is kv
+                    if (index(msg, 'accel_v') == 1) msg = '&cylinder: kv = '//real_str(kv) &
+                        //': a_v = kv a_g falls below -g in this record: '//trim(msg)
                     outs(ir)%message = trim(msg)
                     write(error_unit, '(a)') 'seispulse: error: '//where &
                         //list_item('files', ir)//' = '''//s%recs(ir)%file//''': '//trim(msg)
@@ -1116,8 +1131,9 @@ contains
         type(setup_t), intent(in) :: s
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
-        character(len=:), allocatable :: where, grid
+        character(len=:), allocatable :: where, grid, grid_x
         character(len=512) :: msg, files(2), comments(9)
+        character(len=9) :: ykey
         character(len=12), allocatable :: names(:)
         character(len=4), allocatable :: units(:)
         real(dp), allocatable :: xs(:), ys(:), table(:, :)
@@ -1155,6 +1171,8 @@ contains
                              'linear', .true., .false., max_list, xs, grid, errmsg, &
                              required=.true., count_optional=.true., hint=.false., &
                              real_numbers=.true.)
+            ykey = 'amp_ratio'
+            grid_x = grid
             if (len(errmsg) == 0) call axis_values(s%gm, 'amp_ratio', 'amp', amp_ratio, &
                 amp_range, amp_count, 'linear', .false., .false., max_list, ys, grid, errmsg, &
                 required=.true., count_optional=.true., hint=.false., real_numbers=.true.)
@@ -1166,6 +1184,8 @@ contains
                              freq_hz_count, 'linear', .true., .false., max_list, xs, grid, &
                              errmsg, required=.true., count_optional=.true., hint=.false., &
                              real_numbers=.true.)
+            ykey = 'pga'
+            grid_x = grid
             if (len(errmsg) == 0) call axis_values(s%gm, 'pga', 'pga', pga, pga_range, &
                 pga_count, 'linear', .false., .false., max_list, ys, grid, errmsg, &
                 required=.true., count_optional=.true., hint=.false., real_numbers=.true.)
@@ -1199,7 +1219,12 @@ contains
                                           classes_b(i:i, :), st, msg, template=tpl, &
                                           linearized=s%linearized, rtol=rtol, kv=kv)
             if (st /= SEISPULSE_SUCCESS) then
-                if (index(msg, 'rtol') == 1 .or. index(msg, 'kv') == 1) then
+                if (index(msg, 'kv') == 1) then
+                    ! each row runs alone: name the user's amplitude, not the library's
+                    errmsg = located(path, s%gc)//'kv = '//real_str(kv)//': a_v = kv a_g ' &
+                             //'falls below -g at '//list_item(trim(ykey), i)//' = ' &
+                             //real_str(ys(i))//' (the body would leave the ground)'
+                else if (index(msg, 'rtol') == 1) then
                     errmsg = located(path, s%gc)//trim(msg)
                 else
                     errmsg = where//trim(msg)
@@ -1262,16 +1287,17 @@ contains
         comments(5) = 'axes = '''//trim(axes)//''' (the first two columns); rows: '// &
                       trim(names(2))//' outer, '//trim(names(1))//' inner'
         comments(6) = template_text(tpl)
-        if (abs(kv) > 0.0_dp) comments(6) = comments(6)//'; vertical ground acceleration ' &
+        if (abs(kv) > 0.0_dp) comments(6) = trim(comments(6))//'; vertical ground acceleration ' &
             //'a_v = kv a_g in every cell, kv = '//real_str(kv)//' (doc/rocking.md section 7)'
         if (compare_block) then
             comments(7) = 'class_block: the equivalent block (same p, same M_max, alpha = ' &
                           //real_str(eq%theta_c)//' rad, Housner e = '//real_str(eq%e) &
                           //') on the same '//trim(names(1))//', '//trim(names(2))
-            comments(8) = code_legend('diff', diff_names)//', -1 undecided'
+            comments(8) = code_legend('diff', diff_names)//', -1 undecided; grid: '//grid_x &
+                          //', '//grid
         else
             comments(7) = 'compare_block = .false.: no block map'
-            comments(8) = 'grid: '//grid
+            comments(8) = 'grid: '//grid_x//', '//grid
         end if
         comments(9) = 'input: '//trim(path)
         call write_tables(prefix, 'cylinder_map', comments, names, units, table, files, &
@@ -1329,7 +1355,8 @@ contains
         character(len=:), allocatable :: where, excitation
         character(len=512) :: msg, files(2), files2(2), comments(9)
         character(len=16) :: names(3 + ROLL_NOUT)
-        character(len=6) :: units(3 + ROLL_NOUT), onames(0:3)
+        character(len=6) :: units(3 + ROLL_NOUT)
+        character(len=16) :: onames(0:3)
         real(dp), allocatable :: ax(:), ay(:), accel(:), t(:), hist(:, :), table(:, :), &
                                  v(:), d(:), a(:), rt
         real(dp) :: one_time(1), one_hist(ROLL_NOUT, 1), t_last, t_exc, rec_dt, row(nsum), nan, &

@@ -283,12 +283,15 @@ def test_map_with_vertical_acceleration(driver, tmp_path):
     plain = cylinder(driver, tmp_path, "r=0.4, h=1.6", "what='map'", grid,
                      output="n")["cylinder_map"]
     assert out["class"].tolist() != plain["class"].tolist()
+    head = (tmp_path / "k_cylinder_map.txt").read_text()
+    assert "vertical ground acceleration a_v = kv a_g in every cell, kv = -0.5" in head
     text = ("&run analysis='cylinder', output='bad' /\n&body r=0.4, h=1.6 /\n"
-            "&cylinder what='map', kv=-1.0 /\n&map kind='sine_cycle', freq_ratio=2.0, "
-            "amp_ratio=40.0 /\n")
+            "&cylinder what='map', kv=-1.0 /\n&map axes='dimensional', kind='sine_cycle', "
+            "freq_hz=1.0, pga=1.0, 20.0, 40.0 /\n")
     proc = run(driver, tmp_path, text, name="bad.nml")
     assert proc.returncode == 2
-    assert "bad.nml:3: &cylinder: kv = " in proc.stderr, proc.stderr
+    assert ("bad.nml:3: &cylinder: kv = -1.0: a_v = kv a_g falls below -g at pga(2) = 20.0"
+            in proc.stderr), proc.stderr
     assert not list(tmp_path.glob("bad_*"))
 
 
@@ -395,6 +398,14 @@ def test_vertical_acceleration(driver, tmp_path):
     np.testing.assert_allclose(out["cylinder_history"]["theta"], run_rec.theta, rtol=1e-9,
                                atol=1e-12)
     assert OUTCOMES[int(out["cylinder"]["outcome"][0])] == run_rec.outcome
+    # a kv that lifts the body off in a record fails that row, naming kv
+    text = (f"&run analysis='cylinder', output='lift' /\n&body r={r}, h={h} /\n"
+            "&cylinder what='history', kv=-3.0 /\n"
+            f"&records files='rec.txt', format='column', dt={dt} /\n")
+    proc = run(driver, tmp_path, text, name="lift.nml")
+    assert proc.returncode == 1, proc.stderr
+    assert "files(1) = 'rec.txt': &cylinder: kv = -3.0: a_v = kv a_g falls below -g" \
+        in proc.stderr, proc.stderr
 
 
 ROLL_SUMMARY = ["theta_c", "p", "e", "outcome", "t_uplift", "n_impacts", "n_floor",
@@ -430,6 +441,8 @@ def test_example_roll(driver, source_root, tmp_path):
     planar = sp_rocking.simulate(blk, sp_pulse.define("sine_cycle", amp=0.8, amp_unit="g",
                                                       period=1.0), t=h["t"])
     assert ROLL_OUTCOMES[int(s["outcome"])] == "overturn"
+    assert "# outcome: 0 rest, 1 no_uplift, 2 overturn, 3 time_limit" in \
+        (out / "cylinder_roll_cylinder_roll.txt").read_text()
     assert planar.outcome == "overturn_one_impact" and s["n_impacts"] == 1
     assert s["t_impact1"] == pytest.approx(planar.t_impacts[0], rel=1e-8)
     assert s["t_end"] == pytest.approx(planar.t_end, rel=1e-8)
@@ -585,6 +598,12 @@ ERRORS = [
      ["&cylinder", "kv: only with what = 'history'"]),
     ("r=1.0, h=2.0, mass=1.0", "what='pushover', kv=0.2", "",
      ["&cylinder", "kv: only with what = 'history'"]),
+    ("r=1.0, h=2.0, mass=1.0, e=0.3", "what='props'", "",
+     ["&body", "e: only with what = 'history', 'map' or 'roll'"]),
+    ("r=1.0, h=2.0, mass=1.0, model='linearized'", "what='pushover'", "",
+     ["&body", "model: only with what = 'history' or 'map'"]),
+    ("r=1.0, h=2.0, equivalent_angle=0.3", "what='history'", "&pulse amp=3.0 /\n",
+     ["&body", "equivalent_angle: only with what = 'props' or 'map'"]),
     ("r=1.0, h=2.0", "what='history', kv=-3.0", "&pulse amp=5.0 /\n",
      ["&cylinder", "kv = -3", "below -g"]),
 ]

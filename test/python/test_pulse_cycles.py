@@ -150,3 +150,23 @@ def test_driver_map_cycles(driver, tmp_path):
     assert "cycles = 2" in (tmp_path / "m_rocking_map.txt").read_text()
     proc = _run(driver, tmp_path, text.format(0))
     assert proc.returncode == 2 and "&map: cycles = 0" in proc.stderr, proc.stderr
+
+
+@pytest.mark.parametrize("period", [2.3433216877729124, 0.9, 1.0 / 3.0])
+def test_end_decided_in_time(period):
+    """The pulse ends at t_end = T n as computed in floating point, even where t_end/T
+    rounds below n (T = 2.3433216877729124, n = 7): there the cosine is 0 (the value after
+    its final jump), and afterwards the ground rests, v = 0 and d constant."""
+    n = 7
+    t_end = period * n
+    after = np.array([t_end, t_end + 1.0, t_end + 50.0])
+    cos = P.cosine_cycle(after, 1.0, period, cycles=n)
+    assert cos.a.tolist() == [0.0, 0.0, 0.0]
+    assert cos.v.tolist() == [0.0, 0.0, 0.0] and cos.d.tolist() == [0.0, 0.0, 0.0]
+    sin = P.sine_cycle(after, 1.0, period, cycles=n)
+    assert sin.a.tolist() == [0.0, 0.0, 0.0] and sin.v.tolist() == [0.0, 0.0, 0.0]
+    np.testing.assert_allclose(sin.d, n * period**2 / (2 * np.pi), rtol=1e-14)
+    assert len(set(sin.d.tolist())) == 1
+    # just before the end the cosine is still at its peak
+    before = P.cosine_cycle(np.nextafter(t_end, 0.0), 1.0, period, cycles=n)
+    assert before.a == pytest.approx(1.0, abs=1e-12)
