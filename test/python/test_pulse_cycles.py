@@ -170,3 +170,10 @@ def test_end_decided_in_time(period):
     # just before the end the cosine is still at its peak
     before = P.cosine_cycle(np.nextafter(t_end, 0.0), 1.0, period, cycles=n)
     assert before.a == pytest.approx(1.0, abs=1e-12)
+
+
+def test_end_beyond_the_largest_number_refused():
+    """T n must be a finite number: T = 1e303 is valid alone, not with a million cycles."""
+    assert P.sine_cycle(1.0, 1.0, 1e303, cycles=1).a > 0.0
+    with pytest.raises(InvalidInputError, match=r"^cycles = 1000000\.0: the pulse would end"):
+        P.sine_cycle(1.0, 1.0, 1e303, cycles=1000000)
