@@ -945,12 +945,15 @@ contains
         case (PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE)
             call check_cycles(p%cycles, stat, errmsg)
             ! the end of the pulse, T n, must be a number (a valid T alone may not do);
-            ! compared by a division, which cannot overflow (n >= 1)
-            if (stat == SEISPULSE_SUCCESS .and. p%duration > huge(1.0_dp) / p%cycles) &
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'cycles = ' &
-                               //real_str(p%cycles)//': the pulse would end at period x ' &
-                               //'cycles = '//real_str(p%duration)//' x '//real_str(p%cycles) &
-                               //' s, beyond the largest number')
+            ! compared by a division, which cannot overflow (n >= 1); nested: Fortran does
+            ! not short-circuit, and a NaN n must not reach the division (-ffpe-trap)
+            if (stat == SEISPULSE_SUCCESS) then
+                if (p%duration > huge(1.0_dp) / p%cycles) &
+                    call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'cycles = ' &
+                                   //real_str(p%cycles)//': the pulse would end at period x ' &
+                                   //'cycles = '//real_str(p%duration)//' x ' &
+                                   //real_str(p%cycles)//' s, beyond the largest number')
+            end if
         case (PULSE_TRIANGULAR)
             if (ieee_is_nan(p%peak_frac) .or. p%peak_frac < 0.0_dp &
                 .or. p%peak_frac > 1.0_dp) then
