@@ -71,7 +71,7 @@ module seispulse_cylinder_roll
                                 PULSE_EXPONENTIAL
     use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_step_check, &
                                 record_in_si, pulse_pieces_init, record_pieces_init, &
-                                next_piece, onset_on_piece
+                                next_piece, onset_on_piece, record_step, piece_step
     use seispulse_cylinder, only: rocking_body_t
     implicit none
     private
@@ -584,7 +584,7 @@ contains
                 call next_piece(it, ax, 'cylinder_roll', piece, found, stat, errmsg)
                 if (stat /= SEISPULSE_SUCCESS) return
                 if (.not. found) exit pieces
-                call load_piece(st%sys%gr, piece, ax, ay, dt)
+                call load_piece(st%sys%gr, piece, ay, dt, piece_step(it))
                 if (st%t < piece%ta) then
                     ! no excitation before this piece (M&P window)
                     st%sys%gr%src = RG_ZERO
@@ -1403,23 +1403,25 @@ contains
         end select
     end subroutine ground_vec
 
-    !> Make a piece the current one; a record step i carries both components.
-    pure subroutine load_piece(gr, piece, ax, ay, dt)
+    !> Make a piece the current one; on a record, `piece` is step i of accel_x (the
+    !> iterator's record) and the same step of accel_y comes from record_step.
+    pure subroutine load_piece(gr, piece, ay, dt, i)
         type(roll_ground_t), intent(inout) :: gr
         type(piece_t), intent(in) :: piece
-        real(dp), intent(in) :: ax(:), ay(:), dt
-        integer :: i
+        real(dp), intent(in) :: ay(:), dt
+        integer, intent(in) :: i   !! the record step (piece_step), unused for a pulse
+        type(piece_t) :: py
         gr%ta = piece%ta
         gr%tb = piece%tb
         gr%ab = piece%ab
         if (gr%src == RG_RECORD) then
-            i = nint(piece%ta / dt) + 1
-            gr%ax0 = ax(i)
-            gr%ay0 = ay(i)
-            gr%abx = ax(i + 1)
-            gr%aby = ay(i + 1)
-            gr%sx = (ax(i + 1) - ax(i)) / dt
-            gr%sy = (ay(i + 1) - ay(i)) / dt
+            py = record_step(ay, i, dt)
+            gr%ax0 = piece%aa
+            gr%ay0 = py%aa
+            gr%abx = piece%ab
+            gr%aby = py%ab
+            gr%sx = piece%slope
+            gr%sy = py%slope
         end if
     end subroutine load_piece
 

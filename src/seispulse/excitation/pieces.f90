@@ -43,6 +43,7 @@ module seispulse_pieces
     public :: piece_t, piece_iter_t, pulse_pieces_check, record_pieces_check, record_step_check
     public :: record_in_si, g_product_max
     public :: pulse_pieces_init, record_pieces_init, next_piece, exceeds, onset_on_piece
+    public :: record_step, piece_step
 
     !> M&P: largest gamma accepted (64 gamma coarse pieces are generated).
     real(dp), parameter :: mp_gamma_max = 1.0e6_dp
@@ -270,6 +271,26 @@ contains
         it%step = 0
     end subroutine record_pieces_init
 
+    !> Sample step i of a record (from t = (i - 1) dt to i dt, 1 <= i < size(accel)): the
+    !> line through accel(i) and accel(i + 1), of slope (accel(i + 1) - accel(i))/dt. The
+    !> one form of a record step, for the record of the iterator and for any companion
+    !> record sampled with it (a vertical component, a second horizontal one).
+    pure function record_step(accel, i, dt) result(piece)
+        real(dp), intent(in) :: accel(:)   !! the samples
+        integer, intent(in) :: i           !! the step
+        real(dp), intent(in) :: dt         !! sampling interval (s)
+        type(piece_t) :: piece
+        piece = piece_t(real(i - 1, dp) * dt, real(i, dp) * dt, accel(i), accel(i + 1), &
+                        (accel(i + 1) - accel(i)) / dt)
+    end function record_step
+
+    !> The sample step of the last record piece `next_piece` returned (0 before the first).
+    pure function piece_step(it) result(i)
+        type(piece_iter_t), intent(in) :: it  !! a record's generator
+        integer :: i
+        i = it%step
+    end function piece_step
+
     !> Next piece [ta, tb] of positive length, a_g(ta+) = aa and a_g(tb-) = ab; found is
     !> false when there is none left. On a record step a_g is the line through (ta, aa)
     !> of slope (ab - aa)/dt (computed with dt, not tb - ta); a pulse piece has slope 0
@@ -293,11 +314,7 @@ contains
             if (it%step >= it%nsamp - 1) return
             it%step = it%step + 1
             i = it%step
-            ta = real(i - 1, dp) * it%dt
-            tb = real(i, dp) * it%dt
-            aa = accel(i)
-            ab = accel(i + 1)
-            piece = piece_t(ta, tb, aa, ab, (ab - aa) / it%dt)
+            piece = record_step(accel, i, it%dt)
             found = .true.
         else if (it%mp) then
             do while (it%kc <= it%ncoarse)

@@ -74,7 +74,7 @@ module seispulse_rocking_sim
                                 PULSE_RICKER
     use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_step_check, &
                                 record_in_si, pulse_pieces_init, record_pieces_init, next_piece, &
-                                exceeds, onset_on_piece
+                                exceeds, onset_on_piece, record_step, piece_step
     implicit none
     private
 
@@ -846,7 +846,7 @@ contains
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
         type(piece_t) :: piece
-        integer :: reason, dec, k, src_saved, k_step
+        integer :: reason, dec, k, src_saved
         logical :: found
 
         stat = SEISPULSE_SUCCESS
@@ -897,17 +897,13 @@ contains
         end if
         st%sys%sa = sim%alpha * real(st%s, dp)
 
-        k_step = 0
         pieces: do
             call next_piece(it, accel, 'rocking', piece, found, stat, errmsg)
             if (stat /= SEISPULSE_SUCCESS) return
             if (.not. found) exit pieces
             call load_piece(gr, piece)
-            if (gr%vsrc == V_RECORD) then
-                ! record pieces are the sample steps, in order
-                k_step = k_step + 1
-                call load_vert(gr, st%acc_v, k_step)
-            end if
+            if (gr%vsrc == V_RECORD) call load_vert(gr, record_step(st%acc_v, piece_step(it), &
+                                                                     gr%vdt))
             if (st%t < piece%ta) then
                 ! no excitation before this piece (M&P window): free flight or rest
                 if (st%mode == 1) then
@@ -1620,15 +1616,14 @@ contains
         end select
     end function ground_vert
 
-    !> Record step k (from t = (k - 1) dt to k dt) of the vertical record acc_v (m/s^2):
-    !> the line v0 + vslope (t - ta), vb at the end, as the horizontal of `load_piece`.
-    pure subroutine load_vert(gr, acc_v, k)
+    !> The vertical record's step (record_step of seispulse_pieces, m/s^2) as the line
+    !> v0 + vslope (t - ta), vb at the end, like the horizontal of `load_piece`.
+    pure subroutine load_vert(gr, step)
         type(ground_t), intent(inout) :: gr
-        real(dp), intent(in) :: acc_v(:)
-        integer, intent(in) :: k
-        gr%v0 = acc_v(k)
-        gr%vb = acc_v(k + 1)
-        gr%vslope = (gr%vb - gr%v0) / gr%vdt
+        type(piece_t), intent(in) :: step
+        gr%v0 = step%aa
+        gr%vb = step%ab
+        gr%vslope = step%slope
     end subroutine load_vert
 
     !> Make a piece of seispulse_pieces the current piece of gr: from its end on, a_g is
