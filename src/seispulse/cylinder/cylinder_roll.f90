@@ -70,7 +70,7 @@ module seispulse_cylinder_roll
     use seispulse_pulses, only: pulse_t, pulse_validate, pulse_accel, exp_consts_t, exp_consts, &
                                 PULSE_EXPONENTIAL
     use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_step_check, &
-                                record_in_si, pulse_pieces_init, record_pieces_init, &
+                                record_pieces_check, record_in_si, pulse_pieces_init, record_pieces_init, &
                                 next_piece, onset_on_piece, record_step, piece_step
     use seispulse_cylinder, only: rocking_body_t
     implicit none
@@ -329,16 +329,13 @@ contains
             end if
             gu = body%g
             if (present(g_rec)) gu = g_rec
-            call record_step_check(accel_x, dt, gu, stat, errmsg)
+            call record_step_check(accel_x, dt, gu, stat, errmsg, name='accel_x')
             if (stat /= SEISPULSE_SUCCESS) return
-            call record_step_check(accel_y, dt, gu, stat, errmsg)
-            if (stat /= SEISPULSE_SUCCESS) then
-                if (present(errmsg)) errmsg = 'accel_y: '//errmsg
-                return
-            end if
-            call record_in_si(accel_x, gu, ax_si, stat, errmsg)
+            call record_pieces_check(accel_y, stat, errmsg, name='accel_y')
             if (stat /= SEISPULSE_SUCCESS) return
-            call record_in_si(accel_y, gu, ay_si, stat, errmsg)
+            call record_in_si(accel_x, gu, ax_si, stat, errmsg, name='accel_x')
+            if (stat /= SEISPULSE_SUCCESS) return
+            call record_in_si(accel_y, gu, ay_si, stat, errmsg, name='accel_y')
             if (stat /= SEISPULSE_SUCCESS) return
             if (real(steps_per_sample, dp) * size(accel_x) &
                     > real(huge(1) - max_steps_default, dp)) then

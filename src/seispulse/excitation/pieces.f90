@@ -117,23 +117,22 @@ contains
 
     !> Can the samples of a record be cut into pieces? At least one sample, and every
     !> sample finite (a step with a NaN or an infinity is no monotone piece).
-    subroutine record_pieces_check(accel, stat, errmsg)
+    subroutine record_pieces_check(accel, stat, errmsg, name)
         real(dp), intent(in) :: accel(:)                      !! ground acceleration samples
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        character(len=*), intent(in), optional :: name        !! of the record (default accel)
         integer :: i
-        character(len=24) :: idx
         stat = SEISPULSE_SUCCESS
         if (size(accel) < 1) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
-                           'accel: the record is empty (at least one sample is needed)')
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, record_name(name) &
+                           //': the record is empty (at least one sample is needed)')
             return
         end if
         do i = 1, size(accel)
             if (.not. ieee_is_finite(accel(i))) then
-                write(idx, '(i0)') i
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel('//trim(idx) &
-                               //') = '//real_str(accel(i)) &
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, record_name(name) &
+                               //'('//int_str(i)//') = '//real_str(accel(i)) &
                                //': every sample must be a finite number')
                 return
             end if
@@ -142,12 +141,13 @@ contains
 
     !> A record with its time step and gravity, as every analysis on records takes them:
     !> dt and g finite and > 0, then `record_pieces_check` on the samples.
-    subroutine record_step_check(accel, dt, g, stat, errmsg)
+    subroutine record_step_check(accel, dt, g, stat, errmsg, name)
         real(dp), intent(in) :: accel(:)                      !! ground acceleration samples (g)
         real(dp), intent(in) :: dt                            !! time step (s)
         real(dp), intent(in) :: g                             !! gravity (m/s^2)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        character(len=*), intent(in), optional :: name        !! of the record (default accel)
         stat = SEISPULSE_SUCCESS
         if (.not. finite_positive(dt)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'dt = '//real_str(dt) &
@@ -156,27 +156,29 @@ contains
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(g) &
                            //': must be a finite number > 0 (m/s^2)')
         else
-            call record_pieces_check(accel, stat, errmsg)
+            call record_pieces_check(accel, stat, errmsg, name)
         end if
     end subroutine record_step_check
 
     !> A record in g taken to m/s^2, accel_si = g * accel, every product finite: a sample
     !> whose product would overflow is an error naming it, found before the product.
-    subroutine record_in_si(accel, g, accel_si, stat, errmsg)
+    subroutine record_in_si(accel, g, accel_si, stat, errmsg, name)
         real(dp), intent(in) :: accel(:)                      !! samples (g), finite
         real(dp), intent(in) :: g                             !! gravity (m/s^2), finite, > 0
         real(dp), allocatable, intent(out) :: accel_si(:)     !! g * accel (m/s^2)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        character(len=*), intent(in), optional :: name        !! of the record (default accel)
         real(dp) :: a_max
         integer :: i
         stat = SEISPULSE_SUCCESS
         a_max = g_product_max(g)
         do i = 1, size(accel)
             if (abs(accel(i)) > a_max) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel(' &
-                               //int_str(i)//') = '//real_str(accel(i)) &
-                               //': g * accel overflows (g = '//real_str(g)//' m/s^2)')
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, record_name(name) &
+                               //'('//int_str(i)//') = '//real_str(accel(i)) &
+                               //': g * '//record_name(name)//' overflows (g = ' &
+                               //real_str(g)//' m/s^2)')
                 return
             end if
         end do
@@ -270,6 +272,17 @@ contains
         it%dt = dt
         it%step = 0
     end subroutine record_pieces_init
+
+    !> The name of a record in messages: `name`, or accel.
+    pure function record_name(name) result(text)
+        character(len=*), intent(in), optional :: name
+        character(len=:), allocatable :: text
+        if (present(name)) then
+            text = name
+        else
+            text = 'accel'
+        end if
+    end function record_name
 
     !> Sample step i of a record (from t = (i - 1) dt to i dt, 1 <= i < size(accel)): the
     !> line through accel(i) and accel(i + 1), of slope (accel(i + 1) - accel(i))/dt. The

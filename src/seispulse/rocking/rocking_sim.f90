@@ -73,8 +73,9 @@ module seispulse_rocking_sim
                                 PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, PULSE_TRIANGULAR, &
                                 PULSE_RICKER
     use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_step_check, &
-                                record_in_si, pulse_pieces_init, record_pieces_init, next_piece, &
-                                exceeds, onset_on_piece, record_step, piece_step
+                                record_pieces_check, record_in_si, pulse_pieces_init, &
+                                record_pieces_init, next_piece, exceeds, onset_on_piece, &
+                                record_step, piece_step
     implicit none
     private
 
@@ -409,7 +410,6 @@ contains
         real(dp) :: th0, om0
         real(dp), allocatable :: accel_si(:)
         integer :: i
-        logical :: bad
 
         call empty_run(run)
         call rocking_block_validate(blk, stat, errmsg)
@@ -429,19 +429,11 @@ contains
                                //int_str(size(accel))//'), at the same dt')
                 return
             end if
-            ! finite samples, far from overflow in g accel_v(i) (dt and g checked above)
-            do i = 1, size(accel_v)
-                bad = .not. ieee_is_finite(accel_v(i))   ! NaN-safe: no comparison with NaN
-                if (.not. bad) bad = abs(accel_v(i)) > 0.5_dp * (huge(g) / max(g, 1.0_dp))
-                if (bad) then
-                    call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel_v(' &
-                                   //int_str(i)//') = '//real_str(accel_v(i)) &
-                                   //': must be a finite number (g; g = '//real_str(g) &
-                                   //' m/s^2)')
-                    return
-                end if
-            end do
-            st%acc_v = g * accel_v
+            ! finite samples, g accel_v(i) finite (dt and g checked above with accel)
+            call record_pieces_check(accel_v, stat, errmsg, name='accel_v')
+            if (stat /= SEISPULSE_SUCCESS) return
+            call record_in_si(accel_v, g, st%acc_v, stat, errmsg, name='accel_v')
+            if (stat /= SEISPULSE_SUCCESS) return
             do i = 1, size(accel_v)
                 if (st%acc_v(i) < -blk%g) then
                     call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel_v(' &
