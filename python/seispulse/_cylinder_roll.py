@@ -13,7 +13,7 @@ import numpy as np
 
 from . import _core
 from . import _fortran_codes as _f
-from ._seispulse import sp_cylinder_roll
+from ._seispulse import sp_cylinder_roll, sp_fetch_impacts
 from .errors import InvalidInputError
 from .pulse import Pulse
 
@@ -52,9 +52,6 @@ contact point x_contact, y_contact and the centre of mass x_g, y_g on the ground
 ground frame, G at the origin at t = 0), normal_force N (N), friction_demand |F_t|/N and
 energy (kinetic + potential in the ground frame, J). After overturning theta = pi/2 and
 the forces are NaN; after a time limit everything is NaN."""
-
-_NIMP = 1024
-
 
 def roll(body, pulse=None, *, accel_x=None, accel_y=None, dt=None, direction_deg=0.0,
          theta0=0.0, psi0=0.0, spin0=0.0, theta_rate0=0.0, psi_rate0=0.0, spin_rate0=0.0,
@@ -115,20 +112,17 @@ def roll(body, pulse=None, *, accel_x=None, accel_y=None, dt=None, direction_deg
         ("psi_rate0", psi_rate0), ("spin_rate0", spin_rate0))]
     direction = np.radians(_core.as_scalar("direction_deg", direction_deg))
     rtol = _core.as_scalar("rtol", rtol)
-    nimp = _NIMP
-    for _ in range(2):
-        out = sp_cylinder_roll(*args, e_run, kind, params, direction,
-                               ax, ay, step, g, *state, int(limit), t_lim, rtol, grid, nimp)
-        (hist, t_imp, n_imp, n_floor, outcome, t_uplift, theta_max, friction_max, t_lift_off,
-         energy_drift, t_end, n_steps, stat, msg) = out
-        if stat != 0 or n_imp <= nimp:
-            break
-        nimp = int(n_imp)
+    with _core.HELD_LOCK:
+        (hist, n_imp, n_floor, outcome, t_uplift, theta_max, friction_max, t_lift_off,
+         energy_drift, t_end, n_steps, stat, msg) = sp_cylinder_roll(
+            *args, e_run, kind, params, direction, ax, ay, step, g, *state, int(limit), t_lim,
+            rtol, grid)
+        impacts = sp_fetch_impacts(n_imp if stat == 0 else 0)
     _core.raise_for_status(stat, msg, rename={"t_grid": "t", "body%e": "body.e",
                                               "body%j_axis": "body.j_axis"})
     columns = [hist[k].copy() for k in range(len(ROLL_COLUMNS))]
     return RollRun(ROLL_OUTCOMES[outcome], float(t_uplift), int(n_imp),
-                   t_imp[:n_imp].copy(), int(n_floor), float(theta_max), float(friction_max),
+                   impacts, int(n_floor), float(theta_max), float(friction_max),
                    float(t_lift_off), float(energy_drift), float(t_end), int(n_steps),
                    grid.copy(), *columns)
 

@@ -6,11 +6,12 @@
 !> rebuilt by make_body. Excitation: kind > 0 a pulse (params as pulse_from_params, SI)
 !> along `direction` (rad); kind = 0 a two-component record accel_x, accel_y (nrec samples
 !> in units of g_rec m/s^2, step dt); kind < 0 free motion. t_max only when has_t_max /= 0.
-!> hist(ROLL_NOUT, ngrid) at tg; the first min(n_imp, nimp_max) impact times in t_imp.
+!> hist(ROLL_NOUT, ngrid) at tg; the n_imp impact times are held for sp_fetch_impacts
+!> (sp_runs_held, _wrap.f90: the run is never repeated to fetch them).
 subroutine sp_cylinder_roll(shape, r, h, mass, g, r_inner, j_o, has_j_axis, j_axis, e, kind, &
                             params, direction, nrec, accel_x, accel_y, dt, g_rec, theta0, psi0, &
                             spin0, theta_rate0, psi_rate0, spin_rate0, has_t_max, t_max, rtol, &
-                            ngrid, tg, hist, nimp_max, t_imp, n_imp, n_floor, outcome, t_uplift, &
+                            ngrid, tg, hist, n_imp, n_floor, outcome, t_uplift, &
                             theta_max, friction_max, t_lift_off, energy_drift, t_end, n_steps, &
                             stat, errmsg)
     use seispulse_kinds, only: dp
@@ -19,14 +20,15 @@ subroutine sp_cylinder_roll(shape, r, h, mass, g, r_inner, j_o, has_j_axis, j_ax
     use seispulse_cylinder, only: rocking_body_t
     use seispulse_cylinder_roll, only: cylinder_roll, roll_run_t, ROLL_NOUT
     use sp_cylinder_body, only: make_body
+    use sp_runs_held, only: held_impacts
     implicit none
     !f2py intent(hide) :: nrec, ngrid
-    integer, intent(in) :: shape, has_j_axis, kind, nrec, has_t_max, ngrid, nimp_max
+    integer, intent(in) :: shape, has_j_axis, kind, nrec, has_t_max, ngrid
     real(dp), intent(in) :: r, h, mass, g, r_inner, j_o, j_axis, e, params(PULSE_NPARAM)
     real(dp), intent(in) :: direction, accel_x(nrec), accel_y(nrec), dt, g_rec
     real(dp), intent(in) :: theta0, psi0, spin0, theta_rate0, psi_rate0, spin_rate0, t_max, rtol
     real(dp), intent(in) :: tg(ngrid)
-    real(dp), intent(out) :: hist(ROLL_NOUT, ngrid), t_imp(nimp_max)
+    real(dp), intent(out) :: hist(ROLL_NOUT, ngrid)
     integer, intent(out) :: n_imp, n_floor, outcome, n_steps, stat
     real(dp), intent(out) :: t_uplift, theta_max, friction_max, t_lift_off, energy_drift, t_end
     character(len=256), intent(out) :: errmsg
@@ -37,7 +39,7 @@ subroutine sp_cylinder_roll(shape, r, h, mass, g, r_inner, j_o, has_j_axis, j_ax
     real(dp), allocatable :: ax_opt(:), ay_opt(:), dt_opt, g_rec_opt, t_max_opt
     errmsg = ''
     hist = 0.0_dp
-    t_imp = 0.0_dp
+    if (allocated(held_impacts)) deallocate(held_impacts)
     n_imp = 0
     n_floor = 0
     outcome = 0
@@ -65,7 +67,7 @@ subroutine sp_cylinder_roll(shape, r, h, mass, g, r_inner, j_o, has_j_axis, j_ax
                        t_max=t_max_opt, rtol=rtol)
     if (stat /= SEISPULSE_SUCCESS) return
     n_imp = run%n_impacts
-    t_imp(1:min(n_imp, nimp_max)) = run%t_impacts(1:min(n_imp, nimp_max))
+    if (n_imp > 0) allocate(held_impacts, source=run%t_impacts(1:n_imp))
     n_floor = run%n_floor
     outcome = run%outcome
     t_uplift = run%t_uplift
