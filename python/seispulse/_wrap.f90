@@ -275,6 +275,7 @@ subroutine sp_rock(kind, params, nrec, accel, dt, alpha, p, e, g, linearized, ha
     type(rocking_block_t) :: blk
     type(rocking_run_t) :: run
     real(dp) :: t_lim
+    real(dp), allocatable :: av(:)
     errmsg = ''
     thg = 0.0_dp
     omg = 0.0_dp
@@ -298,22 +299,15 @@ subroutine sp_rock(kind, params, nrec, accel, dt, alpha, p, e, g, linearized, ha
             call rock_pulse(blk, pulse_from_params(kind, params), run, stat, errmsg, &
                             t_max=t_lim, theta0=theta0, omega0=omega0, rtol=rtol, kv=kv)
         end if
-    else if (has_v /= 0) then
-        if (ngrid > 0) then
-            call rock_record(blk, accel, dt, 1.0_dp, run, stat, errmsg, tg, thg, omg, &
-                             t_max=t_lim, theta0=theta0, omega0=omega0, rtol=rtol, &
-                             accel_v=accel_v)
-        else
-            call rock_record(blk, accel, dt, 1.0_dp, run, stat, errmsg, t_max=t_lim, &
-                             theta0=theta0, omega0=omega0, rtol=rtol, accel_v=accel_v)
-        end if
     else
+        ! without a vertical record av stays unallocated: absent (F2008 12.5.2.12)
+        if (has_v /= 0) allocate(av, source=accel_v)
         if (ngrid > 0) then
             call rock_record(blk, accel, dt, 1.0_dp, run, stat, errmsg, tg, thg, omg, &
-                             t_max=t_lim, theta0=theta0, omega0=omega0, rtol=rtol)
+                             t_max=t_lim, theta0=theta0, omega0=omega0, rtol=rtol, accel_v=av)
         else
             call rock_record(blk, accel, dt, 1.0_dp, run, stat, errmsg, t_max=t_lim, &
-                             theta0=theta0, omega0=omega0, rtol=rtol)
+                             theta0=theta0, omega0=omega0, rtol=rtol, accel_v=av)
         end if
     end if
     if (stat /= SEISPULSE_SUCCESS) return
