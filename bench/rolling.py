@@ -28,11 +28,12 @@ except ImportError:  # the peer is optional
     solve_ivp = None
 
 G = 9.80665
-R, H, M = 1.0, 3.0, 1000.0
+R, H, M = 1.0, 3.0, 1000.0                 # base radius (m), CoM height (m), mass (kg)
 A = M * (3 * R * R + 4 * H * H) / 12      # J_G, transverse (kg m^2)
 C = M * R * R / 2                         # J_axis (kg m^2)
 J_O = A + M * (R * R + H * H)
-E = 1 - 2 * M * R * R / J_O               # Housner: 1 - (2 m R^2/J_o) sin^2(theta_c)
+E = 1 - 2 * M * R * R / J_O               # Housner: 1 - (2 m R_c^2/J_o) sin^2(theta_c) with
+                                          # R_c the corner distance: R_c sin(theta_c) = R
 PGA, PERIOD, CYCLES = 0.4 * G, 1.0, 20
 DIRECTION = np.pi / 2                     # along the initial rocking plane (psi0 = 0)
 STATE0 = (0.2, 0.0, 0.0, 0.0, 0.0, 0.1)   # theta, psi, spin and their rates

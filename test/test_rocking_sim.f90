@@ -1394,7 +1394,9 @@ contains
             do s = 1, -1, -2
                 v0 = 0.2_dp
                 v1 = -0.3_dp
-                a = real(s, dp) * tu * 1.1_dp     ! in g: uplift where 1.1 = 1 + a_v/g
+                ! in g: uplift where 1.13 = 1 + a_v/g, inside the second sample step (t =
+                ! 1.4 dt), so the root is located inside a step, not found at a sample
+                a = real(s, dp) * tu * 1.13_dp
                 acc = a
                 do m = 1, 11
                     vert(m) = v0 + (v1 - v0) * real(m - 1, dp) / 10.0_dp
@@ -1402,8 +1404,8 @@ contains
                 call rock_record(blk, acc, dt, g0, run, stat, msg, accel_v=vert)
                 call check(error, stat, SEISPULSE_SUCCESS, 'vertical record: status')
                 if (allocated(error)) return
-                ! 1 + v(t) = 1.1: v = 0.1 at t = 10 dt (v0 - 0.1)/(v0 - v1)
-                t_ex = 10.0_dp * dt * (v0 - 0.1_dp) / (v0 - v1)
+                ! 1 + v(t) = 1.13: v = 0.13 at t = 10 dt (v0 - 0.13)/(v0 - v1)
+                t_ex = 10.0_dp * dt * (v0 - 0.13_dp) / (v0 - v1)
                 call check(error, run%t_uplift, t_ex, rtol=1.0e-12_dp, &
                            message='vertical record: uplift time')
                 if (allocated(error)) return

@@ -81,7 +81,8 @@ def solid(r, h, m=1.0, g=G):
     j_o = m * (3 * r * r + 4 * h * h) / 12 + m * big_r**2
     tc = math.atan2(r, h)
     return dict(theta_c=tc, R=big_r, J_o=j_o, p=math.sqrt(m * g * big_r / j_o),
-                e=max(0.0, 1 - 2 * m * big_r**2 / j_o * math.sin(tc)**2))
+                e=max(0.0, 1 - 2 * m * big_r**2 / j_o * math.sin(tc)**2),
+                io_over_mr2=j_o / (m * big_r**2))
 
 
 # ---------------------------------------------------------------- the examples
@@ -351,7 +352,7 @@ def test_history_on_records(driver, tmp_path):
                    f"&records files='rec.txt', 'nothere.txt', format='column', dt={dt} /\n",
                    status=1)
     ref = solid(r, h)
-    blk = sp_rocking.symmetric_block(ref["R"], ref["theta_c"], ref["J_o"] / ref["R"]**2)
+    blk = sp_rocking.symmetric_block(ref["R"], ref["theta_c"], ref["io_over_mr2"])
     s = out["cylinder"]
     h_tab = out["cylinder_history"]
     n = int(np.sum(~np.isnan(h_tab["t"])))
@@ -375,7 +376,7 @@ def test_vertical_acceleration(driver, tmp_path):
     from seispulse import rocking as sp_rocking
     r, h = 0.3, 1.2
     ref = solid(r, h)
-    blk = sp_rocking.symmetric_block(ref["R"], ref["theta_c"], ref["J_o"] / ref["R"]**2)
+    blk = sp_rocking.symmetric_block(ref["R"], ref["theta_c"], ref["io_over_mr2"])
     t = np.linspace(0.0, 3.0, 61)
     pul = sp_pulse.define("sine_cycle", amp=0.6, amp_unit="g", period=0.8)
     out = cylinder(driver, tmp_path, f"r={r}, h={h}", "what='history', kv=0.4, t_end=3.0, "
@@ -437,7 +438,7 @@ def test_example_roll(driver, source_root, tmp_path):
     s = {k: v[0] for k, v in read_table(out / "cylinder_roll_cylinder_roll.csv").items()}
     h = read_table(out / "cylinder_roll_cylinder_roll_history.csv")
     ref = solid(1.0, 3.0)
-    blk = sp_rocking.symmetric_block(ref["R"], ref["theta_c"], ref["J_o"] / ref["R"]**2)
+    blk = sp_rocking.symmetric_block(ref["R"], ref["theta_c"], ref["io_over_mr2"])
     planar = sp_rocking.simulate(blk, sp_pulse.define("sine_cycle", amp=0.8, amp_unit="g",
                                                       period=1.0), t=h["t"])
     assert ROLL_OUTCOMES[int(s["outcome"])] == "overturn"

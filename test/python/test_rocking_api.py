@@ -205,6 +205,10 @@ def test_vertical_zero_is_bit_identical(linearized):
     t = np.linspace(0, 4, 81)
     _same_run(R.simulate(block, pulse, linearized=linearized, t=t),
               R.simulate(block, pulse, linearized=linearized, t=t, kv=0.0))
+    # kv = 1e-300 takes the vertical code path with 1 + a_v/g == 1 exactly: the vertical
+    # right-hand side and thresholds must then give the horizontal-only run bit for bit
+    _same_run(R.simulate(block, pulse, linearized=linearized, t=t),
+              R.simulate(block, pulse, linearized=linearized, t=t, kv=1e-300))
     acc = 0.6 * G * np.sin(0.21 * np.arange(61))
     a = R.simulate(block, accel=acc, dt=0.02, linearized=linearized, t=t)
     assert a.n_impacts >= 1
