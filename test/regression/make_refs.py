@@ -481,27 +481,10 @@ def rocking_map_rows(nml):
         raise ValueError("rocking map references: the rectangular family only")
     alpha, _, _ = rocking_block(nml["block"], mpf(1))
 
-    def axis(name):
-        if f"{name}_ratio" in m:
-            return [mpf(x) for x in _as_list(m[f"{name}_ratio"])]
-        lo, hi = (float(x) for x in m[f"{name}_range"])
-        n = int(m.get(f"{name}_count", 21))
-        # the driver's doubles: lo + (hi - lo) * ((k - 1)/(n - 1)), the last one hi
-        return [mpf(lo + (hi - lo) * ((k - 1) / (n - 1))) for k in range(1, n)] + [mpf(hi)]
-
     rows = []
-    for a in axis("amp"):
-        for fr in axis("freq"):
-            f = 2 * mp.pi / fr                          # p = 1, T = 2 pi/freq_ratio
-            if a == 0:
-                cls = 0
-            else:
-                eta = alpha / (a * mp.tan(alpha))       # uplift at g alpha (linearized)
-                wall = 1 - mp.exp(-f)
-                if abs(eta - wall) < mpf(10)**-6 * wall or abs(eta - 1) < mpf(10)**-6:
-                    raise ValueError(f"cell ({fr}, {a}) is too close to a boundary")
-                cls = 1 if eta < wall else 0
-            rows.append([fr, a, mpf(cls)])
+    for a in axis_mp(m, "amp_ratio", "amp", 21):
+        for fr in axis_mp(m, "freq_ratio", "freq", 21):
+            rows.append([fr, a, mpf(map_class(alpha, fr, a))])   # p = 1, T = 2 pi/fr
     return rows
 
 
@@ -609,24 +592,21 @@ def equivalent_of(bd, angle=None):
     return rigid_body("block", b, big_r * mp.cos(a), bd["mass"] * bd["r"] / b, g)
 
 
-def cylinder_axis(group, lname, stem, count_default):
-    """The values of a list key or of a range (the driver's doubles, the last one exact)."""
-    if lname in group:
-        return [mpf(x) for x in _as_list(group[lname])]
-    lo, hi = (float(x) for x in group[f"{stem}_range"])
-    n = int(group.get(f"{stem}_count", count_default))
-    return [mpf(lo + (hi - lo) * ((k - 1) / (n - 1))) for k in range(1, n)] + [mpf(hi)]
+def axis_mp(group, lname, stem, count_default):
+    """The values of a list key or of a range, as mpf (axis_grid: the driver's doubles,
+    both ends exact), count_default when `<stem>_count` is not given."""
+    return [mpf(x) for x in axis_grid(group, lname, stem, count_default)]
 
 
 def cylinder_pushover_rows(bd, c):
     """F = W tan(theta_c - theta) at the centre of mass, M = W (r cos theta - h sin theta)
     about the pivot, M/(m g r), stable = theta <= theta_c (doc/cylinder.md)."""
     if "theta" in c or "theta_range" in c:
-        th = cylinder_axis(c, "theta", "theta", 21)
+        th = axis_mp(c, "theta", "theta", 21)
         us = [t / bd["theta_c"] for t in th]
     else:
         if "theta_ratio" in c or "theta_ratio_range" in c:
-            us = cylinder_axis(c, "theta_ratio", "theta_ratio", 21)
+            us = axis_mp(c, "theta_ratio", "theta_ratio", 21)
         else:
             us = [mpf(float(i / 20)) for i in range(21)]
         # the driver's theta: the double u times the double theta_c (stable: u <= 1)
@@ -773,7 +753,9 @@ def cylinder_record_rows(nml_path, nml, bd):
 
 
 def map_class(alpha, fr, a):
-    """Class of a linearized rectangular-pulse cell (see rocking_map_rows)."""
+    """Class of a cell of the linearized rectangular-pulse map (p = 1, f = 2 pi/fr, amp
+    ratio a): uplift at g alpha, so eta = alpha/(a tan alpha); overturns (1) below the
+    stability wall eta = 1 - e^(-f), safe (0) above it or without uplift."""
     if a == 0:
         return 0
     f = 2 * mp.pi / fr
@@ -799,10 +781,10 @@ def cylinder_map_rows(nml, bd):
     compare = bool(m.get("compare_block", False))
     eq = equivalent_of(bd, nml["body"].get("equivalent_angle")) if compare else None
     if dimensional:
-        xs, ys = cylinder_axis(m, "freq_hz", "freq_hz", 21), cylinder_axis(m, "pga", "pga", 21)
+        xs, ys = axis_mp(m, "freq_hz", "freq_hz", 21), axis_mp(m, "pga", "pga", 21)
     else:
-        xs = cylinder_axis(m, "freq_ratio", "freq", 21)
-        ys = cylinder_axis(m, "amp_ratio", "amp", 21)
+        xs = axis_mp(m, "freq_ratio", "freq", 21)
+        ys = axis_mp(m, "amp_ratio", "amp", 21)
     rows = []
     for y in ys:
         for x in xs:
@@ -1091,16 +1073,17 @@ def make_newmark_ref(nml_path, nml):
 # Analyses 'sdof', 'sdof_beta', 'sdof_shock': the linear oscillator, in mpmath
 # ---------------------------------------------------------------------------
 
-def axis_grid(group, lname, stem):
+def axis_grid(group, lname, stem, count_default=None):
     """The driver's axis in double precision: the list `lname`, or `<stem>_range` with
-    `<stem>_count` and spacing (linear: a + (b - a) (i/(n-1)); log: exp(log a + (log b -
-    log a) (i/(n-1)))), both ends exact; None if neither is given."""
+    `<stem>_count` (count_default when absent) and spacing (linear: a + (b - a) (i/(n-1));
+    log: exp(log a + (log b - log a) (i/(n-1)))), both ends exact; None if neither is
+    given."""
     if lname in group:
         return [float(x) for x in _as_list(group[lname])]
     if f"{stem}_range" not in group:
         return None
     a, b = (float(x) for x in group[f"{stem}_range"])
-    n = int(group[f"{stem}_count"])
+    n = int(group.get(f"{stem}_count", count_default))
     if group.get("spacing", "linear").lower() == "log":
         values = [math.exp(math.log(a) + (math.log(b) - math.log(a)) * (i / (n - 1)))
                   for i in range(n)]
