@@ -947,7 +947,7 @@ contains
     !> u < 1 (the closed form cancels to u^5 (2/15)), else the closed form.
     elemental real(dp) function seg_f(u)
         real(dp), intent(in) :: u
-        real(dp) :: x, s, c(2:22), p9, fac
+        real(dp) :: c(2:22), p9, fac
         integer :: n
         if (u < 1.0_dp) then
             p9 = 9.0_dp
@@ -957,12 +957,7 @@ contains
                 fac = fac * real((2 * n) * (2 * n + 1), dp)
                 c(n) = (0.25_dp * (p9 - 1.0_dp) - real(2 * n, dp)) / fac
             end do
-            x = u * u
-            s = c(22)
-            do n = 21, 2, -1
-                s = c(n) - x * s
-            end do
-            seg_f = s * x * x * u
+            seg_f = alternating_odd(c, u)
         else
             seg_f = sin(u) - u * cos(u) - sin(u)**3 / 3.0_dp
         end if
@@ -972,7 +967,7 @@ contains
     !> d_n u^(2n+1), d_n = 4^n (4^(n-1) - 1)/(3 (2n+1)!), for u < 1, else the closed form.
     elemental real(dp) function seg_g(u)
         real(dp), intent(in) :: u
-        real(dp) :: x, s, d(2:24), p4, fac
+        real(dp) :: d(2:24), p4, fac
         integer :: n
         if (u < 1.0_dp) then
             p4 = 4.0_dp
@@ -982,16 +977,26 @@ contains
                 fac = fac * real((2 * n) * (2 * n + 1), dp)
                 d(n) = p4 * (0.25_dp * p4 - 1.0_dp) / (3.0_dp * fac)
             end do
-            x = u * u
-            s = d(24)
-            do n = 23, 2, -1
-                s = d(n) - x * s
-            end do
-            seg_g = s * x * x * u
+            seg_g = alternating_odd(d, u)
         else
             seg_g = 0.25_dp * u - sin(2.0_dp * u) / 6.0_dp + sin(4.0_dp * u) / 48.0_dp
         end if
     end function seg_g
+
+    !> sum_{n=2}^{N} (-1)^n cf(n) u^(2n+1) by Horner's rule in u^2 (the series of (W.17)).
+    pure real(dp) function alternating_odd(cf, u)
+        real(dp), intent(in) :: cf(2:)
+        real(dp), intent(in) :: u
+        real(dp) :: x, s
+        integer :: n, top
+        top = ubound(cf, 1)
+        x = u * u
+        s = cf(top)
+        do n = top - 1, 2, -1
+            s = cf(n) - x * s
+        end do
+        alternating_odd = s * x * x * u
+    end function alternating_odd
 
     !> Pole a/r = J1/(A0 r) = (4/3) sin^3(u)/(2u - sin 2u) (W.16); 1 at u = 0.
     elemental real(dp) function seg_pole(u)
@@ -1008,7 +1013,7 @@ contains
     !> (it cancels to 0.4 u^5), else the closed form 2u - sin 2u - sin u + sin(3u)/3.
     elemental real(dp) function seg_one_minus_pole(u)
         real(dp), intent(in) :: u
-        real(dp) :: x, s, e(2:22), p9, p4, fac
+        real(dp) :: s, e(2:22), p9, p4, fac
         integer :: n
         if (u < 1.0_dp) then
             p9 = 9.0_dp
@@ -1020,12 +1025,7 @@ contains
                 fac = fac * real((2 * n) * (2 * n + 1), dp)
                 e(n) = (p9 - 2.0_dp * p4 - 1.0_dp) / fac
             end do
-            x = u * u
-            s = e(22)
-            do n = 21, 2, -1
-                s = e(n) - x * s
-            end do
-            s = s * x * x * u
+            s = alternating_odd(e, u)
         else
             s = 2.0_dp * u - sin(2.0_dp * u) - sin(u) + sin(3.0_dp * u) / 3.0_dp
         end if
