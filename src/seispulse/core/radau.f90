@@ -1,7 +1,7 @@
 !> Implicit Runge-Kutta integration of stiff systems y' = f(t, y): Radau IIA of order 5
 !> (3 stages), the algorithm of Hairer & Wanner's RADAU5 ([HW96] section IV.8), with its
-!> error estimate, collocation dense output and event location; doc/rocking.md section
-!> "Stiff systems: Radau IIA" (eqs. S.1-S.7).
+!> error estimate, collocation dense output and event location; doc/rocking.md section 8
+!> "Stiff systems: Radau IIA" ((R.12)-(R.19)).
 !>
 !> The interface is that of `ode_dop853_t` (seispulse_ode), so a model switches with one
 !> line; the step-size policy stays with the caller:
@@ -17,25 +17,25 @@
 !> The system's Jacobian comes from `sys%jacobian` (forward differences unless the model
 !> overrides it with its exact Jacobian). `radau5_solve` is a simple adaptive driver.
 !>
-!> Linear systems: the transformed form of RADAU5 (S.4): one real n x n LU of
+!> Linear systems: the transformed form of RADAU5 (R.15): one real n x n LU of
 !> (gamma/h) I - J and one complex n x n LU of ((alpha + i beta)/h) I - J (LAPACK
 !> dgetrf/zgetrf, solves dgetrs/zgetrs through seispulse_lapack), not the 3n x 3n system of
 !> the stages: per factorisation 2n^3/3 + 4 (2n^3/3) real operations against 2 (3n)^3/3
 !> (n = 4: 213 against 1152), per Newton iteration two solves of size n against one of 3n;
 !> for n = 4..8 both are short, but the transformed form is the smaller work, and it is the
-!> form whose error estimate (S.6) reuses the real factors.
+!> form whose error estimate (R.17) reuses the real factors.
 !>
 !> State kept between calls (so that no allocation happens after `init`): the Jacobian
 !> and its point, the factors and their h, and the collocation polynomial of the last
 !> step. A call that starts at the end of the last step (same t, bit-identical y) takes it
-!> as accepted: Newton starts from its polynomial extrapolated (S.5), and its Jacobian is
+!> as accepted: Newton starts from its polynomial extrapolated (R.16), and its Jacobian is
 !> kept when Newton contracted fast (theta <= 0.001); a call from the start of the last
 !> step is a retry after a rejection (the Jacobian there is exact and kept); any other call
 !> (a new state, e.g. after an impact) starts afresh. A failure with a kept Jacobian is
 !> retried once inside `step` with a fresh one.
 !>
 !> Tolerances: as RADAU5, the given (rtol, atol) are mapped to rtol' = 0.1 rtol^(2/3),
-!> atol' = rtol' atol/rtol (the estimate (S.6) is O(h^4) for a method of order 5), and the
+!> atol' = rtol' atol/rtol (the estimate (R.17) is O(h^4) for a method of order 5), and the
 !> weights are sc_i = atol'_i + rtol' |y_i| at the start of the step.
 module seispulse_radau
     use seispulse_kinds, only: dp, ik
@@ -50,7 +50,7 @@ module seispulse_radau
 
     public :: ode_radau5_t, ode_radau5_factor, radau5_solve
 
-    !> Collocation polynomial of the last step (S.7): y(t0 + x h), 0 <= x <= 1, and, as a
+    !> Collocation polynomial of the last step (R.18): y(t0 + x h), 0 <= x <= 1, and, as a
     !> function of x for the root finder, sgn y(comp) - level.
     type, extends(scalar_function) :: radau_dense_t
         integer :: n = 0                      !! state dimension
@@ -77,7 +77,7 @@ module seispulse_radau
         integer :: newton_iters = 0           !! Newton iterations of the last step
         integer :: n_jac = 0                  !! Jacobian evaluations so far
         integer :: n_lu = 0                   !! factorisations (pairs) so far
-        real(dp) :: rtol_i = 0.0_dp           !! internal rtol' (S.6)
+        real(dp) :: rtol_i = 0.0_dp           !! internal rtol' (R.17)
         real(dp), allocatable :: atol_i(:)    !! internal atol', n
         real(dp) :: fnewt = 0.0_dp            !! Newton stopping tolerance
         real(dp) :: faccon = 1.0_dp           !! Newton contraction factor kept between steps
@@ -122,10 +122,10 @@ module seispulse_radau
         procedure :: eval => event_eval
     end type event_fn
 
-    ! Radau IIA, s = 3 ([HW96] IV.8, RADAU5): nodes c1, c2, c3 = 1 (S.1); the eigenvalues
+    ! Radau IIA, s = 3 ([HW96] IV.8, RADAU5): nodes c1, c2, c3 = 1 (R.12); the eigenvalues
     ! gamma = 1/u1 and alpha +- i beta of A^-1 and the transformation T with
-    ! T^-1 A^-1 T = [gamma 0 0; 0 alpha -beta; 0 beta alpha] (S.4), T(3, :) = (t31, 1, 0);
-    ! the error-estimate weights dd_i = e_i/gamma (S.6).
+    ! T^-1 A^-1 T = [gamma 0 0; 0 alpha -beta; 0 beta alpha] (R.15), T(3, :) = (t31, 1, 0);
+    ! the error-estimate weights dd_i = e_i/gamma (R.17).
     real(dp), parameter :: sq6 = 2.449489742783178098197284074705891392_dp
     real(dp), parameter :: c1 = (4.0_dp - sq6) / 10.0_dp, c2 = (4.0_dp + sq6) / 10.0_dp
     real(dp), parameter :: c1m1 = c1 - 1.0_dp, c2m1 = c2 - 1.0_dp, c1mc2 = c1 - c2
@@ -161,7 +161,10 @@ module seispulse_radau
     real(dp), parameter :: uround = epsilon(1.0_dp)
     !> Newton increments beyond this (in units of the weights) count as divergence (the
     !> next right-hand side would be evaluated far outside any meaningful state).
-    real(dp), parameter :: dyno_max = 1.0e100_dp
+    real(dp), parameter :: dyno_max = 1.0e30_dp
+    !> Newton starts from the last polynomial only for h <= max_ratio times its step (a
+    !> cubic extrapolated further is no guess; RADAU5's own steps grow by 8 at most).
+    real(dp), parameter :: max_ratio = 10.0_dp
 
 contains
 
@@ -173,7 +176,7 @@ contains
     end function same
 
     !> Step-size factor h_new/h after a step with error norm err and newton_iters Newton
-    !> iterations (RADAU5 [HW96] IV.8, eq. S.8): fac = min(0.9, 0.9 (1 + 2 nit)/(newton_iters
+    !> iterations (RADAU5 [HW96] IV.8, (R.19)): fac = min(0.9, 0.9 (1 + 2 nit)/(newton_iters
     !> + 2 nit)) err^(-1/4) within [0.2, 8], nit = 7; 0.5 after a Newton failure (err = huge);
     !> 0.2 for a NaN err. Given the step's contraction rate theta (`ode%theta`), as RADAU5:
     !> 1 exactly when theta <= 0.001 and fac lies in [1, 1.2] after an accepted step (h
@@ -274,7 +277,7 @@ contains
         self%dense%n = n
         self%rtol = rtol
         self%atol(:) = atol
-        ! RADAU5's tolerance map (S.6)
+        ! RADAU5's tolerance map (R.17)
         self%rtol_i = 0.1_dp * rtol**(2.0_dp / 3.0_dp)
         self%atol_i(:) = self%rtol_i * (atol / rtol)
         self%fnewt = max(10.0_dp * uround / self%rtol_i, min(0.03_dp, sqrt(self%rtol_i)))
@@ -339,7 +342,9 @@ contains
             do attempt = 1, 2
                 ok = .true.
                 if (.not. (self%lu_ok .and. same(h, self%h_lu))) call decompose(self, h, ok)
-                if (ok) call newton(self, sys, t, y, h, t_new, start_ok, converged)
+                if (ok) call newton(self, sys, t, y, h, t_new, &
+                                    start_ok .and. abs(h) <= max_ratio * abs(self%prev_h), &
+                                    converged)
                 if (converged .or. fresh) exit
                 call new_jacobian(self, sys, t, y, f)   ! a kept Jacobian: retry with J(t, y)
                 fresh = .true.
@@ -377,7 +382,7 @@ contains
     end subroutine new_jacobian
 
     !> Factors of E1 = (gamma/h) I - J (real) and E2 = ((alpha + i beta)/h) I - J
-    !> (complex) (S.4); ok = .false. if one is singular.
+    !> (complex) (R.15); ok = .false. if one is singular.
     subroutine decompose(self, h, ok)
         type(ode_radau5_t), intent(inout) :: self
         real(dp), intent(in) :: h
@@ -401,7 +406,7 @@ contains
         self%h_lu = h
     end subroutine decompose
 
-    !> Simplified Newton iteration for the stage increments Z (S.3)-(S.5): starting values
+    !> Simplified Newton iteration for the stage increments Z (R.14)-(R.16): starting values
     !> from the previous step's polynomial (or 0), convergence monitored by the contraction
     !> rate theta; converged = .false. on divergence (theta >= 0.99), on a predicted miss of
     !> the tolerance within nit iterations, or after nit iterations.
@@ -419,7 +424,7 @@ contains
         converged = .false.
         associate(z => self%z, w => self%w, fs => self%fs, ys => self%ys, scal => self%scal)
             if (start_ok) then
-                ! (S.5): the last polynomial at t + c_i h
+                ! (R.16): the last polynomial at t + c_i h
                 c3q = h / self%prev_h
                 c1q = c1 * c3q
                 c2q = c2 * c3q
@@ -454,7 +459,7 @@ contains
                 call sys%rhs(t + c2 * h, ys, fs(:, 2))
                 ys = y + z(:, 3)
                 call sys%rhs(t_new, ys, fs(:, 3))
-                ! (S.4): T^-1 F - (Lambda/h) W, then the two solves
+                ! (R.15): T^-1 F - (Lambda/h) W, then the two solves
                 do m = 1, n
                     a1 = fs(m, 1)
                     a2 = fs(m, 2)
@@ -510,7 +515,7 @@ contains
         self%newton_iters = newt
     end subroutine newton
 
-    !> RADAU5's error estimate (S.6): err = || E1^-1 (f(t, y) + (dd . Z)/h) || in the
+    !> RADAU5's error estimate (R.17): err = || E1^-1 (f(t, y) + (dd . Z)/h) || in the
     !> weights; when it exceeds 1 on a first step or a retry, once more with
     !> f(t, y + err) in place of f(t, y) (the refinement for very stiff components).
     subroutine estimate(self, sys, t, y, f, h, refine, err)
@@ -541,7 +546,7 @@ contains
     end subroutine estimate
 
     !> Divided differences of the collocation polynomial through y (x = 0), y + Z1,
-    !> y + Z2, y + Z3 (x = c1, c2, 1) in RADAU5's form (S.7).
+    !> y + Z2, y + Z3 (x = c1, c2, 1) in RADAU5's form (R.18).
     pure subroutine collocation(z, c)
         real(dp), intent(in) :: z(:, :)
         real(dp), intent(out) :: c(:, :)
@@ -557,7 +562,7 @@ contains
     end subroutine collocation
 
     !> Dense output of the step just taken by `step` (same arguments): its collocation
-    !> polynomial (S.7), of local order 4 in the interior (exact at both ends). For a step
+    !> polynomial (R.18), of local order 4 in the interior (exact at both ends). For a step
     !> that is not the last one `step` computed (or that failed), the cubic Hermite
     !> interpolant of (y, f, y_new, f_new), of the same order.
     subroutine radau5_dense(self, sys, t, y, f, h, y_new, f_new)
@@ -661,7 +666,7 @@ contains
         x = min(max(x, xa), xb)
     end subroutine radau5_locate_event
 
-    !> y(t0 + x h) = y1 + s (c1 + (s - c2 + 1) (c2 + (s - c1 + 1) c3)), s = x - 1 (S.7);
+    !> y(t0 + x h) = y1 + s (c1 + (s - c2 + 1) (c2 + (s - c1 + 1) c3)), s = x - 1 (R.18);
     !> y0 and y1 exactly at x = 0 and 1.
     pure subroutine dense_value(self, x, y)
         class(radau_dense_t), intent(in) :: self  !! the dense output
