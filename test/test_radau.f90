@@ -302,6 +302,8 @@ contains
                        'error ratio in [24, 40]')
             if (allocated(error)) return
         end do
+        ! where Newton contracted fast the Jacobian was kept (RADAU5's theta test)
+        call check(error, ode%n_jac < 16 + 32, 'Jacobian reused across steps')
     end subroutine test_order
 
     !> Hairer's test set, problem VDPOL (eps = 1e-6, y(0) = (2, 0)): reference values at
