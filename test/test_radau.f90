@@ -309,25 +309,27 @@ contains
     !> Hairer's test set, problem VDPOL (eps = 1e-6, y(0) = (2, 0)): reference values at
     !> t = 1 and 2 (E. Hairer, "Test set for stiff ODEs", unige.ch/~hairer/testset,
     !> stiff/vdpol/res_exact_pic): (-1.863646254808130, 0.7535430865435460),
-    !> (1.706167732170456, -0.8928097010248257). The same test set starts RADAU5's driver
-    !> from y(0) = (2, -0.66), for which it publishes no reference; both start on the slow
-    !> manifold within a layer of O(eps), so from (2, -0.66) y agrees to O(eps).
+    !> (1.706167732170456, -0.8928097010248257), here to 1e-10 with rtol 1e-12. RADAU5's
+    !> example driver starts from y(0) = (2, -0.66), for which no reference is published:
+    !> both initial values reach the slow manifold within a layer of O(eps), so their
+    !> solutions differ by O(eps) (converged: 1.7e-7 and 3.5e-7 relative at t = 2); that
+    !> run, at the driver's rtol 1e-6, is checked to 1e-5.
     subroutine test_vdpol(error)
         type(test_error), allocatable, intent(out) :: error
         type(vdpol_t) :: sys
         real(dp) :: y(2)
         integer :: stat, n_steps
         y = [2.0_dp, 0.0_dp]
-        call radau5_solve(sys, 0.0_dp, 1.0_dp, y, 1.0e-10_dp, [1.0e-10_dp], stat)
+        call radau5_solve(sys, 0.0_dp, 1.0_dp, y, 1.0e-12_dp, [1.0e-12_dp], stat)
         call check(error, stat, SEISPULSE_SUCCESS, 'to t = 1')
         if (allocated(error)) return
-        call check(error, y, [-1.863646254808130_dp, 0.7535430865435460_dp], rtol=1.0e-8_dp, &
+        call check(error, y, [-1.863646254808130_dp, 0.7535430865435460_dp], rtol=1.0e-10_dp, &
                    message='y(1)')
         if (allocated(error)) return
-        call radau5_solve(sys, 1.0_dp, 2.0_dp, y, 1.0e-10_dp, [1.0e-10_dp], stat)
+        call radau5_solve(sys, 1.0_dp, 2.0_dp, y, 1.0e-12_dp, [1.0e-12_dp], stat)
         call check(error, stat, SEISPULSE_SUCCESS, 'to t = 2')
         if (allocated(error)) return
-        call check(error, y, [1.706167732170456_dp, -0.8928097010248257_dp], rtol=1.0e-8_dp, &
+        call check(error, y, [1.706167732170456_dp, -0.8928097010248257_dp], rtol=1.0e-10_dp, &
                    message='y(2)')
         if (allocated(error)) return
         ! RADAU5's own initial value, at the driver's tolerance
