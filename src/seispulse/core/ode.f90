@@ -278,6 +278,8 @@ contains
         do j = 1, n
             delta = sqrt(epsilon(1.0_dp) * max(1.0e-5_dp, abs(y(j))))
             yp(j) = y(j) + delta
+            ! beyond |y_j| ~ 2e16 the increment is below half an ulp: take one ulp
+            if (.not. (yp(j) > y(j))) yp(j) = nearest(y(j), 1.0_dp)
             delta = yp(j) - y(j)   ! the step actually taken (exact in floating point)
             call sys%rhs(t, yp, dfdy(:, j))
             dfdy(:, j) = (dfdy(:, j) - f) / delta

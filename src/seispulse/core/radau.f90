@@ -97,6 +97,7 @@ module seispulse_radau
         type(radau_dense_t) :: dense          !! dense output of the last step (`dense_setup`)
     contains
         procedure :: init => radau5_init
+        procedure :: restart => radau5_restart
         procedure :: step => radau5_step
         procedure :: dense_setup => radau5_dense
         procedure :: value => radau5_value
@@ -141,6 +142,8 @@ module seispulse_radau
     real(dp), parameter :: facl = 5.0_dp, facr = 0.125_dp
     real(dp), parameter :: quot1 = 1.0_dp, quot2 = 1.2_dp
     real(dp), parameter :: uround = epsilon(1.0_dp)
+    !> Shortest step tried: gamma/h and the error weights d_i/h stay finite above it.
+    real(dp), parameter :: min_h = 64.0_dp * tiny(1.0_dp)
     !> Newton increments beyond this (in units of the weights) count as divergence (the
     !> next right-hand side would be evaluated far outside any meaningful state).
     real(dp), parameter :: dyno_max = 1.0e30_dp
@@ -262,17 +265,34 @@ contains
         self%rtol_i = 0.1_dp * rtol**(2.0_dp / 3.0_dp)
         self%atol_i(:) = self%rtol_i * (atol / rtol)
         self%fnewt = max(10.0_dp * uround / self%rtol_i, min(0.03_dp, sqrt(self%rtol_i)))
-        self%faccon = 1.0_dp
-        self%theta = 1.0_dp
         self%newton_iters = 0
         self%n_jac = 0
         self%n_lu = 0
+        call radau5_restart(self)
+        if (any(.not. (self%atol_i >= tiny(1.0_dp)))) then
+            ! the error weights divide by atol' = rtol' atol/rtol: keep it a normal number
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'atol: too small for rtol (rtol'' atol/rtol below the smallest &
+                           &normal number)')
+            return
+        end if
+    end subroutine radau5_init
+
+    !> Forget the history (Jacobian, factors, last polynomials, Newton contraction): the
+    !> next step starts afresh. A model must call it whenever its right-hand side changes
+    !> other than through (t, y) (a contact switch, a new excitation piece with a jump,
+    !> parameters changed between steps), because `step` recognises a continuation by a
+    !> bit-identical (t, y) alone.
+    subroutine radau5_restart(self)
+        class(ode_radau5_t), intent(inout) :: self  !! the integrator
+        self%faccon = 1.0_dp
+        self%theta = 1.0_dp
         self%have_jac = .false.
         self%lu_ok = .false.
         self%have_last = .false.
         self%last_ok = .false.
         self%have_prev = .false.
-    end subroutine radau5_init
+    end subroutine radau5_restart
 
     !> One step of size h = t_new - t from (t, y), f = f(t, y): the collocation solution
     !> y_new at t_new, f_new = f(t_new, y_new) and the error norm err (<= 1: accept). A
@@ -305,6 +325,13 @@ contains
         if (start_ok) start_ok = same(t, self%prev_t1) .and. all(same(y, self%prev_y1))
         retry = self%have_last
         if (retry) retry = same(t, self%t0_last) .and. all(same(y, self%y0_last))
+        if (.not. (continuing .or. retry)) then
+            ! a new trajectory (e.g. after an impact): RADAU5's first-step Newton
+            ! contraction, not the last one's (a fast linear phase would let one
+            ! unconverged iteration pass the stop test)
+            self%faccon = 1.0_dp
+            self%theta = 1.0_dp
+        end if
         self%scal = self%atol_i + self%rtol_i * abs(y)
         fresh = .false.
         if (self%have_jac) fresh = same(t, self%t_jac) .and. all(same(y, self%y_jac))
@@ -319,7 +346,7 @@ contains
         self%last_ok = .false.
         converged = .false.
         self%newton_iters = 0
-        if (abs(h) > 0.0_dp .and. abs(h) < huge(1.0_dp)) then
+        if (abs(h) >= min_h .and. abs(h) < huge(1.0_dp)) then
             do attempt = 1, 2
                 ok = .true.
                 if (.not. (self%lu_ok .and. same(h, self%h_lu))) call decompose(self, h, ok)
