@@ -792,7 +792,38 @@ contains
             end if
         end do
         call check(error, nnan > 0, 'the gap has grid points')
+        if (allocated(error)) return
+        call block_jump_end(error)
     end subroutine block_jump
+
+    !> The same block so heavy that its branch ends at the jump: on the high side of the
+    !> square (K_ry) k Phi >= 2 W, on the low side (K_rx) no equilibrium. The end of the
+    !> branch is then theta(b' = 2 alpha, K_ry) < pi/4, and M_imp stays positive up to it:
+    !> no overturning angle (the branch's pi/4 row, without equilibrium, gave pi/4 for both).
+    subroutine block_jump_end(error)
+        type(test_error), allocatable, intent(out) :: error
+        real(dp), parameter :: b = 1.0_dp, al = 0.3_dp, h = 0.8739573702687164_dp, &
+                               w = 5467537.5275215954_dp, k = 5.0e7_dp
+        real(dp) :: th(2), curve(2, WP_NCOL), kry_full, k_hi, th_end
+        type(winkler_pushover_t) :: res
+        integer :: stat
+        kry_full = 3 * (2 * al * (2 * b)**3 / 12)**(-0.25_dp) * (b / al)**0.15_dp
+        k_hi = k * 3 * (2 * al * (2 * al)**3 / 12)**(-0.25_dp) / kry_full
+        th_end = 0.5_dp * asin(2 * w / (al * (2 * al)**2 * k_hi))
+        th = [th_end * (1.0_dp - 1.0e-9_dp), th_end * (1.0_dp + 1.0e-6_dp)]
+        call block_winkler_pushover(b, al, h, w, k, th, curve, res, stat, k_method=K_VARYING)
+        call check(error, stat, SEISPULSE_SUCCESS, 'stat')
+        if (allocated(error)) return
+        call check(error, res%theta_end, th_end, rtol=1.0e-12_dp, message='end at the jump')
+        if (allocated(error)) return
+        call check(error, th_end, 0.693984_dp, rtol=1.0e-6_dp, message='end (review value)')
+        if (allocated(error)) return
+        call check(error, curve(1, WP_M_IMPOSED) > 0.0_dp, 'M_imp > 0 at the end')
+        if (allocated(error)) return
+        call check(error, ieee_is_nan(curve(2, WP_B)), 'no equilibrium beyond the end')
+        if (allocated(error)) return
+        call check(error, ieee_is_nan(res%theta_overturn), 'no overturning on the branch')
+    end subroutine block_jump_end
 
     subroutine test_rigid_limit(error)
         type(test_error), allocatable, intent(out) :: error

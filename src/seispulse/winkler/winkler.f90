@@ -701,6 +701,35 @@ contains
         end do
     end subroutine invert_phi
 
+    !> Move t to the admissible side of a jump of k(t) Phi(t) across the target: the
+    !> smallest t' >= t with k Phi >= target, by bisection against the nearest admissible
+    !> scan point above t (to the last ulp; at most 200 halvings).
+    subroutine admissible_end(br, ts, ps, target, t)
+        type(branch_t), intent(in) :: br
+        real(dp), intent(in) :: ts(:), ps(:), target
+        real(dp), intent(inout) :: t
+        real(dp) :: lo, hi, mid
+        integer :: i
+        if (modulus(br, t) * phi_of(br, t) >= target) return
+        hi = -1.0_dp
+        do i = 1, size(ts)
+            if (.not. (ts(i) > t)) exit
+            if (ps(i) >= target) hi = ts(i)
+        end do
+        if (hi < 0.0_dp) return
+        lo = t
+        do i = 1, 200
+            mid = lo + 0.5_dp * (hi - lo)
+            if (.not. (mid > lo .and. mid < hi)) exit
+            if (modulus(br, mid) * phi_of(br, mid) >= target) then
+                hi = mid
+            else
+                lo = mid
+            end if
+        end do
+        t = hi
+    end subroutine admissible_end
+
     !> Scalars of the branch (W.18)-(W.19): theta_up, the end of the branch, the peaks of
     !> F/W and of M_imp, the overturning angle.
     subroutine branch_scalars(br, res, stat, errmsg, t_end_out)
@@ -733,6 +762,13 @@ contains
         ! the varying modulus across 2 W) the jump itself
         call invert_phi(br, ts, ps, 2.0_dp * br%w, t_end, found, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
+        if (.not. found) then
+            ! the branch ends at a jump of the modulus (or at the smallest contact of the
+            ! scan): its last admissible point, k Phi >= 2 W, is the end, below pi/4
+            call admissible_end(br, ts, ps, 2.0_dp * br%w, t_end)
+            call theta_at(br, t_end, q, found)
+            if (found) res%theta_end = q
+        end if
         if (present(t_end_out)) t_end_out = t_end
         call full_peaks(br, res%theta_up, res)
         call uplift_peak(br, t_end, fn_force, res%max_force_over_weight, res%theta_at_max, &
