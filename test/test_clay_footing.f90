@@ -632,34 +632,28 @@ contains
         if (allocated(error)) return
         co = full
         co%b2 = nan()
-        call gaussian_correction(0.3_dp, 1.0_dp, co, v1, stat, msg)
-        call expect('b2', stat, msg)
+        call bad_gauss('b2')
         if (allocated(error)) return
         co = full
         co%c1 = nan()
-        call gaussian_correction(0.3_dp, 1.0_dp, co, v1, stat, msg)
-        call expect('c1', stat, msg)
+        call bad_gauss('c1')
         if (allocated(error)) return
         co = full
         co%c2 = nan()
-        call gaussian_correction(0.3_dp, 1.0_dp, co, v1, stat, msg)
-        call expect('c2', stat, msg)
+        call bad_gauss('c2')
         if (allocated(error)) return
         co = full
         co%c1 = 1.0_dp
         co%c2 = -0.3_dp                   ! c(0.3) = 0
-        call gaussian_correction(0.3_dp, 1.0_dp, co, v1, stat, msg)
-        call expect('c1', stat, msg)
+        call bad_gauss('c1')
         if (allocated(error)) return
         co = full
         co%log_base = 1.0_dp
-        call gaussian_correction(0.3_dp, 1.0_dp, co, v1, stat, msg)
-        call expect('log_base', stat, msg)
+        call bad_gauss('log_base')
         if (allocated(error)) return
         co = full
         co%a_poly = [-2.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp]
-        call gaussian_correction(0.3_dp, 1.0_dp, co, v1, stat, msg)
-        call expect('a_poly', stat, msg)
+        call bad_gauss('a_poly')
         if (allocated(error)) return
         co = full
         co%k_el = 0.0_dp
@@ -683,6 +677,12 @@ contains
         call moment_capacity_circle(su0, r0, 1.5_dp, CAPACITY_TC00_PEAK, v1, stat, msg)
         call expect('chi', stat, msg)
     contains
+        subroutine bad_gauss(name)
+            character(len=*), intent(in) :: name
+            call gaussian_correction(0.3_dp, 1.0_dp, co, v1, stat, msg)
+            call expect(name, stat, msg)
+        end subroutine bad_gauss
+
         subroutine expect(name, st, m)
             character(len=*), intent(in) :: name, m
             integer, intent(in) :: st

@@ -130,15 +130,9 @@ contains
         n_ult = qnan
         sf = qnan
         chi = qnan
-        call check_positive(su, 'su', 'the undrained strength', ' (Pa)', stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-        call check_positive(r, 'r', 'the footing radius', ' (m)', stat, errmsg)
+        call check_soil(su, r, ncv, stat, errmsg, nc)
         if (stat /= SEISPULSE_SUCCESS) return
         call check_positive(weight, 'weight', 'the vertical load', ' (N)', stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-        ncv = NC_CIRCLE_CLAY
-        if (present(nc)) ncv = nc
-        call check_positive(ncv, 'nc', 'the bearing factor', ' (-)', stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         n_ult = ncv * su * pi * r * r                                       ! (W.60)
         if (.not. ieee_is_finite(n_ult)) then
@@ -501,19 +495,13 @@ contains
         real(dp), intent(in), optional :: nc                  !! bearing factor (default pi + 3)
         real(dp) :: ncv, adsu
         m_ult = qnan
-        call check_positive(su, 'su', 'the undrained strength', ' (Pa)', stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-        call check_positive(r, 'r', 'the footing radius', ' (m)', stat, errmsg)
+        call check_soil(su, r, ncv, stat, errmsg, nc)
         if (stat /= SEISPULSE_SUCCESS) return
         if (outside(chi, 0.0_dp, 1.0_dp, .false., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'chi = '//real_str(chi) &
                            //': 1/SF must be in [0, 1]')
             return
         end if
-        ncv = NC_CIRCLE_CLAY
-        if (present(nc)) ncv = nc
-        call check_positive(ncv, 'nc', 'the bearing factor', ' (-)', stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
         adsu = 2.0_dp * pi * r**3 * su                                      ! A D S_u
         select case (model)
         case (CAPACITY_TC00_PEAK)
@@ -548,6 +536,22 @@ contains
                            //': '//what//' must be a finite number > 0'//unit)
         end if
     end subroutine check_positive
+
+    !> su, r finite and > 0; the bearing factor ncv = nc (finite, > 0) or pi + 3.
+    subroutine check_soil(su, r, ncv, stat, errmsg, nc)
+        real(dp), intent(in) :: su, r
+        real(dp), intent(out) :: ncv
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        real(dp), intent(in), optional :: nc
+        ncv = NC_CIRCLE_CLAY
+        if (present(nc)) ncv = nc
+        call check_positive(su, 'su', 'the undrained strength', ' (Pa)', stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        call check_positive(r, 'r', 'the footing radius', ' (m)', stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        call check_positive(ncv, 'nc', 'the bearing factor', ' (-)', stat, errmsg)
+    end subroutine check_soil
 
     !> theta_up = 1/2 asin(N r/(2 K_R)) (W.65), NaN and none = .true. when the argument
     !> exceeds 1; inputs already checked.
