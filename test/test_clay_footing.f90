@@ -282,7 +282,7 @@ contains
         type(degradation_coeffs_t) :: co
         type(inelastic_pushover_t) :: res
         real(dp) :: b(nb), th(nb + 4), mw(nb + 4), curve(nb + 4, IP_NCOL), w, k, k_r0, m
-        real(dp) :: lo, hi, mid, t_lo, t_hi, th_up, fm
+        real(dp) :: lo, hi, mid, t_lo, t_hi, th_up, fm, m_max, f_max, t_mmax
         integer :: stat, i
         co%a_poly = 0.0_dp
         w = (pi + 3.0_dp) * su0 * pi * r0**2 / 20.0_dp        ! SF = 20, chi = 0.05
@@ -335,12 +335,27 @@ contains
         call check(error, ieee_is_nan(curve(nb + 4, IP_M_FOUND)) .and. &
                    ieee_is_nan(curve(nb + 4, IP_K_R)), 'beyond pi/4: NaN expected')
         if (allocated(error)) return
-        ! the peaks are those of the grid
-        call check(error, res%max_moment, maxval(curve(1:nb + 3, IP_M_IMPOSED)), &
-                   rtol=0.0_dp)
+        ! the peaks: at least the grid's, and those of a dense scan of b here
+        call check(error, res%max_moment >= maxval(curve(1:nb + 3, IP_M_IMPOSED)) .and. &
+                   res%max_force_over_weight >= maxval(curve(1:nb + 3, IP_FORCE)) / w, &
+                   'peaks below the grid values')
         if (allocated(error)) return
-        call check(error, res%max_force_over_weight, maxval(curve(1:nb + 3, IP_FORCE)) / w, &
-                   rtol=0.0_dp)
+        m_max = -huge(1.0_dp)
+        f_max = -huge(1.0_dp)
+        do i = 0, 200000
+            mid = 2.0_dp * r0 - (2.0_dp * r0 - b(nb)) * real(i, dp) / 200000.0_dp
+            call winkler_at_b(r0, k, w, mid, t_lo, m)
+            if (m - w * h0 * sin(t_lo) > m_max) then
+                m_max = m - w * h0 * sin(t_lo)
+                t_mmax = t_lo
+            end if
+            f_max = max(f_max, (m - w * h0 * sin(t_lo)) / (h0 * cos(t_lo) * w))
+        end do
+        call check(error, res%max_moment, m_max, rtol=1.0e-9_dp)
+        if (allocated(error)) return
+        call check(error, res%max_force_over_weight, f_max, rtol=1.0e-9_dp)
+        if (allocated(error)) return
+        call check(error, res%theta_at_max_moment, t_mmax, rtol=1.0e-3_dp)
         if (allocated(error)) return
         ! overturning: M(b) = W h sin(theta(b)) by bisection on b here
         lo = b(nb)

@@ -294,7 +294,9 @@ contains
     !> = K_R0 K_EL(theta)/G(chi; theta/theta_up) (W.69), K_R the SECANT stiffness (an
     !> assumption), M_found = K_R theta (W.70); 7. M_imp = M_found - W h sin(theta), F =
     !> M_imp/(h cos(theta)) (W.71). theta >= 0 ascending; a point beyond pi/4 (end of the
-    !> Winkler branch) has NaN in columns 2..IP_NCOL. Scalars in res: the peaks on the grid,
+    !> Winkler branch) has NaN in columns 2..IP_NCOL. Scalars in res: the peaks of M_imp and
+    !> F/W (the largest grid value, refined by golden section between its grid neighbours
+    !> when it is not at an end of the admissible grid),
     !> theta_overturn = the first zero of M_imp after the grid's first positive value, found
     !> by Brent on the grid interval where M_imp changes sign (W.72) (0 when K_R0 <= W h:
     !> upright equilibrium unstable; NaN when the grid shows no sign change), weak_zone
@@ -317,7 +319,7 @@ contains
         real(dp), intent(in), optional :: nc                  !! bearing factor (default pi + 3)
         type(imposed_moment_t) :: f
         real(dp) :: x, gv, m_found, m_imp, x_lo, x_hi, th_pos, f_pos, root
-        integer :: i, j, n, i_cross, i_pos, k
+        integer :: i, j, n, i_cross, i_pos, k, i_mom, i_frc, i_last
         logical :: any_ok
 
         curve = qnan
@@ -402,6 +404,9 @@ contains
         any_ok = .false.
         i_cross = 0
         i_pos = 0
+        i_mom = 1
+        i_frc = 1
+        i_last = 1
         do i = 1, n
             curve(i, IP_THETA) = theta(i)
             x = theta(i) / res%theta_up
@@ -422,18 +427,19 @@ contains
             x_hi = max(x_hi, x)
             if (.not. any_ok) then                ! the peaks start NaN: no comparison
                 res%max_moment = m_imp
-                res%theta_at_max_moment = theta(i)
                 res%max_force_over_weight = curve(i, IP_FORCE) / weight
-                res%theta_at_max = theta(i)
+                i_mom = i
+                i_frc = i
             end if
             if (m_imp > res%max_moment) then
                 res%max_moment = m_imp
-                res%theta_at_max_moment = theta(i)
+                i_mom = i
             end if
             if (curve(i, IP_FORCE) / weight > res%max_force_over_weight) then
                 res%max_force_over_weight = curve(i, IP_FORCE) / weight
-                res%theta_at_max = theta(i)
+                i_frc = i
             end if
+            i_last = i
             any_ok = .true.
             ! the last positive M_imp before the first point where it is not positive
             ! (i_cross < 0: no positive grid value before it)
@@ -449,6 +455,15 @@ contains
         end do
         res%weak_zone = res%sf < SF_WEAK_LIMIT .and. any_ok .and. x_lo <= x_weak_hi &
                         .and. x_hi >= x_weak_lo
+        if (any_ok) then
+            ! the peaks: the largest grid value, refined between its grid neighbours
+            res%theta_at_max_moment = theta(i_mom)
+            res%theta_at_max = theta(i_frc)
+            if (i_mom > 1 .and. i_mom < i_last) call refine_peak(f, .false., theta(i_mom - 1), &
+                theta(i_mom + 1), res%theta_at_max_moment, res%max_moment)
+            if (i_frc > 1 .and. i_frc < i_last) call refine_peak(f, .true., theta(i_frc - 1), &
+                theta(i_frc + 1), res%theta_at_max, res%max_force_over_weight)
+        end if
         ! (W.72) the overturning angle
         if (res%k_r0 <= weight * h) then
             res%theta_overturn = 0.0_dp         ! dM_imp/dtheta(0) = K_R0 - W h <= 0
@@ -670,6 +685,55 @@ contains
         call found_moment(f, theta, m_found, g)
         m_imp = m_found - f%weight * f%h * sin(theta)
     end function imposed_moment_value
+
+    !> Golden-section search for the largest M_imp (force = .false., N m) or F/W (.true.)
+    !> in [lo, hi] (rad, within [0, pi/4]); theta_best and v_best hold the best grid point
+    !> on entry and are replaced by a better point found.
+    subroutine refine_peak(f, force, lo, hi, theta_best, v_best)
+        type(imposed_moment_t), intent(in) :: f
+        logical, intent(in) :: force
+        real(dp), intent(in) :: lo, hi
+        real(dp), intent(inout) :: theta_best, v_best
+        real(dp), parameter :: gr = 0.618033988749894848204586834365638118_dp
+        real(dp) :: a, b, x1, x2, f1, f2
+        integer :: it
+        a = lo
+        b = hi
+        x1 = b - gr * (b - a)
+        x2 = a + gr * (b - a)
+        f1 = peak_value(x1)
+        f2 = peak_value(x2)
+        do it = 1, 200
+            if (b - a <= 4.0_dp * epsilon(1.0_dp) * b) exit
+            if (f1 >= f2) then
+                b = x2
+                x2 = x1
+                f2 = f1
+                x1 = b - gr * (b - a)
+                f1 = peak_value(x1)
+            else
+                a = x1
+                x1 = x2
+                f1 = f2
+                x2 = a + gr * (b - a)
+                f2 = peak_value(x2)
+            end if
+        end do
+        if (f1 > v_best) then
+            v_best = f1
+            theta_best = x1
+        end if
+        if (f2 > v_best) then
+            v_best = f2
+            theta_best = x2
+        end if
+    contains
+        real(dp) function peak_value(theta)
+            real(dp), intent(in) :: theta
+            peak_value = imposed_moment_value(f, theta)
+            if (force) peak_value = peak_value / (f%h * cos(theta) * f%weight)
+        end function peak_value
+    end subroutine refine_peak
 
     !> The root function of the overturning angle (W.72).
     function imposed_moment_eval(self, x) result(y)
