@@ -598,7 +598,8 @@ contains
         b = qnan
         c = qnan
         stat = SEISPULSE_SUCCESS
-        if (.not. (finite_positive(coeffs%log_base) .and. abs(coeffs%log_base - 1.0_dp) > 0.0_dp)) then
+        if (.not. (finite_positive(coeffs%log_base) .and. &
+                   abs(coeffs%log_base - 1.0_dp) > 0.0_dp)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'log_base = ' &
                            //real_str(coeffs%log_base)//': the base of log in G must be' &
                            //' a finite number > 0, not 1')
