@@ -16,6 +16,8 @@ module test_clay_footing
                                       moment_capacity_circle, IP_THETA, IP_K_R, IP_M_FOUND, &
                                       IP_M_IMPOSED, IP_FORCE, IP_X, IP_G, IP_NCOL, &
                                       CAPACITY_TC00_PEAK, CAPACITY_EFFECTIVE_WIDTH
+    use seispulse_winkler, only: winkler_pushover, winkler_pushover_t, WP_NCOL, WP_M_FOUND, &
+                                 WP_M_IMPOSED, WP_FORCE
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
     private
@@ -42,6 +44,8 @@ contains
                               test_uplift), &
                  new_unittest('G = 1, k_el = 1: the constant-k Winkler pushover (closed form)', &
                               test_pushover_winkler), &
+                 new_unittest('G = 1, k_el = 1: = winkler_pushover (columns, peaks, overturn)', &
+                              test_vs_winkler_pushover), &
                  new_unittest('a Gaussian: M_found = M_Winkler/G; chi > 0.1 scales K_R0', &
                               test_pushover_gauss), &
                  new_unittest('k_el = 1.28 vs 1.14: the same normalised curve, scale only', &
@@ -377,6 +381,54 @@ contains
         call check(error, res%theta_overturn < atan(r0 / h0) .and. &
                    res%theta_overturn > 0.9_dp * atan(r0 / h0), 'overturning angle off')
     end subroutine test_pushover_winkler
+
+    !> The same with seispulse_winkler's winkler_pushover (another implementation: its own
+    !> inversion theta -> contact): every column, theta_up, the peaks and theta_overturn.
+    subroutine test_vs_winkler_pushover(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(degradation_coeffs_t) :: co
+        type(inelastic_pushover_t) :: res
+        type(winkler_pushover_t) :: wres
+        integer, parameter :: n = 400
+        real(dp) :: th(n), curve(n, IP_NCOL), cw(n, WP_NCOL), w, k
+        integer :: stat, i
+        co%a_poly = 0.0_dp
+        w = (pi + 3.0_dp) * su0 * pi * r0**2 / 12.0_dp        ! SF = 12, chi < 0.1
+        k = 32.0_dp * g0 / (3.0_dp * pi * (1.0_dp - nu0) * r0)
+        do i = 1, n
+            th(i) = 0.9_dp * real(i - 1, dp) / (n - 1)        ! up to 0.9 rad: past pi/4
+        end do
+        call inelastic_pushover(r0, h0, w, g0, nu0, su0, co, th, curve, res, stat)
+        call check(error, stat == SEISPULSE_SUCCESS, 'inelastic_pushover failed')
+        if (allocated(error)) return
+        call winkler_pushover(r0, h0, w, k, th, cw, wres, stat)
+        call check(error, stat == SEISPULSE_SUCCESS, 'winkler_pushover failed')
+        if (allocated(error)) return
+        call check(error, res%theta_up, wres%theta_up, rtol=1.0e-14_dp)
+        if (allocated(error)) return
+        call check(error, res%theta_overturn, wres%theta_overturn, rtol=1.0e-9_dp)
+        if (allocated(error)) return
+        call check(error, res%max_moment, wres%max_moment, rtol=1.0e-9_dp)
+        if (allocated(error)) return
+        call check(error, res%max_force_over_weight, wres%max_force_over_weight, &
+                   rtol=1.0e-9_dp)
+        if (allocated(error)) return
+        do i = 1, n
+            call check(error, ieee_is_nan(curve(i, IP_M_FOUND)) .eqv. &
+                       ieee_is_nan(cw(i, WP_M_FOUND)), 'NaN points differ')
+            if (allocated(error)) return
+            if (ieee_is_nan(cw(i, WP_M_FOUND))) cycle
+            call check(error, curve(i, IP_M_FOUND), cw(i, WP_M_FOUND), rtol=1.0e-10_dp, &
+                       atol=1.0e-12_dp * w * r0)
+            if (allocated(error)) return
+            call check(error, curve(i, IP_M_IMPOSED), cw(i, WP_M_IMPOSED), rtol=1.0e-9_dp, &
+                       atol=1.0e-10_dp * w * r0)
+            if (allocated(error)) return
+            call check(error, curve(i, IP_FORCE), cw(i, WP_FORCE), rtol=1.0e-9_dp, &
+                       atol=1.0e-10_dp * w)
+            if (allocated(error)) return
+        end do
+    end subroutine test_vs_winkler_pushover
 
     !> The full method: chi = 0.4 > 0.1 (K_R0 = HK_R k_el (1.1 - chi)) and a Gaussian:
     !> M_found(theta) = M_Winkler(theta; k = 4 K_R0/(pi r^4))/G(chi; theta/theta_up).
