@@ -491,19 +491,9 @@ contains
         do i = 1, n
             xg(i) = 10.0_dp**(-2.0_dp + 3.5_dp * real(i - 1, dp) / (n - 1))
         end do
-        co%k_el = 1.28_dp
-        call inelastic_pushover(r0, h0, w, 10.0_dp * g0, nu0, su0, co, [0.0_dp], c1(1:1, :), &
-                                r1, stat)
-        call inelastic_pushover(r0, h0, w, 10.0_dp * g0, nu0, su0, co, xg * r1%theta_up, c1, &
-                                r1, stat)
-        call check(error, stat == SEISPULSE_SUCCESS, 'k_el = 1.28 failed')
+        call run_normalised(1.28_dp, c1, r1)
         if (allocated(error)) return
-        co%k_el = 1.14_dp
-        call inelastic_pushover(r0, h0, w, 10.0_dp * g0, nu0, su0, co, [0.0_dp], c2(1:1, :), &
-                                r2, stat)
-        call inelastic_pushover(r0, h0, w, 10.0_dp * g0, nu0, su0, co, xg * r2%theta_up, c2, &
-                                r2, stat)
-        call check(error, stat == SEISPULSE_SUCCESS, 'k_el = 1.14 failed')
+        call run_normalised(1.14_dp, c2, r2)
         if (allocated(error)) return
         call check(error, r1%k_r0 / r2%k_r0, 1.28_dp / 1.14_dp, rtol=1.0e-14_dp)
         if (allocated(error)) return
@@ -522,6 +512,19 @@ contains
         ! but the scale differs: the same x is a different theta
         call check(error, abs(c1(n, IP_THETA) / c2(n, IP_THETA) - 1.0_dp) > 0.1_dp, &
                    'theta scale should differ')
+    contains
+        !> The pushover at theta = x theta_up (theta_up from a first run at theta = 0).
+        subroutine run_normalised(k_el, c, res)
+            real(dp), intent(in) :: k_el
+            real(dp), intent(out) :: c(:, :)
+            type(inelastic_pushover_t), intent(out) :: res
+            co%k_el = k_el
+            call inelastic_pushover(r0, h0, w, 10.0_dp * g0, nu0, su0, co, [0.0_dp], &
+                                    c(1:1, :), res, stat)
+            call inelastic_pushover(r0, h0, w, 10.0_dp * g0, nu0, su0, co, xg * res%theta_up, &
+                                    c, res, stat)
+            call check(error, stat == SEISPULSE_SUCCESS, 'k_el run failed')
+        end subroutine run_normalised
     end subroutine test_k_el_scale
 
     subroutine test_capacity(error)
