@@ -1,5 +1,5 @@
 !> Circular footing on clay, the reduced-order method of [AD11] chapter 3 (doc/winkler.md,
-!> (W.60)-(W.79)): the bearing identity, k/k_el = 1 below chi = 0.1, the Gaussian correction's
+!> (W.60)-(W.74)): the bearing identity, k/k_el = 1 below chi = 0.1, the Gaussian correction's
 !> limits and peak, theta_up against the Winkler uplift angle, the pushover against the
 !> constant-k Winkler circle written here in closed form (parametrised by the contact width
 !> b: theta(b) and M(b), no root finding) with G = 1 and with a Gaussian, the overturning
@@ -54,6 +54,10 @@ contains
                               test_capacity), &
                  new_unittest('flags: weak zone SF < 1.25 near 0.1 theta_up; K_R0 <= W h', &
                               test_flags), &
+                 new_unittest('G /= 1: the scalars do not depend on the grid (mpmath)', &
+                              test_grid_independent), &
+                 new_unittest('G /= 1: peaks and overturning angle against mpmath', &
+                              test_gauss_oracle), &
                  new_unittest('bad input names the parameter', test_bad_input)]
     end subroutine collect_clay_footing
 
@@ -127,6 +131,7 @@ contains
         co%b2 = 0.2_dp
         co%c1 = 0.4_dp
         co%c2 = 0.3_dp
+        co%log_base = 10.0_dp
     end function example_coeffs
 
     ! ------------------------------------------------------------------------------
@@ -619,6 +624,104 @@ contains
                    ieee_is_nan(res%theta_up), 'no uplift expected')
     end subroutine test_flags
 
+    !> The problem of the mpmath oracles: r = 1 m, h = 3 m, S_u = 1e5 Pa, G = g0, nu = 0.3,
+    !> W = 0.4 (pi + 3) 1e5 pi N (chi = 0.4), k/k_el = 1.1 - chi, a(chi) = a0, b = b2, c = c2.
+    subroutine oracle_run(a0, b2, c2, th, res, stat)
+        real(dp), intent(in) :: a0, b2, c2, th(:)
+        type(inelastic_pushover_t), intent(out) :: res
+        integer, intent(out) :: stat
+        type(degradation_coeffs_t) :: co
+        real(dp) :: curve(size(th), IP_NCOL)
+        co%kr_c1 = 1.1_dp
+        co%kr_c2 = 1.0_dp
+        co%a_poly = [a0, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp]
+        co%b1 = 0.0_dp
+        co%b2 = b2
+        co%c1 = 0.0_dp
+        co%c2 = c2
+        co%log_base = 10.0_dp
+        call inelastic_pushover(r0, h0, 0.4_dp * (pi + 3.0_dp) * su0 * pi * r0**2, g0, nu0, &
+                                su0, co, th, curve, res, stat)
+    end subroutine oracle_run
+
+    !> A Gaussian dip of M_imp between the points of a coarse grid: M_imp has the zeros
+    !> 0.0159, 0.0341, 0.2691 (mpmath, the method in 40 digits); both grids must give the
+    !> first, and the same peaks.
+    subroutine test_grid_independent(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(inelastic_pushover_t) :: r1, r2
+        real(dp) :: fine(301)
+        integer :: stat, i
+        call oracle_run(10.0_dp, 0.5_dp, 0.2_dp, [0.0_dp, 0.01_dp, 0.05_dp, 0.1_dp, 0.2_dp, &
+                        0.3_dp], r1, stat)
+        call check(error, stat == SEISPULSE_SUCCESS, 'coarse grid failed')
+        if (allocated(error)) return
+        do i = 1, 301
+            fine(i) = 0.001_dp * real(i - 1, dp)
+        end do
+        call oracle_run(10.0_dp, 0.5_dp, 0.2_dp, fine, r2, stat)
+        call check(error, stat == SEISPULSE_SUCCESS, 'fine grid failed')
+        if (allocated(error)) return
+        call check(error, r1%theta_overturn, 0.0159178443992394_dp, rtol=1.0e-10_dp)
+        if (allocated(error)) return
+        call check(error, r2%theta_overturn, 0.0159178443992394_dp, rtol=1.0e-10_dp)
+        if (allocated(error)) return
+        call check(error, r1%max_moment, r2%max_moment, rtol=1.0e-13_dp)
+        if (allocated(error)) return
+        call check(error, r1%max_force_over_weight, r2%max_force_over_weight, rtol=1.0e-13_dp)
+        if (allocated(error)) return
+        call check(error, r1%theta_at_max_moment, r2%theta_at_max_moment, rtol=1.0e-6_dp)
+    end subroutine test_grid_independent
+
+    !> G /= 1 against the mpmath implementation of the method: (a) a tall wide bell (a = 20,
+    !> b = 0, c = 1): M_imp turns negative early, 6.46e-4 rad; a narrow bell below the
+    !> internal scan's first angle (the halving towards 0, closed form); (b) the example
+    !> coefficients with k_el = 1.14 at chi = 0.4: the peaks and the overturning angle.
+    subroutine test_gauss_oracle(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(degradation_coeffs_t) :: co
+        type(inelastic_pushover_t) :: res
+        real(dp) :: curve(3, IP_NCOL), w, th_up, k_r0, b, z
+        integer :: stat
+        call oracle_run(20.0_dp, 0.0_dp, 1.0_dp, [0.0_dp, 0.01_dp, 0.3_dp], res, stat)
+        call check(error, stat == SEISPULSE_SUCCESS, 'tall bell failed')
+        if (allocated(error)) return
+        call check(error, res%theta_overturn, 6.4626926987160e-4_dp, rtol=1.0e-10_dp)
+        if (allocated(error)) return
+        ! a narrow tall bell at theta ~ 7e-19 rad (the smallest angle of the geometric scan;
+        ! a = 1e12: M_imp < 0 on all of its scan b +- 6 c although K_R0 > W h, so the root is
+        ! found by halving towards 0): M_imp = K_R0 sin cos^2/G - W h sin; the first zero
+        ! in closed form (cos^2 = 1 in double): G = K_R0/(W h), log10 x = b - c z,
+        ! z = sqrt(2 ln(a/(K_R0/(W h) - 1)))
+        th_up = res%theta_up
+        k_r0 = res%k_r0
+        w = 0.4_dp * (pi + 3.0_dp) * su0 * pi * r0**2
+        b = log10(0.25_dp * pi * 2.0_dp**(-60) / th_up)
+        call oracle_run(1.0e12_dp, b, 0.01_dp, [0.0_dp, 0.01_dp], res, stat)
+        call check(error, stat == SEISPULSE_SUCCESS, 'bell at 1e-18 failed')
+        if (allocated(error)) return
+        z = sqrt(2.0_dp * log(1.0e12_dp / (k_r0 / (w * h0) - 1.0_dp)))
+        call check(error, res%theta_overturn, th_up * 10.0_dp**(b - 0.01_dp * z), &
+                   rtol=1.0e-10_dp)
+        if (allocated(error)) return
+        co = example_coeffs()
+        co%k_el = 1.14_dp
+        w = 0.4_dp * (pi + 3.0_dp) * su0 * pi * r0**2
+        call inelastic_pushover(r0, h0, w, g0, nu0, su0, co, [0.0_dp, 0.001_dp, 0.3_dp], &
+                                curve, res, stat)
+        call check(error, stat == SEISPULSE_SUCCESS, 'example failed')
+        if (allocated(error)) return
+        call check(error, res%max_moment, 332055.763107_dp, rtol=1.0e-9_dp)
+        if (allocated(error)) return
+        call check(error, res%theta_at_max_moment, 0.0642975_dp, rtol=1.0e-5_dp)
+        if (allocated(error)) return
+        call check(error, res%max_force_over_weight, 0.1437157659_dp, rtol=1.0e-9_dp)
+        if (allocated(error)) return
+        call check(error, res%theta_at_max, 0.0648117_dp, rtol=1.0e-5_dp)
+        if (allocated(error)) return
+        call check(error, res%theta_overturn, 0.269261309138_dp, rtol=1.0e-11_dp)
+    end subroutine test_gauss_oracle
+
     subroutine test_bad_input(error)
         type(test_error), allocatable, intent(out) :: error
         type(degradation_coeffs_t) :: co, full
@@ -636,6 +739,31 @@ contains
         if (allocated(error)) return
         call clay_bearing(su0, r0, nan(), v1, v2, v3, stat, msg)
         call expect('weight', stat, msg)
+        if (allocated(error)) return
+        ! out of scale [1e-30, 1e30]: an error before any product overflows (checked build)
+        call clay_bearing(1.0e308_dp, r0, w, v1, v2, v3, stat, msg)
+        call expect('su', stat, msg)
+        if (allocated(error)) return
+        call clay_bearing(1.0e20_dp, r0, 1.0e-310_dp, v1, v2, v3, stat, msg)
+        call expect('weight', stat, msg)
+        if (allocated(error)) return
+        call clay_bearing(su0, 1.0e200_dp, w, v1, v2, v3, stat, msg)
+        call expect('r', stat, msg)
+        if (allocated(error)) return
+        call clay_bearing(su0, r0, w, v1, v2, v3, stat, msg, nc=1.0e300_dp)
+        call expect('nc', stat, msg)
+        if (allocated(error)) return
+        call theta_uplift(w, 1.0e200_dp, 1.0e6_dp, v1, stat, msg)
+        call expect('r', stat, msg)
+        if (allocated(error)) return
+        call theta_uplift(w, r0, 1.0e-300_dp, v1, stat, msg)
+        call expect('k_r', stat, msg)
+        if (allocated(error)) return
+        call bad_push(r0, 1.0e300_dp, w, g0, nu0, su0, full, [0.0_dp, 0.1_dp], 'h')
+        if (allocated(error)) return
+        call bad_push(r0, h0, w, 1.0e300_dp, nu0, su0, full, [0.0_dp, 0.1_dp], 'g_mod')
+        if (allocated(error)) return
+        call bad_push(r0, h0, 1.0e-310_dp, g0, nu0, 1.0e20_dp, full, [0.0_dp, 0.1_dp], 'weight')
         if (allocated(error)) return
         ! SF <= 1 names weight and su
         call clay_bearing(su0, r0, 3.0_dp * w, v1, v2, v3, stat, msg)
@@ -700,6 +828,18 @@ contains
         co = full
         co%log_base = 1.0_dp
         call bad_gauss('log_base')
+        if (allocated(error)) return
+        co = full
+        co%log_base = nan()               ! not given: an error, no trap in a checked build
+        call bad_gauss('log_base')
+        if (allocated(error)) return
+        call bad_push(r0, h0, w, g0, nu0, su0, co, [0.0_dp, 0.1_dp], 'log_base')
+        if (allocated(error)) return
+        co%a_poly = 0.0_dp                ! a(chi) = 0: G = 1, log_base not needed
+        call gaussian_correction(0.3_dp, 1.0_dp, co, v1, stat, msg)
+        call check(error, stat == SEISPULSE_SUCCESS, trim(msg))
+        if (allocated(error)) return
+        call check(error, v1, 1.0_dp, rtol=0.0_dp)
         if (allocated(error)) return
         co = full
         co%a_poly = [-2.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp]

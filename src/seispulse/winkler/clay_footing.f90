@@ -1,16 +1,17 @@
 !> A rigid circular footing on undrained clay: the reduced-order (normalised stiffness
 !> degradation) method of [AD11] chapter 3 that turns the elastic Winkler pushover into an
 !> inelastic one without finite elements (doc/winkler.md section "Inelastic soil: the
-!> reduced-order method", (W.60)-(W.79)):
+!> reduced-order method", (W.60)-(W.74)):
 !> - vertical bearing: N_ult = n_c S_u pi r^2 with n_c = pi + 3 ([AD11], supported by
 !>   [SLSY04]), the factor of safety SF = N_ult/N and chi = 1/SF (W.60)-(W.61);
 !> - the initial-stiffness ratio k/k_el(chi) (W.63) and the Gaussian correction G(chi; x) of
 !>   the normalised curve (W.66)-(W.67): their coefficients are lost in [AD11] and must be
-!>   given by the user (degradation_coeffs_t; nothing is defaulted except k_el = 1 and the
-!>   base 10 of "log" in G, both stated assumptions);
+!>   given by the user (degradation_coeffs_t; nothing is defaulted except k_el = 1, a
+!>   stated assumption; the base of "log" in G is lost too and is the user's);
 !> - the uplift angle theta_up = 1/2 asin(N r/(2 K_R)) (W.65);
 !> - the inelastic pushover on a theta grid (W.68)-(W.72), the elastic curve being that of
-!>   the constant-k Winkler circle (winkler_master_curve of seispulse_winkler);
+!>   the constant-k Winkler circle (winkler_master_curve of seispulse_winkler); its scalars
+!>   (peaks, overturning angle) come from an internal scan of the branch, not the grid;
 !> - the moment capacity: [TC00]'s peak 0.8 A D S_u or the effective-width N D (1 - chi)/2
 !>   (W.73)-(W.74).
 !> Units: m, N, Pa (S_u, G), rad, N m, N m/rad; chi, SF, k/k_el, G dimensionless.
@@ -25,7 +26,8 @@ module seispulse_clay_footing
     use seispulse_special, only: pi
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_winkler_contact, only: FOOTING_CIRCLE
-    use seispulse_winkler, only: halfspace_rocking_stiffness, winkler_master_curve
+    use seispulse_winkler, only: halfspace_rocking_stiffness, winkler_master_curve, &
+                                 check_scale
     implicit none
     private
 
@@ -74,7 +76,8 @@ module seispulse_clay_footing
         real(dp) :: b2 = qnan           !! (lost)
         real(dp) :: c1 = qnan           !! c(chi) = c1 chi + c2 (lost)
         real(dp) :: c2 = qnan           !! (lost)
-        real(dp) :: log_base = 10.0_dp  !! base of "log" in G (unrecoverable; assumption 10)
+        real(dp) :: log_base = qnan     !! base B of "log" in G (lost; needed when a(chi)
+                                        !! /= 0; b and c are in log_B units)
     end type degradation_coeffs_t
 
     !> Scalars of the inelastic pushover (NaN where not computed).
@@ -88,11 +91,12 @@ module seispulse_clay_footing
         real(dp) :: k_r0 = qnan           !! initial rotational stiffness (N m/rad) (W.64)
         real(dp) :: theta_up = qnan       !! uplift angle (rad) (W.65); NaN: no uplift
         real(dp) :: a = qnan, b = qnan, c = qnan  !! Gaussian parameters at chi (W.67)
-        real(dp) :: max_moment = qnan     !! peak imposed moment on the grid (N m)
+        real(dp) :: max_moment = qnan     !! peak imposed moment on [0, pi/4] (N m)
         real(dp) :: theta_at_max_moment = qnan  !! its theta (rad)
-        real(dp) :: max_force_over_weight = qnan  !! peak F/W on the grid (-)
+        real(dp) :: max_force_over_weight = qnan  !! peak F/W on [0, pi/4] (-)
         real(dp) :: theta_at_max = qnan   !! its theta (rad)
-        real(dp) :: theta_overturn = qnan !! first zero of M_imp (rad); NaN if none found
+        real(dp) :: theta_overturn = qnan !! first zero of M_imp (rad); NaN if none in
+                                          !! (0, pi/4] or the start search fails
         logical :: no_uplift = .false.    !! N r/(2 K_R0) > 1: no uplift angle
         logical :: weak_zone = .false.    !! SF < 1.25 and the grid reaches theta ~ 0.1 theta_up
         logical :: kr_discontinuous = .false.  !! the user's k/k_el jumps at chi = 0.1
@@ -115,7 +119,8 @@ contains
     !> Vertical capacity of a circular footing of radius r on clay of undrained strength
     !> S_u: N_ult = n_c S_u pi r^2 (W.60), n_c = pi + 3 by default ([AD11], supported by
     !> [SLSY04]), SF = N_ult/weight and chi = 1/SF (W.61). SF <= 1 (vertical bearing
-    !> failure) is an error; n_ult, sf and chi are returned all the same.
+    !> failure) is an error; n_ult, sf and chi are returned all the same. su, r, weight and
+    !> nc must lie in [1e-30, 1e30] (in their units), so no product overflows.
     subroutine clay_bearing(su, r, weight, n_ult, sf, chi, stat, errmsg, nc)
         real(dp), intent(in) :: su                            !! undrained strength (Pa), > 0
         real(dp), intent(in) :: r                             !! footing radius (m), > 0
@@ -132,7 +137,7 @@ contains
         chi = qnan
         call check_soil(su, r, ncv, stat, errmsg, nc)
         if (stat /= SEISPULSE_SUCCESS) return
-        call check_positive(weight, 'weight', 'the vertical load', ' (N)', stat, errmsg)
+        call check_scale(weight, 'weight', 'the vertical load', 'N', stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         n_ult = ncv * su * pi * r * r                                       ! (W.60)
         if (.not. ieee_is_finite(n_ult)) then
@@ -232,7 +237,7 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         real(dp), intent(out), optional :: a, b, c            !! a(chi), b(chi), c(chi) (-)
-        real(dp) :: av, bv, cv
+        real(dp) :: av, bv, cv, ln_b
         g_corr = qnan
         if (present(a)) a = qnan
         if (present(b)) b = qnan
@@ -247,9 +252,9 @@ contains
                            //': theta/theta_up must be a finite number >= 0')
             return
         end if
-        call gauss_params(chi, coeffs, av, bv, cv, stat, errmsg)
+        call gauss_params(chi, coeffs, av, bv, cv, ln_b, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        g_corr = gauss_value(av, bv, cv, log(coeffs%log_base), x)
+        g_corr = gauss_value(av, bv, cv, ln_b, x)
         if (present(a)) a = av
         if (present(b)) b = bv
         if (present(c)) c = cv
@@ -258,7 +263,8 @@ contains
     !> Uplift angle theta_up = 1/2 asin(N r/(2 K_R)) (W.65) of a circle of radius r under
     !> the load N on the initial rotational stiffness K_R (the constant-k Winkler circle's
     !> with k = 4 K_R/(pi r^4)). When N r/(2 K_R) > 1 there is no uplift: theta_up = NaN,
-    !> no_uplift = .true. and stat = SEISPULSE_SUCCESS.
+    !> no_uplift = .true. and stat = SEISPULSE_SUCCESS. weight, r and k_r must lie in
+    !> [1e-30, 1e30] (in their units).
     subroutine theta_uplift(weight, r, k_r, theta_up, stat, errmsg, no_uplift)
         real(dp), intent(in) :: weight                        !! vertical load N (N), > 0
         real(dp), intent(in) :: r                             !! footing radius (m), > 0
@@ -270,11 +276,11 @@ contains
         logical :: none
         theta_up = qnan
         if (present(no_uplift)) no_uplift = .false.
-        call check_positive(weight, 'weight', 'the vertical load', ' (N)', stat, errmsg)
+        call check_scale(weight, 'weight', 'the vertical load', 'N', stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call check_positive(r, 'r', 'the footing radius', ' (m)', stat, errmsg)
+        call check_scale(r, 'r', 'the footing radius', 'm', stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call check_positive(k_r, 'k_r', 'the rotational stiffness', ' (N m/rad)', stat, errmsg)
+        call check_scale(k_r, 'k_r', 'the rotational stiffness', 'N m/rad', stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         call uplift_angle(weight, r, k_r, theta_up, none)
         if (present(no_uplift)) no_uplift = none
@@ -294,14 +300,16 @@ contains
     !> = K_R0 K_EL(theta)/G(chi; theta/theta_up) (W.69), K_R the SECANT stiffness (an
     !> assumption), M_found = K_R theta (W.70); 7. M_imp = M_found - W h sin(theta), F =
     !> M_imp/(h cos(theta)) (W.71). theta >= 0 ascending; a point beyond pi/4 (end of the
-    !> Winkler branch) has NaN in columns 2..IP_NCOL. Scalars in res: the peaks of M_imp and
-    !> F/W (the largest grid value, refined by golden section between its grid neighbours
-    !> when it is not at an end of the admissible grid),
-    !> theta_overturn = the first zero of M_imp after the grid's first positive value, found
-    !> by Brent on the grid interval where M_imp changes sign (W.72) (0 when K_R0 <= W h:
-    !> upright equilibrium unstable; NaN when the grid shows no sign change), weak_zone
-    !> when SF < 1.25 and the grid reaches theta/theta_up in [0.05, 0.2] (where [AD11]'s
-    !> collapse deviates), kr_discontinuous when the user's k/k_el jumps at chi = 0.1.
+    !> Winkler branch) has NaN in columns 2..IP_NCOL. Scalars in res, all independent of
+    !> the grid (from an internal scan of the branch [0, pi/4] that resolves the bell of G,
+    !> see branch_scalars): the peaks of M_imp and F/W on [0, pi/4] and their angles;
+    !> theta_overturn = the first zero of M_imp after its first positive value, by Brent on
+    !> the first scan interval where M_imp stops being positive (W.72) (0 when K_R0 <= W h:
+    !> upright equilibrium unstable; NaN when M_imp stays positive up to pi/4, or when the
+    !> halving towards 0 finds no positive value); weak_zone when SF < 1.25 and the grid
+    !> reaches theta/theta_up in [0.05, 0.2] (where [AD11]'s collapse deviates);
+    !> kr_discontinuous when the user's k/k_el jumps at chi = 0.1. r, h, weight, g_mod, su
+    !> and nc must lie in [1e-30, 1e30] (in their units).
     subroutine inelastic_pushover(r, h, weight, g_mod, nu, su, coeffs, theta, curve, res, &
                                   stat, errmsg, nc)
         real(dp), intent(in) :: r                             !! footing radius (m), > 0
@@ -318,8 +326,8 @@ contains
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         real(dp), intent(in), optional :: nc                  !! bearing factor (default pi + 3)
         type(imposed_moment_t) :: f
-        real(dp) :: x, gv, m_found, m_imp, x_lo, x_hi, th_pos, f_pos, root
-        integer :: i, j, n, i_cross, i_pos, k, i_mom, i_frc, i_last
+        real(dp) :: x, gv, m_found, m_imp, x_lo, x_hi
+        integer :: i, n
         logical :: any_ok
 
         curve = qnan
@@ -329,9 +337,9 @@ contains
                            //' (size(theta) x IP_NCOL)')
             return
         end if
-        call check_positive(h, 'h', 'the height of the centre of mass', ' (m)', stat, errmsg)
+        call check_scale(h, 'h', 'the height of the centre of mass', 'm', stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call check_positive(g_mod, 'g_mod', 'the shear modulus G', ' (Pa)', stat, errmsg)
+        call check_scale(g_mod, 'g_mod', 'the shear modulus G', 'Pa', stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         if (outside(nu, 0.0_dp, 0.5_dp, .true., .true.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'nu = '//real_str(nu) &
@@ -371,7 +379,7 @@ contains
                            //', r = '//real_str(r)//': K_R0 overflows (N m/rad)')
             return
         end if
-        call gauss_params(res%chi, coeffs, res%a, res%b, res%c, stat, errmsg)
+        call gauss_params(res%chi, coeffs, res%a, res%b, res%c, f%ln_base, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         ! 4. uplift angle (W.65)
         call uplift_angle(weight, r, res%k_r0, res%theta_up, res%no_uplift)
@@ -397,16 +405,10 @@ contains
         f%a = res%a
         f%b = res%b
         f%c = res%c
-        f%ln_base = log(coeffs%log_base)
         ! 5.-7. the curve (W.68)-(W.71)
         x_lo = huge(1.0_dp)
         x_hi = -huge(1.0_dp)
         any_ok = .false.
-        i_cross = 0
-        i_pos = 0
-        i_mom = 1
-        i_frc = 1
-        i_last = 1
         do i = 1, n
             curve(i, IP_THETA) = theta(i)
             x = theta(i) / res%theta_up
@@ -425,69 +427,12 @@ contains
             curve(i, IP_FORCE) = m_imp / (h * cos(theta(i)))                ! (W.71)
             x_lo = min(x_lo, x)
             x_hi = max(x_hi, x)
-            if (.not. any_ok) then                ! the peaks start NaN: no comparison
-                res%max_moment = m_imp
-                res%max_force_over_weight = curve(i, IP_FORCE) / weight
-                i_mom = i
-                i_frc = i
-            end if
-            if (m_imp > res%max_moment) then
-                res%max_moment = m_imp
-                i_mom = i
-            end if
-            if (curve(i, IP_FORCE) / weight > res%max_force_over_weight) then
-                res%max_force_over_weight = curve(i, IP_FORCE) / weight
-                i_frc = i
-            end if
-            i_last = i
             any_ok = .true.
-            ! the last positive M_imp before the first point where it is not positive
-            ! (i_cross < 0: no positive grid value before it)
-            if (i_cross == 0 .and. theta(i) > 0.0_dp) then
-                if (m_imp > 0.0_dp) then
-                    i_pos = i
-                else if (i_pos > 0) then
-                    i_cross = i
-                else
-                    i_cross = -i
-                end if
-            end if
         end do
         res%weak_zone = res%sf < SF_WEAK_LIMIT .and. any_ok .and. x_lo <= x_weak_hi &
                         .and. x_hi >= x_weak_lo
-        if (any_ok) then
-            ! the peaks: the largest grid value, refined between its grid neighbours
-            res%theta_at_max_moment = theta(i_mom)
-            res%theta_at_max = theta(i_frc)
-            if (i_mom > 1 .and. i_mom < i_last) call refine_peak(f, .false., theta(i_mom - 1), &
-                theta(i_mom + 1), res%theta_at_max_moment, res%max_moment)
-            if (i_frc > 1 .and. i_frc < i_last) call refine_peak(f, .true., theta(i_frc - 1), &
-                theta(i_frc + 1), res%theta_at_max, res%max_force_over_weight)
-        end if
-        ! (W.72) the overturning angle
-        if (res%k_r0 <= weight * h) then
-            res%theta_overturn = 0.0_dp         ! dM_imp/dtheta(0) = K_R0 - W h <= 0
-        else if (i_cross /= 0) then
-            j = abs(i_cross)
-            if (i_cross > 0) then
-                th_pos = theta(i_pos)
-                f_pos = curve(i_pos, IP_M_IMPOSED)
-            else
-                ! M_imp > 0 just above 0 (K_R0 > W h) but not at the first grid point: halve
-                th_pos = theta(j)
-                f_pos = 0.0_dp
-                do k = 1, 1074
-                    th_pos = 0.5_dp * th_pos
-                    f_pos = imposed_moment_value(f, th_pos)
-                    if (f_pos > 0.0_dp) exit
-                end do
-                if (.not. f_pos > 0.0_dp) return  ! no positive value found: NaN
-            end if
-            call find_root(f, th_pos, theta(j), root, stat, errmsg, fa_known=f_pos, &
-                           fb_known=curve(j, IP_M_IMPOSED))
-            if (stat /= SEISPULSE_SUCCESS) return
-            res%theta_overturn = root
-        end if
+        ! the scalars, independent of the grid: an internal scan of the branch [0, pi/4]
+        call branch_scalars(f, res, stat, errmsg)
     end subroutine inelastic_pushover
 
     ! ------------------------------------------------------------------------------
@@ -552,7 +497,8 @@ contains
         end if
     end subroutine check_positive
 
-    !> su, r finite and > 0; the bearing factor ncv = nc (finite, > 0) or pi + 3.
+    !> su, r and the bearing factor ncv = nc (default pi + 3) in [1e-30, 1e30] (the scale
+    !> check of seispulse_winkler: n_c S_u pi r^2 and every later product stay finite).
     subroutine check_soil(su, r, ncv, stat, errmsg, nc)
         real(dp), intent(in) :: su, r
         real(dp), intent(out) :: ncv
@@ -561,11 +507,11 @@ contains
         real(dp), intent(in), optional :: nc
         ncv = NC_CIRCLE_CLAY
         if (present(nc)) ncv = nc
-        call check_positive(su, 'su', 'the undrained strength', ' (Pa)', stat, errmsg)
+        call check_scale(su, 'su', 'the undrained strength', 'Pa', stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call check_positive(r, 'r', 'the footing radius', ' (m)', stat, errmsg)
+        call check_scale(r, 'r', 'the footing radius', 'm', stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call check_positive(ncv, 'nc', 'the bearing factor', ' (-)', stat, errmsg)
+        call check_scale(ncv, 'nc', 'the bearing factor', '-', stat, errmsg)
     end subroutine check_soil
 
     !> theta_up = 1/2 asin(N r/(2 K_R)) (W.65), NaN and none = .true. when the argument
@@ -584,27 +530,23 @@ contains
         end if
     end subroutine uplift_angle
 
-    !> a(chi), b(chi), c(chi) of (W.67) from the user's coefficients, checked.
-    subroutine gauss_params(chi, coeffs, a, b, c, stat, errmsg)
+    !> a(chi), b(chi), c(chi) of (W.67) and ln(B) of (W.66) from the user's coefficients,
+    !> checked; b, c and B only when a(chi) /= 0 (else NaN, NaN and ln_base = 1).
+    subroutine gauss_params(chi, coeffs, a, b, c, ln_base, stat, errmsg)
         real(dp), intent(in) :: chi
         type(degradation_coeffs_t), intent(in) :: coeffs
-        real(dp), intent(out) :: a, b, c
+        real(dp), intent(out) :: a, b, c, ln_base
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
         integer :: i
+        logical :: valid_base
         character(len=*), parameter :: lost = ': not given (NaN): the coefficients of ' &
             //'[AD11]''s Gaussian correction are lost and have no default'
         a = qnan
         b = qnan
         c = qnan
+        ln_base = 1.0_dp
         stat = SEISPULSE_SUCCESS
-        if (.not. (finite_positive(coeffs%log_base) .and. &
-                   abs(coeffs%log_base - 1.0_dp) > 0.0_dp)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'log_base = ' &
-                           //real_str(coeffs%log_base)//': the base of log in G must be' &
-                           //' a finite number > 0, not 1')
-            return
-        end if
         do i = 0, 4
             if (.not. ieee_is_finite(coeffs%a_poly(i))) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'a_poly('//int_str(i) &
@@ -624,7 +566,18 @@ contains
             a = qnan
             return
         end if
-        if (.not. abs(a) > 0.0_dp) return   ! G = 1: b and c not needed
+        if (.not. abs(a) > 0.0_dp) return   ! G = 1: b, c and log_base not needed
+        ! nested: a NaN log_base must not reach the ordered comparison
+        valid_base = finite_positive(coeffs%log_base)
+        if (valid_base) valid_base = abs(coeffs%log_base - 1.0_dp) > 0.0_dp
+        if (.not. valid_base) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'log_base = ' &
+                           //real_str(coeffs%log_base)//': the base B of log in G is lost' &
+                           //' in [AD11] and has no default; needed when a(chi) /= 0 (b and' &
+                           //' c are in log_B units): a finite number > 0, not 1')
+            return
+        end if
+        ln_base = log(coeffs%log_base)
         if (.not. ieee_is_finite(coeffs%b1)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'b1 = ' &
                            //real_str(coeffs%b1)//lost)
@@ -686,6 +639,118 @@ contains
         call found_moment(f, theta, m_found, g)
         m_imp = m_found - f%weight * f%h * sin(theta)
     end function imposed_moment_value
+
+    !> The scalars of the pushover from the branch theta in [0, pi/4], independent of the
+    !> user's grid (doc/winkler.md, "The pushover"): M_imp and F/W on an internal scan (a
+    !> geometric scan pi/4 2^(-k/8), k = 0..480, a uniform one in steps of pi/1024, and
+    !> where a(chi) /= 0 the bell log_B(x) = b + j |c|/4, j = -24..24, i.e. b +- 6 c in steps
+    !> of c/4); the peaks are the largest scan values refined by golden section between
+    !> their scan neighbours, theta_overturn (W.72) is Brent's root on the first scan
+    !> interval where M_imp stops being positive (0 when K_R0 <= W h; NaN when M_imp stays
+    !> positive up to pi/4, or when the first scan point is not positive and halving
+    !> towards 0 finds no positive value).
+    subroutine branch_scalars(f, res, stat, errmsg)
+        type(imposed_moment_t), intent(inout) :: f
+        type(inelastic_pushover_t), intent(inout) :: res
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        integer, parameter :: n_geo = 481, n_uni = 255, n_bell = 49
+        !> |b|, |c| beyond which the bell is not scanned: it is then either out of reach
+        !> (theta = theta_up B^b) or so wide that the other scans resolve it
+        real(dp), parameter :: bell_max = 1.0e4_dp
+        real(dp) :: ts(n_geo + n_uni + n_bell), mv(n_geo + n_uni + n_bell), fv(n_geo + n_uni &
+                    + n_bell), t, u, lnx, lo, hi, th_pos, f_pos, root
+        integer :: i, j, k, m
+        logical :: bell
+        stat = SEISPULSE_SUCCESS
+        m = 0
+        do k = 0, n_geo - 1
+            m = m + 1
+            ts(m) = 0.25_dp * pi * 2.0_dp**(-real(k, dp) / 8.0_dp)
+        end do
+        do k = 1, n_uni
+            m = m + 1
+            ts(m) = 0.25_dp * pi * real(k, dp) / real(n_uni + 1, dp)
+        end do
+        ! nested: b and c are NaN when a = 0 (no ordered comparison with NaN)
+        bell = abs(f%a) > 0.0_dp
+        if (bell) bell = abs(f%b) <= bell_max .and. abs(f%c) <= bell_max
+        if (bell) then
+            do k = -(n_bell - 1) / 2, (n_bell - 1) / 2
+                u = f%b + abs(f%c) * real(k, dp) / 4.0_dp
+                lnx = u * f%ln_base                                         ! ln(x) (W.66)
+                if (lnx < -700.0_dp .or. lnx > log(0.25_dp * pi / f%theta_up)) cycle
+                t = f%theta_up * exp(lnx)
+                if (.not. (t > 0.0_dp .and. t <= 0.25_dp * pi)) cycle
+                m = m + 1
+                ts(m) = t
+            end do
+        end if
+        do i = 2, m                                 ! insertion sort, ascending
+            t = ts(i)
+            j = i - 1
+            do while (j >= 1)
+                if (ts(j) <= t) exit
+                ts(j + 1) = ts(j)
+                j = j - 1
+            end do
+            ts(j + 1) = t
+        end do
+        do i = 1, m
+            mv(i) = imposed_moment_value(f, ts(i))
+            fv(i) = mv(i) / (f%h * cos(ts(i)) * f%weight)
+        end do
+        ! the peaks (the scan starts above 0, where M_imp = 0)
+        i = maxloc(mv(1:m), dim=1)
+        res%max_moment = mv(i)
+        res%theta_at_max_moment = ts(i)
+        if (i < m) then
+            lo = 0.0_dp
+            if (i > 1) lo = ts(i - 1)
+            hi = ts(i + 1)
+            call refine_peak(f, .false., lo, hi, res%theta_at_max_moment, res%max_moment)
+        end if
+        i = maxloc(fv(1:m), dim=1)
+        res%max_force_over_weight = fv(i)
+        res%theta_at_max = ts(i)
+        if (i < m) then
+            lo = 0.0_dp
+            if (i > 1) lo = ts(i - 1)
+            hi = ts(i + 1)
+            call refine_peak(f, .true., lo, hi, res%theta_at_max, res%max_force_over_weight)
+        end if
+        ! (W.72) the overturning angle
+        if (f%k_r0 <= f%weight * f%h) then
+            res%theta_overturn = 0.0_dp         ! dM_imp/dtheta(0) = K_R0 - W h <= 0
+            return
+        end if
+        j = 0
+        do i = 1, m
+            if (.not. mv(i) > 0.0_dp) then
+                j = i
+                exit
+            end if
+        end do
+        if (j == 0) return                      ! positive up to pi/4: NaN
+        if (j > 1) then
+            th_pos = ts(j - 1)
+            f_pos = mv(j - 1)
+        else
+            ! M_imp > 0 just above 0 (K_R0 > W h) but not at the first scan point: halve
+            th_pos = ts(1)
+            f_pos = 0.0_dp
+            do k = 1, 1074
+                th_pos = 0.5_dp * th_pos
+                f_pos = imposed_moment_value(f, th_pos)
+                if (f_pos > 0.0_dp) exit
+            end do
+            if (.not. f_pos > 0.0_dp) return    ! no positive value found: NaN
+        end if
+        call find_root(f, th_pos, ts(j), root, stat, errmsg, fa_known=f_pos, &
+                       fb_known=mv(j))
+        if (stat /= SEISPULSE_SUCCESS) return
+        res%theta_overturn = root
+    end subroutine branch_scalars
 
     !> Golden-section search for the largest M_imp (force = .false., N m) or F/W (.true.)
     !> in [lo, hi] (rad, within [0, pi/4]); theta_best and v_best hold the best grid point

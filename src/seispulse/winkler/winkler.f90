@@ -33,6 +33,9 @@ module seispulse_winkler
               winkler_modulus_rect, shape_factor, varying_modulus
     public :: winkler_pushover, block_winkler_pushover, winkler_master_curve, &
               winkler_equivalent_cylinder
+    !> the scale check of a length, weight, modulus ... (in [1e-30, 1e30]), for the sibling
+    !> module seispulse_clay_footing (not re-exported by the facade)
+    public :: check_scale
 
     integer, parameter :: K_CONSTANT = 1   !! k fixed at its full-contact value
     integer, parameter :: K_VARYING = 2    !! [AD11] varying k: equivalent rectangle of the contact
@@ -1150,6 +1153,8 @@ contains
         if (outside_open_closed) outside_open_closed = .not. in_closed(x, hi, hi)
     end function outside_open_closed
 
+    !> x in [1e-30, 1e30] (scale_min, scale_max), else an error "name = x: <what> must be a
+    !> finite number > 0 (<unit>), in [1e-30, 1e30]".
     subroutine check_scale(x, name, what, unit, stat, errmsg)
         real(dp), intent(in) :: x
         character(len=*), intent(in) :: name, what, unit
