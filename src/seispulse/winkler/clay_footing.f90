@@ -659,7 +659,7 @@ contains
         !> (theta = theta_up B^b) or so wide that the other scans resolve it
         real(dp), parameter :: bell_max = 1.0e4_dp
         real(dp) :: ts(n_geo + n_uni + n_bell), mv(n_geo + n_uni + n_bell), fv(n_geo + n_uni &
-                    + n_bell), t, u, lnx, lo, hi, th_pos, f_pos, root
+                    + n_bell), t, u, lnx, th_pos, f_pos, root
         integer :: i, j, k, m
         logical :: bell
         stat = SEISPULSE_SUCCESS
@@ -701,24 +701,8 @@ contains
             fv(i) = mv(i) / (f%h * cos(ts(i)) * f%weight)
         end do
         ! the peaks (the scan starts above 0, where M_imp = 0)
-        i = maxloc(mv(1:m), dim=1)
-        res%max_moment = mv(i)
-        res%theta_at_max_moment = ts(i)
-        if (i < m) then
-            lo = 0.0_dp
-            if (i > 1) lo = ts(i - 1)
-            hi = ts(i + 1)
-            call refine_peak(f, .false., lo, hi, res%theta_at_max_moment, res%max_moment)
-        end if
-        i = maxloc(fv(1:m), dim=1)
-        res%max_force_over_weight = fv(i)
-        res%theta_at_max = ts(i)
-        if (i < m) then
-            lo = 0.0_dp
-            if (i > 1) lo = ts(i - 1)
-            hi = ts(i + 1)
-            call refine_peak(f, .true., lo, hi, res%theta_at_max, res%max_force_over_weight)
-        end if
+        call scan_peak(mv, .false., res%max_moment, res%theta_at_max_moment)
+        call scan_peak(fv, .true., res%max_force_over_weight, res%theta_at_max)
         ! (W.72) the overturning angle
         if (f%k_r0 <= f%weight * f%h) then
             res%theta_overturn = 0.0_dp         ! dM_imp/dtheta(0) = K_R0 - W h <= 0
@@ -750,6 +734,22 @@ contains
                        fb_known=mv(j))
         if (stat /= SEISPULSE_SUCCESS) return
         res%theta_overturn = root
+    contains
+        !> The largest of vals(1:m), refined between its scan neighbours (0 below the first).
+        subroutine scan_peak(vals, force, v_best, t_best)
+            real(dp), intent(in) :: vals(:)
+            logical, intent(in) :: force
+            real(dp), intent(out) :: v_best, t_best
+            integer :: ib
+            real(dp) :: lo
+            ib = maxloc(vals(1:m), dim=1)
+            v_best = vals(ib)
+            t_best = ts(ib)
+            if (ib == m) return
+            lo = 0.0_dp
+            if (ib > 1) lo = ts(ib - 1)
+            call refine_peak(f, force, lo, ts(ib + 1), t_best, v_best)
+        end subroutine scan_peak
     end subroutine branch_scalars
 
     !> Golden-section search for the largest M_imp (force = .false., N m) or F/W (.true.)
