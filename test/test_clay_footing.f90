@@ -851,6 +851,16 @@ contains
         call expect('k_el', stat, msg)
         if (allocated(error)) return
         co = full
+        co%k_el = 1.0e300_dp              ! K_R0 = HK_R k_el k/k_el would overflow
+        call initial_stiffness_ratio(0.3_dp, co, v1, stat, msg)
+        call expect('k_el', stat, msg)
+        if (allocated(error)) return
+        co = full
+        co%kr_c1 = 1.0e300_dp             ! k/k_el = 1e300 - ...: beyond the scale range
+        call initial_stiffness_ratio(0.3_dp, co, v1, stat, msg)
+        call expect('kr_c1', stat, msg)
+        if (allocated(error)) return
+        co = full
         co%kr_c1 = 0.1_dp                 ! k/k_el < 0 at chi = 0.3
         call initial_stiffness_ratio(0.3_dp, co, v1, stat, msg)
         call expect('kr_c1', stat, msg)

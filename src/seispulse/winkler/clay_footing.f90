@@ -19,7 +19,7 @@ module seispulse_clay_footing
     use, intrinsic :: iso_fortran_env, only: int64
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use seispulse_kinds, only: dp
-    use seispulse_checks, only: finite_positive, finite_at_least, outside
+    use seispulse_checks, only: finite_positive, finite_at_least, outside, in_closed
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
                                 SEISPULSE_NO_SOLUTION, set_error
     use seispulse_format, only: real_str, int_str
@@ -185,8 +185,7 @@ contains
                            //': 1/SF must be in [0, 1)')
             return
         end if
-        call check_positive(coeffs%k_el, 'k_el', 'the elastic stiffness ratio', ' (-)', &
-                            stat, errmsg)
+        call check_scale(coeffs%k_el, 'k_el', 'the elastic stiffness ratio', '-', stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         given = ieee_is_finite(coeffs%kr_c1) .and. ieee_is_finite(coeffs%kr_c2)
         jmp = 0.0_dp
@@ -208,11 +207,12 @@ contains
                 return
             end if
             k_ratio = coeffs%kr_c1 - coeffs%kr_c2 * chi                     ! (W.63)
-            if (.not. (k_ratio > 0.0_dp .and. ieee_is_finite(k_ratio))) then
+            ! in [1e-30, 1e30] like every other factor of K_R0 (no overflow downstream)
+            if (.not. in_closed(k_ratio, 1.0e-30_dp, 1.0e30_dp)) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'kr_c1 = ' &
                                //real_str(coeffs%kr_c1)//', kr_c2 = '//real_str(coeffs%kr_c2) &
                                //': k/k_el = kr_c1 - kr_c2 chi = '//real_str(k_ratio) &
-                               //' at chi = '//real_str(chi)//' must be finite and > 0')
+                               //' at chi = '//real_str(chi)//' must be finite and > 0, in [1e-30, 1e30]')
                 k_ratio = qnan
                 return
             end if
@@ -483,19 +483,6 @@ contains
     ! ------------------------------------------------------------------------------
     ! Internals
     ! ------------------------------------------------------------------------------
-
-    !> x finite and > 0, else an error "name = x: <what> must be a finite number > 0<unit>".
-    subroutine check_positive(x, name, what, unit, stat, errmsg)
-        real(dp), intent(in) :: x
-        character(len=*), intent(in) :: name, what, unit
-        integer, intent(out) :: stat
-        character(len=*), intent(inout), optional :: errmsg
-        stat = SEISPULSE_SUCCESS
-        if (.not. finite_positive(x)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, name//' = '//real_str(x) &
-                           //': '//what//' must be a finite number > 0'//unit)
-        end if
-    end subroutine check_positive
 
     !> su, r and the bearing factor ncv = nc (default pi + 3) in [1e-30, 1e30] (the scale
     !> check of seispulse_winkler: n_c S_u pi r^2 and every later product stay finite).
