@@ -16,7 +16,9 @@ module seispulse
                                              cexp_dd2_at0, cexp_dd2, cexp_dd3
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton, &
                                find_minimum
-    use seispulse_ode, only: ode_system, ode_dop853_t, ode_dense_t, ode_dop853_factor
+    use seispulse_ode, only: ode_system, ode_dop853_t, ode_dense_t, ode_dop853_factor, &
+                             ode_fd_jacobian
+    use seispulse_radau, only: ode_radau5_t, ode_radau5_factor, radau5_solve
     use seispulse_lapack, only: solve_linear
     use seispulse_pulses, only: exp_pulse, exp_pulse_point, exp_pulse_peaks, &
                                 exp_pulse_impulse_amplitude, pulse_t, pulse_validate, pulse_eval, &

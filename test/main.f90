@@ -8,6 +8,7 @@ program tester
     use test_roots, only: collect_roots
     use test_ode, only: collect_ode
     use test_lapack, only: collect_lapack
+    use test_radau, only: collect_radau
     use test_pulses, only: collect_pulses
     use test_sliding_sim, only: collect_sliding_sim
     use test_sliding_closed, only: collect_sliding_closed
@@ -49,6 +50,10 @@ program tester
     if (selected('ode')) then
         call collect_ode(tests)
         call run_suite('ode', tests, output_unit, npass, nfail)
+    end if
+    if (selected('radau')) then
+        call collect_radau(tests)
+        call run_suite('radau', tests, output_unit, npass, nfail)
     end if
     if (selected('lapack')) then
         call collect_lapack(tests)
