@@ -17,6 +17,7 @@ program tester
     use test_cylinder, only: collect_cylinder
     use test_cylinder_roll, only: collect_cylinder_roll
     use test_winkler, only: collect_winkler
+    use test_winkler_rock, only: collect_winkler_rock
     use test_records, only: collect_records
     use test_number_reader, only: collect_number_reader
     use test_newmark, only: collect_newmark
@@ -90,6 +91,10 @@ program tester
     if (selected('winkler')) then
         call collect_winkler(tests)
         call run_suite('winkler', tests, output_unit, npass, nfail)
+    end if
+    if (selected('winkler_rock')) then
+        call collect_winkler_rock(tests)
+        call run_suite('winkler_rock', tests, output_unit, npass, nfail)
     end if
     if (selected('records')) then
         call collect_records(tests)
