@@ -13,7 +13,8 @@ module test_winkler_rock
     use seispulse_cylinder, only: rocking_body_t, cylinder_props, block_props, &
                                   overturning_threshold, MAP_AXES_DIMENSIONAL
     use seispulse_pulses, only: pulse_t, PULSE_SINE_CYCLE, PULSE_MP
-    use seispulse_winkler, only: K_CONSTANT, K_VARYING
+    use seispulse_winkler, only: K_CONSTANT, K_VARYING, WP_FORCE, WP_NCOL, winkler_pushover_t, &
+                                 winkler_pushover, block_winkler_pushover
     use seispulse_winkler_rock, only: winkler_model_t, winkler_run_t, winkler_model, &
                                       winkler_rock, winkler_overturning_map, winkler_rhs_jacobian, &
                                       winkler_barrier, winkler_outcome_name, winkler_output_name, &
@@ -42,7 +43,10 @@ contains
                               test_rebound), &
                  new_unittest('quasi-static: one sine cycle of T = 19 s vs the closed-form' &
                               //' pushover', test_quasi_static), &
+                 new_unittest('quasi-static: block (closed form) and varying k vs the pushover' &
+                              //' of seispulse_winkler', test_quasi_static_more), &
                  new_unittest('energy balance over a history with impacts', test_energy), &
+                 new_unittest('record in g: the sampled pulse gives the pulse run', test_record), &
                  new_unittest('energy proof: below the barrier safe, above it overturns', &
                               test_proof), &
                  new_unittest('exact Jacobian vs central differences, every contact structure', &
@@ -295,6 +299,65 @@ contains
 
     end subroutine test_quasi_static
 
+    !> As test_quasi_static, checked on the force: the static force at the tilt of the
+    !> slow run (T = 19 s, F = 0.2 W at t = T/4) is F = 0.2 W to 2e-3 (the inertia,
+    !> (omega/omega_t)^2 ~ 1e-3 of F). Block b = 1 m, alpha = 0.8 m, h = 3 m: the thesis's
+    !> closed form after uplift, b' = sqrt(2 W/(alpha k sin 2 theta)),
+    !> M = alpha k sin cos^2 b'^2 (3 b - b')/3 (written here), and block_winkler_pushover;
+    !> the cylinder with varying k: winkler_pushover with K_VARYING.
+    subroutine test_quasi_static_more(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(rocking_body_t) :: body
+        type(winkler_model_t) :: model
+        type(winkler_run_t) :: run
+        type(winkler_pushover_t) :: res
+        type(pulse_t) :: pl
+        real(dp) :: tg(1), hist(WR_NOUT, 1), curve(1, WP_NCOL), w, th, bp, mm, f
+        integer :: stat
+        call block_props(1.0_dp, 3.0_dp, 30000.0_dp, g, body, stat)
+        call winkler_model(body, 1.0e9_dp, model, stat, alpha=0.8_dp, xi=0.2_dp)
+        call check(error, stat == 0, 'block model')
+        if (allocated(error)) return
+        w = body%weight
+        pl%kind = PULSE_SINE_CYCLE
+        pl%duration = 19.0_dp
+        pl%amp = 0.2_dp * g
+        tg = [19.0_dp / 4.0_dp]
+        call winkler_rock(model, tg, hist, run, stat, pulse=pl, rtol=1.0e-8_dp)
+        call check(error, stat == 0, 'block run')
+        if (allocated(error)) return
+        th = hist(WR_OUT_THETA, 1)
+        bp = sqrt(2.0_dp * w / (0.8_dp * 1.0e9_dp * sin(2.0_dp * th)))
+        call check(error, bp < 2.0_dp, 'block uplifted')
+        if (allocated(error)) return
+        mm = 0.8_dp * 1.0e9_dp * sin(th) * cos(th)**2 * bp * bp * (3.0_dp - bp) / 3.0_dp
+        f = (mm - w * 3.0_dp * sin(th)) / (3.0_dp * cos(th))
+        call check(error, f, 0.2_dp * w, rtol=2.0e-3_dp, message='block: closed-form F(theta)')
+        if (allocated(error)) return
+        call check(error, hist(WR_OUT_WIDTH, 1), bp, rtol=2.0e-3_dp, message="block: b'")
+        if (allocated(error)) return
+        call block_winkler_pushover(1.0_dp, 0.8_dp, 3.0_dp, w, 1.0e9_dp, [th], curve, res, stat)
+        call check(error, stat == 0, 'block pushover')
+        if (allocated(error)) return
+        call check(error, curve(1, WP_FORCE), 0.2_dp * w, rtol=2.0e-3_dp, &
+                   message='block: pushover F(theta)')
+        if (allocated(error)) return
+        call cylinder_model(1.0e9_dp, model, stat, xi=0.2_dp, k_method=K_VARYING)
+        call check(error, stat == 0, 'varying-k model')
+        if (allocated(error)) return
+        w = model%body%weight
+        pl%amp = 0.2_dp * g
+        call winkler_rock(model, tg, hist, run, stat, pulse=pl, rtol=1.0e-8_dp)
+        call check(error, stat == 0, 'varying-k run')
+        if (allocated(error)) return
+        call winkler_pushover(1.0_dp, 3.0_dp, w, 1.0e9_dp, [hist(WR_OUT_THETA, 1)], curve, res, &
+                              stat, k_method=K_VARYING)
+        call check(error, stat == 0, 'varying-k pushover')
+        if (allocated(error)) return
+        call check(error, curve(1, WP_FORCE), 0.2_dp * w, rtol=2.0e-3_dp, &
+                   message='varying k: pushover F(theta)')
+    end subroutine test_quasi_static_more
+
     !> One sine cycle, 0.25 g, T = 1 s, 20 s of rocking with impacts: E + D = E_0 + W_in at
     !> every output to 1e-6 of the energy scale; W_in against the trapezoidal rule of
     !> m a_g h cos(theta) theta' on the output grid (1e-3: the rule's own error).
@@ -343,6 +406,44 @@ contains
         call check(error, minval(hist(WR_OUT_DISSIPATED, :)) > -1.0e-6_dp * scale, &
                    'dissipated >= 0')
     end subroutine test_energy
+
+    !> The one-sine pulse (0.25 g, T = 1 s) sampled every 0.5 ms, passed as a record in g
+    !> with g_rec: theta(t) over 3 s agrees with the pulse run to 1e-3 of theta_max (the
+    !> linear interpolation of the samples changes a_g by (pi dt/T)^2/2 ~ 1e-5 of a_p).
+    subroutine test_record(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(winkler_model_t) :: model
+        type(winkler_run_t) :: run1, run2
+        type(pulse_t) :: pl
+        integer, parameter :: n = 301, ns = 2001
+        real(dp) :: tg(n), h1(WR_NOUT, n), h2(WR_NOUT, n), acc(ns), dt
+        integer :: stat, i
+        call cylinder_model(1.0e9_dp, model, stat, xi=0.003_dp)
+        pl%kind = PULSE_SINE_CYCLE
+        pl%duration = 1.0_dp
+        pl%amp = 0.25_dp * g
+        dt = 0.0005_dp
+        do i = 1, ns
+            acc(i) = 0.25_dp * sin(2.0_dp * pi * dt * (i - 1))
+        end do
+        acc(ns) = 0.0_dp
+        do i = 1, n
+            tg(i) = 0.01_dp * (i - 1)
+        end do
+        call winkler_rock(model, tg, h1, run1, stat, pulse=pl)
+        call check(error, stat == 0, 'pulse run')
+        if (allocated(error)) return
+        call winkler_rock(model, tg, h2, run2, stat, accel=acc(1:2001), dt=dt, g_rec=g)
+        call check(error, stat == 0, 'record run')
+        if (allocated(error)) return
+        call check(error, run1%theta_max > 1.0e-3_dp, 'rocks')
+        if (allocated(error)) return
+        call check(error, maxval(abs(h1(WR_OUT_THETA, :) - h2(WR_OUT_THETA, :))) &
+                   < 1.0e-3_dp * run1%theta_max, 'theta(t), record vs pulse')
+        if (allocated(error)) return
+        call check(error, h2(WR_OUT_ACCEL, 26), 0.25_dp * g, rtol=1.0e-4_dp, &
+                   message='a_g of the record at T/4')
+    end subroutine test_record
 
     !> Free rocking from rest with theta' such that the kinetic energy is 0.9 B (B the
     !> barrier U_min(theta_ov) - U_min(0)): proved safe at once (t_safe = 0), and a run on
