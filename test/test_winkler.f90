@@ -740,7 +740,53 @@ contains
         end do
         call check(error, res%theta_overturn > 0.0_dp .and. res%theta_overturn < atan(b / h), &
                    'block varying: overturning below theta_c')
+        if (allocated(error)) return
+        call block_jump(error)
     end subroutine test_block
+
+    !> A block longer in the rocking direction (alpha < b): its contact rectangle b' x 2 alpha
+    !> passes through the square, where [G91]'s K_ry (3.0) and K_rx (2.9) differ; the tilts in
+    !> the gap between theta(b' = 2 alpha) on either side have no equilibrium (NaN), every
+    !> other point is in equilibrium.
+    subroutine block_jump(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 1000
+        real(dp), parameter :: b = 1.0_dp, al = 0.3_dp, h = 2.5_dp, w = 2.0e5_dp, k = 5.0e7_dp
+        real(dp) :: th(n), curve(n, WP_NCOL), kry_full, k_hi, k_lo, th_lo, th_hi, sq
+        type(winkler_pushover_t) :: res
+        integer :: stat, i, nnan
+        do i = 1, n
+            th(i) = 0.04_dp * i / n
+        end do
+        call block_winkler_pushover(b, al, h, w, k, th, curve, res, stat, k_method=K_VARYING)
+        call check(error, stat, SEISPULSE_SUCCESS, 'stat')
+        if (allocated(error)) return
+        ! K_R/I up to G/(1 - nu): full 2b x 2 alpha by K_ry, the square 2 alpha by K_ry/K_rx
+        kry_full = 3 * (2 * al * (2 * b)**3 / 12)**(-0.25_dp) * (b / al)**0.15_dp
+        sq = (2 * al * (2 * al)**3 / 12)**(-0.25_dp)
+        k_hi = k * 3 * sq / kry_full
+        k_lo = k * 2.9_dp * sq / kry_full
+        th_lo = 0.5_dp * asin(2 * w / (al * (2 * al)**2 * k_hi))
+        th_hi = 0.5_dp * asin(2 * w / (al * (2 * al)**2 * k_lo))
+        nnan = 0
+        do i = 1, n
+            if (ieee_is_nan(curve(i, WP_B))) then
+                nnan = nnan + 1
+                call check(error, th(i) > th_lo .and. th(i) < th_hi, 'NaN only inside the gap')
+                if (allocated(error)) return
+            else if (th(i) > res%theta_up) then
+                call check(error, curve(i, WP_K) * cos(th(i)) * sin(th(i)) * al &
+                           * curve(i, WP_B)**2, w, rtol=1.0e-10_dp, &
+                           message='equilibrium outside the gap')
+                if (allocated(error)) return
+            else
+                call check(error, curve(i, WP_K) * curve(i, WP_SETTLEMENT) * 4 * al * b &
+                           * cos(th(i)), w, rtol=1.0e-14_dp, message='full-contact equilibrium')
+                if (allocated(error)) return
+            end if
+        end do
+        call check(error, nnan > 0, 'the gap has grid points')
+    end subroutine block_jump
 
     subroutine test_rigid_limit(error)
         type(test_error), allocatable, intent(out) :: error

@@ -93,14 +93,14 @@ module seispulse_winkler
     end type branch_t
 
     !> What a branch function returns at the contact variable t.
-    integer, parameter :: FN_PHI = 1       ! k(t) Phi(t) - target
-    integer, parameter :: FN_OVERTURN = 2  ! k(t) cos^2(theta) (J2 - c J1) - W h
-    integer, parameter :: FN_FORCE = 3     ! -F/W
-    integer, parameter :: FN_MOMENT = 4    ! -M_imp/(W r)
+    integer, parameter :: fn_phi = 1       ! k(t) Phi(t) - target
+    integer, parameter :: fn_overturn = 2  ! k(t) cos^2(theta) (J2 - c J1) - W h
+    integer, parameter :: fn_force = 3     ! -F/W
+    integer, parameter :: fn_moment = 4    ! -M_imp/(W r)
 
     type, extends(scalar_function) :: branch_fn
         type(branch_t) :: br
-        integer :: what = FN_PHI
+        integer :: what = fn_phi
         real(dp) :: target = 0.0_dp
     contains
         procedure :: eval => branch_eval
@@ -617,7 +617,7 @@ contains
         row(WP_FORCE) = row(WP_M_IMPOSED) / (br%h * c)                     ! (W.9)
     end subroutine uplift_row
 
-    !> The branch function at t (see FN_*).
+    !> The branch function at t (see fn_*).
     function branch_eval(self, x) result(y)
         class(branch_fn), intent(inout) :: self
         real(dp), intent(in) :: x
@@ -625,15 +625,15 @@ contains
         real(dp) :: th, row(WP_NCOL)
         logical :: ok
         select case (self%what)
-        case (FN_PHI)
+        case (fn_phi)
             y = modulus(self%br, x) * phi_of(self%br, x) - self%target
-        case (FN_OVERTURN)
+        case (fn_overturn)
             call theta_at(self%br, x, th, ok)
             y = modulus(self%br, x) * cos(th)**2 * mom_of(self%br, x) - self%br%w * self%br%h
         case default
             call theta_at(self%br, x, th, ok)
             call uplift_row(self%br, x, th, row)
-            if (self%what == FN_FORCE) then
+            if (self%what == fn_force) then
                 y = -row(WP_FORCE) / self%br%w
             else
                 y = -row(WP_M_IMPOSED) / (self%br%w * self%br%r)
@@ -700,7 +700,7 @@ contains
             return
         end if
         fn%br = br
-        fn%what = FN_PHI
+        fn%what = fn_phi
         fn%target = target
         do i = 2, size(ts)
             if (ps(i) < target) then
@@ -746,10 +746,10 @@ contains
         if (.not. found) t_end = ts(size(ts))
         if (present(t_end_out)) t_end_out = t_end
         call full_peaks(br, res%theta_up, res)
-        call uplift_peak(br, t_end, FN_FORCE, res%max_force_over_weight, res%theta_at_max, &
+        call uplift_peak(br, t_end, fn_force, res%max_force_over_weight, res%theta_at_max, &
                          stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call uplift_peak(br, t_end, FN_MOMENT, res%max_moment, res%theta_at_max_moment, &
+        call uplift_peak(br, t_end, fn_moment, res%max_moment, res%theta_at_max_moment, &
                          stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         ! overturning (W.19): in full contact when M_imp <= 0 at theta_up
@@ -799,7 +799,7 @@ contains
         res%theta_at_max_moment = th
     end subroutine full_peaks
 
-    !> Peak of F/W (what = FN_FORCE) or of M_imp (FN_MOMENT) after uplift, t in [t_end,
+    !> Peak of F/W (what = fn_force) or of M_imp (fn_moment) after uplift, t in [t_end,
     !> t_max]: n_peak samples, then the bounded maximiser around the best one; kept if above
     !> the full-contact value already in (value, theta_peak).
     subroutine uplift_peak(br, t_end, what, value, theta_peak, stat, errmsg)
@@ -816,7 +816,7 @@ contains
         fn%br = br
         fn%what = what
         scale = br%w
-        if (what == FN_MOMENT) scale = br%w * br%r
+        if (what == fn_moment) scale = br%w * br%r
         best = huge(1.0_dp)
         i_best = 0
         t_best = br%t_max
@@ -838,7 +838,7 @@ contains
             t_best = tx
         end if
         y = -best
-        if (what == FN_MOMENT) y = y * scale
+        if (what == fn_moment) y = y * scale
         if (y > value) then
             value = y
             call theta_at(br, t_best, th, ok)
@@ -862,7 +862,7 @@ contains
         stat = SEISPULSE_SUCCESS
         theta = nan()
         fn%br = br
-        fn%what = FN_OVERTURN
+        fn%what = fn_overturn
         t_hi = br%t_max
         z_hi = fn%eval(t_hi)
         do i = 2, size(ts) + 1
