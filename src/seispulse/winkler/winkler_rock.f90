@@ -1317,6 +1317,7 @@ contains
         type(contact_t) :: ct
         integer :: src, why, i
         logical :: found
+        real(dp) :: a_end
 
         stat = SEISPULSE_SUCCESS
         call empty_run(run)
@@ -1348,6 +1349,7 @@ contains
         st%run_m = 0.0_dp
         st%t_out_cross = ieee_value(1.0_dp, ieee_quiet_nan)
         src = st%sys%gr%src
+        a_end = 0.0_dp
         st%sys%gr%src = GR_NONE
         st%sys%stat = SEISPULSE_SUCCESS
         call contact(st%sys, st%y, ct, .false.)
@@ -1373,6 +1375,9 @@ contains
                 call next_piece(it, accel, 'winkler_rock', piece, found, stat, errmsg)
                 if (stat /= SEISPULSE_SUCCESS) return
                 if (.not. found) exit pieces
+                ! a_g jumps (or the ground is switched off before the piece): the right-hand
+                ! side changes other than through (t, y), so Radau starts afresh
+                if (st%t < piece%ta .or. abs(piece%aa - a_end) > 0.0_dp) call st%ode%restart()
                 st%sys%gr%ta = piece%ta
                 st%sys%gr%tb = piece%tb
                 st%sys%gr%aa = piece%aa
@@ -1382,13 +1387,16 @@ contains
                     st%sys%gr%src = GR_NONE
                     call advance(st, hist, run, min(piece%ta, st%t_lim), why)
                     st%sys%gr%src = src
+                    call st%ode%restart()
                     if (handle(why)) exit pieces
                 end if
+                a_end = piece%ab
                 call advance(st, hist, run, min(piece%tb, st%t_lim), why)
                 if (handle(why)) exit pieces
             end do pieces
         end if
         if (.not. st%done) then
+            if (abs(a_end) > 0.0_dp) call st%ode%restart()
             st%sys%gr%src = GR_NONE
             st%free = .true.
             call free_checks(st, run, why)
