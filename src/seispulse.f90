@@ -88,6 +88,17 @@ module seispulse
                                       IP_G, IP_NCOL, CAPACITY_TC00_PEAK, &
                                       CAPACITY_EFFECTIVE_WIDTH, NC_CIRCLE_CLAY, &
                                       CHI_ELASTIC_LIMIT, SF_WEAK_LIMIT
+    use seispulse_winkler_rock, only: winkler_model_t, winkler_run_t, winkler_model, &
+                                      winkler_rock, winkler_overturning_map, &
+                                      winkler_outcome_name, winkler_output_name, &
+                                      winkler_contact_forces, winkler_rhs_jacobian, &
+                                      winkler_barrier, DAMP_ROCKING, DAMP_VERTICAL, WR_OUT_V, &
+                                      WR_OUT_THETA, WR_OUT_V_RATE, WR_OUT_THETA_RATE, &
+                                      WR_OUT_WIDTH, WR_OUT_NORMAL, WR_OUT_MOMENT, WR_OUT_ACCEL, &
+                                      WR_OUT_ENERGY, WR_OUT_WORK, WR_OUT_DISSIPATED, WR_NOUT, &
+                                      WR_RUN_SAFE, WR_RUN_OVERTURN_NO_IMPACT, &
+                                      WR_RUN_OVERTURN_ONE_IMPACT, WR_RUN_OVERTURN_IMPACTS, &
+                                      WR_RUN_TIME_LIMIT
     use seispulse_records, only: record_t, read_record, record_pga, pga_scale_factor, &
                                  ground_motion, record_format_name, record_units_name, &
                                  RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, &
