@@ -54,7 +54,9 @@ contains
                               test_jacobian), &
                  new_unittest('k -> infinity: one-sine threshold tends to the rigid one', &
                               test_rigid_limit), &
-                 new_unittest('bad input', test_bad_input)]
+                 new_unittest('bad input', test_bad_input), &
+                 new_unittest('varying k map: a standing cell is safe; theta_max a turning point', &
+                              test_varying_map)]
     end subroutine collect_winkler_rock
 
     !> A solid cylinder r = 1 m, h = 3 m of concrete (2500 kg/m^3) and its model.
@@ -713,5 +715,46 @@ contains
                    winkler_output_name(WR_OUT_THETA) == 'theta' .and. &
                    winkler_output_name(99) == '', 'names')
     end subroutine test_bad_input
+
+    !> Varying k has no energy criterion: a cell that still stands at the end of its window
+    !> is safe (0), not undecided (-1), and a strong pulse still overturns. theta_max is the
+    !> largest |theta| of the motion: not below any output sample, and equal to the turning
+    !> point located on the dense output (not a sample near it).
+    subroutine test_varying_map(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(winkler_model_t) :: model
+        type(winkler_run_t) :: run
+        type(pulse_t) :: pl
+        real(dp) :: t(2001), hist(WR_NOUT, 2001)
+        integer :: stat, cls(2, 1), i, i_max
+        call cylinder_model(1.0e9_dp, model, stat, xi=0.003_dp, k_method=K_VARYING)
+        call check(error, stat, 0, 'model')
+        if (allocated(error)) return
+        call winkler_overturning_map(model, PULSE_SINE_CYCLE, [0.5_dp], [0.05_dp, 3.0_dp], &
+                                     MAP_AXES_DIMENSIONAL, cls, stat)
+        call check(error, stat, 0, 'map')
+        if (allocated(error)) return
+        call check(error, cls(1, 1), 0, 'a weak pulse: safe')
+        if (allocated(error)) return
+        call check(error, cls(2, 1) > 0, 'a strong pulse overturns')
+        if (allocated(error)) return
+        pl%kind = PULSE_SINE_CYCLE
+        pl%duration = 2.0_dp
+        pl%amp = 0.3_dp * g
+        do i = 1, size(t)
+            t(i) = 4.0_dp * real(i - 1, dp) / real(size(t) - 1, dp)
+        end do
+        call winkler_rock(model, t, hist, run, stat, pulse=pl)
+        call check(error, stat, 0, 'run')
+        if (allocated(error)) return
+        i_max = maxloc(abs(hist(WR_OUT_THETA, :)), 1)
+        call check(error, run%theta_max >= abs(hist(WR_OUT_THETA, i_max)), 'not below a sample')
+        if (allocated(error)) return
+        ! at the largest sample theta' changes sign within one sample interval: the located
+        ! extreme is within the curvature of that interval
+        call check(error, run%theta_max - abs(hist(WR_OUT_THETA, i_max)) &
+                   <= 0.5_dp * abs(hist(WR_OUT_THETA_RATE, i_max)) * (t(2) - t(1)) + 1.0e-15_dp, &
+                   'close to the largest sample')
+    end subroutine test_varying_map
 
 end module test_winkler_rock

@@ -1,7 +1,6 @@
 !> A rigid circular footing on undrained clay: the reduced-order (normalised stiffness
 !> degradation) method of [AD11] chapter 3 that turns the elastic Winkler pushover into an
-!> inelastic one without finite elements (doc/winkler.md section "Inelastic soil: the
-!> reduced-order method", (W.60)-(W.74)):
+!> inelastic one without finite elements (doc/winkler.md section 10, (W.60)-(W.74)):
 !> - vertical bearing: N_ult = n_c S_u pi r^2 with n_c = pi + 3 ([AD11], supported by
 !>   [SLSY04]), the factor of safety SF = N_ult/N and chi = 1/SF (W.60)-(W.61);
 !> - the initial-stiffness ratio k/k_el(chi) (W.63) and the Gaussian correction G(chi; x) of
