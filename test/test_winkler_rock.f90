@@ -11,8 +11,9 @@ module test_winkler_rock
                                              ieee_is_nan, ieee_is_finite
     use seispulse_kinds, only: dp
     use seispulse_cylinder, only: rocking_body_t, cylinder_props, block_props, &
-                                  overturning_threshold, MAP_AXES_DIMENSIONAL
-    use seispulse_pulses, only: pulse_t, PULSE_SINE_CYCLE, PULSE_MP
+                                  overturning_threshold, MAP_AXES_DIMENSIONAL, &
+                                  MAP_AXES_DIMENSIONLESS, body_overturning_map
+    use seispulse_pulses, only: pulse_t, PULSE_SINE_CYCLE, PULSE_MP, PULSE_RICKER
     use seispulse_winkler, only: K_CONSTANT, K_VARYING, WP_FORCE, WP_NCOL, winkler_pushover_t, &
                                  winkler_pushover, block_winkler_pushover
     use seispulse_winkler_rock, only: winkler_model_t, winkler_run_t, winkler_model, &
@@ -56,7 +57,9 @@ contains
                               test_rigid_limit), &
                  new_unittest('bad input', test_bad_input), &
                  new_unittest('varying k map: a standing cell is safe; theta_max a turning point', &
-                              test_varying_map)]
+                              test_varying_map), &
+                 new_unittest('kern-level rocking is no impact: Ricker class as rigid for large k', &
+                              test_kern_rocking)]
     end subroutine collect_winkler_rock
 
     !> A solid cylinder r = 1 m, h = 3 m of concrete (2500 kg/m^3) and its model.
@@ -756,5 +759,32 @@ contains
                    <= 0.5_dp * abs(hist(WR_OUT_THETA_RATE, i_max)) * (t(2) - t(1)) + 1.0e-15_dp, &
                    'close to the largest sample')
     end subroutine test_varying_map
+
+    !> A Ricker pulse whose side lobes stay below the rigid uplift acceleration but above
+    !> the kern level (an edge lifts at about a quarter of it): the micro-rocking they cause
+    !> (|theta| ~ 1e-4 rad for k = 1e10, 1e-5 for 1e11, against theta_c = 0.32) is not an
+    !> impact, so the class is the rigid one (overturning without impact) for stiff soil,
+    !> where counting every crossing after an edge lift gave "after one impact".
+    subroutine test_kern_rocking(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(winkler_model_t) :: model
+        type(rocking_body_t) :: body
+        integer :: stat, cls(1, 1), rigid(1, 1), i
+        real(dp), parameter :: ks(2) = [1.0e10_dp, 1.0e11_dp]
+        call cylinder_props(1.0_dp, 3.0_dp, 2500.0_dp * pi * 6.0_dp, g, body, stat)
+        call body_overturning_map(body, PULSE_RICKER, [1.0_dp], [1.5_dp], &
+                                  MAP_AXES_DIMENSIONLESS, rigid, stat)
+        call check(error, stat == 0 .and. rigid(1, 1) == 1, 'rigid: overturns without impact')
+        if (allocated(error)) return
+        do i = 1, 2
+            call winkler_model(body, ks(i), model, stat, xi=0.003_dp)
+            call winkler_overturning_map(model, PULSE_RICKER, [1.0_dp], [1.5_dp], &
+                                         MAP_AXES_DIMENSIONLESS, cls, stat)
+            call check(error, stat, 0, 'map')
+            if (allocated(error)) return
+            call check(error, cls(1, 1), rigid(1, 1), 'Winkler class = rigid class')
+            if (allocated(error)) return
+        end do
+    end subroutine test_kern_rocking
 
 end module test_winkler_rock
