@@ -59,7 +59,9 @@ contains
                  new_unittest('varying k map: a standing cell is safe; theta_max a turning point', &
                               test_varying_map), &
                  new_unittest('kern-level rocking is no impact: Ricker class as rigid for large k', &
-                              test_kern_rocking)]
+                              test_kern_rocking), &
+                 new_unittest('outcome decided at the end of the excitation; free run', &
+                              test_end_of_excitation)]
     end subroutine collect_winkler_rock
 
     !> A solid cylinder r = 1 m, h = 3 m of concrete (2500 kg/m^3) and its model.
@@ -717,7 +719,61 @@ contains
         call check(error, winkler_outcome_name(WR_RUN_SAFE) == 'safe' .and. &
                    winkler_output_name(WR_OUT_THETA) == 'theta' .and. &
                    winkler_output_name(99) == '', 'names')
+        if (allocated(error)) return
+        msg = ''
+        call winkler_model(body, 1.0e9_dp, model, stat, msg, k_method=K_VARYING, reading=99)
+        call check(error, stat /= 0 .and. index(msg, 'reading') > 0, 'reading')
+        if (allocated(error)) return
+        call winkler_model(body, 1.0e9_dp, model, stat, msg)
+        msg = ''
+        call winkler_rock(model, [0.0_dp, 1.0_dp], hist, run, stat, msg, v_rate0=1.0e200_dp)
+        call check(error, stat /= 0 .and. index(msg, 'v_rate0') > 0, 'v_rate0 huge')
+        if (allocated(error)) return
+        msg = ''
+        call winkler_rock(model, [0.0_dp, 1.0_dp], hist, run, stat, msg, v0=1.0e150_dp)
+        call check(error, stat /= 0 .and. index(msg, 'v0') > 0, 'v0 huge')
+        if (allocated(error)) return
+        ! a grazing start: v0 = 0 with a subnormal tilt (1/sin theta in the Jacobian)
+        call winkler_rock(model, [0.0_dp, 0.01_dp], hist, run, stat, msg, v0=0.0_dp, &
+                          theta0=1.0e-310_dp)
+        call check(error, stat == 0, 'grazing start runs')
+        if (allocated(error)) return
+        model%k = 2.0_dp * model%k
+        msg = ''
+        call winkler_rock(model, [0.0_dp, 1.0_dp], hist, run, stat, msg)
+        call check(error, stat /= 0 .and. index(msg, 'winkler_model') > 0, 'k edited')
     end subroutine test_bad_input
+
+    !> The end of the excitation is the end of the run (no outputs after it): the
+    !> overturning rule of the free motion still decides there (it gave "time limit"), and
+    !> free motion with neither outputs nor t_max runs until its outcome is known.
+    subroutine test_end_of_excitation(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(winkler_model_t) :: model
+        type(winkler_run_t) :: run, run_inf
+        type(pulse_t) :: pl
+        real(dp) :: no_grid(0), no_hist(WR_NOUT, 0)
+        integer :: stat
+        call cylinder_model(1.0e9_dp, model, stat, xi=0.003_dp)
+        pl%kind = PULSE_SINE_CYCLE
+        pl%duration = 2.0_dp * pi / (3.0_dp * model%body%p)
+        pl%amp = 3.4_dp * g * tan(model%body%theta_c)
+        call winkler_rock(model, no_grid, no_hist, run, stat, pulse=pl)
+        call check(error, stat, 0, 'run')
+        if (allocated(error)) return
+        call winkler_rock(model, no_grid, no_hist, run_inf, stat, pulse=pl, &
+                          t_max=ieee_value(1.0_dp, ieee_positive_inf))
+        call check(error, run_inf%outcome >= WR_RUN_OVERTURN_NO_IMPACT .and. &
+                   run_inf%outcome <= WR_RUN_OVERTURN_IMPACTS, 'overturns (t_max = inf)')
+        if (allocated(error)) return
+        call check(error, run%outcome, run_inf%outcome, 'the same outcome at the pulse end')
+        if (allocated(error)) return
+        call winkler_rock(model, no_grid, no_hist, run, stat, theta0=0.2_dp)
+        call check(error, stat, 0, 'free run')
+        if (allocated(error)) return
+        call check(error, run%outcome /= WR_RUN_TIME_LIMIT .and. run%t_end > 0.0_dp, &
+                   'free motion decided')
+    end subroutine test_end_of_excitation
 
     !> Varying k has no energy criterion: a cell that still stands at the end of its window
     !> is safe (0), not undecided (-1), and a strong pulse still overturns. theta_max is the

@@ -64,7 +64,7 @@ module seispulse_winkler_rock
     use seispulse_cylinder, only: rocking_body_t, BODY_BLOCK, MAP_AXES_DIMENSIONLESS, &
                                   MAP_AXES_DIMENSIONAL
     use seispulse_winkler_contact, only: strip_moments, FOOTING_CIRCLE, FOOTING_RECTANGLE
-    use seispulse_winkler, only: K_CONSTANT, K_VARYING, AXIS_LONG, varying_modulus, &
+    use seispulse_winkler, only: K_CONSTANT, K_VARYING, AXIS_LONG, AXIS_SHORT, varying_modulus, &
                                  winkler_pushover, block_winkler_pushover, winkler_pushover_t
     implicit none
     private
@@ -153,6 +153,11 @@ module seispulse_winkler_rock
     !> resultant leaves the kern, at about a quarter of the rigid uplift acceleration) is not
     !> the rocking of the rigid model, and its amplitude vanishes as k grows.
     real(dp), parameter :: impact_tol = 1.0e-3_dp
+    !> Smallest |sin theta| at which the Jacobian follows a delta = 0 end (1/sin theta).
+    real(dp), parameter :: s_jac_min = 1.0e-100_dp
+    !> Initial state: |v0| <= state_max r, |v_rate0| <= state_max r p, |theta_rate0| <=
+    !> state_max p (no overflow in the energies).
+    real(dp), parameter :: state_max = 1.0e6_dp
     integer, parameter :: NY = 6, NEV = 7, NSAMP = 4
     integer, parameter :: EV_EDGE_HI = 1, EV_EDGE_LO = 2, EV_Q_HI = 3, EV_Q_LO = 4, &
                           EV_THETA = 5, EV_OVERTURN = 6, EV_CAP = 7
@@ -215,6 +220,7 @@ module seispulse_winkler_rock
         type(ode_radau5_t) :: ode
         real(dp) :: t = 0.0_dp, y(NY) = 0.0_dp, f(NY) = 0.0_dp, h = 0.0_dp, h_max = 1.0_dp
         real(dp) :: p = 1.0_dp, t_lim = 0.0_dp
+        real(dp) :: t_exc = 0.0_dp         !! end of the excitation (s)
         real(dp) :: rtol = 1.0e-9_dp, atol(NY) = 1.0_dp   !! step tolerances
         integer :: side(NEV) = 0
         logical :: active(NEV) = .false.
@@ -326,7 +332,14 @@ contains
             model%k_method = k_method
         end if
         model%reading = AXIS_LONG
-        if (present(reading)) model%reading = reading
+        if (present(reading)) then
+            if (reading /= AXIS_LONG .and. reading /= AXIS_SHORT) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'reading = ' &
+                               //int_str(reading)//': must be 1 (AXIS_LONG) or 2 (AXIS_SHORT)')
+                return
+            end if
+            model%reading = reading
+        end if
         if (present(c) .and. present(xi)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'c, xi: give the dashpot' &
                            //' constant or the damping ratio, not both')
@@ -446,6 +459,14 @@ contains
                            //'theta_rate0: must be finite numbers (m, rad, m/s, rad/s)')
             return
         end if
+        if (.not. (abs(y0(1)) <= state_max * model%r .and. &
+                   abs(y0(3)) <= state_max * model%r * model%body%p .and. &
+                   abs(y0(4)) <= state_max * model%body%p)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'v0, v_rate0, theta_rate0: ' &
+                           //'|v0| <= 1e6 r (m), |v_rate0| <= 1e6 r p (m/s), |theta_rate0| ' &
+                           //'<= 1e6 p (rad/s), p of the rigid body')
+            return
+        end if
         if (.not. abs(y0(2)) < half_pi) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'theta0 = '//real_str(y0(2)) &
                            //': must be in (-pi/2, pi/2) (rad)')
@@ -497,8 +518,11 @@ contains
             call record_pieces_init(it, size(accel), dt)
             t_exc = dt * real(size(accel) - 1, dp)
         end if
+        st%t_exc = t_exc
         st%t_lim = t_exc
         if (size(t_grid) > 0) st%t_lim = max(t_grid(size(t_grid)), 0.0_dp)
+        ! free motion with neither outputs nor t_max: until the outcome is known
+        if (size(t_grid) == 0 .and. .not. t_exc > 0.0_dp) st%t_lim = huge(1.0_dp)
         if (present(t_max)) st%t_lim = min(t_max, huge(1.0_dp))
         if (allocated(a_si)) then
             call simulate(st, it, a_si, y0, t_grid, hist, run, stat, errmsg)
@@ -618,7 +642,8 @@ contains
                 st%sys%gr%p = pl
                 if (kind == PULSE_EXPONENTIAL) st%sys%gr%cexp = exp_consts(pl%beta)
                 call pulse_pieces_init(it, pl)
-                st%t_lim = excitation_end(pl) + map_free_p / model%body%p
+                st%t_exc = excitation_end(pl)
+                st%t_lim = st%t_exc + map_free_p / model%body%p
                 st%max_steps = max_steps_map
                 call simulate(st, it, no_record, y0, no_grid, hist, run, stat, errmsg)
                 if (stat /= SEISPULSE_SUCCESS) return
@@ -782,6 +807,19 @@ contains
         if (model%footing == FOOTING_RECTANGLE .and. .not. finite_positive(model%alpha)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'model%alpha = ' &
                            //real_str(model%alpha)//': the half-length must be > 0 (m)')
+            return
+        end if
+        if (model%reading /= AXIS_LONG .and. model%reading /= AXIS_SHORT) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'model%reading = ' &
+                           //int_str(model%reading)//': must be 1 (AXIS_LONG) or 2 (AXIS_SHORT)')
+            return
+        end if
+        ! the derived fields (v_static, theta_overturn) belong to k: a model edited after
+        ! winkler_model would keep a stale overturning angle
+        if (.not. abs(model%v_static * model%k * model%area / model%body%weight - 1.0_dp) &
+                <= 1.0e-12_dp) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'model: k, area or the ' &
+                           //'weight changed after winkler_model (build the model again)')
         end if
     end subroutine check_model
 
@@ -981,7 +1019,7 @@ contains
         type(end_t) :: glo, ghi, alo, ahi
         real(dp) :: s, c, v, vd, thd, dl, dh, ql, qh, two_r, aq, bq, m(0:2), gm(0:2), kb, &
                     dkb, kk, bd(4), ky(4), ay(4), by(4), sa, sb, wa, wb, qa, qb, dsa(4), dsb(4)
-        logical :: gempty, aempty
+        logical :: gempty, aempty, alo_d, ahi_d
         integer :: stat
         v = y(1)
         s = sin(y(2))
@@ -1041,15 +1079,25 @@ contains
         dsb = 0.0_dp
         sa = end_s(alo, sys%r)
         sb = end_s(ahi, sys%r)
-        if (alo%kind == END_DELTA) dsa = [1.0_dp, -sa * c, 0.0_dp, 0.0_dp] / s
-        if (ahi%kind == END_DELTA) dsb = [1.0_dp, -sb * c, 0.0_dp, 0.0_dp] / s
+        ! a delta = 0 end inside the base needs |v| <= r |sin theta|: below |s| = 1e-100 (a
+        ! grazing start, theta0 ~ 0 and v0 ~ 0) its motion is left out of the Jacobian
+        ! (only Newton's rate depends on it), so that no 1/s overflows
+        if (.not. abs(s) >= s_jac_min) then
+            alo_d = .false.
+            ahi_d = .false.
+        else
+            alo_d = alo%kind == END_DELTA
+            ahi_d = ahi%kind == END_DELTA
+        end if
+        if (alo_d) dsa = [1.0_dp, -sa * c, 0.0_dp, 0.0_dp] / s
+        if (ahi_d) dsb = [1.0_dp, -sb * c, 0.0_dp, 0.0_dp] / s
         ky = 0.0_dp
         if (sys%k_method == K_VARYING) then
             ! b = s_hi + r (contact on the -r side) or r - s_lo, from the geometric ends
             bd = 0.0_dp
-            if (ghi%kind == END_DELTA) then
+            if (ghi%kind == END_DELTA .and. abs(s) >= s_jac_min) then
                 bd = [1.0_dp, -end_s(ghi, sys%r) * c, 0.0_dp, 0.0_dp] / s
-            else if (glo%kind == END_DELTA) then
+            else if (glo%kind == END_DELTA .and. abs(s) >= s_jac_min) then
                 bd = -[1.0_dp, -end_s(glo, sys%r) * c, 0.0_dp, 0.0_dp] / s
             end if
             ky = dkb * bd
@@ -1448,13 +1496,22 @@ contains
         !> Act on the reason `advance` stopped; true when the run is over.
         logical function handle(w)
             integer, intent(in) :: w
+            integer :: w2
             handle = .true.
             if (st%done) return
             select case (w)
             case (WHY_REACHED)
                 handle = .false.
                 if (.not. st%t < st%t_lim) then
-                    call finish(st, hist, run, WHY_LIMIT)
+                    ! the limit at (or after) the end of the excitation: its overturning
+                    ! rule and the energy criterion still decide the outcome there
+                    w2 = WHY_REACHED
+                    if (.not. st%free .and. .not. st%t < st%t_exc) then
+                        st%free = .true.
+                        call free_checks(st, run, w2)
+                    end if
+                    if (w2 == WHY_REACHED) w2 = WHY_LIMIT
+                    call finish(st, hist, run, w2)
                     handle = .true.
                 end if
             case default
