@@ -193,6 +193,7 @@ module seispulse_winkler_rock
         real(dp) :: n = 0.0_dp        !! N (N)
         real(dp) :: m = 0.0_dp        !! M (N m)
         real(dp) :: u = 0.0_dp        !! spring energy (J)
+        real(dp) :: sn = 0.0_dp, cs = 1.0_dp   !! sin(theta), cos(theta) of the state
         real(dp) :: dn(4) = 0.0_dp, dm(4) = 0.0_dp
     end type contact_t
 
@@ -978,6 +979,8 @@ contains
         v = y(1)
         s = sin(y(2))
         c = cos(y(2))
+        ct%sn = s
+        ct%cs = c
         vd = y(3)
         thd = y(4)
         two_r = 2.0_dp * sys%r
@@ -1137,8 +1140,8 @@ contains
         real(dp) :: a, s, c, vdd, thdd, det, b1, b2, d(NY)
         call contact(self, y, ct, .false.)
         a = ground_accel(self%gr, t)
-        s = sin(y(2))
-        c = cos(y(2))
+        s = ct%sn
+        c = ct%cs
         call accelerations(self, s, c, y(4), a, ct%n, ct%m, vdd, thdd, det, b1, b2)
         d = [y(3), y(4), vdd, thdd, ct%n * y(3) - ct%m * y(4), &             ! (W.40)
              self%m * a * self%h * c * y(4)]
@@ -1159,8 +1162,8 @@ contains
         end associate
         call contact(self, y, ct, .true.)
         a = ground_accel(self%gr, t)
-        s = sin(y(2))
-        c = cos(y(2))
+        s = ct%sn
+        c = ct%cs
         thd = y(4)
         mh = self%m * self%h
         call accelerations(self, s, c, thd, a, ct%n, ct%m, vdd, thdd, det, b1, b2)
