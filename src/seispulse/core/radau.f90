@@ -42,7 +42,7 @@ module seispulse_radau
     use seispulse_checks, only: in_open
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
                                 SEISPULSE_NO_CONVERGENCE, set_error
-    use seispulse_lapack, only: lu_factor, lu_solve
+    use seispulse_lapack, only: lu_factor
     use seispulse_ode, only: ode_system, ode_dense_base, ode_locate, ode_locate_event
     implicit none
     private
@@ -479,8 +479,8 @@ contains
                         - betan * w(m, 2)
                     self%zc(m) = cmplx(z(m, 2), z(m, 3), kind=dp)
                 end do
-                call lu_solve(self%e1, self%ip1, z(:, 1))
-                call lu_solve(self%e2, self%ip2, self%zc)
+                call solve_real(self%e1, self%ip1, z(:, 1))
+                call solve_complex(self%e2, self%ip2, self%zc)
                 z(:, 2) = real(self%zc, dp)
                 z(:, 3) = aimag(self%zc)
                 newt = newt + 1
@@ -523,6 +523,67 @@ contains
         self%newton_iters = newt
     end subroutine newton
 
+    !> x = A^-1 b in place from dgetrf's factors: the row interchanges, then the unit
+    !> lower and the upper triangle, in the operation order of dgetrs (dlaswp, dtrsm; the
+    !> same values up to the sign of a zero); written out because for n = 4..8 the calls through dgetrs
+    !> (argument checks, dtrsm's case selection) cost more than the 2 n^2 operations.
+    pure subroutine solve_real(lu, ip, b)
+        real(dp), intent(in) :: lu(:, :)
+        integer(ik), intent(in) :: ip(:)
+        real(dp), intent(inout) :: b(:)
+        real(dp) :: tmp
+        integer :: i, k, n
+        n = size(b)
+        do k = 1, n
+            i = int(ip(k))
+            if (i /= k) then
+                tmp = b(k)
+                b(k) = b(i)
+                b(i) = tmp
+            end if
+        end do
+        do k = 1, n
+            do i = k + 1, n
+                b(i) = b(i) - b(k) * lu(i, k)
+            end do
+        end do
+        do k = n, 1, -1
+            b(k) = b(k) / lu(k, k)
+            do i = 1, k - 1
+                b(i) = b(i) - b(k) * lu(i, k)
+            end do
+        end do
+    end subroutine solve_real
+
+    !> The same from zgetrf's factors (zgetrs).
+    pure subroutine solve_complex(lu, ip, b)
+        complex(dp), intent(in) :: lu(:, :)
+        integer(ik), intent(in) :: ip(:)
+        complex(dp), intent(inout) :: b(:)
+        complex(dp) :: tmp
+        integer :: i, k, n
+        n = size(b)
+        do k = 1, n
+            i = int(ip(k))
+            if (i /= k) then
+                tmp = b(k)
+                b(k) = b(i)
+                b(i) = tmp
+            end if
+        end do
+        do k = 1, n
+            do i = k + 1, n
+                b(i) = b(i) - b(k) * lu(i, k)
+            end do
+        end do
+        do k = n, 1, -1
+            b(k) = b(k) / lu(k, k)
+            do i = 1, k - 1
+                b(i) = b(i) - b(k) * lu(i, k)
+            end do
+        end do
+    end subroutine solve_complex
+
     !> RADAU5's error estimate (R.17): err = || E1^-1 (f(t, y) + (dd . Z)/h) || in the
     !> weights; when it exceeds 1 on a first step or a retry, once more with
     !> f(t, y + err) in place of f(t, y) (the refinement for very stiff components).
@@ -540,13 +601,13 @@ contains
         associate(z => self%z, ee => self%ee, cont => self%cont)
             ee = hee1 * z(:, 1) + hee2 * z(:, 2) + hee3 * z(:, 3)
             cont = ee + f
-            call lu_solve(self%e1, self%ip1, cont)
+            call solve_real(self%e1, self%ip1, cont)
             err = max(sqrt(sum((cont / self%scal)**2) / real(self%n, dp)), 1.0e-10_dp)
             if (err > 1.0_dp .and. refine .and. err < huge(1.0_dp)) then
                 self%ys = y + cont
                 call sys%rhs(t, self%ys, self%fs(:, 1))
                 cont = self%fs(:, 1) + ee
-                call lu_solve(self%e1, self%ip1, cont)
+                call solve_real(self%e1, self%ip1, cont)
                 err = max(sqrt(sum((cont / self%scal)**2) / real(self%n, dp)), 1.0e-10_dp)
             end if
         end associate

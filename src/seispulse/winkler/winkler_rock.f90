@@ -203,6 +203,7 @@ module seispulse_winkler_rock
         real(dp) :: n = 0.0_dp        !! N (N)
         real(dp) :: m = 0.0_dp        !! M (N m)
         real(dp) :: u = 0.0_dp        !! spring energy (J)
+        real(dp) :: sn = 0.0_dp, cs = 1.0_dp   !! sin(theta), cos(theta) of the state
         real(dp) :: dn(4) = 0.0_dp, dm(4) = 0.0_dp
     end type contact_t
 
@@ -1010,20 +1011,27 @@ contains
     end function end_width
 
     !> Contact forces at y (v, theta, v', theta'): width, k, N, M, U and, with `deriv`,
-    !> the derivatives of N and M (W.44).
-    subroutine contact(sys, y, ct, deriv)
+    !> the derivatives of N and M (W.44). With no_u = .true., U is left 0 (the right-hand
+    !> side and the Jacobian do not need it): the moments of the geometric interval are
+    !> then skipped where the active one differs (a dashpot end during uplift).
+    subroutine contact(sys, y, ct, deriv, no_u)
         class(wr_ode_t), intent(inout) :: sys
         real(dp), intent(in) :: y(:)
         type(contact_t), intent(out) :: ct
         logical, intent(in) :: deriv
+        logical, intent(in), optional :: no_u
         type(end_t) :: glo, ghi, alo, ahi
         real(dp) :: s, c, v, vd, thd, dl, dh, ql, qh, two_r, aq, bq, m(0:2), gm(0:2), kb, &
                     dkb, kk, bd(4), ky(4), ay(4), by(4), sa, sb, wa, wb, qa, qb, dsa(4), dsb(4)
-        logical :: gempty, aempty, alo_d, ahi_d
+        logical :: gempty, aempty, alo_d, ahi_d, same_ends, want_u
         integer :: stat
+        want_u = .true.
+        if (present(no_u)) want_u = .not. no_u
         v = y(1)
         s = sin(y(2))
         c = cos(y(2))
+        ct%sn = s
+        ct%cs = c
         vd = y(3)
         thd = y(4)
         two_r = 2.0_dp * sys%r
@@ -1058,11 +1066,15 @@ contains
         ahi = ghi
         aempty = .false.
         if (sys%c > 0.0_dp) call restrict(ql, qh, two_r, END_Q, alo, ahi, aempty)
-        call strip_moments(sys%footing, sys%r, sys%alpha, glo%d_lo, glo%d_hi, ghi%d_lo, &
-                           ghi%d_hi, gm)
-        ct%u = 0.5_dp * kb * c * ((v * v) * gm(0) - (2.0_dp * v * s) * gm(1) + (s * s) * gm(2))
+        same_ends = alo%kind == glo%kind .and. ahi%kind == ghi%kind
+        if (want_u .or. (same_ends .and. .not. aempty)) then
+            call strip_moments(sys%footing, sys%r, sys%alpha, glo%d_lo, glo%d_hi, ghi%d_lo, &
+                               ghi%d_hi, gm)
+            if (want_u) ct%u = 0.5_dp * kb * c * ((v * v) * gm(0) - (2.0_dp * v * s) * gm(1) &
+                                                  + (s * s) * gm(2))
+        end if
         if (aempty) return
-        if (alo%kind == glo%kind .and. ahi%kind == ghi%kind) then
+        if (same_ends) then
             m = gm
         else
             call strip_moments(sys%footing, sys%r, sys%alpha, alo%d_lo, alo%d_hi, ahi%d_lo, &
@@ -1191,10 +1203,10 @@ contains
         real(dp), contiguous, intent(out) :: dydt(:)
         type(contact_t) :: ct
         real(dp) :: a, s, c, vdd, thdd, det, b1, b2, d(NY)
-        call contact(self, y, ct, .false.)
+        call contact(self, y, ct, .false., no_u=.true.)
         a = ground_accel(self%gr, t)
-        s = sin(y(2))
-        c = cos(y(2))
+        s = ct%sn
+        c = ct%cs
         call accelerations(self, s, c, y(4), a, ct%n, ct%m, vdd, thdd, det, b1, b2)
         d = [y(3), y(4), vdd, thdd, ct%n * y(3) - ct%m * y(4), &             ! (W.40)
              self%m * a * self%h * c * y(4)]
@@ -1213,10 +1225,10 @@ contains
                     mh
         associate(unused => f)
         end associate
-        call contact(self, y, ct, .true.)
+        call contact(self, y, ct, .true., no_u=.true.)
         a = ground_accel(self%gr, t)
-        s = sin(y(2))
-        c = cos(y(2))
+        s = ct%sn
+        c = ct%cs
         thd = y(4)
         mh = self%m * self%h
         call accelerations(self, s, c, thd, a, ct%n, ct%m, vdd, thdd, det, b1, b2)
