@@ -7,7 +7,7 @@ module driver_tables
     implicit none
     private
 
-    public :: write_tables, column_len, delete_files, say_written, code_legend
+    public :: write_tables, column_len, delete_files, say_written, code_legend, stack
 
     !> Width of a text column: a blank, then es24.16e3 (a negative number fills all 24).
     integer, parameter :: column_len = 25
@@ -230,5 +230,13 @@ contains
             if (ios == 0) close(u, status='delete', iostat=ios)
         end do
     end subroutine delete_files
+
+    !> Rows of b under the rows of a (tables built record by record).
+    pure function stack(a, b) result(c)
+        real(dp), intent(in) :: a(:, :), b(:, :)
+        real(dp) :: c(size(a, 1) + size(b, 1), size(a, 2))
+        c(1:size(a, 1), :) = a
+        c(size(a, 1) + 1:, :) = b
+    end function stack
 
 end module driver_tables
