@@ -11,7 +11,7 @@ module seispulse
     use seispulse_format, only: real_str, int_str
     use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi2, phi3, sin_pi, &
                                  cos_pi, complex_phis, phi1, phi1_taylor, phi1_from_exp, &
-                                 log1p_over_x, sinh_minus_x, x_minus_asinh, pi
+                                 log1p_over_x, sinh_minus_x, x_minus_asinh, x_minus_sin, pi
     use seispulse_divided_differences, only: exp_dd1, exp_dd2, exp_dd_pack, cexp_dd1, &
                                              cexp_dd2_at0, cexp_dd2, cexp_dd3
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
@@ -70,6 +70,7 @@ module seispulse
                                        ROLL_OUT_YP, ROLL_OUT_XG, ROLL_OUT_YG, ROLL_OUT_NORMAL, &
                                        ROLL_OUT_FRICTION, ROLL_OUT_ENERGY, ROLL_RUN_REST, &
                                        ROLL_RUN_NO_UPLIFT, ROLL_RUN_OVERTURN, ROLL_RUN_TIME_LIMIT
+    use seispulse_winkler_contact, only: FOOTING_CIRCLE, FOOTING_RECTANGLE, strip_moments
     use seispulse_records, only: record_t, read_record, record_pga, pga_scale_factor, &
                                  ground_motion, record_format_name, record_units_name, &
                                  RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, &

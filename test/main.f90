@@ -15,6 +15,7 @@ program tester
     use test_rocking_sim, only: collect_rocking_sim
     use test_cylinder, only: collect_cylinder
     use test_cylinder_roll, only: collect_cylinder_roll
+    use test_winkler, only: collect_winkler
     use test_records, only: collect_records
     use test_number_reader, only: collect_number_reader
     use test_newmark, only: collect_newmark
@@ -80,6 +81,10 @@ program tester
     if (selected('cylinder_roll')) then
         call collect_cylinder_roll(tests)
         call run_suite('cylinder_roll', tests, output_unit, npass, nfail)
+    end if
+    if (selected('winkler')) then
+        call collect_winkler(tests)
+        call run_suite('winkler', tests, output_unit, npass, nfail)
     end if
     if (selected('records')) then
         call collect_records(tests)
