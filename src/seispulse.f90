@@ -14,7 +14,8 @@ module seispulse
                                  log1p_over_x, sinh_minus_x, x_minus_asinh, x_minus_sin, pi
     use seispulse_divided_differences, only: exp_dd1, exp_dd2, exp_dd_pack, cexp_dd1, &
                                              cexp_dd2_at0, cexp_dd2, cexp_dd3
-    use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
+    use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton, &
+                               find_minimum
     use seispulse_ode, only: ode_system, ode_dop853_t, ode_dense_t, ode_dop853_factor
     use seispulse_lapack, only: solve_linear
     use seispulse_pulses, only: exp_pulse, exp_pulse_point, exp_pulse_peaks, &
@@ -71,6 +72,13 @@ module seispulse
                                        ROLL_OUT_FRICTION, ROLL_OUT_ENERGY, ROLL_RUN_REST, &
                                        ROLL_RUN_NO_UPLIFT, ROLL_RUN_OVERTURN, ROLL_RUN_TIME_LIMIT
     use seispulse_winkler_contact, only: FOOTING_CIRCLE, FOOTING_RECTANGLE, strip_moments
+    use seispulse_winkler, only: K_CONSTANT, K_VARYING, AXIS_LONG, AXIS_SHORT, WP_THETA, WP_B, &
+                                 WP_POLE, WP_AREA, WP_SETTLEMENT, WP_K, WP_M_FOUND, WP_M_IMPOSED, &
+                                 WP_FORCE, WP_NCOL, winkler_pushover_t, &
+                                 halfspace_rocking_stiffness, winkler_modulus_circle, &
+                                 rect_rocking_stiffness, winkler_modulus_rect, shape_factor, &
+                                 varying_modulus, winkler_pushover, block_winkler_pushover, &
+                                 winkler_master_curve, winkler_equivalent_cylinder
     use seispulse_records, only: record_t, read_record, record_pga, pga_scale_factor, &
                                  ground_motion, record_format_name, record_units_name, &
                                  RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, &
