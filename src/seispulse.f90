@@ -79,6 +79,13 @@ module seispulse
                                  rect_rocking_stiffness, winkler_modulus_rect, shape_factor, &
                                  varying_modulus, winkler_pushover, block_winkler_pushover, &
                                  winkler_master_curve, winkler_equivalent_cylinder
+    use seispulse_clay_footing, only: degradation_coeffs_t, inelastic_pushover_t, clay_bearing, &
+                                      initial_stiffness_ratio, gaussian_correction, &
+                                      theta_uplift, inelastic_pushover, moment_capacity_circle, &
+                                      IP_THETA, IP_K_R, IP_M_FOUND, IP_M_IMPOSED, IP_FORCE, IP_X, &
+                                      IP_G, IP_NCOL, CAPACITY_TC00_PEAK, &
+                                      CAPACITY_EFFECTIVE_WIDTH, NC_CIRCLE_CLAY, &
+                                      CHI_ELASTIC_LIMIT, SF_WEAK_LIMIT
     use seispulse_records, only: record_t, read_record, record_pga, pga_scale_factor, &
                                  ground_motion, record_format_name, record_units_name, &
                                  RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, &

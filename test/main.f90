@@ -16,6 +16,7 @@ program tester
     use test_cylinder, only: collect_cylinder
     use test_cylinder_roll, only: collect_cylinder_roll
     use test_winkler, only: collect_winkler
+    use test_clay_footing, only: collect_clay_footing
     use test_records, only: collect_records
     use test_number_reader, only: collect_number_reader
     use test_newmark, only: collect_newmark
@@ -85,6 +86,10 @@ program tester
     if (selected('winkler')) then
         call collect_winkler(tests)
         call run_suite('winkler', tests, output_unit, npass, nfail)
+    end if
+    if (selected('clay_footing')) then
+        call collect_clay_footing(tests)
+        call run_suite('clay_footing', tests, output_unit, npass, nfail)
     end if
     if (selected('records')) then
         call collect_records(tests)
