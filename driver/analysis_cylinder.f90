@@ -47,8 +47,8 @@ module driver_cylinder
     use driver_axis, only: axis_values
     use driver_rocking_common, only: check_run_options, restitution_and_model, &
                                      locate_run_message, map_kind, map_template, progress_t, &
-                                     axes_names, map_axes_code, map_grids, map_axes_row, &
-                                     map_axes_header
+                                     axes_names, map_axes_code, map_grids, map_axes_header, &
+                                     map_table
     implicit none
     private
 
@@ -1131,7 +1131,7 @@ contains
         integer, allocatable :: classes(:, :), classes_b(:, :), diff(:, :)
         type(rocking_body_t) :: eq
         type(pulse_t) :: tpl
-        integer :: code, i, j, row, st, axes_code, ncol
+        integer :: code, i, st, axes_code
         type(progress_t) :: progress
 
         where = located(path, s%gm)
@@ -1200,23 +1200,13 @@ contains
         end if
 
         ! --- the table: both axis systems, the chosen one first
-        ncol = merge(7, 5, compare_block)
-        allocate(table(size(ys) * size(xs), ncol))
-        row = 0
-        do i = 1, size(ys)
-            do j = 1, size(xs)
-                row = row + 1
-                table(row, 1:4) = map_axes_row(axes_code, xs(j), ys(i), s%body%p, &
-                                               s%body%theta_c)
-                table(row, 5) = real(classes(i, j), dp)
-                if (compare_block) table(row, 6:7) = [real(classes_b(i, j), dp), &
-                                                      real(diff(i, j), dp)]
-            end do
-        end do
-        call map_axes_header(axes_code, names, units)
         if (compare_block) then
-            names = [character(len=12) :: names, 'class_block', 'diff']
-            units = [character(len=4) :: units, '-', '-']
+            call map_table(axes_code, xs, ys, s%body%p, s%body%theta_c, classes, table, &
+                           classes_b, diff)
+            call map_axes_header(axes_code, names, units, 'class_block')
+        else
+            call map_table(axes_code, xs, ys, s%body%p, s%body%theta_c, classes, table)
+            call map_axes_header(axes_code, names, units)
         end if
         comments(1) = 'seispulse analysis cylinder: overturning map, '//pulse_kind_name(code) &
                       //' pulse family, '//trim(model)//' model (seispulse_cylinder)'

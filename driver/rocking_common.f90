@@ -15,7 +15,7 @@ module driver_rocking_common
 
     public :: check_run_options, restitution_and_model, locate_run_message
     public :: map_kind, map_template, progress_t
-    public :: axes_names, map_axes_code, map_grids, map_axes_row, map_axes_header
+    public :: axes_names, map_axes_code, map_grids, map_axes_header, map_table
 
     character(len=10), parameter :: model_names(2) = [character(len=10) :: 'nonlinear', &
         'linearized']
@@ -278,11 +278,14 @@ contains
         end if
     end function map_axes_row
 
-    !> Names and units of the four axis columns of map_axes_row, then 'class' (-).
-    subroutine map_axes_header(axes_code, names, units)
+    !> Names and units of the columns of map_table: the four axis columns of map_axes_row,
+    !> 'class' (-), and with `compare` (the name of the comparison's class column) that
+    !> column and 'diff' (-).
+    subroutine map_axes_header(axes_code, names, units, compare)
         integer, intent(in) :: axes_code                  !! MAP_AXES_* code
         character(len=12), allocatable, intent(out) :: names(:)
         character(len=4), allocatable, intent(out) :: units(:)
+        character(len=*), intent(in), optional :: compare
         if (axes_code == MAP_AXES_DIMENSIONLESS) then
             names = [character(len=12) :: 'freq_ratio', 'amp_ratio', 'freq_hz', 'pga', 'class']
             units = [character(len=4) :: '-', '-', 'Hz', 'g', '-']
@@ -290,7 +293,35 @@ contains
             names = [character(len=12) :: 'freq_hz', 'pga', 'freq_ratio', 'amp_ratio', 'class']
             units = [character(len=4) :: 'Hz', 'g', '-', '-', '-']
         end if
+        if (present(compare)) then
+            names = [character(len=12) :: names, compare, 'diff']
+            units = [character(len=4) :: units, '-', '-']
+        end if
     end subroutine map_axes_header
+
+    !> The table of a map, amplitudes outer and frequencies inner: per cell the four axis
+    !> columns (map_axes_row), the class, and with a comparison map (classes_b and diff,
+    !> both or neither) its class and the difference code.
+    subroutine map_table(axes_code, xs, ys, p, theta_c, classes, table, classes_b, diff)
+        integer, intent(in) :: axes_code                  !! MAP_AXES_* code
+        real(dp), intent(in) :: xs(:), ys(:)              !! the grids on the chosen axes
+        real(dp), intent(in) :: p, theta_c                !! rigid p (rad/s), theta_c (rad)
+        integer, intent(in) :: classes(:, :)              !! size(ys) x size(xs)
+        real(dp), allocatable, intent(out) :: table(:, :)
+        integer, intent(in), optional :: classes_b(:, :), diff(:, :)
+        integer :: i, j, row
+        allocate(table(size(ys) * size(xs), merge(7, 5, present(classes_b))))
+        row = 0
+        do i = 1, size(ys)
+            do j = 1, size(xs)
+                row = row + 1
+                table(row, 1:4) = map_axes_row(axes_code, xs(j), ys(i), p, theta_c)
+                table(row, 5) = real(classes(i, j), dp)
+                if (present(classes_b)) table(row, 6:7) = [real(classes_b(i, j), dp), &
+                                                           real(diff(i, j), dp)]
+            end do
+        end do
+    end subroutine map_table
 
     !> Start the clock of a map; `timing`: the lines also give the elapsed time and the
     !> time left (default .false.: "map: row i/n" alone).
