@@ -1108,6 +1108,21 @@ contains
         end if
     end function last_time
 
+    !> The end of a run (s): t_max if given, else t_end if given, else the end of the
+    !> excitation t_exc plus 20 periods 2 pi/p of the rigid body (a run that cannot be
+    !> proved safe, as with varying k, ends there as a time limit).
+    real(dp) function run_end(s, t_exc)
+        type(setup_t), intent(in) :: s
+        real(dp), intent(in) :: t_exc                     !! end of the excitation (s)
+        if (given(s%gw, 't_max')) then
+            run_end = t_max
+        else if (given(s%gw, 't_end')) then
+            run_end = t_end
+        else
+            run_end = t_exc + 20.0_dp * (2.0_dp * pi / s%body%p)
+        end if
+    end function run_end
+
     !> 'history' under the pulse of &pulse: the summary and the history tables.
     subroutine do_history_pulse(path, prefix, s, stat, errmsg)
         character(len=*), intent(in) :: path, prefix
@@ -1119,14 +1134,15 @@ contains
         character(len=16), allocatable :: names(:)
         character(len=6), allocatable :: units(:)
         real(dp), allocatable :: t(:), hist(:, :), table(:, :)
-        real(dp) :: one_hist(WR_NOUT, 1)
+        real(dp) :: one_hist(WR_NOUT, 1), t_run
         integer :: n, st
 
         call echo(s)
         stat = 1
         msg = ''
+        t_run = run_end(s, pulse_end(s%pin))
         call winkler_rock(s%model, [0.0_dp], one_hist, run, st, msg, pulse=s%pin%p, &
-                          theta0=theta0, theta_rate0=theta_rate0, t_max=t_max, rtol=rtol)
+                          theta0=theta0, theta_rate0=theta_rate0, t_max=t_run, rtol=rtol)
         if (st /= SEISPULSE_SUCCESS) then
             errmsg = locate_message(path, trim(msg), s)
             return
@@ -1139,7 +1155,7 @@ contains
         n = size(t)
         allocate(hist(WR_NOUT, n), table(n, 1 + WR_NOUT))
         call winkler_rock(s%model, t, hist, run, st, msg, pulse=s%pin%p, theta0=theta0, &
-                          theta_rate0=theta_rate0, t_max=t_max, rtol=rtol)
+                          theta_rate0=theta_rate0, t_max=max(t_run, t(n)), rtol=rtol)
         if (st /= SEISPULSE_SUCCESS) then
             errmsg = locate_message(path, trim(msg), s)
             return
@@ -1178,7 +1194,7 @@ contains
         character(len=6), allocatable :: units(:)
         real(dp), allocatable :: accel(:), t(:), summary(:, :), hist(:, :), part(:, :), &
                                  h1(:, :)
-        real(dp) :: one_hist(WR_NOUT, 1), nan
+        real(dp) :: one_hist(WR_NOUT, 1), nan, t_exc, t_run
         integer :: nrec, ir, i, st, nfailed
         logical, allocatable :: failed(:)
 
@@ -1197,12 +1213,13 @@ contains
             failed(ir) = .not. outs(ir)%ok
             if (outs(ir)%ok) then
                 msg = ''
+                t_exc = outs(ir)%dt * real(size(accel) - 1, dp)
+                t_run = run_end(s, t_exc)
                 call winkler_rock(s%model, [0.0_dp], one_hist, run, st, msg, accel=accel, &
                                   dt=outs(ir)%dt, g_rec=g, theta0=theta0, &
-                                  theta_rate0=theta_rate0, t_max=t_max, rtol=rtol)
+                                  theta_rate0=theta_rate0, t_max=t_run, rtol=rtol)
                 if (st == SEISPULSE_SUCCESS) then
-                    call time_grid(last_time(run, outs(ir)%dt * real(size(accel) - 1, dp)), &
-                                   dt, npts, t, errmsg)
+                    call time_grid(last_time(run, t_exc), dt, npts, t, errmsg)
                     if (len(errmsg) > 0) then
                         stat = 1
                         errmsg = located(path, s%gw)//list_item('files', ir)//': '//errmsg
@@ -1211,7 +1228,8 @@ contains
                     allocate(h1(WR_NOUT, size(t)), part(size(t), 1 + WR_NOUT))
                     call winkler_rock(s%model, t, h1, run, st, msg, accel=accel, &
                                       dt=outs(ir)%dt, g_rec=g, theta0=theta0, &
-                                      theta_rate0=theta_rate0, t_max=t_max, rtol=rtol)
+                                      theta_rate0=theta_rate0, t_max=max(t_run, t(size(t))), &
+                                      rtol=rtol)
                     part(:, 1) = t
                     part(:, 2:) = transpose(h1)
                     deallocate(h1)

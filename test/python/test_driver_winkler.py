@@ -213,6 +213,43 @@ def test_small_pulse_keeps_full_contact(driver, tmp_path):
     assert np.all(np.abs(h["v"] / static - 1) < 0.05)
 
 
+@pytest.mark.parametrize("damping", ["xi=0.02", "xi=0.02, damping_ref='vertical'",
+                                     "c=12345.0"])
+def test_history_damping(driver, tmp_path, damping):
+    """The dashpot of the summary: c = 2 xi I_O omega_r/I with omega_r^2 = (k I - m g h)/I_O,
+    I_O = m (3 r^2 + 16 h^2)/12 about the base centre and I = pi r^4/4 (rocking), or
+    c = 2 xi sqrt(k m/A), A = pi r^2 (vertical), or c as given."""
+    out, _ = winkler(driver, tmp_path, f"what='history', {SOFT}, {damping}, t_end=1.0, "
+                     "npts=11", "&pulse kind='half_sine', amp=0.05, amp_unit='g' /\n")
+    m, r, h = 47124.0, 1.0, 3.0
+    k = circle_k(2.0e6, 0.3, r)
+    i_o, i_base = m * (3 * r**2 + 16 * h**2) / 12, math.pi * r**4 / 4
+    if "vertical" in damping:
+        c = 2 * 0.02 * math.sqrt(k * m / (math.pi * r**2))
+    elif damping.startswith("xi"):
+        c = 2 * 0.02 * i_o * math.sqrt((k * i_base - m * G * h) / i_o) / i_base
+    else:
+        c = 12345.0
+    assert out["winkler"]["c"][0] == pytest.approx(c, rel=1e-12)
+    assert out["winkler"]["k"][0] == pytest.approx(k, rel=1e-14)
+
+
+@pytest.mark.parametrize("method, outcome", [("constant", "safe"), ("varying", "time_limit")])
+def test_block_history_keeps_full_contact(driver, tmp_path, method, outcome):
+    """A block (b = 0.5 m, alpha = 1 m, h = 1.5 m) under a pulse well below uplift: the
+    contact width 2 b throughout and the static settlement W/(4 alpha b k) at t = 0; safe on
+    constant k (the energy proof), a time limit at t_end on varying k (no proof there)."""
+    out, proc = winkler(driver, tmp_path, "what='history', footing='block', b=0.5, alpha=1.0, "
+                        f"h=1.5, mass=10000.0, k=5.0e7, k_method='{method}', t_end=2.0, "
+                        "npts=101",
+                        "&pulse kind='sine_cycle', amp=0.02, amp_unit='g', duration=1.0 /\n")
+    h = out["winkler_history"]
+    assert OUTCOMES[int(out["winkler"]["outcome"][0])] == outcome
+    assert f"winkler: {outcome}" in proc.stdout
+    assert np.all(np.abs(h["contact_width"] - 1.0) < 1e-12)
+    assert h["v"][0] == pytest.approx(10000.0 * G / (4 * 1.0 * 0.5 * 5.0e7), rel=1e-9)
+
+
 def test_history_records(driver, source_root, tmp_path):
     """Two records of input/records: a summary row and the history rows of each, labelled."""
     rec = source_root / "input" / "records"
