@@ -97,6 +97,57 @@ def test_example_pushover(driver, source_root, tmp_path):
                                rtol=1e-12, atol=1e-6)
 
 
+def circle_moment(r, k, w, th):
+    """Foundation moment (N m) of a circle of radius r on constant-k springs at tilt th,
+    written out here: pi k r^4 cos^2 sin/4 in full contact; after uplift the contact width b
+    from Phi(b) = J1 - c A0 = 2 W/(k sin 2 th) (brentq), M = k sin cos^2 (J2 - c J1), with
+    the segment's area A0, first and second moments (c = r - b)."""
+    from scipy.optimize import brentq
+
+    def parts(b):
+        c = r - b
+        sq = math.sqrt(max(2 * r * b - b * b, 0.0))
+        a0 = r * r * math.acos(c / r) - c * sq
+        j1 = 2 / 3 * sq**3
+        j2 = r**4 / 4 * (math.pi / 2 - math.asin(c / r)) - c / 4 * (2 * c * c - r * r) * sq
+        return c, a0, j1, j2
+
+    s2 = math.sin(2 * th)
+    if s2 * k * math.pi * r**3 <= 2 * w:
+        return math.pi * k * r**4 * math.cos(th)**2 * math.sin(th) / 4
+    target = 2 * w / (k * s2)
+    b = brentq(lambda x: parts(x)[2] - parts(x)[0] * parts(x)[1] - target, 1e-9, 2 * r,
+               xtol=1e-15, rtol=1e-15)
+    c, _, j1, j2 = parts(b)
+    return k * math.sin(th) * math.cos(th)**2 * (j2 - c * j1)
+
+
+def test_pushover_summary_against_scipy(driver, tmp_path):
+    """The summary of the circle of the examples: the overturning tilt (the root of
+    M - W h sin theta, brentq), the peak F/W and the peak imposed moment (bounded scalar
+    maximisation of the curve written out here), and theta_up in closed form."""
+    from scipy.optimize import brentq, minimize_scalar
+
+    out, _ = winkler(driver, tmp_path, "r=1.0, h=3.0, mass=47124.0, g_mod=38.5e6, nu=0.3, "
+                     "theta_max=0.05, theta_count=3")
+    s = out["winkler_pushover_summary"]
+    r, h, w, k = 1.0, 3.0, 47124.0 * G, circle_k(38.5e6, 0.3, 1.0)
+    m_imp = lambda th: circle_moment(r, k, w, th) - w * h * math.sin(th)  # noqa: E731
+    assert s["theta_overturn"][0] == pytest.approx(
+        brentq(m_imp, 0.25, 0.31, xtol=1e-15, rtol=1e-15), rel=1e-11)
+    force = minimize_scalar(lambda th: -m_imp(th) / (h * math.cos(th)) / w,
+                            bounds=(0.005, 0.06), method="bounded",
+                            options={"xatol": 1e-10})
+    assert s["max_force_ratio"][0] == pytest.approx(-force.fun, rel=1e-11)
+    assert s["theta_at_max"][0] == pytest.approx(force.x, abs=1e-6)
+    moment = minimize_scalar(lambda th: -m_imp(th), bounds=(0.005, 0.06), method="bounded",
+                             options={"xatol": 1e-10})
+    assert s["max_moment"][0] == pytest.approx(-moment.fun, rel=1e-11)
+    assert s["theta_at_max_moment"][0] == pytest.approx(moment.x, abs=1e-6)
+    assert s["theta_up"][0] == pytest.approx(0.5 * math.asin(2 * w / (k * math.pi)),
+                                             rel=1e-14)
+
+
 def test_example_varying(driver, source_root, tmp_path):
     """input/winkler_pushover_varying.nml: the documented numbers (peak F/W 0.283,
     overturning at 0.317 rad, b/2r = 0.018 and a/r = 0.98 there); k grows as the contact
