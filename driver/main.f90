@@ -3,9 +3,9 @@
 !> Reads &run (analysis, output) and the groups of that analysis, echoes the
 !> effective input, writes the tables and says where they went. Any problem is one
 !> line on stderr naming file, line, group, key and problem, and exit status 2.
-!> Analyses 'newmark', 'sdof' and 'cylinder' (a history on records) go on past a record
-!> that cannot be read: its rows fail, the tables are written with all rows, and the exit
-!> status is 1.
+!> Analyses 'newmark', 'sdof', 'cylinder' and 'winkler' (a history on records) go on past a
+!> record that cannot be read: its rows fail, the tables are written with all rows, and the
+!> exit status is 1.
 program seispulse_driver
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     use, intrinsic :: iso_c_binding, only: c_int

@@ -316,6 +316,17 @@ def test_history_records(driver, source_root, tmp_path):
     assert {r.split(",")[0] for r in hist[1:]} == {'"quake_a"', '"quake_b"'}
 
 
+def test_history_record_that_fails(driver, source_root, tmp_path):
+    """A record that cannot be read: NaN rows for it, the other computed, exit status 1."""
+    rec = source_root / "input" / "records"
+    _, proc = winkler(driver, tmp_path, f"what='history', {SOFT}, dt=0.05",
+                      f"&records files='{tmp_path / 'nope.AT2'}', '{rec / 'quake_a.AT2'}' /\n",
+                      status=1)
+    assert "1 of 2 records failed" in proc.stderr
+    rows = (tmp_path / "w_winkler.csv").read_text().splitlines()[1:]
+    assert rows[0].split(",")[2] == "NaN" and rows[1].split(",")[2] != "NaN"
+
+
 def test_map_cells_and_rigid_comparison(driver, tmp_path):
     """A one-sine map at 1 Hz: 0.1 g (below the rigid uplift, tan(theta_c) = 1/3 g) must
     not overturn on either base, 1.5 g must overturn on both; the difference code follows
