@@ -43,9 +43,9 @@
 !> safe (W.53)-(W.55).
 module seispulse_winkler_rock
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan, ieee_value, &
-                                             ieee_quiet_nan
+                                             ieee_quiet_nan, ieee_positive_inf
     use seispulse_kinds, only: dp
-    use seispulse_checks, only: finite_positive, finite_at_least, in_closed, &
+    use seispulse_checks, only: finite_positive, finite_at_least, in_closed, in_open, outside, &
                                 check_ascending_times
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
                                 set_error
@@ -206,6 +206,7 @@ module seispulse_winkler_rock
         type(ode_radau5_t) :: ode
         real(dp) :: t = 0.0_dp, y(NY) = 0.0_dp, f(NY) = 0.0_dp, h = 0.0_dp, h_max = 1.0_dp
         real(dp) :: p = 1.0_dp, t_lim = 0.0_dp
+        real(dp) :: rtol = 1.0e-9_dp, atol(NY) = 1.0_dp   !! step tolerances
         integer :: side(NEV) = 0
         logical :: active(NEV) = .false.
         logical :: lifted = .false.        !! an edge lifted since the last theta crossing
@@ -226,6 +227,15 @@ module seispulse_winkler_rock
         integer :: stat = SEISPULSE_SUCCESS
         character(len=:), allocatable :: msg
     end type wr_state_t
+
+    !> An event function on the dense output of the current step, for the root finder.
+    type, extends(scalar_function) :: root_fn_t
+        type(wr_state_t), pointer :: st => null()
+        integer :: i = 0
+        real(dp) :: hh = 0.0_dp
+    contains
+        procedure :: eval => root_eval
+    end type root_fn_t
 
 contains
 
@@ -265,7 +275,7 @@ contains
         stat = SEISPULSE_SUCCESS
         call check_body(body, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (.not. (finite_positive(k) .and. k < 1.0e30_dp)) then
+        if (.not. in_open(k, 0.0_dp, 1.0e30_dp)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'k = '//real_str(k) &
                            //': the Winkler modulus must be a finite number in (0, 1e30) (N/m^3)')
             return
@@ -279,7 +289,7 @@ contains
                                //' (m) of the block base is required for a block')
                 return
             end if
-            if (.not. (finite_positive(alpha) .and. alpha < 1.0e30_dp)) then
+            if (.not. in_open(alpha, 0.0_dp, 1.0e30_dp)) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'alpha = ' &
                                //real_str(alpha)//': must be a finite number in (0, 1e30) (m)')
                 return
@@ -313,7 +323,7 @@ contains
         end if
         model%c = 0.0_dp
         if (present(c)) then
-            if (.not. (finite_at_least(c, 0.0_dp) .and. c < 1.0e30_dp)) then
+            if (.not. in_closed(c, 0.0_dp, 1.0e30_dp)) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'c = '//real_str(c) &
                                //': the dashpot constant must be a finite number in [0, 1e30)' &
                                //' (N s/m^3)')
@@ -321,7 +331,7 @@ contains
             end if
             model%c = c
         else if (present(xi)) then
-            if (.not. (finite_at_least(xi, 0.0_dp) .and. xi <= 100.0_dp)) then
+            if (.not. in_closed(xi, 0.0_dp, 100.0_dp)) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'xi = '//real_str(xi) &
                                //': the damping ratio must be a number in [0, 100]')
                 return
@@ -430,20 +440,16 @@ contains
                            //': must be in (-pi/2, pi/2) (rad)')
             return
         end if
-        rt = rtol_default
-        if (present(rtol)) rt = rtol
-        if (.not. in_closed(rt, rtol_min, rtol_max)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'rtol = '//real_str(rt) &
-                           //': must be in [1e-13, 1e-3]')
-            return
-        end if
+        call check_rtol(rtol, rtol_default, rt, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         if (present(pulse) .and. present(accel)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'pulse, accel: give a ' &
                            //'pulse or a record, not both')
             return
         end if
         if (present(t_max)) then
-            if (ieee_is_nan(t_max) .or. .not. t_max > 0.0_dp) then
+            if (outside(t_max, 0.0_dp, ieee_value(1.0_dp, ieee_positive_inf), .true., &
+                        .false.)) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 't_max = ' &
                                //real_str(t_max)//': must be a number > 0 (s) or +inf')
                 return
@@ -543,26 +549,21 @@ contains
             return
         end if
         do j = 1, size(x)
-            if (.not. (finite_positive(x(j)) .and. x(j) < 1.0e30_dp)) then
+            if (.not. in_open(x(j), 0.0_dp, 1.0e30_dp)) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'x('//int_str(j)//') = ' &
                                //real_str(x(j))//': must be a finite number in (0, 1e30)')
                 return
             end if
         end do
         do i = 1, size(y)
-            if (.not. (finite_at_least(y(i), 0.0_dp) .and. y(i) < 1.0e30_dp)) then
+            if (.not. in_closed(y(i), 0.0_dp, 1.0e30_dp)) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'y('//int_str(i)//') = ' &
                                //real_str(y(i))//': must be a finite number in [0, 1e30)')
                 return
             end if
         end do
-        rt = rtol_map_default
-        if (present(rtol)) rt = rtol
-        if (.not. in_closed(rt, rtol_min, rtol_max)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'rtol = '//real_str(rt) &
-                           //': must be in [1e-13, 1e-3]')
-            return
-        end if
+        call check_rtol(rtol, rtol_map_default, rt, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         if (present(template)) pl = template
         pl%kind = kind
         t0f = 1.5_dp
@@ -766,6 +767,22 @@ contains
         end if
     end subroutine check_model
 
+    !> The step tolerance: rtol if given (in [1e-13, 1e-3]), else the default.
+    subroutine check_rtol(rtol, default, rt, stat, errmsg)
+        real(dp), intent(in), optional :: rtol
+        real(dp), intent(in) :: default
+        real(dp), intent(out) :: rt
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        stat = SEISPULSE_SUCCESS
+        rt = default
+        if (present(rtol)) rt = rtol
+        if (.not. in_closed(rt, rtol_min, rtol_max)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'rtol = '//real_str(rt) &
+                           //': must be in [1e-13, 1e-3]')
+        end if
+    end subroutine check_rtol
+
     !> The system's parameters from a (valid) model.
     pure subroutine load_model(sys, model)
         type(wr_ode_t), intent(inout) :: sys
@@ -798,8 +815,9 @@ contains
         ths = vs / model%r
         wv = sqrt(model%k * model%area / model%body%mass)
         st%h_max = 0.5_dp / st%p
-        call st%ode%init(NY, rtol, rtol * [vs, ths, vs * wv, ths * wv, model%body%weight * vs, &
-                         model%body%weight * vs], st%stat)
+        st%rtol = rtol
+        st%atol = rtol * [vs, ths, vs * wv, ths * wv, model%body%weight * vs, &
+                          model%body%weight * vs]
         st%e_rest = model%body%weight * (model%body%h - 0.5_dp * vs)
         st%proof = model%k_method == K_CONSTANT .and. ieee_is_finite(model%theta_overturn)
         st%barrier = ieee_value(1.0_dp, ieee_quiet_nan)
@@ -1299,9 +1317,12 @@ contains
         type(contact_t) :: ct
         integer :: src, why, i
         logical :: found
+        real(dp) :: a_end
 
         stat = SEISPULSE_SUCCESS
         call empty_run(run)
+        ! a fresh integrator for every run (a map's cells share the allocation)
+        call st%ode%init(NY, st%rtol, st%atol, st%stat)
         if (st%stat /= SEISPULSE_SUCCESS) then
             call set_error(stat, errmsg, SEISPULSE_INTERNAL, 'winkler_rock: integrator ' &
                            //'set-up failed (a bug)')
@@ -1328,6 +1349,7 @@ contains
         st%run_m = 0.0_dp
         st%t_out_cross = ieee_value(1.0_dp, ieee_quiet_nan)
         src = st%sys%gr%src
+        a_end = 0.0_dp
         st%sys%gr%src = GR_NONE
         st%sys%stat = SEISPULSE_SUCCESS
         call contact(st%sys, st%y, ct, .false.)
@@ -1353,6 +1375,9 @@ contains
                 call next_piece(it, accel, 'winkler_rock', piece, found, stat, errmsg)
                 if (stat /= SEISPULSE_SUCCESS) return
                 if (.not. found) exit pieces
+                ! a_g jumps (or the ground is switched off before the piece): the right-hand
+                ! side changes other than through (t, y), so Radau starts afresh
+                if (st%t < piece%ta .or. abs(piece%aa - a_end) > 0.0_dp) call st%ode%restart()
                 st%sys%gr%ta = piece%ta
                 st%sys%gr%tb = piece%tb
                 st%sys%gr%aa = piece%aa
@@ -1362,13 +1387,16 @@ contains
                     st%sys%gr%src = GR_NONE
                     call advance(st, hist, run, min(piece%ta, st%t_lim), why)
                     st%sys%gr%src = src
+                    call st%ode%restart()
                     if (handle(why)) exit pieces
                 end if
+                a_end = piece%ab
                 call advance(st, hist, run, min(piece%tb, st%t_lim), why)
                 if (handle(why)) exit pieces
             end do pieces
         end if
         if (.not. st%done) then
+            if (abs(a_end) > 0.0_dp) call st%ode%restart()
             st%sys%gr%src = GR_NONE
             st%free = .true.
             call free_checks(st, run, why)
@@ -1425,7 +1453,9 @@ contains
         st%active(EV_Q_HI) = st%sys%c > 0.0_dp
         st%active(EV_Q_LO) = st%sys%c > 0.0_dp
         st%active(EV_OVERTURN) = ieee_is_finite(st%sys%theta_ov)
+        st%side = 0
         do i = 1, NEV
+            if (.not. st%active(i)) cycle
             g = st%sys%event(i, st%t, st%y)
             st%side(i) = side_of(g)
         end do
@@ -1627,8 +1657,9 @@ contains
         logical, intent(out) :: crossed(NEV)
         real(dp) :: gall(NEV, 0:NSAMP), dall(NEV, 0:NSAMP), gs(0:NSAMP), ds(0:NSAMP), x, ga, &
                     xt, gt, yv(NY)
-        integer :: i, k, sd
-        logical :: has_turn
+        integer :: i, k, sd, k2
+        logical :: has_turn, turn
+        real(dp) :: gx, dx
         ev = 0
         x_ev = 2.0_dp
         crossed = .false.
@@ -1637,6 +1668,12 @@ contains
         end do
         do i = 1, NEV
             if (.not. st%active(i)) cycle
+            if ((i == EV_Q_HI .and. st%side(EV_EDGE_HI) < 0) .or. &
+                (i == EV_Q_LO .and. st%side(EV_EDGE_LO) < 0)) then
+                ! the pressure at an edge out of contact is no structure: its side follows
+                if (side_of(gall(i, NSAMP)) /= 0) st%side(i) = side_of(gall(i, NSAMP))
+                cycle
+            end if
             sd = st%side(i)
             has_turn = i == EV_EDGE_HI .or. i == EV_EDGE_LO .or. i == EV_THETA .or. &
                        i == EV_OVERTURN .or. i == EV_CAP
@@ -1656,20 +1693,32 @@ contains
             do k = 1, NSAMP
                 if (xs(k - 1) >= x_ev) exit
                 ga = gs(k - 1)
-                if (k == 1 .or. side_of(ga) /= sd) ga = real(sd, dp) * tiny(1.0_dp)
                 if (real(sd, dp) * gs(k) < 0.0_dp) then
-                    call locate(st, i, xs(k - 1), xs(k), ga, gs(k), x)
+                    if (.not. real(sd, dp) * ga > 0.0_dp) then
+                        ! on or across the boundary at the start of the step (just after an
+                        ! event of this function, within the rounding): back at once
+                        x = xs(k - 1)
+                    else
+                        call locate(st, i, hh, xs(k - 1), xs(k), ga, gs(k), x)
+                    end if
                     exit
                 end if
-                if (has_turn) then
+                turn = has_turn
+                ! |theta| has a kink, not a turning point, where theta changes sign
+                if (i == EV_OVERTURN .or. i == EV_CAP) turn = ys(2, k - 1) * ys(2, k) > 0.0_dp
+                if (turn) then
                     if (real(sd, dp) * ds(k - 1) < 0.0_dp .and. real(sd, dp) * ds(k) > 0.0_dp) then
                         ! towards the boundary, then away: search at the turning point
-                        call locate(st, EV_TURN + i, xs(k - 1), xs(k), ds(k - 1), ds(k), xt)
+                        call locate(st, EV_TURN + i, hh, xs(k - 1), xs(k), ds(k - 1), ds(k), xt)
                         if (st%stat /= SEISPULSE_SUCCESS) return
                         call st%ode%value(xt, yv)
                         gt = st%sys%event(i, st%t + xt * hh, yv)
                         if (real(sd, dp) * gt < 0.0_dp) then
-                            call locate(st, i, xs(k - 1), xt, ga, gt, x)
+                            if (.not. real(sd, dp) * ga > 0.0_dp) then
+                                x = xs(k - 1)
+                            else
+                                call locate(st, i, hh, xs(k - 1), xt, ga, gt, x)
+                            end if
                             exit
                         end if
                     end if
@@ -1677,8 +1726,20 @@ contains
             end do
             if (st%stat /= SEISPULSE_SUCCESS) return
             if (x >= 0.0_dp .and. x < x_ev) then
-                x_ev = x
-                ev = i
+                ! the event state strictly on the new side (the root may sit on the old side
+                ! of g within the rounding): forward in doubling steps, at most to xs(k)
+                dx = 16.0_dp * epsilon(1.0_dp)
+                do k2 = 1, 64
+                    call st%ode%value(x, yv)
+                    gx = st%sys%event(i, st%t + x * hh, yv)
+                    if (real(sd, dp) * gx < 0.0_dp .or. .not. x < xs(k)) exit
+                    x = min(x + dx, xs(k))
+                    dx = 2.0_dp * dx
+                end do
+                if (x < x_ev) then
+                    x_ev = x
+                    ev = i
+                end if
             end if
         end do
         if (ev == 0) return
@@ -1686,6 +1747,8 @@ contains
         call st%ode%value(x_ev, yv)
         do i = 1, NEV
             if (.not. st%active(i) .or. st%side(i) == 0) cycle
+            if ((i == EV_Q_HI .and. st%side(EV_EDGE_HI) < 0) .or. &
+                (i == EV_Q_LO .and. st%side(EV_EDGE_LO) < 0)) cycle
             if (i == ev) then
                 crossed(i) = .true.
             else
@@ -1695,20 +1758,40 @@ contains
     end subroutine scan_events
 
     !> Root of event function i on the dense output in [xa, xb] (values fa, fb there).
-    subroutine locate(st, i, xa, xb, fa, fb, x)
-        type(wr_state_t), intent(inout) :: st
+    subroutine locate(st, i, hh, xa, xb, fa, fb, x)
+        type(wr_state_t), intent(inout), target :: st
         integer, intent(in) :: i
-        real(dp), intent(in) :: xa, xb, fa, fb
+        real(dp), intent(in) :: hh, xa, xb, fa, fb
         real(dp), intent(out) :: x
+        type(root_fn_t) :: fn
         character(len=120) :: rmsg
         rmsg = ''
-        call st%ode%locate_event(st%sys, i, xa, xb, fa, fb, x, st%stat, rmsg)
+        fn%st => st
+        fn%i = i
+        fn%hh = hh
+        ! an absolute tolerance of a few ulps of the step fraction (~1e-15 hh): a root next
+        ! to x = 0 would otherwise ask for a relative accuracy below the rounding of g
+        call find_root(fn, xa, xb, x, st%stat, rmsg, xtol=16.0_dp * epsilon(1.0_dp), &
+                       fa_known=fa, fb_known=fb)
+        x = min(max(x, xa), xb)
         if (st%stat /= SEISPULSE_SUCCESS) then
-            st%msg = 'winkler_rock: event location failed after t = '//real_str(st%t)//': ' &
-                     //trim(rmsg)//' (a bug)'
+            st%msg = 'winkler_rock: event location failed after t = '//real_str(st%t) &
+                     //' (event '//int_str(i)//', bracket '//real_str(xa)//' '//real_str(xb) &
+                     //', values '//real_str(fa)//' '//real_str(fb)//'): '//trim(rmsg) &
+                     //' (a bug)'
             st%stat = SEISPULSE_INTERNAL
         end if
     end subroutine locate
+
+    !> Event function i on the dense output of the step from st%t of size hh.
+    function root_eval(self, x) result(g)
+        class(root_fn_t), intent(inout) :: self
+        real(dp), intent(in) :: x
+        real(dp) :: g
+        real(dp) :: y(NY)
+        call self%st%ode%value(x, y)
+        g = self%st%sys%event(self%i, self%st%t + x * self%hh, y)
+    end function root_eval
 
     !> The events at st%t (W.48)-(W.52): contact changes at the edges, impacts, the
     !> overturning angle and the cap.
