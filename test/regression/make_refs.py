@@ -1585,6 +1585,18 @@ def circle_segment(r, b):
     return a0, j1, j2, j1 - c * a0
 
 
+def bisect_up(f, target, lo, hi):
+    """The x in (lo, hi) where the increasing f(x) reaches target: 400 halvings (far below
+    the 40 digits of the references)."""
+    for _ in range(400):
+        mid = (lo + hi) / 2
+        if f(mid) > target:
+            hi = mid
+        else:
+            lo = mid
+    return (lo + hi) / 2
+
+
 def gazetas_k_over_i(width, length, axis=None):
     """K_R/I of a rectangle width (rocking direction) x length on a halfspace, per
     G/(1 - nu) (Gazetas 1991, half-sides B <= L): about the long axis I^0.75 (L/B)^0.25
@@ -1624,15 +1636,7 @@ def winkler_block_state(b, alpha, k, w, th, varying):
             f = lambda bp: alpha * bp**2 * k_of(bp) * s2 - 2 * w
             if f(2 * b) < 0:
                 raise ValueError("no root")
-            lo = mpf(0)
-            hi = 2 * b
-            for _ in range(400):
-                mid = (lo + hi) / 2
-                if f(mid) > 0:
-                    hi = mid
-                else:
-                    lo = mid
-            bp = (lo + hi) / 2
+            bp = bisect_up(f, 0, mpf(0), 2 * b)
         else:
             bp = mp.sqrt(2 * w / (alpha * k * s2))
         c = b - bp
@@ -1669,15 +1673,7 @@ def winkler_circle_state(r, k, w, th, reading=None):
                 mp.pi * k * r**4 * cs**2 * mp.sin(th) / 4)
     if th >= mp.pi / 4:
         return None
-    target = 2 * w / s2
-    lo, hi = mpf(0), 2 * r
-    for _ in range(400):
-        mid = (lo + hi) / 2
-        if k_of(mid) * circle_segment(r, mid)[3] > target:
-            hi = mid
-        else:
-            lo = mid
-    b = (lo + hi) / 2
+    b = bisect_up(lambda x: k_of(x) * circle_segment(r, x)[3], 2 * w / s2, mpf(0), 2 * r)
     a0, j1, j2, _ = circle_segment(r, b)
     c = r - b
     kb = k_of(b)
@@ -1766,15 +1762,7 @@ def winkler_master_rows(wk):
             rows.append([x, 2 * inner / (mpf(4) / 3 * r**3), 2 * inner / (b**2 * r),
                          b / (2 * r), (r - b / 2) / r])
             continue
-        target = mp.pi * r**3 / x
-        lo, hi = mpf(0), 2 * r
-        for _ in range(400):
-            mid = (lo + hi) / 2
-            if circle_segment(r, mid)[3] > target:
-                hi = mid
-            else:
-                lo = mid
-        b = (lo + hi) / 2
+        b = bisect_up(lambda v: circle_segment(r, v)[3], mp.pi * r**3 / x, mpf(0), 2 * r)
         a0, j1, j2, phi = circle_segment(r, b)
         c = r - b
         rows.append([x, (j2 - c * j1) / (mp.pi * r**4 / 4), (j2 - c * j1) / (phi * r),
@@ -1803,15 +1791,7 @@ def circle_master_k(x):
     x = 1; beyond, (J2 - c J1)/I at the contact width b with Phi(b) = pi r^3/x, r = 1)."""
     if x <= 1:
         return mpf(1)
-    target = mp.pi / x
-    lo, hi = mpf(0), mpf(2)
-    for _ in range(400):
-        mid = (lo + hi) / 2
-        if circle_segment(mpf(1), mid)[3] > target:
-            hi = mid
-        else:
-            lo = mid
-    b = (lo + hi) / 2
+    b = bisect_up(lambda v: circle_segment(mpf(1), v)[3], mp.pi / x, mpf(0), mpf(2))
     _, j1, j2, _ = circle_segment(mpf(1), b)
     return (j2 - (1 - b) * j1) / (mp.pi / 4)
 
