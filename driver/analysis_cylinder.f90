@@ -36,17 +36,19 @@ module driver_cylinder
                          ROLL_NOUT, ROLL_RUN_TIME_LIMIT
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, list_item, &
-                            ROWS_FAILED
+                            name_index, ROWS_FAILED
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid, &
                                   warn_unused_template, template_text
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, &
                               record_line, failed_records
-    use driver_tables, only: write_tables, say_written, code_legend, delete_files
+    use driver_tables, only: write_tables, say_written, code_legend, delete_files, stack
     use driver_axis, only: axis_values
     use driver_rocking_common, only: check_run_options, restitution_and_model, &
-                                     locate_run_message, map_kind, map_template, progress_t
+                                     locate_run_message, map_kind, map_template, progress_t, &
+                                     axes_names, map_axes_code, map_grids, map_axes_header, &
+                                     map_table
     implicit none
     private
 
@@ -75,9 +77,6 @@ module driver_cylinder
     !> In the order of the BODY_* codes.
     character(len=6), parameter :: shape_names(4) = [character(len=6) :: 'solid', 'hollow', &
         'custom', 'block']
-    !> In the order of the MAP_AXES_* codes.
-    character(len=13), parameter :: axes_names(2) = [character(len=13) :: 'dimensionless', &
-        'dimensional']
     character(len=24), parameter :: outcome_names(0:5) = [character(len=24) :: 'rest', &
         'no_uplift', 'overturn_no_impact', 'overturn_one_impact', 'overturn_many_impacts', &
         'time_limit']
@@ -455,7 +454,8 @@ contains
         msg = ''
         name = trim(lower(adjustl(shape)))
         code = 0
-        if (any(shape_names == name)) code = findloc(shape_names, name, 1)
+        ! name_index, not findloc: gfortran 12 returned 0 here for a name in the list
+        code = name_index(name, shape_names)
         if (code == 0) then
             errmsg = where//'shape = '''//trim(shape)//''': unknown shape (allowed: ' &
                      //join(shape_names)//')'
@@ -1083,14 +1083,6 @@ contains
         end if
     end subroutine do_history_records
 
-    !> Rows of b under the rows of a.
-    pure function stack(a, b) result(c)
-        real(dp), intent(in) :: a(:, :), b(:, :)
-        real(dp) :: c(size(a, 1) + size(b, 1), size(a, 2))
-        c(1:size(a, 1), :) = a
-        c(size(a, 1) + 1:, :) = b
-    end function stack
-
     !> The record (samples accel(i) at (i - 1) dt, linear in between, 0 after the last,
     !> as the integrator takes it) at the times t (s); in the unit of the record.
     pure function record_at(accel, step, t) result(a)
@@ -1131,30 +1123,22 @@ contains
         type(setup_t), intent(in) :: s
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
-        character(len=:), allocatable :: where, grid, grid_x
+        character(len=:), allocatable :: where, grid, grid_x, ykey
         character(len=512) :: msg, files(2), comments(9)
-        character(len=9) :: ykey
         character(len=12), allocatable :: names(:)
         character(len=4), allocatable :: units(:)
         real(dp), allocatable :: xs(:), ys(:), table(:, :)
         integer, allocatable :: classes(:, :), classes_b(:, :), diff(:, :)
         type(rocking_body_t) :: eq
         type(pulse_t) :: tpl
-        integer :: code, i, j, row, st, axes_code, ncol
+        integer :: code, i, st, axes_code
         type(progress_t) :: progress
-        real(dp) :: fr, ar
 
         where = located(path, s%gm)
         stat = 1
         msg = ''
-        axes_code = 0
-        if (any(axes_names == trim(lower(adjustl(axes))))) &
-            axes_code = findloc(axes_names, trim(lower(adjustl(axes))), 1)
-        if (axes_code == 0) then
-            errmsg = where//'axes = '''//trim(axes)//''': unknown axes (allowed: ' &
-                     //join(axes_names)//')'
-            return
-        end if
+        call map_axes_code(where, axes, axes_code, errmsg)
+        if (len(errmsg) > 0) return
         axes = axes_names(axes_code)
         call map_kind(where, kind, code, errmsg)
         if (len(errmsg) > 0) return
@@ -1163,37 +1147,10 @@ contains
             return
         end if
         ! --- the two axes, on the chosen system only
-        if (axes_code == MAP_AXES_DIMENSIONLESS) then
-            call refuse('freq_hz', 'dimensional')
-            call refuse('pga', 'dimensional')
-            if (len(errmsg) > 0) return
-            call axis_values(s%gm, 'freq_ratio', 'freq', freq_ratio, freq_range, freq_count, &
-                             'linear', .true., .false., max_list, xs, grid, errmsg, &
-                             required=.true., count_optional=.true., hint=.false., &
-                             real_numbers=.true.)
-            ykey = 'amp_ratio'
-            grid_x = grid
-            if (len(errmsg) == 0) call axis_values(s%gm, 'amp_ratio', 'amp', amp_ratio, &
-                amp_range, amp_count, 'linear', .false., .false., max_list, ys, grid, errmsg, &
-                required=.true., count_optional=.true., hint=.false., real_numbers=.true.)
-        else
-            call refuse('freq', 'dimensionless')
-            call refuse('amp', 'dimensionless')
-            if (len(errmsg) > 0) return
-            call axis_values(s%gm, 'freq_hz', 'freq_hz', freq_hz, freq_hz_range, &
-                             freq_hz_count, 'linear', .true., .false., max_list, xs, grid, &
-                             errmsg, required=.true., count_optional=.true., hint=.false., &
-                             real_numbers=.true.)
-            ykey = 'pga'
-            grid_x = grid
-            if (len(errmsg) == 0) call axis_values(s%gm, 'pga', 'pga', pga, pga_range, &
-                pga_count, 'linear', .false., .false., max_list, ys, grid, errmsg, &
-                required=.true., count_optional=.true., hint=.false., real_numbers=.true.)
-        end if
-        if (len(errmsg) > 0) then
-            errmsg = where//errmsg
-            return
-        end if
+        call map_grids(where, s%gm, axes_code, freq_ratio, freq_range, freq_count, amp_ratio, &
+                       amp_range, amp_count, freq_hz, freq_hz_range, freq_hz_count, pga, &
+                       pga_range, pga_count, max_list, xs, ys, grid_x, grid, ykey, errmsg)
+        if (len(errmsg) > 0) return
         ! the shape at a unit time scale (the map checks every time scale)
         call map_template(where, code, beta, full, peak_frac, t0_periods, cycles, tpl, errmsg)
         if (len(errmsg) > 0) return
@@ -1243,37 +1200,13 @@ contains
         end if
 
         ! --- the table: both axis systems, the chosen one first
-        ncol = merge(7, 5, compare_block)
-        allocate(table(size(ys) * size(xs), ncol))
-        row = 0
-        do i = 1, size(ys)
-            do j = 1, size(xs)
-                row = row + 1
-                if (axes_code == MAP_AXES_DIMENSIONLESS) then
-                    fr = xs(j)
-                    ar = ys(i)
-                    table(row, 1:4) = [fr, ar, fr * s%body%p / (2.0_dp * pi), &
-                                       ar * tan(s%body%theta_c)]
-                else
-                    fr = 2.0_dp * pi * xs(j) / s%body%p
-                    ar = ys(i) / tan(s%body%theta_c)
-                    table(row, 1:4) = [xs(j), ys(i), fr, ar]
-                end if
-                table(row, 5) = real(classes(i, j), dp)
-                if (compare_block) table(row, 6:7) = [real(classes_b(i, j), dp), &
-                                                      real(diff(i, j), dp)]
-            end do
-        end do
-        if (axes_code == MAP_AXES_DIMENSIONLESS) then
-            names = [character(len=12) :: 'freq_ratio', 'amp_ratio', 'freq_hz', 'pga', 'class']
-            units = [character(len=4) :: '-', '-', 'Hz', 'g', '-']
-        else
-            names = [character(len=12) :: 'freq_hz', 'pga', 'freq_ratio', 'amp_ratio', 'class']
-            units = [character(len=4) :: 'Hz', 'g', '-', '-', '-']
-        end if
         if (compare_block) then
-            names = [character(len=12) :: names, 'class_block', 'diff']
-            units = [character(len=4) :: units, '-', '-']
+            call map_table(axes_code, xs, ys, s%body%p, s%body%theta_c, classes, table, &
+                           classes_b, diff)
+            call map_axes_header(axes_code, names, units, 'class_block')
+        else
+            call map_table(axes_code, xs, ys, s%body%p, s%body%theta_c, classes, table)
+            call map_axes_header(axes_code, names, units)
         end if
         comments(1) = 'seispulse analysis cylinder: overturning map, '//pulse_kind_name(code) &
                       //' pulse family, '//trim(model)//' model (seispulse_cylinder)'
@@ -1307,32 +1240,6 @@ contains
             return
         end if
         call say_written('cylinder map', files)
-
-    contains
-
-        !> The keys of the other axis system are an error.
-        subroutine refuse(stem, other)
-            character(len=*), intent(in) :: stem, other
-            character(len=:), allocatable :: list_key
-            integer :: k
-            if (len(errmsg) > 0) return
-            list_key = stem
-            if (stem == 'freq') list_key = 'freq_ratio'
-            if (stem == 'amp') list_key = 'amp_ratio'
-            do k = 1, 3
-                select case (k)
-                case (1)
-                    if (given(s%gm, list_key)) errmsg = list_key
-                case (2)
-                    if (given(s%gm, stem//'_range')) errmsg = stem//'_range'
-                case default
-                    if (given(s%gm, stem//'_count')) errmsg = stem//'_count'
-                end select
-                if (len(errmsg) > 0) exit
-            end do
-            if (len(errmsg) > 0) errmsg = where//errmsg//': only with axes = '''//other &
-                                          //''' (now axes = '''//trim(axes)//''')'
-        end subroutine refuse
 
     end subroutine do_map
 

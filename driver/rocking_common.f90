@@ -4,27 +4,35 @@
 !> lines of a long map. One code path, so that these keys mean and read the same in both.
 module driver_rocking_common
     use, intrinsic :: iso_fortran_env, only: error_unit, int64
-    use seispulse, only: dp, pulse_t, pulse_validate, pulse_kind_from_name, SEISPULSE_SUCCESS, &
-                         PULSE_RICKER, PULSE_MP, real_str, positive, in_closed, finite_at_least
+    use seispulse, only: dp, pi, pulse_t, pulse_validate, pulse_kind_from_name, &
+                         SEISPULSE_SUCCESS, PULSE_RICKER, PULSE_MP, MAP_AXES_DIMENSIONLESS, &
+                         real_str, positive, in_closed, finite_at_least
     use driver_namelist_scan, only: nml_group, lower
-    use driver_input, only: located, join, given
+    use driver_input, only: located, join, given, name_index
+    use driver_axis, only: axis_values
     implicit none
     private
 
     public :: check_run_options, restitution_and_model, locate_run_message
     public :: map_kind, map_template, progress_t
+    public :: axes_names, map_axes_code, map_grids, map_axes_header, map_table
 
     character(len=10), parameter :: model_names(2) = [character(len=10) :: 'nonlinear', &
         'linearized']
+    !> The axis systems of a map, in the order of the MAP_AXES_* codes.
+    character(len=13), parameter :: axes_names(2) = [character(len=13) :: 'dimensionless', &
+        'dimensional']
 
     !> A map prints progress once it has run this long (s), then at most every
     !> `progress_every` seconds.
     real(dp), parameter :: progress_after = 2.0_dp, progress_every = 3.0_dp
 
-    !> Progress lines of a map computed row by row ("map: row i/n" on stderr).
+    !> Progress lines of a map computed row by row ("map: row i/n" on stderr; with the
+    !> elapsed time and an estimate of the time left when started with timing).
     type :: progress_t
         integer(int64) :: c_start = 0, c_last = 0, rate = 1
         logical :: printed = .false.
+        logical :: timing = .false.
     contains
         procedure :: start => progress_start
         procedure :: row => progress_row
@@ -151,16 +159,186 @@ contains
         if (st /= SEISPULSE_SUCCESS) errmsg = where//trim(msg)
     end subroutine map_template
 
-    !> Start the clock of a map.
-    subroutine progress_start(self)
+    !> The axis system of a map (&map axes; case and blanks ignored): its MAP_AXES_* code
+    !> (0 and errmsg after `where` when unknown, else errmsg '').
+    subroutine map_axes_code(where, axes, axes_code, errmsg)
+        character(len=*), intent(in) :: where             !! "file:line: &map: "
+        character(len=*), intent(in) :: axes              !! the value read
+        integer, intent(out) :: axes_code
+        character(len=:), allocatable, intent(out) :: errmsg
+        errmsg = ''
+        axes_code = name_index(axes, axes_names)
+        if (axes_code == 0) errmsg = where//'axes = '''//trim(axes)//''': unknown axes ' &
+                                     //'(allowed: '//join(axes_names)//')'
+    end subroutine map_axes_code
+
+    !> The two grids of a map on the axis system `axes_code`: x (freq_ratio > 0, or freq_hz
+    !> (Hz) > 0) and y (amp_ratio >= 0, or pga (g) >= 0), each a list or a range
+    !> `<stem>_range` with `<stem>_count`; the keys of the other system are refused. grid_x,
+    !> grid_y say how they were given (header), ykey names the y list (messages). errmsg
+    !> (after `where`) on failure, else ''.
+    subroutine map_grids(where, gm, axes_code, freq_ratio, freq_range, freq_count, &
+                         amp_ratio, amp_range, amp_count, freq_hz, freq_hz_range, &
+                         freq_hz_count, pga, pga_range, pga_count, max_list, xs, ys, grid_x, &
+                         grid_y, ykey, errmsg)
+        character(len=*), intent(in) :: where             !! "file:line: &map: "
+        type(nml_group), intent(in) :: gm                 !! the &map group
+        integer, intent(in) :: axes_code                  !! MAP_AXES_* code
+        real(dp), intent(in) :: freq_ratio(:), freq_range(2), amp_ratio(:), amp_range(2)
+        real(dp), intent(in) :: freq_hz(:), freq_hz_range(2), pga(:), pga_range(2)
+        integer, intent(in) :: freq_count, amp_count, freq_hz_count, pga_count, max_list
+        real(dp), allocatable, intent(out) :: xs(:), ys(:)
+        character(len=:), allocatable, intent(out) :: grid_x, grid_y, ykey
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=:), allocatable :: grid
+        errmsg = ''
+        grid_x = ''
+        grid_y = ''
+        ykey = ''
+        if (axes_code == MAP_AXES_DIMENSIONLESS) then
+            call refuse('freq_hz', 'dimensional')
+            call refuse('pga', 'dimensional')
+            if (len(errmsg) > 0) return
+            call axis_values(gm, 'freq_ratio', 'freq', freq_ratio, freq_range, freq_count, &
+                             'linear', .true., .false., max_list, xs, grid, errmsg, &
+                             required=.true., count_optional=.true., hint=.false., &
+                             real_numbers=.true.)
+            ykey = 'amp_ratio'
+            grid_x = grid
+            if (len(errmsg) == 0) call axis_values(gm, 'amp_ratio', 'amp', amp_ratio, &
+                amp_range, amp_count, 'linear', .false., .false., max_list, ys, grid, errmsg, &
+                required=.true., count_optional=.true., hint=.false., real_numbers=.true.)
+        else
+            call refuse('freq', 'dimensionless')
+            call refuse('amp', 'dimensionless')
+            if (len(errmsg) > 0) return
+            call axis_values(gm, 'freq_hz', 'freq_hz', freq_hz, freq_hz_range, &
+                             freq_hz_count, 'linear', .true., .false., max_list, xs, grid, &
+                             errmsg, required=.true., count_optional=.true., hint=.false., &
+                             real_numbers=.true.)
+            ykey = 'pga'
+            grid_x = grid
+            if (len(errmsg) == 0) call axis_values(gm, 'pga', 'pga', pga, pga_range, &
+                pga_count, 'linear', .false., .false., max_list, ys, grid, errmsg, &
+                required=.true., count_optional=.true., hint=.false., real_numbers=.true.)
+        end if
+        if (len(errmsg) > 0) then
+            errmsg = where//errmsg
+            return
+        end if
+        grid_y = grid
+
+    contains
+
+        !> The keys of the other axis system are an error.
+        subroutine refuse(stem, other)
+            character(len=*), intent(in) :: stem, other
+            character(len=:), allocatable :: list_key
+            integer :: k
+            if (len(errmsg) > 0) return
+            list_key = stem
+            if (stem == 'freq') list_key = 'freq_ratio'
+            if (stem == 'amp') list_key = 'amp_ratio'
+            do k = 1, 3
+                select case (k)
+                case (1)
+                    if (given(gm, list_key)) errmsg = list_key
+                case (2)
+                    if (given(gm, stem//'_range')) errmsg = stem//'_range'
+                case default
+                    if (given(gm, stem//'_count')) errmsg = stem//'_count'
+                end select
+                if (len(errmsg) > 0) exit
+            end do
+            if (len(errmsg) > 0) errmsg = where//errmsg//': only with axes = '''//other &
+                                          //''' (now axes = '''//trim(axes_names(axes_code)) &
+                                          //''')'
+        end subroutine refuse
+
+    end subroutine map_grids
+
+    !> The four axis columns of a map cell, the chosen system first: freq_ratio, amp_ratio,
+    !> freq_hz (Hz), pga (g) on the dimensionless axes, else freq_hz, pga, freq_ratio,
+    !> amp_ratio; freq_ratio = 2 pi freq_hz/p, amp_ratio = pga/tan(theta_c) with the rigid
+    !> p (rad/s) and theta_c (rad) of the body.
+    pure function map_axes_row(axes_code, x, y, p, theta_c) result(row)
+        integer, intent(in) :: axes_code                  !! MAP_AXES_* code
+        real(dp), intent(in) :: x, y                      !! the cell on the chosen axes
+        real(dp), intent(in) :: p, theta_c
+        real(dp) :: row(4)
+        real(dp) :: fr, ar
+        if (axes_code == MAP_AXES_DIMENSIONLESS) then
+            fr = x
+            ar = y
+            row = [fr, ar, fr * p / (2.0_dp * pi), ar * tan(theta_c)]
+        else
+            fr = 2.0_dp * pi * x / p
+            ar = y / tan(theta_c)
+            row = [x, y, fr, ar]
+        end if
+    end function map_axes_row
+
+    !> Names and units of the columns of map_table: the four axis columns of map_axes_row,
+    !> 'class' (-), and with `compare` (the name of the comparison's class column) that
+    !> column and 'diff' (-).
+    subroutine map_axes_header(axes_code, names, units, compare)
+        integer, intent(in) :: axes_code                  !! MAP_AXES_* code
+        character(len=12), allocatable, intent(out) :: names(:)
+        character(len=4), allocatable, intent(out) :: units(:)
+        character(len=*), intent(in), optional :: compare
+        if (axes_code == MAP_AXES_DIMENSIONLESS) then
+            names = [character(len=12) :: 'freq_ratio', 'amp_ratio', 'freq_hz', 'pga', 'class']
+            units = [character(len=4) :: '-', '-', 'Hz', 'g', '-']
+        else
+            names = [character(len=12) :: 'freq_hz', 'pga', 'freq_ratio', 'amp_ratio', 'class']
+            units = [character(len=4) :: 'Hz', 'g', '-', '-', '-']
+        end if
+        if (present(compare)) then
+            names = [character(len=12) :: names, compare, 'diff']
+            units = [character(len=4) :: units, '-', '-']
+        end if
+    end subroutine map_axes_header
+
+    !> The table of a map, amplitudes outer and frequencies inner: per cell the four axis
+    !> columns (map_axes_row), the class, and with a comparison map (classes_b and diff,
+    !> both or neither) its class and the difference code.
+    subroutine map_table(axes_code, xs, ys, p, theta_c, classes, table, classes_b, diff)
+        integer, intent(in) :: axes_code                  !! MAP_AXES_* code
+        real(dp), intent(in) :: xs(:), ys(:)              !! the grids on the chosen axes
+        real(dp), intent(in) :: p, theta_c                !! rigid p (rad/s), theta_c (rad)
+        integer, intent(in) :: classes(:, :)              !! size(ys) x size(xs)
+        real(dp), allocatable, intent(out) :: table(:, :)
+        integer, intent(in), optional :: classes_b(:, :), diff(:, :)
+        integer :: i, j, row
+        allocate(table(size(ys) * size(xs), merge(7, 5, present(classes_b))))
+        row = 0
+        do i = 1, size(ys)
+            do j = 1, size(xs)
+                row = row + 1
+                table(row, 1:4) = map_axes_row(axes_code, xs(j), ys(i), p, theta_c)
+                table(row, 5) = real(classes(i, j), dp)
+                if (present(classes_b)) table(row, 6:7) = [real(classes_b(i, j), dp), &
+                                                           real(diff(i, j), dp)]
+            end do
+        end do
+    end subroutine map_table
+
+    !> Start the clock of a map; `timing`: the lines also give the elapsed time and the
+    !> time left (default .false.: "map: row i/n" alone).
+    subroutine progress_start(self, timing)
         class(progress_t), intent(inout) :: self
+        logical, intent(in), optional :: timing
         call system_clock(self%c_start, self%rate)
         self%c_last = self%c_start
         self%printed = .false.
+        self%timing = .false.
+        if (present(timing)) self%timing = timing
     end subroutine progress_start
 
-    !> After row i of n: "map: row i/n" once the map has run progress_after seconds, then
-    !> at most every progress_every seconds (not after the last row).
+    !> After row i of n: "map: row i/n" (with timing: "map: row i/n, 12 s elapsed, about
+    !> 30 s left", the rows left at the mean time per row so far) once the map has run
+    !> progress_after seconds, then at most every progress_every seconds (not after the last
+    !> row). Short maps stay silent.
     subroutine progress_row(self, i, n)
         class(progress_t), intent(inout) :: self
         integer, intent(in) :: i, n
@@ -171,7 +349,13 @@ contains
         elapsed = real(c_now - self%c_start, dp) / rate
         if (i < n .and. elapsed >= progress_after .and. (.not. self%printed .or. &
             real(c_now - self%c_last, dp) / rate >= progress_every)) then
-            write(error_unit, '(a, i0, a, i0)') 'map: row ', i, '/', n
+            if (self%timing) then
+                write(error_unit, '(a, i0, a, i0, a, i0, a, i0, a)') 'map: row ', i, '/', n, &
+                    ', ', nint(elapsed), ' s elapsed, about ', &
+                    nint(elapsed / real(max(i, 1), dp) * real(n - i, dp)), ' s left'
+            else
+                write(error_unit, '(a, i0, a, i0)') 'map: row ', i, '/', n
+            end if
             flush(error_unit)
             self%c_last = c_now
             self%printed = .true.

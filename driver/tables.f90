@@ -7,7 +7,8 @@ module driver_tables
     implicit none
     private
 
-    public :: write_tables, column_len, delete_files, say_written, code_legend
+    public :: write_tables, column_len, delete_files, say_written, code_legend, stack
+    public :: write_table_pair
 
     !> Width of a text column: a blank, then es24.16e3 (a negative number fills all 24).
     integer, parameter :: column_len = 25
@@ -230,5 +231,52 @@ contains
             if (ios == 0) close(u, status='delete', iostat=ios)
         end do
     end subroutine delete_files
+
+    !> The two tables of one run, <prefix>_<name1> and <prefix>_<name2> (write_tables each,
+    !> with their own comments, names, units, data and optional labels): both or neither
+    !> exist (the first is deleted when the second fails). Then `note` (if given) and
+    !> "<what1> written to ...", "<what2> written to ..." on standard output. stat 0, or
+    !> errmsg "<path>: &run: output: ...".
+    subroutine write_table_pair(path, prefix, name1, comments1, names1, units1, data1, &
+                                what1, name2, comments2, names2, units2, data2, what2, &
+                                stat, errmsg, labels1, labels2, note)
+        character(len=*), intent(in) :: path            !! input file (for messages)
+        character(len=*), intent(in) :: prefix          !! output prefix
+        character(len=*), intent(in) :: name1, name2    !! table names
+        character(len=*), intent(in) :: comments1(:), comments2(:)
+        character(len=*), intent(in) :: names1(:), names2(:), units1(:), units2(:)
+        real(dp), intent(in) :: data1(:, :), data2(:, :)
+        character(len=*), intent(in) :: what1, what2    !! e.g. 'winkler summary'
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=*), intent(in), optional :: labels1(:), labels2(:)
+        character(len=*), intent(in), optional :: note  !! a line before the two
+        character(len=512) :: files1(2), files2(2)
+        ! an absent labels1/labels2 is passed on as absent
+        call write_tables(prefix, name1, comments1, names1, units1, data1, files1, stat, &
+                          errmsg, labels=labels1)
+        if (stat /= 0) then
+            errmsg = path//': &run: output: '//errmsg
+            return
+        end if
+        call write_tables(prefix, name2, comments2, names2, units2, data2, files2, stat, &
+                          errmsg, labels=labels2)
+        if (stat /= 0) then
+            call delete_files(files1)
+            errmsg = path//': &run: output: '//errmsg
+            return
+        end if
+        if (present(note)) write(output_unit, '(a)') note
+        call say_written(what1, files1)
+        call say_written(what2, files2)
+    end subroutine write_table_pair
+
+    !> Rows of b under the rows of a (tables built record by record).
+    pure function stack(a, b) result(c)
+        real(dp), intent(in) :: a(:, :), b(:, :)
+        real(dp) :: c(size(a, 1) + size(b, 1), size(a, 2))
+        c(1:size(a, 1), :) = a
+        c(size(a, 1) + 1:, :) = b
+    end function stack
 
 end module driver_tables

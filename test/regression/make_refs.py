@@ -46,6 +46,19 @@ forms above with alpha = theta_c and the body's own p; and a linearized history 
 under a record, solved piece by piece in closed form (cosh, sinh and the linear
 particular solution) with uplifts, impacts and rests located in mpmath.
 
+Analysis 'winkler' (never by running the driver): rigid bodies on tensionless Winkler
+springs, written out from doc/winkler.md in mpmath (40 digits). The pushover of a circle
+(constant or varying k) and of a block (constant or varying k): full contact while
+sin 2 theta <= 2 W/(k pi r^3) (circle) or W/(2 alpha b^2 k) (block), with the closed-form
+moments; after uplift the contact width solves k(b) Phi(b) = 2 W/sin 2 theta by bisection
+(Phi = J1 - c A0 of the contact segment; the block's b'^2 alpha k(b') = 2 W/sin 2 theta),
+the pole is the centroid of the contact, the centre rises by (r - b) sin theta; varying k
+is Gazetas' K_R/I of the rectangle of the contact scaled to k at full contact; past pi/4
+there is no equilibrium (NaN). The master curve in x = theta/theta_up (the same segment
+integrals at small angles, or b' = 2 b/sqrt(x) for the rectangle), the capacities on clay
+(N_ult = N_c S_u pi r^2, SF, chi, 0.8 A D S_u, W D (1 - chi)/2), and the inelastic pushover
+with G = 1 (a_poly = 0): the elastic Winkler curve of K_R0 = HK_R k_el (k/k_el)(chi).
+
 Analysis 'newmark' (never by running the driver): the record files are read here by a
 small parser of their own (AT2, SLAMMER CSV, two columns, one column; the decimals taken
 exactly), turned over by the polarity and scaled (scale, or target_pga over the PGA,
@@ -1544,6 +1557,292 @@ def make_walls_ref(nml_path, nml):
     print(f"wrote {out} ({len(main) - 1} rows) and {out2} ({len(prof) - 1} rows)")
 
 
+# ---------------------------------------------------------------------------
+# Analysis 'winkler': rigid bodies on tensionless Winkler springs, clay capacities
+# ---------------------------------------------------------------------------
+
+WINKLER_PUSHOVER_HEADER = ("theta (rad),b (m),pole (m),area (m2),settlement (m),k (N/m3),"
+                           "m_found (N m),m_imposed (N m),force (N),force_ratio (-),"
+                           "force_rigid (N)")
+WINKLER_MASTER_HEADER = "theta_ratio (-),k_ratio (-),m_ratio (-),b_ratio (-),a_ratio (-)"
+WINKLER_INELASTIC_HEADER = ("theta (rad),k_r (N m/rad),m_found (N m),m_imposed (N m),"
+                            "force (N),theta_ratio (-),g_corr (-),force_ratio (-)")
+WINKLER_CAPACITY_HEADER = ("su (Pa),r (m),weight (N),nc (-),n_ult (N),sf (-),chi (-),"
+                           "m_ult_tc (N m),m_ult_width (N m),m_tc_norm (-),m_width_norm (-)")
+
+
+def circle_segment(r, b):
+    """The contact segment of a circle of radius r, width b (0 < b <= 2 r) from an edge,
+    c = r - b its chord's distance from the centre (across the centre: c < 0): area A0,
+    first moment J1 and second moment J2 about the centre line, and Phi = J1 - c A0
+    (pressure integral per k sin(theta) cos(theta)), from the segment's closed forms
+    (widths 2 sqrt(r^2 - s^2))."""
+    c = r - b
+    s = mp.sqrt(max(2 * r * b - b**2, mpf(0)))
+    a0 = r**2 * mp.acos(c / r) - c * s
+    j1 = mpf(2) / 3 * s**3
+    j2 = r**4 / 4 * (mp.pi / 2 - mp.asin(c / r)) - c / 4 * (2 * c**2 - r**2) * s
+    return a0, j1, j2, j1 - c * a0
+
+
+def bisect_up(f, target, lo, hi):
+    """The x in (lo, hi) where the increasing f(x) reaches target: 400 halvings (far below
+    the 40 digits of the references)."""
+    for _ in range(400):
+        mid = (lo + hi) / 2
+        if f(mid) > target:
+            hi = mid
+        else:
+            lo = mid
+    return (lo + hi) / 2
+
+
+def gazetas_k_over_i(width, length, axis=None):
+    """K_R/I of a rectangle width (rocking direction) x length on a halfspace, per
+    G/(1 - nu) (Gazetas 1991, half-sides B <= L): about the long axis I^0.75 (L/B)^0.25
+    (2.4 + 0.5 B/L), about the short axis 3 I^0.75 (L/B)^0.15, I = length width^3/12 the
+    second moment about the rotation axis; the axis the sides select (long when width <=
+    length), or the one given ('long', 'short': the reading of a circle's varying k)."""
+    i_ax = length * width**3 / 12
+    big_b, big_l = min(width, length) / 2, max(width, length) / 2
+    if axis is None:
+        axis = "long" if width <= length else "short"
+    if axis == "long":
+        k_r = i_ax**mpf("0.75") * (big_l / big_b)**mpf("0.25") * (mpf("2.4") + big_b / big_l / 2)
+    else:
+        k_r = 3 * i_ax**mpf("0.75") * (big_l / big_b)**mpf("0.15")
+    return k_r / i_ax
+
+
+def winkler_block_state(b, alpha, k, w, th, varying):
+    """Block (half-width b, half-length alpha) at tilt th: (b', a, area, settlement,
+    k(b'), foundation moment), or None past the end of the branch. Full contact while
+    sin(2 th) <= W/(2 alpha b^2 k); then theta = 1/2 asin(2 W/(alpha b'^2 k(b'))) solved
+    for the contact width b' (constant k: b'^2 = 2 W/(alpha k sin 2th)); with varying k,
+    k(b') = k (K_R/I)(b' x 2 alpha)/(K_R/I)(2 b x 2 alpha)."""
+    s2 = mp.sin(2 * th)
+
+    def k_of(bp):
+        if not varying:
+            return k
+        return k * gazetas_k_over_i(bp, 2 * alpha) / gazetas_k_over_i(2 * b, 2 * alpha)
+
+    if s2 <= w / (2 * alpha * b**2 * k):
+        bp, c = 2 * b, -b
+    else:
+        if th >= mp.pi / 4:
+            return None
+        if varying:
+            f = lambda bp: alpha * bp**2 * k_of(bp) * s2 - 2 * w
+            if f(2 * b) < 0:
+                raise ValueError("no root")
+            bp = bisect_up(f, 0, mpf(0), 2 * b)
+        else:
+            bp = mp.sqrt(2 * w / (alpha * k * s2))
+        c = b - bp
+    kb = k_of(bp)
+    cos2 = mp.cos(th)**2
+    if bp == 2 * b:
+        moment = mpf(4) / 3 * alpha * b**3 * kb * cos2 * mp.sin(th)
+        return (bp, mpf(0), 4 * alpha * b * mp.cos(th), w / (kb * 4 * alpha * b * mp.cos(th)),
+                kb, moment)
+    moment = 2 * alpha * kb * mp.sin(th) * cos2 * ((b**3 - c**3) / 3 - c * (b**2 - c**2) / 2)
+    return (bp, b - bp / 2, 2 * alpha * bp * mp.cos(th), -c * mp.sin(th), kb, moment)
+
+
+def winkler_circle_state(r, k, w, th, reading=None):
+    """Circle of radius r at tilt th: (b, a, area, settlement, k(b), moment), or None past
+    the end of the branch (theta = pi/4). Full contact while sin(2 th) <= 2 W/(k pi r^3):
+    settlement W/(k pi r^2 cos th), M = pi k r^4 cos^2 sin/4; then the contact width b
+    solves k(b) Phi(b) = 2 W/sin 2th (increasing in b; bisection), the pole is the
+    segment's centroid a = J1/A0, the area A0 cos th, the centre rises by (r - b) sin th,
+    M = k(b) sin cos^2 (J2 - c J1). Constant k (reading None), or varying: k(b) = k
+    (K_R/I)(b x 2 sqrt(r^2 - a^2))/(K_R/I)(2r x 2r), both by the formula of `reading`."""
+    def k_of(b):
+        if reading is None or b >= 2 * r:
+            return k
+        a0, j1, _, _ = circle_segment(r, b)
+        a = j1 / a0
+        chord = 2 * mp.sqrt(r**2 - a**2)
+        return k * gazetas_k_over_i(b, chord, reading) / gazetas_k_over_i(2 * r, 2 * r, reading)
+
+    s2 = mp.sin(2 * th)
+    cs = mp.cos(th)
+    if s2 * k * mp.pi * r**3 <= 2 * w:
+        return (2 * r, mpf(0), mp.pi * r**2 * cs, w / (k * mp.pi * r**2 * cs), k,
+                mp.pi * k * r**4 * cs**2 * mp.sin(th) / 4)
+    if th >= mp.pi / 4:
+        return None
+    b = bisect_up(lambda x: k_of(x) * circle_segment(r, x)[3], 2 * w / s2, mpf(0), 2 * r)
+    a0, j1, j2, _ = circle_segment(r, b)
+    c = r - b
+    kb = k_of(b)
+    return (b, j1 / a0, a0 * cs, -c * mp.sin(th), kb,
+            kb * mp.sin(th) * cs**2 * (j2 - c * j1))
+
+
+def winkler_theta_grid(wk):
+    """The driver's theta grid of &winkler: a list, a range with a count (axis_grid), or
+    0 .. theta_max in theta_count values (the last exactly theta_max); these references
+    need one of them (the default top, the rigid theta_c, is a double of the library)."""
+    th = axis_grid(wk, "theta", "theta", 101)
+    if th is None:
+        top, n = float(wk["theta_max"]), int(wk.get("theta_count", 101))
+        th = [top * (i / (n - 1)) for i in range(n)]
+        th[-1] = top
+    return [mpf(t) for t in th]
+
+
+def winkler_weight(wk):
+    g = mpf(wk.get("g", 9.80665))
+    return (mpf(wk["weight"]) if "weight" in wk else mpf(wk["mass"]) * g), g
+
+
+def winkler_pushover_rows(wk):
+    """The static pushover on constant- or varying-k Winkler springs, with F = (M - W h
+    sin th)/(h cos th) and the rigid W tan(theta_c - th)."""
+    w, _ = winkler_weight(wk)
+    h = mpf(wk["h"])
+    if "k" in wk:
+        k = mpf(wk["k"])
+    elif str(wk.get("footing", "circle")).lower() == "circle":
+        # the halfspace K_R = 8 G r^3/(3 (1 - nu)) over I = pi r^4/4
+        k = 32 * mpf(wk["g_mod"]) / (3 * mp.pi * (1 - mpf(wk["nu"])) * mpf(wk["r"]))
+    else:
+        raise ValueError("winkler references: a block needs k")
+    varying = str(wk.get("k_method", "constant")).lower() == "varying"
+    block = str(wk.get("footing", "circle")).lower() == "block"
+    if block:
+        b, alpha = mpf(wk["b"]), mpf(wk["alpha"])
+        half = b
+    else:
+        r = mpf(wk["r"])
+        half = r
+        reading = str(wk.get("reading", "long")).lower() if varying else None
+    tc = mp.atan(half / h)
+    nan = mp.nan
+    rows = []
+    for th in winkler_theta_grid(wk):
+        st = (winkler_block_state(b, alpha, k, w, th, varying) if block
+              else winkler_circle_state(r, k, w, th, reading))
+        rigid = w * mp.tan(tc - th)
+        if st is None:
+            rows.append([th] + [nan] * 9 + [rigid])
+            continue
+        bb, a, area, v, kb, m = st
+        m_imp = m - w * h * mp.sin(th)
+        force = m_imp / (h * mp.cos(th))
+        rows.append([th, bb, a, area, v, kb, m, m_imp, force, force / w, rigid])
+    return rows
+
+
+def winkler_master_rows(wk):
+    """The universal small-angle curve against x = theta/theta_up: full contact for
+    x <= 1 (K/K_0 = 1, M/(W r) = x/4 for the circle, x/3 for the rectangle); beyond, the
+    contact width b from x = pi r^3/Phi(b) (circle; K/K_0 = (J2 - c J1)/I, M/(W r) =
+    (J2 - c J1)/(Phi r), a = J1/A0) or x = 4 r^2/b^2 (rectangle of half-width r; K/K_0 =
+    2 [(r^3 - c^3)/3 - c (r^2 - c^2)/2]/((4/3) r^3 (half-length 1)), M/(W r) =
+    2 [...]/(b^2 r), a = r - b/2)."""
+    block = str(wk.get("footing", "circle")).lower() == "block"
+    xs = axis_grid(wk, "theta_ratio", "theta_ratio", 101)
+    if xs is None:
+        n = int(wk.get("theta_ratio_count", 101))
+        xs = [10.0 * (i / (n - 1)) for i in range(n)]
+        xs[-1] = 10.0
+    rows = []
+    r = mpf(1)
+    for x in (mpf(v) for v in xs):
+        if x <= 1:
+            rows.append([x, mpf(1), x / (3 if block else 4), mpf(1), mpf(0)])
+            continue
+        if block:
+            b = 2 * r / mp.sqrt(x)
+            c = r - b
+            inner = (r**3 - c**3) / 3 - c * (r**2 - c**2) / 2
+            rows.append([x, 2 * inner / (mpf(4) / 3 * r**3), 2 * inner / (b**2 * r),
+                         b / (2 * r), (r - b / 2) / r])
+            continue
+        b = bisect_up(lambda v: circle_segment(r, v)[3], mp.pi * r**3 / x, mpf(0), 2 * r)
+        a0, j1, j2, phi = circle_segment(r, b)
+        c = r - b
+        rows.append([x, (j2 - c * j1) / (mp.pi * r**4 / 4), (j2 - c * j1) / (phi * r),
+                     b / (2 * r), j1 / (a0 * r)])
+    return rows
+
+
+def winkler_capacity_rows(wk):
+    """N_ult = N_c S_u pi r^2 (N_c = pi + 3 by default), SF = N_ult/W, chi = 1/SF,
+    M_ult = 0.8 A D S_u (Taiebat & Carter) and W D (1 - chi)/2 (effective width), and
+    both over A D S_u (A = pi r^2, D = 2 r)."""
+    w, _ = winkler_weight(wk)
+    su, r = mpf(wk["su"]), mpf(wk["r"])
+    nc = mpf(wk["nc"]) if "nc" in wk else mp.pi + 3
+    n_ult = nc * su * mp.pi * r**2
+    sf = n_ult / w
+    chi = 1 / sf
+    adsu = mp.pi * r**2 * 2 * r * su
+    m_tc = mpf("0.8") * adsu
+    m_ew = w * 2 * r * (1 - chi) / 2
+    return [[su, r, w, nc, n_ult, sf, chi, m_tc, m_ew, m_tc / adsu, m_ew / adsu]]
+
+
+def circle_master_k(x):
+    """K_sec/K_0 of the constant-k circle's master curve at x = theta/theta_up (1 up to
+    x = 1; beyond, (J2 - c J1)/I at the contact width b with Phi(b) = pi r^3/x, r = 1)."""
+    if x <= 1:
+        return mpf(1)
+    b = bisect_up(lambda v: circle_segment(mpf(1), v)[3], mp.pi / x, mpf(0), mpf(2))
+    _, j1, j2, _ = circle_segment(mpf(1), b)
+    return (j2 - (1 - b) * j1) / (mp.pi / 4)
+
+
+def winkler_inelastic_rows(wk):
+    """The inelastic pushover with G = 1 (a_poly all 0): SF = N_c S_u pi r^2/W, chi = 1/SF,
+    K_R0 = 8 G r^3/(3 (1 - nu)) k_el (k/k_el), k/k_el = 1 for chi < 0.1 else kr_c1 -
+    kr_c2 chi; theta_up = asin(W r/(2 K_R0))/2; M_found = K_R0 Khat(sin 2th/sin 2th_up)
+    sin th cos^2 th (the elastic Winkler curve of the same K_R0), K_R = M_found/th (K_R0
+    at 0), M_imp = M_found - W h sin th, F = M_imp/(h cos th)."""
+    if any(float(a) != 0 for a in _as_list(wk["a_poly"])):
+        raise ValueError("winkler inelastic references: a_poly = 0 (G = 1) only")
+    w, _ = winkler_weight(wk)
+    r, h, su = mpf(wk["r"]), mpf(wk["h"]), mpf(wk["su"])
+    g_mod, nu = mpf(wk["g_mod"]), mpf(wk["nu"])
+    nc = mpf(wk["nc"]) if "nc" in wk else mp.pi + 3
+    chi = w / (nc * su * mp.pi * r**2)
+    ratio = mpf(1) if chi < mpf("0.1") else mpf(wk["kr_c1"]) - mpf(wk["kr_c2"]) * chi
+    k_r0 = 8 * g_mod * r**3 / (3 * (1 - nu)) * mpf(wk.get("k_el", 1.0)) * ratio
+    th_up = mp.asin(w * r / (2 * k_r0)) / 2
+    rows = []
+    for th in winkler_theta_grid(wk):
+        m = k_r0 * circle_master_k(mp.sin(2 * th) / mp.sin(2 * th_up)) * mp.sin(th) \
+            * mp.cos(th)**2
+        m_imp = m - w * h * mp.sin(th)
+        force = m_imp / (h * mp.cos(th))
+        rows.append([th, m / th if th > 0 else k_r0, m, m_imp, force, th / th_up, mpf(1),
+                     force / w])
+    return rows
+
+
+def make_winkler_ref(nml_path, nml):
+    wk = nml["winkler"]
+    what = str(wk.get("what", "pushover")).lower()
+    with mp.workdps(40):
+        if what == "pushover":
+            header, rows = WINKLER_PUSHOVER_HEADER, winkler_pushover_rows(wk)
+        elif what == "master":
+            header, rows = WINKLER_MASTER_HEADER, winkler_master_rows(wk)
+        elif what == "inelastic":
+            header, rows = WINKLER_INELASTIC_HEADER, winkler_inelastic_rows(wk)
+        elif what == "capacity":
+            header, rows = WINKLER_CAPACITY_HEADER, winkler_capacity_rows(wk)
+        else:
+            raise ValueError(f"winkler references: no reference for what = {what!r}")
+        lines = [header] + [",".join(csv_cell(x) for x in row) for row in rows]
+    out = Path(nml_path).with_suffix(".ref")
+    out.write_text("\n".join(lines) + "\n")
+    print(f"wrote {out} ({len(lines) - 1} rows)")
+
+
 def make_ref(nml_path):
     nml = parse_namelist(Path(nml_path).read_text())
     analysis = nml.get("run", {}).get("analysis", "pulse").lower()
@@ -1564,6 +1863,9 @@ def make_ref(nml_path):
         return
     if analysis == "cylinder":
         make_cylinder_ref(nml_path, nml)
+        return
+    if analysis == "winkler":
+        make_winkler_ref(nml_path, nml)
         return
     func, g = pulse_function(nml["pulse"])
     lines = [HEADER]
