@@ -901,7 +901,7 @@ contains
         sums(5) = 'n_ult = N_c S_u pi r^2, sf = n_ult/W, chi = 1/sf; hk_r = 8 G r^3/(3 ' &
                   //'(1 - nu)), k_r0 = hk_r k_el (k/k_el)(chi); theta_up = asin(W r/(2 ' &
                   //'k_r0))/2; theta_overturn: first zero of the imposed moment (NaN: ' &
-                  //'none on the grid)'
+                  //'none up to pi/4)'
         sums(6) = comments(7)
         call write_table_pair(path, prefix, 'winkler_inelastic', comments, &
             [character(len=12) :: 'theta', 'k_r', 'm_found', 'm_imposed', 'force', &
