@@ -16,7 +16,9 @@ module seispulse
                                              cexp_dd2_at0, cexp_dd2, cexp_dd3
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton, &
                                find_minimum
-    use seispulse_ode, only: ode_system, ode_dop853_t, ode_dense_t, ode_dop853_factor
+    use seispulse_ode, only: ode_system, ode_dop853_t, ode_dense_t, ode_dop853_factor, &
+                             ode_fd_jacobian
+    use seispulse_radau, only: ode_radau5_t, ode_radau5_factor, radau5_solve
     use seispulse_lapack, only: solve_linear
     use seispulse_pulses, only: exp_pulse, exp_pulse_point, exp_pulse_peaks, &
                                 exp_pulse_impulse_amplitude, pulse_t, pulse_validate, pulse_eval, &
@@ -86,6 +88,17 @@ module seispulse
                                       IP_G, IP_NCOL, CAPACITY_TC00_PEAK, &
                                       CAPACITY_EFFECTIVE_WIDTH, NC_CIRCLE_CLAY, &
                                       CHI_ELASTIC_LIMIT, SF_WEAK_LIMIT
+    use seispulse_winkler_rock, only: winkler_model_t, winkler_run_t, winkler_model, &
+                                      winkler_rock, winkler_overturning_map, &
+                                      winkler_outcome_name, winkler_output_name, &
+                                      winkler_contact_forces, winkler_rhs_jacobian, &
+                                      winkler_barrier, DAMP_ROCKING, DAMP_VERTICAL, WR_OUT_V, &
+                                      WR_OUT_THETA, WR_OUT_V_RATE, WR_OUT_THETA_RATE, &
+                                      WR_OUT_WIDTH, WR_OUT_NORMAL, WR_OUT_MOMENT, WR_OUT_ACCEL, &
+                                      WR_OUT_ENERGY, WR_OUT_WORK, WR_OUT_DISSIPATED, WR_NOUT, &
+                                      WR_RUN_SAFE, WR_RUN_OVERTURN_NO_IMPACT, &
+                                      WR_RUN_OVERTURN_ONE_IMPACT, WR_RUN_OVERTURN_IMPACTS, &
+                                      WR_RUN_TIME_LIMIT
     use seispulse_records, only: record_t, read_record, record_pga, pga_scale_factor, &
                                  ground_motion, record_format_name, record_units_name, &
                                  RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, &

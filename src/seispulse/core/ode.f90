@@ -30,13 +30,16 @@ module seispulse_ode
     implicit none
     private
 
-    public :: ode_system, ode_dop853_t, ode_dense_t, ode_dop853_factor
+    public :: ode_system, ode_dop853_t, ode_dense_t, ode_dop853_factor, ode_fd_jacobian
 
-    !> A system y' = f(t, y) of any dimension; optional event functions g_i(t, y).
+    !> A system y' = f(t, y) of any dimension; optional event functions g_i(t, y) and the
+    !> Jacobian df/dy (used by the implicit integrator of seispulse_radau; by default
+    !> forward differences, a model overrides it with its exact Jacobian).
     type, abstract :: ode_system
     contains
         procedure(ode_rhs), deferred :: rhs
         procedure :: event => ode_no_event
+        procedure :: jacobian => ode_fd_jacobian
     end type ode_system
 
     abstract interface
@@ -212,6 +215,48 @@ contains
         end associate
         g = 0.0_dp
     end function ode_no_event
+
+    !> Default Jacobian dfdy(i, j) = df_i/dy_j by forward differences, as RADAU5 [HW96]:
+    !> column j from f(t, y + delta_j e_j), delta_j = sqrt(eps max(1e-5, |y_j|)), n right-hand
+    !> sides. No allocation for n <= 32 (a local buffer holds the perturbed state).
+    subroutine ode_fd_jacobian(self, t, y, f, dfdy)
+        class(ode_system), intent(inout) :: self          !! the system
+        real(dp), intent(in) :: t                         !! time
+        real(dp), contiguous, intent(in) :: y(:)          !! state, n
+        real(dp), contiguous, intent(in) :: f(:)          !! f(t, y), n
+        real(dp), contiguous, intent(out) :: dfdy(:, :)   !! Jacobian, n x n
+        integer, parameter :: n_local = 32
+        real(dp) :: buf(n_local)
+        real(dp), allocatable :: big(:)
+        integer :: n
+        n = size(y)
+        if (n <= n_local) then
+            call fd_columns(self, n, t, y, f, dfdy, buf(1:n))
+        else
+            allocate(big(n))
+            call fd_columns(self, n, t, y, f, dfdy, big)
+        end if
+    end subroutine ode_fd_jacobian
+
+    !> The n columns of `ode_fd_jacobian` with the perturbed state in yp.
+    subroutine fd_columns(sys, n, t, y, f, dfdy, yp)
+        class(ode_system), intent(inout) :: sys
+        integer, intent(in) :: n
+        real(dp), intent(in) :: t, y(n), f(n)
+        real(dp), contiguous, intent(out) :: dfdy(:, :)
+        real(dp), intent(inout) :: yp(n)
+        real(dp) :: delta
+        integer :: j
+        yp = y
+        do j = 1, n
+            delta = sqrt(epsilon(1.0_dp) * max(1.0e-5_dp, abs(y(j))))
+            yp(j) = y(j) + delta
+            delta = yp(j) - y(j)   ! the step actually taken (exact in floating point)
+            call sys%rhs(t, yp, dfdy(:, j))
+            dfdy(:, j) = (dfdy(:, j) - f) / delta
+            yp(j) = y(j)
+        end do
+    end subroutine fd_columns
 
     !> Step-size factor after a step with error norm err (Hairer: 0.9 err^(-1/8)): at
     !> least 0.2 after a rejected step (err > 1, or NaN), at most 10 after an accepted
