@@ -374,6 +374,11 @@ def plot_pushover(push, axes=None, rigid=True, title=None):
 # re-exported here
 from ._winkler_clay import (CAPACITY_MODELS, Bearing, InelasticPushover,  # noqa: E402
                             clay_bearing, inelastic_pushover, moment_capacity, plot_inelastic)
+from ._winkler_rock import (COLUMNS, DAMPING_REFS, OUTCOMES, WinklerMap,  # noqa: E402
+                            WinklerModel, WinklerRun, model, overturning_map, plot_history,
+                            plot_map, simulate)
 
-__all__ += ["Bearing", "clay_bearing", "CAPACITY_MODELS", "moment_capacity",
+__all__ += ["DAMPING_REFS", "WinklerModel", "model", "OUTCOMES", "COLUMNS", "WinklerRun",
+            "simulate", "WinklerMap", "overturning_map", "plot_history", "plot_map",
+            "Bearing", "clay_bearing", "CAPACITY_MODELS", "moment_capacity",
             "InelasticPushover", "inelastic_pushover", "plot_inelastic"]

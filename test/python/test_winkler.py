@@ -516,6 +516,12 @@ def test_readme_examples_run(source_root):
     assert (round(ns["bp"].theta_overturn, 4), round(ns["bp"].max_moment)) == (0.2361, 77895)
     cyl = ns["cyl"]
     assert (round(cyl.r, 4), round(cyl.h, 3), round(cyl.mass)) == (0.5018, 2.007, 26278)
+    assert round(ns["mdl"].c) == 69925
+    run = ns["run"]
+    assert (run.outcome, round(run.theta_max, 5), run.n_impacts) == ("safe", 0.03554, 4)
+    assert round(run.impact_normal_peak[0]) == 810418 and round(ns["body"].weight) == 462127
+    assert round(ns["run_rec"].theta_max, 5) == 0.03553
+    assert np.bincount(ns["wmap"].difference.ravel(), minlength=4).tolist() == [36, 5, 0, 1]
     bear = ns["bear"]
     assert (round(bear.sf, 3), round(bear.chi, 4)) == (4.175, 0.2395)
     inel = ns["inel"]
