@@ -16,11 +16,13 @@ import numpy as np
 
 from . import _core
 from . import _fortran_codes as _f
-from ._seispulse import sp_clay_bearing, sp_clay_inelastic_pushover, sp_clay_moment_capacity
+from ._seispulse import (sp_clay_bearing, sp_clay_gaussian, sp_clay_inelastic_pushover,
+                         sp_clay_moment_capacity, sp_clay_stiffness_ratio)
 from .errors import InvalidInputError
 
 __all__ = ["Bearing", "clay_bearing", "CAPACITY_MODELS", "moment_capacity",
-           "InelasticPushover", "inelastic_pushover", "plot_inelastic"]
+           "StiffnessRatio", "stiffness_ratio", "gaussian_correction", "InelasticPushover",
+           "inelastic_pushover", "plot_inelastic"]
 
 #: Moment-capacity models: 'taiebat_carter' ([TC00]'s peak 0.8 A D S_u) or
 #: 'effective_width' (the rigid-plastic N D (1 - chi)/2).
@@ -61,6 +63,48 @@ def moment_capacity(su, r, chi, model="taiebat_carter", nc=None):
     m_ult, stat, msg = sp_clay_moment_capacity(*flat, code, *_nc(nc))
     _core.raise_for_status(stat, msg)
     return _core.shaped(shape, m_ult)[0]
+
+
+StiffnessRatio = namedtuple("StiffnessRatio", ["k_ratio", "kappa"])
+StiffnessRatio.__doc__ = """The initial rotational stiffness on clay at chi = 1/SF:
+k_ratio = k/k_el (-; 1 for chi <= 0.1, kr_c1 - kr_c2 chi above) and kappa = k_el k/k_el =
+K_R0/HK_R (-)."""
+
+
+def stiffness_ratio(chi, *, kr_c1, kr_c2, k_el=1.0):
+    """k/k_el(chi) of [AD11]'s inelastic method at chi = 1/SF in [0, 1): 1 for chi <= 0.1,
+    kr_c1 - kr_c2 chi above (the coefficients are lost from [AD11]: required, NaN = not
+    given, an error where needed); kappa = k_el k/k_el with the elastic ratio k_el
+    (default 1). chi broadcasts; returns :class:`StiffnessRatio`."""
+    c = _core.as_float_array("chi", chi)
+    k_ratio, kappa, stat, msg = sp_clay_stiffness_ratio(
+        np.ascontiguousarray(c.reshape(-1)), _core.as_scalar("k_el", k_el),
+        _core.as_scalar("kr_c1", kr_c1), _core.as_scalar("kr_c2", kr_c2))
+    _core.raise_for_status(stat, msg)
+    return StiffnessRatio(*_core.shaped(c.shape, k_ratio, kappa))
+
+
+def _gauss_coeffs(a_poly, b1, b2, c1, c2, log_base):
+    """The Gaussian's coefficients as the wrappers take them (a_poly: 5 numbers)."""
+    poly = _core.as_float_array("a_poly", a_poly).reshape(-1)
+    if poly.size != 5:
+        raise InvalidInputError(f"a_poly: must hold the 5 coefficients a_0 .. a_4 of a(chi), "
+                                f"got {poly.size}")
+    return [np.ascontiguousarray(poly)] + [_core.as_scalar(name, v) for name, v in (
+        ("b1", b1), ("b2", b2), ("c1", c1), ("c2", c2), ("log_base", log_base))]
+
+
+def gaussian_correction(chi, x, *, a_poly, b1, b2, c1, c2, log_base=10.0):
+    """[AD11]'s Gaussian correction of the normalized secant stiffness, G(chi; x) = 1 + a
+    exp(-(log_B(x) - b)^2/(2 c^2)) (-) at chi = 1/SF in (0, 1) and x = theta/theta_up >= 0,
+    with a(chi) = sum a_poly[i] chi^i, b = b1 ln(chi) + b2, c = c1 chi + c2 and B = log_base
+    (default 10, an assumption). The coefficients are lost from [AD11]: required (NaN = not
+    given; b and c are needed only where a(chi) /= 0). chi and x broadcast."""
+    shape, arr = _core.broadcast(chi=chi, x=x)
+    flat = [_core.flat(arr[k], shape) for k in ("chi", "x")]
+    g, stat, msg = sp_clay_gaussian(*flat, *_gauss_coeffs(a_poly, b1, b2, c1, c2, log_base))
+    _core.raise_for_status(stat, msg)
+    return _core.shaped(shape, g)[0]
 
 
 _CURVES = ("theta", "k_r", "m_found", "m_imposed", "force", "x", "g_corr")
@@ -118,14 +162,8 @@ def inelastic_pushover(r, h, weight, g_mod, nu, su, theta=None, n=201, *, kr_c1,
     Returns :class:`InelasticPushover`."""
     args = [_core.as_scalar(name, v) for name, v in (
         ("r", r), ("h", h), ("weight", weight), ("g_mod", g_mod), ("nu", nu), ("su", su))]
-    poly = _core.as_float_array("a_poly", a_poly).reshape(-1)
-    if poly.size != 5:
-        raise InvalidInputError(f"a_poly: must hold the 5 coefficients a_0 .. a_4 of a(chi), "
-                                f"got {poly.size}")
     coeffs = [_core.as_scalar("k_el", k_el), _core.as_scalar("kr_c1", kr_c1),
-              _core.as_scalar("kr_c2", kr_c2), np.ascontiguousarray(poly)]
-    coeffs += [_core.as_scalar(name, v) for name, v in (("b1", b1), ("b2", b2), ("c1", c1),
-                                                        ("c2", c2), ("log_base", log_base))]
+              _core.as_scalar("kr_c2", kr_c2)] + _gauss_coeffs(a_poly, b1, b2, c1, c2, log_base)
 
     def call(grid):
         return sp_clay_inelastic_pushover(*args, *coeffs, *_nc(nc), grid)

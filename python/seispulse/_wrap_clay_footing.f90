@@ -103,3 +103,54 @@ subroutine sp_clay_inelastic_pushover(r, h, weight, g_mod, nu, su, k_el, kr_c1, 
              merge(1, 0, res%kr_discontinuous)]
     kr_jump = res%kr_jump
 end subroutine sp_clay_inelastic_pushover
+
+!> Initial-stiffness ratio k/k_el (-) and kappa = k_el k/k_el (-) per chi = 1/SF, with the
+!> user's k_el, kr_c1, kr_c2 (NaN: not given).
+subroutine sp_clay_stiffness_ratio(n, chi, k_el, kr_c1, kr_c2, k_ratio, kappa, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_clay_footing, only: degradation_coeffs_t, initial_stiffness_ratio
+    implicit none
+    !f2py intent(hide) :: n
+    integer, intent(in) :: n
+    real(dp), intent(in) :: chi(n), k_el, kr_c1, kr_c2
+    real(dp), intent(out) :: k_ratio(n), kappa(n)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    type(degradation_coeffs_t) :: coeffs
+    integer :: i
+    errmsg = ''
+    stat = SEISPULSE_SUCCESS
+    k_ratio = 0.0_dp
+    kappa = 0.0_dp
+    coeffs = degradation_coeffs_t(k_el=k_el, kr_c1=kr_c1, kr_c2=kr_c2)
+    do i = 1, n
+        call initial_stiffness_ratio(chi(i), coeffs, k_ratio(i), stat, errmsg, kappa=kappa(i))
+        if (stat /= SEISPULSE_SUCCESS) return
+    end do
+end subroutine sp_clay_stiffness_ratio
+
+!> Gaussian correction G(chi; x) (-) per (chi, x = theta/theta_up), with the user's
+!> a_poly(0:4) (as a_poly(5)), b1, b2, c1, c2 and log_base (NaN: not given).
+subroutine sp_clay_gaussian(n, chi, x, a_poly, b1, b2, c1, c2, log_base, g_corr, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_clay_footing, only: degradation_coeffs_t, gaussian_correction
+    implicit none
+    !f2py intent(hide) :: n
+    integer, intent(in) :: n
+    real(dp), intent(in) :: chi(n), x(n), a_poly(5), b1, b2, c1, c2, log_base
+    real(dp), intent(out) :: g_corr(n)
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    type(degradation_coeffs_t) :: coeffs
+    integer :: i
+    errmsg = ''
+    stat = SEISPULSE_SUCCESS
+    g_corr = 0.0_dp
+    coeffs = degradation_coeffs_t(a_poly=a_poly, b1=b1, b2=b2, c1=c1, c2=c2, log_base=log_base)
+    do i = 1, n
+        call gaussian_correction(chi(i), x(i), coeffs, g_corr(i), stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+    end do
+end subroutine sp_clay_gaussian

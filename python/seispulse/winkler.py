@@ -22,7 +22,8 @@ What it offers:
 * dynamics ([KH91], [KSR86]): :func:`model`, :func:`simulate`, :func:`overturning_map`
   (with the rigid-ground map of the same body and their difference);
 * inelastic clay: :func:`clay_bearing`, :func:`inelastic_pushover`,
-  :func:`moment_capacity`;
+  :func:`moment_capacity`, and the two laws of the method, :func:`stiffness_ratio` and
+  :func:`gaussian_correction`;
 * plots (matplotlib, imported only when drawing): :func:`plot_pushover`,
   :func:`plot_history`, :func:`plot_map`, :func:`plot_inelastic`.
 
@@ -373,7 +374,9 @@ def plot_pushover(push, axes=None, rigid=True, title=None):
 # Dynamics ([KH91], [KSR86]) and inelastic clay ([AD11] chapter 3): their own modules,
 # re-exported here
 from ._winkler_clay import (CAPACITY_MODELS, Bearing, InelasticPushover,  # noqa: E402
-                            clay_bearing, inelastic_pushover, moment_capacity, plot_inelastic)
+                            StiffnessRatio, clay_bearing, gaussian_correction,
+                            inelastic_pushover, moment_capacity, plot_inelastic,
+                            stiffness_ratio)
 from ._winkler_rock import (COLUMNS, DAMPING_REFS, OUTCOMES, WinklerMap,  # noqa: E402
                             WinklerModel, WinklerRun, model, overturning_map, plot_history,
                             plot_map, simulate)
@@ -381,4 +384,5 @@ from ._winkler_rock import (COLUMNS, DAMPING_REFS, OUTCOMES, WinklerMap,  # noqa
 __all__ += ["DAMPING_REFS", "WinklerModel", "model", "OUTCOMES", "COLUMNS", "WinklerRun",
             "simulate", "WinklerMap", "overturning_map", "plot_history", "plot_map",
             "Bearing", "clay_bearing", "CAPACITY_MODELS", "moment_capacity",
-            "InelasticPushover", "inelastic_pushover", "plot_inelastic"]
+            "StiffnessRatio", "stiffness_ratio", "gaussian_correction", "InelasticPushover",
+            "inelastic_pushover", "plot_inelastic"]

@@ -153,3 +153,26 @@ def test_plot_inelastic_makes_a_figure():
     plt.close("all")
     with pytest.raises(InvalidInputError, match="^push"):
         W.plot_inelastic("p")
+
+
+def test_stiffness_ratio_and_gaussian_alone():
+    """The two laws of the method by themselves, against the formulas typed out."""
+    chi = np.array([0.0, 0.05, 0.1, 0.3, 0.8])
+    st = W.stiffness_ratio(chi, kr_c1=1.1, kr_c2=1.0, k_el=1.28)
+    ref = np.where(chi <= 0.1, 1.0, 1.1 - chi)
+    np.testing.assert_allclose(st.k_ratio, ref, rtol=1e-15)
+    np.testing.assert_allclose(st.kappa, 1.28 * ref, rtol=1e-15)
+    assert W.stiffness_ratio(0.05, kr_c1=NAN, kr_c2=NAN).k_ratio == 1.0   # not needed below 0.1
+    with pytest.raises(InvalidInputError, match="^kr_c1"):
+        W.stiffness_ratio(0.3, kr_c1=NAN, kr_c2=NAN)
+    co = dict(a_poly=[0.2, 0.0, 1.0, 0.0, 0.0], b1=0.5, b2=-0.2, c1=0.1, c2=0.5)
+    x = np.geomspace(1e-3, 1e3, 13)
+    g = W.gaussian_correction(0.5, x, **co)
+    a, b, c = 0.2 + 0.25, 0.5 * math.log(0.5) - 0.2, 0.55
+    np.testing.assert_allclose(g, 1 + a * np.exp(-(np.log10(x) - b) ** 2 / (2 * c * c)),
+                               rtol=1e-14)
+    assert W.gaussian_correction(0.5, 10 ** b, **co) == pytest.approx(1 + a, rel=1e-14)
+    assert W.gaussian_correction(0.5, 0.0, **co) == 1.0
+    assert W.gaussian_correction([[0.2], [0.6]], [1.0, 2.0, 3.0], **co).shape == (2, 3)
+    with pytest.raises(InvalidInputError, match="^x "):
+        W.gaussian_correction(0.5, -1.0, **co)
