@@ -677,6 +677,12 @@ contains
             if (allocated(error)) return
             call check(error, res2%theta_end, pi / 4, rtol=0.0_dp, message='theta_end')
             if (allocated(error)) return
+            ! a squat body (theta_c = atan(10) > pi/4) on stiff soil: M_imp > 0 to the end
+            ! of the branch, no overturning on it
+            call winkler_pushover(1.0_dp, 0.1_dp, ex_w, 1.0e12_dp, th(1:1), curve(1:1, :), &
+                                  res2, stat, k_method=m)
+            call check(error, ieee_is_nan(res2%theta_overturn), 'no overturning: NaN')
+            if (allocated(error)) return
         end do
     end subroutine test_peaks
 

@@ -282,15 +282,8 @@ contains
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         integer, intent(in), optional :: k_method             !! K_CONSTANT (default)/K_VARYING
         integer, intent(in), optional :: reading              !! AXIS_LONG (default)/AXIS_SHORT
-        type(branch_t) :: br
-        integer :: km
-        call clear_result(res)
-        curve = nan()
-        km = K_CONSTANT
-        if (present(k_method)) km = k_method
-        call make_branch(FOOTING_CIRCLE, r, 1.0_dp, h, weight, k, km, br, stat, errmsg, reading)
-        if (stat /= SEISPULSE_SUCCESS) return
-        call run_pushover(br, theta, curve, res, stat, errmsg)
+        call run_pushover(FOOTING_CIRCLE, r, 1.0_dp, h, weight, k, theta, curve, res, stat, &
+                          errmsg, k_method, reading)
     end subroutine winkler_pushover
 
     !> Static pushover of a rigid block (half-width b in the rocking direction, half-length
@@ -312,15 +305,8 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         integer, intent(in), optional :: k_method             !! K_CONSTANT (default)/K_VARYING
-        type(branch_t) :: br
-        integer :: km
-        call clear_result(res)
-        curve = nan()
-        km = K_CONSTANT
-        if (present(k_method)) km = k_method
-        call make_branch(FOOTING_RECTANGLE, b, alpha, h, weight, k, km, br, stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
-        call run_pushover(br, theta, curve, res, stat, errmsg)
+        call run_pushover(FOOTING_RECTANGLE, b, alpha, h, weight, k, theta, curve, res, stat, &
+                          errmsg, k_method)
     end subroutine block_winkler_pushover
 
     !> Universal small-angle curve of the constant-k footing (W.28) at x = theta/theta_up >= 0
@@ -672,7 +658,8 @@ contains
     !> [2 W, k Phi_full] (W.18): closed form (rectangle) or a root on the proven bracket
     !> (0, pi] (circle) for constant k; for varying k the largest t of the scan below
     !> which k Phi drops under the target, refined by find_root; found = .false. when no
-    !> such t exists or the root is the jump of a discontinuous modulus.
+    !> such t exists (t: the smallest of the scan) or the root is the jump of a
+    !> discontinuous modulus (t: the jump).
     subroutine invert_phi(br, ts, ps, target, t, found, stat, errmsg)
         type(branch_t), intent(in) :: br
         real(dp), intent(in) :: ts(:), ps(:)
@@ -699,6 +686,7 @@ contains
             found = ps(1) >= target
             return
         end if
+        t = ts(size(ts))        ! no sign change on the scan: its smallest contact
         fn%br = br
         fn%what = fn_phi
         fn%target = target
@@ -741,9 +729,10 @@ contains
         res%theta_end = quarter_pi                                          ! (W.18)
         call scan_points(br%t_max, ts)
         call scan_values(br, ts, ps)
+        ! the end of the branch, k Phi = 2 W (theta = pi/4); without an exact root (a jump of
+        ! the varying modulus across 2 W) the jump itself
         call invert_phi(br, ts, ps, 2.0_dp * br%w, t_end, found, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (.not. found) t_end = ts(size(ts))
         if (present(t_end_out)) t_end_out = t_end
         call full_peaks(br, res%theta_up, res)
         call uplift_peak(br, t_end, fn_force, res%max_force_over_weight, res%theta_at_max, &
@@ -886,18 +875,27 @@ contains
         end do
     end subroutine overturn_root
 
-    !> The pushover on the theta grid and its scalars.
-    subroutine run_pushover(br, theta, curve, res, stat, errmsg)
-        type(branch_t), intent(in) :: br
+    !> The pushover of a footing on the theta grid and its scalars (both public pushovers).
+    subroutine run_pushover(footing, r, alpha, h, weight, k, theta, curve, res, stat, errmsg, &
+                            k_method, reading)
+        integer, intent(in) :: footing
+        real(dp), intent(in) :: r, alpha, h, weight, k
         real(dp), intent(in) :: theta(:)
-        real(dp), intent(inout) :: curve(:, :)
+        real(dp), intent(out) :: curve(:, :)
         type(winkler_pushover_t), intent(out) :: res
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
+        integer, intent(in), optional :: k_method, reading
+        type(branch_t) :: br
         real(dp) :: ts(n_scan + n_tail), ps(n_scan + n_tail), t, row(WP_NCOL), t_end
-        integer :: i
+        integer :: i, km
         logical :: found
         call clear_result(res)
+        curve = nan()
+        km = K_CONSTANT
+        if (present(k_method)) km = k_method
+        call make_branch(footing, r, alpha, h, weight, k, km, br, stat, errmsg, reading)
+        if (stat /= SEISPULSE_SUCCESS) return
         if (size(curve, 1) /= size(theta) .or. size(curve, 2) /= WP_NCOL) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'curve: shape (' &
                            //int_str(size(curve, 1))//', '//int_str(size(curve, 2)) &
@@ -949,7 +947,7 @@ contains
     !> u < 1 (the closed form cancels to u^5 (2/15)), else the closed form.
     elemental real(dp) function seg_f(u)
         real(dp), intent(in) :: u
-        real(dp) :: x, s, c(2:22), p9, fac
+        real(dp) :: c(2:22), p9, fac
         integer :: n
         if (u < 1.0_dp) then
             p9 = 9.0_dp
@@ -959,12 +957,7 @@ contains
                 fac = fac * real((2 * n) * (2 * n + 1), dp)
                 c(n) = (0.25_dp * (p9 - 1.0_dp) - real(2 * n, dp)) / fac
             end do
-            x = u * u
-            s = c(22)
-            do n = 21, 2, -1
-                s = c(n) - x * s
-            end do
-            seg_f = s * x * x * u
+            seg_f = alternating_odd(c, u)
         else
             seg_f = sin(u) - u * cos(u) - sin(u)**3 / 3.0_dp
         end if
@@ -974,7 +967,7 @@ contains
     !> d_n u^(2n+1), d_n = 4^n (4^(n-1) - 1)/(3 (2n+1)!), for u < 1, else the closed form.
     elemental real(dp) function seg_g(u)
         real(dp), intent(in) :: u
-        real(dp) :: x, s, d(2:24), p4, fac
+        real(dp) :: d(2:24), p4, fac
         integer :: n
         if (u < 1.0_dp) then
             p4 = 4.0_dp
@@ -984,16 +977,26 @@ contains
                 fac = fac * real((2 * n) * (2 * n + 1), dp)
                 d(n) = p4 * (0.25_dp * p4 - 1.0_dp) / (3.0_dp * fac)
             end do
-            x = u * u
-            s = d(24)
-            do n = 23, 2, -1
-                s = d(n) - x * s
-            end do
-            seg_g = s * x * x * u
+            seg_g = alternating_odd(d, u)
         else
             seg_g = 0.25_dp * u - sin(2.0_dp * u) / 6.0_dp + sin(4.0_dp * u) / 48.0_dp
         end if
     end function seg_g
+
+    !> sum_{n=2}^{N} (-1)^n cf(n) u^(2n+1) by Horner's rule in u^2 (the series of (W.17)).
+    pure real(dp) function alternating_odd(cf, u)
+        real(dp), intent(in) :: cf(2:)
+        real(dp), intent(in) :: u
+        real(dp) :: x, s
+        integer :: n, top
+        top = ubound(cf, 1)
+        x = u * u
+        s = cf(top)
+        do n = top - 1, 2, -1
+            s = cf(n) - x * s
+        end do
+        alternating_odd = s * x * x * u
+    end function alternating_odd
 
     !> Pole a/r = J1/(A0 r) = (4/3) sin^3(u)/(2u - sin 2u) (W.16); 1 at u = 0.
     elemental real(dp) function seg_pole(u)
@@ -1010,7 +1013,7 @@ contains
     !> (it cancels to 0.4 u^5), else the closed form 2u - sin 2u - sin u + sin(3u)/3.
     elemental real(dp) function seg_one_minus_pole(u)
         real(dp), intent(in) :: u
-        real(dp) :: x, s, e(2:22), p9, p4, fac
+        real(dp) :: s, e(2:22), p9, p4, fac
         integer :: n
         if (u < 1.0_dp) then
             p9 = 9.0_dp
@@ -1022,12 +1025,7 @@ contains
                 fac = fac * real((2 * n) * (2 * n + 1), dp)
                 e(n) = (p9 - 2.0_dp * p4 - 1.0_dp) / fac
             end do
-            x = u * u
-            s = e(22)
-            do n = 21, 2, -1
-                s = e(n) - x * s
-            end do
-            s = s * x * x * u
+            s = alternating_odd(e, u)
         else
             s = 2.0_dp * u - sin(2.0_dp * u) - sin(u) + sin(3.0_dp * u) / 3.0_dp
         end if
