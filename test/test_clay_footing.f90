@@ -491,19 +491,9 @@ contains
         do i = 1, n
             xg(i) = 10.0_dp**(-2.0_dp + 3.5_dp * real(i - 1, dp) / (n - 1))
         end do
-        co%k_el = 1.28_dp
-        call inelastic_pushover(r0, h0, w, 10.0_dp * g0, nu0, su0, co, [0.0_dp], c1(1:1, :), &
-                                r1, stat)
-        call inelastic_pushover(r0, h0, w, 10.0_dp * g0, nu0, su0, co, xg * r1%theta_up, c1, &
-                                r1, stat)
-        call check(error, stat == SEISPULSE_SUCCESS, 'k_el = 1.28 failed')
+        call run_normalised(1.28_dp, c1, r1)
         if (allocated(error)) return
-        co%k_el = 1.14_dp
-        call inelastic_pushover(r0, h0, w, 10.0_dp * g0, nu0, su0, co, [0.0_dp], c2(1:1, :), &
-                                r2, stat)
-        call inelastic_pushover(r0, h0, w, 10.0_dp * g0, nu0, su0, co, xg * r2%theta_up, c2, &
-                                r2, stat)
-        call check(error, stat == SEISPULSE_SUCCESS, 'k_el = 1.14 failed')
+        call run_normalised(1.14_dp, c2, r2)
         if (allocated(error)) return
         call check(error, r1%k_r0 / r2%k_r0, 1.28_dp / 1.14_dp, rtol=1.0e-14_dp)
         if (allocated(error)) return
@@ -522,6 +512,19 @@ contains
         ! but the scale differs: the same x is a different theta
         call check(error, abs(c1(n, IP_THETA) / c2(n, IP_THETA) - 1.0_dp) > 0.1_dp, &
                    'theta scale should differ')
+    contains
+        !> The pushover at theta = x theta_up (theta_up from a first run at theta = 0).
+        subroutine run_normalised(k_el, c, res)
+            real(dp), intent(in) :: k_el
+            real(dp), intent(out) :: c(:, :)
+            type(inelastic_pushover_t), intent(out) :: res
+            co%k_el = k_el
+            call inelastic_pushover(r0, h0, w, 10.0_dp * g0, nu0, su0, co, [0.0_dp], &
+                                    c(1:1, :), res, stat)
+            call inelastic_pushover(r0, h0, w, 10.0_dp * g0, nu0, su0, co, xg * res%theta_up, &
+                                    c, res, stat)
+            call check(error, stat == SEISPULSE_SUCCESS, 'k_el run failed')
+        end subroutine run_normalised
     end subroutine test_k_el_scale
 
     subroutine test_capacity(error)
@@ -640,37 +643,23 @@ contains
         if (allocated(error)) return
         call check(error, index(msg, 'su') > 0 .and. index(msg, 'SF') > 0, trim(msg))
         if (allocated(error)) return
-        call inelastic_pushover(r0, h0, 10.0_dp * w, g0, nu0, su0, full, [0.0_dp, 0.1_dp], &
-                                curve, res, stat, msg)
-        call expect('weight', stat, msg)
+        call bad_push(r0, h0, 10.0_dp * w, g0, nu0, su0, full, [0.0_dp, 0.1_dp], 'weight')
         if (allocated(error)) return
-        call inelastic_pushover(r0, h0, w, 0.0_dp, nu0, su0, full, [0.0_dp, 0.1_dp], curve, &
-                                res, stat, msg)
-        call expect('g_mod', stat, msg)
+        call bad_push(r0, h0, w, 0.0_dp, nu0, su0, full, [0.0_dp, 0.1_dp], 'g_mod')
         if (allocated(error)) return
-        call inelastic_pushover(r0, h0, w, g0, 0.5_dp, su0, full, [0.0_dp, 0.1_dp], curve, res, &
-                                stat, msg)
-        call expect('nu', stat, msg)
+        call bad_push(r0, h0, w, g0, 0.5_dp, su0, full, [0.0_dp, 0.1_dp], 'nu')
         if (allocated(error)) return
-        call inelastic_pushover(r0, h0, w, g0, 0.0_dp, su0, full, [0.0_dp, 0.1_dp], curve, res, &
-                                stat, msg)
-        call expect('nu', stat, msg)
+        call bad_push(r0, h0, w, g0, 0.0_dp, su0, full, [0.0_dp, 0.1_dp], 'nu')
         if (allocated(error)) return
-        call inelastic_pushover(r0, -h0, w, g0, nu0, su0, full, [0.0_dp, 0.1_dp], curve, res, &
-                                stat, msg)
-        call expect('h', stat, msg)
+        call bad_push(r0, -h0, w, g0, nu0, su0, full, [0.0_dp, 0.1_dp], 'h')
         if (allocated(error)) return
-        call inelastic_pushover(r0, h0, w, g0, nu0, -su0, full, [0.0_dp, 0.1_dp], curve, res, &
-                                stat, msg)
-        call expect('su', stat, msg)
+        call bad_push(0.0_dp, h0, w, g0, nu0, su0, full, [0.0_dp, 0.1_dp], 'r')
         if (allocated(error)) return
-        call inelastic_pushover(r0, h0, w, g0, nu0, su0, full, [0.1_dp, 0.0_dp], curve, res, &
-                                stat, msg)
-        call expect('theta(2)', stat, msg)
+        call bad_push(r0, h0, w, g0, nu0, -su0, full, [0.0_dp, 0.1_dp], 'su')
         if (allocated(error)) return
-        call inelastic_pushover(r0, h0, w, g0, nu0, su0, full, [-0.1_dp, 0.0_dp], curve, res, &
-                                stat, msg)
-        call expect('theta(1)', stat, msg)
+        call bad_push(r0, h0, w, g0, nu0, su0, full, [0.1_dp, 0.0_dp], 'theta(2)')
+        if (allocated(error)) return
+        call bad_push(r0, h0, w, g0, nu0, su0, full, [-0.1_dp, 0.0_dp], 'theta(1)')
         if (allocated(error)) return
         call inelastic_pushover(r0, h0, w, g0, nu0, su0, full, [0.0_dp, 0.1_dp], wrong, res, &
                                 stat, msg)
@@ -679,23 +668,17 @@ contains
         ! missing coefficients (chi = 1/3 > 0.1): each named
         co = full
         co%kr_c2 = nan()
-        call inelastic_pushover(r0, h0, w, g0, nu0, su0, co, [0.0_dp, 0.1_dp], curve, res, &
-                                stat, msg)
-        call expect('kr_c1', stat, msg)
+        call bad_push(r0, h0, w, g0, nu0, su0, co, [0.0_dp, 0.1_dp], 'kr_c1')
         if (allocated(error)) return
         call check(error, index(msg, 'kr_c2') > 0, trim(msg))
         if (allocated(error)) return
         co = full
         co%a_poly(2) = nan()
-        call inelastic_pushover(r0, h0, w, g0, nu0, su0, co, [0.0_dp, 0.1_dp], curve, res, &
-                                stat, msg)
-        call expect('a_poly(2)', stat, msg)
+        call bad_push(r0, h0, w, g0, nu0, su0, co, [0.0_dp, 0.1_dp], 'a_poly(2)')
         if (allocated(error)) return
         co = full
         co%b1 = nan()
-        call inelastic_pushover(r0, h0, w, g0, nu0, su0, co, [0.0_dp, 0.1_dp], curve, res, &
-                                stat, msg)
-        call expect('b1', stat, msg)
+        call bad_push(r0, h0, w, g0, nu0, su0, co, [0.0_dp, 0.1_dp], 'b1')
         if (allocated(error)) return
         co = full
         co%b2 = nan()
@@ -744,6 +727,14 @@ contains
         call moment_capacity_circle(su0, r0, 1.5_dp, CAPACITY_TC00_PEAK, v1, stat, msg)
         call expect('chi', stat, msg)
     contains
+        subroutine bad_push(rr, hh, ww, gg, nn, ss, cc, th, name)
+            real(dp), intent(in) :: rr, hh, ww, gg, nn, ss, th(:)
+            type(degradation_coeffs_t), intent(in) :: cc
+            character(len=*), intent(in) :: name
+            call inelastic_pushover(rr, hh, ww, gg, nn, ss, cc, th, curve, res, stat, msg)
+            call expect(name, stat, msg)
+        end subroutine bad_push
+
         subroutine bad_gauss(name)
             character(len=*), intent(in) :: name
             call gaussian_correction(0.3_dp, 1.0_dp, co, v1, stat, msg)
