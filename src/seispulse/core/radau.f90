@@ -42,9 +42,8 @@ module seispulse_radau
     use seispulse_checks, only: in_open
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
                                 SEISPULSE_NO_CONVERGENCE, set_error
-    use seispulse_roots, only: scalar_function, find_root
     use seispulse_lapack, only: lu_factor, lu_solve
-    use seispulse_ode, only: ode_system
+    use seispulse_ode, only: ode_system, ode_dense_base, ode_locate, ode_locate_event
     implicit none
     private
 
@@ -52,19 +51,11 @@ module seispulse_radau
 
     !> Collocation polynomial of the last step (R.18): y(t0 + x h), 0 <= x <= 1, and, as a
     !> function of x for the root finder, sgn y(comp) - level.
-    type, extends(scalar_function) :: radau_dense_t
-        integer :: n = 0                      !! state dimension
-        real(dp) :: t0 = 0.0_dp               !! start of the step
-        real(dp) :: h = 0.0_dp                !! its size
+    type, extends(ode_dense_base) :: radau_dense_t
         real(dp), allocatable :: y0(:)        !! state at t0, n
         real(dp), allocatable :: y1(:)        !! state at t0 + h, n
         real(dp), allocatable :: c(:, :)      !! divided differences, n x 3
-        real(dp), allocatable :: yw(:)        !! work for event functions, n
-        integer :: comp = 1                   !! component sought by `eval`
-        real(dp) :: sgn = 1.0_dp              !! its sign
-        real(dp) :: level = 0.0_dp            !! its level
     contains
-        procedure :: eval => dense_eval
         procedure :: value => dense_value
         procedure :: component => dense_component
     end type radau_dense_t
@@ -106,21 +97,13 @@ module seispulse_radau
         type(radau_dense_t) :: dense          !! dense output of the last step (`dense_setup`)
     contains
         procedure :: init => radau5_init
+        procedure :: restart => radau5_restart
         procedure :: step => radau5_step
         procedure :: dense_setup => radau5_dense
         procedure :: value => radau5_value
         procedure :: locate => radau5_locate
         procedure :: locate_event => radau5_locate_event
     end type ode_radau5_t
-
-    !> Event function g_i(t, y) of a system on the dense output of a step (root finder).
-    type, extends(scalar_function) :: event_fn
-        class(ode_system), pointer :: sys => null()
-        type(radau_dense_t), pointer :: dense => null()
-        integer :: i = 0
-    contains
-        procedure :: eval => event_eval
-    end type event_fn
 
     ! Radau IIA, s = 3 ([HW96] IV.8, RADAU5): nodes c1, c2, c3 = 1 (R.12); the eigenvalues
     ! gamma = 1/u1 and alpha +- i beta of A^-1 and the transformation T with
@@ -159,6 +142,8 @@ module seispulse_radau
     real(dp), parameter :: facl = 5.0_dp, facr = 0.125_dp
     real(dp), parameter :: quot1 = 1.0_dp, quot2 = 1.2_dp
     real(dp), parameter :: uround = epsilon(1.0_dp)
+    !> Shortest step tried: gamma/h and the error weights d_i/h stay finite above it.
+    real(dp), parameter :: min_h = 64.0_dp * tiny(1.0_dp)
     !> Newton increments beyond this (in units of the weights) count as divergence (the
     !> next right-hand side would be evaluated far outside any meaningful state).
     real(dp), parameter :: dyno_max = 1.0e30_dp
@@ -242,13 +227,13 @@ contains
                 self%e2, self%zc, self%ip1, self%ip2, self%z, self%w, self%fs, self%ys, &
                 self%scal, self%ee, self%cont, self%y_jac, self%y0_last, self%y1_last, &
                 self%cand, self%prev_y1, self%prev, self%dense%y0, self%dense%y1, &
-                self%dense%c, self%dense%yw)
+                self%dense%c)
             allocate(self%atol(n), self%atol_i(n), self%jac(n, n), self%e1(n, n), &
                      self%e2(n, n), self%zc(n), self%ip1(n), self%ip2(n), self%z(n, 3), &
                      self%w(n, 3), self%fs(n, 3), self%ys(n), self%scal(n), self%ee(n), &
                      self%cont(n), self%y_jac(n), self%y0_last(n), self%y1_last(n), &
                      self%cand(n, 3), self%prev_y1(n), self%prev(n, 3), self%dense%y0(n), &
-                     self%dense%y1(n), self%dense%c(n, 3), self%dense%yw(n))
+                     self%dense%y1(n), self%dense%c(n, 3))
             self%jac = 0.0_dp
             self%e1 = 0.0_dp
             self%e2 = (0.0_dp, 0.0_dp)
@@ -271,7 +256,6 @@ contains
             self%dense%y0 = 0.0_dp
             self%dense%y1 = 0.0_dp
             self%dense%c = 0.0_dp
-            self%dense%yw = 0.0_dp
         end if
         self%n = n
         self%dense%n = n
@@ -281,17 +265,34 @@ contains
         self%rtol_i = 0.1_dp * rtol**(2.0_dp / 3.0_dp)
         self%atol_i(:) = self%rtol_i * (atol / rtol)
         self%fnewt = max(10.0_dp * uround / self%rtol_i, min(0.03_dp, sqrt(self%rtol_i)))
-        self%faccon = 1.0_dp
-        self%theta = 1.0_dp
         self%newton_iters = 0
         self%n_jac = 0
         self%n_lu = 0
+        call radau5_restart(self)
+        if (any(.not. (self%atol_i >= tiny(1.0_dp)))) then
+            ! the error weights divide by atol' = rtol' atol/rtol: keep it a normal number
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'atol: too small for rtol (rtol'' atol/rtol below the smallest &
+                           &normal number)')
+            return
+        end if
+    end subroutine radau5_init
+
+    !> Forget the history (Jacobian, factors, last polynomials, Newton contraction): the
+    !> next step starts afresh. A model must call it whenever its right-hand side changes
+    !> other than through (t, y) (a contact switch, a new excitation piece with a jump,
+    !> parameters changed between steps), because `step` recognises a continuation by a
+    !> bit-identical (t, y) alone.
+    subroutine radau5_restart(self)
+        class(ode_radau5_t), intent(inout) :: self  !! the integrator
+        self%faccon = 1.0_dp
+        self%theta = 1.0_dp
         self%have_jac = .false.
         self%lu_ok = .false.
         self%have_last = .false.
         self%last_ok = .false.
         self%have_prev = .false.
-    end subroutine radau5_init
+    end subroutine radau5_restart
 
     !> One step of size h = t_new - t from (t, y), f = f(t, y): the collocation solution
     !> y_new at t_new, f_new = f(t_new, y_new) and the error norm err (<= 1: accept). A
@@ -324,6 +325,13 @@ contains
         if (start_ok) start_ok = same(t, self%prev_t1) .and. all(same(y, self%prev_y1))
         retry = self%have_last
         if (retry) retry = same(t, self%t0_last) .and. all(same(y, self%y0_last))
+        if (.not. (continuing .or. retry)) then
+            ! a new trajectory (e.g. after an impact): RADAU5's first-step Newton
+            ! contraction, not the last one's (a fast linear phase would let one
+            ! unconverged iteration pass the stop test)
+            self%faccon = 1.0_dp
+            self%theta = 1.0_dp
+        end if
         self%scal = self%atol_i + self%rtol_i * abs(y)
         fresh = .false.
         if (self%have_jac) fresh = same(t, self%t_jac) .and. all(same(y, self%y_jac))
@@ -338,7 +346,7 @@ contains
         self%last_ok = .false.
         converged = .false.
         self%newton_iters = 0
-        if (abs(h) > 0.0_dp .and. abs(h) < huge(1.0_dp)) then
+        if (abs(h) >= min_h .and. abs(h) < huge(1.0_dp)) then
             do attempt = 1, 2
                 ok = .true.
                 if (.not. (self%lu_ok .and. same(h, self%h_lu))) call decompose(self, h, ok)
@@ -621,22 +629,7 @@ contains
         real(dp), intent(out) :: x                            !! the root, in [xa, xb]
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        stat = SEISPULSE_SUCCESS
-        if (comp < 1 .or. comp > self%n) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'comp: must be in 1..n')
-            x = xa
-            return
-        end if
-        self%dense%comp = comp
-        self%dense%sgn = sgn
-        self%dense%level = level
-        if (.not. xb > xa) then
-            x = xa
-            return
-        end if
-        call find_root(self%dense, xa, xb, x, stat, errmsg, fa_known=fa, fb_known=fb)
-        if (stat /= SEISPULSE_SUCCESS) return
-        x = min(max(x, xa), xb)
+        call ode_locate(self%dense, comp, sgn, level, xa, xb, fa, fb, x, stat, errmsg)
     end subroutine radau5_locate
 
     !> Root x in [xa, xb] of the system's event function g_i(t0 + x h, y(x)) on the
@@ -652,18 +645,7 @@ contains
         real(dp), intent(out) :: x                            !! the root, in [xa, xb]
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        type(event_fn) :: ev
-        stat = SEISPULSE_SUCCESS
-        if (.not. xb > xa) then
-            x = xa
-            return
-        end if
-        ev%sys => sys
-        ev%dense => self%dense
-        ev%i = i
-        call find_root(ev, xa, xb, x, stat, errmsg, fa_known=ga, fb_known=gb)
-        if (stat /= SEISPULSE_SUCCESS) return
-        x = min(max(x, xa), xb)
+        call ode_locate_event(self%dense, sys, i, xa, xb, ga, gb, x, stat, errmsg)
     end subroutine radau5_locate_event
 
     !> y(t0 + x h) = y1 + s (c1 + (s - c2 + 1) (c2 + (s - c1 + 1) c3)), s = x - 1 (R.18);
@@ -697,21 +679,6 @@ contains
         v = self%y1(m) + s * (self%c(m, 1) + (s - c2m1) * (self%c(m, 2) + (s - c1m1) &
                                                            * self%c(m, 3)))
     end function dense_component
-
-    function dense_eval(self, x) result(y)
-        class(radau_dense_t), intent(inout) :: self
-        real(dp), intent(in) :: x
-        real(dp) :: y
-        y = self%sgn * self%component(self%comp, x) - self%level
-    end function dense_eval
-
-    function event_eval(self, x) result(g)
-        class(event_fn), intent(inout) :: self
-        real(dp), intent(in) :: x
-        real(dp) :: g
-        call self%dense%value(x, self%dense%yw)
-        g = self%sys%event(self%i, self%dense%t0 + x * self%dense%h, self%dense%yw)
-    end function event_eval
 
     !> Integrate y' = f(t, y) from t0 to t1 (either direction) with adaptive steps: the
     !> initial step of [HNW93] II.4, the factor `ode_radau5_factor` (no growth right after
