@@ -490,15 +490,15 @@ def test_plot_pushover_makes_a_figure():
 
 
 def readme_blocks(source_root):
-    """The python code blocks of the README's `seispulse.winkler` subsection, in order."""
+    """The python code blocks of the README's `seispulse.winkler` section, in order."""
     text = (source_root / "README.md").read_text(encoding="utf-8")
-    start = text.index("\n### Python: `seispulse.winkler`\n")
+    start = text.index("\n## Winkler foundations: Python (`seispulse.winkler`)\n")
     section = text[start:text.index("\n## ", start + 1)]
     return [block.split("\n```\n")[0] for block in section.split("```python\n")[1:]]
 
 
 def test_readme_examples_run(source_root):
-    """The examples of the README's seispulse.winkler subsection run and print what their
+    """The examples of the README's seispulse.winkler section run and print what their
     comments say."""
     mpl = pytest.importorskip("matplotlib")
     mpl.use("Agg")

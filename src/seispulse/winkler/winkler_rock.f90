@@ -206,6 +206,7 @@ module seispulse_winkler_rock
         type(ode_radau5_t) :: ode
         real(dp) :: t = 0.0_dp, y(NY) = 0.0_dp, f(NY) = 0.0_dp, h = 0.0_dp, h_max = 1.0_dp
         real(dp) :: p = 1.0_dp, t_lim = 0.0_dp
+        real(dp) :: rtol = 1.0e-9_dp, atol(NY) = 1.0_dp   !! step tolerances
         integer :: side(NEV) = 0
         logical :: active(NEV) = .false.
         logical :: lifted = .false.        !! an edge lifted since the last theta crossing
@@ -226,6 +227,15 @@ module seispulse_winkler_rock
         integer :: stat = SEISPULSE_SUCCESS
         character(len=:), allocatable :: msg
     end type wr_state_t
+
+    !> An event function on the dense output of the current step, for the root finder.
+    type, extends(scalar_function) :: root_fn_t
+        type(wr_state_t), pointer :: st => null()
+        integer :: i = 0
+        real(dp) :: hh = 0.0_dp
+    contains
+        procedure :: eval => root_eval
+    end type root_fn_t
 
 contains
 
@@ -798,8 +808,9 @@ contains
         ths = vs / model%r
         wv = sqrt(model%k * model%area / model%body%mass)
         st%h_max = 0.5_dp / st%p
-        call st%ode%init(NY, rtol, rtol * [vs, ths, vs * wv, ths * wv, model%body%weight * vs, &
-                         model%body%weight * vs], st%stat)
+        st%rtol = rtol
+        st%atol = rtol * [vs, ths, vs * wv, ths * wv, model%body%weight * vs, &
+                          model%body%weight * vs]
         st%e_rest = model%body%weight * (model%body%h - 0.5_dp * vs)
         st%proof = model%k_method == K_CONSTANT .and. ieee_is_finite(model%theta_overturn)
         st%barrier = ieee_value(1.0_dp, ieee_quiet_nan)
@@ -1302,6 +1313,8 @@ contains
 
         stat = SEISPULSE_SUCCESS
         call empty_run(run)
+        ! a fresh integrator for every run (a map's cells share the allocation)
+        call st%ode%init(NY, st%rtol, st%atol, st%stat)
         if (st%stat /= SEISPULSE_SUCCESS) then
             call set_error(stat, errmsg, SEISPULSE_INTERNAL, 'winkler_rock: integrator ' &
                            //'set-up failed (a bug)')
@@ -1627,8 +1640,9 @@ contains
         logical, intent(out) :: crossed(NEV)
         real(dp) :: gall(NEV, 0:NSAMP), dall(NEV, 0:NSAMP), gs(0:NSAMP), ds(0:NSAMP), x, ga, &
                     xt, gt, yv(NY)
-        integer :: i, k, sd
-        logical :: has_turn
+        integer :: i, k, sd, k2
+        logical :: has_turn, turn
+        real(dp) :: gx, dx
         ev = 0
         x_ev = 2.0_dp
         crossed = .false.
@@ -1637,6 +1651,12 @@ contains
         end do
         do i = 1, NEV
             if (.not. st%active(i)) cycle
+            if ((i == EV_Q_HI .and. st%side(EV_EDGE_HI) < 0) .or. &
+                (i == EV_Q_LO .and. st%side(EV_EDGE_LO) < 0)) then
+                ! the pressure at an edge out of contact is no structure: its side follows
+                if (side_of(gall(i, NSAMP)) /= 0) st%side(i) = side_of(gall(i, NSAMP))
+                cycle
+            end if
             sd = st%side(i)
             has_turn = i == EV_EDGE_HI .or. i == EV_EDGE_LO .or. i == EV_THETA .or. &
                        i == EV_OVERTURN .or. i == EV_CAP
@@ -1656,20 +1676,32 @@ contains
             do k = 1, NSAMP
                 if (xs(k - 1) >= x_ev) exit
                 ga = gs(k - 1)
-                if (k == 1 .or. side_of(ga) /= sd) ga = real(sd, dp) * tiny(1.0_dp)
                 if (real(sd, dp) * gs(k) < 0.0_dp) then
-                    call locate(st, i, xs(k - 1), xs(k), ga, gs(k), x)
+                    if (.not. real(sd, dp) * ga > 0.0_dp) then
+                        ! on or across the boundary at the start of the step (just after an
+                        ! event of this function, within the rounding): back at once
+                        x = xs(k - 1)
+                    else
+                        call locate(st, i, hh, xs(k - 1), xs(k), ga, gs(k), x)
+                    end if
                     exit
                 end if
-                if (has_turn) then
+                turn = has_turn
+                ! |theta| has a kink, not a turning point, where theta changes sign
+                if (i == EV_OVERTURN .or. i == EV_CAP) turn = ys(2, k - 1) * ys(2, k) > 0.0_dp
+                if (turn) then
                     if (real(sd, dp) * ds(k - 1) < 0.0_dp .and. real(sd, dp) * ds(k) > 0.0_dp) then
                         ! towards the boundary, then away: search at the turning point
-                        call locate(st, EV_TURN + i, xs(k - 1), xs(k), ds(k - 1), ds(k), xt)
+                        call locate(st, EV_TURN + i, hh, xs(k - 1), xs(k), ds(k - 1), ds(k), xt)
                         if (st%stat /= SEISPULSE_SUCCESS) return
                         call st%ode%value(xt, yv)
                         gt = st%sys%event(i, st%t + xt * hh, yv)
                         if (real(sd, dp) * gt < 0.0_dp) then
-                            call locate(st, i, xs(k - 1), xt, ga, gt, x)
+                            if (.not. real(sd, dp) * ga > 0.0_dp) then
+                                x = xs(k - 1)
+                            else
+                                call locate(st, i, hh, xs(k - 1), xt, ga, gt, x)
+                            end if
                             exit
                         end if
                     end if
@@ -1677,8 +1709,20 @@ contains
             end do
             if (st%stat /= SEISPULSE_SUCCESS) return
             if (x >= 0.0_dp .and. x < x_ev) then
-                x_ev = x
-                ev = i
+                ! the event state strictly on the new side (the root may sit on the old side
+                ! of g within the rounding): forward in doubling steps, at most to xs(k)
+                dx = 16.0_dp * epsilon(1.0_dp)
+                do k2 = 1, 64
+                    call st%ode%value(x, yv)
+                    gx = st%sys%event(i, st%t + x * hh, yv)
+                    if (real(sd, dp) * gx < 0.0_dp .or. .not. x < xs(k)) exit
+                    x = min(x + dx, xs(k))
+                    dx = 2.0_dp * dx
+                end do
+                if (x < x_ev) then
+                    x_ev = x
+                    ev = i
+                end if
             end if
         end do
         if (ev == 0) return
@@ -1686,6 +1730,8 @@ contains
         call st%ode%value(x_ev, yv)
         do i = 1, NEV
             if (.not. st%active(i) .or. st%side(i) == 0) cycle
+            if ((i == EV_Q_HI .and. st%side(EV_EDGE_HI) < 0) .or. &
+                (i == EV_Q_LO .and. st%side(EV_EDGE_LO) < 0)) cycle
             if (i == ev) then
                 crossed(i) = .true.
             else
@@ -1695,20 +1741,40 @@ contains
     end subroutine scan_events
 
     !> Root of event function i on the dense output in [xa, xb] (values fa, fb there).
-    subroutine locate(st, i, xa, xb, fa, fb, x)
-        type(wr_state_t), intent(inout) :: st
+    subroutine locate(st, i, hh, xa, xb, fa, fb, x)
+        type(wr_state_t), intent(inout), target :: st
         integer, intent(in) :: i
-        real(dp), intent(in) :: xa, xb, fa, fb
+        real(dp), intent(in) :: hh, xa, xb, fa, fb
         real(dp), intent(out) :: x
+        type(root_fn_t) :: fn
         character(len=120) :: rmsg
         rmsg = ''
-        call st%ode%locate_event(st%sys, i, xa, xb, fa, fb, x, st%stat, rmsg)
+        fn%st => st
+        fn%i = i
+        fn%hh = hh
+        ! an absolute tolerance of a few ulps of the step fraction (~1e-15 hh): a root next
+        ! to x = 0 would otherwise ask for a relative accuracy below the rounding of g
+        call find_root(fn, xa, xb, x, st%stat, rmsg, xtol=16.0_dp * epsilon(1.0_dp), &
+                       fa_known=fa, fb_known=fb)
+        x = min(max(x, xa), xb)
         if (st%stat /= SEISPULSE_SUCCESS) then
-            st%msg = 'winkler_rock: event location failed after t = '//real_str(st%t)//': ' &
-                     //trim(rmsg)//' (a bug)'
+            st%msg = 'winkler_rock: event location failed after t = '//real_str(st%t) &
+                     //' (event '//int_str(i)//', bracket '//real_str(xa)//' '//real_str(xb) &
+                     //', values '//real_str(fa)//' '//real_str(fb)//'): '//trim(rmsg) &
+                     //' (a bug)'
             st%stat = SEISPULSE_INTERNAL
         end if
     end subroutine locate
+
+    !> Event function i on the dense output of the step from st%t of size hh.
+    function root_eval(self, x) result(g)
+        class(root_fn_t), intent(inout) :: self
+        real(dp), intent(in) :: x
+        real(dp) :: g
+        real(dp) :: y(NY)
+        call self%st%ode%value(x, y)
+        g = self%st%sys%event(self%i, self%st%t + x * self%hh, y)
+    end function root_eval
 
     !> The events at st%t (W.48)-(W.52): contact changes at the edges, impacts, the
     !> overturning angle and the cap.
