@@ -184,4 +184,4 @@ def test_quasi_static_sine_follows_the_static_pushover():
     diff = run.theta - static
     assert np.max(np.abs(diff)) < 0.035 * peak
     assert abs(np.mean(diff)) < 0.003 * peak
-    assert 1.0 < run.t_uplift < 1.6 and run.outcome == wr.OUTCOME_SAFE
+    assert 1.0 < run.t_uplift < 1.6 and math.isnan(run.t_overturn)

@@ -150,8 +150,55 @@ def active_interval(body, k, c, y):
     return (lo, hi) if hi > lo else None
 
 
-def contact_quad(body, k, c, y):
-    """(N, M, contact width (m)) by adaptive quadrature over the active interval."""
+def _gazetas_k_over_i(width, length):
+    """K_R/I of a rectangle width x length (width along the rocking direction, rotation
+    about the axis parallel to length) by [G91] over G/(1 - nu), I = length width^3/12,
+    B <= L the half-sides: K_rx = I^0.75 (L/B)^0.25 (2.4 + 0.5 B/L) when length >= width
+    (the long axis), else K_ry = 3 I^0.75 (L/B)^0.15 (1/m^3 times G/(1 - nu))."""
+    i = length * width ** 3 / 12
+    if length >= width:
+        big_b, big_l = width / 2, length / 2
+        return i ** 0.75 * (big_l / big_b) ** 0.25 * (2.4 + 0.5 * big_b / big_l) / i
+    big_b, big_l = length / 2, width / 2
+    return 3 * i ** 0.75 * (big_l / big_b) ** 0.15 / i
+
+
+def varying_k(body, k, b):
+    """The varying-k modulus (N/m^3) at the geometric contact width b (m) from the
+    full-contact k: k times (K_R/I) of the equivalent rectangle over that of full contact
+    ([G91] for both). Circle: rectangle b x L, L = 2 sqrt(r^2 - a^2) the chord through the
+    pole a, the centroid of the contact segment (by quadrature here), full contact the
+    square 2 r x 2 r (reading K_rx: b <= L); rectangle: b x 2 alpha over 2 b x 2 alpha."""
+    r = body.r
+    if b >= 2 * r:
+        return k
+    if body.footing == "circle":
+        # segment from the edge s = r - b to r (by symmetry), in u = acos(s/r)
+        u_b = math.acos(max(-1.0, min(1.0, (r - b) / r)))
+        a0 = quad(lambda u: 2 * r * r * math.sin(u) ** 2, 0.0, u_b, epsabs=0.0,
+                  epsrel=1e-13)[0]
+        j1 = quad(lambda u: 2 * r ** 3 * math.cos(u) * math.sin(u) ** 2, 0.0, u_b,
+                  epsabs=0.0, epsrel=1e-13)[0]
+        pole = j1 / a0
+        chord = 2 * math.sqrt(max(r * r - pole * pole, 0.0))
+        return k * _gazetas_k_over_i(b, chord) / _gazetas_k_over_i(2 * r, 2 * r)
+    return k * _gazetas_k_over_i(b, 2 * body.alpha) / _gazetas_k_over_i(2 * r, 2 * body.alpha)
+
+
+def geometric_width(body, y):
+    """Width of {delta > 0} on the base (m)."""
+    a = _positive_part(lambda s: y[0] - s * math.sin(y[1]), body.r)
+    return 0.0 if a is None else a[1] - a[0]
+
+
+def contact_quad(body, k, c, y, varying=False):
+    """(N, M, contact width (m)) by adaptive quadrature over the active interval; with
+    varying, k is varying_k of the geometric contact width."""
+    if varying:
+        b = geometric_width(body, y)
+        if b <= 0.0:
+            return 0.0, 0.0, 0.0
+        k = varying_k(body, k, b)
     ends = active_interval(body, k, c, y)
     if ends is None:
         return 0.0, 0.0, 0.0
@@ -162,7 +209,8 @@ def contact_quad(body, k, c, y):
     r = body.r
     if body.footing == "circle":
         # s = r cos(u), ds = -r sin(u) du, 2 w ds -> 2 r^2 sin^2(u) du, u from acos(hi/r)
-        u_hi, u_lo = math.acos(min(1.0, max(-1.0, lo / r))), math.acos(min(1.0, max(-1.0, hi / r)))
+        u_hi = math.acos(min(1.0, max(-1.0, lo / r)))
+        u_lo = math.acos(min(1.0, max(-1.0, hi / r)))
         f0 = lambda u: q(r * math.cos(u)) * 2 * r * r * math.sin(u) ** 2
         f1 = lambda u: q(r * math.cos(u)) * r * math.cos(u) * 2 * r * r * math.sin(u) ** 2
         a, b = u_lo, u_hi
@@ -176,6 +224,33 @@ def contact_quad(body, k, c, y):
     n0 = quad(f0, a, b, epsabs=1e-14 * q_bound * area, epsrel=1e-13, limit=100)[0]
     n1 = quad(f1, a, b, epsabs=1e-14 * q_bound * area * r, epsrel=1e-13, limit=100)[0]
     return n0 * cs, n1 * cs * cs, hi - lo
+
+
+def spring_energy(body, k, v, theta):
+    """U = cos(theta) (k/2) int delta^2 2 w ds over delta > 0 (J), by quadrature."""
+    sn, cs = math.sin(theta), math.cos(theta)
+    a = _positive_part(lambda s: v - s * sn, body.r)
+    if a is None:
+        return 0.0
+    r = body.r
+    if body.footing == "circle":
+        f = lambda u: (v - r * math.cos(u) * sn) ** 2 * 2 * r * r * math.sin(u) ** 2
+        lo, hi = math.acos(min(1.0, max(-1.0, a[1] / r))), math.acos(min(1.0, max(-1.0, a[0] / r)))
+    else:
+        f = lambda s: (v - s * sn) ** 2 * 2 * body.alpha
+        lo, hi = a
+    return 0.5 * k * cs * quad(f, lo, hi, epsabs=0.0, epsrel=1e-13, limit=100)[0]
+
+
+def rest_energy(body, k, theta):
+    """U_min(theta) = min over v of V_g + U (J): at N(v) = W (brentq on the proven bracket
+    [-r |sin|, r |sin| + W/(k A cos)]), constant k."""
+    sn, cs = math.sin(theta), math.cos(theta)
+    lo = -body.r * abs(sn)
+    hi = body.r * abs(sn) + body.weight / (k * body.area * cs)
+    v = brentq(lambda x: contact_quad(body, k, 0.0, (x, theta, 0.0, 0.0))[0] - body.weight,
+               lo, hi, xtol=1e-15 * hi, rtol=1e-15)
+    return body.weight * (body.h * cs - v) + spring_energy(body, k, v, theta)
 
 
 # ------------------------------------------------------------------------ dynamics
@@ -192,8 +267,9 @@ def accelerations(body, normal, moment, a_g, y):
     return (a22 * f1 - a12 * f2) / det, (a11 * f2 - a12 * f1) / det
 
 
-def _edge_functions(body, k, c):
-    """The functions whose sign changes are contact changes (named for the restarts)."""
+def _edge_functions(body, k_of, c):
+    """The functions whose sign changes are contact changes (named for the restarts);
+    k_of(y) the modulus (N/m^3) at the state."""
     r = body.r
 
     def delta_hi(t, y):          # delta at s = +r
@@ -203,10 +279,10 @@ def _edge_functions(body, k, c):
         return y[0] + r * math.sin(y[1])
 
     def q_hi(t, y):              # k delta + c delta' at s = +r
-        return k * (y[0] - r * math.sin(y[1])) + c * (y[2] - r * math.cos(y[1]) * y[3])
+        return k_of(y) * (y[0] - r * math.sin(y[1])) + c * (y[2] - r * math.cos(y[1]) * y[3])
 
     def q_lo(t, y):              # k delta + c delta' at s = -r
-        return k * (y[0] + r * math.sin(y[1])) + c * (y[2] + r * math.cos(y[1]) * y[3])
+        return k_of(y) * (y[0] + r * math.sin(y[1])) + c * (y[2] + r * math.cos(y[1]) * y[3])
 
     def roots_meet(t, y):
         # delta' at the root of delta (times sin theta): the end of the active interval
@@ -216,7 +292,7 @@ def _edge_functions(body, k, c):
     return delta_hi, delta_lo, q_hi, q_lo, roots_meet
 
 
-def _armed(body, k, c, y, funcs):
+def _armed(body, c, y, funcs):
     """The contact functions that can change the active interval from state y: delta at
     both edges always; k delta + c delta' at an edge (c > 0) where delta > 0 there; the
     meeting of the roots (c > 0) while the root of delta is inside the base."""
@@ -232,9 +308,13 @@ def _armed(body, k, c, y, funcs):
     return armed
 
 
+OUTCOME_TIME_LIMIT = 4
+
+
 @dataclass
 class Run:
-    """A run of simulate: histories on t (s) and the events."""
+    """A run of simulate: histories on t (s) and the events (the library's definitions,
+    doc/winkler.md section 9.4)."""
     t: np.ndarray
     v: np.ndarray
     theta: np.ndarray
@@ -242,15 +322,16 @@ class Run:
     theta_rate: np.ndarray
     normal: np.ndarray
     moment: np.ndarray
-    width: np.ndarray
+    width: np.ndarray           # of the active interval (pressure > 0) (m)
     work: np.ndarray            # work of the contact forces and the ground inertia (J)
-    outcome: int
+    outcome: int                # OUTCOME_*
     n_impacts: int
     t_impacts: np.ndarray
-    t_uplift: float
-    t_lift_off: float
-    t_overturn: float
-    t_touch_down: float         # first contact after a flight (s)
+    t_uplift: float             # first loss of contact of an edge (delta < 0) (s)
+    t_lift_off: float           # first loss of contact of both edges (s)
+    t_touch_down: float         # first contact of an edge after both were out (s)
+    t_overturn: float           # last outward crossing of theta_overturn, or of theta_fall
+    t_safe: float               # time of the energy proof (s)
     theta_max: float
     t_end: float
     n_segments: int
@@ -301,15 +382,25 @@ def default_atol(body, k, rtol):
 
 def simulate(body, k, c, accel, t, breakpoints=(), v0=None, theta0=0.0, v_rate0=0.0,
              theta_rate0=0.0, t_max=None, method="Radau", rtol=1e-10, atol=None,
-             theta_fall=math.pi / 2, contact: Optional[Callable] = None, max_step=np.inf,
-             max_segments=100000):
+             theta_fall=math.pi / 2, theta_overturn=None, t_exc=None, varying=False,
+             prove_safe=False, stop_when_safe=False, contact: Optional[Callable] = None,
+             max_step=np.inf, max_segments=100000):
     """Run the model on [0, t_max] (default t[-1]) and sample it on the grid t (s).
 
-    accel: a_g(t) (m/s^2) with the times `breakpoints` where it is not smooth. v0 default
-    the static settlement W/(k A). contact(body, k, c, y) -> (N, M, width), default
-    contact_quad. Overturning: |theta| reaches theta_fall (rad). t_uplift: start of the
-    first segment whose active interval does not cover the base; t_lift_off: of the first
-    with no contact; impacts: sign changes of theta after t_uplift."""
+    accel: a_g(t) (m/s^2) with the times `breakpoints` where it is not smooth; t_exc the
+    end of the excitation (default the last breakpoint). v0 default the static settlement
+    W/(k A). varying: k of varying_k at the geometric contact width. contact(body, k, c, y,
+    varying) -> (N, M, width), default contact_quad.
+
+    Events as the library defines them (doc/winkler.md section 9.4): t_uplift the first
+    edge leaving the soil (delta(+-r) < 0), t_lift_off both, t_touch_down an edge back
+    after both were out; an impact is a sign change of theta with an edge lifted since
+    the previous one (|theta'| > 1e-12 rad/s there). Overturning: |theta| reaches theta_fall (pi/2), or after t_exc
+    |theta| is beyond theta_overturn and moving away (its outward crossing, or at t_exc).
+    prove_safe (constant k): after t_exc, every segment end and every 0.25/p s, the run is
+    proved safe when E - U_min(0) < U_min(theta_overturn) - U_min(0) with |theta| <
+    theta_overturn (E = T + V_g + U); stop_when_safe ends it there (a map cell).
+    Outcome: 1 + min(impacts, 2) if overturned, else 0 if proved safe, else 4."""
     contact = contact or contact_quad
     t = np.asarray(t, dtype=float)
     t_max = t[-1] if t_max is None else t_max
@@ -317,18 +408,27 @@ def simulate(body, k, c, accel, t, breakpoints=(), v0=None, theta0=0.0, v_rate0=
         v0 = body.weight / (k * body.area)
     if atol is None:
         atol = default_atol(body, k, rtol)
+    if t_exc is None:
+        t_exc = max(breakpoints) if len(breakpoints) else 0.0
     m, h = body.mass, body.h
     nfev = [0]
 
+    def k_of(y):
+        if not varying:
+            return k
+        b = geometric_width(body, y)
+        return varying_k(body, k, b) if b > 0.0 else k
+
     def rhs(tt, y):
         nfev[0] += 1
-        normal, moment, _ = contact(body, k, c, y[:4])
+        normal, moment, _ = contact(body, k, c, y[:4], varying)
         a_g = accel(tt)
         vdd, thdd = accelerations(body, normal, moment, a_g, y[:4])
         power = -normal * y[2] + moment * y[3] + m * a_g * h * math.cos(y[1]) * y[3]
         return [y[2], y[3], vdd, thdd, power]
 
-    funcs = _edge_functions(body, k, c)
+    funcs = _edge_functions(body, k_of, c)
+    delta_names = ("delta_hi", "delta_lo")
 
     def fall(tt, y):
         return abs(y[1]) - theta_fall
@@ -338,31 +438,55 @@ def simulate(body, k, c, accel, t, breakpoints=(), v0=None, theta0=0.0, v_rate0=
         return y[1]
     zero.terminal = False
 
-    stops = sorted({b for b in breakpoints if 0.0 < b < t_max} | {t_max})
+    th_ot = theta_overturn if theta_overturn is not None else theta_fall
+
+    def beyond(tt, y):
+        return abs(y[1]) - th_ot
+
+    if prove_safe:
+        u0 = rest_energy(body, k, 0.0)
+        barrier = rest_energy(body, k, th_ot) - u0
+    stops = {b for b in breakpoints if 0.0 < b < t_max} | {t_max}
+    if 0.0 < t_exc < t_max:
+        stops.add(t_exc)
+    if prove_safe:
+        chunk = 0.25 / body.p
+        stops |= set(np.arange(t_exc + chunk, t_max, chunk).tolist())
+    stops = sorted(stops)
     y = np.array([v0, theta0, v_rate0, theta_rate0, 0.0])
     t0 = 0.0
     out = np.full((5, t.size), np.nan)
     t_impacts = []
-    t_uplift = t_lift_off = t_overturn = t_touch_down = math.nan
+    t_uplift = t_lift_off = t_overturn = t_touch_down = t_safe = t_out_cross = math.nan
+    sides = {"delta_hi": funcs[0](0.0, y) > 0, "delta_lo": funcs[1](0.0, y) > 0}
+    lifted = not (sides["delta_hi"] and sides["delta_lo"])
+    if lifted:
+        t_uplift = 0.0
+        if not (sides["delta_hi"] or sides["delta_lo"]):
+            t_lift_off = 0.0
     back, skip = {}, set()
     n_seg = 0
     theta_max = abs(theta0)
-    was_touching = active_interval(body, k, c, y[:4]) is not None
-    while t0 < t_max:
+    overturned = False
+    while t0 < t_max and not overturned:
         n_seg += 1
         if n_seg > max_segments:
             raise RuntimeError(f"more than {max_segments} segments by t = {t0}")
         t_stop = next(s for s in stops if s > t0)
-        armed = [f for f in _armed(body, k, c, y, funcs) if f.__name__ not in skip]
+        free = t0 >= t_exc
+        armed = [f for f in _armed(body, c, y, funcs) if f.__name__ not in skip]
         evs = []
         for f in armed:
             ev = (lambda fn: (lambda tt, yy: fn(tt, yy)))(f)
             ev.terminal, ev.direction = True, back.get(f.__name__, 0.0)
             evs.append(ev)
-        # sign changes of theta count from the uplift on (theta may be 0 identically before)
-        tail = [fall] if math.isnan(t_uplift) else [fall, zero]
+        out_ev = (lambda tt, yy: beyond(tt, yy))
+        out_ev.terminal, out_ev.direction = free, 1.0
+        if "beyond" in skip:
+            out_ev.direction = -1.0
         sol = solve_ivp(rhs, (t0, t_stop), y, method=method, rtol=rtol, atol=atol,
-                        events=evs + tail, dense_output=True, max_step=max_step)
+                        events=evs + [fall, out_ev, zero], dense_output=True,
+                        max_step=max_step)
         if sol.status < 0:
             raise RuntimeError(f"solve_ivp: {sol.message} at t = {sol.t[-1]}")
         t1 = sol.t[-1]
@@ -370,50 +494,80 @@ def simulate(body, k, c, accel, t, breakpoints=(), v0=None, theta0=0.0, v_rate0=
         if np.any(sel):
             out[:, sel] = sol.sol(t[sel])
         theta_max = max(theta_max, float(np.max(np.abs(sol.y[1]))))
+        n_ev = len(evs)
+        t_out = [float(x) for x in sol.t_events[n_ev + 1] if x > t0]
+        if t_out:
+            t_out_cross = t_out[-1]
+        for tz, yz in zip(sol.t_events[n_ev + 2], sol.y_events[n_ev + 2]):
+            # a crossing, not the rounding of a theta that is 0 (a vertical motion)
+            if tz > t0 and abs(yz[3]) > 1e-12:
+                if lifted:
+                    t_impacts.append(float(tz))
+                lifted = False
         y_start = y
+        y = sol.y[:, -1].copy()
         if t1 > t0:
             back, skip = {}, set()
-            mid = sol.sol(0.5 * (t0 + t1))
-            ends = active_interval(body, k, c, mid[:4])
-            full = ends is not None and ends[1] - ends[0] >= 2 * body.r * (1 - 1e-12)
-            if math.isnan(t_uplift) and not full and ends is not None:
-                t_uplift = t0
-            if math.isnan(t_lift_off) and ends is None:
-                t_lift_off = t0
-            if math.isnan(t_touch_down) and not was_touching and ends is not None:
-                t_touch_down = t0
-            was_touching = ends is not None
-        if len(tail) == 2:
-            t_impacts += [float(tz) for tz in sol.t_events[-1] if t0 < tz]
-        y = sol.y[:, -1].copy()
         if sol.status == 1:
-            if sol.t_events[len(evs)].size:
-                t_overturn = float(sol.t_events[len(evs)][0])
-                theta_max = max(theta_max, theta_fall)
-                t0 = t1
-                break
+            if sol.t_events[n_ev].size:                 # |theta| = theta_fall
+                if math.isnan(t_out_cross):
+                    t_out_cross = t1
+                overturned = True
+            elif free and sol.t_events[n_ev + 1].size:   # outward past theta_overturn
+                overturned = True
             for f, te in zip(armed, sol.t_events):
-                if te.size:
-                    # the next segment starts on this zero: armed for the crossing back only
-                    # (an event at the restart itself: the sign it starts from)
-                    before = sol.sol(0.5 * (t0 + t1)) if t1 > t0 else y_start
-                    g_before = f(t0, before)
-                    if g_before == 0.0:
-                        skip.add(f.__name__)
-                    else:
-                        back[f.__name__] = 1.0 if g_before > 0 else -1.0
+                if not te.size:
+                    continue
+                # the next segment starts on this zero: armed for the crossing back only
+                # (an event at the restart itself: the sign it starts from)
+                before = sol.sol(0.5 * (t0 + t1)) if t1 > t0 else y_start
+                g_before = f(t0, before)
+                if g_before == 0.0:
+                    skip.add(f.__name__)
+                else:
+                    back[f.__name__] = 1.0 if g_before > 0 else -1.0
+                if f.__name__ in delta_names and g_before != 0.0:
+                    was_free = not (sides["delta_hi"] or sides["delta_lo"])
+                    sides[f.__name__] = g_before < 0
+                    if g_before > 0:                     # an edge lifted
+                        lifted = True
+                        if math.isnan(t_uplift):
+                            t_uplift = t1
+                        if not (sides["delta_hi"] or sides["delta_lo"]) \
+                                and math.isnan(t_lift_off):
+                            t_lift_off = t1
+                    elif was_free and math.isnan(t_touch_down):
+                        t_touch_down = t1
         t0 = t1
+        if overturned:
+            break
+        if abs(t0 - t_exc) <= 1e-14 * max(1.0, t_exc) and abs(y[1]) > th_ot \
+                and y[1] * y[3] > 0:
+            overturned = True                            # beyond and moving away at t_exc
+            break
+        if prove_safe and t0 >= t_exc and math.isnan(t_safe) and abs(y[1]) < th_ot:
+            e = 0.5 * m * y[2] ** 2 + m * h * math.sin(y[1]) * y[2] * y[3] \
+                + 0.5 * body.i_o * y[3] ** 2 + m * body.g * (h * math.cos(y[1]) - y[0]) \
+                + spring_energy(body, k, y[0], y[1])
+            if e - u0 < barrier:
+                t_safe = t0
+                if stop_when_safe:
+                    break
     normal = np.full(t.size, np.nan)
     moment = np.full(t.size, np.nan)
     width = np.full(t.size, np.nan)
     for j in range(t.size):
         if np.isfinite(out[0, j]):
-            normal[j], moment[j], width[j] = contact(body, k, c, out[:4, j])
+            normal[j], moment[j], width[j] = contact(body, k, c, out[:4, j], varying)
     n_imp = len(t_impacts)
-    outcome = OUTCOME_SAFE if math.isnan(t_overturn) else min(1 + n_imp, OUTCOME_IMPACTS)
+    if overturned:
+        t_overturn = t_out_cross
+        outcome = min(1 + n_imp, OUTCOME_IMPACTS)
+    else:
+        outcome = OUTCOME_SAFE if not math.isnan(t_safe) else OUTCOME_TIME_LIMIT
     return Run(t, out[0], out[1], out[2], out[3], normal, moment, width, out[4], outcome,
-               n_imp, np.array(t_impacts), t_uplift, t_lift_off, t_overturn, t_touch_down,
-               theta_max, t0, n_seg, nfev[0])
+               n_imp, np.array(t_impacts), t_uplift, t_lift_off, t_touch_down, t_overturn,
+               t_safe, theta_max, t0, n_seg, nfev[0])
 
 
 # -------------------------------------------------------------- static closed forms
@@ -458,3 +612,62 @@ def circle_static_theta(r, h, weight, k, force, n=20001):
     f_all = np.concatenate([f_full, f_up[1:peak + 1]])
     force = np.asarray(force, dtype=float)
     return np.sign(force) * np.interp(np.abs(force), f_all, th_all, right=np.nan)
+
+
+def block_pushover_uplift(b, alpha, h, weight, k, bp):
+    """Constant-k block after uplift at contact width b' in (0, 2 b] (m): (theta (rad),
+    F (N)) with theta = asin(2 W/(alpha b'^2 k))/2 and M = alpha k sin cos^2 b'^2 (3 b -
+    b')/3, F = (M - W h sin(theta))/(h cos(theta)); NaN where 2 W/(alpha b'^2 k) > 1."""
+    bp = np.asarray(bp, dtype=float)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        theta = 0.5 * np.arcsin(2 * weight / (alpha * bp * bp * k))
+    mom = alpha * k * np.sin(theta) * np.cos(theta) ** 2 * bp * bp * (3 * b - bp) / 3
+    return theta, (mom - weight * h * np.sin(theta)) / (h * np.cos(theta))
+
+
+def static_theta_overturn(body, k):
+    """First zero of the imposed moment M_found - W h sin(theta) along the constant-k
+    pushover after its peak (rad): brentq on F(b) between the peak of F (a scan of 20001
+    widths) and the smallest admissible width (2 W/(k Phi) = 1)."""
+    r, h, w = body.r, body.h, body.weight
+    if body.footing == "circle":
+        def force(b):
+            return float(circle_pushover_uplift(r, h, w, k, b)[1])
+
+        def theta(b):
+            return float(circle_pushover_uplift(r, h, w, k, b)[0])
+
+        def phi_gap(b):
+            cc = r - b
+            s = math.sqrt(2 * r * b - b * b)
+            return k * (2 / 3 * s ** 3 + cc * cc * s - r * r * cc * math.acos(cc / r)) - 2 * w
+        b_min = brentq(phi_gap, 1e-12 * r, 2 * r, xtol=1e-15 * r, rtol=1e-15)
+    else:
+        def force(bp):
+            return float(block_pushover_uplift(r, body.alpha, h, w, k, bp)[1])
+
+        def theta(bp):
+            return float(block_pushover_uplift(r, body.alpha, h, w, k, bp)[0])
+        b_min = math.sqrt(2 * w / (body.alpha * k))
+    grid = np.linspace(b_min, 2 * r, 20001)[1:]
+    forces = np.array([force(x) for x in grid])
+    i = int(np.argmax(forces))
+    lo = b_min * (1 + 1e-12)
+    if force(lo) > 0:
+        return math.nan
+    return theta(brentq(force, lo, grid[i], xtol=1e-15 * r, rtol=1e-15))
+
+
+def map_cell(body, k, c, x, y, theta_overturn=None, method="BDF", rtol=1e-8, contact=None,
+             free_p=100.0):
+    """Class of one cell of the one-sine overturning map on the dimensionless axes (x =
+    omega_p/p, y = a_p/(g tan theta_c), rigid p and theta_c of the body): a run from rest
+    on W/(k A) to the end of the pulse and on for at most free_p/p (s), proved safe (0),
+    overturned (1..3), or undecided (-1) (doc/winkler.md (W.58))."""
+    period = 2 * math.pi / (x * body.p)
+    accel, breaks = sine_pulse(y * body.g * math.tan(body.theta_c), period)
+    th_ot = static_theta_overturn(body, k) if theta_overturn is None else theta_overturn
+    run = simulate(body, k, c, accel, np.array([0.0]), breaks, t_max=period + free_p / body.p,
+                   method=method, rtol=rtol, theta_overturn=th_ot, t_exc=period,
+                   prove_safe=True, stop_when_safe=True, contact=contact)
+    return -1 if run.outcome == OUTCOME_TIME_LIMIT else run.outcome
