@@ -31,11 +31,12 @@ active interval, hence the smoothness of N and M, change there); every ground-mo
 breakpoint (end of a pulse, record samples) also starts a new segment.
 """
 import math
+import warnings
 from dataclasses import dataclass
 from typing import Callable, Optional
 
 import numpy as np
-from scipy.integrate import quad, solve_ivp
+from scipy.integrate import IntegrationWarning, quad, solve_ivp
 from scipy.optimize import brentq
 
 G_STD = 9.80665    # m/s^2
@@ -175,10 +176,15 @@ def varying_k(body, k, b):
     if body.footing == "circle":
         # segment from the edge s = r - b to r (by symmetry), in u = acos(s/r)
         u_b = math.acos(max(-1.0, min(1.0, (r - b) / r)))
-        a0 = quad(lambda u: 2 * r * r * math.sin(u) ** 2, 0.0, u_b, epsabs=0.0,
-                  epsrel=1e-13)[0]
-        j1 = quad(lambda u: 2 * r ** 3 * math.cos(u) * math.sin(u) ** 2, 0.0, u_b,
-                  epsabs=0.0, epsrel=1e-13)[0]
+        # in x = u/u_b on [0, 1]: smooth integrands of one scale; quad's roundoff warning
+        # at epsrel 1e-13 on a slice (u_b << 1) is a false alarm (the integrand is a
+        # polynomial in x to rounding): checked against the library's closed forms
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", IntegrationWarning)
+            a0 = u_b * quad(lambda x: 2 * r * r * math.sin(u_b * x) ** 2, 0.0, 1.0,
+                            epsabs=0.0, epsrel=1e-13)[0]
+            j1 = u_b * quad(lambda x: 2 * r ** 3 * math.cos(u_b * x)
+                            * math.sin(u_b * x) ** 2, 0.0, 1.0, epsabs=0.0, epsrel=1e-13)[0]
         pole = j1 / a0
         chord = 2 * math.sqrt(max(r * r - pole * pole, 0.0))
         return k * _gazetas_k_over_i(b, chord) / _gazetas_k_over_i(2 * r, 2 * r)
@@ -239,7 +245,8 @@ def spring_energy(body, k, v, theta):
     else:
         f = lambda s: (v - s * sn) ** 2 * 2 * body.alpha
         lo, hi = a
-    return 0.5 * k * cs * quad(f, lo, hi, epsabs=0.0, epsrel=1e-13, limit=100)[0]
+    scale = (abs(v) + r * abs(sn)) ** 2 * body.area
+    return 0.5 * k * cs * quad(f, lo, hi, epsabs=1e-15 * scale, epsrel=1e-13, limit=100)[0]
 
 
 def rest_energy(body, k, theta):
@@ -395,8 +402,9 @@ def simulate(body, k, c, accel, t, breakpoints=(), v0=None, theta0=0.0, v_rate0=
     Events as the library defines them (doc/winkler.md section 9.4): t_uplift the first
     edge leaving the soil (delta(+-r) < 0), t_lift_off both, t_touch_down an edge back
     after both were out; an impact is a sign change of theta with an edge lifted since
-    the previous one (|theta'| > 1e-12 rad/s there). Overturning: |theta| reaches theta_fall (pi/2), or after t_exc
-    |theta| is beyond theta_overturn and moving away (its outward crossing, or at t_exc).
+    the previous one (|theta'| > 1e-12 rad/s there). Overturning: |theta| reaches
+    theta_fall (pi/2), or after t_exc |theta| is beyond theta_overturn and moving away
+    (its outward crossing, or at t_exc).
     prove_safe (constant k): after t_exc, every segment end and every 0.25/p s, the run is
     proved safe when E - U_min(0) < U_min(theta_overturn) - U_min(0) with |theta| <
     theta_overturn (E = T + V_g + U); stop_when_safe ends it there (a map cell).
@@ -437,6 +445,10 @@ def simulate(body, k, c, accel, t, breakpoints=(), v0=None, theta0=0.0, v_rate0=
     def zero(tt, y):
         return y[1]
     zero.terminal = False
+
+    def turn(tt, y):             # theta' = 0: the extremes of theta, for theta_max
+        return y[3]
+    turn.terminal = False
 
     th_ot = theta_overturn if theta_overturn is not None else theta_fall
 
@@ -485,7 +497,7 @@ def simulate(body, k, c, accel, t, breakpoints=(), v0=None, theta0=0.0, v_rate0=
         if "beyond" in skip:
             out_ev.direction = -1.0
         sol = solve_ivp(rhs, (t0, t_stop), y, method=method, rtol=rtol, atol=atol,
-                        events=evs + [fall, out_ev, zero], dense_output=True,
+                        events=evs + [fall, out_ev, zero, turn], dense_output=True,
                         max_step=max_step)
         if sol.status < 0:
             raise RuntimeError(f"solve_ivp: {sol.message} at t = {sol.t[-1]}")
@@ -493,8 +505,9 @@ def simulate(body, k, c, accel, t, breakpoints=(), v0=None, theta0=0.0, v_rate0=
         sel = (t >= t0) & (t <= t1)
         if np.any(sel):
             out[:, sel] = sol.sol(t[sel])
-        theta_max = max(theta_max, float(np.max(np.abs(sol.y[1]))))
         n_ev = len(evs)
+        theta_max = max([theta_max, abs(float(sol.y[1, -1]))]
+                        + [abs(float(yt[1])) for yt in sol.y_events[n_ev + 3]])
         t_out = [float(x) for x in sol.t_events[n_ev + 1] if x > t0]
         if t_out:
             t_out_cross = t_out[-1]
