@@ -11,11 +11,14 @@ module seispulse
     use seispulse_format, only: real_str, int_str
     use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi2, phi3, sin_pi, &
                                  cos_pi, complex_phis, phi1, phi1_taylor, phi1_from_exp, &
-                                 log1p_over_x, sinh_minus_x, x_minus_asinh, pi
+                                 log1p_over_x, sinh_minus_x, x_minus_asinh, x_minus_sin, pi
     use seispulse_divided_differences, only: exp_dd1, exp_dd2, exp_dd_pack, cexp_dd1, &
                                              cexp_dd2_at0, cexp_dd2, cexp_dd3
-    use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
-    use seispulse_ode, only: ode_system, ode_dop853_t, ode_dense_t, ode_dop853_factor
+    use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton, &
+                               find_minimum
+    use seispulse_ode, only: ode_system, ode_dop853_t, ode_dense_t, ode_dop853_factor, &
+                             ode_fd_jacobian
+    use seispulse_radau, only: ode_radau5_t, ode_radau5_factor, radau5_solve
     use seispulse_lapack, only: solve_linear
     use seispulse_pulses, only: exp_pulse, exp_pulse_point, exp_pulse_peaks, &
                                 exp_pulse_impulse_amplitude, pulse_t, pulse_validate, pulse_eval, &
@@ -70,6 +73,32 @@ module seispulse
                                        ROLL_OUT_YP, ROLL_OUT_XG, ROLL_OUT_YG, ROLL_OUT_NORMAL, &
                                        ROLL_OUT_FRICTION, ROLL_OUT_ENERGY, ROLL_RUN_REST, &
                                        ROLL_RUN_NO_UPLIFT, ROLL_RUN_OVERTURN, ROLL_RUN_TIME_LIMIT
+    use seispulse_winkler_contact, only: FOOTING_CIRCLE, FOOTING_RECTANGLE, strip_moments
+    use seispulse_winkler, only: K_CONSTANT, K_VARYING, AXIS_LONG, AXIS_SHORT, WP_THETA, WP_B, &
+                                 WP_POLE, WP_AREA, WP_SETTLEMENT, WP_K, WP_M_FOUND, WP_M_IMPOSED, &
+                                 WP_FORCE, WP_NCOL, winkler_pushover_t, &
+                                 halfspace_rocking_stiffness, winkler_modulus_circle, &
+                                 rect_rocking_stiffness, winkler_modulus_rect, shape_factor, &
+                                 varying_modulus, winkler_pushover, block_winkler_pushover, &
+                                 winkler_master_curve, winkler_equivalent_cylinder
+    use seispulse_clay_footing, only: degradation_coeffs_t, inelastic_pushover_t, clay_bearing, &
+                                      initial_stiffness_ratio, gaussian_correction, &
+                                      theta_uplift, inelastic_pushover, moment_capacity_circle, &
+                                      IP_THETA, IP_K_R, IP_M_FOUND, IP_M_IMPOSED, IP_FORCE, IP_X, &
+                                      IP_G, IP_NCOL, CAPACITY_TC00_PEAK, &
+                                      CAPACITY_EFFECTIVE_WIDTH, NC_CIRCLE_CLAY, &
+                                      CHI_ELASTIC_LIMIT, SF_WEAK_LIMIT
+    use seispulse_winkler_rock, only: winkler_model_t, winkler_run_t, winkler_model, &
+                                      winkler_rock, winkler_overturning_map, &
+                                      winkler_outcome_name, winkler_output_name, &
+                                      winkler_contact_forces, winkler_rhs_jacobian, &
+                                      winkler_barrier, DAMP_ROCKING, DAMP_VERTICAL, WR_OUT_V, &
+                                      WR_OUT_THETA, WR_OUT_V_RATE, WR_OUT_THETA_RATE, &
+                                      WR_OUT_WIDTH, WR_OUT_NORMAL, WR_OUT_MOMENT, WR_OUT_ACCEL, &
+                                      WR_OUT_ENERGY, WR_OUT_WORK, WR_OUT_DISSIPATED, WR_NOUT, &
+                                      WR_RUN_SAFE, WR_RUN_OVERTURN_NO_IMPACT, &
+                                      WR_RUN_OVERTURN_ONE_IMPACT, WR_RUN_OVERTURN_IMPACTS, &
+                                      WR_RUN_TIME_LIMIT
     use seispulse_records, only: record_t, read_record, record_pga, pga_scale_factor, &
                                  ground_motion, record_format_name, record_units_name, &
                                  RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, &

@@ -8,6 +8,7 @@ program tester
     use test_roots, only: collect_roots
     use test_ode, only: collect_ode
     use test_lapack, only: collect_lapack
+    use test_radau, only: collect_radau
     use test_pulses, only: collect_pulses
     use test_sliding_sim, only: collect_sliding_sim
     use test_sliding_closed, only: collect_sliding_closed
@@ -15,6 +16,9 @@ program tester
     use test_rocking_sim, only: collect_rocking_sim
     use test_cylinder, only: collect_cylinder
     use test_cylinder_roll, only: collect_cylinder_roll
+    use test_winkler, only: collect_winkler
+    use test_clay_footing, only: collect_clay_footing
+    use test_winkler_rock, only: collect_winkler_rock
     use test_records, only: collect_records
     use test_number_reader, only: collect_number_reader
     use test_newmark, only: collect_newmark
@@ -49,6 +53,10 @@ program tester
         call collect_ode(tests)
         call run_suite('ode', tests, output_unit, npass, nfail)
     end if
+    if (selected('radau')) then
+        call collect_radau(tests)
+        call run_suite('radau', tests, output_unit, npass, nfail)
+    end if
     if (selected('lapack')) then
         call collect_lapack(tests)
         call run_suite('lapack', tests, output_unit, npass, nfail)
@@ -80,6 +88,18 @@ program tester
     if (selected('cylinder_roll')) then
         call collect_cylinder_roll(tests)
         call run_suite('cylinder_roll', tests, output_unit, npass, nfail)
+    end if
+    if (selected('winkler')) then
+        call collect_winkler(tests)
+        call run_suite('winkler', tests, output_unit, npass, nfail)
+    end if
+    if (selected('clay_footing')) then
+        call collect_clay_footing(tests)
+        call run_suite('clay_footing', tests, output_unit, npass, nfail)
+    end if
+    if (selected('winkler_rock')) then
+        call collect_winkler_rock(tests)
+        call run_suite('winkler_rock', tests, output_unit, npass, nfail)
     end if
     if (selected('records')) then
         call collect_records(tests)

@@ -1,8 +1,9 @@
-!> LAPACK wrapper: a solve checked against a hand-computed solution, and info mapping.
+!> LAPACK wrapper: a solve checked against a hand-computed solution, and info mapping;
+!> the LU factor/solve pair, real and complex.
 module test_lapack
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_SINGULAR, SEISPULSE_INVALID_INPUT
-    use seispulse_lapack, only: solve_linear, solve_linear_inplace
+    use seispulse_lapack, only: solve_linear, solve_linear_inplace, lu_factor, lu_solve
     use seispulse_kinds, only: ik
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
@@ -18,7 +19,9 @@ contains
                  new_unittest('singular matrix is a status', test_singular), &
                  new_unittest('shape mismatch is a status', test_shapes), &
                  new_unittest('in-place solve 3x3', test_inplace), &
-                 new_unittest('in-place: singular and shape mismatch', test_inplace_errors)]
+                 new_unittest('in-place: singular and shape mismatch', test_inplace_errors), &
+                 new_unittest('LU factors reused: real and complex', test_lu), &
+                 new_unittest('LU: singular and shape mismatch', test_lu_errors)]
     end subroutine collect_lapack
 
     subroutine test_solve(error)
@@ -105,5 +108,67 @@ contains
         call solve_linear_inplace(a3, b, ipiv, stat, msg)
         call check(error, stat, SEISPULSE_INVALID_INPUT, 'shape status')
     end subroutine test_inplace_errors
+
+    !> Factor once, solve two right-hand sides built from chosen solutions (b = A x by
+    !> matmul), real and complex.
+    subroutine test_lu(error)
+        type(test_error), allocatable, intent(out) :: error
+        real(dp) :: a(3, 3), lu(3, 3), x(3), b(3)
+        complex(dp) :: ac(3, 3), luc(3, 3), xc(3), bc(3)
+        integer(ik) :: ipiv(3)
+        integer :: stat, k
+        a = reshape([4.0_dp, 2.0_dp, 1.0_dp, 1.0_dp, 5.0_dp, 2.0_dp, 0.0_dp, 1.0_dp, 3.0_dp], &
+                    [3, 3])
+        lu = a
+        call lu_factor(lu, ipiv, stat)
+        call check(error, stat, SEISPULSE_SUCCESS, 'real factor')
+        if (allocated(error)) return
+        do k = 1, 2
+            x = [1.0_dp, -2.0_dp, 3.0_dp] * real(k, dp) + [0.0_dp, 0.0_dp, 0.5_dp] * real(k - 1, dp)
+            b = matmul(a, x)
+            call lu_solve(lu, ipiv, b)
+            call check(error, b, x, rtol=1.0e-14_dp, atol=1.0e-14_dp, message='real solve')
+            if (allocated(error)) return
+        end do
+        ac = cmplx(a, transpose(a) - 1.0_dp, kind=dp)
+        luc = ac
+        call lu_factor(luc, ipiv, stat)
+        call check(error, stat, SEISPULSE_SUCCESS, 'complex factor')
+        if (allocated(error)) return
+        do k = 1, 2
+            xc = cmplx([1.0_dp, -2.0_dp, 3.0_dp], [0.5_dp, 0.0_dp, -1.0_dp] * real(k, dp), kind=dp)
+            bc = matmul(ac, xc)
+            call lu_solve(luc, ipiv, bc)
+            call check(error, real(bc, dp), real(xc, dp), rtol=1.0e-14_dp, atol=1.0e-14_dp, &
+                       message='complex solve, real part')
+            if (allocated(error)) return
+            call check(error, aimag(bc), aimag(xc), rtol=1.0e-14_dp, atol=1.0e-14_dp, &
+                       message='complex solve, imaginary part')
+            if (allocated(error)) return
+        end do
+    end subroutine test_lu
+
+    subroutine test_lu_errors(error)
+        type(test_error), allocatable, intent(out) :: error
+        real(dp) :: a(2, 2), r(2, 3)
+        complex(dp) :: ac(2, 2)
+        integer(ik) :: ipiv(2)
+        integer :: stat
+        character(len=100) :: msg
+        a = reshape([1.0_dp, 2.0_dp, 2.0_dp, 4.0_dp], [2, 2])
+        call lu_factor(a, ipiv, stat, msg)
+        call check(error, stat, SEISPULSE_SINGULAR, 'real singular')
+        if (allocated(error)) return
+        call check(error, index(msg, 'singular') > 0, 'message says singular')
+        if (allocated(error)) return
+        ac = cmplx(reshape([1.0_dp, 2.0_dp, 2.0_dp, 4.0_dp], [2, 2]), &
+                   reshape([1.0_dp, 2.0_dp, 2.0_dp, 4.0_dp], [2, 2]), kind=dp)
+        call lu_factor(ac, ipiv, stat)
+        call check(error, stat, SEISPULSE_SINGULAR, 'complex singular')
+        if (allocated(error)) return
+        r = 1.0_dp
+        call lu_factor(r, ipiv, stat)
+        call check(error, stat, SEISPULSE_INVALID_INPUT, 'not square')
+    end subroutine test_lu_errors
 
 end module test_lapack

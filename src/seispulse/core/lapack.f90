@@ -6,7 +6,7 @@ module seispulse_lapack
     implicit none
     private
 
-    public :: solve_linear, solve_linear_inplace
+    public :: solve_linear, solve_linear_inplace, lu_factor, lu_solve
 
     interface
         !> LU factorisation and solution of A X = B (LAPACK).
@@ -18,7 +18,55 @@ module seispulse_lapack
             real(dp), intent(inout) :: b(ldb, *)
             integer(ik), intent(out) :: info
         end subroutine dgesv
+        !> LU factorisation with partial pivoting, real (LAPACK).
+        pure subroutine dgetrf(m, n, a, lda, ipiv, info)
+            import :: dp, ik
+            integer(ik), intent(in) :: m, n, lda
+            real(dp), intent(inout) :: a(lda, *)
+            integer(ik), intent(out) :: ipiv(*)
+            integer(ik), intent(out) :: info
+        end subroutine dgetrf
+        !> Solution of A X = B from the factors of dgetrf (LAPACK).
+        pure subroutine dgetrs(trans, n, nrhs, a, lda, ipiv, b, ldb, info)
+            import :: dp, ik
+            character(len=1), intent(in) :: trans
+            integer(ik), intent(in) :: n, nrhs, lda, ldb
+            real(dp), intent(in) :: a(lda, *)
+            integer(ik), intent(in) :: ipiv(*)
+            real(dp), intent(inout) :: b(ldb, *)
+            integer(ik), intent(out) :: info
+        end subroutine dgetrs
+        !> LU factorisation with partial pivoting, complex (LAPACK).
+        pure subroutine zgetrf(m, n, a, lda, ipiv, info)
+            import :: dp, ik
+            integer(ik), intent(in) :: m, n, lda
+            complex(dp), intent(inout) :: a(lda, *)
+            integer(ik), intent(out) :: ipiv(*)
+            integer(ik), intent(out) :: info
+        end subroutine zgetrf
+        !> Solution of A X = B from the factors of zgetrf (LAPACK).
+        pure subroutine zgetrs(trans, n, nrhs, a, lda, ipiv, b, ldb, info)
+            import :: dp, ik
+            character(len=1), intent(in) :: trans
+            integer(ik), intent(in) :: n, nrhs, lda, ldb
+            complex(dp), intent(in) :: a(lda, *)
+            integer(ik), intent(in) :: ipiv(*)
+            complex(dp), intent(inout) :: b(ldb, *)
+            integer(ik), intent(out) :: info
+        end subroutine zgetrs
     end interface
+
+    !> In-place LU factorisation of a square matrix the caller owns, real or complex
+    !> (LAPACK dgetrf/zgetrf; no allocation, for small systems factored many times).
+    interface lu_factor
+        module procedure lu_factor_real, lu_factor_complex
+    end interface lu_factor
+
+    !> Solution of A x = b in place from the factors of `lu_factor` (LAPACK dgetrs/zgetrs;
+    !> no allocation).
+    interface lu_solve
+        module procedure lu_solve_real, lu_solve_complex
+    end interface lu_solve
 
 contains
 
@@ -66,6 +114,84 @@ contains
         call dgesv(n, 1_ik, a, max(1_ik, n), ipiv, b, max(1_ik, n), info)
         call handle_gesv_info(info, stat, errmsg)
     end subroutine solve_linear_inplace
+
+    !> LU factors of a real n x n matrix in place (dgetrf): a = P L U. stat is
+    !> SEISPULSE_SINGULAR for an exactly zero pivot (the factors are complete but U is
+    !> singular: do not solve with them).
+    subroutine lu_factor_real(a, ipiv, stat, errmsg)
+        real(dp), contiguous, intent(inout) :: a(:, :)        !! n x n in, LU factors out
+        integer(ik), contiguous, intent(out) :: ipiv(:)       !! pivot indices, n
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        integer(ik) :: n, info
+        n = int(size(a, 1), ik)
+        if (size(a, 2) /= n .or. size(ipiv) /= n) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'a: must be square with the length of ipiv')
+            return
+        end if
+        call dgetrf(n, n, a, max(1_ik, n), ipiv, info)
+        call handle_getrf_info('dgetrf', info, stat, errmsg)
+    end subroutine lu_factor_real
+
+    !> LU factors of a complex n x n matrix in place (zgetrf); stat as `lu_factor_real`.
+    subroutine lu_factor_complex(a, ipiv, stat, errmsg)
+        complex(dp), contiguous, intent(inout) :: a(:, :)     !! n x n in, LU factors out
+        integer(ik), contiguous, intent(out) :: ipiv(:)       !! pivot indices, n
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        integer(ik) :: n, info
+        n = int(size(a, 1), ik)
+        if (size(a, 2) /= n .or. size(ipiv) /= n) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'a: must be square with the length of ipiv')
+            return
+        end if
+        call zgetrf(n, n, a, max(1_ik, n), ipiv, info)
+        call handle_getrf_info('zgetrf', info, stat, errmsg)
+    end subroutine lu_factor_complex
+
+    !> x = A^-1 b in place from the factors of `lu_factor_real` (dgetrs). The sizes are
+    !> the caller's to match (n x n, n, n): no check on this path, for speed.
+    pure subroutine lu_solve_real(lu, ipiv, b)
+        real(dp), contiguous, intent(in) :: lu(:, :)          !! LU factors, n x n
+        integer(ik), contiguous, intent(in) :: ipiv(:)        !! pivot indices, n
+        real(dp), contiguous, intent(inout) :: b(:)           !! right-hand side in (n), x out
+        integer(ik) :: n, info
+        n = int(size(b), ik)
+        call dgetrs('N', n, 1_ik, lu, max(1_ik, n), ipiv, b, max(1_ik, n), info)
+    end subroutine lu_solve_real
+
+    !> x = A^-1 b in place from the factors of `lu_factor_complex` (zgetrs); as
+    !> `lu_solve_real`.
+    pure subroutine lu_solve_complex(lu, ipiv, b)
+        complex(dp), contiguous, intent(in) :: lu(:, :)       !! LU factors, n x n
+        integer(ik), contiguous, intent(in) :: ipiv(:)        !! pivot indices, n
+        complex(dp), contiguous, intent(inout) :: b(:)        !! right-hand side in (n), x out
+        integer(ik) :: n, info
+        n = int(size(b), ik)
+        call zgetrs('N', n, 1_ik, lu, max(1_ik, n), ipiv, b, max(1_ik, n), info)
+    end subroutine lu_solve_complex
+
+    !> d/zgetrf: info < 0 is our bug (bad argument), info > 0 an exactly zero pivot. The
+    !> message is formatted only on an error (the success path stays cheap).
+    subroutine handle_getrf_info(name, info, stat, errmsg)
+        character(len=*), intent(in) :: name
+        integer(ik), intent(in) :: info
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        character(len=12) :: num
+        stat = SEISPULSE_SUCCESS
+        if (info == 0) return
+        write(num, '(i0)') abs(info)
+        if (info < 0) then
+            call set_error(stat, errmsg, SEISPULSE_INTERNAL, &
+                           name//': illegal value in argument '//trim(num))
+        else
+            call set_error(stat, errmsg, SEISPULSE_SINGULAR, &
+                           'a: matrix is singular (zero pivot U('//trim(num)//','//trim(num)//'))')
+        end if
+    end subroutine handle_getrf_info
 
     !> dgesv: info < 0 is our bug (bad argument), info > 0 a singular matrix.
     subroutine handle_gesv_info(info, stat, errmsg)

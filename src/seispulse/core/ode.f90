@@ -30,13 +30,17 @@ module seispulse_ode
     implicit none
     private
 
-    public :: ode_system, ode_dop853_t, ode_dense_t, ode_dop853_factor
+    public :: ode_system, ode_dop853_t, ode_dense_t, ode_dop853_factor, ode_fd_jacobian
+    public :: ode_dense_base, ode_locate, ode_locate_event
 
-    !> A system y' = f(t, y) of any dimension; optional event functions g_i(t, y).
+    !> A system y' = f(t, y) of any dimension; optional event functions g_i(t, y) and the
+    !> Jacobian df/dy (used by the implicit integrator of seispulse_radau; by default
+    !> forward differences, a model overrides it with its exact Jacobian).
     type, abstract :: ode_system
     contains
         procedure(ode_rhs), deferred :: rhs
         procedure :: event => ode_no_event
+        procedure :: jacobian => ode_fd_jacobian
     end type ode_system
 
     abstract interface
@@ -52,19 +56,45 @@ module seispulse_ode
         end subroutine ode_rhs
     end interface
 
-    !> Dense output of the last step: y(t0 + x h), 0 <= x <= 1, and, as a function of x
-    !> for the root finder, sgn y(comp) - level.
-    type, extends(scalar_function) :: ode_dense_t
+    !> Dense output of a step of any integrator: y(t0 + x h), 0 <= x <= 1, and, as a
+    !> function of x for the root finder, sgn y(comp) - level (`ode_locate`,
+    !> `ode_locate_event` find the roots).
+    type, abstract, extends(scalar_function) :: ode_dense_base
         integer :: n = 0                      !! state dimension
         real(dp) :: t0 = 0.0_dp               !! start of the step
         real(dp) :: h = 0.0_dp                !! its size
-        real(dp), allocatable :: r(:, :)      !! coefficients r1..r7, n x 7
-        real(dp), allocatable :: y0(:)        !! state at t0, n
         integer :: comp = 1                   !! component sought by `eval`
         real(dp) :: sgn = 1.0_dp              !! its sign
         real(dp) :: level = 0.0_dp            !! its level
     contains
+        procedure(dense_value_iface), deferred :: value
+        procedure(dense_component_iface), deferred :: component
         procedure :: eval => dense_eval
+    end type ode_dense_base
+
+    abstract interface
+        !> y(t0 + x h).
+        pure subroutine dense_value_iface(self, x, y)
+            import :: ode_dense_base, dp
+            class(ode_dense_base), intent(in) :: self  !! the dense output
+            real(dp), intent(in) :: x                  !! fraction of the step
+            real(dp), intent(out) :: y(:)              !! state, n
+        end subroutine dense_value_iface
+        !> Component m of y(t0 + x h).
+        pure function dense_component_iface(self, m, x) result(v)
+            import :: ode_dense_base, dp
+            class(ode_dense_base), intent(in) :: self  !! the dense output
+            integer, intent(in) :: m                   !! component, 1..n
+            real(dp), intent(in) :: x                  !! fraction of the step
+            real(dp) :: v
+        end function dense_component_iface
+    end interface
+
+    !> Dense output of the last DOP853 step (7th order).
+    type, extends(ode_dense_base) :: ode_dense_t
+        real(dp), allocatable :: r(:, :)      !! coefficients r1..r7, n x 7
+        real(dp), allocatable :: y0(:)        !! state at t0, n
+    contains
         procedure :: value => dense_value
         procedure :: component => dense_component
     end type ode_dense_t
@@ -90,7 +120,7 @@ module seispulse_ode
     !> Event function g_i(t, y) of a system on the dense output of a step (root finder).
     type, extends(scalar_function) :: event_fn
         class(ode_system), pointer :: sys => null()
-        type(ode_dense_t), pointer :: dense => null()
+        class(ode_dense_base), pointer :: dense => null()
         integer :: i = 0
         real(dp), allocatable :: y(:)
     contains
@@ -212,6 +242,50 @@ contains
         end associate
         g = 0.0_dp
     end function ode_no_event
+
+    !> Default Jacobian dfdy(i, j) = df_i/dy_j by forward differences, as RADAU5 [HW96]:
+    !> column j from f(t, y + delta_j e_j), delta_j = sqrt(eps max(1e-5, |y_j|)), n right-hand
+    !> sides. No allocation for n <= 32 (a local buffer holds the perturbed state).
+    subroutine ode_fd_jacobian(self, t, y, f, dfdy)
+        class(ode_system), intent(inout) :: self          !! the system
+        real(dp), intent(in) :: t                         !! time
+        real(dp), contiguous, intent(in) :: y(:)          !! state, n
+        real(dp), contiguous, intent(in) :: f(:)          !! f(t, y), n
+        real(dp), contiguous, intent(out) :: dfdy(:, :)   !! Jacobian, n x n
+        integer, parameter :: n_local = 32
+        real(dp) :: buf(n_local)
+        real(dp), allocatable :: big(:)
+        integer :: n
+        n = size(y)
+        if (n <= n_local) then
+            call fd_columns(self, n, t, y, f, dfdy, buf(1:n))
+        else
+            allocate(big(n))
+            call fd_columns(self, n, t, y, f, dfdy, big)
+        end if
+    end subroutine ode_fd_jacobian
+
+    !> The n columns of `ode_fd_jacobian` with the perturbed state in yp.
+    subroutine fd_columns(sys, n, t, y, f, dfdy, yp)
+        class(ode_system), intent(inout) :: sys
+        integer, intent(in) :: n
+        real(dp), intent(in) :: t, y(n), f(n)
+        real(dp), contiguous, intent(out) :: dfdy(:, :)
+        real(dp), intent(inout) :: yp(n)
+        real(dp) :: delta
+        integer :: j
+        yp = y
+        do j = 1, n
+            delta = sqrt(epsilon(1.0_dp) * max(1.0e-5_dp, abs(y(j))))
+            yp(j) = y(j) + delta
+            ! beyond |y_j| ~ 2e16 the increment is below half an ulp: take one ulp
+            if (.not. (yp(j) > y(j))) yp(j) = nearest(y(j), 1.0_dp)
+            delta = yp(j) - y(j)   ! the step actually taken (exact in floating point)
+            call sys%rhs(t, yp, dfdy(:, j))
+            dfdy(:, j) = (dfdy(:, j) - f) / delta
+            yp(j) = y(j)
+        end do
+    end subroutine fd_columns
 
     !> Step-size factor after a step with error norm err (Hairer: 0.9 err^(-1/8)): at
     !> least 0.2 after a rejected step (err > 1, or NaN), at most 10 after an accepted
@@ -521,28 +595,63 @@ contains
         real(dp), intent(out) :: x                            !! the root, in [xa, xb]
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        stat = SEISPULSE_SUCCESS
-        if (comp < 1 .or. comp > self%n) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'comp: must be in 1..n')
-            x = xa
-            return
-        end if
-        self%dense%comp = comp
-        self%dense%sgn = sgn
-        self%dense%level = level
-        if (.not. xb > xa) then
-            x = xa
-            return
-        end if
-        call find_root(self%dense, xa, xb, x, stat, errmsg, fa_known=fa, fb_known=fb)
-        if (stat /= SEISPULSE_SUCCESS) return
-        x = min(max(x, xa), xb)
+        call ode_locate(self%dense, comp, sgn, level, xa, xb, fa, fb, x, stat, errmsg)
     end subroutine dop853_locate
 
     !> Root x in [xa, xb] of the system's event function g_i(t0 + x h, y(x)) on the
     !> dense output, given ga, gb at the ends (of opposite signs, or one of them 0).
     subroutine dop853_locate_event(self, sys, i, xa, xb, ga, gb, x, stat, errmsg)
         class(ode_dop853_t), intent(inout), target :: self    !! the integrator
+        class(ode_system), intent(inout), target :: sys       !! the system
+        integer, intent(in) :: i                              !! event number
+        real(dp), intent(in) :: xa                            !! bracket start (fraction)
+        real(dp), intent(in) :: xb                            !! bracket end (fraction)
+        real(dp), intent(in) :: ga                            !! g_i at xa
+        real(dp), intent(in) :: gb                            !! g_i at xb
+        real(dp), intent(out) :: x                            !! the root, in [xa, xb]
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        call ode_locate_event(self%dense, sys, i, xa, xb, ga, gb, x, stat, errmsg)
+    end subroutine dop853_locate_event
+
+    !> Root x in [xa, xb] of sgn y(comp)(x) - level on a dense output (any integrator's),
+    !> given its values fa, fb at the ends (of opposite signs, or one of them 0); x = xa
+    !> if xb <= xa.
+    subroutine ode_locate(dense, comp, sgn, level, xa, xb, fa, fb, x, stat, errmsg)
+        class(ode_dense_base), intent(inout) :: dense          !! dense output of a step
+        integer, intent(in) :: comp                           !! component, 1..n
+        real(dp), intent(in) :: sgn                           !! its sign factor
+        real(dp), intent(in) :: level                         !! level crossed
+        real(dp), intent(in) :: xa                            !! bracket start (fraction)
+        real(dp), intent(in) :: xb                            !! bracket end (fraction)
+        real(dp), intent(in) :: fa                            !! sgn y(comp) - level at xa
+        real(dp), intent(in) :: fb                            !! same at xb
+        real(dp), intent(out) :: x                            !! the root, in [xa, xb]
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        stat = SEISPULSE_SUCCESS
+        if (comp < 1 .or. comp > dense%n) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'comp: must be in 1..n')
+            x = xa
+            return
+        end if
+        dense%comp = comp
+        dense%sgn = sgn
+        dense%level = level
+        if (.not. xb > xa) then
+            x = xa
+            return
+        end if
+        call find_root(dense, xa, xb, x, stat, errmsg, fa_known=fa, fb_known=fb)
+        if (stat /= SEISPULSE_SUCCESS) return
+        x = min(max(x, xa), xb)
+    end subroutine ode_locate
+
+    !> Root x in [xa, xb] of the system's event function g_i(t0 + x h, y(x)) on a dense
+    !> output (any integrator's), given ga, gb at the ends (of opposite signs, or one of
+    !> them 0).
+    subroutine ode_locate_event(dense, sys, i, xa, xb, ga, gb, x, stat, errmsg)
+        class(ode_dense_base), intent(inout), target :: dense  !! dense output of a step
         class(ode_system), intent(inout), target :: sys       !! the system
         integer, intent(in) :: i                              !! event number
         real(dp), intent(in) :: xa                            !! bracket start (fraction)
@@ -559,13 +668,13 @@ contains
             return
         end if
         ev%sys => sys
-        ev%dense => self%dense
+        ev%dense => dense
         ev%i = i
-        allocate(ev%y(self%n))
+        allocate(ev%y(dense%n))
         call find_root(ev, xa, xb, x, stat, errmsg, fa_known=ga, fb_known=gb)
         if (stat /= SEISPULSE_SUCCESS) return
         x = min(max(x, xa), xb)
-    end subroutine dop853_locate_event
+    end subroutine ode_locate_event
 
     !> y(t0 + x h) (Hairer's nested form).
     pure subroutine dense_value(self, x, y)
@@ -603,7 +712,7 @@ contains
     end function dense_component
 
     function dense_eval(self, x) result(y)
-        class(ode_dense_t), intent(inout) :: self
+        class(ode_dense_base), intent(inout) :: self
         real(dp), intent(in) :: x
         real(dp) :: y
         y = self%sgn * self%component(self%comp, x) - self%level

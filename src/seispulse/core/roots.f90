@@ -11,7 +11,7 @@ module seispulse_roots
     implicit none
     private
 
-    public :: scalar_function, find_root, smooth_function, find_root_newton
+    public :: scalar_function, find_root, smooth_function, find_root_newton, find_minimum
 
     !> A real function of one real variable, with its parameters as components.
     type, abstract :: scalar_function
@@ -262,6 +262,135 @@ contains
         end subroutine report_evals
 
     end subroutine find_root
+
+    !> Minimum of f on [a, b] (Brent 1973, "fmin": golden-section steps with parabolic
+    !> interpolation; the search never leaves [a, b] and never evaluates the ends). Converged
+    !> when x is within 2 (sqrt(eps) |x| + xtol/3) of the minimiser; the minimum value fx is
+    !> then correct to about eps relative where f is smooth. For a maximum, let f return -g.
+    !> Termination is guaranteed: after `max_iter` evaluations stat = SEISPULSE_NO_CONVERGENCE
+    !> with the best point found. A minimum at an end is approached, not reached: a caller
+    !> that may have one compares with f(a) and f(b).
+    recursive subroutine find_minimum(f, a, b, x, fx, stat, errmsg, xtol, max_iter)
+        class(scalar_function), intent(inout) :: f            !! function to minimise
+        real(dp), intent(in) :: a                             !! one end of the interval
+        real(dp), intent(in) :: b                             !! other end of the interval
+        real(dp), intent(out) :: x                            !! the minimiser (best estimate)
+        real(dp), intent(out) :: fx                           !! f(x)
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp), intent(in), optional :: xtol                !! absolute tolerance in x (default 0)
+        integer, intent(in), optional :: max_iter             !! evaluation limit (default 500)
+        real(dp), parameter :: cgold = 0.38196601125010515_dp  ! (3 - sqrt(5))/2
+        real(dp) :: lo, hi, v, w, fv, fw, d, e, xm, tol1, tol2, p, q, r, u, fu, abs_tol, rel
+        integer :: iter, limit
+
+        abs_tol = 0.0_dp
+        if (present(xtol)) abs_tol = max(xtol, 0.0_dp)
+        limit = 500
+        if (present(max_iter)) limit = max_iter
+        x = a
+        fx = 0.0_dp
+        if (.not. (ieee_is_finite(a) .and. ieee_is_finite(b))) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                           'interval: both ends must be finite numbers')
+            return
+        end if
+        stat = SEISPULSE_SUCCESS
+        rel = sqrt(epsilon(1.0_dp))
+        lo = min(a, b)
+        hi = max(a, b)
+        x = lo + cgold * (hi - lo)
+        w = x
+        v = x
+        d = 0.0_dp
+        e = 0.0_dp
+        fx = f%eval(x)
+        fv = fx
+        fw = fx
+        do iter = 1, limit
+            if (.not. ieee_is_finite(fx)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                               'function: value inside the interval is not a finite number')
+                return
+            end if
+            xm = 0.5_dp * (lo + hi)
+            tol1 = rel * abs(x) + abs_tol / 3.0_dp + tiny(1.0_dp)
+            tol2 = 2.0_dp * tol1
+            if (abs(x - xm) <= tol2 - 0.5_dp * (hi - lo)) return
+            if (abs(e) > tol1) then
+                ! parabola through (v, fv), (w, fw), (x, fx)
+                r = (x - w) * (fx - fv)
+                q = (x - v) * (fx - fw)
+                p = (x - v) * q - (x - w) * r
+                q = 2.0_dp * (q - r)
+                if (q > 0.0_dp) p = -p
+                q = abs(q)
+                r = e
+                e = d
+                if (abs(p) >= abs(0.5_dp * q * r) .or. p <= q * (lo - x) &
+                    .or. p >= q * (hi - x)) then
+                    if (x >= xm) then
+                        e = lo - x
+                    else
+                        e = hi - x
+                    end if
+                    d = cgold * e
+                else
+                    d = p / q
+                    u = x + d
+                    if (u - lo < tol2 .or. hi - u < tol2) d = sign(tol1, xm - x)
+                end if
+            else
+                if (x >= xm) then
+                    e = lo - x
+                else
+                    e = hi - x
+                end if
+                d = cgold * e
+            end if
+            if (abs(d) >= tol1) then
+                u = x + d
+            else
+                u = x + sign(tol1, d)
+            end if
+            fu = f%eval(u)
+            if (.not. ieee_is_finite(fu)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+                               'function: value inside the interval is not a finite number')
+                return
+            end if
+            if (fu <= fx) then
+                if (u >= x) then
+                    lo = x
+                else
+                    hi = x
+                end if
+                v = w
+                fv = fw
+                w = x
+                fw = fx
+                x = u
+                fx = fu
+            else
+                if (u < x) then
+                    lo = u
+                else
+                    hi = u
+                end if
+                if (fu <= fw .or. is_zero(w - x)) then
+                    v = w
+                    fv = fw
+                    w = u
+                    fw = fu
+                else if (fu <= fv .or. is_zero(v - x) .or. is_zero(v - w)) then
+                    v = u
+                    fv = fu
+                end if
+            end if
+        end do
+        call set_error(stat, errmsg, SEISPULSE_NO_CONVERGENCE, &
+                       'minimum: iteration limit reached before the interval closed')
+    end subroutine find_minimum
 
     !> The start both root finders share: f at the ends (unless the caller knows it), the
     !> checks, a zero at an end, the sign change. done: x is final or stat /= 0.

@@ -17,7 +17,7 @@ module seispulse_special
     public :: expm1, log1p, exp_phis, exp_phis_scaled, phi2, phi3, sin_pi, cos_pi, exp_expm1, &
               tau_minus_sinpi, pi, complex_phis
     public :: phi1, phi1_taylor, phi1_from_exp, inv_factorial
-    public :: log1p_over_x, sinh_minus_x, x_minus_asinh
+    public :: log1p_over_x, sinh_minus_x, x_minus_asinh, x_minus_sin
 
     real(dp), parameter :: pi = 3.141592653589793238462643383279502884_dp  !! pi
 
@@ -225,6 +225,27 @@ contains
             y = x - asinh(x)
         end if
     end function x_minus_asinh
+
+    !> x - sin(x) without cancellation near x = 0 (Taylor series for |x| < 1, to x^21/21!;
+    !> the remaining terms are below 1e-17 relative). Odd in x; used by the contact integrals
+    !> of the Winkler footings (doc/winkler.md section 2).
+    elemental function x_minus_sin(x) result(y)
+        real(dp), intent(in) :: x  !! argument (rad)
+        real(dp) :: y
+        real(dp) :: x2
+        integer :: k
+        if (abs(x) < 1.0_dp) then
+            ! x^3/3! (1 - x^2/(4 5) (1 - x^2/(6 7) (1 - ...)))
+            x2 = x * x
+            y = 1.0_dp
+            do k = 10, 2, -1
+                y = 1.0_dp - y * x2 / real((2 * k) * (2 * k + 1), dp)
+            end do
+            y = x * x2 / 6.0_dp * y
+        else
+            y = x - sin(x)
+        end if
+    end function x_minus_sin
 
     !> phi2(x) = (e^x - 1 - x)/x^2, phi2(0) = 1/2 (x <= 700).
     elemental function phi2(x) result(y)
