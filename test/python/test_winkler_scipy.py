@@ -6,17 +6,17 @@ theta(t), v(t), N(t), M(t) on a grid, event times, outcome and a 5 x 5 block of 
 classes, for a cylinder and a block on constant k, a cylinder on varying k, and a record
 in g. Both integrate at rtol 1e-10 (the maps: the library's default, the reference 1e-8).
 
-Tolerances (the measured differences are 5 to 50 times smaller): theta 1e-7 theta_max and
-v 3e-5 v_s (v_s = W/(k A)): the integration errors of two rtol 1e-10 runs, grown by the
-impacts (each shifts the phase by the error of its time); N and M 5e-6 of their largest
-values: on the grid the histories differ by the impact-time differences (<= 1e-8 s) times
-the rate of N after an impact, up to omega_v N_max (omega_v = sqrt(k A/m) = 111 rad/s for
-the cylinder); event times 1e-7 s (located to ~1e-9 s by both; the impacts carry the phase
-error); theta_max: the library's is at most 1e-5 below the reference's (the reference
-locates the extremes, theta' = 0; the library takes the largest of sampled points of its
-steps, which can miss the top by ~6e-6 relative, seen with the record).
-Varying k leaves the contact entirely (lift-off and touch-down impacts): v to 3e-4 v_s and
-N, M to 2e-5."""
+Tolerances (measured differences in brackets): theta 2e-7 theta_max (3e-8 to 5e-8) and
+v 3e-5 v_s (1e-6; v_s = W/(k A)): the integration errors of two rtol 1e-10 runs, grown by
+the impacts (each shifts the phase by the error of its time); N and M 5e-6 of their
+largest values (2e-7, 4e-7): on the grid the histories differ by the impact-time
+differences (<= 1e-8 s) times the rate of N after an impact, up to omega_v N_max (omega_v =
+sqrt(k A/m) = 111 rad/s for the cylinder); event times 1e-7 s (9e-9 s: located to ~1e-9 s
+by both, the impacts carry the phase error); theta_max: the library's is at most 1e-5
+below the reference's (the reference locates the extremes, theta' = 0; the library takes
+the largest of sampled points of its steps, which misses the top by up to 6e-6 relative,
+seen with the record). Varying k leaves the contact entirely (lift-off and touch-down
+impacts): v to 3e-4 v_s (1e-4) and N, M to 2e-5 (3e-6, 5e-6)."""
 import math
 
 import numpy as np
@@ -89,7 +89,7 @@ def assert_histories_agree(run, ref, body, model, v_tol=3e-5, force_tol=5e-6):
     ok = np.isfinite(ref.theta)
     assert np.all(np.isfinite(run.theta[ok]))
     v_s = body.weight / (model.k * body.area)
-    np.testing.assert_allclose(run.theta[ok], ref.theta[ok], rtol=0, atol=1e-7 * ref.theta_max)
+    np.testing.assert_allclose(run.theta[ok], ref.theta[ok], rtol=0, atol=2e-7 * ref.theta_max)
     np.testing.assert_allclose(run.v[ok], ref.v[ok], rtol=0, atol=v_tol * v_s)
     n_max, m_max = np.max(ref.normal[ok]), np.max(np.abs(ref.moment[ok]))
     np.testing.assert_allclose(run.normal[ok], ref.normal[ok], rtol=0, atol=force_tol * n_max)
