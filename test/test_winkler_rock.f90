@@ -22,7 +22,8 @@ module test_winkler_rock
                                       WR_OUT_THETA, WR_OUT_V_RATE, WR_OUT_THETA_RATE, &
                                       WR_OUT_NORMAL, WR_OUT_ACCEL, WR_OUT_ENERGY, WR_OUT_WORK, &
                                       WR_OUT_DISSIPATED, WR_OUT_WIDTH, WR_RUN_SAFE, &
-                                      WR_RUN_OVERTURN_NO_IMPACT, WR_RUN_TIME_LIMIT
+                                      WR_RUN_OVERTURN_NO_IMPACT, WR_RUN_OVERTURN_IMPACTS, &
+                                      WR_RUN_TIME_LIMIT
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
     private
@@ -580,7 +581,9 @@ contains
         type(test_error), allocatable, intent(out) :: error
         type(rocking_body_t) :: body
         type(winkler_model_t) :: model
-        real(dp) :: rigid(1), thr(3), lo, hi, mid
+        real(dp) :: rigid(1), thr(3), lo, hi, mid, no_grid(0), no_hist(WR_NOUT, 0)
+        type(winkler_run_t) :: run
+        type(pulse_t) :: pl
         integer :: stat, i, it, cls(1, 1)
         real(dp), parameter :: ks(3) = [1.0e8_dp, 1.0e9_dp, 1.0e10_dp]
         call cylinder_props(1.0_dp, 3.0_dp, 2500.0_dp * pi * 6.0_dp, g, body, stat)
@@ -605,6 +608,22 @@ contains
             call check(error, stat == 0, 'map cell')
             if (allocated(error)) return
             thr(i) = hi
+            if (i == 2) then
+                ! the map's cells and winkler_rock agree on both sides of the threshold
+                pl%kind = PULSE_SINE_CYCLE
+                pl%duration = 2.0_dp
+                pl%amp = hi * g
+                call winkler_rock(model, no_grid, no_hist, run, stat, pulse=pl, &
+                                  t_max=ieee_value(1.0_dp, ieee_positive_inf))
+                call check(error, stat == 0 .and. run%outcome >= WR_RUN_OVERTURN_NO_IMPACT &
+                           .and. run%outcome <= WR_RUN_OVERTURN_IMPACTS, 'run at hi overturns')
+                if (allocated(error)) return
+                pl%amp = lo * g
+                call winkler_rock(model, no_grid, no_hist, run, stat, pulse=pl, &
+                                  t_max=ieee_value(1.0_dp, ieee_positive_inf))
+                call check(error, stat == 0 .and. run%outcome == WR_RUN_SAFE, 'run at lo safe')
+                if (allocated(error)) return
+            end if
         end do
         call check(error, abs(thr(2) - rigid(1)) < abs(thr(1) - rigid(1)) .and. &
                    abs(thr(3) - rigid(1)) < abs(thr(2) - rigid(1)), 'closer as k grows')

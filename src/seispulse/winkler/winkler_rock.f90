@@ -43,9 +43,9 @@
 !> safe (W.53)-(W.55).
 module seispulse_winkler_rock
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan, ieee_value, &
-                                             ieee_quiet_nan
+                                             ieee_quiet_nan, ieee_positive_inf
     use seispulse_kinds, only: dp
-    use seispulse_checks, only: finite_positive, finite_at_least, in_closed, &
+    use seispulse_checks, only: finite_positive, finite_at_least, in_closed, in_open, outside, &
                                 check_ascending_times
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
                                 set_error
@@ -275,7 +275,7 @@ contains
         stat = SEISPULSE_SUCCESS
         call check_body(body, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (.not. (finite_positive(k) .and. k < 1.0e30_dp)) then
+        if (.not. in_open(k, 0.0_dp, 1.0e30_dp)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'k = '//real_str(k) &
                            //': the Winkler modulus must be a finite number in (0, 1e30) (N/m^3)')
             return
@@ -289,7 +289,7 @@ contains
                                //' (m) of the block base is required for a block')
                 return
             end if
-            if (.not. (finite_positive(alpha) .and. alpha < 1.0e30_dp)) then
+            if (.not. in_open(alpha, 0.0_dp, 1.0e30_dp)) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'alpha = ' &
                                //real_str(alpha)//': must be a finite number in (0, 1e30) (m)')
                 return
@@ -323,7 +323,7 @@ contains
         end if
         model%c = 0.0_dp
         if (present(c)) then
-            if (.not. (finite_at_least(c, 0.0_dp) .and. c < 1.0e30_dp)) then
+            if (.not. in_closed(c, 0.0_dp, 1.0e30_dp)) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'c = '//real_str(c) &
                                //': the dashpot constant must be a finite number in [0, 1e30)' &
                                //' (N s/m^3)')
@@ -331,7 +331,7 @@ contains
             end if
             model%c = c
         else if (present(xi)) then
-            if (.not. (finite_at_least(xi, 0.0_dp) .and. xi <= 100.0_dp)) then
+            if (.not. in_closed(xi, 0.0_dp, 100.0_dp)) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'xi = '//real_str(xi) &
                                //': the damping ratio must be a number in [0, 100]')
                 return
@@ -440,20 +440,16 @@ contains
                            //': must be in (-pi/2, pi/2) (rad)')
             return
         end if
-        rt = rtol_default
-        if (present(rtol)) rt = rtol
-        if (.not. in_closed(rt, rtol_min, rtol_max)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'rtol = '//real_str(rt) &
-                           //': must be in [1e-13, 1e-3]')
-            return
-        end if
+        call check_rtol(rtol, rtol_default, rt, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         if (present(pulse) .and. present(accel)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'pulse, accel: give a ' &
                            //'pulse or a record, not both')
             return
         end if
         if (present(t_max)) then
-            if (ieee_is_nan(t_max) .or. .not. t_max > 0.0_dp) then
+            if (outside(t_max, 0.0_dp, ieee_value(1.0_dp, ieee_positive_inf), .true., &
+                        .false.)) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 't_max = ' &
                                //real_str(t_max)//': must be a number > 0 (s) or +inf')
                 return
@@ -553,26 +549,21 @@ contains
             return
         end if
         do j = 1, size(x)
-            if (.not. (finite_positive(x(j)) .and. x(j) < 1.0e30_dp)) then
+            if (.not. in_open(x(j), 0.0_dp, 1.0e30_dp)) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'x('//int_str(j)//') = ' &
                                //real_str(x(j))//': must be a finite number in (0, 1e30)')
                 return
             end if
         end do
         do i = 1, size(y)
-            if (.not. (finite_at_least(y(i), 0.0_dp) .and. y(i) < 1.0e30_dp)) then
+            if (.not. in_closed(y(i), 0.0_dp, 1.0e30_dp)) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'y('//int_str(i)//') = ' &
                                //real_str(y(i))//': must be a finite number in [0, 1e30)')
                 return
             end if
         end do
-        rt = rtol_map_default
-        if (present(rtol)) rt = rtol
-        if (.not. in_closed(rt, rtol_min, rtol_max)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'rtol = '//real_str(rt) &
-                           //': must be in [1e-13, 1e-3]')
-            return
-        end if
+        call check_rtol(rtol, rtol_map_default, rt, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         if (present(template)) pl = template
         pl%kind = kind
         t0f = 1.5_dp
@@ -775,6 +766,22 @@ contains
                            //real_str(model%alpha)//': the half-length must be > 0 (m)')
         end if
     end subroutine check_model
+
+    !> The step tolerance: rtol if given (in [1e-13, 1e-3]), else the default.
+    subroutine check_rtol(rtol, default, rt, stat, errmsg)
+        real(dp), intent(in), optional :: rtol
+        real(dp), intent(in) :: default
+        real(dp), intent(out) :: rt
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        stat = SEISPULSE_SUCCESS
+        rt = default
+        if (present(rtol)) rt = rtol
+        if (.not. in_closed(rt, rtol_min, rtol_max)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'rtol = '//real_str(rt) &
+                           //': must be in [1e-13, 1e-3]')
+        end if
+    end subroutine check_rtol
 
     !> The system's parameters from a (valid) model.
     pure subroutine load_model(sys, model)
@@ -1310,6 +1317,7 @@ contains
         type(contact_t) :: ct
         integer :: src, why, i
         logical :: found
+        real(dp) :: a_end
 
         stat = SEISPULSE_SUCCESS
         call empty_run(run)
@@ -1341,6 +1349,7 @@ contains
         st%run_m = 0.0_dp
         st%t_out_cross = ieee_value(1.0_dp, ieee_quiet_nan)
         src = st%sys%gr%src
+        a_end = 0.0_dp
         st%sys%gr%src = GR_NONE
         st%sys%stat = SEISPULSE_SUCCESS
         call contact(st%sys, st%y, ct, .false.)
@@ -1366,6 +1375,9 @@ contains
                 call next_piece(it, accel, 'winkler_rock', piece, found, stat, errmsg)
                 if (stat /= SEISPULSE_SUCCESS) return
                 if (.not. found) exit pieces
+                ! a_g jumps (or the ground is switched off before the piece): the right-hand
+                ! side changes other than through (t, y), so Radau starts afresh
+                if (st%t < piece%ta .or. abs(piece%aa - a_end) > 0.0_dp) call st%ode%restart()
                 st%sys%gr%ta = piece%ta
                 st%sys%gr%tb = piece%tb
                 st%sys%gr%aa = piece%aa
@@ -1375,13 +1387,16 @@ contains
                     st%sys%gr%src = GR_NONE
                     call advance(st, hist, run, min(piece%ta, st%t_lim), why)
                     st%sys%gr%src = src
+                    call st%ode%restart()
                     if (handle(why)) exit pieces
                 end if
+                a_end = piece%ab
                 call advance(st, hist, run, min(piece%tb, st%t_lim), why)
                 if (handle(why)) exit pieces
             end do pieces
         end if
         if (.not. st%done) then
+            if (abs(a_end) > 0.0_dp) call st%ode%restart()
             st%sys%gr%src = GR_NONE
             st%free = .true.
             call free_checks(st, run, why)
@@ -1438,7 +1453,9 @@ contains
         st%active(EV_Q_HI) = st%sys%c > 0.0_dp
         st%active(EV_Q_LO) = st%sys%c > 0.0_dp
         st%active(EV_OVERTURN) = ieee_is_finite(st%sys%theta_ov)
+        st%side = 0
         do i = 1, NEV
+            if (.not. st%active(i)) cycle
             g = st%sys%event(i, st%t, st%y)
             st%side(i) = side_of(g)
         end do
