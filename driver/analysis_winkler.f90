@@ -1109,8 +1109,8 @@ contains
     end function last_time
 
     !> The end of a run (s): t_max if given, else t_end if given, else the end of the
-    !> excitation t_exc plus 20 periods 2 pi/p of the rigid body (a run that cannot be
-    !> proved safe, as with varying k, ends there as a time limit).
+    !> excitation t_exc plus 20 periods 2 pi/p of the rigid body (a run the energy
+    !> criterion cannot decide, as with varying k, ends there as a time limit).
     real(dp) function run_end(s, t_exc)
         type(setup_t), intent(in) :: s
         real(dp), intent(in) :: t_exc                     !! end of the excitation (s)

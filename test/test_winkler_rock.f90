@@ -3,7 +3,7 @@
 !> touch-down at sqrt(2 d/g)), the lift-off and touch-down of a rebound from the closed form,
 !> the quasi-static check against the thesis's closed-form pushover (written here), the
 !> energy balance over a history with impacts (and the input work by quadrature here), the
-!> energy proof of safety, the trend to the rigid-ground threshold as k grows, the exact
+!> energy criterion of safety, the trend to the rigid-ground threshold as k grows, the exact
 !> Jacobian against central differences at every contact structure, and bad input. Every
 !> expected value is computed here independently.
 module test_winkler_rock
@@ -49,8 +49,8 @@ contains
                               //' of seispulse_winkler', test_quasi_static_more), &
                  new_unittest('energy balance over a history with impacts', test_energy), &
                  new_unittest('record in g: the sampled pulse gives the pulse run', test_record), &
-                 new_unittest('energy proof: below the barrier safe, above it overturns', &
-                              test_proof), &
+                 new_unittest('energy criterion: below the barrier safe, above it overturns', &
+                              test_energy_criterion), &
                  new_unittest('exact Jacobian vs central differences, every contact structure', &
                               test_jacobian), &
                  new_unittest('k -> infinity: one-sine threshold tends to the rigid one', &
@@ -454,9 +454,9 @@ contains
     end subroutine test_record
 
     !> Free rocking from rest with theta' such that the kinetic energy is 0.9 B (B the
-    !> barrier U_min(theta_ov) - U_min(0)): proved safe at once (t_safe = 0), and a run on
+    !> barrier U_min(theta_ov) - U_min(0)): decided safe at once (t_safe = 0), and a run on
     !> to 10 s never reaches theta_ov. With 1.5 B (and c = 0) it overturns without impact.
-    subroutine test_proof(error)
+    subroutine test_energy_criterion(error)
         type(test_error), allocatable, intent(out) :: error
         type(winkler_model_t) :: model
         type(winkler_run_t) :: run
@@ -476,7 +476,7 @@ contains
         call check(error, stat == 0, 'run')
         if (allocated(error)) return
         call check(error, run%outcome == WR_RUN_SAFE .and. .not. abs(run%t_safe) > 0.0_dp, &
-                   'proved safe at once')
+                   'decided safe at once')
         if (allocated(error)) return
         call check(error, maxval(abs(hist(WR_OUT_THETA, :))) < model%theta_overturn, &
                    'stays inside theta_ov')
@@ -491,7 +491,7 @@ contains
         if (allocated(error)) return
         call check(error, abs(hist(WR_OUT_THETA, n)), 0.5_dp * pi, rtol=0.0_dp, &
                    message='on its side')
-    end subroutine test_proof
+    end subroutine test_energy_criterion
 
     !> The Jacobian against central differences (steps scaled to each state component,
     !> Richardson-extrapolated): full contact, partial contact (delta root), a pressure root

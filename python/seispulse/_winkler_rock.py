@@ -71,13 +71,16 @@ contact, and t_touch_down, the first contact after it (s; NaN if none); t_overtu
 last outward crossing of the static overturning angle before overturning (s; NaN if the
 body stays); normal_max, the largest normal force (N); energy_error, the largest
 |E + D - E0 - W_in| relative to the energy scale of the run (-); t_end (s); t_safe, when
-the energy bound proved the body safe (s; NaN if not); n_steps of the integrator.
+the energy criterion (doc/winkler.md (W.55)) decided the body is safe (s; NaN if not);
+n_steps of the integrator.
 
 Histories at the output times t (s): v, settlement of the base centre (m, + down); theta
-(rad); v_rate (m/s); theta_rate (rad/s); width, the contact width (m); normal, the normal
-force N (N); moment, the foundation moment about the base centre (N m); accel, the ground
-acceleration (m/s^2); energy, kinetic + potential + spring (J); work, the input work (J);
-dissipated, by the dashpots (J)."""
+(rad; > 0 lifts the s > 0 side of the base); v_rate (m/s); theta_rate (rad/s); width, the
+contact width (m); normal, the normal force N (N); moment, the foundation moment about the
+base centre (N m, in the sense of theta: restoring, so of the opposite sign to theta);
+accel, the ground acceleration (m/s^2; a_g > 0 drives theta > 0); energy, kinetic +
+potential + spring (J); work, the input work (J); dissipated, contact work minus spring
+energy: the dashpots and the tension cut-off (J)."""
 
 WinklerMap = namedtuple("WinklerMap", ["classes", "rigid", "difference"])
 WinklerMap.__doc__ = """An overturning map on Winkler soil (:func:`overturning_map`):
@@ -148,8 +151,8 @@ def simulate(model, pulse=None, *, accel=None, dt=None, g=None, t=None, t_max=No
     settlement W/(k A)), theta0 (rad), v_rate0 (m/s), theta_rate0 (rad/s). t: output times
     (s, ascending; default 1001 points on [0, t_max]); t_max: end of the run (s; default
     the last output time; inf: until the outcome is known, with t given); the run also
-    ends at overturning or once the body is proved safe after the excitation (later
-    outputs hold the final state or NaN). rtol: the integrator's relative tolerance
+    ends at overturning (later outputs: theta = +-pi/2, the rest NaN), or after its last
+    output once the energy criterion has decided the body is safe. rtol: the integrator's relative tolerance
     (default 1e-9). Returns :class:`WinklerRun`."""
     args = _model_args(model)
     if pulse is not None and accel is not None:

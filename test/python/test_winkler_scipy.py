@@ -179,7 +179,7 @@ def test_varying_modulus_is_the_references():
 
 def test_varying_k_with_lift_off():
     """Varying k ([AD11]: k of the geometric contact width), one sine 0.4 g, T_p = 1 s,
-    4 s: the body leaves the soil entirely (t_lift_off), two impacts; no energy proof
+    4 s: the body leaves the soil entirely (t_lift_off), two impacts; no energy criterion
     with varying k, so both end at the time limit."""
     body, model = thesis_cylinder("varying")
     shaking, accel, breaks = sine(0.4, 1.0)

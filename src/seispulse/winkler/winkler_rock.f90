@@ -83,16 +83,22 @@ module seispulse_winkler_rock
     integer, parameter :: DAMP_VERTICAL = 2  !! c = 2 xi sqrt(k m/A)
 
     integer, parameter :: WR_OUT_V = 1            !! settlement of the base centre (m, + down)
-    integer, parameter :: WR_OUT_THETA = 2        !! tilt (rad)
+    integer, parameter :: WR_OUT_THETA = 2        !! tilt (rad); > 0 lifts the s > 0 side of
+                                                  !! the base (doc/winkler.md section 9.1)
     integer, parameter :: WR_OUT_V_RATE = 3       !! v' (m/s)
     integer, parameter :: WR_OUT_THETA_RATE = 4   !! theta' (rad/s)
     integer, parameter :: WR_OUT_WIDTH = 5        !! geometric contact width (m)
     integer, parameter :: WR_OUT_NORMAL = 6       !! soil reaction N (N)
-    integer, parameter :: WR_OUT_MOMENT = 7       !! foundation moment about the base centre (N m)
-    integer, parameter :: WR_OUT_ACCEL = 8        !! ground acceleration a_g (m/s^2)
+    integer, parameter :: WR_OUT_MOMENT = 7       !! foundation moment about the base centre
+                                                  !! (N m), in the sense of theta: restoring,
+                                                  !! so of the opposite sign to theta
+    integer, parameter :: WR_OUT_ACCEL = 8        !! ground acceleration a_g (m/s^2); a_g > 0
+                                                  !! drives theta > 0
     integer, parameter :: WR_OUT_ENERGY = 9       !! kinetic + gravity + spring energy (J)
     integer, parameter :: WR_OUT_WORK = 10        !! input work of the ground motion (J)
-    integer, parameter :: WR_OUT_DISSIPATED = 11  !! energy absorbed by the foundation (J)
+    integer, parameter :: WR_OUT_DISSIPATED = 11  !! energy absorbed by the foundation (J):
+                                                  !! contact work - spring energy (dashpots
+                                                  !! and the tension cut-off)
     integer, parameter :: WR_NOUT = 11            !! number of output columns
 
     integer, parameter :: WR_RUN_SAFE = 0                 !! standing: the energy criterion, or the map's window
