@@ -1085,10 +1085,13 @@ contains
         end if
         lines(4) = code_legend('outcome', onames)//'; theta_c, theta_overturn: rigid and ' &
                    //'static Winkler overturning angles'
-        lines(5) = 'v: settlement of the base centre (+ down), width: contact width, normal: ' &
-                   //'N, moment: foundation moment about the base centre, accel: ground ' &
-                   //'a_g; energy: kinetic + potential + spring, work: input, dissipated: ' &
-                   //'dashpots; energy_error: largest relative energy balance error'
+        lines(5) = 'v: settlement of the base centre (+ down), theta > 0 lifts the s > 0 ' &
+                   //'side, width: contact width, normal: N, moment: foundation moment about ' &
+                   //'the base centre in the sense of theta (restoring: opposite sign to ' &
+                   //'theta and to the pushover''s m_found), accel: ground a_g (> 0 drives ' &
+                   //'theta > 0); energy: kinetic + potential + spring, work: input, ' &
+                   //'dissipated: contact work - spring energy; energy_error: largest ' &
+                   //'relative energy balance error'
     end subroutine history_comments
 
     !> The end of the history grid: t_end, else past the end of the motion (at least the

@@ -116,7 +116,7 @@ contains
             call check(error, hist(WR_OUT_V_RATE, i), ud, atol=2.0e-8_dp * model%v_static * wn, &
                        rtol=0.0_dp, message="v'(t)")
             if (allocated(error)) return
-            call check(error, .not. abs(hist(WR_OUT_THETA, i)) > 0.0_dp, 'theta stays 0')
+            call check(error, abs(hist(WR_OUT_THETA, i)) <= 0.0_dp, 'theta stays 0')
             if (allocated(error)) return
             call check(error, hist(WR_OUT_NORMAL, i), kk * hist(WR_OUT_V, i) &
                        + cc * hist(WR_OUT_V_RATE, i), rtol=1.0e-12_dp, message='N = k A v + c A v''')
@@ -151,8 +151,8 @@ contains
         call check(error, hist(WR_OUT_V, 1), -d + 0.5_dp * g * tg(1)**2, rtol=1.0e-13_dp, &
                    message='free fall')
         if (allocated(error)) return
-        call check(error, .not. (abs(hist(WR_OUT_NORMAL, 1)) > 0.0_dp .or. &
-                                 abs(hist(WR_OUT_WIDTH, 1)) > 0.0_dp), 'no force in flight')
+        call check(error, abs(hist(WR_OUT_NORMAL, 1)) <= 0.0_dp .and. &
+                          abs(hist(WR_OUT_WIDTH, 1)) <= 0.0_dp, 'no force in flight')
     end subroutine test_drop
 
     !> From the static settlement with v' = -V upwards: the linear spring-dashpot until the
@@ -432,7 +432,7 @@ contains
         pl%amp = 0.25_dp * g
         dt = 0.0005_dp
         do i = 1, ns
-            acc(i) = 0.25_dp * sin(2.0_dp * pi * dt * (i - 1))
+            acc(i) = 0.25_dp * g * sin(2.0_dp * pi * dt * (i - 1))   ! m/s^2
         end do
         acc(ns) = 0.0_dp
         do i = 1, n
@@ -441,7 +441,8 @@ contains
         call winkler_rock(model, tg, h1, run1, stat, pulse=pl)
         call check(error, stat == 0, 'pulse run')
         if (allocated(error)) return
-        call winkler_rock(model, tg, h2, run2, stat, accel=acc(1:2001), dt=dt, g_rec=g)
+        ! samples in m/s^2: a record in units of g_rec = 1 m/s^2 (the body's g is 9.81)
+        call winkler_rock(model, tg, h2, run2, stat, accel=acc(1:2001), dt=dt, g_rec=1.0_dp)
         call check(error, stat == 0, 'record run')
         if (allocated(error)) return
         call check(error, run1%theta_max > 1.0e-3_dp, 'rocks')
@@ -475,7 +476,7 @@ contains
         call winkler_rock(model, tg, hist, run, stat, theta_rate0=w0)
         call check(error, stat == 0, 'run')
         if (allocated(error)) return
-        call check(error, run%outcome == WR_RUN_SAFE .and. .not. abs(run%t_safe) > 0.0_dp, &
+        call check(error, run%outcome == WR_RUN_SAFE .and. abs(run%t_safe) <= 0.0_dp, &
                    'decided safe at once')
         if (allocated(error)) return
         call check(error, maxval(abs(hist(WR_OUT_THETA, :))) < model%theta_overturn, &
@@ -696,7 +697,7 @@ contains
         if (allocated(error)) return
         call winkler_rock(model, [0.0_dp, 1.0_dp], hist, run, stat, msg, pulse=pl, &
                           accel=[0.0_dp, 0.1_dp], dt=0.01_dp)
-        call check(error, stat /= 0, 'pulse and record')
+        call check(error, stat /= 0 .and. index(msg, 'not both') > 0, 'pulse and record')
         if (allocated(error)) return
         call winkler_rock(model, [0.0_dp, 1.0_dp], hist, run, stat, msg, accel=[0.0_dp, 0.1_dp])
         call check(error, stat /= 0 .and. index(msg, 'dt') > 0, 'record without dt')

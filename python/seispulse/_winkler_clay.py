@@ -132,8 +132,9 @@ Scalars: n_ult (N), sf, chi = 1/sf (-); hk_r = 8 G r^3/(3 (1 - nu)) (N m/rad); k
 k/k_el(chi) and kappa = k_el k/k_el = K_R0/HK_R (-); k_r0, the initial stiffness (N m/rad);
 theta_up = asin(W r/(2 K_R0))/2 (rad); gauss_a, gauss_b, gauss_c, the Gaussian's peak,
 centre and spread at chi (-); max_moment (N m) at theta_at_max_moment (rad) and
-max_force_over_weight (-) at theta_at_max (rad), the peaks on the grid; theta_overturn, the
-first zero of the imposed moment (rad; NaN if the grid shows none, 0 when K_R0 <= W h).
+max_force_over_weight (-) at theta_at_max (rad), the peaks refined between the points
+of an internal scan of [0, pi/4] (at or above the largest value on any grid); theta_overturn, the
+first zero of the imposed moment up to pi/4 (rad; NaN if none, 0 when K_R0 <= W h).
 Flags: no_uplift (W r/(2 K_R0) > 1), weak_zone (SF < 1.25 and the grid reaches theta/theta_up
 in [0.05, 0.2], where [AD11]'s collapse of the curves deviates), kr_discontinuous (the
 given k/k_el law does not meet 1 at chi = 0.1; kr_jump = kr_c1 - 0.1 kr_c2 - 1)."""

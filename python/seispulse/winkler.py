@@ -315,12 +315,7 @@ def equivalent_cylinder(block, alpha, k, theta_c=None, k_method="constant"):
 
 # ------------------------------------------------------------------ plots
 
-def _pyplot(what):
-    try:
-        import matplotlib.pyplot as plt
-    except ImportError as exc:  # optional
-        raise ImportError(f"{what} needs matplotlib (pip install matplotlib)") from exc
-    return plt
+_pyplot = cylinder._pyplot   # matplotlib on demand, one home
 
 
 def _rigid_curve(push, n=201):

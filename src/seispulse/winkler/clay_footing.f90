@@ -23,7 +23,7 @@ module seispulse_clay_footing
                                 SEISPULSE_NO_SOLUTION, set_error
     use seispulse_format, only: real_str, int_str
     use seispulse_special, only: pi
-    use seispulse_roots, only: scalar_function, find_root
+    use seispulse_roots, only: scalar_function, find_root, find_minimum
     use seispulse_winkler_contact, only: FOOTING_CIRCLE
     use seispulse_winkler, only: halfspace_rocking_stiffness, winkler_master_curve, &
                                  check_scale
@@ -108,6 +108,14 @@ module seispulse_clay_footing
     contains
         procedure :: eval => imposed_moment_eval
     end type imposed_moment_t
+
+    !> -M_imp (N m) or -F/W (-) of a pushover at theta (rad): the peak search's function.
+    type, extends(scalar_function) :: peak_fn_t
+        type(imposed_moment_t) :: f
+        logical :: force = .false.
+    contains
+        procedure :: eval => peak_fn_eval
+    end type peak_fn_t
 
 contains
 
@@ -738,54 +746,33 @@ contains
         end subroutine scan_peak
     end subroutine branch_scalars
 
-    !> Golden-section search for the largest M_imp (force = .false., N m) or F/W (.true.)
-    !> in [lo, hi] (rad, within [0, pi/4]); theta_best and v_best hold the best grid point
-    !> on entry and are replaced by a better point found.
+    !> The largest M_imp (force = .false., N m) or F/W (.true.) in [lo, hi] (rad, within
+    !> [0, pi/4]) by the bounded minimiser of seispulse_roots; theta_best and v_best hold
+    !> the best grid point on entry and are replaced by a better point found.
     subroutine refine_peak(f, force, lo, hi, theta_best, v_best)
         type(imposed_moment_t), intent(in) :: f
         logical, intent(in) :: force
         real(dp), intent(in) :: lo, hi
         real(dp), intent(inout) :: theta_best, v_best
-        real(dp), parameter :: gr = 0.618033988749894848204586834365638118_dp
-        real(dp) :: a, b, x1, x2, f1, f2
-        integer :: it
-        a = lo
-        b = hi
-        x1 = b - gr * (b - a)
-        x2 = a + gr * (b - a)
-        f1 = peak_value(x1)
-        f2 = peak_value(x2)
-        do it = 1, 200
-            if (b - a <= 4.0_dp * epsilon(1.0_dp) * b) exit
-            if (f1 >= f2) then
-                b = x2
-                x2 = x1
-                f2 = f1
-                x1 = b - gr * (b - a)
-                f1 = peak_value(x1)
-            else
-                a = x1
-                x1 = x2
-                f1 = f2
-                x2 = a + gr * (b - a)
-                f2 = peak_value(x2)
-            end if
-        end do
-        if (f1 > v_best) then
-            v_best = f1
-            theta_best = x1
+        type(peak_fn_t) :: fn
+        real(dp) :: x, fx
+        integer :: stat
+        fn%f = f
+        fn%force = force
+        call find_minimum(fn, lo, hi, x, fx, stat)
+        if (stat == SEISPULSE_SUCCESS .and. -fx > v_best) then
+            v_best = -fx
+            theta_best = x
         end if
-        if (f2 > v_best) then
-            v_best = f2
-            theta_best = x2
-        end if
-    contains
-        real(dp) function peak_value(theta)
-            real(dp), intent(in) :: theta
-            peak_value = imposed_moment_value(f, theta)
-            if (force) peak_value = peak_value / (f%h * cos(theta) * f%weight)
-        end function peak_value
     end subroutine refine_peak
+
+    function peak_fn_eval(self, x) result(y)
+        class(peak_fn_t), intent(inout) :: self
+        real(dp), intent(in) :: x
+        real(dp) :: y
+        y = -imposed_moment_value(self%f, x)
+        if (self%force) y = y / (self%f%h * cos(x) * self%f%weight)
+    end function peak_fn_eval
 
     !> The root function of the overturning angle (W.72).
     function imposed_moment_eval(self, x) result(y)

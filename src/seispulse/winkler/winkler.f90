@@ -13,7 +13,7 @@
 module seispulse_winkler
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
     use seispulse_kinds, only: dp
-    use seispulse_checks, only: in_open, in_closed, finite_at_least
+    use seispulse_checks, only: in_open, in_closed, finite_at_least, outside
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
                                 SEISPULSE_NO_SOLUTION, set_error
     use seispulse_format, only: real_str, int_str
@@ -241,7 +241,7 @@ contains
         call make_branch(footing, r, alpha, 1.0_dp, 1.0_dp, k, K_VARYING, br, stat, errmsg, &
                          reading)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (outside_open_closed(b, 0.0_dp, 2.0_dp * r)) then
+        if (outside(b, 0.0_dp, 2.0_dp * r, .true., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'b = '//real_str(b) &
                            //': the contact width must be a number in (0, 2 r] = (0, ' &
                            //real_str(2.0_dp * r)//'] (m)')
@@ -1146,12 +1146,6 @@ contains
         if (length < width) rect_axis = AXIS_SHORT
     end function rect_axis
 
-    !> x is NaN or outside (lo, hi].
-    elemental logical function outside_open_closed(x, lo, hi)
-        real(dp), intent(in) :: x, lo, hi
-        outside_open_closed = .not. in_open(x, lo, hi)
-        if (outside_open_closed) outside_open_closed = .not. in_closed(x, hi, hi)
-    end function outside_open_closed
 
     !> x in [1e-30, 1e30] (scale_min, scale_max), else an error "name = x: <what> must be a
     !> finite number > 0 (<unit>), in [1e-30, 1e30]".

@@ -58,7 +58,7 @@ module seispulse_winkler_rock
     use seispulse_pulses, only: pulse_t, pulse_validate, pulse_accel, exp_consts_t, exp_consts, &
                                 pulse_kind_name, pulse_end_time, PULSE_EXPONENTIAL, PULSE_HALF_SINE, &
                                 PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE, PULSE_RECTANGULAR, &
-                                PULSE_TRIANGULAR, PULSE_RICKER
+                                PULSE_TRIANGULAR, PULSE_RICKER, ricker_x_cut
     use seispulse_pieces, only: piece_t, piece_iter_t, pulse_pieces_check, record_step_check, &
                                 record_in_si, pulse_pieces_init, record_pieces_init, next_piece
     use seispulse_cylinder, only: rocking_body_t, BODY_BLOCK, MAP_AXES_DIMENSIONLESS, &
@@ -94,11 +94,17 @@ module seispulse_winkler_rock
                                                   !! so of the opposite sign to theta
     integer, parameter :: WR_OUT_ACCEL = 8        !! ground acceleration a_g (m/s^2); a_g > 0
                                                   !! drives theta > 0
-    integer, parameter :: WR_OUT_ENERGY = 9       !! kinetic + gravity + spring energy (J)
+    integer, parameter :: WR_OUT_ENERGY = 9       !! kinetic + gravity + spring energy (J);
+                                                  !! gravity m g (h cos theta - v), zero at
+                                                  !! the ground surface: W (h - v_static/2)
+                                                  !! at rest
     integer, parameter :: WR_OUT_WORK = 10        !! input work of the ground motion (J)
     integer, parameter :: WR_OUT_DISSIPATED = 11  !! energy absorbed by the foundation (J):
-                                                  !! contact work - spring energy (dashpots
-                                                  !! and the tension cut-off)
+                                                  !! contact work - spring energy: the
+                                                  !! dashpots and the tension cut-off, plus
+                                                  !! the exchange of the projected-area
+                                                  !! pressure (W.53) (can be briefly < 0) and,
+                                                  !! with K_VARYING, the work of k(b)
     integer, parameter :: WR_NOUT = 11            !! number of output columns
 
     integer, parameter :: WR_RUN_SAFE = 0                 !! standing: the energy criterion, or the map's window
@@ -136,9 +142,13 @@ module seispulse_winkler_rock
         real(dp) :: t_touch_down = 0.0_dp           !! first contact after a complete loss
                                                     !! of contact (s), NaN none
         real(dp) :: t_overturn = 0.0_dp             !! last outward crossing of theta_overturn
-                                                    !! before overturning, or pi/2 (s); NaN
+                                                    !! before overturning, or the time
+                                                    !! |theta| reached pi/2 when it was never
+                                                    !! crossed (s); NaN
         real(dp) :: normal_max = 0.0_dp             !! largest N (N)
-        real(dp) :: energy_error = 0.0_dp           !! largest |E + D - E_0 - W_in|/scale
+        real(dp) :: energy_error = 0.0_dp           !! largest |E + D - E_0 - W_in|/scale,
+                                                    !! scale: the largest |E - E_rest|, |W_in|,
+                                                    !! |D| of the run, E_rest = W (h - v_s/2)
         real(dp) :: t_end = 0.0_dp                  !! end of the run (s)
         integer :: n_steps = 0                      !! steps tried
         real(dp) :: t_safe = 0.0_dp                 !! time the energy criterion held (s), NaN
@@ -1730,7 +1740,7 @@ contains
         type(pulse_t), intent(in) :: p
         real(dp) :: t_end
         if (p%kind == PULSE_RICKER) then
-            t_end = p%t0 + 10.0_dp / (pi * p%freq)
+            t_end = p%t0 + ricker_x_cut / (pi * p%freq)
         else
             t_end = pulse_end_time(p)
         end if
