@@ -11,6 +11,8 @@ module test_flexible_exact
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT
     use seispulse_flexible_exact, only: modal_response_exact, coupled_exact, zero_function, &
                                         first_zero
+    use seispulse_pulses, only: exp_pulse
+    use seispulse_sliding_closed, only: half_cycle_t, half_cycle
     use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, NEWMARK_EXACT, &
                                  NEWMARK_SLAMMER
     use testing, only: test_error, unit_test, new_unittest, check, same_bits
@@ -41,6 +43,10 @@ contains
                  new_unittest('coupled = independent RK4: short soft mass, many slides', &
                               test_coupled_many_slides), &
                  new_unittest('coupled -> rigid exact as Vs grows', test_coupled_rigid_limit), &
+                 new_unittest('decoupled (rigid exact on HEA) -> rigid exact as Vs grows', &
+                              test_decoupled_rigid_limit), &
+                 new_unittest('stiff mass under a sampled exponential pulse: closed form', &
+                              test_pulse_closed_form), &
                  new_unittest('first_zero: close double zero, touch, none', test_first_zero), &
                  new_unittest('rigid ky table, one row = constant ky (bitwise)', &
                               test_table_one_row), &
@@ -693,6 +699,74 @@ contains
         if (allocated(error)) return
         call check(error, sh, sr, atol=1.0e-10_dp * send, message='s history')
     end subroutine test_coupled_table_reference
+
+    !> The decoupled analysis (the rigid exact rule on the HEA of the exact modal
+    !> response, doc/flexible.md (F.36)) tends to the rigid block on the record itself.
+    subroutine test_decoupled_rigid_limit(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 1600
+        real(dp), parameter :: dt = 0.005_dp
+        real(dp) :: a(n), u(n), hea(n), d_prev, d
+        type(newmark_block_t) :: blk
+        type(newmark_result_t) :: res, rd
+        real(dp), parameter :: vss(3) = [1.0e3_dp, 1.0e4_dp, 1.0e5_dp]
+        integer :: stat, j
+        a = synthetic(n, dt, 4)
+        blk%ky = 0.1_dp
+        call newmark_rigid(a, dt, blk, NEWMARK_EXACT, g0, res, stat)
+        d_prev = huge(1.0_dp)
+        do j = 1, 3
+            call modal_response_exact(a, dt, g0, pi * vss(j) / 20.0_dp, 0.1_dp, u, hea, stat)
+            call newmark_rigid(hea, dt, blk, NEWMARK_EXACT, g0, rd, stat)
+            call check(error, stat, SEISPULSE_SUCCESS, 'status')
+            if (allocated(error)) return
+            d = abs(rd%final_disp - res%final_disp)
+            call check(error, d < d_prev, 'difference falls with Vs')
+            if (allocated(error)) return
+            d_prev = d
+        end do
+        call check(error, rd%final_disp, res%final_disp, rtol=1.0e-5_dp, message='Vs = 1e5')
+    end subroutine test_decoupled_rigid_limit
+
+    !> One lobe of the exponential pulse (A = 1, t_d = 1 s, g = 1) sampled at t_d/256 on a
+    !> mass of omega = 2e4 rad/s: coupled and decoupled slips equal the rigid block's
+    !> (1e-6) and the closed form of the half cycle (seispulse_sliding_closed) to the
+    !> O(dt^2) of the sampling.
+    subroutine test_pulse_closed_form(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: ns = 256
+        real(dp), parameter :: betas(2) = [-pi, 0.4_dp], eta = 0.3_dp, om = 2.0e4_dp
+        real(dp) :: tau(ns + 1), a(ns + 1), v(ns + 1), d(ns + 1), u(ns + 1), hea(ns + 1)
+        real(dp) :: smax, sfin, tend
+        type(half_cycle_t) :: hc
+        type(newmark_block_t) :: blk
+        type(newmark_result_t) :: res, rd
+        integer :: i, j, stat
+        character(len=200) :: msg
+        tau = [(real(i - 1, dp) / ns, i = 1, ns + 1)]
+        blk%ky = eta
+        do j = 1, 2
+            call half_cycle(eta, betas(j), 1.0_dp, hc, stat)
+            call exp_pulse(tau, [betas(j)], .false., a, v, d, stat)
+            call newmark_rigid(a, 1.0_dp / ns, blk, NEWMARK_EXACT, 1.0_dp, res, stat)
+            call coupled_exact(a, 1.0_dp / ns, 1.0_dp, om, 0.1_dp, eta, smax, sfin, tend, stat, &
+                               msg)
+            call check(error, stat, SEISPULSE_SUCCESS, 'coupled status')
+            if (allocated(error)) return
+            call modal_response_exact(a, 1.0_dp / ns, 1.0_dp, om, 0.1_dp, u, hea, stat)
+            call newmark_rigid(hea, 1.0_dp / ns, blk, NEWMARK_EXACT, 1.0_dp, rd, stat)
+            call check(error, sfin, res%final_disp, rtol=1.0e-6_dp, message='coupled = rigid')
+            if (allocated(error)) return
+            call check(error, rd%final_disp, res%final_disp, rtol=1.0e-6_dp, &
+                       message='decoupled = rigid')
+            if (allocated(error)) return
+            call check(error, sfin, hc%um, rtol=3.0e-4_dp, message='coupled = closed form')
+            if (allocated(error)) return
+            call check(error, rd%final_disp, hc%um, rtol=3.0e-4_dp, &
+                       message='decoupled = closed form')
+            if (allocated(error)) return
+        end do
+    end subroutine test_pulse_closed_form
 
     subroutine dip_taylor(self, x, f)
         class(dip_t), intent(inout) :: self

@@ -950,7 +950,11 @@ contains
         if (excluded) return
         dl = first_positive_root(fl(0), fl(1), 0.5_dp * (fl(2) - m3 * el / 3.0_dp))
         dr = first_positive_root(fr(0), -fr(1), 0.5_dp * (fr(2) - m3 * el / 3.0_dp))
-        excluded = dl + dr > el
+        if (dl >= el .or. dr >= el) then
+            excluded = .true.
+        else
+            excluded = dl + dr > el
+        end if
     end function excluded
 
     !> f' < 0 on (xa, xa + el) from the Taylor upper bounds of f' (F.47).
