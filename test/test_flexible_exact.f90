@@ -1,5 +1,5 @@
 !> Flexible sliding masses, exact (seispulse_flexible_exact): the modal recurrence against
-!> closed forms for step and ramp input (positive, negative damping); the coupled model
+!> closed forms for step and ramp input (positive, negative, critical, over-damping); the coupled model
 !> without sliding against the modal response; the coupled model against an independent
 !> integration written here (RK4 on sub-steps with events located by bisection on the
 !> re-integrated sub-step) on a synthetic record and on a short soft mass with many
@@ -263,7 +263,29 @@ contains
         real(dp), parameter :: dt = 0.005_dp, omega = 2.0_dp * pi / 0.37_dp
         real(dp) :: a(n), u(n), hea(n), ue(n), t, wd, kk, c1, c2, w2, cc, up0
         real(dp), parameter :: xis(3) = [0.05_dp, -0.1_dp, 0.7_dp]
+        real(dp) :: l1, l2
         integer :: i, j, stat
+        ! over-damped and critical step responses: u = K/w2 (1 + (l2 e^(l1 t) - l1 e^(l2 t))/(l1 - l2))
+        do j = 1, 2
+            a = 0.2_dp
+            kk = -4.0_dp / pi * g0 * 0.2_dp
+            if (j == 1) then
+                call modal_response_exact(a, dt, g0, omega, 1.5_dp, u, hea, stat)
+                l1 = -omega * (1.5_dp - sqrt(1.25_dp))
+                l2 = -omega * (1.5_dp + sqrt(1.25_dp))
+                ue = [(kk / omega**2 * (1.0_dp + (l2 * exp(l1 * (i - 1) * dt) - l1 &
+                       * exp(l2 * (i - 1) * dt)) / (l1 - l2)), i = 1, n)]
+            else
+                call modal_response_exact(a, dt, g0, omega, 1.0_dp, u, hea, stat)
+                ue = [(kk / omega**2 * (1.0_dp - exp(-omega * (i - 1) * dt) * (1.0_dp + omega &
+                       * (i - 1) * dt)), i = 1, n)]
+            end if
+            call check(error, stat, SEISPULSE_SUCCESS, 'over-damped: status')
+            if (allocated(error)) return
+            call check(error, u, ue, atol=1.0e-13_dp * maxval(abs(ue)), &
+                       message='over-damped / critical step response')
+            if (allocated(error)) return
+        end do
         do j = 1, 3
             wd = omega * sqrt(1.0_dp - xis(j)**2)
             w2 = omega**2
@@ -323,18 +345,19 @@ contains
         call check(error, uc, u, atol=1.0e-12_dp * maxval(abs(u)), message='u = modal u')
     end subroutine test_coupled_no_slide
 
-    !> A synthetic record, H = 20 m, Vs = 300 m/s, damping 0.2 and -0.005 plus an over-damped
-    !> sliding oscillator (xi = 0.6): exact = RK4 with 400 sub-steps per sample.
+    !> A synthetic record, H = 20 m, Vs = 300 m/s, damping 0.2 and -0.005, an over-damped
+    !> sliding oscillator (xi = 0.6) and an over-damped mass (xi = 1.2): exact = RK4 with
+    !> 400 sub-steps per sample.
     subroutine test_coupled_reference(error)
         type(test_error), allocatable, intent(out) :: error
         integer, parameter :: n = 1600
         real(dp), parameter :: dt = 0.005_dp
         real(dp) :: a(n), sh(n), uh(n), sr(n), ur(n), smax, sfin, tend, send, omega
-        real(dp), parameter :: xis(3) = [0.2_dp, -0.005_dp, 0.6_dp]
+        real(dp), parameter :: xis(4) = [0.2_dp, -0.005_dp, 0.6_dp, 1.2_dp]
         integer :: j
         a = synthetic(n, dt, 2)
         omega = pi * 300.0_dp / (2.0_dp * 20.0_dp)
-        do j = 1, 3
+        do j = 1, 4
             call run_coupled(error, a, dt, omega, xis(j), 0.12_dp, smax, sfin, tend, 'record', &
                              s_hist=sh, u_hist=uh)
             if (allocated(error)) return
@@ -818,8 +841,8 @@ contains
         character(len=200) :: msg
         a = 0.1_dp
         msg = ''
-        call modal_response_exact(a, 0.01_dp, g0, 10.0_dp, 1.0_dp, u, hea, stat, msg)
-        call check(error, stat, SEISPULSE_INVALID_INPUT, 'xi = 1')
+        call modal_response_exact(a, 0.01_dp, g0, 10.0_dp, -1.0_dp, u, hea, stat, msg)
+        call check(error, stat, SEISPULSE_INVALID_INPUT, 'xi = -1')
         if (allocated(error)) return
         call check(error, index(msg, 'xi') > 0, 'message names xi: '//trim(msg))
         if (allocated(error)) return
