@@ -414,8 +414,9 @@ contains
     end subroutine slammer_slide
 
     !> SLAMMER's coupled analysis (Coupled, doc/flexible.md (F.17)-(F.22), (F.28)) on its
-    !> input acc = -record (cm/s^2; SLAMMER flips the record of normal polarity here). Sticking: the modal equation under acc; sliding: under
-    !> the yield load -ky g with the reduced mass d1 = 1 - L^2/(M Mtot); the base force per
+    !> input acc = -record (cm/s^2; SLAMMER flips the record of normal polarity here).
+    !> Sticking: the modal equation under acc; sliding: under the yield load -ky g with the
+    !> reduced mass d1 = 1 - L^2/(M Mtot); the base force per
     !> unit mass -acc - (L/Mtot) u'' starts a slide when it exceeds ky g; s'' = -acc - ky g
     !> - (L/Mtot) u'' integrated by the trapezoidal rule; when s' <= 0 the stop sub-step.
     subroutine slammer_coupled(accel, gcm, dt, omega, xi, tdisp, tmug, s_max, s_end, t_end, &
