@@ -42,6 +42,8 @@ contains
                               test_coupled_reference), &
                  new_unittest('coupled = independent RK4: short soft mass, many slides', &
                               test_coupled_many_slides), &
+                 new_unittest('coupled: linear upsampling of the record changes nothing', &
+                              test_coupled_upsampling), &
                  new_unittest('coupled -> rigid exact as Vs grows', test_coupled_rigid_limit), &
                  new_unittest('decoupled (rigid exact on HEA) -> rigid exact as Vs grows', &
                               test_decoupled_rigid_limit), &
@@ -790,6 +792,35 @@ contains
             if (allocated(error)) return
         end do
     end subroutine test_pulse_closed_form
+
+    !> The exact coupled solution depends only on the piecewise-linear record: sampling it
+    !> 8 times finer (linear interpolation) gives the same slip (dt = 0.02 s, H = 5 m,
+    !> Vs = 600 m/s: the sliding oscillator's period, 15 ms, is shorter than a step).
+    subroutine test_coupled_upsampling(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 600, m = 8
+        real(dp), parameter :: dt = 0.02_dp
+        real(dp) :: a(n), b((n - 1) * m + 1), sh(n), sb((n - 1) * m + 1), smax, s1, s2, tend, om
+        integer :: i, j
+        a = synthetic(n, dt, 7)
+        do i = 1, n - 1
+            do j = 0, m - 1
+                b((i - 1) * m + j + 1) = a(i) + (a(i + 1) - a(i)) * (real(j, dp) / m)
+            end do
+        end do
+        b(size(b)) = a(n)
+        om = pi * 600.0_dp / 10.0_dp
+        call run_coupled(error, a, dt, om, 0.25_dp, 0.1_dp, smax, s1, tend, 'samples', s_hist=sh)
+        if (allocated(error)) return
+        call run_coupled(error, b, dt / m, om, 0.25_dp, 0.1_dp, smax, s2, tend, 'upsampled', &
+                         s_hist=sb)
+        if (allocated(error)) return
+        call check(error, s1 > 0.01_dp, 'slides')
+        if (allocated(error)) return
+        call check(error, s2, s1, rtol=1.0e-12_dp, message='final s')
+        if (allocated(error)) return
+        call check(error, sb(1::m), sh, atol=1.0e-12_dp * s1, message='s at the samples')
+    end subroutine test_coupled_upsampling
 
     subroutine dip_taylor(self, x, f)
         class(dip_t), intent(inout) :: self
