@@ -87,6 +87,20 @@ contains
         end do
     end function synthetic
 
+    !> The piecewise-linear record at t (s), 0 after the last sample.
+    pure real(dp) function record_at(accel, dt, t) result(a)
+        real(dp), intent(in) :: accel(:), dt, t
+        integer :: i
+        real(dp) :: r
+        i = int(t / dt) + 1
+        if (i >= size(accel)) then
+            a = 0.0_dp
+            return
+        end if
+        r = min(max(t / dt - real(i - 1, dp), 0.0_dp), 1.0_dp)
+        a = accel(i) + (accel(i + 1) - accel(i)) * r
+    end function record_at
+
     !> Independent integration of the coupled model: classical RK4 on m sub-steps per
     !> sample step, events (HEA = g ky, s' = 0) located by bisection on the sub-step
     !> re-integrated from its start; the run-out after the record with a = 0.
@@ -165,16 +179,7 @@ contains
 
         real(dp) function acc_at(tt)
             real(dp), intent(in) :: tt
-            integer :: ii
-            real(dp) :: r
-            ii = int(tt / dt) + 1
-            if (ii >= n) then
-                acc_at = 0.0_dp
-                return
-            end if
-            r = tt / dt - real(ii - 1, dp)
-            r = min(max(r, 0.0_dp), 1.0_dp)
-            acc_at = accel(ii) + (accel(ii + 1) - accel(ii)) * r
+            acc_at = record_at(accel, dt, tt)
         end function acc_at
 
         !> ky (g) at s (m): the constant, or the table interpolated.
@@ -574,15 +579,7 @@ contains
         end function kyu
         real(dp) function acc_at(tt)
             real(dp), intent(in) :: tt
-            integer :: ii
-            real(dp) :: r
-            ii = int(tt / dt) + 1
-            if (ii >= n) then
-                acc_at = 0.0_dp
-                return
-            end if
-            r = min(max(tt / dt - real(ii - 1, dp), 0.0_dp), 1.0_dp)
-            acc_at = accel(ii) + (accel(ii + 1) - accel(ii)) * r
+            acc_at = record_at(accel, dt, tt)
         end function acc_at
         function rhs(yy, tt) result(f)
             real(dp), intent(in) :: yy(2), tt

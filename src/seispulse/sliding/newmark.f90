@@ -466,15 +466,7 @@ contains
         res%u_max = g * res%u_max
         res%u_min = g * res%u_min
         res%max_disp = max(res%u_max, -res%u_min)
-        deallocate(res%slides)
-        allocate(res%slides(nsl))
-        do i = 1, nsl
-            res%slides(i) = buf(i)
-            res%slides(i)%u_start = g * buf(i)%u_start
-            res%slides(i)%u_stop = g * buf(i)%u_stop
-            res%slides(i)%w_peak = g * buf(i)%w_peak
-            res%max_vel = max(res%max_vel, res%slides(i)%w_peak)
-        end do
+        call slides_to_si(buf, nsl, g, res)
 
     contains
 
@@ -665,15 +657,7 @@ contains
         res%u_max = g * u
         res%u_min = 0.0_dp
         res%max_disp = res%u_max
-        deallocate(res%slides)
-        allocate(res%slides(k))
-        do i = 1, k
-            res%slides(i) = buf(i)
-            res%slides(i)%u_start = g * buf(i)%u_start
-            res%slides(i)%u_stop = g * buf(i)%u_stop
-            res%slides(i)%w_peak = g * buf(i)%w_peak
-            res%max_vel = max(res%max_vel, res%slides(i)%w_peak)
-        end do
+        call slides_to_si(buf, k, g, res)
 
     contains
 
@@ -1017,6 +1001,25 @@ contains
     ! ------------------------------------------------------------------------------
     ! Small helpers
     ! ------------------------------------------------------------------------------
+
+    !> res%slides = buf(1:nsl) with u_start, u_stop, w_peak times g (g s^2 -> m, g s -> m/s)
+    !> and max_vel their largest w_peak.
+    pure subroutine slides_to_si(buf, nsl, g, res)
+        type(slide_t), intent(in) :: buf(:)
+        integer, intent(in) :: nsl
+        real(dp), intent(in) :: g
+        type(newmark_result_t), intent(inout) :: res
+        integer :: i
+        deallocate(res%slides)
+        allocate(res%slides(nsl))
+        do i = 1, nsl
+            res%slides(i) = buf(i)
+            res%slides(i)%u_start = g * buf(i)%u_start
+            res%slides(i)%u_stop = g * buf(i)%u_stop
+            res%slides(i)%w_peak = g * buf(i)%w_peak
+            res%max_vel = max(res%max_vel, res%slides(i)%w_peak)
+        end do
+    end subroutine slides_to_si
 
     !> Append a slide to buf(1:nsl), doubling buf when it is full.
     pure subroutine append_slide(buf, nsl, slide)
