@@ -1,4 +1,4 @@
-!> Flexible sliding masses integrated exactly (doc/flexible.md sections 5-7, Eqs. F.30-F.59):
+!> Flexible sliding masses integrated exactly (doc/flexible.md sections 5-7, Eqs. F.30-F.50):
 !> the one-mode shear beam's response to the piecewise-linear record by the exact
 !> recurrence, and the coupled stick-slip model of Rathje & Bray [RB99] (after Chopra &
 !> Zhang [CZ91]) with its phases integrated in closed form and its onsets and stops
@@ -8,7 +8,7 @@
 !> polarity as given: positive a drives downslope sliding). u is the modal coordinate of
 !> the decoupled response (omega = pi Vs/(2H), L/M = 4/pi, L/Mtot = 2/pi, d1 = 1 - 8/pi^2):
 !>     stick:  u'' + 2 xi omega u' + omega^2 u = -(4/pi) g a(t)                   (F.30)
-!>     HEA  =  g a + (2/pi) u''   (the base force per unit mass)                  (F.31)
+!>     g HEA = g a + (2/pi) u''   (the base force per unit mass)                 (F.31)
 !>     slide:  d1 u'' + 2 xi omega u' + omega^2 u = -(4/pi) g ky,                 (F.32)
 !>             s'' = g a - g ky + (2/pi) u''  (= (HEA_stick form - g ky)/d1)      (F.33)
 !> Sliding starts when HEA exceeds g ky and stops when s' returns to 0 (one way).
@@ -99,7 +99,7 @@ module seispulse_flexible_exact
         procedure :: taylor => phase_taylor
     end type phase_t
 
-    !> The slide with ky(s) linear on a table segment (F.50): y = (u, u', s, s'),
+    !> The slide with ky(s) linear on a table segment (F.49): y = (u, u', s, s'),
     !> time from the start of the piece; ky continued linearly past the segment's end.
     type, extends(ode_system) :: table_slide_sys_t
         real(dp) :: c = 0.0_dp, w2 = 0.0_dp     !! stick damping (1/s) and stiffness (1/s^2)
@@ -130,13 +130,14 @@ contains
 
     !> Exact one-mode response to the piecewise-linear record (the record as given):
     !> u'' + 2 xi omega u' + omega^2 u = -(4/pi) g a(t) from rest (F.30), at the samples,
-    !> by the exact recurrence of seispulse_sdof_sim (F.34); HEA = a + (2/pi) u''/g (F.31).
+    !> by the exact recurrence of seispulse_sdof_sim (F.34) (|xi| < 1; over-damped: the
+    !> propagator of (F.38)); HEA = a + (2/pi) u''/g (F.31).
     subroutine modal_response_exact(accel, dt, g, omega, xi, u, hea, stat, errmsg, udot, uddot)
         real(dp), intent(in) :: accel(:)                      !! record (g) at (i-1) dt
         real(dp), intent(in) :: dt                            !! time step (s) > 0
         real(dp), intent(in) :: g                             !! gravity (m/s^2) > 0
         real(dp), intent(in) :: omega                         !! circular frequency (rad/s) > 0
-        real(dp), intent(in) :: xi                            !! damping ratio in (-1, 1)
+        real(dp), intent(in) :: xi                            !! damping ratio > -1
         real(dp), intent(out) :: u(:)                         !! modal displacement (m)
         real(dp), intent(out) :: hea(:)                       !! HEA (g)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
@@ -144,8 +145,10 @@ contains
         real(dp), intent(out), optional :: udot(:)            !! u' (m/s)
         real(dp), intent(out), optional :: uddot(:)           !! u'' (m/s^2)
         type(sdof_step_t) :: st
+        type(prop_t) :: pr
         real(dp) :: z, v, zn, acc, w2, c, gl
         integer :: i, n
+        logical :: over
         call check_modal(accel, dt, g, omega, xi, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         n = size(accel)
@@ -168,11 +171,17 @@ contains
                 return
             end if
         end if
-        ! sdof_step solves z'' + 2 xi omega z' + omega^2 z = -a_g: a_g = (4/pi) g a
-        st = sdof_step(2.0_dp * pi / omega, xi, dt)
+        ! sdof_step solves z'' + 2 xi omega z' + omega^2 z = -a_g: a_g = (4/pi) g a;
+        ! over-damped (xi >= 1): the propagator of (F.38)
+        over = xi >= 1.0_dp
         gl = lm * g
         w2 = omega**2
         c = 2.0_dp * xi * omega
+        if (over) then
+            call propagator(c, w2, dt, pr)
+        else
+            st = sdof_step(2.0_dp * pi / omega, xi, dt)
+        end if
         z = 0.0_dp
         v = 0.0_dp
         do i = 1, n
@@ -186,9 +195,19 @@ contains
     contains
         subroutine step(j)
             integer, intent(in) :: j
-            real(dp) :: ap, ac
+            real(dp) :: ap, ac, x1, x2, l1
             ap = accel(j - 1)
             ac = accel(j)
+            if (over) then
+                ! x(h) = x0 + P1 x0' + P2 (0, l'), x0' = (v, -gl a_n - c v - w2 z) (F.38)
+                x1 = v
+                x2 = -gl * ap - c * v - w2 * z
+                l1 = -gl * (ac - ap) / dt
+                zn = z + pr%p1(1, 1) * x1 + pr%p1(1, 2) * x2 + pr%p2(1, 2) * l1
+                v = v + pr%p1(2, 1) * x1 + pr%p1(2, 2) * x2 + pr%p2(2, 2) * l1
+                z = zn
+                return
+            end if
             zn = st%e11 * z + st%e12 * v + gl * (st%b1 * ap + st%c1 * ac)
             v = st%e21 * z + st%e22 * v + gl * (st%b2 * ap + st%c2 * ac)
             z = zn
@@ -205,9 +224,9 @@ contains
         if (.not. finite_positive(omega)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'omega = '//real_str(omega) &
                            //': must be a finite number > 0 (rad/s)')
-        else if (.not. (abs(xi) < 1.0_dp)) then
+        else if (.not. (xi > -1.0_dp .and. ieee_is_finite(xi))) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'xi = '//real_str(xi) &
-                           //': the damping ratio must be in (-1, 1)')
+                           //': the damping ratio must be finite and > -1')
         end if
     end subroutine check_modal
 
@@ -227,7 +246,7 @@ contains
         real(dp), intent(in) :: dt                            !! time step (s) > 0
         real(dp), intent(in) :: g                             !! gravity (m/s^2) > 0
         real(dp), intent(in) :: omega                         !! circular frequency (rad/s) > 0
-        real(dp), intent(in) :: xi                            !! total damping ratio in (-1, 1)
+        real(dp), intent(in) :: xi                            !! total damping ratio > -1
         real(dp), intent(in) :: ky                            !! yield acceleration (g) > 0
         real(dp), intent(out) :: max_disp                     !! largest s (m)
         real(dp), intent(out) :: final_disp                   !! s at rest at the end (m)
@@ -546,7 +565,7 @@ contains
             end do
         end subroutine set_segment
 
-        !> Slide with the table over hp (a from aa to ae) by DOP853 (F.50)-(F.52): on each
+        !> Slide with the table over hp (a from aa to ae) by DOP853 (F.49)-(F.49): on each
         !> accepted step the stop is the first zero of the dense output's polynomial of s'
         !> (first_zero, a proven bracket on that polynomial), a segment end the crossing of
         !> its polynomial of s (increasing until the stop: one crossing, Brent); the
@@ -707,7 +726,7 @@ contains
         v = ph%v0 + dv
         d2 = p%p2(1, 1) * x2(1) + p%p2(1, 2) * x2(2)
         if (ph%slide) then
-            ! (F.33) integrated: s' and s from the record and the modal increments
+            ! (F.41): s' and s from the record and the modal increments
             sd = ph%sd0 + tau * (ph%ga0 - ph%gky + 0.5_dp * ph%gas * tau) + lmt * dv
             s = ph%s0 + tau * (ph%sd0 + tau * (0.5_dp * (ph%ga0 - ph%gky) &
                 + ph%gas * tau / 6.0_dp)) + lmt * d2
@@ -752,7 +771,7 @@ contains
         call phase_f(self, x, u, v, sd, f)
     end subroutine phase_taylor
 
-    !> The slide with a linear ky(s) (F.50): d1 u'' + c u' + w2 u = -(4/pi) g ky(s),
+    !> The slide with a linear ky(s) (F.49): d1 u'' + c u' + w2 u = -(4/pi) g ky(s),
     !> s'' = g a - g ky(s) + (2/pi) u''.
     subroutine table_slide_rhs(self, t, y, dydt)
         class(table_slide_sys_t), intent(inout) :: self
@@ -950,7 +969,11 @@ contains
         if (excluded) return
         dl = first_positive_root(fl(0), fl(1), 0.5_dp * (fl(2) - m3 * el / 3.0_dp))
         dr = first_positive_root(fr(0), -fr(1), 0.5_dp * (fr(2) - m3 * el / 3.0_dp))
-        excluded = dl + dr > el
+        if (dl >= el .or. dr >= el) then
+            excluded = .true.
+        else
+            excluded = dl + dr > el
+        end if
     end function excluded
 
     !> f' < 0 on (xa, xa + el) from the Taylor upper bounds of f' (F.47).
