@@ -47,6 +47,7 @@ module seispulse_newmark
     public :: newmark_block_t, newmark_result_t
     public :: newmark_rigid, newmark_incline, newmark_block_validate
     public :: newmark_mode_name, newmark_method_name, newmark_mode_code, newmark_method_code
+    public :: name_of, code_of
     public :: NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM, NEWMARK_EXACT, NEWMARK_SLAMMER
 
     integer, parameter :: NEWMARK_DOWN = 1     !! one-way: downslope (positive) sliding only
