@@ -16,9 +16,8 @@ module seispulse_flexible_model
     use seispulse_checks, only: finite_positive, outside
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
                                 SEISPULSE_NO_CONVERGENCE, set_error
-    use seispulse_format, only: real_str, int_str
+    use seispulse_format, only: real_str, int_str, name_of, code_of
     use seispulse_special, only: log1p, pi
-    use seispulse_newmark, only: name_of, code_of
     implicit none
     private
 

@@ -33,7 +33,7 @@ module seispulse_newmark
     use seispulse_checks, only: positive
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
                                 set_error
-    use seispulse_format, only: real_str
+    use seispulse_format, only: real_str, name_of, code_of
     use seispulse_sliding_sim, only: slide_t
     use seispulse_pieces, only: record_step_check
     use seispulse_sliding_closed, only: inclined_resistances
@@ -47,7 +47,6 @@ module seispulse_newmark
     public :: newmark_block_t, newmark_result_t
     public :: newmark_rigid, newmark_incline, newmark_block_validate
     public :: newmark_mode_name, newmark_method_name, newmark_mode_code, newmark_method_code
-    public :: name_of, code_of
     public :: NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM, NEWMARK_EXACT, NEWMARK_SLAMMER
 
     integer, parameter :: NEWMARK_DOWN = 1     !! one-way: downslope (positive) sliding only
@@ -288,29 +287,6 @@ contains
         character(len=*), intent(in) :: name  !! 'exact' or 'slammer'
         newmark_method_code = code_of(name, method_names)
     end function newmark_method_code
-
-    !> table(code), '?' outside the table.
-    pure function name_of(code, table) result(name)
-        integer, intent(in) :: code
-        character(len=*), intent(in) :: table(:)
-        character(len=:), allocatable :: name
-        if (code >= 1 .and. code <= size(table)) then
-            name = trim(table(code))
-        else
-            name = '?'
-        end if
-    end function name_of
-
-    !> Index of name in table, 0 if absent.
-    pure integer function code_of(name, table)
-        character(len=*), intent(in) :: name
-        character(len=*), intent(in) :: table(:)
-        integer :: k
-        code_of = 0
-        do k = 1, size(table)
-            if (trim(table(k)) == trim(name)) code_of = k
-        end do
-    end function code_of
 
     ! ------------------------------------------------------------------------------
     ! Exact piecewise-linear integration
