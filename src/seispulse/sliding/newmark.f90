@@ -33,7 +33,7 @@ module seispulse_newmark
     use seispulse_checks, only: positive
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
                                 set_error
-    use seispulse_format, only: real_str
+    use seispulse_format, only: real_str, name_of, code_of
     use seispulse_sliding_sim, only: slide_t
     use seispulse_pieces, only: record_step_check
     use seispulse_sliding_closed, only: inclined_resistances
@@ -287,29 +287,6 @@ contains
         character(len=*), intent(in) :: name  !! 'exact' or 'slammer'
         newmark_method_code = code_of(name, method_names)
     end function newmark_method_code
-
-    !> table(code), '?' outside the table.
-    pure function name_of(code, table) result(name)
-        integer, intent(in) :: code
-        character(len=*), intent(in) :: table(:)
-        character(len=:), allocatable :: name
-        if (code >= 1 .and. code <= size(table)) then
-            name = trim(table(code))
-        else
-            name = '?'
-        end if
-    end function name_of
-
-    !> Index of name in table, 0 if absent.
-    pure integer function code_of(name, table)
-        character(len=*), intent(in) :: name
-        character(len=*), intent(in) :: table(:)
-        integer :: k
-        code_of = 0
-        do k = 1, size(table)
-            if (trim(table(k)) == trim(name)) code_of = k
-        end do
-    end function code_of
 
     ! ------------------------------------------------------------------------------
     ! Exact piecewise-linear integration
