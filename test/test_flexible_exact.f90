@@ -13,6 +13,8 @@ module test_flexible_exact
                                         first_zero
     use seispulse_pulses, only: exp_pulse
     use seispulse_sliding_closed, only: half_cycle_t, half_cycle
+    use seispulse_flexible_model, only: flexible_mass_t, flexible_result_t, FLEX_EXACT
+    use seispulse_flexible, only: flexible_decoupled, flexible_coupled
     use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, NEWMARK_EXACT, &
                                  NEWMARK_SLAMMER
     use testing, only: test_error, unit_test, new_unittest, check, same_bits
@@ -63,6 +65,10 @@ contains
                               test_coupled_table_flat), &
                  new_unittest('coupled ky table = independent RK4 with events', &
                               test_coupled_table_reference), &
+                 new_unittest('flexible_decoupled(exact) = rigid exact on the HEA (bitwise)', &
+                              test_dispatch_decoupled), &
+                 new_unittest('flexible_coupled(exact) = coupled_exact (bitwise)', &
+                              test_dispatch_coupled), &
                  new_unittest('bad input is a status naming the parameter', test_bad_input)]
     end subroutine collect_flexible_exact
 
@@ -818,6 +824,97 @@ contains
         if (allocated(error)) return
         call check(error, sb(1::m), sh, atol=1.0e-12_dp * s1, message='s at the samples')
     end subroutine test_coupled_upsampling
+
+    !> The dispatch of seispulse_flexible (linear soil): the decoupled slip is the rigid
+    !> exact rule on the HEA of modal_response_exact for the final omega, xi (F.36), bit for
+    !> bit, with a constant yield, two ways and a yield table.
+    subroutine test_dispatch_decoupled(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 1600
+        real(dp), parameter :: dt = 0.005_dp
+        real(dp) :: a(n), u(n), hea(n), s1(n), s2(n), om
+        type(flexible_mass_t) :: m
+        type(flexible_result_t) :: r
+        type(newmark_block_t) :: blk
+        type(newmark_result_t) :: rr
+        integer :: stat, k
+        character(len=200) :: msg
+        a = synthetic(n, dt, 8)
+        m%height = 20.0_dp
+        m%vs = 300.0_dp
+        m%vs_base = 900.0_dp
+        m%damping = 0.05_dp
+        do k = 1, 3
+            msg = ''
+            select case (k)
+            case (1)
+                call flexible_decoupled(a, dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, s_hist=s1)
+                blk = newmark_block_t()
+                blk%ky = 0.1_dp
+            case (2)
+                call flexible_decoupled(a, dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, &
+                                        mode=2, s_hist=s1)
+                blk = newmark_block_t(mode=2, ky=0.1_dp)
+            case default
+                call flexible_decoupled(a, dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, &
+                                        ky_disp=[0.0_dp, 0.02_dp], ky_values=[0.12_dp, 0.07_dp], &
+                                        s_hist=s1)
+                blk = newmark_block_t()
+                allocate(blk%ky_disp, source=[0.0_dp, 0.02_dp])
+                allocate(blk%ky_values, source=[0.12_dp, 0.07_dp])
+            end select
+            call check(error, stat, SEISPULSE_SUCCESS, 'decoupled: '//trim(msg))
+            if (allocated(error)) return
+            om = pi * r%vs_final / (2.0_dp * m%height)
+            call modal_response_exact(a, dt, g0, om, r%damping_final, u, hea, stat)
+            call newmark_rigid(hea, dt, blk, NEWMARK_EXACT, g0, rr, stat, u_hist=s2)
+            call check(error, r%max_disp > 0.01_dp .and. identical(s1, s2) &
+                       .and. same_bits(r%final_disp, rr%final_disp), 'bitwise')
+            if (allocated(error)) return
+        end do
+    end subroutine test_dispatch_decoupled
+
+    !> The dispatch of seispulse_flexible: flexible_coupled(FLEX_EXACT) is coupled_exact for
+    !> the final omega, xi, bit for bit (constant yield and table).
+    subroutine test_dispatch_coupled(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 1600
+        real(dp), parameter :: dt = 0.005_dp
+        real(dp) :: a(n), s1(n), s2(n), om, smax, sfin, tend
+        type(flexible_mass_t) :: m
+        type(flexible_result_t) :: r
+        integer :: stat, k
+        character(len=200) :: msg
+        a = synthetic(n, dt, 8)
+        m%height = 20.0_dp
+        m%vs = 300.0_dp
+        m%vs_base = 900.0_dp
+        m%damping = 0.05_dp
+        do k = 1, 2
+            msg = ''
+            if (k == 1) then
+                call flexible_coupled(a, dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, s_hist=s1)
+            else
+                call flexible_coupled(a, dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, &
+                                      ky_disp=[0.0_dp, 0.02_dp], ky_values=[0.12_dp, 0.07_dp], &
+                                      s_hist=s1)
+            end if
+            call check(error, stat, SEISPULSE_SUCCESS, 'coupled: '//trim(msg))
+            if (allocated(error)) return
+            om = pi * r%vs_final / (2.0_dp * m%height)
+            if (k == 1) then
+                call coupled_exact(a, dt, g0, om, r%damping_final, 0.1_dp, smax, sfin, tend, stat, &
+                                   s_hist=s2)
+            else
+                call coupled_exact(a, dt, g0, om, r%damping_final, 0.1_dp, smax, sfin, tend, stat, &
+                                   ky_disp=[0.0_dp, 0.02_dp], ky_values=[0.12_dp, 0.07_dp], &
+                                   s_hist=s2)
+            end if
+            call check(error, r%max_disp > 0.01_dp .and. identical(s1, s2) &
+                       .and. same_bits(r%final_disp, sfin), 'bitwise')
+            if (allocated(error)) return
+        end do
+    end subroutine test_dispatch_coupled
 
     subroutine dip_taylor(self, x, f)
         class(dip_t), intent(inout) :: self

@@ -237,7 +237,8 @@ contains
     !> Coupled stick-slip of the flexible mass (F.30)-(F.33), exact: downslope sliding s
     !> (m, >= 0) under the record as given. After the last sample the record is 0 and a
     !> mass still sliding runs out to rest (final_disp includes it, t_end says when).
-    !> Histories at the samples: s (m), s' (m/s), u (m, the sign of (F.30)) and HEA (g).
+    !> Histories at the samples: s (m), s' (m/s), u (m, the sign of (F.30)) and
+    !> hea = a + (2/pi) u''/g (g) with u'' of the phase the mass is in ((F.30) or (F.32)).
     !> ky = +inf: never slides. With ky_disp, ky_values (m, g): ky(s) interpolated
     !> linearly, constant beyond the last row; then ky is ignored.
     subroutine coupled_exact(accel, dt, g, omega, xi, ky, max_disp, final_disp, t_end, stat, &
