@@ -1,11 +1,13 @@
 !> Flexible sliding masses, exact (seispulse_flexible_exact): the modal recurrence against
-!> closed forms for step and ramp input (positive, negative, critical, over-damping); the coupled model
-!> without sliding against the modal response; the coupled model against an independent
-!> integration written here (RK4 on sub-steps with events located by bisection on the
-!> re-integrated sub-step) on a synthetic record and on a short soft mass with many
-!> short slides; its rigid limit (Vs -> infinity) against newmark_rigid(exact) and, under
-!> a sampled exponential pulse, against the closed form of seispulse_sliding_closed;
-!> the first-zero search on a function with a double dip; bad input.
+!> closed forms for step and ramp input (positive, negative, critical, over-damping); the
+!> coupled model without sliding against the modal response; the coupled model against
+!> an independent integration written here (RK4 on sub-steps, events by bisection on the
+!> re-integrated sub-step) on a synthetic record and on a short soft mass with many short
+!> slides, and unchanged by linear upsampling; its rigid limit (Vs -> infinity) against
+!> newmark_rigid(exact) and, under a sampled exponential pulse, the closed form of
+!> seispulse_sliding_closed; yield tables (rigid exact and slammer, coupled) against
+!> independent integrations and the constant yield; the dispatch of seispulse_flexible;
+!> the first-zero search on a function with close zeros; bad input.
 module test_flexible_exact
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT
@@ -278,7 +280,8 @@ contains
         real(dp), parameter :: xis(3) = [0.05_dp, -0.1_dp, 0.7_dp]
         real(dp) :: l1, l2
         integer :: i, j, stat
-        ! over-damped and critical step responses: u = K/w2 (1 + (l2 e^(l1 t) - l1 e^(l2 t))/(l1 - l2))
+        ! over-damped and critical step responses:
+        ! u = K/w2 (1 + (l2 e^(l1 t) - l1 e^(l2 t))/(l1 - l2))
         do j = 1, 2
             a = 0.2_dp
             kk = -4.0_dp / pi * g0 * 0.2_dp
@@ -502,7 +505,8 @@ contains
         type(test_error), allocatable, intent(out) :: error
         integer, parameter :: n = 1600
         real(dp), parameter :: dt = 0.005_dp
-        real(dp), parameter :: kd(3) = [0.0_dp, 0.02_dp, 0.1_dp], kv(3) = [0.15_dp, 0.06_dp, 0.11_dp]
+        real(dp), parameter :: kd(3) = [0.0_dp, 0.02_dp, 0.1_dp]
+        real(dp), parameter :: kv(3) = [0.15_dp, 0.06_dp, 0.11_dp]
         real(dp) :: a(n), u1(n), ur(n), uend
         type(newmark_block_t) :: bt
         type(newmark_result_t) :: r1
@@ -612,7 +616,8 @@ contains
         type(test_error), allocatable, intent(out) :: error
         integer, parameter :: n = 1600
         real(dp), parameter :: dt = 0.005_dp
-        real(dp), parameter :: kd(3) = [0.0_dp, 0.02_dp, 0.1_dp], kv(3) = [0.15_dp, 0.06_dp, 0.11_dp]
+        real(dp), parameter :: kd(3) = [0.0_dp, 0.02_dp, 0.1_dp]
+        real(dp), parameter :: kv(3) = [0.15_dp, 0.06_dp, 0.11_dp]
         real(dp) :: a(n), u1(n), ue(n), q, r, s, u, v, y, tt, nn, aa, gcm, prop, dcm(3)
         type(newmark_block_t) :: bt
         type(newmark_result_t) :: r1
@@ -713,7 +718,8 @@ contains
         type(test_error), allocatable, intent(out) :: error
         integer, parameter :: n = 1600
         real(dp), parameter :: dt = 0.005_dp
-        real(dp), parameter :: kd(3) = [0.0_dp, 0.01_dp, 0.05_dp], kv(3) = [0.15_dp, 0.07_dp, 0.1_dp]
+        real(dp), parameter :: kd(3) = [0.0_dp, 0.01_dp, 0.05_dp]
+        real(dp), parameter :: kv(3) = [0.15_dp, 0.07_dp, 0.1_dp]
         real(dp) :: a(n), sh(n), uh(n), sr(n), ur(n), smax, sfin, tend, send, om
         a = synthetic(n, dt, 2)
         om = pi * 300.0_dp / 40.0_dp

@@ -35,7 +35,7 @@ module seispulse_flexible_exact
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
                                 set_error
     use seispulse_format, only: real_str
-    use seispulse_checks, only: finite_positive, positive
+    use seispulse_checks, only: finite_positive, positive, check_history_sizes
     use seispulse_special, only: pi, complex_phis
     use seispulse_divided_differences, only: cexp_dd1, cexp_dd2, cexp_dd3
     use seispulse_sdof_sim, only: sdof_step_t, sdof_step
@@ -152,25 +152,9 @@ contains
         call check_modal(accel, dt, g, omega, xi, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         n = size(accel)
-        if (size(u) /= n .or. size(hea) /= n) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'u, hea: must have the ' &
-                           //'size of accel')
-            return
-        end if
-        if (present(udot)) then
-            if (size(udot) /= n) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'udot: must have the ' &
-                               //'size of accel')
-                return
-            end if
-        end if
-        if (present(uddot)) then
-            if (size(uddot) /= n) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'uddot: must have the ' &
-                               //'size of accel')
-                return
-            end if
-        end if
+        call check_history_sizes(n, [character(len=5) :: 'u', 'hea', 'udot', 'uddot'], stat, &
+                                 errmsg, u, hea, udot, uddot)
+        if (stat /= SEISPULSE_SUCCESS) return
         ! sdof_step solves z'' + 2 xi omega z' + omega^2 z = -a_g: a_g = (4/pi) g a;
         ! over-damped (xi >= 1): the propagator of (F.38)
         over = xi >= 1.0_dp
@@ -305,10 +289,9 @@ contains
             end if
         end if
         n = size(accel)
-        if (.not. hist_ok(s_hist, 's_hist')) return
-        if (.not. hist_ok(sdot_hist, 'sdot_hist')) return
-        if (.not. hist_ok(u_modal, 'u_modal')) return
-        if (.not. hist_ok(hea, 'hea')) return
+        call check_history_sizes(n, [character(len=9) :: 's_hist', 'sdot_hist', 'u_modal', 'hea'], &
+                                 stat, errmsg, s_hist, sdot_hist, u_modal, hea)
+        if (stat /= SEISPULSE_SUCCESS) return
 
         cst = 2.0_dp * xi * omega
         w2t = omega**2
@@ -438,16 +421,6 @@ contains
         max_disp = s
 
     contains
-
-        logical function hist_ok(hist, name)
-            real(dp), intent(in), optional :: hist(:)
-            character(len=*), intent(in) :: name
-            hist_ok = .true.
-            if (.not. present(hist)) return
-            hist_ok = size(hist) == n
-            if (.not. hist_ok) call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, name &
-                                              //': must have the size of accel')
-        end function hist_ok
 
         !> The phase (0 stick, 1 slide) from the current state at x with g a = as .. a1.
         subroutine set_phase(mode, xx, aa, ae)
