@@ -846,10 +846,7 @@ contains
         integer :: stat, k
         character(len=200) :: msg
         a = synthetic(n, dt, 8)
-        m%height = 20.0_dp
-        m%vs = 300.0_dp
-        m%vs_base = 900.0_dp
-        m%damping = 0.05_dp
+        m = flexible_mass_t(height=20.0_dp, vs=300.0_dp, vs_base=900.0_dp, damping=0.05_dp)
         do k = 1, 3
             msg = ''
             select case (k)
@@ -892,10 +889,7 @@ contains
         integer :: stat, k
         character(len=200) :: msg
         a = synthetic(n, dt, 8)
-        m%height = 20.0_dp
-        m%vs = 300.0_dp
-        m%vs_base = 900.0_dp
-        m%damping = 0.05_dp
+        m = flexible_mass_t(height=20.0_dp, vs=300.0_dp, vs_base=900.0_dp, damping=0.05_dp)
         do k = 1, 2
             msg = ''
             if (k == 1) then
