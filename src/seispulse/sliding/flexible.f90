@@ -4,17 +4,17 @@
 !> acceleration exceeds the yield.
 !>
 !>  - decoupled: the modal response of the mass on a fixed base gives the history of the
-!>    horizontal equivalent acceleration HEA = a + (2/pi) u'' (g) (doc/flexible.md (F.7));
+!>    horizontal equivalent acceleration HEA = a + (2/pi) u'' (g) (doc/flexible.md (F.8));
 !>    a rigid block driven by HEA slides downslope (or two ways, exact rule only).
 !>  - coupled [RB99]: the sliding and the modal response are solved together; while
-!>    sliding, the base of the mass carries the yield force (doc/flexible.md (F.17)-(F.22)).
+!>    sliding, the base of the mass carries the yield force (doc/flexible.md (F.10)-(F.14)).
 !>
 !> Two rules (the `method` argument):
 !>  - FLEX_SLAMMER: SLAMMER 1.1 [SL13] step for step, in its own units (cm, cm/s^2 with
 !>    g_cm = 100 g): incremental Newmark average acceleration from rest with the first sample
 !>    as the first load increment, the decoupled slide integrated exactly for HEA linear
 !>    over each step with the step that ends a slide discarded, the coupled stop sub-step,
-!>    and SLAMMER's stepwise yield table (doc/flexible.md section 4, (F.23)-(F.29)).
+!>    and SLAMMER's stepwise yield table (doc/flexible.md section 4, (F.24)-(F.29)).
 !>  - FLEX_EXACT: the exact response to the piecewise-linear record (doc/flexible.md
 !>    sections 5-7, module seispulse_flexible_exact).
 !>
@@ -31,17 +31,19 @@ module seispulse_flexible
     use seispulse_format, only: real_str
     use seispulse_pieces, only: record_step_check
     use seispulse_special, only: pi
-    use seispulse_newmark, only: NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM
+    use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, &
+                                 NEWMARK_DOWN, NEWMARK_ASYM, NEWMARK_EXACT
     use seispulse_flexible_model, only: flexible_mass_t, flexible_result_t, modal_peak_t, &
                                         flexible_mass_validate, ky_table_validate, eql_iterate, &
-                                        participation_modal, participation_total, &
-                                        FLEX_SLAMMER, FLEX_EXACT
+                                        radiation_damping, participation_modal, &
+                                        participation_total, FLEX_SLAMMER, FLEX_EXACT
+    use seispulse_flexible_exact, only: modal_response_exact, coupled_exact
     implicit none
     private
 
     public :: flexible_decoupled, flexible_coupled
 
-    !> Newmark's average-acceleration parameters (doc/flexible.md (F.23), [C12])
+    !> Newmark's average-acceleration parameters (doc/flexible.md (F.24), [C12])
     real(dp), parameter :: beta = 0.25_dp, gamma = 0.5_dp
 
     !> SLAMMER's modal response as the equivalent-linear iteration sees it: the record
@@ -53,6 +55,18 @@ module seispulse_flexible
     contains
         procedure :: peak => slammer_peak
     end type slammer_peak_t
+
+    !> The exact modal response as the equivalent-linear iteration sees it: the record
+    !> (g, pointing to the caller's array during the analysis) and the work arrays of a pass.
+    type, extends(modal_peak_t) :: exact_peak_t
+        real(dp), pointer :: accel(:) => null()  !! record (g)
+        real(dp) :: dt = 0.0_dp                  !! time step (s)
+        real(dp) :: g = 0.0_dp                   !! gravity (m/s^2)
+        real(dp), allocatable :: u(:)            !! modal displacement of a pass (m)
+        real(dp), allocatable :: hea(:)          !! HEA of a pass (g)
+    contains
+        procedure :: peak => exact_peak
+    end type exact_peak_t
 
 contains
 
@@ -203,12 +217,22 @@ contains
         if (.not. same_size(sdot_hist, 'sdot_hist')) return
 
         if (method == FLEX_EXACT) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'method: the exact rule ' &
-                           //'is not available yet (use slammer)')
-            return
+            ! the exact recurrence needs |xi| < 1 (the largest xi is the first pass's)
+            if (.not. abs(mass%damping + radiation_damping(mass%vs, mass%vs_base)) < 1.0_dp) &
+                then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'damping = ' &
+                               //real_str(mass%damping)//': with the radiation damping ' &
+                               //real_str(radiation_damping(mass%vs, mass%vs_base)) &
+                               //' the total must be in (-1, 1) for the exact rule')
+                return
+            end if
+            call exact_run(coupled, accel, dt, tdisp, tky, mass, g, mode_, ky_up, &
+                           present(ky_disp), res, eql_stat, stat, errmsg, hea, u_modal, &
+                           s_hist, sdot_hist)
+        else
+            call slammer_run(coupled, accel, dt, tdisp, tky, mass, g, res, eql_stat, stat, &
+                             errmsg, hea, u_modal, s_hist, sdot_hist)
         end if
-        call slammer_run(coupled, accel, dt, tdisp, tky, mass, g, res, eql_stat, stat, &
-                         errmsg, hea, u_modal, s_hist, sdot_hist)
         if (stat /= SEISPULSE_SUCCESS) return
         if (.not. (ieee_is_finite(res%max_disp) .and. ieee_is_finite(res%kmax))) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'damping = ' &
@@ -231,6 +255,88 @@ contains
         end function same_size
 
     end subroutine flexible_run
+
+    ! ------------------------------------------------------------------------------
+    ! The exact rule (doc/flexible.md sections 5-7, module seispulse_flexible_exact)
+    ! ------------------------------------------------------------------------------
+
+    !> FLEX_EXACT: the equivalent-linear iteration on the exact modal response, then the
+    !> rigid block on the exact HEA (newmark_rigid, exact rule: mode, ky_up and the table
+    !> interpolated linearly) or the exact coupled analysis (coupled_exact).
+    subroutine exact_run(coupled, accel, dt, tdisp, tky, mass, g, mode, ky_up, table, res, &
+                         eql_stat, stat, errmsg, hea, u_modal, s_hist, sdot_hist)
+        logical, intent(in) :: coupled
+        real(dp), intent(in), target :: accel(:)
+        real(dp), intent(in) :: dt, tdisp(:), tky(:), g
+        type(flexible_mass_t), intent(in) :: mass
+        integer, intent(in) :: mode
+        real(dp), intent(in), optional :: ky_up
+        logical, intent(in) :: table
+        type(flexible_result_t), intent(inout) :: res
+        integer, intent(out) :: eql_stat, stat
+        character(len=*), intent(inout), optional :: errmsg
+        real(dp), intent(out), optional :: hea(:), u_modal(:), s_hist(:), sdot_hist(:)
+        type(exact_peak_t) :: resp
+        type(newmark_block_t) :: blk
+        type(newmark_result_t) :: rres
+        real(dp) :: omega, xi
+
+        resp%accel => accel
+        resp%dt = dt
+        resp%g = g
+        allocate(resp%u(size(accel)), resp%hea(size(accel)))
+        call eql_iterate(mass, resp, res%vs_final, res%damping_final, res%damping_radiation, &
+                         res%iterations, res%converged, eql_stat, errmsg)
+        nullify(resp%accel)
+        stat = eql_stat
+        if (eql_stat /= SEISPULSE_SUCCESS .and. eql_stat /= SEISPULSE_NO_CONVERGENCE) return
+        xi = res%damping_final
+        omega = pi * res%vs_final / (2.0_dp * mass%height)                    ! (F.2)
+        res%period = 4.0_dp * mass%height / res%vs_final
+
+        ! the final decoupled response: HEA and kmax (both analyses)
+        call modal_response_exact(accel, dt, g, omega, xi, resp%u, resp%hea, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        res%kmax = signed_peak(resp%hea)
+        if (present(hea)) hea(:) = resp%hea
+        if (.not. coupled) then
+            if (present(u_modal)) u_modal(:) = resp%u
+            blk%mode = mode
+            blk%ky = tky(1)
+            if (present(ky_up)) blk%ky_up = ky_up
+            if (table) then
+                allocate(blk%ky_disp, source=tdisp)
+                allocate(blk%ky_values, source=tky)
+            end if
+            call newmark_rigid(resp%hea, dt, blk, NEWMARK_EXACT, g, rres, stat, errmsg, &
+                               u_hist=s_hist, w_hist=sdot_hist)
+            if (stat /= SEISPULSE_SUCCESS) return
+            res%max_disp = rres%max_disp
+            res%final_disp = rres%final_disp
+            res%t_end = rres%t_end
+        else if (table) then
+            call coupled_exact(accel, dt, g, omega, xi, tky(1), res%max_disp, res%final_disp, &
+                               res%t_end, stat, errmsg, ky_disp=tdisp, ky_values=tky, &
+                               s_hist=s_hist, sdot_hist=sdot_hist, u_modal=u_modal)
+        else
+            call coupled_exact(accel, dt, g, omega, xi, tky(1), res%max_disp, res%final_disp, &
+                               res%t_end, stat, errmsg, s_hist=s_hist, sdot_hist=sdot_hist, &
+                               u_modal=u_modal)
+        end if
+    end subroutine exact_run
+
+    !> max |u| (m) at the samples of the exact modal response for (omega, xi): O(n).
+    subroutine exact_peak(self, omega, xi, u_peak, stat, errmsg)
+        class(exact_peak_t), intent(inout) :: self
+        real(dp), intent(in) :: omega, xi
+        real(dp), intent(out) :: u_peak
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        u_peak = 0.0_dp
+        call modal_response_exact(self%accel, self%dt, self%g, omega, xi, self%u, self%hea, &
+                                  stat, errmsg)
+        if (stat == SEISPULSE_SUCCESS) u_peak = maxval(abs(self%u))
+    end subroutine exact_peak
 
     ! ------------------------------------------------------------------------------
     ! SLAMMER 1.1's arithmetic (doc/flexible.md section 4)
@@ -307,7 +413,7 @@ contains
         u_peak = u_peak / 100.0_dp
     end subroutine slammer_peak
 
-    !> SLAMMER's modal response (doc/flexible.md (F.23)-(F.25)): incremental Newmark
+    !> SLAMMER's modal response (doc/flexible.md (F.24)-(F.26)): incremental Newmark
     !> average acceleration on u'' + 2 xi omega u' + omega^2 u = -(L/M) a; the first step
     !> from rest with the load increment a(1) and u'' from equilibrium; HEA = a + (L/Mtot) u''.
     !> The record is taken to cm/s^2 sample by sample (a = accel gcm).
@@ -327,7 +433,7 @@ contains
         a = 1.0_dp / (beta * dt) + 2.0_dp * xi * omega * gamma / beta
         b = 1.0_dp / (2.0_dp * beta) + dt * 2.0_dp * xi * omega * (gamma / (2.0_dp * beta) &
                                                                    - 1.0_dp)
-        ! first step from rest, load increment acc(1) (D-1)                             (F.25)
+        ! first step from rest, load increment acc(1)                                   (F.26)
         acc2 = accel(1) * gcm
         du = -participation_modal * acc2 / khat
         u1 = du
@@ -339,7 +445,7 @@ contains
         do j = 2, size(accel)
             acc1 = acc2
             acc2 = accel(j) * gcm
-            dp_ = -participation_modal * (acc2 - acc1) + a * v1 + b * w1
+            dp_ = -participation_modal * (acc2 - acc1) + a * v1 + b * w1                 ! (F.25)
             du = dp_ / khat
             dv = gamma / (beta * dt) * du - gamma / beta * v1 &
                  + dt * (1.0_dp - gamma / (2.0_dp * beta)) * w1
@@ -349,11 +455,11 @@ contains
             w1 = w1 + dw
             u_peak = max(u_peak, abs(u1))
             if (present(u)) u(j) = u1
-            if (present(avg)) avg(j) = acc2 + participation_total * w1                 ! (F.7)
+            if (present(avg)) avg(j) = acc2 + participation_total * w1                 ! (F.8)
         end do
     end subroutine slammer_response
 
-    !> SLAMMER's decoupled slide (Decoupled.d_sliding, doc/flexible.md (F.26)-(F.27)) with
+    !> SLAMMER's decoupled slide (Decoupled.d_sliding, doc/flexible.md (F.27)) with
     !> its stepwise table (F.29). With e = ky g - HEA(j-1), dH = HEA(j) - HEA(j-1), while
     !> sliding: s'(j) = s'(j-1) + e dt - dH dt/2, s(j) = s(j-1) - s'(j-1) dt - e dt^2/2
     !> + dH dt^2/6 (s' < 0 while sliding). A slide starts at the end of a step where
@@ -389,13 +495,13 @@ contains
             else
                 dacc = avg(j) - avg_prev
                 e = tmug(qq) - avg_prev
-                sdj = sd1 + e * dt - 0.5_dp * dacc * dt                                   ! (F.26)
+                sdj = sd1 + e * dt - 0.5_dp * dacc * dt                                   ! (F.27)
                 sj = s1 - sd1 * dt - 0.5_dp * dt * dt * e + dacc * dt * dt / 6.0_dp       ! (F.27)
             end if
             if (.not. slide) then
                 if (avg(j) > tmug(qq)) slide = .true.
             else if (sdj >= 0.0_dp) then
-                ! end of the slide: this step is discarded (D-3)
+                ! end of the slide: this step is discarded (doc/flexible.md section 4)
                 slide = .false.
                 sj = s1
                 sdj = 0.0_dp
@@ -413,9 +519,10 @@ contains
         s_end = s1
     end subroutine slammer_slide
 
-    !> SLAMMER's coupled analysis (Coupled, doc/flexible.md (F.17)-(F.22), (F.28)) on its
-    !> input acc = -record (cm/s^2; SLAMMER flips the record of normal polarity here). Sticking: the modal equation under acc; sliding: under
-    !> the yield load -ky g with the reduced mass d1 = 1 - L^2/(M Mtot); the base force per
+    !> SLAMMER's coupled analysis (Coupled, doc/flexible.md (F.10)-(F.14), (F.28)) on its
+    !> input acc = -record (cm/s^2; SLAMMER flips the record of normal polarity here).
+    !> Sticking: the modal equation under acc; sliding: under the yield load -ky g with the
+    !> reduced mass d1 = 1 - L^2/(M Mtot); the base force per
     !> unit mass -acc - (L/Mtot) u'' starts a slide when it exceeds ky g; s'' = -acc - ky g
     !> - (L/Mtot) u'' integrated by the trapezoidal rule; when s' <= 0 the stop sub-step.
     subroutine slammer_coupled(accel, gcm, dt, omega, xi, tdisp, tmug, s_max, s_end, t_end, &
@@ -440,7 +547,7 @@ contains
         logical :: slide
 
         n = size(accel)
-        ! coefficients: k = 1 sticking (d1 = 1), k = 2 sliding (d1 = 1 - L^2/(M Mtot))  (F.19)
+        ! coefficients: k = 1 sticking (d1 = 1), k = 2 sliding (d1 = 1 - L^2/(M Mtot))  (F.11)
         d1s = 1.0_dp - participation_modal * participation_total
         d1 = [1.0_dp, d1s]
         do k = 1, 2
@@ -471,7 +578,7 @@ contains
             sdd1 = sdd2
             mug = tmug(qq)
             a_j = -(accel(j) * gcm)
-            ! load of the modal equation (F.18)
+            ! load of the modal equation (F.10)
             if (j == 1) then
                 acc11 = 0.0_dp
                 acc22 = a_j
@@ -493,7 +600,7 @@ contains
             v2 = v1 + dv
             w2 = (-participation_modal * acc22 - 2.0_dp * xi * omega * v2 &
                   - omega * omega * u2) / d1(k)
-            ! sliding acceleration and base force per unit mass (F.20), (F.21)
+            ! sliding acceleration and base force per unit mass (F.13), (F.12)
             if (slide) sdd2 = -a_j - mug - participation_total * w2
             basef = -a_j - participation_total * w2
             if (slide) then
