@@ -116,9 +116,9 @@ contains
         allocate(cum(n))
         call scaled_integrals(accel / scale, cum, s_cav)
         e_tot = cum(n)
-        im%arias = (pi * g / 2.0_dp) * dt * e_tot * scale * scale          ! (I.5), (I.6)
-        im%cav = g * dt * s_cav * scale                                    ! (I.9), (I.10)
-        if (.not. (ieee_is_finite(im%arias) .and. ieee_is_finite(im%cav))) then
+        im%arias = safe_product([pi / 2.0_dp, g, dt, e_tot, scale, scale])  ! (I.5), (I.6)
+        im%cav = safe_product([g, dt, s_cav, scale])                         ! (I.9), (I.10)
+        if (im%arias < 0.0_dp .or. im%cav < 0.0_dp) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel, dt, g: the Arias ' &
                            //'intensity or the CAV overflows')
             return
@@ -267,6 +267,10 @@ contains
             c0 = vel(i)
             c1 = g * dt * a(i)
             c2 = 0.5_dp * g * dt * (a(i + 1) - a(i))
+            q = max(abs(c0), abs(c1), abs(c2))        ! > 0: v changes sign; no overflow below
+            c0 = c0 / q
+            c1 = c1 / q
+            c2 = c2 / q
             roots = -1.0_dp
             if (.not. abs(c2) > 0.0_dp) then
                 if (abs(c1) > 0.0_dp) roots(1) = -c0 / c1
@@ -288,6 +292,22 @@ contains
                    * (a(i) / 2.0_dp + (a(i + 1) - a(i)) * u / 6.0_dp)
         end function d_at
     end subroutine motion_peaks
+
+    !> The product of non-negative finite factors, -1 when it would overflow (formed as
+    !> the product of their fractions scaled by the sum of their exponents, so no
+    !> intermediate product overflows either).
+    pure real(dp) function safe_product(f) result(p)
+        real(dp), intent(in) :: f(:)
+        integer :: e
+        p = 0.0_dp
+        if (.not. all(f > 0.0_dp)) return
+        e = sum(exponent(f))
+        if (e > maxexponent(1.0_dp)) then
+            p = -1.0_dp
+        else
+            p = scale(product(fraction(f)), e)
+        end if
+    end function safe_product
 
     !> The cumulative integral of b^2 over t/dt at the samples, cum(1) = 0 (I.6), and the
     !> integral of |b| over t/dt (I.10), for b linear between samples.
