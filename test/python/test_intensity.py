@@ -306,3 +306,16 @@ def test_driver_intensity_input_errors(driver, source_root, tmp_path, group, mes
     assert proc.returncode == 2
     assert f"e.nml:3: &newmark: {message}" in proc.stderr
     assert not list(tmp_path.glob("o_*"))
+
+
+def test_readme_example(source_root, monkeypatch, capsys):
+    """The example of the README's "Intensity measures" section prints what it says."""
+    text = (source_root / "README.md").read_text(encoding="utf-8")
+    section = text[text.index("\n## Intensity measures\n"):]
+    code = section[section.index("```python\n") + 10:section.index("\n```\n")]
+    shown = section[section.index("prints (run from the source tree)"):]
+    shown = shown[shown.index("```\n") + 4:]
+    shown = shown[:shown.index("```")]
+    monkeypatch.chdir(source_root)
+    exec(compile(code, "README.md (Intensity measures)", "exec"), {})
+    assert capsys.readouterr().out == shown
