@@ -1082,17 +1082,14 @@ def csv_cell(x):
 
 
 def make_newmark_ref(nml_path, nml):
-    with mp.workdps(40):
-        header, rows = newmark_rows(nml_path, nml)
-        lines = [header] + [",".join(csv_cell(x) for x in row) for row in rows]
-    out = Path(nml_path).with_suffix(".ref")
-    out.write_text("\n".join(lines) + "\n")
-    print(f"wrote {out} ({len(lines) - 1} rows)")
+    tables = [(".ref", newmark_rows)]
     if bool(nml["newmark"].get("intensity", False)):
+        tables.append((".intensity.ref", intensity_rows))
+    for suffix, table_rows in tables:
         with mp.workdps(40):
-            header, rows = intensity_rows(nml_path, nml)
+            header, rows = table_rows(nml_path, nml)
             lines = [header] + [",".join(csv_cell(x) for x in row) for row in rows]
-        out = Path(nml_path).with_suffix(".intensity.ref")
+        out = Path(nml_path).with_suffix(suffix)
         out.write_text("\n".join(lines) + "\n")
         print(f"wrote {out} ({len(lines) - 1} rows)")
 
