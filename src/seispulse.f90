@@ -104,6 +104,9 @@ module seispulse
                                  RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, &
                                  RECORD_TIME_ACCEL, UNITS_G, UNITS_M_S2, UNITS_CM_S2, &
                                  STANDARD_GRAVITY
+    use seispulse_intensity, only: intensity_t, record_intensity, spectral_acceleration, &
+                                   mean_period, TM_F_LOW, TM_F_HIGH, TM_DF_MAX, TM_MAX_POINTS
+    use seispulse_fft, only: fft, next_power_of_two, is_power_of_two
     use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, &
                                  newmark_incline, newmark_block_validate, newmark_mode_name, &
                                  newmark_method_name, newmark_mode_code, newmark_method_code, &

@@ -6,6 +6,8 @@ program tester
     use test_special, only: collect_special
     use test_divided_differences, only: collect_divided_differences
     use test_roots, only: collect_roots
+    use test_fft, only: collect_fft
+    use test_intensity, only: collect_intensity
     use test_ode, only: collect_ode
     use test_lapack, only: collect_lapack
     use test_radau, only: collect_radau
@@ -49,6 +51,14 @@ program tester
     if (selected('roots')) then
         call collect_roots(tests)
         call run_suite('roots', tests, output_unit, npass, nfail)
+    end if
+    if (selected('fft')) then
+        call collect_fft(tests)
+        call run_suite('fft', tests, output_unit, npass, nfail)
+    end if
+    if (selected('intensity')) then
+        call collect_intensity(tests)
+        call run_suite('intensity', tests, output_unit, npass, nfail)
     end if
     if (selected('ode')) then
         call collect_ode(tests)

@@ -19,19 +19,27 @@ quotes what was found; a file that cannot be opened raises
 records (:meth:`Record.scaled`, :meth:`Record.scaled_to_pga`, :meth:`Record.inverted`)
 or the exact ground velocity and displacement of the piecewise linear acceleration
 (:meth:`Record.velocity`, :meth:`Record.displacement`).
+
+:func:`intensity` (and :meth:`Record.intensity`) returns the ground-motion intensity
+measures of a record (PGA, PGV, PGD, Arias intensity, CAV, the significant durations
+D5-75 and D5-95, the mean period Tm; doc/intensity.md), :func:`spectral_acceleration`
+the pseudo-spectral acceleration at a period (Fortran module ``seispulse_intensity``).
 """
 
 import os
 import threading
+from collections import namedtuple
 
 import numpy as np
 
 from . import _core
 from . import _fortran_codes as _f
-from ._seispulse import sp_ground_motion, sp_pga_scale_factor, sp_record_fetch, sp_record_read
+from ._seispulse import (sp_ground_motion, sp_pga_scale_factor, sp_record_fetch,
+                         sp_record_intensity, sp_record_read, sp_spectral_acceleration)
 from .errors import InvalidInputError
 
-__all__ = ["STANDARD_GRAVITY", "FORMATS", "UNITS", "Record", "read", "from_array"]
+__all__ = ["STANDARD_GRAVITY", "FORMATS", "UNITS", "Record", "read", "from_array",
+           "Intensity", "intensity", "spectral_acceleration"]
 
 #: Standard gravity (m/s^2): converts m/s^2 and cm/s^2 to g, default ``g`` of the
 #: velocity and displacement.
@@ -243,6 +251,12 @@ class Record:
         ``d[i+1] = d[i] + v[i] dt + g dt^2 (2 a[i] + a[i+1]) / 6``."""
         return self._ground_motion(g)[1]
 
+    # -------------------------------------------------------------- intensity
+
+    def intensity(self, g=STANDARD_GRAVITY):
+        """The intensity measures of this record: :func:`intensity` (``g`` in m/s^2)."""
+        return intensity(self, g=g)
+
 
 def read(path, fmt="auto", units=None, dt=None):
     """Read an accelerogram file.
@@ -308,3 +322,90 @@ def from_array(accel, dt, units="g", name="record"):
     if ucode != _f.UNITS_G:
         arr = arr / _UNIT_TO_G[ucode]
     return Record(arr, dt, name=name)
+
+
+#: Intensity measures of a record (doc/intensity.md): pga (g), pgv (m/s), pgd (m),
+#: arias (m/s), cav (m/s), d5_75, d5_95 (s), t5, t75, t95 (s from the first sample),
+#: tm (s).
+Intensity = namedtuple("Intensity", ["pga", "pgv", "pgd", "arias", "cav", "d5_75", "d5_95",
+                                     "t5", "t75", "t95", "tm"])
+
+
+def intensity(rec_or_accel, dt=None, g=STANDARD_GRAVITY):
+    """Ground-motion intensity measures of a record (doc/intensity.md).
+
+    The acceleration is linear between samples and every measure is exact for it:
+
+    * ``pga`` max |a| (g); ``pgv`` (m/s) and ``pgd`` (m) the largest |velocity| and
+      |displacement| from rest at the first sample, between the samples too;
+    * ``arias`` = pi/(2g) int a^2 dt (m/s, a in m/s^2) [A70]; ``cav`` = int |a| dt
+      (m/s) [EPRI88], sign changes inside a step included;
+    * ``t5``, ``t75``, ``t95`` (s from the first sample): the first times the Husid
+      curve (the normalized cumulative Arias intensity) reaches 5, 75 and 95 %, found
+      inside their step; ``d5_75`` = t75 - t5 and ``d5_95`` = t95 - t5 (s) [TB75];
+    * ``tm`` the mean period (s) [RAB98]: sum(C^2/f) / sum(C^2) over the Fourier
+      amplitudes C at 0.25 <= f <= 20 Hz, the record zero-padded to the next power of
+      two >= max(npts, 20/dt) points (df <= 0.05 Hz).
+
+    A record without energy (all zeros, or one sample) has NaN durations and times, and
+    Tm is NaN when no frequency of 0.25-20 Hz carries energy.
+
+    Parameters
+    ----------
+    rec_or_accel : Record or array_like
+        The record, or its samples (g) at t = i dt.
+    dt : float
+        Time step (s, > 0); leave out for a Record.
+    g : float
+        Gravity (m/s^2) that turns g into m/s^2.
+
+    Returns
+    -------
+    Intensity
+    """
+    rec, step = _core.record_and_step(rec_or_accel, dt)
+    g = _core.check_positive("g", g, " (m/s^2)")
+    *values, stat, msg = sp_record_intensity(rec, step, g)
+    _core.raise_for_status(stat, _text(msg), indexed=("accel",))
+    return Intensity(*(float(v) for v in values))
+
+
+def spectral_acceleration(rec, period, damping=0.05, g=STANDARD_GRAVITY, dt=None):
+    """Pseudo-spectral acceleration PSA = (2 pi / T)^2 SD / g (g) of a record.
+
+    SD is the true largest |relative displacement| of the oscillator (period T, damping
+    ratio ``damping``) over the record, from its exact response (seispulse.sdof);
+    T = 0 gives the PGA (doc/intensity.md (I.17)).
+
+    Parameters
+    ----------
+    rec : Record or array_like
+        The record, or its samples (g) at t = i dt (then ``dt`` is required).
+    period : float or array_like
+        Natural period(s) T (s), 0 or from 1e-60 up; an array gives an array.
+    damping : float
+        Damping ratio, 0 <= damping < 1 (default 5 %).
+    g : float
+        Gravity (m/s^2).
+    dt : float, optional
+        Time step (s, > 0) of an array of samples.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        PSA (g), shaped as ``period``.
+    """
+    acc, step = _core.record_and_step(rec, dt)
+    per = _core.as_float_array("period", period)
+    damping = _core.as_scalar("damping", damping)
+    g = _core.check_positive("g", g, " (m/s^2)")
+    out = np.empty(per.shape)
+    for i, p in enumerate(per.reshape(-1)):
+        sa, stat, msg = sp_spectral_acceleration(acc, step, float(p), damping, g)
+        name = "period" if per.ndim == 0 else f"period[{i}]"
+        _core.raise_for_status(stat, _text(msg), rename={"period": name},
+                               indexed=("accel",))
+        out.reshape(-1)[i] = sa
+    if per.ndim == 0:
+        return float(out)
+    return out
