@@ -168,7 +168,7 @@ def bray_travasarou_2007(ky, ts, sa, magnitude, slammer=False):
 
 
 def rathje_antonakos_2011(ky, ts, tm, pga, magnitude=None, pgv=None, slammer=False):
-    """Rathje & Antonakos (2011), the unified model (E.26)-(E.33): the displacement of a
+    """Rathje & Antonakos (2011), the unified model (E.26)-(E.32): the displacement of a
     sliding mass of site period ts (s) under a motion of mean period tm (s) and peak
     acceleration pga (g): kmax from ts/tm and pga, then Rathje & Saygili (2009) with
     magnitude (the 'pga_m' form) or Saygili & Rathje (2008) with pgv (cm/s; kvelmax, the

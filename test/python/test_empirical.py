@@ -359,3 +359,18 @@ def test_bad_input_names_the_parameter(call, name):
     with pytest.raises(InvalidInputError) as info:
         call()
     assert str(info.value).startswith(name)
+
+
+def test_readme_example(source_root, capsys):
+    """The example of the README's section "Empirical displacement models" prints what its
+    comments say."""
+    text = (source_root / "README.md").read_text(encoding="utf-8")
+    section = text[text.index("\n## Empirical displacement models\n"):]
+    code = section[section.index("```python\n") + 10:section.index("\n```\n")]
+    exec(compile(code, "README.md (Empirical displacement models)", "exec"), {})
+    printed = capsys.readouterr().out.splitlines()
+    stated = [line[2:] for line in code.splitlines() if line.startswith("# ")
+              and not line.startswith("# Bray")]
+    assert len(printed) == 4 and len(stated) == 4
+    for out, claim in zip(printed, stated):
+        assert claim.startswith(out), (out, claim)

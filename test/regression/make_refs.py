@@ -64,7 +64,7 @@ doc/empirical.md whose inputs &empirical gives, per case, ky and model, written 
 from the sources in mpmath (40 digits): the rigid-block regressions (E.1)-(E.12) (ky >=
 PGA in a model of ky/PGA: 0), Bray & Travasarou (E.13)-(E.16) with the exact normal
 distribution (mpmath ncdf) or, with slammer, SLAMMER's polynomial, Rathje & Antonakos
-(E.26)-(E.33), the probability of failure (E.35) at the median.
+(E.26)-(E.32), the probability of failure (E.35) at the median.
 
 Analysis 'newmark' (never by running the driver): the record files are read here by a
 small parser of their own (AT2, SLAMMER CSV, two columns, one column; the decimals taken
@@ -1988,7 +1988,7 @@ def emp_bt07(ky, p, slammer):
 
 
 def emp_ra11(ky, p, form, slammer):
-    """(E.26)-(E.33): (disp cm, sigma, kmax)."""
+    """(E.26)-(E.32): (disp cm, sigma, kmax)."""
     ts, pga = p["ts"], p["pga"]
     pr = ts / p["tm"]
     if slammer:

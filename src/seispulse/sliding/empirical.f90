@@ -58,7 +58,7 @@ module seispulse_empirical
     integer, parameter :: EMP_LOG10 = 10   !! sigma of log10 D
     integer, parameter :: EMP_LN = 1       !! sigma of ln D
 
-    !> The two forms of the unified model [RA11] (E.26)-(E.33).
+    !> The two forms of the unified model [RA11] (E.26)-(E.32).
     integer, parameter :: EMP_RA11_PGA_M = 1    !! on [RS09] (PGA, M), the "2009" form
     integer, parameter :: EMP_RA11_PGA_PGV = 2  !! on [SR08] (PGA, PGV), the "2008" form
 
@@ -535,7 +535,7 @@ contains
         end if
     end subroutine bray_travasarou_2007
 
-    !> [RA11] unified model with its checks (E.26)-(E.33): kmax (E.26) and, for the
+    !> [RA11] unified model with its checks (E.26)-(E.32): kmax (E.26) and, for the
     !> PGA-PGV form, kvelmax (E.27); the rigid displacement of [RS09] (E.11) or [SR08]
     !> (E.9) with kmax for PGA (and kvelmax for PGV), then the period term (E.28)/(E.29);
     !> D = 0 when ky >= kmax (no sliding). sigma of ln D (E.30)/(E.31) with ky/kmax.
