@@ -18,7 +18,7 @@ module seispulse_empirical
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error
     use seispulse_checks, only: finite_positive, finite_at_least, outside
-    use seispulse_format, only: real_str
+    use seispulse_format, only: real_str, int_str
     use seispulse_special, only: expm1, log1p
     implicit none
     private
@@ -426,37 +426,29 @@ contains
         integer, intent(out) :: log_base     !! EMP_LOG10 or EMP_LN
         integer, intent(out) :: stat         !! SEISPULSE_SUCCESS or an error
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        integer :: needs
-        real(dp) :: r
+        integer, parameter :: bits(4) = [EMP_NEED_PGA, EMP_NEED_PGV, EMP_NEED_ARIAS, EMP_NEED_M]
+        character(len=9), parameter :: inputs(4) = [character(len=9) :: 'pga', 'pgv', 'arias', &
+                                                    'magnitude']
+        integer :: needs, k
+        real(dp) :: r, values(4)
         disp_cm = 0.0_dp
         sigma = 0.0_dp
         log_base = EMP_LN
         needs = empirical_needs(model)
         if (needs == 0) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'model = '//real_str( &
-                real(model, dp))//': unknown rigid-block model (1 to 11)')
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'model = '//int_str(model) &
+                //': unknown rigid-block model (1 to 11)')
             return
         end if
         call empirical_check('ky', ky, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (iand(needs, EMP_NEED_PGA) /= 0) then
-            call empirical_check('pga', pga, stat, errmsg)
+        values = [pga, pgv, arias, magnitude]
+        do k = 1, size(bits)
+            if (iand(needs, bits(k)) == 0) cycle
+            call empirical_check(trim(inputs(k)), values(k), stat, errmsg)
+            if (stat == SEISPULSE_SUCCESS .and. k == 1) call check_ratio(ky, pga, stat, errmsg)
             if (stat /= SEISPULSE_SUCCESS) return
-            call check_ratio(ky, pga, stat, errmsg)
-            if (stat /= SEISPULSE_SUCCESS) return
-        end if
-        if (iand(needs, EMP_NEED_PGV) /= 0) then
-            call empirical_check('pgv', pgv, stat, errmsg)
-            if (stat /= SEISPULSE_SUCCESS) return
-        end if
-        if (iand(needs, EMP_NEED_ARIAS) /= 0) then
-            call empirical_check('arias', arias, stat, errmsg)
-            if (stat /= SEISPULSE_SUCCESS) return
-        end if
-        if (iand(needs, EMP_NEED_M) /= 0) then
-            call empirical_check('magnitude', magnitude, stat, errmsg)
-            if (stat /= SEISPULSE_SUCCESS) return
-        end if
+        end do
         r = 0.0_dp
         if (iand(needs, EMP_NEED_PGA) /= 0) r = ky / pga
         log_base = EMP_LOG10
@@ -571,8 +563,8 @@ contains
         sl = .false.
         if (present(slammer)) sl = slammer
         if (form /= EMP_RA11_PGA_M .and. form /= EMP_RA11_PGA_PGV) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'form = '// &
-                real_str(real(form, dp))//': unknown form (1: PGA and M, 2: PGA and PGV)')
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'form = '//int_str(form) &
+                //': unknown form (1: PGA and M, 2: PGA and PGV)')
             return
         end if
         call empirical_check('ky', ky, stat, errmsg)
