@@ -26,6 +26,9 @@ module driver_newmark
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
                               path_len, records_missing, record_line, failed_records
+    use driver_intensity_table, only: intensity_table_t, intensity_check, intensity_echo, &
+                                      intensity_start, intensity_record, intensity_failures, &
+                                      intensity_write
     implicit none
     private
 
@@ -35,8 +38,9 @@ module driver_newmark
     character(len=8), parameter :: newmark_groups(2) = [character(len=8) :: 'records', &
         'newmark']
 
-    character(len=12), parameter :: newmark_keys(11) = [character(len=12) :: 'ky', 'mode', &
-        'ky_up', 'k_down', 'k_up', 'mu', 'slope_deg', 'xi_deg', 'along_plane', 'method', 'g']
+    character(len=12), parameter :: newmark_keys(13) = [character(len=12) :: 'ky', 'mode', &
+        'ky_up', 'k_down', 'k_up', 'mu', 'slope_deg', 'xi_deg', 'along_plane', 'method', 'g', &
+        'intensity', 'sa_periods']
     character(len=4), parameter :: mode_names(3) = [character(len=4) :: 'down', 'both', 'asym']
     character(len=7), parameter :: method_names(2) = [character(len=7) :: 'exact', 'slammer']
 
@@ -47,8 +51,11 @@ module driver_newmark
     real(dp) :: ky(max_ky), ky_up(max_ky), k_down, k_up, mu(max_ky), slope_deg, xi_deg, g
     character(len=32) :: mode, method
     logical :: along_plane
+    ! the intensity table (driver_intensity_table): on/off and the Sa periods (s)
+    logical :: intensity
+    real(dp) :: sa_periods(max_ky)
     namelist /newmark/ ky, mode, ky_up, k_down, k_up, mu, slope_deg, xi_deg, along_plane, &
-        method, g
+        method, g, intensity, sa_periods
 
     !> The validated input.
     type :: config_t
@@ -82,6 +89,8 @@ contains
         along_plane = .true.
         method = 'exact'
         g = 9.80665_dp
+        intensity = .false.
+        sa_periods = nan
     end subroutine set_defaults
 
     subroutine read_newmark(unit, text, ios, iomsg)
@@ -107,6 +116,7 @@ contains
         character(len=:), allocatable, intent(out) :: errmsg
         type(nml_group) :: gr, gn
         type(config_t) :: cfg
+        type(intensity_table_t) :: itab
         type(record_out_t), allocatable :: outs(:)
         real(dp), allocatable :: table(:, :)
         character(len=512) :: files_out(2)
@@ -133,13 +143,17 @@ contains
         if (len(errmsg) > 0) return
         call check_newmark(path, gn, cfg, errmsg)
         if (len(errmsg) > 0) return
+        call intensity_check(located(path, gn), intensity, given(gn, 'sa_periods'), sa_periods, &
+                             itab, errmsg)
+        if (len(errmsg) > 0) return
 
         ! --- echo the effective input
         call echo_records(cfg%recs, cfg%slammer_rounding)
         call echo_newmark(cfg)
+        call intensity_echo(itab)
 
         ! --- compute every row (nothing is written before all of them are done)
-        call compute(path, gr, cfg, outs, table, nfailed)
+        call compute(path, gr, cfg, outs, table, nfailed, itab)
 
         ! --- write
         call write_result(path, prefix, cfg, outs, table, files_out, stat, errmsg)
@@ -149,6 +163,12 @@ contains
             return
         end if
         call say_written('newmark table', files_out)
+        call intensity_write(path, prefix, cfg%g, cfg%recs, outs, itab, stat, errmsg)
+        if (stat /= 0) then
+            stat = 1
+            errmsg = path//': &run: output: '//errmsg
+            return
+        end if
         stat = 0
         if (nfailed > 0) then
             nrows = size(table, 1)
@@ -158,6 +178,10 @@ contains
                      //failed_records(outs, [(any(table((ir - 1) * nblk + 1:ir * nblk, &
                                                         size(table, 2)) > 0.5_dp), &
                                              ir = 1, size(outs))])//')'
+        else if (intensity_failures(itab) > 0) then
+            stat = ROWS_FAILED
+            errmsg = int_str(intensity_failures(itab))//' of '//int_str(size(outs)) &
+                     //' rows of the intensity table failed'
         end if
     end subroutine run_newmark
 
@@ -399,13 +423,14 @@ contains
     !> Every record (read, polarity, scale), every block, normal and inverse. A record
     !> that fails leaves NaN results and status 1 in its rows; the message goes to
     !> stderr at once. Progress: one line per record on stderr.
-    subroutine compute(path, gr, cfg, outs, table, nfailed)
+    subroutine compute(path, gr, cfg, outs, table, nfailed, itab)
         character(len=*), intent(in) :: path
         type(nml_group), intent(in) :: gr
         type(config_t), intent(in) :: cfg
         type(record_out_t), allocatable, intent(out) :: outs(:)
         real(dp), allocatable, intent(out) :: table(:, :)   !! the numeric columns
         integer, intent(out) :: nfailed
+        type(intensity_table_t), intent(inout) :: itab     !! its rows, if it is on
         type(newmark_result_t) :: rn, ri
         real(dp), allocatable :: accel(:)
         character(len=:), allocatable :: where, errmsg
@@ -423,10 +448,14 @@ contains
         allocate(table(nrec * nblk, c0 + 11))
         table = nan
         nfailed = 0
+        call intensity_start(itab, nrec)
         do ir = 1, nrec
             associate (r => cfg%recs(ir), o => outs(ir))
                 ! --- read, turn over, scale
                 call load_record(where, r, ir, nrec, 'newmark', cfg%slammer_rounding, o, accel)
+                if (o%ok) call intensity_record(itab, ir, accel, o%dt, cfg%g, &
+                                                where//list_item('files', ir)//' = ''' &
+                                                //r%file//'''')
 
                 ! --- the rows of this record
                 do ib = 1, nblk

@@ -4,9 +4,9 @@ pulses and accelerograms.
 Modules: :mod:`seispulse.pulse` (pulses), :mod:`seispulse.sliding` (sliding blocks),
 :mod:`seispulse.rocking` (rocking blocks), :mod:`seispulse.cylinder` (rigid cylinders and
 blocks rocking on a rigid base), :mod:`seispulse.winkler` (cylinders and blocks on
-Winkler and inelastic clay foundations), :mod:`seispulse.records` (accelerograms),
-:mod:`seispulse.newmark` (Newmark sliding on records), :mod:`seispulse.empirical`
-(empirical estimates of slope displacements), :mod:`seispulse.sdof` (the linear
+Winkler and inelastic clay foundations), :mod:`seispulse.records` (accelerograms and
+their intensity measures), :mod:`seispulse.newmark` (Newmark sliding on records),
+:mod:`seispulse.empirical` (empirical estimates of slope displacements), :mod:`seispulse.sdof` (the linear
 oscillator: closed forms, responses and spectra), :mod:`seispulse.walls` (elastodynamic
 seismic earth pressures on rigid walls), :mod:`seispulse.codes` (EN 1998 earth-pressure
 checks and spectra). Errors: :mod:`seispulse.errors`; bad input

@@ -241,3 +241,81 @@ def test_eqsig_on_pyslammer_records():
         assert sig.pgv * (1 - 1e-12) <= ours.pgv <= sig.pgv * 1.005, rec.name
         np.testing.assert_allclose(ours.tm, _tm_numpy(a, dt), rtol=1e-11, err_msg=rec.name)
     assert not hasattr(eim, "calc_mean_period")
+
+
+# ---------------------------------------------------------------- the batch driver
+
+def _read_csv(path):
+    import csv
+    with open(path, newline="") as f:
+        header = next(csv.reader(f))
+        rows = list(csv.reader(f, quoting=csv.QUOTE_NONNUMERIC))
+    return header, rows
+
+
+def test_driver_intensity_table(driver, source_root, tmp_path):
+    """input/newmark_intensity.nml: the intensity table equals records.intensity and
+    records.spectral_acceleration of the scaled records, bit for bit."""
+    import subprocess
+    example = source_root / "input" / "newmark_intensity.nml"
+    proc = subprocess.run([driver, str(example)], cwd=tmp_path, capture_output=True,
+                          text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    assert "out/newmark_intensity_intensity.csv" in proc.stdout
+    assert "INTENSITY=T" in proc.stdout.upper().replace(" ", "")
+    header, rows = _read_csv(tmp_path / "out" / "newmark_intensity_intensity.csv")
+    assert header == ["record (-)", "pga (g)", "pgv (m/s)", "pgd (m)", "arias (m/s)",
+                      "cav (m/s)", "d5_75 (s)", "d5_95 (s)", "tm (s)", "sa_T=0.2 (g)",
+                      "sa_T=0.5 (g)", "sa_T=1.0 (g)", "status (-)"]
+    assert [r[0] for r in rows] == ["quake_a", "quake_b"]
+    for row, name in zip(rows, ("quake_a.AT2", "quake_b.csv")):
+        rec = records.read(source_root / "input" / "records" / name).scaled_to_pga(0.3)
+        im = rec.intensity()
+        sa = records.spectral_acceleration(rec, [0.2, 0.5, 1.0])
+        expect = [im.pga, im.pgv, im.pgd, im.arias, im.cav, im.d5_75, im.d5_95, im.tm,
+                  *sa, 0.0]
+        np.testing.assert_array_equal(row[1:], expect)
+    # without the key: no intensity table
+    text = example.read_text().replace("intensity = .true.", "intensity = .false.")
+    text = "\n".join(ln for ln in text.splitlines() if "sa_periods" not in ln) + "\n"
+    (tmp_path / "records").mkdir()
+    for f in (source_root / "input" / "records").iterdir():
+        (tmp_path / "records" / f.name).write_bytes(f.read_bytes())
+    (tmp_path / "off.nml").write_text(text.replace("out/newmark_intensity", "off/x"))
+    proc = subprocess.run([driver, "off.nml"], cwd=tmp_path, capture_output=True, text=True,
+                          timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    assert sorted(p.name for p in (tmp_path / "off").iterdir()) == ["x_newmark.csv",
+                                                                    "x_newmark.txt"]
+
+
+@pytest.mark.parametrize("group, message", [
+    ("ky = 0.1, sa_periods = 0.5", "sa_periods: only with intensity = .true."),
+    ("ky = 0.1, intensity = .true., sa_periods = 0.5, -1",
+     "sa_periods(2) = -1.0: the period must be finite and >= 0 (s)"),
+    ("ky = 0.1, intensity = .true., sa_periods = 0.5, nan, 1",
+     "sa_periods(2): missing or NaN"),
+])
+def test_driver_intensity_input_errors(driver, source_root, tmp_path, group, message):
+    import subprocess
+    rec = source_root / "input" / "records" / "quake_a.AT2"
+    (tmp_path / "e.nml").write_text(f"&run analysis = 'newmark', output = 'o' /\n"
+                                    f"&records files = '{rec}' /\n&newmark {group} /\n")
+    proc = subprocess.run([driver, "e.nml"], cwd=tmp_path, capture_output=True, text=True,
+                          timeout=60)
+    assert proc.returncode == 2
+    assert f"e.nml:3: &newmark: {message}" in proc.stderr
+    assert not list(tmp_path.glob("o_*"))
+
+
+def test_readme_example(source_root, monkeypatch, capsys):
+    """The example of the README's "Intensity measures" section prints what it says."""
+    text = (source_root / "README.md").read_text(encoding="utf-8")
+    section = text[text.index("\n## Intensity measures\n"):]
+    code = section[section.index("```python\n") + 10:section.index("\n```\n")]
+    shown = section[section.index("prints (run from the source tree)"):]
+    shown = shown[shown.index("```\n") + 4:]
+    shown = shown[:shown.index("```")]
+    monkeypatch.chdir(source_root)
+    exec(compile(code, "README.md (Intensity measures)", "exec"), {})
+    assert capsys.readouterr().out == shown

@@ -83,6 +83,14 @@ and its inverse (x -1):
     u += dt/2 (v + v_prev).
 With mu the yields and factors are Eq. 1.31 and doc/sliding.md section 7 (resistances() above, A_g
 = 1 g). A record file that does not exist gives NaN results and status 1 in its rows.
+With &newmark intensity = .true. the intensity table goes to <case>.intensity.ref, per
+record (scaled as above) in mpmath (40 digits): PGA; PGV and PGD as the largest |v|, |d|
+at the samples and at the stationary points inside the steps (v and d integrated step by
+step, the roots of v by mpmath's polyroots); Arias intensity and CAV by Gauss-Legendre
+quadrature (mp.quad) of a^2 and |a| on each step (split at the zero of a); the Husid
+times by the real root in the step of the cubic cumulative integral (polyroots); Tm by a
+DFT summed directly at k/(N dt), N the power of two >= max(n, 1/(0.05 dt)); Sa from the
+oscillator pieces of analysis 'sdof' below (true peaks, damping 0.05), (2 pi/T)^2 SD/g.
 """
 import math
 import re
@@ -1081,12 +1089,118 @@ def csv_cell(x):
 
 
 def make_newmark_ref(nml_path, nml):
-    with mp.workdps(40):
-        header, rows = newmark_rows(nml_path, nml)
-        lines = [header] + [",".join(csv_cell(x) for x in row) for row in rows]
-    out = Path(nml_path).with_suffix(".ref")
-    out.write_text("\n".join(lines) + "\n")
-    print(f"wrote {out} ({len(lines) - 1} rows)")
+    tables = [(".ref", newmark_rows)]
+    if bool(nml["newmark"].get("intensity", False)):
+        tables.append((".intensity.ref", intensity_rows))
+    for suffix, table_rows in tables:
+        with mp.workdps(40):
+            header, rows = table_rows(nml_path, nml)
+            lines = [header] + [",".join(csv_cell(x) for x in row) for row in rows]
+        out = Path(nml_path).with_suffix(suffix)
+        out.write_text("\n".join(lines) + "\n")
+        print(f"wrote {out} ({len(lines) - 1} rows)")
+
+
+def real_roots_in(coeffs, lo, hi):
+    """Real roots in [lo, hi] of the polynomial (highest power first; leading zeros
+    dropped)."""
+    while coeffs and coeffs[0] == 0:
+        coeffs = coeffs[1:]
+    if len(coeffs) < 2:
+        return []
+    roots = mp.polyroots(coeffs, maxsteps=200, extraprec=200) if len(coeffs) > 2 \
+        else [-coeffs[1] / coeffs[0]]
+    out = []
+    for r in roots:
+        r = mp.mpc(r)
+        if abs(r.imag) <= mpf(10) ** (-mp.dps + 8) * (1 + abs(r.real)) and lo <= r.real <= hi:
+            out.append(r.real)
+    return out
+
+
+def record_measures(acc, dt, g):
+    """PGA (g), PGV (m/s), PGD (m), Arias (m/s), CAV (m/s), D5-75, D5-95 (s), Tm (s) of
+    the record acc (g, linear between samples from rest)."""
+    n = len(acc)
+    pga = max(abs(x) for x in acc)
+    # velocity and displacement, with their stationary points inside the steps
+    v = d = mpf(0)
+    pgv = pgd = mpf(0)
+    for a0, a1 in zip(acc[:-1], acc[1:]):
+        s = (a1 - a0) / dt
+        vel = lambda t: v + g * (a0 * t + s * t * t / 2)                      # noqa: E731
+        dis = lambda t: d + v * t + g * (a0 * t * t / 2 + s * t ** 3 / 6)     # noqa: E731
+        for t in real_roots_in([s, a0], 0, dt):
+            pgv = max(pgv, abs(vel(t)))
+        for t in real_roots_in([g * s / 2, g * a0, v], 0, dt):
+            pgd = max(pgd, abs(dis(t)))
+        v, d = vel(dt), dis(dt)
+        pgv, pgd = max(pgv, abs(v)), max(pgd, abs(d))
+    # Arias and CAV by quadrature step by step; the cumulative curve at the samples
+    cum = [mpf(0)]
+    cav = mpf(0)
+    for a0, a1 in zip(acc[:-1], acc[1:]):
+        f = lambda t: (a0 + (a1 - a0) * t / dt)                                # noqa: E731
+        cum.append(cum[-1] + mp.quad(lambda t: f(t) ** 2, [0, dt]))
+        if a0 * a1 < 0:
+            t0 = dt * a0 / (a0 - a1)
+            cav += mp.quad(lambda t: abs(f(t)), [0, t0, dt])
+        else:
+            cav += mp.quad(lambda t: abs(f(t)), [0, dt])
+    arias = mp.pi / (2 * g) * g * g * cum[-1]
+    cav *= g
+
+    def husid(p):
+        target = p * cum[-1]
+        k = next(i for i in range(n - 1) if cum[i + 1] >= target)
+        a0, s = acc[k], (acc[k + 1] - acc[k]) / dt
+        delta = target - cum[k]
+        # int_0^t (a0 + s u)^2 du = a0^2 t + a0 s t^2 + s^2 t^3 / 3 = delta
+        roots = real_roots_in([s * s / 3, a0 * s, a0 * a0, -delta], 0, dt)
+        return k * dt + min(roots)
+
+    t5, t75, t95 = husid(mpf("0.05")), husid(mpf("0.75")), husid(mpf("0.95"))
+    # Tm: DFT summed directly at the frequencies of the band
+    npad = 1
+    while npad < max(n, int(mp.ceil(1 / (mpf("0.05") * dt)))):
+        npad *= 2
+    s0 = s1 = mpf(0)
+    for k in range(1, npad // 2 + 1):
+        f = k / (npad * dt)
+        if f > 20:
+            break
+        if f < mpf("0.25"):
+            continue
+        x = mp.fsum(a * mp.expjpi(-mpf(2 * ((j * k) % npad)) / npad)
+                    for j, a in enumerate(acc))
+        c2 = abs(x) ** 2
+        s0 += c2
+        s1 += c2 / f
+    return [pga, pgv, pgd, arias, cav, t75 - t5, t95 - t5, s1 / s0]
+
+
+def intensity_rows(nml_path, nml):
+    nb = nml["newmark"]
+    g = mpf(nb.get("g", G_STANDARD))
+    periods = [float(x) for x in _as_list(nb.get("sa_periods", []))]
+    header = ("record (-),pga (g),pgv (m/s),pgd (m),arias (m/s),cav (m/s),d5_75 (s),"
+              "d5_95 (s),tm (s),"
+              + "".join(f"sa_T={repr(t)} (g)," for t in periods) + "status (-)")
+    rows = []
+    for name, acc, dt, pga in sdof_records(nml_path, nml["records"]):
+        if acc is None:
+            rows.append([name] + [mp.nan] * (8 + len(periods)) + [mpf(1)])
+            continue
+        row = [name] + record_measures(acc, dt, g)
+        for period in periods:
+            if period == 0:
+                row.append(pga)
+                continue
+            (sd, _, _), _ = sdof_record_response(acc, dt, period, mpf("0.05"), g, True)
+            w = 2 * mp.pi / mpf(period)
+            row.append(w * w * sd / g)
+        rows.append(row + [mpf(0)])
+    return header, rows
 
 
 # ---------------------------------------------------------------------------

@@ -1,4 +1,4 @@
-!> A small radix-2 fast Fourier transform (iterative Cooley-Tukey, decimation in time).
+!> A small radix-2 fast Fourier transform (iterative Cooley-Tukey [CT65], decimation in time).
 !>
 !> Convention (that of numpy.fft.fft): for x of length n = 2^m,
 !>     X_k = sum_{j=0}^{n-1} x_j exp(-2 pi i j k / n),   k = 0 .. n-1,

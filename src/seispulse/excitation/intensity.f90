@@ -55,7 +55,7 @@ module seispulse_intensity
 
     !> The Husid crossing inside one step: F(u) - delta, with F(u) the integral of the
     !> squared (scaled) acceleration from the start of the step to u dt, over dt
-    !> (doc/intensity.md (I.8)).
+    !> (doc/intensity.md (I.10)).
     type, extends(scalar_function) :: husid_step_t
         real(dp) :: bi = 0.0_dp     !! scaled acceleration at the start of the step
         real(dp) :: bj = 0.0_dp     !! scaled acceleration at its end
@@ -117,14 +117,14 @@ contains
         call scaled_integrals(accel / scale, cum, s_cav)
         e_tot = cum(n)
         im%arias = safe_product([pi / 2.0_dp, g, dt, e_tot, scale, scale])  ! (I.5), (I.6)
-        im%cav = safe_product([g, dt, s_cav, scale])                         ! (I.9), (I.10)
+        im%cav = safe_product([g, dt, s_cav, scale])                         ! (I.7), (I.8)
         if (im%arias < 0.0_dp .or. im%cav < 0.0_dp) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel, dt, g: the Arias ' &
                            //'intensity or the CAV overflows')
             return
         end if
 
-        ! Husid times (I.7), (I.8) and durations (I.11), (I.12)
+        ! Husid times (I.9), (I.10) and durations (I.11), (I.12)
         if (e_tot > 0.0_dp) then
             if (present(husid)) husid(:) = cum / e_tot
             call husid_time(accel / scale, dt, cum, 0.05_dp, im%t5, stat, errmsg)
@@ -310,7 +310,7 @@ contains
     end function safe_product
 
     !> The cumulative integral of b^2 over t/dt at the samples, cum(1) = 0 (I.6), and the
-    !> integral of |b| over t/dt (I.10), for b linear between samples.
+    !> integral of |b| over t/dt (I.8), for b linear between samples.
     pure subroutine scaled_integrals(b, cum, s_abs)
         real(dp), intent(in) :: b(:)
         real(dp), intent(out) :: cum(:)
@@ -324,7 +324,7 @@ contains
             y = b(i + 1)
             cum(i + 1) = cum(i) + (x * x + x * y + y * y) / 3.0_dp           ! (I.6)
             if ((x >= 0.0_dp .and. y >= 0.0_dp) .or. (x <= 0.0_dp .and. y <= 0.0_dp)) then
-                s_abs = s_abs + 0.5_dp * (abs(x) + abs(y))                   ! (I.10)
+                s_abs = s_abs + 0.5_dp * (abs(x) + abs(y))                   ! (I.8)
             else
                 s_abs = s_abs + 0.5_dp * (x * x + y * y) / (abs(x) + abs(y))
             end if
@@ -332,7 +332,7 @@ contains
     end subroutine scaled_integrals
 
     !> The first time (s from the first sample) the Husid curve reaches the fraction p:
-    !> the first step whose end value reaches p cum(n), then the root of (I.8) in it.
+    !> the first step whose end value reaches p cum(n), then the root of (I.10) in it.
     subroutine husid_time(b, dt, cum, p, t, stat, errmsg)
         real(dp), intent(in) :: b(:), dt, cum(:), p
         real(dp), intent(out) :: t
@@ -367,7 +367,7 @@ contains
     end subroutine husid_time
 
     !> F(u) - delta, F(u) = b_i^2 (1 - (1-u)^3)/3 + b_i b_j (u^2 - 2u^3/3) + b_j^2 u^3/3
-    !> (doc/intensity.md (I.8)), nondecreasing in u.
+    !> (doc/intensity.md (I.10)), nondecreasing in u.
     function husid_step_eval(self, x) result(y)
         class(husid_step_t), intent(inout) :: self
         real(dp), intent(in) :: x
