@@ -59,9 +59,13 @@ integrals at small angles, or b' = 2 b/sqrt(x) for the rectangle), the capacitie
 (N_ult = N_c S_u pi r^2, SF, chi, 0.8 A D S_u, W D (1 - chi)/2), and the inelastic pushover
 with G = 1 (a_poly = 0): the elastic Winkler curve of K_R0 = HK_R k_el (k/k_el)(chi).
 
-Analysis 'empirical' (given parameters only, never by running the driver): every model of
-doc/empirical.md whose inputs &empirical gives, per case, ky and model, written out here
-from the sources in mpmath (40 digits): the rigid-block regressions (E.1)-(E.12) (ky >=
+Analysis 'empirical' (never by running the driver): every model of doc/empirical.md whose
+inputs the case has, per case, ky and model, written out here from the sources in mpmath
+(40 digits). With &records the cases are the records read above (the 'newmark' part), with
+their measures from record_measures (the 'intensity' part: PGV in cm/s here), Sa(1.5 Ts)
+from the exact oscillator (the 'sdof' part; the PGA for Ts < 0.05 s) and the rigorous
+columns from newmark_exact and newmark_slammer (downslope); a record that does not exist
+gives NaN rows with status 1. The models: the rigid-block regressions (E.1)-(E.12) (ky >=
 PGA in a model of ky/PGA: 0), Bray & Travasarou (E.13)-(E.16) with the exact normal
 distribution (mpmath ncdf) or, with slammer, SLAMMER's polynomial, Rathje & Antonakos
 (E.26)-(E.32), the probability of failure (E.35) at the median.
@@ -2131,49 +2135,90 @@ def emp_pfail(d):
     return mpf("0.335") * (1 - mp.exp(-mpf("0.048") * d**mpf("1.565")))
 
 
-def empirical_rows(nml):
+def empirical_case_rows(c, p, kys, slammer, exact=None, slam=None, failed=False):
+    """The rows of case c (1-based) with inputs p ({key: mpf}, the keys given): per ky,
+    every model whose inputs p has, in the driver's order. exact, slam: the rigorous
+    columns per ky (cm; NaN without records). failed: a record that could not be read
+    (the rows its given inputs and a record's measures would allow, NaN, status 1)."""
+    nan, rows = mpf("nan"), []
+    inputs = [p.get(k, nan) for k in EMP_KEYS]
+    have = set(p)
+    if failed:
+        have |= {"pga", "pgv", "arias", "tm"} | ({"sa_15ts"} if "ts" in p else set())
+    for i, ky in enumerate(kys):
+        ex = exact[i] if exact else nan
+        sl = slam[i] if slam else nan
+
+        def row(name, d, sigma, base, p0=nan, kmax=nan):
+            if failed:
+                rows.append([name, mpf(c), ky] + inputs + [nan] * 8 + [ex, sl, mpf(1)])
+                return
+            if d == 0 and sigma != sigma:       # ky >= PGA: no sliding
+                d16 = d84 = pf = mpf(0)
+                base = nan
+            else:
+                fac = base**sigma
+                d16, d84, pf = d / fac, d * fac, emp_pfail(d)
+            rows.append([name, mpf(c), ky] + inputs
+                        + [d, sigma, base, d16, d84, p0, pf, kmax, ex, sl, mpf(0)])
+        for name, needs, base, med, sig in emp_rigid_models():
+            if not set(needs) <= have:
+                continue
+            b = mpf(10) if base == 10 else mp.e
+            if failed:
+                row(name, nan, nan, b)
+            elif "pga" in needs and not ky < p["pga"]:
+                row(name, mpf(0), nan, b)
+            else:
+                row(name, med(ky, p), sig(ky, p), b)
+        if {"ts", "sa_15ts", "magnitude"} <= have:
+            d, p0 = (nan, nan) if failed else emp_bt07(ky, p, slammer)
+            row("bray_travasarou_2007", d, mpf("0.66"), mp.e, p0=p0)
+        for form, need in (("m", "magnitude"), ("pgv", "pgv")):
+            if {"ts", "tm", "pga", need} <= have:
+                d, sigma, kmax = (nan, nan, nan) if failed else emp_ra11(ky, p, form, slammer)
+                row("rathje_antonakos_2011_" + form, d, sigma, mp.e, kmax=kmax)
+    return rows
+
+
+def empirical_rows(nml_path, nml):
     e = nml["empirical"]
     slammer = bool(e.get("slammer", False))
     kys = [mpf(x) for x in _as_list(e["ky"])]
     given = {k: [mpf(x) for x in _as_list(e[k])] for k in EMP_KEYS if k in e}
-    ncase = max(len(v) for v in given.values())
-    nan, rows = mpf("nan"), []
-    for c in range(ncase):
+    if "records" not in nml:
+        ncase = max(len(v) for v in given.values())
+        return [r for c in range(ncase) for r in empirical_case_rows(
+            c + 1, {k: v[min(c, len(v) - 1)] for k, v in given.items()}, kys, slammer)]
+    # records: each record's own PGA, PGV (cm/s), Ia, Tm and Sa(1.5 Ts) (the PGA for
+    # Ts < 0.05 s), the rigorous rigid block downslope (exact in mpmath, SLAMMER's loop)
+    g = mpf(e.get("g", G_STANDARD))
+    zeta = mpf(e.get("damping", 0.05))
+    rows = []
+    for c, (name, acc, dt, pga) in enumerate(sdof_records(nml_path, nml["records"])):
         p = {k: v[min(c, len(v) - 1)] for k, v in given.items()}
-        inputs = [p.get(k, nan) for k in EMP_KEYS]
-        for ky in kys:
-            def row(name, d, sigma, base, p0=nan, kmax=nan):
-                if d == 0 and sigma != sigma:       # ky >= PGA: no sliding
-                    d16 = d84 = pf = mpf(0)
-                    base = nan
-                else:
-                    fac = base**sigma
-                    d16, d84, pf = d / fac, d * fac, emp_pfail(d)
-                rows.append([name, mpf(c + 1), ky] + inputs
-                            + [d, sigma, base, d16, d84, p0, pf, kmax, nan, nan, mpf(0)])
-            for name, needs, base, med, sig in emp_rigid_models():
-                if not all(k in p for k in needs):
-                    continue
-                b = mpf(10) if base == 10 else mp.e
-                if "pga" in needs and not ky < p["pga"]:
-                    row(name, mpf(0), nan, b)
-                    continue
-                row(name, med(ky, p), sig(ky, p), b)
-            if all(k in p for k in ("ts", "sa_15ts", "magnitude")):
-                d, p0 = emp_bt07(ky, p, slammer)
-                row("bray_travasarou_2007", d, mpf("0.66"), mp.e, p0=p0)
-            for form, need in (("m", "magnitude"), ("pgv", "pgv")):
-                if all(k in p for k in ("ts", "tm", "pga", need)):
-                    d, sigma, kmax = emp_ra11(ky, p, form, slammer)
-                    row("rathje_antonakos_2011_" + form, d, sigma, mp.e, kmax=kmax)
+        if acc is None:
+            rows += empirical_case_rows(c + 1, p, kys, slammer, failed=True)
+            continue
+        pga_m, pgv, _, arias, _, _, _, tm = record_measures(acc, dt, g)
+        p.update(pga=pga_m, pgv=100 * pgv, arias=arias, tm=tm)
+        if "ts" in p:
+            if p["ts"] < mpf("0.05"):
+                p["sa_15ts"] = pga_m
+            else:
+                period = 3 * p["ts"] / 2
+                (sd, _, _), _ = sdof_record_response(acc, dt, period, zeta, g, True)
+                p["sa_15ts"] = (2 * mp.pi / period)**2 * sd / g
+        inf = mpf("inf")
+        exact = [100 * g * newmark_exact(acc, dt, ky, inf, mpf(1), mpf(1))[0] for ky in kys]
+        slam = [newmark_slammer(acc, dt, ky, g)[0] for ky in kys]
+        rows += empirical_case_rows(c + 1, p, kys, slammer, exact, slam)
     return rows
 
 
 def make_empirical_ref(nml_path, nml):
-    if "records" in nml:
-        raise ValueError("empirical references: given parameters only (no &records)")
     with mp.workdps(40):
-        rows = empirical_rows(nml)
+        rows = empirical_rows(nml_path, nml)
         lines = [EMP_HEADER] + [",".join(csv_cell(x) for x in row) for row in rows]
     out = Path(nml_path).with_suffix(".ref")
     out.write_text("\n".join(lines) + "\n")
