@@ -3,9 +3,9 @@
 !> Reads &run (analysis, output) and the groups of that analysis, echoes the
 !> effective input, writes the tables and says where they went. Any problem is one
 !> line on stderr naming file, line, group, key and problem, and exit status 2.
-!> Analyses 'newmark', 'sdof', 'cylinder' and 'winkler' (a history on records) go on past a
-!> record that cannot be read: its rows fail, the tables are written with all rows, and the
-!> exit status is 1.
+!> Analyses 'newmark', 'sdof', 'cylinder', 'winkler' (a history on records) and 'empirical'
+!> (on records) go on past a record that cannot be read: its rows fail, the tables are
+!> written with all rows, and the exit status is 1.
 program seispulse_driver
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     use, intrinsic :: iso_c_binding, only: c_int
@@ -21,6 +21,7 @@ program seispulse_driver
     use driver_walls, only: run_walls, walls_groups
     use driver_cylinder, only: run_cylinder, cylinder_groups
     use driver_winkler, only: run_winkler, winkler_groups
+    use driver_empirical, only: run_empirical, empirical_groups
     use driver_run_group, only: run_analysis, run_output, read_run, run_keys, write_run
     implicit none
 
@@ -36,13 +37,14 @@ program seispulse_driver
     !> error (nothing written).
     integer, parameter :: EXIT_OK = 0, EXIT_ROWS_FAILED = 1, EXIT_INPUT_ERROR = 2
 
-    character(len=10), parameter :: analyses(10) = [character(len=10) :: 'pulse', 'sliding', &
-        'rocking', 'newmark', 'sdof', 'sdof_beta', 'sdof_shock', 'walls', 'cylinder', 'winkler']
+    character(len=10), parameter :: analyses(11) = [character(len=10) :: 'pulse', 'sliding', &
+        'rocking', 'newmark', 'sdof', 'sdof_beta', 'sdof_shock', 'walls', 'cylinder', 'winkler', &
+        'empirical']
     !> Every group of any analysis (besides run), for the first check.
-    character(len=12), parameter :: all_groups(20) = [character(len=12) :: 'pulse', 'time', &
+    character(len=12), parameter :: all_groups(21) = [character(len=12) :: 'pulse', 'time', &
         'block', 'method', 'history', 'rocking', 'map', 'records', 'newmark', 'sdof', &
         'sdof_history', 'sdof_beta', 'sdof_shock', 'wall', 'backfill', 'seismic', 'body', &
-        'cylinder', 'roll', 'winkler']
+        'cylinder', 'roll', 'winkler', 'empirical']
 
     character(len=:), allocatable :: path, errmsg
     character(len=4096) :: arg
@@ -117,6 +119,11 @@ program seispulse_driver
         call start(winkler_groups)
         call run_winkler(path, groups, run_output(), stat, errmsg)
         ! the tables are written; some records failed (each already reported)
+        if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
+    case ('empirical')
+        call start(empirical_groups)
+        call run_empirical(path, groups, run_output(), stat, errmsg)
+        ! the table is written; some rows failed (each already reported)
         if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
     case ('')
         call fail(located(path, groups(irun))//'analysis: missing (allowed: '//join(analyses)//')')

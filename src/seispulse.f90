@@ -119,6 +119,27 @@ module seispulse
                                         flexible_soil_code, SOIL_LINEAR, &
                                         SOIL_EQUIVALENT_LINEAR, FLEX_SLAMMER, FLEX_EXACT
     use seispulse_flexible, only: flexible_decoupled, flexible_coupled
+    use seispulse_empirical, only: jibson_1993, jibson_1998, jibson_2007_ratio, &
+                                   jibson_2007_ratio_m, jibson_2007_arias, &
+                                   jibson_2007_arias_ratio, ambraseys_menu_1988, &
+                                   saygili_rathje_2008_pga, saygili_rathje_2008_pgv, &
+                                   saygili_rathje_2008_pgv_arias, rathje_saygili_2009, &
+                                   sr08_pgv_sigma, sr08_pgv_arias_sigma, rs09_sigma, &
+                                   bt07_ln_disp, bt07_p_zero, bt07_p_zero_slammer, &
+                                   ra11_kmax_ratio, ra11_kvelmax_ratio, probability_of_failure, &
+                                   empirical_rigid, empirical_model_name, empirical_model_code, &
+                                   empirical_needs, empirical_check, bray_travasarou_2007, &
+                                   rathje_antonakos_2011, probability_of_failure_checked, &
+                                   EMP_JIBSON_1993, EMP_JIBSON_1998, EMP_JIBSON_2007_RATIO, &
+                                   EMP_JIBSON_2007_RATIO_M, EMP_JIBSON_2007_ARIAS, &
+                                   EMP_JIBSON_2007_ARIAS_RATIO, EMP_AMBRASEYS_MENU_1988, &
+                                   EMP_SR08_PGA, EMP_SR08_PGA_PGV, EMP_SR08_PGA_PGV_ARIAS, &
+                                   EMP_RS09_PGA_M, EMP_RIGID_MODELS, EMP_LOG10, EMP_LN, &
+                                   EMP_RA11_PGA_M, EMP_RA11_PGA_PGV, EMP_NEED_PGA, EMP_NEED_PGV, &
+                                   EMP_NEED_ARIAS, EMP_NEED_M, J93_SIGMA, J98_SIGMA, &
+                                   J07_RATIO_SIGMA, J07_RATIO_M_SIGMA, J07_ARIAS_SIGMA, &
+                                   J07_ARIAS_RATIO_SIGMA, AM88_SIGMA, SR08_PGA_SIGMA, BT07_SIGMA, &
+                                   BT07_TS_RIGID
     use seispulse_sdof_sim, only: sdof_step_t, sdof_step, sdof_validate, sdof_response, &
                                   sdof_spectrum, pseudo_spectra, design_envelope, spectral_shape, &
                                   sdof_threads, SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES

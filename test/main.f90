@@ -31,6 +31,7 @@ program tester
     use test_walls_vy, only: collect_walls_vy
     use test_walls_one_term, only: collect_walls_one_term
     use test_codes, only: collect_codes
+    use test_empirical, only: collect_empirical
     implicit none
     character(len=64) :: wanted
     integer :: npass, nfail, nrun
@@ -152,6 +153,10 @@ program tester
     if (selected('codes')) then
         call collect_codes(tests)
         call run_suite('codes', tests, output_unit, npass, nfail)
+    end if
+    if (selected('empirical')) then
+        call collect_empirical(tests)
+        call run_suite('empirical', tests, output_unit, npass, nfail)
     end if
     if (nrun == 0) then
         write(error_unit, '(a)') 'unknown suite: '//trim(wanted)

@@ -59,6 +59,17 @@ integrals at small angles, or b' = 2 b/sqrt(x) for the rectangle), the capacitie
 (N_ult = N_c S_u pi r^2, SF, chi, 0.8 A D S_u, W D (1 - chi)/2), and the inelastic pushover
 with G = 1 (a_poly = 0): the elastic Winkler curve of K_R0 = HK_R k_el (k/k_el)(chi).
 
+Analysis 'empirical' (never by running the driver): every model of doc/empirical.md whose
+inputs the case has, per case, ky and model, written out here from the sources in mpmath
+(40 digits). With &records the cases are the records read above (the 'newmark' part), with
+their measures from record_measures (the 'intensity' part: PGV in cm/s here), Sa(1.5 Ts)
+from the exact oscillator (the 'sdof' part; the PGA for Ts < 0.05 s) and the rigorous
+columns from newmark_exact and newmark_slammer (downslope); a record that does not exist
+gives NaN rows with status 1. The models: the rigid-block regressions (E.1)-(E.12) (ky >=
+PGA in a model of ky/PGA: 0), Bray & Travasarou (E.13)-(E.16) with the exact normal
+distribution (mpmath ncdf) or, with slammer, SLAMMER's polynomial, Rathje & Antonakos
+(E.26)-(E.32), the probability of failure (E.35) at the median.
+
 Analysis 'newmark' (never by running the driver): the record files are read here by a
 small parser of their own (AT2, SLAMMER CSV, two columns, one column; the decimals taken
 exactly), turned over by the polarity and scaled (scale, or target_pga over the PGA,
@@ -1981,12 +1992,234 @@ def make_ref(nml_path):
     if analysis == "winkler":
         make_winkler_ref(nml_path, nml)
         return
+    if analysis == "empirical":
+        make_empirical_ref(nml_path, nml)
+        return
     func, g = pulse_function(nml["pulse"])
     lines = [HEADER]
     for t in time_grid(nml["time"]):
         a, v, d = func(t)
         row = (mpf(t), a, a / mpf(g), v, d)
         lines.append(",".join(repr(float(x)) for x in row))
+    out = Path(nml_path).with_suffix(".ref")
+    out.write_text("\n".join(lines) + "\n")
+    print(f"wrote {out} ({len(lines) - 1} rows)")
+
+
+# ---------------------------------------------------------------------------
+# Analysis 'empirical' (given parameters; never by running the driver): the regressions
+# of doc/empirical.md (E.1)-(E.35) written out here from the sources, in mpmath
+# ---------------------------------------------------------------------------
+
+EMP_KEYS = ("pga", "pgv", "arias", "magnitude", "ts", "sa_15ts", "tm")
+EMP_HEADER = ("model (-),case (-),ky (g),pga (g),pgv (cm/s),arias (m/s),magnitude (-),ts (s),"
+              "sa_15ts (g),tm (s),disp (cm),sigma (-),base (-),d16 (cm),d84 (cm),p_zero (-),"
+              "p_failure (-),kmax (g),newmark_exact (cm),newmark_slammer (cm),status (-)")
+
+
+def emp_log10_ratio(r, a, b):
+    return a * mp.log10(1 - r) + b * mp.log10(r)
+
+
+def emp_quartic(r, c):
+    return c[0] + c[1] * r + c[2] * r**2 + c[3] * r**3 + c[4] * r**4
+
+
+def emp_rs09(ky, pga, m):
+    r = ky / pga
+    return mp.exp(emp_quartic(r, (4.89, -4.85, -19.64, 42.49, -29.06)) + mpf("0.72") * mp.log(pga)
+                  + mpf("0.89") * (m - 6))
+
+
+def emp_sr08_pgv(ky, pga, pgv):
+    r = ky / pga
+    return mp.exp(emp_quartic(r, (-1.56, -4.58, -20.84, 44.75, -30.50))
+                  - mpf("0.64") * mp.log(pga) + mpf("1.55") * mp.log(pgv))
+
+
+def emp_rigid_models():
+    """(name, inputs, log base, median(ky, p), sigma(ky, p)) of (E.1)-(E.12); p the dict of
+    inputs (mpf)."""
+    m = lambda x: mpf(str(x))
+    return [
+        ("jibson_1993", ("arias",), 10,
+         lambda k, p: 10**(m(1.460) * mp.log10(p["arias"]) - m(6.642) * k + m(1.546)),
+         lambda k, p: m(0.409)),
+        ("jibson_1998", ("arias",), 10,
+         lambda k, p: 10**(m(1.521) * mp.log10(p["arias"]) - m(1.993) * mp.log10(k) - m(1.546)),
+         lambda k, p: m(0.375)),
+        ("jibson_2007_ratio", ("pga",), 10,
+         lambda k, p: 10**(m(0.215) + emp_log10_ratio(k / p["pga"], m(2.341), m(-1.438))),
+         lambda k, p: m(0.510)),
+        ("jibson_2007_ratio_m", ("pga", "magnitude"), 10,
+         lambda k, p: 10**(m(-2.710) + emp_log10_ratio(k / p["pga"], m(2.335), m(-1.478))
+                           + m(0.424) * p["magnitude"]),
+         lambda k, p: m(0.454)),
+        ("jibson_2007_arias", ("arias",), 10,
+         lambda k, p: 10**(m(2.401) * mp.log10(p["arias"]) - m(3.481) * mp.log10(k) - m(3.230)),
+         lambda k, p: m(0.656)),
+        ("jibson_2007_arias_ratio", ("pga", "arias"), 10,
+         lambda k, p: 10**(m(0.561) * mp.log10(p["arias"]) - m(3.833) * mp.log10(k / p["pga"])
+                           - m(1.474)),
+         lambda k, p: m(0.616)),
+        ("ambraseys_menu_1988", ("pga",), 10,
+         lambda k, p: 10**(m(0.90) + emp_log10_ratio(k / p["pga"], m(2.53), m(-1.09))),
+         lambda k, p: m(0.30)),
+        ("saygili_rathje_2008_pga", ("pga",), 0,
+         lambda k, p: mp.exp(emp_quartic(k / p["pga"], [m(x) for x in (5.52, -4.43, -20.39,
+                                                                      42.61, -28.74)])
+                             + m(0.72) * mp.log(p["pga"])),
+         lambda k, p: m(1.13)),
+        ("saygili_rathje_2008_pgv", ("pga", "pgv"), 0,
+         lambda k, p: emp_sr08_pgv(k, p["pga"], p["pgv"]),
+         lambda k, p: m(0.41) + m(0.52) * k / p["pga"]),
+        ("saygili_rathje_2008_pgv_ia", ("pga", "pgv", "arias"), 0,
+         lambda k, p: mp.exp(emp_quartic(k / p["pga"], [m(x) for x in (-0.74, -4.93, -19.91,
+                                                                      43.75, -30.12)])
+                             - m(1.30) * mp.log(p["pga"]) + m(1.04) * mp.log(p["pgv"])
+                             + m(0.67) * mp.log(p["arias"])),
+         lambda k, p: m(0.20) + m(0.79) * k / p["pga"]),
+        ("rathje_saygili_2009", ("pga", "magnitude"), 0,
+         lambda k, p: emp_rs09(k, p["pga"], p["magnitude"]),
+         lambda k, p: m(0.732) + m(0.789) * k / p["pga"] - m(0.539) * (k / p["pga"])**2),
+    ]
+
+
+def emp_bt07(ky, p, slammer):
+    """(E.13)-(E.16): (disp cm, P(D = 0))."""
+    lk, ls, ts = mp.log(ky), mp.log(p["sa_15ts"]), p["ts"]
+    lnd = (-mpf("2.83") * lk - mpf("0.333") * lk**2 + mpf("0.566") * lk * ls + mpf("3.04") * ls
+           - mpf("0.244") * ls**2 + mpf("0.278") * (p["magnitude"] - 7))
+    if ts < mpf("0.05") and not slammer:
+        lnd += mpf("-0.22")
+    else:
+        lnd += mpf("-1.10") + mpf("1.50") * ts
+    x = -mpf("1.76") - mpf("3.22") * lk - mpf("0.484") * ts * lk + mpf("3.52") * ls
+    if slammer:
+        t = 1 / (1 + mpf("0.2316419") * x)
+        b = [mpf(v) for v in ("0.319381530", "-0.356563782", "1.781477937", "-1.821255978",
+                              "1.330274429")]
+        p0 = mp.npdf(x) * sum(bk * t**(i + 1) for i, bk in enumerate(b))
+    else:
+        p0 = 1 - mp.ncdf(x)
+    return mp.exp(lnd), p0
+
+
+def emp_ra11(ky, p, form, slammer):
+    """(E.26)-(E.32): (disp cm, sigma, kmax)."""
+    ts, pga = p["ts"], p["pga"]
+    pr = ts / p["tm"]
+    if slammer:
+        pr = min(pr, mpf(8))
+    kmax = pga if pr < mpf("0.1") else pga * mp.exp(
+        (mpf("0.459") - mpf("0.702") * pga) * mp.log(pr / mpf("0.1"))
+        + (mpf("-0.228") + mpf("0.076") * pga) * mp.log(pr / mpf("0.1"))**2)
+    r = ky / kmax
+    if form == "m":
+        sigma = mpf("0.694") + mpf("0.322") * r
+        f = mpf("3.69") * ts - mpf("1.22") * ts**2 if ts <= mpf("1.5") else mpf("2.78")
+        d = emp_rs09(ky, kmax, p["magnitude"]) * mp.exp(f) if r < 1 else mpf(0)
+    else:
+        kvel = p["pgv"] if pr < mpf("0.2") else p["pgv"] * mp.exp(
+            mpf("0.240") * mp.log(pr / mpf("0.2"))
+            + (mpf("-0.091") - mpf("0.171") * pga) * mp.log(pr / mpf("0.2"))**2)
+        sigma = mpf("0.400") + mpf("0.284") * r
+        f = mpf("1.42") * ts if ts <= mpf("0.5") else mpf("0.71")
+        d = emp_sr08_pgv(ky, kmax, kvel) * mp.exp(f) if r < 1 else mpf(0)
+    if slammer and ky > pga:
+        d = mpf(0)
+    return d, sigma, kmax
+
+
+def emp_pfail(d):
+    return mpf("0.335") * (1 - mp.exp(-mpf("0.048") * d**mpf("1.565")))
+
+
+def empirical_case_rows(c, p, kys, slammer, exact=None, slam=None, failed=False):
+    """The rows of case c (1-based) with inputs p ({key: mpf}, the keys given): per ky,
+    every model whose inputs p has, in the driver's order. exact, slam: the rigorous
+    columns per ky (cm; NaN without records). failed: a record that could not be read
+    (the rows its given inputs and a record's measures would allow, NaN, status 1)."""
+    nan, rows = mpf("nan"), []
+    inputs = [p.get(k, nan) for k in EMP_KEYS]
+    have = set(p)
+    if failed:
+        have |= {"pga", "pgv", "arias", "tm"} | ({"sa_15ts"} if "ts" in p else set())
+    for i, ky in enumerate(kys):
+        ex = exact[i] if exact else nan
+        sl = slam[i] if slam else nan
+
+        def row(name, d, sigma, base, p0=nan, kmax=nan):
+            if failed:
+                rows.append([name, mpf(c), ky] + inputs + [nan] * 8 + [ex, sl, mpf(1)])
+                return
+            if d == 0 and sigma != sigma:       # ky >= PGA: no sliding
+                d16 = d84 = pf = mpf(0)
+                base = nan
+            else:
+                fac = base**sigma
+                d16, d84, pf = d / fac, d * fac, emp_pfail(d)
+            rows.append([name, mpf(c), ky] + inputs
+                        + [d, sigma, base, d16, d84, p0, pf, kmax, ex, sl, mpf(0)])
+        for name, needs, base, med, sig in emp_rigid_models():
+            if not set(needs) <= have:
+                continue
+            b = mpf(10) if base == 10 else mp.e
+            if failed:
+                row(name, nan, nan, b)
+            elif "pga" in needs and not ky < p["pga"]:
+                row(name, mpf(0), nan, b)
+            else:
+                row(name, med(ky, p), sig(ky, p), b)
+        if {"ts", "sa_15ts", "magnitude"} <= have:
+            d, p0 = (nan, nan) if failed else emp_bt07(ky, p, slammer)
+            row("bray_travasarou_2007", d, mpf("0.66"), mp.e, p0=p0)
+        for form, need in (("m", "magnitude"), ("pgv", "pgv")):
+            if {"ts", "tm", "pga", need} <= have:
+                d, sigma, kmax = (nan, nan, nan) if failed else emp_ra11(ky, p, form, slammer)
+                row("rathje_antonakos_2011_" + form, d, sigma, mp.e, kmax=kmax)
+    return rows
+
+
+def empirical_rows(nml_path, nml):
+    e = nml["empirical"]
+    slammer = bool(e.get("slammer", False))
+    kys = [mpf(x) for x in _as_list(e["ky"])]
+    given = {k: [mpf(x) for x in _as_list(e[k])] for k in EMP_KEYS if k in e}
+    if "records" not in nml:
+        ncase = max(len(v) for v in given.values())
+        return [r for c in range(ncase) for r in empirical_case_rows(
+            c + 1, {k: v[min(c, len(v) - 1)] for k, v in given.items()}, kys, slammer)]
+    # records: each record's own PGA, PGV (cm/s), Ia, Tm and Sa(1.5 Ts) (the PGA for
+    # Ts < 0.05 s), the rigorous rigid block downslope (exact in mpmath, SLAMMER's loop)
+    g = mpf(e.get("g", G_STANDARD))
+    zeta = mpf(e.get("damping", 0.05))
+    rows = []
+    for c, (name, acc, dt, pga) in enumerate(sdof_records(nml_path, nml["records"])):
+        p = {k: v[min(c, len(v) - 1)] for k, v in given.items()}
+        if acc is None:
+            rows += empirical_case_rows(c + 1, p, kys, slammer, failed=True)
+            continue
+        pga_m, pgv, _, arias, _, _, _, tm = record_measures(acc, dt, g)
+        p.update(pga=pga_m, pgv=100 * pgv, arias=arias, tm=tm)
+        if "ts" in p:
+            if p["ts"] < mpf("0.05"):
+                p["sa_15ts"] = pga_m
+            else:
+                period = 3 * p["ts"] / 2
+                (sd, _, _), _ = sdof_record_response(acc, dt, period, zeta, g, True)
+                p["sa_15ts"] = (2 * mp.pi / period)**2 * sd / g
+        inf = mpf("inf")
+        exact = [100 * g * newmark_exact(acc, dt, ky, inf, mpf(1), mpf(1))[0] for ky in kys]
+        slam = [newmark_slammer(acc, dt, ky, g)[0] for ky in kys]
+        rows += empirical_case_rows(c + 1, p, kys, slammer, exact, slam)
+    return rows
+
+
+def make_empirical_ref(nml_path, nml):
+    with mp.workdps(40):
+        rows = empirical_rows(nml_path, nml)
+        lines = [EMP_HEADER] + [",".join(csv_cell(x) for x in row) for row in rows]
     out = Path(nml_path).with_suffix(".ref")
     out.write_text("\n".join(lines) + "\n")
     print(f"wrote {out} ({len(lines) - 1} rows)")
