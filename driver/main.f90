@@ -39,10 +39,10 @@ program seispulse_driver
     character(len=10), parameter :: analyses(10) = [character(len=10) :: 'pulse', 'sliding', &
         'rocking', 'newmark', 'sdof', 'sdof_beta', 'sdof_shock', 'walls', 'cylinder', 'winkler']
     !> Every group of any analysis (besides run), for the first check.
-    character(len=12), parameter :: all_groups(20) = [character(len=12) :: 'pulse', 'time', &
+    character(len=12), parameter :: all_groups(21) = [character(len=12) :: 'pulse', 'time', &
         'block', 'method', 'history', 'rocking', 'map', 'records', 'newmark', 'sdof', &
         'sdof_history', 'sdof_beta', 'sdof_shock', 'wall', 'backfill', 'seismic', 'body', &
-        'cylinder', 'roll', 'winkler']
+        'cylinder', 'roll', 'winkler', 'slope']
 
     character(len=:), allocatable :: path, errmsg
     character(len=4096) :: arg
