@@ -109,6 +109,13 @@ module seispulse
                                  newmark_method_name, newmark_mode_code, newmark_method_code, &
                                  NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM, NEWMARK_EXACT, &
                                  NEWMARK_SLAMMER
+    use seispulse_flexible_model, only: flexible_mass_t, flexible_result_t, modal_peak_t, &
+                                        flexible_mass_validate, radiation_damping, &
+                                        eql_properties, ky_table_validate, eql_iterate, &
+                                        masing_damping_pct, flexible_soil_name, &
+                                        flexible_soil_code, SOIL_LINEAR, &
+                                        SOIL_EQUIVALENT_LINEAR, FLEX_SLAMMER, FLEX_EXACT
+    use seispulse_flexible, only: flexible_decoupled, flexible_coupled
     use seispulse_sdof_sim, only: sdof_step_t, sdof_step, sdof_validate, sdof_response, &
                                   sdof_spectrum, pseudo_spectra, design_envelope, spectral_shape, &
                                   sdof_threads, SDOF_PEAKS_EXACT, SDOF_PEAKS_SAMPLES

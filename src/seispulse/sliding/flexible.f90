@@ -1,0 +1,567 @@
+!> Decoupled and coupled Newmark analyses of a flexible sliding mass on a record
+!> (doc/flexible.md): the mass of seispulse_flexible_model (one shear-beam mode, radiation
+!> damping, linear or equivalent-linear soil) slides on its base when its equivalent
+!> acceleration exceeds the yield.
+!>
+!>  - decoupled: the modal response of the mass on a fixed base gives the history of the
+!>    horizontal equivalent acceleration HEA = a + (2/pi) u'' (g) (doc/flexible.md (F.7));
+!>    a rigid block driven by HEA slides downslope (or two ways, exact rule only).
+!>  - coupled [RB99]: the sliding and the modal response are solved together; while
+!>    sliding, the base of the mass carries the yield force (doc/flexible.md (F.17)-(F.22)).
+!>
+!> Two rules (the `method` argument):
+!>  - FLEX_SLAMMER: SLAMMER 1.1 [SL13] step for step, in its own units (cm, cm/s^2 with
+!>    g_cm = 100 g): incremental Newmark average acceleration from rest with the first sample
+!>    as the first load increment, the decoupled slide integrated exactly for HEA linear
+!>    over each step with the step that ends a slide discarded, the coupled stop sub-step,
+!>    and SLAMMER's stepwise yield table (doc/flexible.md section 4, (F.23)-(F.29)).
+!>  - FLEX_EXACT: the exact response to the piecewise-linear record (doc/flexible.md
+!>    sections 5-7, module seispulse_flexible_exact).
+!>
+!> Sign: positive record acceleration drives downslope (positive) sliding in both
+!> analyses. SLAMMER reaches the same by flipping the sign of its input inside the
+!> decoupled analysis and not inside the coupled one; here the coupled rule runs on the
+!> flipped record, as SLAMMER does, and its histories are turned back.
+module seispulse_flexible
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    use seispulse_kinds, only: dp
+    use seispulse_checks, only: positive
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
+                                SEISPULSE_NO_CONVERGENCE, set_error
+    use seispulse_format, only: real_str
+    use seispulse_pieces, only: record_step_check
+    use seispulse_special, only: pi
+    use seispulse_newmark, only: NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM
+    use seispulse_flexible_model, only: flexible_mass_t, flexible_result_t, modal_peak_t, &
+                                        flexible_mass_validate, ky_table_validate, eql_iterate, &
+                                        participation_modal, participation_total, &
+                                        FLEX_SLAMMER, FLEX_EXACT
+    implicit none
+    private
+
+    public :: flexible_decoupled, flexible_coupled
+
+    !> Newmark's average-acceleration parameters (doc/flexible.md (F.23), [C12])
+    real(dp), parameter :: beta = 0.25_dp, gamma = 0.5_dp
+
+    !> SLAMMER's modal response as the equivalent-linear iteration sees it: the record in
+    !> cm/s^2 and the work arrays of one pass (allocated once per analysis).
+    type, extends(modal_peak_t) :: slammer_peak_t
+        real(dp), allocatable :: acc(:)   !! record (cm/s^2)
+        real(dp) :: dt = 0.0_dp           !! time step (s)
+        real(dp), allocatable :: u(:)     !! modal displacement of a pass (cm)
+        real(dp), allocatable :: avg(:)   !! HEA of a pass (cm/s^2)
+    contains
+        procedure :: peak => slammer_peak
+    end type slammer_peak_t
+
+contains
+
+    ! ------------------------------------------------------------------------------
+    ! Public API
+    ! ------------------------------------------------------------------------------
+
+    !> Decoupled analysis: the modal response on a fixed base, then a rigid block driven
+    !> by its HEA (doc/flexible.md sections 1-4 and 6).
+    !>
+    !> accel(i) (g) at t = (i - 1) dt. Histories (optional, each of size(accel)): HEA (g),
+    !> modal displacement u (m), sliding displacement s (m, >= 0 downslope for one-way) and
+    !> velocity (m/s) at the samples. With a yield table (ky_disp, ky_values) `ky` is
+    !> ignored and the mode must be down. Non-convergence of the equivalent-linear
+    !> iteration: stat = SEISPULSE_NO_CONVERGENCE with res and the histories filled from the
+    !> last iteration (res%converged = .false.).
+    subroutine flexible_decoupled(accel, dt, ky, mass, method, g, res, stat, errmsg, &
+                                  mode, ky_up, ky_disp, ky_values, hea, u_modal, s_hist, &
+                                  sdot_hist)
+        real(dp), intent(in) :: accel(:)                      !! record (g), finite
+        real(dp), intent(in) :: dt                            !! time step (s) > 0
+        real(dp), intent(in) :: ky                            !! yield (g) > 0 (+inf: never)
+        type(flexible_mass_t), intent(in) :: mass             !! the sliding mass
+        integer, intent(in) :: method                         !! FLEX_SLAMMER or FLEX_EXACT
+        real(dp), intent(in) :: g                             !! gravity (m/s^2) > 0
+        type(flexible_result_t), intent(out) :: res           !! the result
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        integer, intent(in), optional :: mode                 !! NEWMARK_DOWN (default), _BOTH, _ASYM
+        real(dp), intent(in), optional :: ky_up               !! upslope yield (g), NEWMARK_ASYM
+        real(dp), intent(in), optional :: ky_disp(:)          !! table: displacement (m)
+        real(dp), intent(in), optional :: ky_values(:)        !! table: yield (g)
+        real(dp), intent(out), optional :: hea(:)             !! HEA at the samples (g)
+        real(dp), intent(out), optional :: u_modal(:)         !! modal displacement u (m)
+        real(dp), intent(out), optional :: s_hist(:)          !! sliding displacement (m)
+        real(dp), intent(out), optional :: sdot_hist(:)       !! sliding velocity (m/s)
+        call flexible_run(.false., accel, dt, ky, mass, method, g, res, stat, errmsg, mode, &
+                          ky_up, ky_disp, ky_values, hea, u_modal, s_hist, sdot_hist)
+    end subroutine flexible_decoupled
+
+    !> Coupled analysis [RB99]: sliding and modal response solved together (doc/flexible.md
+    !> sections 1-4 and 7). Downslope sliding only. Arguments as flexible_decoupled; hea is
+    !> the HEA of the decoupled response with the final properties (the one kmax comes from),
+    !> u_modal the modal displacement of the coupled run.
+    subroutine flexible_coupled(accel, dt, ky, mass, method, g, res, stat, errmsg, &
+                                ky_disp, ky_values, hea, u_modal, s_hist, sdot_hist)
+        real(dp), intent(in) :: accel(:)                      !! record (g), finite
+        real(dp), intent(in) :: dt                            !! time step (s) > 0
+        real(dp), intent(in) :: ky                            !! yield (g) > 0 (+inf: never)
+        type(flexible_mass_t), intent(in) :: mass             !! the sliding mass
+        integer, intent(in) :: method                         !! FLEX_SLAMMER or FLEX_EXACT
+        real(dp), intent(in) :: g                             !! gravity (m/s^2) > 0
+        type(flexible_result_t), intent(out) :: res           !! the result
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp), intent(in), optional :: ky_disp(:)          !! table: displacement (m)
+        real(dp), intent(in), optional :: ky_values(:)        !! table: yield (g)
+        real(dp), intent(out), optional :: hea(:)             !! decoupled HEA (g)
+        real(dp), intent(out), optional :: u_modal(:)         !! modal displacement u (m)
+        real(dp), intent(out), optional :: s_hist(:)          !! sliding displacement (m)
+        real(dp), intent(out), optional :: sdot_hist(:)       !! sliding velocity (m/s)
+        call flexible_run(.true., accel, dt, ky, mass, method, g, res, stat, errmsg, &
+                          ky_disp=ky_disp, ky_values=ky_values, hea=hea, u_modal=u_modal, &
+                          s_hist=s_hist, sdot_hist=sdot_hist)
+    end subroutine flexible_coupled
+
+    ! ------------------------------------------------------------------------------
+    ! Checks and dispatch
+    ! ------------------------------------------------------------------------------
+
+    !> Both analyses: checks, the equivalent-linear iteration, the rule.
+    subroutine flexible_run(coupled, accel, dt, ky, mass, method, g, res, stat, errmsg, &
+                            mode, ky_up, ky_disp, ky_values, hea, u_modal, s_hist, sdot_hist)
+        logical, intent(in) :: coupled
+        real(dp), intent(in) :: accel(:), dt, ky, g
+        type(flexible_mass_t), intent(in) :: mass
+        integer, intent(in) :: method
+        type(flexible_result_t), intent(out) :: res
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        integer, intent(in), optional :: mode
+        real(dp), intent(in), optional :: ky_up, ky_disp(:), ky_values(:)
+        real(dp), intent(out), optional :: hea(:), u_modal(:), s_hist(:), sdot_hist(:)
+        real(dp), allocatable :: tdisp(:), tky(:)
+        integer :: mode_, eql_stat
+
+        call flexible_mass_validate(mass, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        if (method /= FLEX_SLAMMER .and. method /= FLEX_EXACT) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'method: unknown code ' &
+                           //'(allowed: 1 exact, 2 slammer)')
+            return
+        end if
+        call record_step_check(accel, dt, g, stat, errmsg)   ! dt, g; not empty, finite
+        if (stat /= SEISPULSE_SUCCESS) return
+        mode_ = NEWMARK_DOWN
+        if (present(mode)) mode_ = mode
+        if (mode_ < NEWMARK_DOWN .or. mode_ > NEWMARK_ASYM) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'mode: unknown code ' &
+                           //'(allowed: 1 down, 2 both, 3 asym)')
+            return
+        end if
+        if (mode_ /= NEWMARK_DOWN .and. method /= FLEX_EXACT) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'mode: two-way sliding ' &
+                           //'(both, asym) needs the exact rule (SLAMMER slides downslope only)')
+            return
+        end if
+        if (mode_ == NEWMARK_ASYM) then
+            if (.not. present(ky_up)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky_up: required for ' &
+                               //'mode asym (g, > 0; +inf: no upslope sliding)')
+                return
+            else if (.not. positive(ky_up)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky_up = ' &
+                               //real_str(ky_up)//': must be > 0 (g; +inf: no upslope sliding)')
+                return
+            end if
+        end if
+        if (present(ky_disp) .neqv. present(ky_values)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky_disp, ky_values: give ' &
+                           //'both (a yield table) or neither')
+            return
+        end if
+        if (present(ky_disp)) then
+            call ky_table_validate(ky_disp, ky_values, stat, errmsg)
+            if (stat /= SEISPULSE_SUCCESS) return
+            if (mode_ /= NEWMARK_DOWN) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'mode: a yield table ' &
+                               //'(ky_disp, ky_values) is for downslope sliding only')
+                return
+            end if
+            allocate(tdisp(size(ky_disp)), tky(size(ky_disp)))
+            tdisp(:) = ky_disp
+            tky(:) = ky_values
+        else
+            if (.not. positive(ky)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky = '//real_str(ky) &
+                               //': must be > 0 (g; +inf: never slides)')
+                return
+            end if
+            allocate(tdisp(1), tky(1))
+            tdisp(1) = 0.0_dp
+            tky(1) = ky
+        end if
+        if (.not. same_size(hea, 'hea')) return
+        if (.not. same_size(u_modal, 'u_modal')) return
+        if (.not. same_size(s_hist, 's_hist')) return
+        if (.not. same_size(sdot_hist, 'sdot_hist')) return
+
+        if (method == FLEX_EXACT) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'method: the exact rule ' &
+                           //'is not available yet (use slammer)')
+            return
+        end if
+        call slammer_run(coupled, accel, dt, tdisp, tky, mass, g, res, eql_stat, stat, &
+                         errmsg, hea, u_modal, s_hist, sdot_hist)
+        if (stat /= SEISPULSE_SUCCESS) return
+        if (.not. (ieee_is_finite(res%max_disp) .and. ieee_is_finite(res%kmax))) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'damping = ' &
+                           //real_str(mass%damping)//': the response diverges (total ' &
+                           //'damping '//real_str(res%damping_final)//')')
+            return
+        end if
+        stat = eql_stat   ! SEISPULSE_NO_CONVERGENCE: errmsg already says so
+    contains
+
+        !> An optional history has the size of accel (else an error naming it).
+        logical function same_size(hist, name)
+            real(dp), intent(in), optional :: hist(:)
+            character(len=*), intent(in) :: name
+            same_size = .true.
+            if (.not. present(hist)) return
+            same_size = size(hist) == size(accel)
+            if (.not. same_size) call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, name &
+                                                //': must have the size of accel')
+        end function same_size
+
+    end subroutine flexible_run
+
+    ! ------------------------------------------------------------------------------
+    ! SLAMMER 1.1's arithmetic (doc/flexible.md section 4)
+    ! ------------------------------------------------------------------------------
+
+    !> FLEX_SLAMMER: both analyses in SLAMMER's units. eql_stat receives the status of the
+    !> equivalent-linear iteration (SEISPULSE_NO_CONVERGENCE is not an error here).
+    subroutine slammer_run(coupled, accel, dt, tdisp, tky, mass, g, res, eql_stat, stat, &
+                           errmsg, hea, u_modal, s_hist, sdot_hist)
+        logical, intent(in) :: coupled
+        real(dp), intent(in) :: accel(:), dt, tdisp(:), tky(:), g
+        type(flexible_mass_t), intent(in) :: mass
+        type(flexible_result_t), intent(inout) :: res
+        integer, intent(out) :: eql_stat, stat
+        character(len=*), intent(inout), optional :: errmsg
+        real(dp), intent(out), optional :: hea(:), u_modal(:), s_hist(:), sdot_hist(:)
+        type(slammer_peak_t) :: resp
+        real(dp), allocatable :: s(:), sdot(:), uc(:)
+        real(dp) :: gcm, omega, xi
+        integer :: n
+
+        n = size(accel)
+        gcm = 100.0_dp * g
+        allocate(resp%acc(n), resp%u(n), resp%avg(n))
+        resp%acc(:) = accel * gcm
+        resp%dt = dt
+
+        call eql_iterate(mass, resp, res%vs_final, res%damping_final, res%damping_radiation, &
+                         res%iterations, res%converged, eql_stat, errmsg)
+        stat = eql_stat
+        if (eql_stat /= SEISPULSE_SUCCESS .and. eql_stat /= SEISPULSE_NO_CONVERGENCE) return
+        stat = SEISPULSE_SUCCESS
+        xi = res%damping_final
+        omega = pi * res%vs_final / (2.0_dp * mass%height)                    ! (F.2)
+        res%period = 4.0_dp * mass%height / res%vs_final
+
+        ! the final decoupled response: HEA and kmax (both analyses)
+        call slammer_response(resp%acc, dt, omega, xi, resp%u, resp%avg)
+        res%kmax = signed_peak(resp%avg) / gcm
+        if (present(hea)) hea(:) = resp%avg / gcm
+
+        allocate(s(n), sdot(n))
+        if (.not. coupled) then
+            if (present(u_modal)) u_modal(:) = resp%u / 100.0_dp
+            call slammer_slide(resp%avg, dt, 100.0_dp * tdisp, tky * gcm, s, sdot, &
+                               res%max_disp, res%t_end)
+            if (present(sdot_hist)) sdot_hist(:) = -sdot / 100.0_dp   ! SLAMMER: s' < 0 sliding
+        else
+            ! SLAMMER's coupled input is the record times -1 (normal polarity)
+            allocate(uc(n))
+            resp%acc(:) = -resp%acc
+            call slammer_coupled(resp%acc, dt, omega, xi, 100.0_dp * tdisp, tky * gcm, s, &
+                                 sdot, uc, res%max_disp, res%t_end)
+            if (present(u_modal)) u_modal(:) = -uc / 100.0_dp
+            if (present(sdot_hist)) sdot_hist(:) = sdot / 100.0_dp
+        end if
+        if (present(s_hist)) s_hist(:) = s / 100.0_dp
+        res%max_disp = res%max_disp / 100.0_dp
+        res%final_disp = s(n) / 100.0_dp
+    end subroutine slammer_run
+
+    !> max |u| (m) of SLAMMER's modal response for (omega, xi): one pass, O(n).
+    subroutine slammer_peak(self, omega, xi, u_peak, stat, errmsg)
+        class(slammer_peak_t), intent(inout) :: self
+        real(dp), intent(in) :: omega, xi
+        real(dp), intent(out) :: u_peak
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        stat = SEISPULSE_SUCCESS
+        if (present(errmsg)) continue
+        call slammer_response(self%acc, self%dt, omega, xi, self%u, self%avg)
+        u_peak = maxval(abs(self%u)) / 100.0_dp
+    end subroutine slammer_peak
+
+    !> SLAMMER's modal response (doc/flexible.md (F.23)-(F.25)): incremental Newmark
+    !> average acceleration on u'' + 2 xi omega u' + omega^2 u = -(L/M) a; the first step
+    !> from rest with the load increment a(1) and u'' from equilibrium; HEA = a + (L/Mtot) u''.
+    !> Units of acc: those of u/s^2 (cm/s^2 here).
+    pure subroutine slammer_response(acc, dt, omega, xi, u, avg)
+        real(dp), intent(in) :: acc(:)     !! record (cm/s^2)
+        real(dp), intent(in) :: dt         !! s
+        real(dp), intent(in) :: omega      !! rad/s
+        real(dp), intent(in) :: xi         !! total damping (fraction)
+        real(dp), intent(out) :: u(:)      !! modal displacement (cm)
+        real(dp), intent(out) :: avg(:)    !! HEA (cm/s^2)
+        real(dp) :: khat, a, b, dp_, du, dv, dw, u1, v1, w1
+        integer :: j
+        khat = omega * omega + 2.0_dp * xi * omega * gamma / (beta * dt) &             ! (F.24)
+               + 1.0_dp / (beta * (dt * dt))
+        a = 1.0_dp / (beta * dt) + 2.0_dp * xi * omega * gamma / beta
+        b = 1.0_dp / (2.0_dp * beta) + dt * 2.0_dp * xi * omega * (gamma / (2.0_dp * beta) &
+                                                                   - 1.0_dp)
+        ! first step from rest, load increment acc(1) (D-1)                             (F.25)
+        du = -participation_modal * acc(1) / khat
+        u1 = du
+        v1 = gamma / (beta * dt) * du
+        w1 = -participation_modal * acc(1) - 2.0_dp * xi * omega * v1 - omega * omega * u1
+        u(1) = u1
+        avg(1) = acc(1) + participation_total * w1
+        do j = 2, size(acc)
+            dp_ = -participation_modal * (acc(j) - acc(j - 1)) + a * v1 + b * w1
+            du = dp_ / khat
+            dv = gamma / (beta * dt) * du - gamma / beta * v1 &
+                 + dt * (1.0_dp - gamma / (2.0_dp * beta)) * w1
+            dw = 1.0_dp / (beta * (dt * dt)) * du - 1.0_dp / (beta * dt) * v1 - 0.5_dp / beta * w1
+            u1 = u1 + du
+            v1 = v1 + dv
+            w1 = w1 + dw
+            u(j) = u1
+            avg(j) = acc(j) + participation_total * w1                                 ! (F.7)
+        end do
+    end subroutine slammer_response
+
+    !> SLAMMER's decoupled slide (Decoupled.d_sliding, doc/flexible.md (F.26)-(F.27)) with
+    !> its stepwise table (F.29). With e = ky g - HEA(j-1), dH = HEA(j) - HEA(j-1), while
+    !> sliding: s'(j) = s'(j-1) + e dt - dH dt/2, s(j) = s(j-1) - s'(j-1) dt - e dt^2/2
+    !> + dH dt^2/6 (s' < 0 while sliding). A slide starts at the end of a step where
+    !> HEA > ky g; on the step where s' >= 0 it stops and that step is discarded.
+    pure subroutine slammer_slide(avg, dt, tdisp, tmug, s, sd, s_max, t_end)
+        real(dp), intent(in) :: avg(:)     !! HEA (cm/s^2)
+        real(dp), intent(in) :: dt         !! s
+        real(dp), intent(in) :: tdisp(:)   !! table: displacement (cm), tdisp(1) = 0
+        real(dp), intent(in) :: tmug(:)    !! table: ky g (cm/s^2)
+        real(dp), intent(out) :: s(:)      !! sliding displacement (cm), >= 0
+        real(dp), intent(out) :: sd(:)     !! SLAMMER's s' (cm/s), <= 0 while sliding
+        real(dp), intent(out) :: s_max     !! max |s| (cm)
+        real(dp), intent(out) :: t_end     !! end of the last slide (s)
+        real(dp) :: e, dacc, sj, sdj, s1, sd1, avg_prev
+        integer :: j, qq, n
+        logical :: slide
+        n = size(avg)
+        qq = 1
+        slide = .false.
+        s1 = 0.0_dp
+        sd1 = 0.0_dp
+        s_max = 0.0_dp
+        t_end = 0.0_dp
+        avg_prev = 0.0_dp
+        do j = 1, n
+            if (j == 1) then
+                sdj = 0.0_dp
+                sj = 0.0_dp
+            else if (.not. slide) then
+                sdj = 0.0_dp
+                sj = s1
+            else
+                dacc = avg(j) - avg_prev
+                e = tmug(qq) - avg_prev
+                sdj = sd1 + e * dt - 0.5_dp * dacc * dt                                   ! (F.26)
+                sj = s1 - sd1 * dt - 0.5_dp * dt * dt * e + dacc * dt * dt / 6.0_dp       ! (F.27)
+            end if
+            if (.not. slide) then
+                if (avg(j) > tmug(qq)) slide = .true.
+            else if (sdj >= 0.0_dp) then
+                ! end of the slide: this step is discarded (D-3)
+                slide = .false.
+                sj = s1
+                sdj = 0.0_dp
+                t_end = real(j - 1, dp) * dt
+            end if
+            call next_row(slide, sj, tdisp, qq)
+            s(j) = sj
+            sd(j) = sdj
+            s1 = sj
+            sd1 = sdj
+            s_max = max(s_max, abs(sj))
+            avg_prev = avg(j)
+        end do
+        if (slide) t_end = real(n - 1, dp) * dt
+    end subroutine slammer_slide
+
+    !> SLAMMER's coupled analysis (Coupled, doc/flexible.md (F.17)-(F.22), (F.28)) on its
+    !> input acc = -record (cm/s^2). Sticking: the modal equation under acc; sliding: under
+    !> the yield load -ky g with the reduced mass d1 = 1 - L^2/(M Mtot); the base force per
+    !> unit mass -acc - (L/Mtot) u'' starts a slide when it exceeds ky g; s'' = -acc - ky g
+    !> - (L/Mtot) u'' integrated by the trapezoidal rule; when s' <= 0 the stop sub-step.
+    subroutine slammer_coupled(acc, dt, omega, xi, tdisp, tmug, s, sd, u_out, s_max, t_end)
+        real(dp), intent(in) :: acc(:)     !! SLAMMER's input, -record (cm/s^2)
+        real(dp), intent(in) :: dt         !! s
+        real(dp), intent(in) :: omega      !! rad/s
+        real(dp), intent(in) :: xi         !! total damping (fraction)
+        real(dp), intent(in) :: tdisp(:)   !! table: displacement (cm), tdisp(1) = 0
+        real(dp), intent(in) :: tmug(:)    !! table: ky g (cm/s^2)
+        real(dp), intent(out) :: s(:)      !! sliding displacement (cm), >= 0 downslope
+        real(dp), intent(out) :: sd(:)     !! sliding velocity (cm/s)
+        real(dp), intent(out) :: u_out(:)  !! modal displacement (cm), for acc
+        real(dp), intent(out) :: s_max     !! max |s| (cm)
+        real(dp), intent(out) :: t_end     !! end of the last slide (s)
+        real(dp) :: d1s, kh(2), ka(2), kb(2), d1(2)
+        real(dp) :: u1, v1, w1, u2, v2, w2, s1, sd1, sdd1, s2, sd2, sdd2
+        real(dp) :: acc11, acc22, deltp, du, dv, basef, mug, a_prev
+        integer :: j, n, qq, k
+        logical :: slide
+
+        n = size(acc)
+        ! coefficients: k = 1 sticking (d1 = 1), k = 2 sliding (d1 = 1 - L^2/(M Mtot))  (F.19)
+        d1s = 1.0_dp - participation_modal * participation_total
+        d1 = [1.0_dp, d1s]
+        do k = 1, 2
+            kh(k) = omega * omega + 2.0_dp * xi * omega * gamma / (beta * dt) &
+                    + d1(k) / (beta * (dt * dt))
+            ka(k) = d1(k) / (beta * dt) + 2.0_dp * xi * omega * gamma / beta
+            kb(k) = d1(k) / (2.0_dp * beta) + dt * 2.0_dp * xi * omega &
+                    * (gamma / (2.0_dp * beta) - 1.0_dp)
+        end do
+        qq = 1
+        slide = .false.
+        u2 = 0.0_dp
+        v2 = 0.0_dp
+        w2 = 0.0_dp
+        s2 = 0.0_dp
+        sd2 = 0.0_dp
+        sdd2 = 0.0_dp
+        s_max = 0.0_dp
+        t_end = 0.0_dp
+        a_prev = 0.0_dp
+        do j = 1, n
+            ! state of the previous step
+            u1 = u2
+            v1 = v2
+            w1 = w2
+            s1 = s2
+            sd1 = sd2
+            sdd1 = sdd2
+            mug = tmug(qq)
+            ! load of the modal equation (F.18)
+            if (j == 1) then
+                acc11 = 0.0_dp
+                acc22 = acc(1)
+            else if (.not. slide) then
+                acc11 = a_prev
+                acc22 = acc(j)
+            else
+                acc11 = -mug
+                acc22 = -mug
+            end if
+            k = 1
+            if (slide) k = 2
+            deltp = -participation_modal * (acc22 - acc11)
+            if (j > 1) deltp = deltp + ka(k) * v1 + kb(k) * w1
+            du = deltp / kh(k)
+            dv = gamma / (beta * dt) * du
+            if (j > 1) dv = dv - gamma / beta * v1 + dt * (1.0_dp - gamma / (2.0_dp * beta)) * w1
+            u2 = u1 + du
+            v2 = v1 + dv
+            w2 = (-participation_modal * acc22 - 2.0_dp * xi * omega * v2 &
+                  - omega * omega * u2) / d1(k)
+            ! sliding acceleration and base force per unit mass (F.20), (F.21)
+            if (slide) sdd2 = -acc(j) - mug - participation_total * w2
+            basef = -acc(j) - participation_total * w2
+            if (slide) then
+                sd2 = sd1 + 0.5_dp * dt * (sdd2 + sdd1)
+                s2 = s1 + 0.5_dp * dt * (sd2 + sd1)
+            end if
+            if (.not. slide) then
+                if (basef > mug) slide = .true.
+            else if (sd2 <= 0.0_dp) then
+                call slide_stop()
+                slide = .false.
+                sd2 = 0.0_dp
+                sdd2 = 0.0_dp
+            end if
+            call next_row(slide, s2, tdisp, qq)
+            s(j) = s2
+            sd(j) = sd2
+            u_out(j) = u2
+            s_max = max(s_max, abs(s2))
+            a_prev = acc(j)
+        end do
+        if (slide) t_end = real(n - 1, dp) * dt
+
+    contains
+
+        !> SLAMMER's slidestop (F.28): the stop at the fraction dd = -s'1/(s'2 - s'1) of the
+        !> step; the sliding solution at the step's end is kept as the state at the stop
+        !> (SLAMMER re-solves the same step), s', s re-integrated over dd dt, then a sticking
+        !> sub-step of (1 - dd) dt in SLAMMER's own k-hat, a, b form. dd = 0 (s'1 = 0, the
+        !> step after an onset): nothing is redone.
+        subroutine slide_stop()
+            real(dp) :: dd, ddt, acc1b, khat, a, b
+            t_end = real(j - 2, dp) * dt
+            if (.not. (sd1 > 0.0_dp)) return   ! s'1 >= 0 while sliding
+            dd = -sd1 / (sd2 - sd1)
+            ddt = dd * dt
+            t_end = t_end + ddt
+            acc1b = a_prev + dd * (acc(j) - a_prev)
+            u1 = u2
+            v1 = v2
+            w1 = w2
+            sdd2 = -acc1b - mug - participation_total * w2
+            sd2 = sd1 + 0.5_dp * ddt * (sdd2 + sdd1)
+            s2 = s1 + 0.5_dp * ddt * (sd1 + sd2)
+            ! sticking for the rest of the step, load from -ky g to acc(j)
+            ddt = (1.0_dp - dd) * dt
+            khat = 1.0_dp + 2.0_dp * xi * omega * gamma * ddt + omega * omega * beta * (ddt * ddt)
+            a = d1s + 2.0_dp * xi * omega * ddt * (gamma - 1.0_dp) &
+                + omega * omega * (ddt * ddt) * (beta - 0.5_dp)
+            b = omega * omega * ddt
+            deltp = -participation_modal * (acc(j) + mug) + a * w1 - b * v1
+            w2 = deltp / khat
+            v2 = v1 + (1.0_dp - gamma) * ddt * w1 + gamma * ddt * w2
+            u2 = u1 + v1 * ddt + (0.5_dp - beta) * (ddt * ddt) * w1 + beta * (ddt * ddt) * w2
+        end subroutine slide_stop
+
+    end subroutine slammer_coupled
+
+    !> SLAMMER's residual_mu (doc/flexible.md (F.29)): at rest with |s| >= the current row's
+    !> displacement, the next row of the table takes over (one row per step). Row 1 has
+    !> displacement 0, so row 2 applies from the first step at rest.
+    pure subroutine next_row(slide, s, tdisp, qq)
+        logical, intent(in) :: slide
+        real(dp), intent(in) :: s, tdisp(:)
+        integer, intent(inout) :: qq
+        if (size(tdisp) > 1 .and. .not. slide) then
+            if (abs(s) >= tdisp(qq) .and. qq < size(tdisp)) qq = qq + 1
+        end if
+    end subroutine next_row
+
+    !> The value of largest |x| with its sign (SLAMMER's avg_acc: a tie goes to the
+    !> positive value).
+    pure real(dp) function signed_peak(x) result(peak)
+        real(dp), intent(in) :: x(:)
+        real(dp) :: hi, lo
+        hi = max(maxval(x), 0.0_dp)
+        lo = min(minval(x), 0.0_dp)
+        if (-lo > hi) then
+            peak = lo
+        else
+            peak = hi
+        end if
+    end function signed_peak
+
+end module seispulse_flexible
