@@ -1,0 +1,731 @@
+!> Flexible sliding masses integrated exactly (doc/flexible.md sections 5-7, Eqs. F.30-F.59):
+!> the one-mode shear beam's response to the piecewise-linear record by the exact
+!> recurrence, and the coupled stick-slip model of Rathje & Bray [RB99] (after Chopra &
+!> Zhang [CZ91]) with its phases integrated in closed form and its onsets and stops
+!> located on brackets that are proven.
+!>
+!> Model (doc/flexible.md (F.30)-(F.33); SLAMMER's [SL13] equations with the record's
+!> polarity as given: positive a drives downslope sliding). u is the modal coordinate of
+!> the decoupled response (omega = pi Vs/(2H), L/M = 4/pi, L/Mtot = 2/pi, d1 = 1 - 8/pi^2):
+!>     stick:  u'' + 2 xi omega u' + omega^2 u = -(4/pi) g a(t)                   (F.30)
+!>     HEA  =  g a + (2/pi) u''   (the base force per unit mass)                  (F.31)
+!>     slide:  d1 u'' + 2 xi omega u' + omega^2 u = -(4/pi) g ky,                 (F.32)
+!>             s'' = g a - g ky + (2/pi) u''  (= (HEA_stick form - g ky)/d1)      (F.33)
+!> Sliding starts when HEA exceeds g ky and stops when s' returns to 0 (one way).
+!>
+!> Each phase is a linear oscillator x' = A x + e l(tau), x = (u, u'), A = [0 1; -w2 -c],
+!> with a load l linear on a step, solved by
+!>     x(tau) = x0 + tau phi_1(tau A) x0' + tau^2 phi_2(tau A) e l'                 (F.38)
+!> where f(tau A) = alpha I + beta tau A (Cayley-Hamilton) and beta = f[mu1, mu2], the divided
+!> difference at the eigenvalues mu = tau lambda (complex, or real when the sliding
+!> oscillator is over-damped: one formula for every damping, from
+!> seispulse_divided_differences). The sliding displacement follows without quadrature
+!> from (F.33): s(tau) = s0 + s0' tau + g int int (a - ky) + (2/pi)(u - u0 - tau u0').
+!>
+!> Events. `first_zero` returns the first zero in (0, h] of a smooth function f given
+!> f, f', f'' at points and a bound M3 >= |f'''| on the step (F.44)-(F.47): the Taylor
+!> bounds f(xa + d) >= f(xa) + f'(xa) d + (f''(xa) - M3 L/3) d^2/2 from both ends exclude a
+!> zero from a sub-interval of length L, a sign change with f' < 0 proven on the
+!> sub-interval brackets exactly one zero (Brent), otherwise the sub-interval is halved.
+!> For both phases the bound comes from the energy norm of the oscillator,
+!> N^2 = w2 z1^2 + z2^2 with N(tau) <= N(0) e^(max(0, -c) tau) (F.45).
+module seispulse_flexible_exact
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
+                                set_error
+    use seispulse_format, only: real_str
+    use seispulse_checks, only: finite_positive, positive
+    use seispulse_special, only: pi, complex_phis
+    use seispulse_divided_differences, only: cexp_dd1, cexp_dd2, cexp_dd3
+    use seispulse_sdof_sim, only: sdof_step_t, sdof_step
+    use seispulse_pieces, only: record_step_check
+    use seispulse_roots, only: scalar_function, find_root
+    implicit none
+    private
+
+    public :: modal_response_exact, coupled_exact
+    public :: zero_function, first_zero, prop_t, propagator
+
+    real(dp), parameter :: lm = 4.0_dp / pi          !! L/M of the first mode
+    real(dp), parameter :: lmt = 2.0_dp / pi         !! L/Mtot
+    real(dp), parameter :: d1 = 1.0_dp - 8.0_dp / pi**2  !! 1 - L^2/(M Mtot)
+
+    !> Events (onsets, stops) allowed in one step before it is reported as a bug.
+    integer, parameter :: max_events = 16
+    !> Depth of the interval stack of `first_zero` (intervals down to h 2^-62).
+    integer, parameter :: max_depth = 62
+    !> Steps of the run-out after the record before it is reported as an error.
+    integer, parameter :: max_runout = 10000000
+
+    !> A smooth function for `first_zero`: f, f', f'' at x (`taylor`); `eval` gives f.
+    type, abstract, extends(scalar_function) :: zero_function
+    contains
+        procedure(taylor_iface), deferred :: taylor
+        procedure :: eval => zero_eval
+    end type zero_function
+
+    abstract interface
+        !> f(x), f'(x), f''(x).
+        subroutine taylor_iface(self, x, f)
+            import :: zero_function, dp
+            class(zero_function), intent(inout) :: self  !! the function
+            real(dp), intent(in) :: x                    !! abscissa
+            real(dp), intent(out) :: f(0:2)              !! f, f', f''
+        end subroutine taylor_iface
+    end interface
+
+    !> exp(tau A), tau phi_1(tau A), tau^2 phi_2(tau A) of A = [0 1; -w2 -c] (F.38).
+    type :: prop_t
+        real(dp) :: e(2, 2) = 0.0_dp    !! e^(tau A)
+        real(dp) :: p1(2, 2) = 0.0_dp   !! tau phi_1(tau A) (s)
+        real(dp) :: p2(2, 2) = 0.0_dp   !! tau^2 phi_2(tau A) (s^2)
+    end type prop_t
+
+    !> One phase on (part of) a step: the oscillator, its state at the start and the
+    !> record; f is the onset function g ky - HEA (stick) or the sliding speed s' (slide).
+    type, extends(zero_function) :: phase_t
+        logical :: slide = .false.
+        real(dp) :: c = 0.0_dp, w2 = 0.0_dp  !! damping 2 xi omega (/d1) and stiffness (1/s, 1/s^2)
+        real(dp) :: u0 = 0.0_dp, v0 = 0.0_dp !! u (m), u' (m/s) at the start
+        real(dp) :: s0 = 0.0_dp, sd0 = 0.0_dp !! s (m), s' (m/s) at the start
+        real(dp) :: ga0 = 0.0_dp, gas = 0.0_dp !! g a at the start (m/s^2), its slope (m/s^3)
+        real(dp) :: gky = 0.0_dp             !! g ky (m/s^2)
+        real(dp) :: l0 = 0.0_dp, l1 = 0.0_dp !! load of the modal equation and its slope
+        real(dp) :: acc0 = 0.0_dp, jrk0 = 0.0_dp !! u'', u''' at the start
+    contains
+        procedure :: taylor => phase_taylor
+    end type phase_t
+
+contains
+
+    ! ------------------------------------------------------------------------------
+    ! Modal response
+    ! ------------------------------------------------------------------------------
+
+    !> Exact one-mode response to the piecewise-linear record (the record as given):
+    !> u'' + 2 xi omega u' + omega^2 u = -(4/pi) g a(t) from rest (F.30), at the samples,
+    !> by the exact recurrence of seispulse_sdof_sim (F.34); HEA = a + (2/pi) u''/g (F.31).
+    subroutine modal_response_exact(accel, dt, g, omega, xi, u, hea, stat, errmsg, udot, uddot)
+        real(dp), intent(in) :: accel(:)                      !! record (g) at (i-1) dt
+        real(dp), intent(in) :: dt                            !! time step (s) > 0
+        real(dp), intent(in) :: g                             !! gravity (m/s^2) > 0
+        real(dp), intent(in) :: omega                         !! circular frequency (rad/s) > 0
+        real(dp), intent(in) :: xi                            !! damping ratio in (-1, 1)
+        real(dp), intent(out) :: u(:)                         !! modal displacement (m)
+        real(dp), intent(out) :: hea(:)                       !! HEA (g)
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp), intent(out), optional :: udot(:)            !! u' (m/s)
+        real(dp), intent(out), optional :: uddot(:)           !! u'' (m/s^2)
+        type(sdof_step_t) :: st
+        real(dp) :: z, v, zn, acc, w2, c, gl
+        integer :: i, n
+        call check_modal(accel, dt, g, omega, xi, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        n = size(accel)
+        if (size(u) /= n .or. size(hea) /= n) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'u, hea: must have the ' &
+                           //'size of accel')
+            return
+        end if
+        if (present(udot)) then
+            if (size(udot) /= n) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'udot: must have the ' &
+                               //'size of accel')
+                return
+            end if
+        end if
+        if (present(uddot)) then
+            if (size(uddot) /= n) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'uddot: must have the ' &
+                               //'size of accel')
+                return
+            end if
+        end if
+        ! sdof_step solves z'' + 2 xi omega z' + omega^2 z = -a_g: a_g = (4/pi) g a
+        st = sdof_step(2.0_dp * pi / omega, xi, dt)
+        gl = lm * g
+        w2 = omega**2
+        c = 2.0_dp * xi * omega
+        z = 0.0_dp
+        v = 0.0_dp
+        do i = 1, n
+            if (i > 1) call step(i)
+            acc = -gl * accel(i) - c * v - w2 * z
+            u(i) = z
+            hea(i) = accel(i) + lmt * acc / g
+            if (present(udot)) udot(i) = v
+            if (present(uddot)) uddot(i) = acc
+        end do
+    contains
+        subroutine step(j)
+            integer, intent(in) :: j
+            real(dp) :: ap, ac
+            ap = accel(j - 1)
+            ac = accel(j)
+            zn = st%e11 * z + st%e12 * v + gl * (st%b1 * ap + st%c1 * ac)
+            v = st%e21 * z + st%e22 * v + gl * (st%b2 * ap + st%c2 * ac)
+            z = zn
+        end subroutine step
+    end subroutine modal_response_exact
+
+    !> Checks shared by the two public routines.
+    subroutine check_modal(accel, dt, g, omega, xi, stat, errmsg)
+        real(dp), intent(in) :: accel(:), dt, g, omega, xi
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        call record_step_check(accel, dt, g, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        if (.not. finite_positive(omega)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'omega = '//real_str(omega) &
+                           //': must be a finite number > 0 (rad/s)')
+        else if (.not. (abs(xi) < 1.0_dp)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'xi = '//real_str(xi) &
+                           //': the damping ratio must be in (-1, 1)')
+        end if
+    end subroutine check_modal
+
+    ! ------------------------------------------------------------------------------
+    ! Coupled sliding
+    ! ------------------------------------------------------------------------------
+
+    !> Coupled stick-slip of the flexible mass (F.30)-(F.33), exact: downslope sliding s
+    !> (m, >= 0) under the record as given. After the last sample the record is 0 and a
+    !> mass still sliding runs out to rest (final_disp includes it, t_end says when).
+    !> Histories at the samples: s (m), s' (m/s), u (m, the sign of (F.30)) and HEA (g).
+    !> ky = +inf: never slides. With ky_disp, ky_values (m, g): ky(s) interpolated
+    !> linearly, constant beyond the last row; then ky is ignored.
+    subroutine coupled_exact(accel, dt, g, omega, xi, ky, max_disp, final_disp, t_end, stat, &
+                             errmsg, ky_disp, ky_values, s_hist, sdot_hist, u_modal, hea)
+        real(dp), intent(in) :: accel(:)                      !! record (g) at (i-1) dt
+        real(dp), intent(in) :: dt                            !! time step (s) > 0
+        real(dp), intent(in) :: g                             !! gravity (m/s^2) > 0
+        real(dp), intent(in) :: omega                         !! circular frequency (rad/s) > 0
+        real(dp), intent(in) :: xi                            !! total damping ratio in (-1, 1)
+        real(dp), intent(in) :: ky                            !! yield acceleration (g) > 0
+        real(dp), intent(out) :: max_disp                     !! largest s (m)
+        real(dp), intent(out) :: final_disp                   !! s at rest at the end (m)
+        real(dp), intent(out) :: t_end                        !! end of the last slide (s)
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp), intent(in), optional :: ky_disp(:)          !! table: displacements (m)
+        real(dp), intent(in), optional :: ky_values(:)        !! table: yields (g)
+        real(dp), intent(out), optional :: s_hist(:)          !! s at the samples (m)
+        real(dp), intent(out), optional :: sdot_hist(:)       !! s' at the samples (m/s)
+        real(dp), intent(out), optional :: u_modal(:)         !! u at the samples (m)
+        real(dp), intent(out), optional :: hea(:)             !! HEA at the samples (g)
+
+        type(phase_t) :: ph
+        type(prop_t) :: p_stick, p_slide, pr
+        real(dp) :: cst, w2t, csl, w2s, x, h, t0, as, a0, a1, fa(0:2), fb(0:2), m3, xs
+        real(dp) :: u, v, s, sd, gky, tol
+        integer :: n, i, nev, k
+        logical :: sliding, found, last
+
+        max_disp = 0.0_dp
+        final_disp = 0.0_dp
+        t_end = 0.0_dp
+        call check_modal(accel, dt, g, omega, xi, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        if (.not. positive(ky)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky = '//real_str(ky) &
+                           //': must be > 0 (g; +inf: no sliding)')
+            return
+        end if
+        if (present(ky_disp) .or. present(ky_values)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky_disp, ky_values: a ' &
+                           //'yield table is not available for the exact coupled analysis')
+            return
+        end if
+        n = size(accel)
+        if (.not. hist_ok(s_hist, 's_hist')) return
+        if (.not. hist_ok(sdot_hist, 'sdot_hist')) return
+        if (.not. hist_ok(u_modal, 'u_modal')) return
+        if (.not. hist_ok(hea, 'hea')) return
+
+        gky = g * ky
+        cst = 2.0_dp * xi * omega
+        w2t = omega**2
+        csl = cst / d1
+        w2s = w2t / d1
+        call propagator(cst, w2t, dt, p_stick)
+        call propagator(csl, w2s, dt, p_slide)
+        u = 0.0_dp
+        v = 0.0_dp
+        s = 0.0_dp
+        sd = 0.0_dp
+        sliding = .false.
+        ! the mass starts at rest: it slides at once if HEA(0) = d1 g a(0) exceeds g ky
+        call set_phase(0, 0.0_dp, accel(1), accel(1))
+        if (onset_now()) call start_slide()
+        call record(1, accel(1))
+
+        last = .false.
+        i = 0
+        do k = 1, n - 1 + max_runout
+            i = i + 1
+            if (i <= n - 1) then
+                a0 = accel(i)
+                a1 = accel(i + 1)
+            else
+                ! after the record: a = 0 until the slide ends
+                if (.not. sliding) exit
+                a0 = 0.0_dp
+                a1 = 0.0_dp
+                last = .true.
+            end if
+            t0 = real(i - 1, dp) * dt
+            x = 0.0_dp
+            as = a0
+            events: do nev = 1, max_events + 1
+                if (nev > max_events) then
+                    call set_error(stat, errmsg, SEISPULSE_INTERNAL, 'coupled_exact: too many ' &
+                                   //'events in one step near t = '//real_str(t0)//' (a bug)')
+                    return
+                end if
+                h = dt - x
+                if (.not. (h > 0.0_dp)) exit events
+                call set_phase(merge(1, 0, sliding), x, as, a1)
+                if (x > 0.0_dp) then
+                    call propagator(ph%c, ph%w2, h, pr)
+                else if (sliding) then
+                    pr = p_slide
+                else
+                    pr = p_stick
+                end if
+                if (.not. sliding) then
+                    if (onset_now()) then
+                        call start_slide()
+                        cycle events
+                    end if
+                end if
+                call ph%taylor(0.0_dp, fa)
+                if (sliding) then
+                    fa(0) = max(fa(0), 0.0_dp)
+                    if (zero(fa(0))) fa(1) = max(fa(1), 0.0_dp)
+                else
+                    fa(0) = max(fa(0), 0.0_dp)
+                end if
+                call end_values(pr, h, fb)
+                m3 = phase_bound(h)
+                call first_zero(ph, h, fa, fb, m3, found, xs, stat, errmsg)
+                if (stat /= SEISPULSE_SUCCESS) return
+                if (.not. found) then
+                    call advance(pr, h)
+                    exit events
+                end if
+                ! the event at xs: advance the state there
+                call propagator(ph%c, ph%w2, xs, pr)
+                call advance(pr, xs)
+                as = as + (a1 - as) * (xs / h)
+                x = x + xs
+                if (sliding) then
+                    sd = 0.0_dp
+                    sliding = .false.
+                    t_end = t0 + x
+                else
+                    call start_slide()
+                end if
+            end do events
+            if (i <= n - 1) call record(i + 1, a1)
+            if (last .and. .not. sliding) exit
+        end do
+        if (sliding) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky: the mass still slides ' &
+                           //'long after the record (the run-out does not end)')
+            return
+        end if
+        final_disp = s
+        max_disp = s
+
+    contains
+
+        logical function hist_ok(hist, name)
+            real(dp), intent(in), optional :: hist(:)
+            character(len=*), intent(in) :: name
+            hist_ok = .true.
+            if (.not. present(hist)) return
+            hist_ok = size(hist) == n
+            if (.not. hist_ok) call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, name &
+                                              //': must have the size of accel')
+        end function hist_ok
+
+        !> The phase (0 stick, 1 slide) from the current state at x with g a = as .. a1.
+        subroutine set_phase(mode, xx, aa, ae)
+            integer, intent(in) :: mode
+            real(dp), intent(in) :: xx, aa, ae
+            ph%slide = mode == 1
+            ph%u0 = u
+            ph%v0 = v
+            ph%s0 = s
+            ph%sd0 = sd
+            ph%ga0 = g * aa
+            if (dt - xx > 0.0_dp) then
+                ph%gas = g * (ae - aa) / (dt - xx)
+            else
+                ph%gas = 0.0_dp
+            end if
+            ph%gky = gky
+            if (ph%slide) then
+                ph%c = csl
+                ph%w2 = w2s
+                ph%l0 = -lm * gky / d1
+                ph%l1 = 0.0_dp
+            else
+                ph%c = cst
+                ph%w2 = w2t
+                ph%l0 = -lm * ph%ga0
+                ph%l1 = -lm * ph%gas
+            end if
+            ph%acc0 = ph%l0 - ph%c * v - ph%w2 * u
+            ph%jrk0 = ph%l1 - ph%c * ph%acc0 - ph%w2 * v
+        end subroutine set_phase
+
+        !> At rest, HEA exceeds g ky at the start of the phase (more than rounding), or
+        !> reaches it there and grows.
+        logical function onset_now()
+            real(dp) :: f(0:2)
+            if (.not. ieee_is_finite(gky)) then
+                onset_now = .false.
+                return
+            end if
+            call ph%taylor(0.0_dp, f)
+            tol = 8.0_dp * epsilon(1.0_dp) * (gky + abs(ph%ga0) + lmt * abs(ph%acc0))
+            if (f(0) < -tol) then
+                onset_now = .true.
+            else if (f(0) <= tol) then
+                onset_now = f(1) < 0.0_dp .or. (zero(f(1)) .and. f(2) < 0.0_dp)
+            else
+                onset_now = .false.
+            end if
+        end function onset_now
+
+        subroutine start_slide()
+            sliding = .true.
+            sd = 0.0_dp
+        end subroutine start_slide
+
+        !> f, f', f'' at the end of the phase (tau = h) from the propagator pr.
+        subroutine end_values(p, hh, f)
+            type(prop_t), intent(in) :: p
+            real(dp), intent(in) :: hh
+            real(dp), intent(out) :: f(0:2)
+            real(dp) :: uu, vv, ssd, dd2, ss
+            call phase_state(ph, p, hh, uu, vv, ss, ssd, dd2)
+            call phase_f(ph, hh, uu, vv, ssd, f)
+        end subroutine end_values
+
+        !> Move the state by the phase over hh (propagator p).
+        subroutine advance(p, hh)
+            type(prop_t), intent(in) :: p
+            real(dp), intent(in) :: hh
+            real(dp) :: uu, vv, ss, ssd, dd2
+            call phase_state(ph, p, hh, uu, vv, ss, ssd, dd2)
+            u = uu
+            v = vv
+            if (ph%slide) then
+                s = ss
+                sd = ssd
+            end if
+        end subroutine advance
+
+        !> Bound on |f'''| over the phase of length hh (F.45).
+        real(dp) function phase_bound(hh)
+            real(dp), intent(in) :: hh
+            real(dp) :: snp, crk, grow
+            snp = -ph%c * ph%jrk0 - ph%w2 * ph%acc0
+            crk = -ph%c * snp - ph%w2 * ph%jrk0
+            grow = exp(max(0.0_dp, -ph%c) * hh)
+            if (ph%slide) then
+                ! f''' = (2/pi) u'''' and (u''', u'''') solves the free oscillator
+                phase_bound = lmt * sqrt(ph%w2 * ph%jrk0**2 + snp**2) * grow
+            else
+                ! f''' = -(2/pi) u^(5) and (u'''', u^(5)) solves the free oscillator
+                phase_bound = lmt * sqrt(ph%w2 * snp**2 + crk**2) * grow
+            end if
+            phase_bound = phase_bound * (1.0_dp + 1.0e-10_dp)
+        end function phase_bound
+
+        !> Histories at sample j (a = record value there).
+        subroutine record(j, aj)
+            integer, intent(in) :: j
+            real(dp), intent(in) :: aj
+            real(dp) :: acc
+            if (present(s_hist)) s_hist(j) = s
+            if (present(sdot_hist)) sdot_hist(j) = sd
+            if (present(u_modal)) u_modal(j) = u
+            if (present(hea)) then
+                if (sliding) then
+                    acc = (-lm * gky - cst * v - w2t * u) / d1
+                else
+                    acc = -lm * g * aj - cst * v - w2t * u
+                end if
+                hea(j) = aj + lmt * acc / g
+            end if
+        end subroutine record
+
+    end subroutine coupled_exact
+
+    !> State of phase ph after tau (propagator p of length tau): u, u' (m, m/s), s, s'
+    !> (m, m/s; the start values when sticking) and d2 = u - u0 - tau u0' (m).
+    pure subroutine phase_state(ph, p, tau, u, v, s, sd, d2)
+        type(phase_t), intent(in) :: ph
+        type(prop_t), intent(in) :: p
+        real(dp), intent(in) :: tau
+        real(dp), intent(out) :: u, v, s, sd, d2
+        real(dp) :: x1(2), x2(2), du, dv
+        ! x0' = (v0, acc0), x0'' = (acc0, jrk0); (F.38)
+        x1 = [ph%v0, ph%acc0]
+        x2 = [ph%acc0, ph%jrk0]
+        du = p%p1(1, 1) * x1(1) + p%p1(1, 2) * x1(2) + p%p2(1, 2) * ph%l1
+        dv = p%p1(2, 1) * x1(1) + p%p1(2, 2) * x1(2) + p%p2(2, 2) * ph%l1
+        u = ph%u0 + du
+        v = ph%v0 + dv
+        d2 = p%p2(1, 1) * x2(1) + p%p2(1, 2) * x2(2)
+        if (ph%slide) then
+            ! (F.33) integrated: s' and s from the record and the modal increments
+            sd = ph%sd0 + tau * (ph%ga0 - ph%gky + 0.5_dp * ph%gas * tau) + lmt * dv
+            s = ph%s0 + tau * (ph%sd0 + tau * (0.5_dp * (ph%ga0 - ph%gky) &
+                + ph%gas * tau / 6.0_dp)) + lmt * d2
+        else
+            sd = ph%sd0
+            s = ph%s0
+        end if
+    end subroutine phase_state
+
+    !> f, f', f'' of the phase at tau from the state there.
+    pure subroutine phase_f(ph, tau, u, v, sd, f)
+        type(phase_t), intent(in) :: ph
+        real(dp), intent(in) :: tau, u, v, sd
+        real(dp), intent(out) :: f(0:2)
+        real(dp) :: acc, jrk, snp, ga
+        ga = ph%ga0 + ph%gas * tau
+        acc = ph%l0 + ph%l1 * tau - ph%c * v - ph%w2 * u
+        jrk = ph%l1 - ph%c * acc - ph%w2 * v
+        if (ph%slide) then
+            ! f = s' (F.33)
+            f(0) = sd
+            f(1) = ga - ph%gky + lmt * acc
+            f(2) = ph%gas + lmt * jrk
+        else
+            ! f = g ky - HEA (F.31)
+            snp = -ph%c * jrk - ph%w2 * acc
+            f(0) = ph%gky - ga - lmt * acc
+            f(1) = -ph%gas - lmt * jrk
+            f(2) = -lmt * snp
+        end if
+    end subroutine phase_f
+
+    !> The phase function at x: the propagator of length x, the state, f.
+    subroutine phase_taylor(self, x, f)
+        class(phase_t), intent(inout) :: self
+        real(dp), intent(in) :: x
+        real(dp), intent(out) :: f(0:2)
+        type(prop_t) :: p
+        real(dp) :: u, v, s, sd, d2
+        call propagator(self%c, self%w2, x, p)
+        call phase_state(self, p, x, u, v, s, sd, d2)
+        call phase_f(self, x, u, v, sd, f)
+    end subroutine phase_taylor
+
+    ! ------------------------------------------------------------------------------
+    ! The oscillator's matrix functions
+    ! ------------------------------------------------------------------------------
+
+    !> e^(tau A), tau phi_1(tau A), tau^2 phi_2(tau A) for A = [0 1; -w2 -c], any real c
+    !> and w2 > 0 (under-, critically or over-damped, negative damping): f(tau A) =
+    !> alpha I + beta tau A with beta = f[mu1, mu2], alpha = f(mu2) - mu2 beta at the
+    !> eigenvalues mu of tau A (F.39).
+    pure subroutine propagator(c, w2, tau, p)
+        real(dp), intent(in) :: c    !! damping coefficient (1/s)
+        real(dp), intent(in) :: w2   !! stiffness (1/s^2)
+        real(dp), intent(in) :: tau  !! step (s) >= 0
+        type(prop_t), intent(out) :: p
+        complex(dp) :: q, mu1, mu2, b0, e2, b1, b2, p0, ph1, ph2
+        real(dp) :: al0, al1, al2, be0, be1, be2, ta(2, 2)
+        integer :: k
+        if (.not. (tau > 0.0_dp)) then
+            p%e = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
+            p%p1 = 0.0_dp
+            p%p2 = 0.0_dp
+            return
+        end if
+        ! eigenvalues -c/2 +- sqrt(c^2/4 - w2), times tau
+        q = sqrt(cmplx(0.25_dp * c * c - w2, 0.0_dp, dp))
+        if (c >= 0.0_dp) then
+            mu1 = tau * (-0.5_dp * c - q)
+            ! the product of the roots is w2: the smaller one without cancellation
+            mu2 = tau * w2 / (-0.5_dp * c - q)
+        else
+            mu1 = tau * (-0.5_dp * c + q)
+            mu2 = tau * w2 / (-0.5_dp * c + q)
+        end if
+        call cexp_dd1(mu1, mu2, b0, e2)
+        b1 = cexp_dd2(mu1, mu2, (0.0_dp, 0.0_dp))
+        b2 = cexp_dd3(mu1, mu2, (0.0_dp, 0.0_dp), (0.0_dp, 0.0_dp))
+        call complex_phis(mu2, p0, ph1, ph2)
+        be0 = real(b0, dp)
+        be1 = real(b1, dp)
+        be2 = real(b2, dp)
+        al0 = real(e2 - mu2 * b0, dp)
+        al1 = real(ph1 - mu2 * b1, dp)
+        al2 = real(ph2 - mu2 * b2, dp)
+        ta = reshape([0.0_dp, -w2 * tau, tau, -c * tau], [2, 2])
+        p%e = be0 * ta
+        p%p1 = (tau * be1) * ta
+        p%p2 = (tau * tau * be2) * ta
+        do k = 1, 2
+            p%e(k, k) = p%e(k, k) + al0
+            p%p1(k, k) = p%p1(k, k) + tau * al1
+            p%p2(k, k) = p%p2(k, k) + tau * tau * al2
+        end do
+    end subroutine propagator
+
+    ! ------------------------------------------------------------------------------
+    ! First zero on a proven bracket
+    ! ------------------------------------------------------------------------------
+
+    function zero_eval(self, x) result(y)
+        class(zero_function), intent(inout) :: self
+        real(dp), intent(in) :: x
+        real(dp) :: y
+        real(dp) :: f(0:2)
+        call self%taylor(x, f)
+        y = f(0)
+    end function zero_eval
+
+    !> The first zero of f in (0, h] (F.44)-(F.47). Given f >= 0 at 0 with f > 0 just
+    !> after 0 (f(0) > 0, or f(0) = 0 and f'(0) > 0, or f(0) = f'(0) = 0 < f''(0)), fa =
+    !> (f, f', f'') at 0, fb at h, and m3 >= |f'''| on [0, h]. found = .false.: f > 0 on
+    !> (0, h] (up to a dip below 0 of at most m3 h^3 eps^3 in a sub-interval of width
+    !> 4 eps h, which is rounding). Sub-intervals are excluded by the Taylor bounds from
+    !> both ends; a sub-interval with f(b) <= 0 on which f' < 0 is proven holds exactly
+    !> one zero, found by Brent's method; anything else is halved (at most max_depth
+    !> levels).
+    subroutine first_zero(fn, h, fa, fb, m3, found, x, stat, errmsg)
+        class(zero_function), intent(inout) :: fn             !! the function
+        real(dp), intent(in) :: h                             !! interval end (> 0)
+        real(dp), intent(in) :: fa(0:2)                       !! f, f', f'' at 0
+        real(dp), intent(in) :: fb(0:2)                       !! f, f', f'' at h
+        real(dp), intent(in) :: m3                            !! bound on |f'''| on [0, h]
+        logical, intent(out) :: found                         !! a zero in (0, h]
+        real(dp), intent(out) :: x                            !! the first zero
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp) :: xs(max_depth + 1), fs(0:2, max_depth + 1), xa, fl(0:2), xb, fr(0:2)
+        real(dp) :: el, width, xm, fm(0:2)
+        integer :: top, iter
+        stat = SEISPULSE_SUCCESS
+        found = .false.
+        x = h
+        width = 4.0_dp * epsilon(1.0_dp) * h
+        xa = 0.0_dp
+        fl = fa
+        top = 1
+        xs(1) = h
+        fs(:, 1) = fb
+        do iter = 1, 64 * (max_depth + 2)
+            xb = xs(top)
+            fr = fs(:, top)
+            el = xb - xa
+            if (excluded(fl, fr, el, m3)) then
+                call pop()
+                if (top == 0) return
+                cycle
+            end if
+            if (fr(0) <= 0.0_dp .and. (decreasing(fl, fr, el, m3) .or. el <= width &
+                                       .or. top > max_depth)) then
+                found = .true.
+                if (zero(fr(0)) .or. .not. (fl(0) > 0.0_dp)) then
+                    x = xb
+                    if (.not. (fl(0) > 0.0_dp)) x = xa
+                else
+                    call find_root(fn, xa, xb, x, stat, errmsg, fa_known=fl(0), fb_known=fr(0))
+                end if
+                x = min(max(x, xa), xb)
+                return
+            end if
+            if (el <= width .or. top > max_depth) then
+                ! f > 0 at both ends of a sub-interval at rounding width: no stop here
+                call pop()
+                if (top == 0) return
+                cycle
+            end if
+            xm = xa + 0.5_dp * el
+            call fn%taylor(xm, fm)
+            top = top + 1
+            xs(top) = xm
+            fs(:, top) = fm
+        end do
+        call set_error(stat, errmsg, SEISPULSE_INTERNAL, 'first_zero: no decision (a bug)')
+
+    contains
+
+        subroutine pop()
+            xa = xs(top)
+            fl = fs(:, top)
+            top = top - 1
+        end subroutine pop
+
+    end subroutine first_zero
+
+    !> No zero of f in (xa, xa + el]: the Taylor lower bounds from the two ends
+    !> (F.46) are positive on pieces that cover the interval.
+    pure logical function excluded(fl, fr, el, m3)
+        real(dp), intent(in) :: fl(0:2), fr(0:2), el, m3
+        real(dp) :: dl, dr
+        excluded = .false.
+        if (.not. (fr(0) > 0.0_dp)) return
+        dl = first_positive_root(fl(0), fl(1), 0.5_dp * (fl(2) - m3 * el / 3.0_dp))
+        dr = first_positive_root(fr(0), -fr(1), 0.5_dp * (fr(2) - m3 * el / 3.0_dp))
+        excluded = dl + dr > el
+    end function excluded
+
+    !> f' < 0 on (xa, xa + el) from the Taylor upper bounds of f' (F.47).
+    pure logical function decreasing(fl, fr, el, m3)
+        real(dp), intent(in) :: fl(0:2), fr(0:2), el, m3
+        real(dp) :: bl, br
+        bl = fl(1) + max(fl(2), 0.0_dp) * el + 0.5_dp * m3 * el * el
+        br = fr(1) + max(-fr(2), 0.0_dp) * el + 0.5_dp * m3 * el * el
+        decreasing = bl < 0.0_dp .or. br < 0.0_dp
+    end function decreasing
+
+    !> x is zero (no -Wcompare-reals).
+    elemental logical function zero(x)
+        real(dp), intent(in) :: x
+        zero = abs(x) <= 0.0_dp
+    end function zero
+
+    !> The first d > 0 where c0 + c1 d + c2 d^2 (c0 >= 0) reaches 0; huge if never; 0 if it
+    !> is not positive just after 0.
+    pure real(dp) function first_positive_root(c0, c1, c2) result(d)
+        real(dp), intent(in) :: c0, c1, c2
+        real(dp) :: disc, qq, r1, r2
+        d = huge(1.0_dp)
+        if (c0 < 0.0_dp) then
+            d = 0.0_dp
+        else if (zero(c0)) then
+            if (c1 > 0.0_dp) then
+                if (c2 < 0.0_dp) d = -c1 / c2
+            else if (.not. (zero(c1) .and. c2 > 0.0_dp)) then
+                d = 0.0_dp
+            end if
+        else if (zero(c2)) then
+            if (c1 < 0.0_dp) d = -c0 / c1
+        else
+            disc = c1 * c1 - 4.0_dp * c2 * c0
+            if (disc < 0.0_dp) return   ! c2 > 0: no real root
+            qq = -0.5_dp * (c1 + sign(sqrt(disc), c1))
+            r1 = huge(1.0_dp)
+            r2 = huge(1.0_dp)
+            if (.not. zero(qq)) then
+                r1 = qq / c2
+                r2 = c0 / qq
+            end if
+            if (r1 > 0.0_dp) d = min(d, r1)
+            if (r2 > 0.0_dp) d = min(d, r2)
+        end if
+    end function first_positive_root
+
+end module seispulse_flexible_exact

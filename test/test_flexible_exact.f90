@@ -1,0 +1,433 @@
+!> Flexible sliding masses, exact (seispulse_flexible_exact): the modal recurrence against
+!> closed forms for step and ramp input (positive, negative damping); the coupled model
+!> without sliding against the modal response; the coupled model against an independent
+!> integration written here (RK4 on sub-steps with events located by bisection on the
+!> re-integrated sub-step) on a synthetic record and on a short soft mass with many
+!> short slides; its rigid limit (Vs -> infinity) against newmark_rigid(exact) and, under
+!> a sampled exponential pulse, against the closed form of seispulse_sliding_closed;
+!> the first-zero search on a function with a double dip; bad input.
+module test_flexible_exact
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT
+    use seispulse_flexible_exact, only: modal_response_exact, coupled_exact, zero_function, &
+                                        first_zero
+    use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, NEWMARK_EXACT
+    use testing, only: test_error, unit_test, new_unittest, check
+    implicit none
+    private
+
+    public :: collect_flexible_exact
+
+    real(dp), parameter :: pi = 3.141592653589793238462643383279502884_dp
+    real(dp), parameter :: g0 = 9.80665_dp
+    real(dp), parameter :: d1 = 1.0_dp - 8.0_dp / pi**2
+
+    !> f(x) = (x - 0.3)^2 (x - 0.31)^2 + eps_dip - 1e-6 x: two close zeros near 0.3 (test).
+    type, extends(zero_function) :: dip_t
+        real(dp) :: lift = 0.0_dp
+    contains
+        procedure :: taylor => dip_taylor
+    end type dip_t
+
+contains
+
+    subroutine collect_flexible_exact(tests)
+        type(unit_test), allocatable, intent(out) :: tests(:)
+        tests = [new_unittest('modal recurrence = closed forms (step, ramp)', test_modal_closed), &
+                 new_unittest('coupled without sliding = modal response', test_coupled_no_slide), &
+                 new_unittest('coupled = independent RK4 with events (record)', &
+                              test_coupled_reference), &
+                 new_unittest('coupled = independent RK4: short soft mass, many slides', &
+                              test_coupled_many_slides), &
+                 new_unittest('coupled -> rigid exact as Vs grows', test_coupled_rigid_limit), &
+                 new_unittest('first_zero: close double zero, touch, none', test_first_zero), &
+                 new_unittest('bad input is a status naming the parameter', test_bad_input)]
+    end subroutine collect_flexible_exact
+
+    ! ---------------------------------------------------------------- helpers
+
+    !> A deterministic strong-motion-like record (g).
+    function synthetic(n, dt, seed) result(a)
+        integer, intent(in) :: n, seed
+        real(dp), intent(in) :: dt
+        real(dp) :: a(n), t, env
+        integer :: i, k
+        real(dp), parameter :: freq(4) = [0.9_dp, 2.1_dp, 3.7_dp, 6.3_dp]
+        real(dp), parameter :: amp(4) = [0.15_dp, 0.22_dp, 0.12_dp, 0.06_dp]
+        do i = 1, n
+            t = real(i - 1, dp) * dt
+            env = (t / 2.5_dp)**2 * exp(2.0_dp - 2.0_dp * t / 2.5_dp)
+            a(i) = 0.0_dp
+            do k = 1, 4
+                a(i) = a(i) + amp(k) * sin(2.0_dp * pi * freq(k) * t + 0.41_dp * k * seed)
+            end do
+            a(i) = 1.5_dp * env * a(i)
+        end do
+    end function synthetic
+
+    !> Independent integration of the coupled model: classical RK4 on m sub-steps per
+    !> sample step, events (HEA = g ky, s' = 0) located by bisection on the sub-step
+    !> re-integrated from its start; the run-out after the record with a = 0.
+    subroutine reference_coupled(accel, dt, g, omega, xi, ky, m, s_end, s_hist, u_hist)
+        real(dp), intent(in) :: accel(:), dt, g, omega, xi, ky
+        integer, intent(in) :: m
+        real(dp), intent(out) :: s_end
+        real(dp), intent(out) :: s_hist(:), u_hist(:)
+        real(dp) :: y(4), y1(4), hs, t, tl, th, tm, ym(4), rest
+        integer :: i, j, k, n, it
+        logical :: slide
+        n = size(accel)
+        hs = dt / m
+        y = 0.0_dp
+        slide = hea_of(y, 0.0_dp, .false.) > g * ky
+        s_hist(1) = 0.0_dp
+        u_hist(1) = 0.0_dp
+        i = 0
+        do k = 1, 100000000
+            i = i + 1
+            if (i > n - 1 .and. .not. slide) exit
+            do j = 0, m - 1
+                t = real(i - 1, dp) * dt + j * hs
+                rest = hs
+                do it = 1, 4
+                    y1 = rk4(y, t, rest, slide)
+                    if (.not. slide .and. hea_of(y1, t + rest, .false.) > g * ky) then
+                        call locate(.false.)
+                    else if (slide .and. y1(4) < 0.0_dp) then
+                        call locate(.true.)
+                    else
+                        y = y1
+                        exit
+                    end if
+                end do
+            end do
+            if (i <= n - 1) then
+                s_hist(i + 1) = y(3)
+                u_hist(i + 1) = y(1)
+            end if
+        end do
+        s_end = y(3)
+    contains
+        !> The event inside [t, t + rest]: bisection on the partial step, then the phase
+        !> switches there and the rest of the sub-step is integrated by the next pass.
+        subroutine locate(stop_event)
+            logical, intent(in) :: stop_event
+            integer :: b
+            tl = 0.0_dp
+            th = rest
+            do b = 1, 200
+                tm = 0.5_dp * (tl + th)
+                if (.not. (tm > tl .and. tm < th)) exit
+                ym = rk4(y, t, tm, slide)
+                if (stop_event) then
+                    if (ym(4) < 0.0_dp) then
+                        th = tm
+                    else
+                        tl = tm
+                    end if
+                else
+                    if (hea_of(ym, t + tm, .false.) > g * ky) then
+                        th = tm
+                    else
+                        tl = tm
+                    end if
+                end if
+            end do
+            y = rk4(y, t, th, slide)
+            if (stop_event) y(4) = 0.0_dp
+            slide = .not. slide
+            t = t + th
+            rest = rest - th
+        end subroutine locate
+
+        real(dp) function acc_at(tt)
+            real(dp), intent(in) :: tt
+            integer :: ii
+            real(dp) :: r
+            ii = int(tt / dt) + 1
+            if (ii >= n) then
+                acc_at = 0.0_dp
+                return
+            end if
+            r = tt / dt - real(ii - 1, dp)
+            r = min(max(r, 0.0_dp), 1.0_dp)
+            acc_at = accel(ii) + (accel(ii + 1) - accel(ii)) * r
+        end function acc_at
+
+        real(dp) function hea_of(yy, tt, sl)
+            real(dp), intent(in) :: yy(4), tt
+            logical, intent(in) :: sl
+            real(dp) :: acc, a
+            a = acc_at(tt)
+            if (sl) then
+                acc = (-4.0_dp / pi * g * ky - 2.0_dp * xi * omega * yy(2) - omega**2 * yy(1)) / d1
+            else
+                acc = -4.0_dp / pi * g * a - 2.0_dp * xi * omega * yy(2) - omega**2 * yy(1)
+            end if
+            hea_of = g * a + 2.0_dp / pi * acc
+        end function hea_of
+
+        function rhs(yy, tt, sl) result(f)
+            real(dp), intent(in) :: yy(4), tt
+            logical, intent(in) :: sl
+            real(dp) :: f(4), a
+            a = acc_at(tt)
+            f(1) = yy(2)
+            if (sl) then
+                f(2) = (-4.0_dp / pi * g * ky - 2.0_dp * xi * omega * yy(2) - omega**2 * yy(1)) / d1
+                f(3) = yy(4)
+                f(4) = g * a - g * ky + 2.0_dp / pi * f(2)
+            else
+                f(2) = -4.0_dp / pi * g * a - 2.0_dp * xi * omega * yy(2) - omega**2 * yy(1)
+                f(3) = 0.0_dp
+                f(4) = 0.0_dp
+            end if
+        end function rhs
+
+        !> One RK4 step of length hh from (tt, yy); the record is linear on the step
+        !> (the sub-steps never cross a sample), evaluated at its own times.
+        function rk4(yy, tt, hh, sl) result(yn)
+            real(dp), intent(in) :: yy(4), tt, hh
+            logical, intent(in) :: sl
+            real(dp) :: yn(4), k1(4), k2(4), k3(4), k4(4)
+            k1 = rhs(yy, tt, sl)
+            k2 = rhs(yy + 0.5_dp * hh * k1, tt + 0.5_dp * hh, sl)
+            k3 = rhs(yy + 0.5_dp * hh * k2, tt + 0.5_dp * hh, sl)
+            k4 = rhs(yy + hh * k3, tt + hh, sl)
+            yn = yy + hh / 6.0_dp * (k1 + 2.0_dp * k2 + 2.0_dp * k3 + k4)
+        end function rk4
+    end subroutine reference_coupled
+
+    subroutine run_coupled(error, accel, dt, omega, xi, ky, smax, sfin, tend, label, s_hist, &
+                           u_hist)
+        type(test_error), allocatable, intent(inout) :: error
+        real(dp), intent(in) :: accel(:), dt, omega, xi, ky
+        real(dp), intent(out) :: smax, sfin, tend
+        character(len=*), intent(in) :: label
+        real(dp), intent(out), optional :: s_hist(:), u_hist(:)
+        integer :: stat
+        character(len=200) :: msg
+        msg = ''
+        call coupled_exact(accel, dt, g0, omega, xi, ky, smax, sfin, tend, stat, msg, &
+                           s_hist=s_hist, u_modal=u_hist)
+        call check(error, stat, SEISPULSE_SUCCESS, label//': status ('//trim(msg)//')')
+    end subroutine run_coupled
+
+    ! ---------------------------------------------------------------- tests
+
+    !> From rest, a = A for t >= 0 (a step at the first sample) and a = r t (a ramp):
+    !> u(t) in closed form, for damping 0.05, -0.1 and 0.7 (F.30).
+    subroutine test_modal_closed(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 801
+        real(dp), parameter :: dt = 0.005_dp, omega = 2.0_dp * pi / 0.37_dp
+        real(dp) :: a(n), u(n), hea(n), ue(n), t, wd, kk, c1, c2, w2, cc, up0
+        real(dp), parameter :: xis(3) = [0.05_dp, -0.1_dp, 0.7_dp]
+        integer :: i, j, stat
+        do j = 1, 3
+            wd = omega * sqrt(1.0_dp - xis(j)**2)
+            w2 = omega**2
+            cc = 2.0_dp * xis(j) * omega
+            ! step: u = -(4/pi) g A/w^2 (1 - e^(-xi w t)(cos wd t + xi w/wd sin wd t))
+            a = 0.2_dp
+            call modal_response_exact(a, dt, g0, omega, xis(j), u, hea, stat)
+            call check(error, stat, SEISPULSE_SUCCESS, 'step: status')
+            if (allocated(error)) return
+            kk = -4.0_dp / pi * g0 * 0.2_dp
+            do i = 1, n
+                t = (i - 1) * dt
+                ue(i) = kk / w2 * (1.0_dp - exp(-xis(j) * omega * t) * (cos(wd * t) &
+                        + xis(j) * omega / wd * sin(wd * t)))
+            end do
+            call check(error, u, ue, atol=1.0e-13_dp * maxval(abs(ue)), &
+                       message='step response, xi = '//trim(num(xis(j))))
+            if (allocated(error)) return
+            ! HEA at the first sample: a (1 - 8/pi^2) (u = u' = 0, u'' = -(4/pi) g a)
+            call check(error, hea(1), 0.2_dp * d1, rtol=1.0e-15_dp, message='HEA(0)')
+            if (allocated(error)) return
+            ! ramp a = r t: u = K t/w2 - K c/w2^2 + homogeneous (K = -(4/pi) g r)
+            do i = 1, n
+                a(i) = 0.3_dp * (i - 1) * dt
+            end do
+            call modal_response_exact(a, dt, g0, omega, xis(j), u, hea, stat)
+            kk = -4.0_dp / pi * g0 * 0.3_dp
+            up0 = -kk * cc / w2**2
+            c1 = -up0
+            c2 = (-kk / w2 + xis(j) * omega * c1) / wd
+            do i = 1, n
+                t = (i - 1) * dt
+                ue(i) = kk * t / w2 + up0 + exp(-xis(j) * omega * t) * (c1 * cos(wd * t) &
+                        + c2 * sin(wd * t))
+            end do
+            call check(error, u, ue, atol=1.0e-13_dp * maxval(abs(ue)), &
+                       message='ramp response, xi = '//trim(num(xis(j))))
+            if (allocated(error)) return
+        end do
+    end subroutine test_modal_closed
+
+    !> ky = +inf (huge): the coupled model never slides and its u is the modal response.
+    subroutine test_coupled_no_slide(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 2000
+        real(dp), parameter :: dt = 0.005_dp
+        real(dp) :: a(n), u(n), hea(n), uc(n), sc(n), smax, sfin, tend, omega
+        integer :: stat
+        a = synthetic(n, dt, 1)
+        omega = pi * 300.0_dp / (2.0_dp * 20.0_dp)
+        call modal_response_exact(a, dt, g0, omega, 0.15_dp, u, hea, stat)
+        call run_coupled(error, a, dt, omega, 0.15_dp, 1.0e3_dp, smax, sfin, tend, 'no slide', &
+                         s_hist=sc, u_hist=uc)
+        if (allocated(error)) return
+        call check(error, smax, 0.0_dp, atol=0.0_dp, message='no sliding')
+        if (allocated(error)) return
+        call check(error, uc, u, atol=1.0e-12_dp * maxval(abs(u)), message='u = modal u')
+    end subroutine test_coupled_no_slide
+
+    !> A synthetic record, H = 20 m, Vs = 300 m/s, damping 0.2 and -0.005 plus an over-damped
+    !> sliding oscillator (xi = 0.6): exact = RK4 with 400 sub-steps per sample.
+    subroutine test_coupled_reference(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 1600
+        real(dp), parameter :: dt = 0.005_dp
+        real(dp) :: a(n), sh(n), uh(n), sr(n), ur(n), smax, sfin, tend, send, omega
+        real(dp), parameter :: xis(3) = [0.2_dp, -0.005_dp, 0.6_dp]
+        integer :: j
+        a = synthetic(n, dt, 2)
+        omega = pi * 300.0_dp / (2.0_dp * 20.0_dp)
+        do j = 1, 3
+            call run_coupled(error, a, dt, omega, xis(j), 0.12_dp, smax, sfin, tend, 'record', &
+                             s_hist=sh, u_hist=uh)
+            if (allocated(error)) return
+            call reference_coupled(a, dt, g0, omega, xis(j), 0.12_dp, 400, send, sr, ur)
+            call check(error, smax > 1.0e-3_dp, 'slides, xi = '//trim(num(xis(j))))
+            if (allocated(error)) return
+            call check(error, sfin, send, rtol=1.0e-13_dp, message='final s, xi = ' &
+                       //trim(num(xis(j))))
+            if (allocated(error)) return
+            call check(error, sh, sr, atol=1.0e-12_dp * send, message='s history')
+            if (allocated(error)) return
+            call check(error, uh, ur, atol=1.0e-11_dp * maxval(abs(ur)), message='u history')
+            if (allocated(error)) return
+        end do
+    end subroutine test_coupled_reference
+
+    !> H = 5 m, Vs = 600 m/s: T = 33 ms, the sliding oscillator's period 15 ms (3 samples):
+    !> many short slides, each located inside a step.
+    subroutine test_coupled_many_slides(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 1200
+        real(dp), parameter :: dt = 0.005_dp
+        real(dp) :: a(n), sh(n), uh(n), sr(n), ur(n), smax, sfin, tend, send, omega
+        a = synthetic(n, dt, 3)
+        omega = pi * 600.0_dp / (2.0_dp * 5.0_dp)
+        call run_coupled(error, a, dt, omega, 0.1_dp, 0.1_dp, smax, sfin, tend, 'soft', &
+                         s_hist=sh, u_hist=uh)
+        if (allocated(error)) return
+        call reference_coupled(a, dt, g0, omega, 0.1_dp, 0.1_dp, 1000, send, sr, ur)
+        call check(error, smax > 1.0e-3_dp, 'slides')
+        if (allocated(error)) return
+        call check(error, sfin, send, rtol=1.0e-13_dp, message='final s')
+        if (allocated(error)) return
+        call check(error, sh, sr, atol=1.0e-12_dp * send, message='s history')
+    end subroutine test_coupled_many_slides
+
+    !> Vs = 1e5 m/s (omega ~ 1.6e4 rad/s): the coupled displacement tends to the rigid
+    !> block's (newmark_rigid, exact) on the record; the difference falls with Vs.
+    subroutine test_coupled_rigid_limit(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 1600
+        real(dp), parameter :: dt = 0.005_dp
+        real(dp) :: a(n), smax, sfin, tend, d_prev, d
+        type(newmark_block_t) :: blk
+        type(newmark_result_t) :: res
+        real(dp), parameter :: vss(3) = [1.0e3_dp, 1.0e4_dp, 1.0e5_dp]
+        integer :: stat, j
+        a = synthetic(n, dt, 4)
+        blk%ky = 0.1_dp
+        call newmark_rigid(a, dt, blk, NEWMARK_EXACT, g0, res, stat)
+        call check(error, stat, SEISPULSE_SUCCESS, 'rigid: status')
+        if (allocated(error)) return
+        d_prev = huge(1.0_dp)
+        do j = 1, 3
+            call run_coupled(error, a, dt, pi * vss(j) / 20.0_dp, 0.1_dp, 0.1_dp, smax, sfin, &
+                             tend, 'stiff')
+            if (allocated(error)) return
+            d = abs(sfin - res%final_disp)
+            call check(error, d < d_prev, 'difference falls with Vs')
+            if (allocated(error)) return
+            d_prev = d
+        end do
+        call check(error, sfin, res%final_disp, rtol=1.0e-5_dp, message='Vs = 1e5: rigid')
+    end subroutine test_coupled_rigid_limit
+
+    subroutine dip_taylor(self, x, f)
+        class(dip_t), intent(inout) :: self
+        real(dp), intent(in) :: x
+        real(dp), intent(out) :: f(0:2)
+        real(dp) :: p, q
+        p = x - 0.3_dp
+        q = x - 0.31_dp
+        f(0) = p**2 * q**2 + self%lift
+        f(1) = 2.0_dp * p * q**2 + 2.0_dp * p**2 * q
+        f(2) = 2.0_dp * q**2 + 8.0_dp * p * q + 2.0_dp * p**2
+    end subroutine dip_taylor
+
+    !> f = (x - 0.3)^2 (x - 0.31)^2 + lift on (0, 1]: lift < 0 gives two zeros close to
+    !> 0.3 and two near 0.31 (the first is found, not a later one); lift > 0 none.
+    subroutine test_first_zero(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(dip_t) :: f
+        real(dp) :: fa(0:2), fb(0:2), x, m3, lift, xe
+        logical :: found
+        integer :: stat
+        m3 = 24.0_dp * 1.0_dp   ! |f'''| = |24 x - 12 (0.61)| <= 24 on [0, 1]
+        lift = -1.0e-10_dp
+        f%lift = lift
+        call f%taylor(0.0_dp, fa)
+        call f%taylor(1.0_dp, fb)
+        call first_zero(f, 1.0_dp, fa, fb, m3, found, x, stat)
+        call check(error, stat, SEISPULSE_SUCCESS, 'status')
+        if (allocated(error)) return
+        call check(error, found, 'found')
+        if (allocated(error)) return
+        ! first zero: p^2 q^2 = 1e-10, p q = -1e-5 with p > 0 > q... the smallest root of
+        ! x^2 - 0.61 x + 0.093 + 1e-5 = 0 is wrong-sided: p q = +-1e-5; the first crossing is
+        ! where p q = 1e-5 with p < 0: x = (0.61 - sqrt(0.61^2 - 4 (0.093 - 1e-5)))/2
+        xe = 0.5_dp * (0.61_dp - sqrt(0.61_dp**2 - 4.0_dp * (0.093_dp - 1.0e-5_dp)))
+        call check(error, x, xe, rtol=1.0e-12_dp, message='first of four zeros')
+        if (allocated(error)) return
+        f%lift = 1.0e-12_dp
+        call f%taylor(0.0_dp, fa)
+        call f%taylor(1.0_dp, fb)
+        call first_zero(f, 1.0_dp, fa, fb, m3, found, x, stat)
+        call check(error, .not. found, 'no zero above the axis')
+    end subroutine test_first_zero
+
+    subroutine test_bad_input(error)
+        type(test_error), allocatable, intent(out) :: error
+        real(dp) :: a(10), u(10), hea(10), smax, sfin, tend
+        integer :: stat
+        character(len=200) :: msg
+        a = 0.1_dp
+        msg = ''
+        call modal_response_exact(a, 0.01_dp, g0, 10.0_dp, 1.0_dp, u, hea, stat, msg)
+        call check(error, stat, SEISPULSE_INVALID_INPUT, 'xi = 1')
+        if (allocated(error)) return
+        call check(error, index(msg, 'xi') > 0, 'message names xi: '//trim(msg))
+        if (allocated(error)) return
+        call coupled_exact(a, 0.01_dp, g0, -1.0_dp, 0.1_dp, 0.1_dp, smax, sfin, tend, stat, msg)
+        call check(error, stat, SEISPULSE_INVALID_INPUT, 'omega < 0')
+        if (allocated(error)) return
+        call coupled_exact(a, 0.01_dp, g0, 10.0_dp, 0.1_dp, 0.0_dp, smax, sfin, tend, stat, msg)
+        call check(error, stat, SEISPULSE_INVALID_INPUT, 'ky = 0')
+        if (allocated(error)) return
+        call check(error, index(msg, 'ky') > 0, 'message names ky: '//trim(msg))
+    end subroutine test_bad_input
+
+    function num(x) result(s)
+        real(dp), intent(in) :: x
+        character(len=24) :: s
+        write (s, '(g0.4)') x
+    end function num
+
+end module test_flexible_exact
