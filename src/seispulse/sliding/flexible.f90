@@ -82,7 +82,7 @@ contains
         type(flexible_result_t), intent(out) :: res           !! the result
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        integer, intent(in), optional :: mode                 !! NEWMARK_DOWN (default), _BOTH, _ASYM
+        integer, intent(in), optional :: mode                 !! NEWMARK_DOWN (default), BOTH, ASYM
         real(dp), intent(in), optional :: ky_up               !! upslope yield (g), NEWMARK_ASYM
         real(dp), intent(in), optional :: ky_disp(:)          !! table: displacement (m)
         real(dp), intent(in), optional :: ky_values(:)        !! table: yield (g)

@@ -66,7 +66,8 @@ module seispulse_flexible_model
         !> given (SLAMMER's tables print |kmax|)
         real(dp) :: kmax = 0.0_dp
         real(dp) :: vs_final = 0.0_dp        !! Vs used for the final response (m/s)
-        real(dp) :: damping_final = 0.0_dp   !! total damping used (fraction): material/user + radiation
+        !> total damping used (fraction): material (or the user's) + radiation
+        real(dp) :: damping_final = 0.0_dp
         real(dp) :: damping_radiation = 0.0_dp  !! radiation damping xi_f (fraction)
         real(dp) :: period = 0.0_dp          !! 4 H / Vs_final (s)
         integer :: iterations = 0            !! equivalent-linear iterations (0 for linear)
