@@ -11,8 +11,9 @@ module test_flexible_exact
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT
     use seispulse_flexible_exact, only: modal_response_exact, coupled_exact, zero_function, &
                                         first_zero
-    use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, NEWMARK_EXACT
-    use testing, only: test_error, unit_test, new_unittest, check
+    use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, NEWMARK_EXACT, &
+                                 NEWMARK_SLAMMER
+    use testing, only: test_error, unit_test, new_unittest, check, same_bits
     implicit none
     private
 
@@ -41,6 +42,13 @@ contains
                               test_coupled_many_slides), &
                  new_unittest('coupled -> rigid exact as Vs grows', test_coupled_rigid_limit), &
                  new_unittest('first_zero: close double zero, touch, none', test_first_zero), &
+                 new_unittest('rigid ky table, one row = constant ky (bitwise)', &
+                              test_table_one_row), &
+                 new_unittest('rigid ky table, equal rows = constant ky', test_table_flat), &
+                 new_unittest('rigid ky table, exact = independent RK4 with events', &
+                              test_table_reference), &
+                 new_unittest('rigid ky table, slammer = RigidBlock rule written here', &
+                              test_table_slammer), &
                  new_unittest('bad input is a status naming the parameter', test_bad_input)]
     end subroutine collect_flexible_exact
 
@@ -360,6 +368,248 @@ contains
         call check(error, sfin, res%final_disp, rtol=1.0e-5_dp, message='Vs = 1e5: rigid')
     end subroutine test_coupled_rigid_limit
 
+    ! ---------------------------------------------------------------- yield tables
+
+    function table_block(d, k) result(b)
+        real(dp), intent(in) :: d(:), k(:)
+        type(newmark_block_t) :: b
+        allocate(b%ky_disp, source=d)
+        allocate(b%ky_values, source=k)
+    end function table_block
+
+    !> A one-row table is the constant yield, bit for bit (both rules, histories too).
+    subroutine test_table_one_row(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 1600
+        real(dp), parameter :: dt = 0.005_dp
+        real(dp) :: a(n), u1(n), u2(n), w1(n), w2(n)
+        type(newmark_block_t) :: bc, bt
+        type(newmark_result_t) :: r1, r2
+        integer :: stat, m
+        integer, parameter :: methods(2) = [NEWMARK_EXACT, NEWMARK_SLAMMER]
+        a = synthetic(n, dt, 5)
+        bc%ky = 0.12_dp
+        bt = table_block([0.0_dp], [0.12_dp])
+        do m = 1, 2
+            call newmark_rigid(a, dt, bc, methods(m), g0, r1, stat, u_hist=u1, w_hist=w1)
+            call newmark_rigid(a, dt, bt, methods(m), g0, r2, stat, u_hist=u2, w_hist=w2)
+            call check(error, stat, SEISPULSE_SUCCESS, 'status')
+            if (allocated(error)) return
+            call check(error, r1%final_disp > 0.01_dp .and. identical(u1, u2) &
+                       .and. identical(w1, w2) .and. same_bits(r1%final_disp, r2%final_disp) &
+                       .and. same_bits(r1%t_end, r2%t_end), 'one row = constant, bitwise')
+            if (allocated(error)) return
+        end do
+    end subroutine test_table_one_row
+
+    !> Rows of equal ky: the table path (kappa = 0, segment ends crossed while sliding)
+    !> gives the constant-ky result to rounding.
+    subroutine test_table_flat(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 1600
+        real(dp), parameter :: dt = 0.005_dp
+        real(dp) :: a(n), u1(n), u2(n)
+        type(newmark_block_t) :: bc, bt
+        type(newmark_result_t) :: r1, r2
+        integer :: stat
+        a = synthetic(n, dt, 5)
+        bc%ky = 0.12_dp
+        bt = table_block([0.0_dp, 0.013_dp, 0.02_dp, 0.3_dp], [0.12_dp, 0.12_dp, 0.12_dp, 0.12_dp])
+        call newmark_rigid(a, dt, bc, NEWMARK_EXACT, g0, r1, stat, u_hist=u1)
+        call newmark_rigid(a, dt, bt, NEWMARK_EXACT, g0, r2, stat, u_hist=u2)
+        call check(error, stat, SEISPULSE_SUCCESS, 'status')
+        if (allocated(error)) return
+        call check(error, r2%final_disp, r1%final_disp, rtol=1.0e-13_dp, message='final')
+        if (allocated(error)) return
+        call check(error, u2, u1, atol=1.0e-13_dp * r1%final_disp, message='history')
+        if (allocated(error)) return
+        call check(error, r2%t_end, r1%t_end, rtol=1.0e-12_dp, message='t_end')
+        if (allocated(error)) return
+        call check(error, size(r2%slides), size(r1%slides), 'slides')
+    end subroutine test_table_flat
+
+    !> ky falls from 0.15 to 0.06 over 2 cm then rises to 0.11 at 10 cm: exact = RK4 with
+    !> 400 sub-steps per sample, stops and onsets by bisection (g = 9.80665).
+    subroutine test_table_reference(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 1600
+        real(dp), parameter :: dt = 0.005_dp
+        real(dp), parameter :: kd(3) = [0.0_dp, 0.02_dp, 0.1_dp], kv(3) = [0.15_dp, 0.06_dp, 0.11_dp]
+        real(dp) :: a(n), u1(n), ur(n), uend
+        type(newmark_block_t) :: bt
+        type(newmark_result_t) :: r1
+        integer :: stat
+        a = synthetic(n, dt, 6)
+        bt = table_block(kd, kv)
+        call newmark_rigid(a, dt, bt, NEWMARK_EXACT, g0, r1, stat, u_hist=u1)
+        call check(error, stat, SEISPULSE_SUCCESS, 'status')
+        if (allocated(error)) return
+        call reference_table(a, dt, kd, kv, 400, ur, uend)
+        call check(error, r1%final_disp > 0.1_dp, 'slides past the table')
+        if (allocated(error)) return
+        call check(error, r1%final_disp, uend, rtol=1.0e-11_dp, message='final')
+        if (allocated(error)) return
+        call check(error, u1, ur, atol=1.0e-11_dp * uend, message='history')
+    end subroutine test_table_reference
+
+    !> Rigid block with ky(u) from the table: RK4 on m sub-steps, events by bisection.
+    subroutine reference_table(accel, dt, kd, kv, m, u_hist, u_end)
+        real(dp), intent(in) :: accel(:), dt, kd(:), kv(:)
+        integer, intent(in) :: m
+        real(dp), intent(out) :: u_hist(:), u_end
+        real(dp) :: y(2), y1(2), hs, t, rest, tl, th, tm, ym(2)
+        integer :: i, j, k, it, b, n
+        logical :: slide
+        n = size(accel)
+        hs = dt / m
+        y = 0.0_dp
+        slide = accel(1) > kyu(0.0_dp)
+        u_hist(1) = 0.0_dp
+        i = 0
+        do k = 1, 10000000
+            i = i + 1
+            if (i > n - 1 .and. .not. slide) exit
+            do j = 0, m - 1
+                t = real(i - 1, dp) * dt + j * hs
+                rest = hs
+                do it = 1, 4
+                    y1 = rk4(y, t, rest)
+                    if ((slide .and. y1(2) < 0.0_dp) .or. &
+                        (.not. slide .and. acc_at(t + rest) > kyu(y(1)))) then
+                        tl = 0.0_dp
+                        th = rest
+                        do b = 1, 200
+                            tm = 0.5_dp * (tl + th)
+                            if (.not. (tm > tl .and. tm < th)) exit
+                            ym = rk4(y, t, tm)
+                            if ((slide .and. ym(2) < 0.0_dp) .or. &
+                                (.not. slide .and. acc_at(t + tm) > kyu(y(1)))) then
+                                th = tm
+                            else
+                                tl = tm
+                            end if
+                        end do
+                        y = rk4(y, t, th)
+                        if (slide) y(2) = 0.0_dp
+                        slide = .not. slide
+                        t = t + th
+                        rest = rest - th
+                    else
+                        y = y1
+                        exit
+                    end if
+                end do
+            end do
+            if (i <= n - 1) u_hist(i + 1) = y(1)
+        end do
+        u_end = y(1)
+    contains
+        real(dp) function kyu(u)
+            real(dp), intent(in) :: u
+            integer :: l
+            kyu = kv(size(kv))
+            do l = 1, size(kd) - 1
+                if (u < kd(l + 1)) then
+                    kyu = kv(l) + (kv(l + 1) - kv(l)) * (u - kd(l)) / (kd(l + 1) - kd(l))
+                    return
+                end if
+            end do
+        end function kyu
+        real(dp) function acc_at(tt)
+            real(dp), intent(in) :: tt
+            integer :: ii
+            real(dp) :: r
+            ii = int(tt / dt) + 1
+            if (ii >= n) then
+                acc_at = 0.0_dp
+                return
+            end if
+            r = min(max(tt / dt - real(ii - 1, dp), 0.0_dp), 1.0_dp)
+            acc_at = accel(ii) + (accel(ii + 1) - accel(ii)) * r
+        end function acc_at
+        function rhs(yy, tt) result(f)
+            real(dp), intent(in) :: yy(2), tt
+            real(dp) :: f(2)
+            if (slide) then
+                f = [yy(2), g0 * (acc_at(tt) - kyu(yy(1)))]
+            else
+                f = 0.0_dp
+            end if
+        end function rhs
+        function rk4(yy, tt, hh) result(yn)
+            real(dp), intent(in) :: yy(2), tt, hh
+            real(dp) :: yn(2), k1(2), k2(2), k3(2), k4(2)
+            k1 = rhs(yy, tt)
+            k2 = rhs(yy + 0.5_dp * hh * k1, tt + 0.5_dp * hh)
+            k3 = rhs(yy + 0.5_dp * hh * k2, tt + 0.5_dp * hh)
+            k4 = rhs(yy + hh * k3, tt + hh)
+            yn = yy + hh / 6.0_dp * (k1 + 2.0_dp * k2 + 2.0_dp * k3 + k4)
+        end function rk4
+    end subroutine reference_table
+
+    !> SLAMMER RigidBlock's loop with a table (one way, cm), written out here.
+    subroutine test_table_slammer(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 1600
+        real(dp), parameter :: dt = 0.005_dp
+        real(dp), parameter :: kd(3) = [0.0_dp, 0.02_dp, 0.1_dp], kv(3) = [0.15_dp, 0.06_dp, 0.11_dp]
+        real(dp) :: a(n), u1(n), ue(n), q, r, s, u, v, y, tt, nn, aa, gcm, prop, dcm(3)
+        type(newmark_block_t) :: bt
+        type(newmark_result_t) :: r1
+        integer :: stat, i, pos
+        a = synthetic(n, dt, 6)
+        bt = table_block(kd, kv)
+        call newmark_rigid(a, dt, bt, NEWMARK_SLAMMER, g0, r1, stat, u_hist=u1)
+        call check(error, stat, SEISPULSE_SUCCESS, 'status')
+        if (allocated(error)) return
+        gcm = 100.0_dp * g0
+        dcm = 100.0_dp * kd
+        tt = kv(1) * gcm
+        q = 0.0_dp
+        r = 0.0_dp
+        s = 0.0_dp
+        u = 0.0_dp
+        v = 0.0_dp
+        pos = 1
+        do i = 1, n
+            aa = a(i) * gcm
+            if (abs(v) < 1.0e-15_dp) then
+                if (abs(aa) > tt) then
+                    nn = sign(1.0_dp, aa)
+                else
+                    nn = aa / tt
+                end if
+            else
+                nn = sign(1.0_dp, v)
+            end if
+            y = aa - nn * tt
+            v = r + dt / 2.0_dp * (y + s)
+            if (v <= 0.0_dp) then
+                v = 0.0_dp
+                y = 0.0_dp
+            end if
+            u = q + dt / 2.0_dp * (v + r)
+            q = u
+            r = v
+            s = y
+            ue(i) = u / 100.0_dp
+            if (pos == 3) cycle
+            do while (u > dcm(pos + 1))
+                pos = pos + 1
+                if (pos == 3) exit
+            end do
+            if (pos == 3) then
+                tt = gcm * kv(3)
+            else
+                prop = (u - dcm(pos)) / (dcm(pos + 1) - dcm(pos))
+                tt = gcm * (kv(pos) - (kv(pos) - kv(pos + 1)) * prop)
+            end if
+        end do
+        call check(error, ue(n) > 0.1_dp, 'slides past the table')
+        if (allocated(error)) return
+        call check(error, u1, ue, atol=1.0e-15_dp * ue(n), message='RigidBlock rule')
+    end subroutine test_table_slammer
+
     subroutine dip_taylor(self, x, f)
         class(dip_t), intent(inout) :: self
         real(dp), intent(in) :: x
@@ -423,6 +673,16 @@ contains
         if (allocated(error)) return
         call check(error, index(msg, 'ky') > 0, 'message names ky: '//trim(msg))
     end subroutine test_bad_input
+
+    !> The arrays have the same bits.
+    pure logical function identical(a, b)
+        real(dp), intent(in) :: a(:), b(:)
+        integer :: i
+        identical = size(a) == size(b)
+        do i = 1, min(size(a), size(b))
+            identical = identical .and. same_bits(a(i), b(i))
+        end do
+    end function identical
 
     function num(x) result(s)
         real(dp), intent(in) :: x

@@ -23,7 +23,7 @@ import numpy as np
 from . import _core
 from . import _fortran_codes as _f
 from ._seispulse import (sp_fetch_slides, sp_newmark_incline, sp_newmark_rigid,
-                         sp_newmark_rigid_many)
+                         sp_newmark_rigid_many, sp_newmark_rigid_table)
 from .errors import InvalidInputError
 from .sliding import Slide
 
@@ -80,7 +80,7 @@ def incline(mu, slope_deg, xi_deg=0.0, along_plane=True):
 
 def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
           g=STANDARD_GRAVITY, *, k_down=1.0, k_up=1.0, incline=None, history=False,
-          intervals=False):
+          intervals=False, ky_table=None):
     """Rigid-block (Newmark) sliding displacement on an accelerogram.
 
     Parameters
@@ -110,6 +110,13 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
         Return time, disp and vel at the samples.
     intervals : bool
         Return the sliding intervals.
+    ky_table : (disp_m, ky_g), optional
+        A yield that depends on the sliding displacement, instead of ky (mode 'down' only):
+        displacements (m, first 0, strictly increasing) and yields (g, > 0); ky(u) is
+        interpolated linearly, constant beyond the last row. 'exact' applies it at every
+        instant, 'slammer' as SLAMMER's RigidBlock (after each step, at u). With
+        ``method='exact'`` the peak speeds (max_vel, w_peak) are taken at the samples and
+        events only.
 
     Returns
     -------
@@ -123,6 +130,9 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
     g = _core.check_positive("g", g, " (m/s^2)")
     history = _core.check_bool("history", history)
     intervals = _core.check_bool("intervals", intervals)
+    if ky_table is not None:
+        return _rigid_table(rec, step, ky, mode, ky_up, method, g, k_down, k_up, incline,
+                            history, intervals, ky_table)
     if incline is not None:
         if not isinstance(incline, Incline):
             raise InvalidInputError("incline: must be the result of seispulse.newmark.incline()")
@@ -167,3 +177,39 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
         disp, vel = u, w
     return Rigid(float(max_disp), float(final_disp), float(u_max), float(u_min), float(max_vel),
                  float(t_end), time, disp, vel, out)
+
+
+def _rigid_table(rec, step, ky, mode, ky_up, method, g, k_down, k_up, incline, history,
+                 intervals, ky_table):
+    """:func:`rigid` with ky_table (checked arguments: rec, step, mode, method, g, flags)."""
+    if ky is not None or ky_up is not None or incline is not None or k_down != 1.0 \
+            or k_up != 1.0:
+        raise InvalidInputError("ky_table: give either ky_table or ky (and no ky_up, k_down, "
+                                "k_up, incline)")
+    if mode != "down":
+        raise InvalidInputError(f"mode = {mode!r}: a yield table (ky_table) needs mode='down'")
+    try:
+        disp, kyv = ky_table
+    except (TypeError, ValueError):
+        raise InvalidInputError("ky_table: must be a pair (disp_m, ky_g) of 1-d arrays") \
+            from None
+    disp = np.atleast_1d(np.asarray(disp, dtype=float))
+    kyv = np.atleast_1d(np.asarray(kyv, dtype=float))
+    if disp.ndim != 1 or kyv.ndim != 1:
+        raise InvalidInputError("ky_table: must be a pair (disp_m, ky_g) of 1-d arrays")
+    if disp.size != kyv.size:
+        raise InvalidInputError(f"ky_table: {disp.size} displacements but {kyv.size} yields")
+    nh = rec.size if history else 1
+    with _core.HELD_LOCK:
+        (u, w, nslides, max_disp, final_disp, u_max, u_min, max_vel, t_end, stat,
+         msg) = sp_newmark_rigid_table(rec, step, disp, kyv, _METHOD_CODES[method], g, nh)
+        fields = sp_fetch_slides(nslides if stat == 0 and intervals else 0)
+    _core.raise_for_status(stat, msg, indexed={"accel": "accel", "ky_disp": "ky_table[0]",
+                                                 "ky_values": "ky_table[1]"})
+    out = _core.slides(Slide, fields) if intervals else None
+    time = disp_h = vel = None
+    if history:
+        time = np.arange(rec.size) * step
+        disp_h, vel = u, w
+    return Rigid(float(max_disp), float(final_disp), float(u_max), float(u_min), float(max_vel),
+                 float(t_end), time, disp_h, vel, out)

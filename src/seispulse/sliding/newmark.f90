@@ -37,6 +37,10 @@ module seispulse_newmark
     use seispulse_sliding_sim, only: slide_t
     use seispulse_pieces, only: record_step_check
     use seispulse_sliding_closed, only: inclined_resistances
+    use seispulse_flexible_model, only: ky_table_validate
+    use seispulse_flexible_exact, only: zero_function, first_zero
+    use seispulse_roots, only: find_root
+    use seispulse_special, only: inv_fact => inv_factorial
     implicit none
     private
 
@@ -69,6 +73,10 @@ module seispulse_newmark
         real(dp) :: ky_up = 0.1_dp       !! yield acceleration upslope (g), > 0 (ASYM only)
         real(dp) :: k_down = 1.0_dp      !! along-plane factor downslope, > 0 (ASYM only)
         real(dp) :: k_up = 1.0_dp        !! along-plane factor upslope, > 0 (ASYM only)
+        !> Yield table (DOWN only; then ky is ignored): ky(u) interpolated linearly in the
+        !> sliding displacement u, constant beyond the last row (doc/newmark.md section 5).
+        real(dp), allocatable :: ky_disp(:)    !! displacements (m): 0 first, increasing
+        real(dp), allocatable :: ky_values(:)  !! yields (g) > 0
     end type newmark_block_t
 
     !> Result of one analysis (SI).
@@ -82,6 +90,22 @@ module seispulse_newmark
         type(slide_t), allocatable :: slides(:)  !! sliding intervals (times s, u m, u' m/s)
     end type newmark_result_t
 
+    !> A slide on one segment of a yield table (rigid_exact_table, (N.8)): Y = U - U0 from
+    !> speed w0 with Y'' = -kappa Y + f0 + f1 tau (g units).
+    type, extends(zero_function) :: table_slide_t
+        real(dp) :: kappa = 0.0_dp  !! d ky/d U (1/s^2)
+        real(dp) :: w0 = 0.0_dp     !! speed at the start (g s)
+        real(dp) :: f0 = 0.0_dp     !! a - ky at the start (g)
+        real(dp) :: f1 = 0.0_dp     !! slope of a (g/s)
+        real(dp) :: target = 0.0_dp !! Y at the segment end (mode 1)
+        integer :: mode = 0         !! 0: f = Y', 1: f = Y - target
+    contains
+        procedure :: taylor => table_taylor
+        procedure :: disp => table_disp
+        procedure :: vel => table_vel
+        procedure :: bound => table_bound
+    end type table_slide_t
+
 contains
 
     ! ------------------------------------------------------------------------------
@@ -94,6 +118,18 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         stat = SEISPULSE_SUCCESS
+        if (allocated(blk%ky_disp) .or. allocated(blk%ky_values)) then
+            if (.not. (allocated(blk%ky_disp) .and. allocated(blk%ky_values))) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky_disp, ky_values: ' &
+                               //'give both or neither')
+            else if (blk%mode /= NEWMARK_DOWN) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'mode: a yield table ' &
+                               //'(ky_disp, ky_values) needs mode down (one-way sliding)')
+            else
+                call ky_table_validate(blk%ky_disp, blk%ky_values, stat, errmsg)
+            end if
+            return
+        end if
         if (blk%mode < NEWMARK_DOWN .or. blk%mode > NEWMARK_ASYM) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'mode: unknown code (allowed:' &
                            //' 1 down, 2 both, 3 asym)')
@@ -187,7 +223,24 @@ contains
             k_up = blk%k_up
         end select
 
-        if (method == NEWMARK_EXACT) then
+        if (allocated(blk%ky_disp)) then
+            if (size(blk%ky_disp) == 1) then
+                ! one row: the constant yield (the same arithmetic, bit for bit)
+                if (method == NEWMARK_EXACT) then
+                    call rigid_exact(accel, dt, blk%ky_values(1), ay_up, k_down, k_up, g, res, &
+                                     stat, errmsg, u_hist, w_hist)
+                else
+                    call rigid_slammer(accel, dt, blk%ky_values(1), ay_up, k_down, k_up, .true., &
+                                       g, res, u_hist, w_hist)
+                end if
+            else if (method == NEWMARK_EXACT) then
+                call rigid_exact_table(accel, dt, blk%ky_disp, blk%ky_values, g, res, stat, &
+                                       errmsg, u_hist, w_hist)
+            else
+                call rigid_slammer(accel, dt, blk%ky_values(1), ay_up, k_down, k_up, .true., &
+                                   g, res, u_hist, w_hist, blk%ky_disp, blk%ky_values)
+            end if
+        else if (method == NEWMARK_EXACT) then
             call rigid_exact(accel, dt, blk%ky, ay_up, k_down, k_up, g, res, stat, errmsg, &
                              u_hist, w_hist)
         else
@@ -468,6 +521,309 @@ contains
 
     end subroutine rigid_exact
 
+    ! ------------------------------------------------------------------------------
+    ! Exact integration with a yield table
+    ! ------------------------------------------------------------------------------
+
+    !> The exact solution with ky(u) from a table (doc/newmark.md (N.7)-(N.9)), in the units
+    !> of rigid_exact (g, g s, g s^2). On a table segment ky = k_i + kappa (U - D_i), so a slide
+    !> obeys Y'' = -kappa Y + f0 + f1 tau (Y = U - U0) with the closed form
+    !>     Y = W0 tau c1 + f0 tau^2 c2 + f1 tau^3 c3,  Y' = W0 c0 + f0 tau c1 + f1 tau^2 c2 (N.8)
+    !> (c_k the Stumpff functions of kappa tau^2, any sign of kappa). The stop (first zero of
+    !> Y') comes from first_zero with the bound (N.9) on |Y''''| = |kappa Y''|; a segment end
+    !> (U increasing up to the stop: one crossing) by Brent's method. Peak speeds are taken
+    !> at the samples and events.
+    subroutine rigid_exact_table(accel, dt, kd, kv, g, res, stat, errmsg, u_hist, w_hist)
+        real(dp), intent(in) :: accel(:), dt, kd(:), kv(:), g
+        type(newmark_result_t), intent(inout) :: res
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        real(dp), intent(out), optional :: u_hist(:), w_hist(:)
+
+        type(slide_t), allocatable :: buf(:)
+        type(table_slide_t) :: ph
+        real(dp) :: dd(size(kd))
+        real(dp) :: u, w, x, h, as, a0, a1, t0, fa(0:2), fb(0:2), m3, xs, xb, ky_now, xo, wpk
+        real(dp) :: tpk, kmin
+        integer :: n, i, k, nev, nt, seg, lim
+        logical :: sliding, found, want_u, want_w
+
+        stat = SEISPULSE_SUCCESS
+        n = size(accel)
+        nt = size(kd)
+        dd = kd / g
+        kmin = minval(kv)
+        want_u = present(u_hist)
+        want_w = present(w_hist)
+        allocate(buf(8))
+        k = 0
+        u = 0.0_dp
+        w = 0.0_dp
+        seg = 1
+        sliding = .false.
+        wpk = 0.0_dp
+        tpk = 0.0_dp
+        if (want_u) u_hist(1) = 0.0_dp
+        if (want_w) w_hist(1) = 0.0_dp
+        ky_now = table_ky(u)
+        if (exceeds(accel(1), ky_now)) call start(0.0_dp)
+
+        lim = n - 1
+        i = 0
+        steps: do while (i < lim)
+            i = i + 1
+            if (i <= n - 1) then
+                a0 = accel(i)
+                a1 = accel(i + 1)
+            else
+                if (.not. sliding) exit steps
+                a0 = 0.0_dp
+                a1 = 0.0_dp
+            end if
+            t0 = real(i - 1, dp) * dt
+            x = 0.0_dp
+            as = a0
+            events: do nev = 1, max_events + 2 * nt + 1
+                if (nev > max_events + 2 * nt) then
+                    call set_error(stat, errmsg, SEISPULSE_INTERNAL, 'newmark: too many ' &
+                                   //'events in one step near t = '//real_str(t0)//' (a bug)')
+                    return
+                end if
+                h = dt - x
+                if (.not. (h > 0.0_dp)) exit events
+                if (sliding) then
+                    call set_slide(as, a1, h)
+                    call ph%taylor(0.0_dp, fa)
+                    fa(0) = max(fa(0), 0.0_dp)
+                    if (.not. (fa(0) > 0.0_dp)) fa(1) = max(fa(1), 0.0_dp)
+                    call ph%taylor(h, fb)
+                    m3 = ph%bound(h)
+                    call first_zero(ph, h, fa, fb, m3, found, xs, stat, errmsg)
+                    if (stat /= SEISPULSE_SUCCESS) return
+                    if (.not. found) xs = h
+                    ! a segment end before the stop: U rises to it once
+                    if (seg < nt) then
+                        if (u + ph%disp(xs) >= dd(seg + 1)) then
+                            ph%target = dd(seg + 1) - u
+                            ph%mode = 1
+                            call find_root(ph, 0.0_dp, xs, xb, stat, errmsg, &
+                                           fa_known=-ph%target, fb_known=ph%disp(xs) - ph%target)
+                            ph%mode = 0
+                            if (stat /= SEISPULSE_SUCCESS) return
+                            call peak_in(xb)
+                            w = ph%vel(xb)
+                            u = dd(seg + 1)
+                            seg = seg + 1
+                            as = as + (a1 - as) * (xb / h)
+                            x = x + xb
+                            cycle events
+                        end if
+                    end if
+                    call peak_in(xs)
+                    u = u + ph%disp(xs)
+                    if (.not. found) then
+                        w = ph%vel(h)
+                        exit events
+                    end if
+                    w = 0.0_dp
+                    x = x + xs
+                    as = as + (a1 - as) * (xs / h)
+                    call stop_slide(t0 + x)
+                    ! at rest: the yield stays ky(u) until the next onset
+                    cycle events
+                end if
+                ! at rest from x: onset now, or where a crosses ky_now (linear)
+                if (exceeds(as, ky_now)) then
+                    call start(t0 + x)
+                    cycle events
+                end if
+                if (.not. exceeds(a1, ky_now)) exit events
+                xo = x
+                if (a1 > as) xo = x + (dt - x) * (max(ky_now - as, 0.0_dp) / (a1 - as))
+                if (.not. (xo < dt)) exit events
+                x = max(xo, x)
+                as = ky_now
+                call start(t0 + x)
+            end do events
+            if (i <= n - 1) then
+                if (want_u) u_hist(i + 1) = u
+                if (want_w) w_hist(i + 1) = w * g
+                if (i == n - 1 .and. sliding) then
+                    ! the run-out: ky >= kmin decelerates it to rest within w/kmin
+                    lim = n - 1 + ceiling(w / (kmin * dt)) + 2
+                end if
+            end if
+        end do steps
+        if (sliding) then
+            call set_error(stat, errmsg, SEISPULSE_INTERNAL, 'newmark: the run-out after the ' &
+                           //'record did not end (a bug)')
+            return
+        end if
+
+        res%final_disp = g * u
+        if (want_u) u_hist = g * u_hist
+        res%u_max = g * u
+        res%u_min = 0.0_dp
+        res%max_disp = res%u_max
+        deallocate(res%slides)
+        allocate(res%slides(k))
+        do i = 1, k
+            res%slides(i) = buf(i)
+            res%slides(i)%u_start = g * buf(i)%u_start
+            res%slides(i)%u_stop = g * buf(i)%u_stop
+            res%slides(i)%w_peak = g * buf(i)%w_peak
+            res%max_vel = max(res%max_vel, res%slides(i)%w_peak)
+        end do
+
+    contains
+
+        !> ky at U (g s^2): linear on the segments, constant beyond the last row.
+        pure real(dp) function table_ky(uu)
+            real(dp), intent(in) :: uu
+            integer :: j
+            table_ky = kv(nt)
+            do j = 1, nt - 1
+                if (uu < dd(j + 1)) then
+                    table_ky = kv(j) + (kv(j + 1) - kv(j)) * ((uu - dd(j)) / (dd(j + 1) - dd(j)))
+                    return
+                end if
+            end do
+        end function table_ky
+
+        !> The slide on the current segment from (u, w) with a = aa .. ae over hh.
+        subroutine set_slide(aa, ae, hh)
+            real(dp), intent(in) :: aa, ae, hh
+            ph%kappa = 0.0_dp
+            if (seg < nt) ph%kappa = (kv(seg + 1) - kv(seg)) / (dd(seg + 1) - dd(seg))
+            ph%w0 = w
+            ph%f0 = aa - table_ky(u)
+            ph%f1 = (ae - aa) / hh
+            ph%mode = 0
+        end subroutine set_slide
+
+        subroutine start(t)
+            real(dp), intent(in) :: t
+            sliding = .true.
+            w = 0.0_dp
+            wpk = 0.0_dp
+            tpk = t
+            call append_slide(buf, k, slide_t(direction=1, t_start=t, u_start=u, t_peak=t, &
+                                              from_slip=.false.))
+        end subroutine start
+
+        subroutine stop_slide(t)
+            real(dp), intent(in) :: t
+            buf(k)%t_stop = t
+            buf(k)%u_stop = u
+            buf(k)%w_peak = wpk
+            buf(k)%t_peak = tpk
+            res%t_end = t
+            sliding = .false.
+            ky_now = table_ky(u)
+        end subroutine stop_slide
+
+        !> The speed at the end of a piece of length xx (peaks at piece ends).
+        subroutine peak_in(xx)
+            real(dp), intent(in) :: xx
+            real(dp) :: ww
+            ww = ph%vel(xx)
+            if (ww > wpk) then
+                wpk = ww
+                tpk = t0 + x + xx
+            end if
+        end subroutine peak_in
+
+    end subroutine rigid_exact_table
+
+    !> f = Y', f' = Y'', f'' = Y''' (mode 0) or f = Y - target (mode 1) of a table slide.
+    subroutine table_taylor(self, x, f)
+        class(table_slide_t), intent(inout) :: self
+        real(dp), intent(in) :: x
+        real(dp), intent(out) :: f(0:2)
+        real(dp) :: y, yp, ypp
+        y = self%disp(x)
+        yp = self%vel(x)
+        ypp = -self%kappa * y + self%f0 + self%f1 * x
+        if (self%mode == 1) then
+            f(0) = y - self%target
+            f(1) = yp
+            f(2) = ypp
+        else
+            f(0) = yp
+            f(1) = ypp
+            f(2) = -self%kappa * yp + self%f1
+        end if
+    end subroutine table_taylor
+
+    !> Y(tau) of (N.8).
+    pure real(dp) function table_disp(self, tau)
+        class(table_slide_t), intent(in) :: self
+        real(dp), intent(in) :: tau
+        real(dp) :: c(0:3)
+        c = stumpff(self%kappa * tau * tau)
+        table_disp = tau * (self%w0 * c(1) + tau * (self%f0 * c(2) + tau * self%f1 * c(3)))
+    end function table_disp
+
+    !> Y'(tau) of (N.8).
+    pure real(dp) function table_vel(self, tau)
+        class(table_slide_t), intent(in) :: self
+        real(dp), intent(in) :: tau
+        real(dp) :: c(0:3)
+        c = stumpff(self%kappa * tau * tau)
+        table_vel = self%w0 * c(0) + tau * (self%f0 * c(1) + tau * self%f1 * c(2))
+    end function table_vel
+
+    !> Bound on |Y''''| = |kappa Y''| over [0, hh] (N.9): Y'' solves z'' = -kappa z.
+    pure real(dp) function table_bound(self, hh)
+        class(table_slide_t), intent(in) :: self
+        real(dp), intent(in) :: hh
+        real(dp) :: z0, z1, r
+        z0 = self%f0
+        z1 = -self%kappa * self%w0 + self%f1
+        if (self%kappa > 0.0_dp) then
+            table_bound = self%kappa * sqrt(z0 * z0 + z1 * z1 / self%kappa)
+        else if (self%kappa < 0.0_dp) then
+            r = sqrt(-self%kappa)
+            table_bound = -self%kappa * (abs(z0) * cosh(r * hh) + abs(z1) * sinh(r * hh) / r)
+        else
+            table_bound = 0.0_dp
+        end if
+        table_bound = table_bound * (1.0_dp + 1.0e-10_dp)
+    end function table_bound
+
+    !> Stumpff functions c_k(z) = sum_j (-z)^j/(2j + k)!, k = 0..3: cos s, sin(s)/s,
+    !> (1 - cos s)/s^2, (s - sin s)/s^3 of s = sqrt(z) (cosh, sinh for z < 0); for |z| <= 1 the
+    !> series (no cancellation), c_0 = 1 - z c_2 and c_1 = 1 - z c_3.
+    pure function stumpff(z) result(c)
+        real(dp), intent(in) :: z
+        real(dp) :: c(0:3)
+        real(dp) :: r
+        integer :: j
+        if (abs(z) <= 1.0_dp) then
+            ! 1/(2j + 2)! and 1/(2j + 3)! for j = 0..8: truncation below 1e-20
+            c(2) = 0.0_dp
+            c(3) = 0.0_dp
+            do j = 8, 0, -1
+                c(2) = inv_fact(2 * j + 2) - z * c(2)
+                c(3) = inv_fact(2 * j + 3) - z * c(3)
+            end do
+            c(0) = 1.0_dp - z * c(2)
+            c(1) = 1.0_dp - z * c(3)
+        else if (z > 0.0_dp) then
+            r = sqrt(z)
+            c(0) = cos(r)
+            c(1) = sin(r) / r
+            c(2) = (1.0_dp - c(0)) / z
+            c(3) = (1.0_dp - c(1)) / z
+        else
+            r = sqrt(-z)
+            c(0) = cosh(r)
+            c(1) = sinh(r) / r
+            c(2) = (1.0_dp - c(0)) / z
+            c(3) = (1.0_dp - c(1)) / z
+        end if
+    end function stumpff
+
     !> First root in (0, h] of z0 + b x + c x^2 (z0 >= 0) when the speed is known to
     !> reach zero by h; the rationalized forms avoid cancellation (no 0/0: the root
     !> exists, so b < 0 or c < 0).
@@ -499,12 +855,17 @@ contains
     !> v = v_prev + dt/2 (y + y_prev), stopped (v = y = 0) when v <= 0. Two ways: the
     !> yield of the direction of motion (or of the sign of a at rest), stopped when v
     !> changes sign or reaches zero. u = u_prev + dt/2 (v + v_prev) K.
+    !> With a table (one way): SLAMMER RigidBlock's rule, ky = the first row's at the
+    !> start, then after each step interpolated at u (the row index only advances;
+    !> constant from the last row on).
     subroutine rigid_slammer(accel, dt, ay_dn, ay_up, k_dn, k_up, one_way, g, res, &
-                             u_hist, w_hist)
+                             u_hist, w_hist, tab_disp, tab_ky)
         real(dp), intent(in) :: accel(:), dt, ay_dn, ay_up, k_dn, k_up, g
         logical, intent(in) :: one_way
         type(newmark_result_t), intent(inout) :: res
         real(dp), intent(out), optional :: u_hist(:), w_hist(:)
+        real(dp), intent(in), optional :: tab_disp(:), tab_ky(:)
+        integer :: pos, nt
 
         type(slide_t), allocatable :: buf(:)
         real(dp) :: gcm, t_dn, t_up, a, nn, y, v, r, s, q, u, kf, tr
@@ -524,6 +885,9 @@ contains
         s = 0.0_dp
         u = 0.0_dp
         v = 0.0_dp
+        pos = 1
+        nt = 0
+        if (present(tab_disp)) nt = size(tab_disp)
         do i = 1, size(accel)
             a = accel(i) * gcm
             if (one_way) then
@@ -596,6 +960,7 @@ contains
             q = u
             r = v
             s = y
+            if (pos < nt) call table_yield()
             if (want_u) u_hist(i) = u / 100.0_dp
             if (want_w) w_hist(i) = v * kf / 100.0_dp
         end do
@@ -619,6 +984,22 @@ contains
         end do
 
     contains
+
+        !> RigidBlock's update of the yield (cm/s^2) from u (cm) after a step.
+        subroutine table_yield()
+            real(dp) :: prop
+            do while (u > 100.0_dp * tab_disp(pos + 1))
+                pos = pos + 1
+                if (pos == nt) exit
+            end do
+            if (pos == nt) then
+                t_dn = gcm * tab_ky(nt)
+            else
+                prop = (u - 100.0_dp * tab_disp(pos)) &
+                       / (100.0_dp * tab_disp(pos + 1) - 100.0_dp * tab_disp(pos))
+                t_dn = gcm * (tab_ky(pos) - (tab_ky(pos) - tab_ky(pos + 1)) * prop)
+            end if
+        end subroutine table_yield
 
         !> The slide ends at sample i (v = 0 there; after the record: still sliding).
         subroutine close_slide(k)
