@@ -12,8 +12,15 @@ sliding block decelerates to a stop); ``method='slammer'`` is SLAMMER 1.1's rigo
 rigid loop step for step (trapezoidal rule, g = 980.665 cm/s^2, the block stops when
 the relative velocity reaches zero, the record ends at its last sample).
 
+Flexible sliding masses (doc/flexible.md): :func:`decoupled` and :func:`coupled` model
+the sliding mass as a shear beam of height H (one mode, radiation damping, linear or
+equivalent-linear soil) as SLAMMER does; ``method='slammer'`` (default) is SLAMMER 1.1's
+arithmetic step for step, ``method='exact'`` the exact response to the piecewise-linear
+record. :func:`plot_flexible` draws a result.
+
 Units: accelerations and yields in g, time in s, displacements in m, velocities in
-m/s. Positive ground acceleration drives positive (downslope) sliding.
+m/s. Positive ground acceleration drives positive (downslope) sliding, for the rigid,
+decoupled and coupled analyses alike.
 """
 
 from collections import namedtuple
@@ -22,13 +29,13 @@ import numpy as np
 
 from . import _core
 from . import _fortran_codes as _f
-from ._seispulse import (sp_fetch_slides, sp_newmark_incline, sp_newmark_rigid,
+from ._seispulse import (sp_fetch_slides, sp_flexible, sp_newmark_incline, sp_newmark_rigid,
                          sp_newmark_rigid_many, sp_newmark_rigid_table)
-from .errors import InvalidInputError
+from .errors import ConvergenceError, InvalidInputError
 from .sliding import Slide
 
-__all__ = ["MODES", "METHODS", "STANDARD_GRAVITY", "Incline", "Rigid", "Slide", "incline",
-           "rigid"]
+__all__ = ["MODES", "METHODS", "SOILS", "STANDARD_GRAVITY", "Flexible", "Incline", "Rigid",
+           "Slide", "coupled", "decoupled", "incline", "plot_flexible", "rigid"]
 
 #: Sliding modes: one way downslope, two ways alike, two ways with ky_up.
 _MODE_CODES = {"down": _f.NEWMARK_DOWN, "both": _f.NEWMARK_BOTH, "asym": _f.NEWMARK_ASYM}
@@ -36,6 +43,10 @@ MODES = tuple(_MODE_CODES)
 #: Integration rules.
 _METHOD_CODES = {"exact": _f.NEWMARK_EXACT, "slammer": _f.NEWMARK_SLAMMER}
 METHODS = tuple(_METHOD_CODES)
+#: Soil models of a flexible sliding mass.
+_SOIL_CODES = {"linear": _f.SOIL_LINEAR, "equivalent_linear": _f.SOIL_EQUIVALENT_LINEAR}
+SOILS = tuple(_SOIL_CODES)
+_FLEX_METHOD_CODES = {"exact": _f.FLEX_EXACT, "slammer": _f.FLEX_SLAMMER}
 #: Standard gravity (m/s^2), the default g.
 STANDARD_GRAVITY = 9.80665
 
@@ -213,3 +224,216 @@ def _rigid_table(rec, step, ky, mode, ky_up, method, g, k_down, k_up, incline, h
         disp_h, vel = u, w
     return Rigid(float(max_disp), float(final_disp), float(u_max), float(u_min), float(max_vel),
                  float(t_end), time, disp_h, vel, out)
+
+
+Flexible = namedtuple("Flexible", ["max_disp", "final_disp", "kmax", "vs_final", "damping_final",
+                                   "damping_radiation", "period", "iterations", "converged",
+                                   "t_end", "time", "hea", "u_modal", "disp", "vel", "ky",
+                                   "ky_up"])
+Flexible.__doc__ = """Result of :func:`decoupled` or :func:`coupled` (SI).
+
+max_disp: largest sliding displacement |s| (m); final_disp: s at the end (m; signed for
+two-way sliding, positive downslope); kmax: the equivalent acceleration (HEA) of largest
+|value| of the final decoupled response to the record as given, with its sign (g);
+vs_final (m/s), damping_final (total: material or the user's, plus radiation) and
+damping_radiation (fractions): the properties of the final response; period = 4 H/vs_final
+(s); iterations of the equivalent-linear soil (0 for linear) and whether it converged;
+t_end: end of the last slide (s from the first sample).
+With ``history=True``: time (s), hea (g; for coupled, that of the decoupled response, the
+one kmax comes from), u_modal (m, the modal displacement), disp s (m) and vel s' (m/s) at
+the samples, else None. ky and ky_up: the yields given (g; with a table, ky is the array of
+its yields; ky_up None unless mode='asym'), for :func:`plot_flexible`."""
+
+
+def _flexible(analysis, accel, dt, ky, height, vs, vs_base, damping, soil, ref_strain_pct,
+              method, g, mode, ky_up, ky_table, max_iter, history, allow_unconverged):
+    rec, step = _core.record_and_step(accel, dt)
+    for name, value in (("height", height), ("vs", vs), ("vs_base", vs_base)):
+        if value is None:
+            unit = "m" if name == "height" else "m/s"
+            raise InvalidInputError(f"{name}: required ({unit}, > 0)")
+    height = _core.as_scalar("height", height)
+    vs = _core.as_scalar("vs", vs)
+    vs_base = _core.as_scalar("vs_base", vs_base)
+    damping = _core.as_scalar("damping", damping)
+    ref_strain_pct = _core.as_scalar("ref_strain_pct", ref_strain_pct)
+    soil_code = _core.choice_code("soil", soil, _SOIL_CODES)
+    method_code = _core.choice_code("method", method, _FLEX_METHOD_CODES)
+    mode_code = _core.choice_code("mode", mode, _MODE_CODES)
+    g = _core.check_positive("g", g, " (m/s^2)")
+    if isinstance(max_iter, (bool, np.bool_)) or not isinstance(max_iter, (int, np.integer)):
+        raise InvalidInputError(f"max_iter = {max_iter!r}: must be an integer >= 1")
+    max_iter = int(max_iter)
+    if max_iter < 1:
+        raise InvalidInputError(f"max_iter = {max_iter}: must be an integer >= 1")
+    history = _core.check_bool("history", history)
+    allow_unconverged = _core.check_bool("allow_unconverged", allow_unconverged)
+    if mode == "asym":
+        if ky_up is None:
+            raise InvalidInputError("ky_up: required for mode='asym' (g, > 0, inf: none)")
+        ky_up = _core.as_scalar("ky_up", ky_up)
+    elif ky_up is not None:
+        raise InvalidInputError(f"ky_up: only for mode='asym' (mode is {mode!r})")
+    if ky_table is not None:
+        if ky is not None:
+            raise InvalidInputError("ky: give either ky or ky_table (a table replaces ky)")
+        if not isinstance(ky_table, (tuple, list)) or len(ky_table) != 2:
+            raise InvalidInputError("ky_table: must be a pair (disp_m, ky_g) of 1-d arrays")
+        table_disp = _core.as_float_array("ky_table[0]", ky_table[0])
+        table_ky = _core.as_float_array("ky_table[1]", ky_table[1])
+        if table_disp.ndim != 1 or table_ky.ndim != 1 or table_disp.size == 0:
+            raise InvalidInputError("ky_table: disp_m and ky_g must be non-empty 1-d arrays")
+        if table_disp.size != table_ky.size:
+            raise InvalidInputError(f"ky_table: disp_m has {table_disp.size} values, ky_g "
+                                    f"{table_ky.size} (must be the same)")
+        ky_value = 0.0
+        ky_out = table_ky.copy()
+    else:
+        if ky is None:
+            raise InvalidInputError("ky: the yield acceleration (g, > 0) is required "
+                                    "(or a ky_table)")
+        ky_value = _core.as_scalar("ky", ky)
+        ky_out = ky_value
+        table_disp = table_ky = np.zeros(1)
+    nh = rec.size if history else 1
+    (hea, u_modal, s_hist, sdot_hist, max_disp, final_disp, kmax, vs_final, damping_final,
+     damping_radiation, period, iterations, converged, t_end, stat, msg) = sp_flexible(
+        rec, step, ky_value, analysis, height, vs, vs_base, damping, soil_code, ref_strain_pct,
+        max_iter, method_code, g, mode_code, np.inf if ky_up is None else ky_up,
+        int(ky_table is not None), table_disp, table_ky, nh)
+    if not (stat == _f.SEISPULSE_NO_CONVERGENCE and allow_unconverged):
+        _core.raise_for_status(stat, msg, indexed={"accel": "accel", "ky_disp": "ky_table[0]",
+                                                   "ky_values": "ky_table[1]"})
+    time = None
+    if history:
+        time = np.arange(rec.size) * step
+    else:
+        hea = u_modal = s_hist = sdot_hist = None
+    return Flexible(float(max_disp), float(final_disp), float(kmax), float(vs_final),
+                    float(damping_final), float(damping_radiation), float(period),
+                    int(iterations), bool(converged), float(t_end), time, hea, u_modal, s_hist,
+                    sdot_hist, ky_out, ky_up)
+
+
+_FLEXIBLE_DOC = """{summary}
+
+    Parameters
+    ----------
+    accel : array or seispulse.records.Record
+        Ground acceleration (g), samples at t = 0, dt, 2 dt, ... (a Record carries dt).
+    dt : float
+        Time step (s) > 0.
+    ky : float
+        Yield acceleration (g) > 0 (inf: no sliding). Leave it out with ky_table.
+    height : float
+        Height H of the sliding mass (m) > 0.
+    vs : float
+        Shear-wave velocity of the sliding mass (m/s) > 0 (the small-strain value for
+        soil='equivalent_linear').
+    vs_base : float
+        Shear-wave velocity below the slip surface (m/s) > 0 (radiation damping).
+    damping : float
+        Viscous damping of the mass (fraction) in [-0.5, 1); the radiation damping
+        min(0.2, 0.55016 (vs_base/vs)^-0.9904) is added. A negative value cancels part of it.
+        The equivalent-linear soil replaces it by its material damping after the first pass.
+    soil : {{'linear', 'equivalent_linear'}}
+        Linear elastic, or equivalent-linear (hyperbolic G/Gmax, scaled Masing damping).
+    ref_strain_pct : float
+        Reference strain of the equivalent-linear soil, in PERCENT (0.05 = 0.05 %) > 0.
+    method : {{'slammer', 'exact'}}
+        SLAMMER 1.1's arithmetic step for step, or the exact response to the
+        piecewise-linear record.
+    g : float
+        Gravity (m/s^2) > 0.{mode_doc}
+    ky_table : (disp_m, ky_g), optional
+        Yield against sliding displacement: disp_m (m) starts at 0 and increases strictly,
+        ky_g (g) > 0. SLAMMER's rule (method='slammer') is stepwise: the second row applies
+        from the first step at rest, and the next row once the block, at rest, has slid
+        as far as the current row's displacement.
+    max_iter : int
+        Cap of the equivalent-linear iteration (>= 1).
+    history : bool
+        Return time, hea, u_modal, disp and vel at the samples.
+    allow_unconverged : bool
+        If the equivalent-linear iteration reaches max_iter: return the last iteration's
+        result with converged=False instead of raising ConvergenceError.
+
+    Returns
+    -------
+    Flexible
+    """
+
+
+def decoupled(accel, dt=None, ky=None, height=None, vs=None, vs_base=None, damping=0.05,
+              soil="linear", ref_strain_pct=0.05, method="slammer", g=STANDARD_GRAVITY, *,
+              mode="down", ky_up=None, ky_table=None, max_iter=100, history=False,
+              allow_unconverged=False):
+    return _flexible(1, accel, dt, ky, height, vs, vs_base, damping, soil, ref_strain_pct,
+                     method, g, mode, ky_up, ky_table, max_iter, history, allow_unconverged)
+
+
+def coupled(accel, dt=None, ky=None, height=None, vs=None, vs_base=None, damping=0.05,
+            soil="linear", ref_strain_pct=0.05, method="slammer", g=STANDARD_GRAVITY, *,
+            ky_table=None, max_iter=100, history=False, allow_unconverged=False):
+    return _flexible(2, accel, dt, ky, height, vs, vs_base, damping, soil, ref_strain_pct,
+                     method, g, "down", None, ky_table, max_iter, history, allow_unconverged)
+
+
+decoupled.__doc__ = _FLEXIBLE_DOC.format(
+    summary="""Decoupled Newmark analysis of a flexible sliding mass: the modal response of the
+    mass on a fixed base gives the equivalent acceleration HEA(t) = a + (2/pi) u''; a rigid
+    block driven by HEA slides (doc/flexible.md).""",
+    mode_doc="""
+    mode : {'down', 'both', 'asym'}
+        One-way (downslope) sliding, or two ways (method='exact' only, no ky_table).
+    ky_up : float, optional
+        Upslope yield (g) > 0 or inf, for mode='asym'.""")
+coupled.__doc__ = _FLEXIBLE_DOC.format(
+    summary="""Coupled Newmark analysis of a flexible sliding mass (Rathje and Bray): the
+    sliding and the modal response are solved together; while the mass slides its base
+    carries the yield force (doc/flexible.md). Downslope sliding only.""",
+    mode_doc="")
+
+
+def plot_flexible(result, record=None, ax=None):
+    """Draw a :func:`decoupled` or :func:`coupled` result made with ``history=True`` with
+    matplotlib (an optional dependency): the HEA (g) with the yield lines (+ky, and -ky_up
+    for two-way sliding) and, with ``record`` (the accelerations in g or a Record), the
+    ground acceleration, on one axes; the sliding displacement (m) on a second one. ``ax``:
+    a pair of axes, or one (the displacement then goes on a twin y axis). Returns the two
+    axes."""
+    if not isinstance(result, Flexible):
+        raise InvalidInputError("result: must be the result of newmark.decoupled or coupled")
+    if result.time is None:
+        raise InvalidInputError("result: has no history (run it with history=True)")
+    from .cylinder import _pyplot
+    plt = _pyplot("plot_flexible")
+    if ax is None:
+        _, (ax_a, ax_s) = plt.subplots(2, 1, sharex=True)
+    elif isinstance(ax, (tuple, list, np.ndarray)):
+        if len(ax) != 2:
+            raise InvalidInputError("ax: one axes or a pair of them")
+        ax_a, ax_s = ax
+    else:
+        ax_a = ax
+        ax_s = ax.twinx()
+    t = result.time
+    if record is not None:
+        acc = record.accel if hasattr(record, "accel") else record
+        acc = _core.as_float_array("record", acc)
+        if acc.shape != t.shape:
+            raise InvalidInputError(f"record: must have the {t.size} samples of the result")
+        ax_a.plot(t, acc, color="0.6", linewidth=0.8, label="ground a (g)")
+    ax_a.plot(t, result.hea, color="C0", linewidth=1.0, label="HEA (g)")
+    for k, value in enumerate(np.atleast_1d(result.ky)):
+        ax_a.axhline(value, color="C3", linestyle="--", linewidth=0.9,
+                     label="ky" if k == 0 else None)
+    if result.ky_up is not None and np.isfinite(result.ky_up):
+        ax_a.axhline(-result.ky_up, color="C3", linestyle=":", linewidth=0.9, label="-ky_up")
+    ax_a.set_ylabel("acceleration (g)")
+    ax_a.legend(loc="upper right", fontsize="small")
+    ax_s.plot(t, result.disp, color="C1", label="sliding s (m)")
+    ax_s.set_ylabel("sliding displacement s (m)")
+    ax_s.set_xlabel("t (s)")
+    ax_s.legend(loc="lower right" if ax_s is not ax_a else "upper left", fontsize="small")
+    return ax_a, ax_s

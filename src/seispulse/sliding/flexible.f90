@@ -44,13 +44,12 @@ module seispulse_flexible
     !> Newmark's average-acceleration parameters (doc/flexible.md (F.23), [C12])
     real(dp), parameter :: beta = 0.25_dp, gamma = 0.5_dp
 
-    !> SLAMMER's modal response as the equivalent-linear iteration sees it: the record in
-    !> cm/s^2 and the work arrays of one pass (allocated once per analysis).
+    !> SLAMMER's modal response as the equivalent-linear iteration sees it: the record
+    !> (g, pointing to the caller's array for the duration of the analysis) and its units.
     type, extends(modal_peak_t) :: slammer_peak_t
-        real(dp), allocatable :: acc(:)   !! record (cm/s^2)
-        real(dp) :: dt = 0.0_dp           !! time step (s)
-        real(dp), allocatable :: u(:)     !! modal displacement of a pass (cm)
-        real(dp), allocatable :: avg(:)   !! HEA of a pass (cm/s^2)
+        real(dp), pointer :: accel(:) => null()  !! record (g)
+        real(dp) :: gcm = 0.0_dp                 !! 100 g (cm/s^2 per g)
+        real(dp) :: dt = 0.0_dp                  !! time step (s)
     contains
         procedure :: peak => slammer_peak
     end type slammer_peak_t
@@ -238,29 +237,29 @@ contains
     ! ------------------------------------------------------------------------------
 
     !> FLEX_SLAMMER: both analyses in SLAMMER's units. eql_stat receives the status of the
-    !> equivalent-linear iteration (SEISPULSE_NO_CONVERGENCE is not an error here).
+    !> equivalent-linear iteration (SEISPULSE_NO_CONVERGENCE is not an error here). The
+    !> histories are filled in SLAMMER's units, then converted in place.
     subroutine slammer_run(coupled, accel, dt, tdisp, tky, mass, g, res, eql_stat, stat, &
                            errmsg, hea, u_modal, s_hist, sdot_hist)
         logical, intent(in) :: coupled
-        real(dp), intent(in) :: accel(:), dt, tdisp(:), tky(:), g
+        real(dp), intent(in), target :: accel(:)
+        real(dp), intent(in) :: dt, tdisp(:), tky(:), g
         type(flexible_mass_t), intent(in) :: mass
         type(flexible_result_t), intent(inout) :: res
         integer, intent(out) :: eql_stat, stat
         character(len=*), intent(inout), optional :: errmsg
         real(dp), intent(out), optional :: hea(:), u_modal(:), s_hist(:), sdot_hist(:)
         type(slammer_peak_t) :: resp
-        real(dp), allocatable :: s(:), sdot(:), uc(:)
-        real(dp) :: gcm, omega, xi
-        integer :: n
+        real(dp), allocatable :: avg(:)
+        real(dp) :: gcm, omega, xi, u_peak, s_end
 
-        n = size(accel)
         gcm = 100.0_dp * g
-        allocate(resp%acc(n), resp%u(n), resp%avg(n))
-        resp%acc(:) = accel * gcm
+        resp%accel => accel
+        resp%gcm = gcm
         resp%dt = dt
-
         call eql_iterate(mass, resp, res%vs_final, res%damping_final, res%damping_radiation, &
                          res%iterations, res%converged, eql_stat, errmsg)
+        nullify(resp%accel)
         stat = eql_stat
         if (eql_stat /= SEISPULSE_SUCCESS .and. eql_stat /= SEISPULSE_NO_CONVERGENCE) return
         stat = SEISPULSE_SUCCESS
@@ -269,31 +268,33 @@ contains
         res%period = 4.0_dp * mass%height / res%vs_final
 
         ! the final decoupled response: HEA and kmax (both analyses)
-        call slammer_response(resp%acc, dt, omega, xi, resp%u, resp%avg)
-        res%kmax = signed_peak(resp%avg) / gcm
-        if (present(hea)) hea(:) = resp%avg / gcm
+        allocate(avg(size(accel)))
+        if (present(u_modal) .and. .not. coupled) then
+            call slammer_response(accel, gcm, dt, omega, xi, u_peak, avg, u_modal)
+            u_modal(:) = u_modal / 100.0_dp
+        else
+            call slammer_response(accel, gcm, dt, omega, xi, u_peak, avg)
+        end if
+        res%kmax = signed_peak(avg) / gcm
+        if (present(hea)) hea(:) = avg / gcm
 
-        allocate(s(n), sdot(n))
         if (.not. coupled) then
-            if (present(u_modal)) u_modal(:) = resp%u / 100.0_dp
-            call slammer_slide(resp%avg, dt, 100.0_dp * tdisp, tky * gcm, s, sdot, &
-                               res%max_disp, res%t_end)
-            if (present(sdot_hist)) sdot_hist(:) = -sdot / 100.0_dp   ! SLAMMER: s' < 0 sliding
+            call slammer_slide(avg, dt, 100.0_dp * tdisp, tky * gcm, res%max_disp, s_end, &
+                               res%t_end, s_hist, sdot_hist)
+            if (present(sdot_hist)) sdot_hist(:) = -sdot_hist / 100.0_dp   ! SLAMMER: s' < 0
         else
             ! SLAMMER's coupled input is the record times -1 (normal polarity)
-            allocate(uc(n))
-            resp%acc(:) = -resp%acc
-            call slammer_coupled(resp%acc, dt, omega, xi, 100.0_dp * tdisp, tky * gcm, s, &
-                                 sdot, uc, res%max_disp, res%t_end)
-            if (present(u_modal)) u_modal(:) = -uc / 100.0_dp
-            if (present(sdot_hist)) sdot_hist(:) = sdot / 100.0_dp
+            call slammer_coupled(accel, gcm, dt, omega, xi, 100.0_dp * tdisp, tky * gcm, &
+                                 res%max_disp, s_end, res%t_end, s_hist, sdot_hist, u_modal)
+            if (present(u_modal)) u_modal(:) = -u_modal / 100.0_dp
+            if (present(sdot_hist)) sdot_hist(:) = sdot_hist / 100.0_dp
         end if
-        if (present(s_hist)) s_hist(:) = s / 100.0_dp
+        if (present(s_hist)) s_hist(:) = s_hist / 100.0_dp
         res%max_disp = res%max_disp / 100.0_dp
-        res%final_disp = s(n) / 100.0_dp
+        res%final_disp = s_end / 100.0_dp
     end subroutine slammer_run
 
-    !> max |u| (m) of SLAMMER's modal response for (omega, xi): one pass, O(n).
+    !> max |u| (m) of SLAMMER's modal response for (omega, xi): one pass, O(n), no storage.
     subroutine slammer_peak(self, omega, xi, u_peak, stat, errmsg)
         class(slammer_peak_t), intent(inout) :: self
         real(dp), intent(in) :: omega, xi
@@ -302,22 +303,24 @@ contains
         character(len=*), intent(inout), optional :: errmsg
         stat = SEISPULSE_SUCCESS
         if (present(errmsg)) continue
-        call slammer_response(self%acc, self%dt, omega, xi, self%u, self%avg)
-        u_peak = maxval(abs(self%u)) / 100.0_dp
+        call slammer_response(self%accel, self%gcm, self%dt, omega, xi, u_peak)
+        u_peak = u_peak / 100.0_dp
     end subroutine slammer_peak
 
     !> SLAMMER's modal response (doc/flexible.md (F.23)-(F.25)): incremental Newmark
     !> average acceleration on u'' + 2 xi omega u' + omega^2 u = -(L/M) a; the first step
     !> from rest with the load increment a(1) and u'' from equilibrium; HEA = a + (L/Mtot) u''.
-    !> Units of acc: those of u/s^2 (cm/s^2 here).
-    pure subroutine slammer_response(acc, dt, omega, xi, u, avg)
-        real(dp), intent(in) :: acc(:)     !! record (cm/s^2)
-        real(dp), intent(in) :: dt         !! s
-        real(dp), intent(in) :: omega      !! rad/s
-        real(dp), intent(in) :: xi         !! total damping (fraction)
-        real(dp), intent(out) :: u(:)      !! modal displacement (cm)
-        real(dp), intent(out) :: avg(:)    !! HEA (cm/s^2)
-        real(dp) :: khat, a, b, dp_, du, dv, dw, u1, v1, w1
+    !> The record is taken to cm/s^2 sample by sample (a = accel gcm).
+    pure subroutine slammer_response(accel, gcm, dt, omega, xi, u_peak, avg, u)
+        real(dp), intent(in) :: accel(:)             !! record (g)
+        real(dp), intent(in) :: gcm                  !! 100 g (cm/s^2 per g)
+        real(dp), intent(in) :: dt                   !! s
+        real(dp), intent(in) :: omega                !! rad/s
+        real(dp), intent(in) :: xi                   !! total damping (fraction)
+        real(dp), intent(out) :: u_peak              !! max |u| (cm)
+        real(dp), intent(out), optional :: avg(:)    !! HEA (cm/s^2)
+        real(dp), intent(out), optional :: u(:)      !! modal displacement (cm)
+        real(dp) :: khat, a, b, dp_, du, dv, dw, u1, v1, w1, acc1, acc2
         integer :: j
         khat = omega * omega + 2.0_dp * xi * omega * gamma / (beta * dt) &             ! (F.24)
                + 1.0_dp / (beta * (dt * dt))
@@ -325,14 +328,18 @@ contains
         b = 1.0_dp / (2.0_dp * beta) + dt * 2.0_dp * xi * omega * (gamma / (2.0_dp * beta) &
                                                                    - 1.0_dp)
         ! first step from rest, load increment acc(1) (D-1)                             (F.25)
-        du = -participation_modal * acc(1) / khat
+        acc2 = accel(1) * gcm
+        du = -participation_modal * acc2 / khat
         u1 = du
         v1 = gamma / (beta * dt) * du
-        w1 = -participation_modal * acc(1) - 2.0_dp * xi * omega * v1 - omega * omega * u1
-        u(1) = u1
-        avg(1) = acc(1) + participation_total * w1
-        do j = 2, size(acc)
-            dp_ = -participation_modal * (acc(j) - acc(j - 1)) + a * v1 + b * w1
+        w1 = -participation_modal * acc2 - 2.0_dp * xi * omega * v1 - omega * omega * u1
+        u_peak = abs(u1)
+        if (present(u)) u(1) = u1
+        if (present(avg)) avg(1) = acc2 + participation_total * w1
+        do j = 2, size(accel)
+            acc1 = acc2
+            acc2 = accel(j) * gcm
+            dp_ = -participation_modal * (acc2 - acc1) + a * v1 + b * w1
             du = dp_ / khat
             dv = gamma / (beta * dt) * du - gamma / beta * v1 &
                  + dt * (1.0_dp - gamma / (2.0_dp * beta)) * w1
@@ -340,8 +347,9 @@ contains
             u1 = u1 + du
             v1 = v1 + dv
             w1 = w1 + dw
-            u(j) = u1
-            avg(j) = acc(j) + participation_total * w1                                 ! (F.7)
+            u_peak = max(u_peak, abs(u1))
+            if (present(u)) u(j) = u1
+            if (present(avg)) avg(j) = acc2 + participation_total * w1                 ! (F.7)
         end do
     end subroutine slammer_response
 
@@ -350,15 +358,16 @@ contains
     !> sliding: s'(j) = s'(j-1) + e dt - dH dt/2, s(j) = s(j-1) - s'(j-1) dt - e dt^2/2
     !> + dH dt^2/6 (s' < 0 while sliding). A slide starts at the end of a step where
     !> HEA > ky g; on the step where s' >= 0 it stops and that step is discarded.
-    pure subroutine slammer_slide(avg, dt, tdisp, tmug, s, sd, s_max, t_end)
+    pure subroutine slammer_slide(avg, dt, tdisp, tmug, s_max, s_end, t_end, s, sd)
         real(dp), intent(in) :: avg(:)     !! HEA (cm/s^2)
         real(dp), intent(in) :: dt         !! s
         real(dp), intent(in) :: tdisp(:)   !! table: displacement (cm), tdisp(1) = 0
         real(dp), intent(in) :: tmug(:)    !! table: ky g (cm/s^2)
-        real(dp), intent(out) :: s(:)      !! sliding displacement (cm), >= 0
-        real(dp), intent(out) :: sd(:)     !! SLAMMER's s' (cm/s), <= 0 while sliding
         real(dp), intent(out) :: s_max     !! max |s| (cm)
+        real(dp), intent(out) :: s_end     !! s at the last sample (cm)
         real(dp), intent(out) :: t_end     !! end of the last slide (s)
+        real(dp), intent(out), optional :: s(:)    !! sliding displacement (cm), >= 0
+        real(dp), intent(out), optional :: sd(:)   !! SLAMMER's s' (cm/s), <= 0 while sliding
         real(dp) :: e, dacc, sj, sdj, s1, sd1, avg_prev
         integer :: j, qq, n
         logical :: slide
@@ -393,40 +402,45 @@ contains
                 t_end = real(j - 1, dp) * dt
             end if
             call next_row(slide, sj, tdisp, qq)
-            s(j) = sj
-            sd(j) = sdj
+            if (present(s)) s(j) = sj
+            if (present(sd)) sd(j) = sdj
             s1 = sj
             sd1 = sdj
             s_max = max(s_max, abs(sj))
             avg_prev = avg(j)
         end do
         if (slide) t_end = real(n - 1, dp) * dt
+        s_end = s1
     end subroutine slammer_slide
 
     !> SLAMMER's coupled analysis (Coupled, doc/flexible.md (F.17)-(F.22), (F.28)) on its
-    !> input acc = -record (cm/s^2). Sticking: the modal equation under acc; sliding: under
-    !> the yield load -ky g with the reduced mass d1 = 1 - L^2/(M Mtot); the base force per
+    !> input acc = -record (cm/s^2; SLAMMER flips the record of normal polarity here).
+    !> Sticking: the modal equation under acc; sliding: under the yield load -ky g with the
+    !> reduced mass d1 = 1 - L^2/(M Mtot); the base force per
     !> unit mass -acc - (L/Mtot) u'' starts a slide when it exceeds ky g; s'' = -acc - ky g
     !> - (L/Mtot) u'' integrated by the trapezoidal rule; when s' <= 0 the stop sub-step.
-    subroutine slammer_coupled(acc, dt, omega, xi, tdisp, tmug, s, sd, u_out, s_max, t_end)
-        real(dp), intent(in) :: acc(:)     !! SLAMMER's input, -record (cm/s^2)
+    subroutine slammer_coupled(accel, gcm, dt, omega, xi, tdisp, tmug, s_max, s_end, t_end, &
+                               s, sd, u_out)
+        real(dp), intent(in) :: accel(:)   !! record (g); SLAMMER's input is -accel gcm (cm/s^2)
+        real(dp), intent(in) :: gcm        !! 100 g (cm/s^2 per g)
         real(dp), intent(in) :: dt         !! s
         real(dp), intent(in) :: omega      !! rad/s
         real(dp), intent(in) :: xi         !! total damping (fraction)
         real(dp), intent(in) :: tdisp(:)   !! table: displacement (cm), tdisp(1) = 0
         real(dp), intent(in) :: tmug(:)    !! table: ky g (cm/s^2)
-        real(dp), intent(out) :: s(:)      !! sliding displacement (cm), >= 0 downslope
-        real(dp), intent(out) :: sd(:)     !! sliding velocity (cm/s)
-        real(dp), intent(out) :: u_out(:)  !! modal displacement (cm), for acc
         real(dp), intent(out) :: s_max     !! max |s| (cm)
+        real(dp), intent(out) :: s_end     !! s at the last sample (cm)
         real(dp), intent(out) :: t_end     !! end of the last slide (s)
+        real(dp), intent(out), optional :: s(:)      !! sliding displacement (cm), >= 0 downslope
+        real(dp), intent(out), optional :: sd(:)     !! sliding velocity (cm/s)
+        real(dp), intent(out), optional :: u_out(:)  !! modal displacement (cm), SLAMMER's sign
         real(dp) :: d1s, kh(2), ka(2), kb(2), d1(2)
         real(dp) :: u1, v1, w1, u2, v2, w2, s1, sd1, sdd1, s2, sd2, sdd2
-        real(dp) :: acc11, acc22, deltp, du, dv, basef, mug, a_prev
+        real(dp) :: acc11, acc22, deltp, du, dv, basef, mug, a_prev, a_j
         integer :: j, n, qq, k
         logical :: slide
 
-        n = size(acc)
+        n = size(accel)
         ! coefficients: k = 1 sticking (d1 = 1), k = 2 sliding (d1 = 1 - L^2/(M Mtot))  (F.19)
         d1s = 1.0_dp - participation_modal * participation_total
         d1 = [1.0_dp, d1s]
@@ -457,13 +471,14 @@ contains
             sd1 = sd2
             sdd1 = sdd2
             mug = tmug(qq)
+            a_j = -(accel(j) * gcm)
             ! load of the modal equation (F.18)
             if (j == 1) then
                 acc11 = 0.0_dp
-                acc22 = acc(1)
+                acc22 = a_j
             else if (.not. slide) then
                 acc11 = a_prev
-                acc22 = acc(j)
+                acc22 = a_j
             else
                 acc11 = -mug
                 acc22 = -mug
@@ -480,8 +495,8 @@ contains
             w2 = (-participation_modal * acc22 - 2.0_dp * xi * omega * v2 &
                   - omega * omega * u2) / d1(k)
             ! sliding acceleration and base force per unit mass (F.20), (F.21)
-            if (slide) sdd2 = -acc(j) - mug - participation_total * w2
-            basef = -acc(j) - participation_total * w2
+            if (slide) sdd2 = -a_j - mug - participation_total * w2
+            basef = -a_j - participation_total * w2
             if (slide) then
                 sd2 = sd1 + 0.5_dp * dt * (sdd2 + sdd1)
                 s2 = s1 + 0.5_dp * dt * (sd2 + sd1)
@@ -495,13 +510,14 @@ contains
                 sdd2 = 0.0_dp
             end if
             call next_row(slide, s2, tdisp, qq)
-            s(j) = s2
-            sd(j) = sd2
-            u_out(j) = u2
+            if (present(s)) s(j) = s2
+            if (present(sd)) sd(j) = sd2
+            if (present(u_out)) u_out(j) = u2
             s_max = max(s_max, abs(s2))
-            a_prev = acc(j)
+            a_prev = a_j
         end do
         if (slide) t_end = real(n - 1, dp) * dt
+        s_end = s2
 
     contains
 
@@ -517,7 +533,7 @@ contains
             dd = -sd1 / (sd2 - sd1)
             ddt = dd * dt
             t_end = t_end + ddt
-            acc1b = a_prev + dd * (acc(j) - a_prev)
+            acc1b = a_prev + dd * (a_j - a_prev)
             u1 = u2
             v1 = v2
             w1 = w2
@@ -530,7 +546,7 @@ contains
             a = d1s + 2.0_dp * xi * omega * ddt * (gamma - 1.0_dp) &
                 + omega * omega * (ddt * ddt) * (beta - 0.5_dp)
             b = omega * omega * ddt
-            deltp = -participation_modal * (acc(j) + mug) + a * w1 - b * v1
+            deltp = -participation_modal * (a_j + mug) + a * w1 - b * v1
             w2 = deltp / khat
             v2 = v1 + (1.0_dp - gamma) * ddt * w1 + gamma * ddt * w2
             u2 = u1 + v1 * ddt + (0.5_dp - beta) * (ddt * ddt) * w1 + beta * (ddt * ddt) * w2
