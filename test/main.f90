@@ -22,8 +22,8 @@ program tester
     use test_records, only: collect_records
     use test_number_reader, only: collect_number_reader
     use test_newmark, only: collect_newmark
-    use test_flexible_exact, only: collect_flexible_exact
     use test_flexible, only: collect_flexible
+    use test_flexible_exact, only: collect_flexible_exact
     use test_sdof_sim, only: collect_sdof_sim
     use test_sdof_closed, only: collect_sdof_closed
     use test_walls_vy, only: collect_walls_vy
@@ -115,13 +115,13 @@ program tester
         call collect_newmark(tests)
         call run_suite('newmark', tests, output_unit, npass, nfail)
     end if
-    if (selected('flexible_exact')) then
-        call collect_flexible_exact(tests)
-        call run_suite('flexible_exact', tests, output_unit, npass, nfail)
-    end if
     if (selected('flexible')) then
         call collect_flexible(tests)
         call run_suite('flexible', tests, output_unit, npass, nfail)
+    end if
+    if (selected('flexible_exact')) then
+        call collect_flexible_exact(tests)
+        call run_suite('flexible_exact', tests, output_unit, npass, nfail)
     end if
     if (selected('sdof_sim')) then
         call collect_sdof_sim(tests)

@@ -49,6 +49,12 @@ contains
                               test_table_reference), &
                  new_unittest('rigid ky table, slammer = RigidBlock rule written here', &
                               test_table_slammer), &
+                 new_unittest('coupled ky table: one row = constant ky (bitwise)', &
+                              test_coupled_table_one_row), &
+                 new_unittest('coupled ky table: equal rows = constant ky', &
+                              test_coupled_table_flat), &
+                 new_unittest('coupled ky table = independent RK4 with events', &
+                              test_coupled_table_reference), &
                  new_unittest('bad input is a status naming the parameter', test_bad_input)]
     end subroutine collect_flexible_exact
 
@@ -76,18 +82,19 @@ contains
     !> Independent integration of the coupled model: classical RK4 on m sub-steps per
     !> sample step, events (HEA = g ky, s' = 0) located by bisection on the sub-step
     !> re-integrated from its start; the run-out after the record with a = 0.
-    subroutine reference_coupled(accel, dt, g, omega, xi, ky, m, s_end, s_hist, u_hist)
+    subroutine reference_coupled(accel, dt, g, omega, xi, ky, m, s_end, s_hist, u_hist, kd, kv)
         real(dp), intent(in) :: accel(:), dt, g, omega, xi, ky
         integer, intent(in) :: m
         real(dp), intent(out) :: s_end
         real(dp), intent(out) :: s_hist(:), u_hist(:)
+        real(dp), intent(in), optional :: kd(:), kv(:)
         real(dp) :: y(4), y1(4), hs, t, tl, th, tm, ym(4), rest
         integer :: i, j, k, n, it
         logical :: slide
         n = size(accel)
         hs = dt / m
         y = 0.0_dp
-        slide = hea_of(y, 0.0_dp, .false.) > g * ky
+        slide = hea_of(y, 0.0_dp, .false.) > g * kys(y(3))
         s_hist(1) = 0.0_dp
         u_hist(1) = 0.0_dp
         i = 0
@@ -99,7 +106,7 @@ contains
                 rest = hs
                 do it = 1, 4
                     y1 = rk4(y, t, rest, slide)
-                    if (.not. slide .and. hea_of(y1, t + rest, .false.) > g * ky) then
+                    if (.not. slide .and. hea_of(y1, t + rest, .false.) > g * kys(y(3))) then
                         call locate(.false.)
                     else if (slide .and. y1(4) < 0.0_dp) then
                         call locate(.true.)
@@ -134,7 +141,7 @@ contains
                         tl = tm
                     end if
                 else
-                    if (hea_of(ym, t + tm, .false.) > g * ky) then
+                    if (hea_of(ym, t + tm, .false.) > g * kys(y(3))) then
                         th = tm
                     else
                         tl = tm
@@ -162,13 +169,29 @@ contains
             acc_at = accel(ii) + (accel(ii + 1) - accel(ii)) * r
         end function acc_at
 
+        !> ky (g) at s (m): the constant, or the table interpolated.
+        real(dp) function kys(ss)
+            real(dp), intent(in) :: ss
+            integer :: l
+            kys = ky
+            if (.not. present(kd)) return
+            kys = kv(size(kv))
+            do l = 1, size(kd) - 1
+                if (ss < kd(l + 1)) then
+                    kys = kv(l) + (kv(l + 1) - kv(l)) * (ss - kd(l)) / (kd(l + 1) - kd(l))
+                    return
+                end if
+            end do
+        end function kys
+
         real(dp) function hea_of(yy, tt, sl)
             real(dp), intent(in) :: yy(4), tt
             logical, intent(in) :: sl
             real(dp) :: acc, a
             a = acc_at(tt)
             if (sl) then
-                acc = (-4.0_dp / pi * g * ky - 2.0_dp * xi * omega * yy(2) - omega**2 * yy(1)) / d1
+                acc = (-4.0_dp / pi * g * kys(yy(3)) - 2.0_dp * xi * omega * yy(2) &
+                       - omega**2 * yy(1)) / d1
             else
                 acc = -4.0_dp / pi * g * a - 2.0_dp * xi * omega * yy(2) - omega**2 * yy(1)
             end if
@@ -182,9 +205,10 @@ contains
             a = acc_at(tt)
             f(1) = yy(2)
             if (sl) then
-                f(2) = (-4.0_dp / pi * g * ky - 2.0_dp * xi * omega * yy(2) - omega**2 * yy(1)) / d1
+                f(2) = (-4.0_dp / pi * g * kys(yy(3)) - 2.0_dp * xi * omega * yy(2) &
+                        - omega**2 * yy(1)) / d1
                 f(3) = yy(4)
-                f(4) = g * a - g * ky + 2.0_dp / pi * f(2)
+                f(4) = g * a - g * kys(yy(3)) + 2.0_dp / pi * f(2)
             else
                 f(2) = -4.0_dp / pi * g * a - 2.0_dp * xi * omega * yy(2) - omega**2 * yy(1)
                 f(3) = 0.0_dp
@@ -207,17 +231,19 @@ contains
     end subroutine reference_coupled
 
     subroutine run_coupled(error, accel, dt, omega, xi, ky, smax, sfin, tend, label, s_hist, &
-                           u_hist)
+                           u_hist, kd, kv, v_hist)
         type(test_error), allocatable, intent(inout) :: error
         real(dp), intent(in) :: accel(:), dt, omega, xi, ky
         real(dp), intent(out) :: smax, sfin, tend
         character(len=*), intent(in) :: label
-        real(dp), intent(out), optional :: s_hist(:), u_hist(:)
+        real(dp), intent(out), optional :: s_hist(:), u_hist(:), v_hist(:)
+        real(dp), intent(in), optional :: kd(:), kv(:)
         integer :: stat
         character(len=200) :: msg
         msg = ''
         call coupled_exact(accel, dt, g0, omega, xi, ky, smax, sfin, tend, stat, msg, &
-                           s_hist=s_hist, u_modal=u_hist)
+                           ky_disp=kd, ky_values=kv, s_hist=s_hist, sdot_hist=v_hist, &
+                           u_modal=u_hist)
         call check(error, stat, SEISPULSE_SUCCESS, label//': status ('//trim(msg)//')')
     end subroutine run_coupled
 
@@ -609,6 +635,64 @@ contains
         if (allocated(error)) return
         call check(error, u1, ue, atol=1.0e-15_dp * ue(n), message='RigidBlock rule')
     end subroutine test_table_slammer
+
+    !> A one-row table is the constant yield, bit for bit.
+    subroutine test_coupled_table_one_row(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 1600
+        real(dp), parameter :: dt = 0.005_dp
+        real(dp) :: a(n), s1(n), s2(n), v1(n), v2(n), u1(n), u2(n), smax, sfin, tend, sfin2, om
+        a = synthetic(n, dt, 2)
+        om = pi * 300.0_dp / 40.0_dp
+        call run_coupled(error, a, dt, om, 0.2_dp, 0.12_dp, smax, sfin, tend, 'constant', &
+                         s_hist=s1, u_hist=u1, v_hist=v1)
+        if (allocated(error)) return
+        call run_coupled(error, a, dt, om, 0.2_dp, 7.0_dp, smax, sfin2, tend, 'one row', &
+                         s_hist=s2, u_hist=u2, v_hist=v2, kd=[0.0_dp], kv=[0.12_dp])
+        if (allocated(error)) return
+        call check(error, sfin > 0.01_dp .and. identical(s1, s2) .and. identical(v1, v2) &
+                   .and. identical(u1, u2) .and. same_bits(sfin, sfin2), 'bitwise')
+    end subroutine test_coupled_table_one_row
+
+    !> Equal rows: the integrator path (DOP853, segment ends crossed) = closed form.
+    subroutine test_coupled_table_flat(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 1600
+        real(dp), parameter :: dt = 0.005_dp
+        real(dp) :: a(n), s1(n), s2(n), smax, sfin, tend, sfin2, om
+        a = synthetic(n, dt, 2)
+        om = pi * 300.0_dp / 40.0_dp
+        call run_coupled(error, a, dt, om, 0.2_dp, 0.12_dp, smax, sfin, tend, 'constant', &
+                         s_hist=s1)
+        if (allocated(error)) return
+        call run_coupled(error, a, dt, om, 0.2_dp, 0.12_dp, smax, sfin2, tend, 'flat', &
+                         s_hist=s2, kd=[0.0_dp, 0.003_dp, 0.02_dp], kv=[0.12_dp, 0.12_dp, 0.12_dp])
+        if (allocated(error)) return
+        call check(error, sfin2, sfin, rtol=1.0e-11_dp, message='final')
+        if (allocated(error)) return
+        call check(error, s2, s1, atol=1.0e-11_dp * sfin, message='history')
+    end subroutine test_coupled_table_flat
+
+    !> ky falls from 0.15 to 0.07 over 1 cm then rises to 0.1 at 5 cm, H = 20 m,
+    !> Vs = 300 m/s: exact (DOP853 for the slides) = RK4 with 400 sub-steps.
+    subroutine test_coupled_table_reference(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 1600
+        real(dp), parameter :: dt = 0.005_dp
+        real(dp), parameter :: kd(3) = [0.0_dp, 0.01_dp, 0.05_dp], kv(3) = [0.15_dp, 0.07_dp, 0.1_dp]
+        real(dp) :: a(n), sh(n), uh(n), sr(n), ur(n), smax, sfin, tend, send, om
+        a = synthetic(n, dt, 2)
+        om = pi * 300.0_dp / 40.0_dp
+        call run_coupled(error, a, dt, om, 0.2_dp, 1.0_dp, smax, sfin, tend, 'table', &
+                         s_hist=sh, u_hist=uh, kd=kd, kv=kv)
+        if (allocated(error)) return
+        call reference_coupled(a, dt, g0, om, 0.2_dp, 1.0_dp, 400, send, sr, ur, kd, kv)
+        call check(error, sfin > 0.06_dp, 'slides past the table')
+        if (allocated(error)) return
+        call check(error, sfin, send, rtol=1.0e-10_dp, message='final s')
+        if (allocated(error)) return
+        call check(error, sh, sr, atol=1.0e-10_dp * send, message='s history')
+    end subroutine test_coupled_table_reference
 
     subroutine dip_taylor(self, x, f)
         class(dip_t), intent(inout) :: self

@@ -4,17 +4,17 @@
 !> acceleration exceeds the yield.
 !>
 !>  - decoupled: the modal response of the mass on a fixed base gives the history of the
-!>    horizontal equivalent acceleration HEA = a + (2/pi) u'' (g) (doc/flexible.md (F.7));
+!>    horizontal equivalent acceleration HEA = a + (2/pi) u'' (g) (doc/flexible.md (F.8));
 !>    a rigid block driven by HEA slides downslope (or two ways, exact rule only).
 !>  - coupled [RB99]: the sliding and the modal response are solved together; while
-!>    sliding, the base of the mass carries the yield force (doc/flexible.md (F.17)-(F.22)).
+!>    sliding, the base of the mass carries the yield force (doc/flexible.md (F.10)-(F.14)).
 !>
 !> Two rules (the `method` argument):
 !>  - FLEX_SLAMMER: SLAMMER 1.1 [SL13] step for step, in its own units (cm, cm/s^2 with
 !>    g_cm = 100 g): incremental Newmark average acceleration from rest with the first sample
 !>    as the first load increment, the decoupled slide integrated exactly for HEA linear
 !>    over each step with the step that ends a slide discarded, the coupled stop sub-step,
-!>    and SLAMMER's stepwise yield table (doc/flexible.md section 4, (F.23)-(F.29)).
+!>    and SLAMMER's stepwise yield table (doc/flexible.md section 4, (F.24)-(F.29)).
 !>  - FLEX_EXACT: the exact response to the piecewise-linear record (doc/flexible.md
 !>    sections 5-7, module seispulse_flexible_exact).
 !>
@@ -41,7 +41,7 @@ module seispulse_flexible
 
     public :: flexible_decoupled, flexible_coupled
 
-    !> Newmark's average-acceleration parameters (doc/flexible.md (F.23), [C12])
+    !> Newmark's average-acceleration parameters (doc/flexible.md (F.24), [C12])
     real(dp), parameter :: beta = 0.25_dp, gamma = 0.5_dp
 
     !> SLAMMER's modal response as the equivalent-linear iteration sees it: the record
@@ -307,7 +307,7 @@ contains
         u_peak = u_peak / 100.0_dp
     end subroutine slammer_peak
 
-    !> SLAMMER's modal response (doc/flexible.md (F.23)-(F.25)): incremental Newmark
+    !> SLAMMER's modal response (doc/flexible.md (F.24)-(F.26)): incremental Newmark
     !> average acceleration on u'' + 2 xi omega u' + omega^2 u = -(L/M) a; the first step
     !> from rest with the load increment a(1) and u'' from equilibrium; HEA = a + (L/Mtot) u''.
     !> The record is taken to cm/s^2 sample by sample (a = accel gcm).
@@ -327,7 +327,7 @@ contains
         a = 1.0_dp / (beta * dt) + 2.0_dp * xi * omega * gamma / beta
         b = 1.0_dp / (2.0_dp * beta) + dt * 2.0_dp * xi * omega * (gamma / (2.0_dp * beta) &
                                                                    - 1.0_dp)
-        ! first step from rest, load increment acc(1) (D-1)                             (F.25)
+        ! first step from rest, load increment acc(1)                                   (F.26)
         acc2 = accel(1) * gcm
         du = -participation_modal * acc2 / khat
         u1 = du
@@ -339,7 +339,7 @@ contains
         do j = 2, size(accel)
             acc1 = acc2
             acc2 = accel(j) * gcm
-            dp_ = -participation_modal * (acc2 - acc1) + a * v1 + b * w1
+            dp_ = -participation_modal * (acc2 - acc1) + a * v1 + b * w1                 ! (F.25)
             du = dp_ / khat
             dv = gamma / (beta * dt) * du - gamma / beta * v1 &
                  + dt * (1.0_dp - gamma / (2.0_dp * beta)) * w1
@@ -349,11 +349,11 @@ contains
             w1 = w1 + dw
             u_peak = max(u_peak, abs(u1))
             if (present(u)) u(j) = u1
-            if (present(avg)) avg(j) = acc2 + participation_total * w1                 ! (F.7)
+            if (present(avg)) avg(j) = acc2 + participation_total * w1                 ! (F.8)
         end do
     end subroutine slammer_response
 
-    !> SLAMMER's decoupled slide (Decoupled.d_sliding, doc/flexible.md (F.26)-(F.27)) with
+    !> SLAMMER's decoupled slide (Decoupled.d_sliding, doc/flexible.md (F.27)) with
     !> its stepwise table (F.29). With e = ky g - HEA(j-1), dH = HEA(j) - HEA(j-1), while
     !> sliding: s'(j) = s'(j-1) + e dt - dH dt/2, s(j) = s(j-1) - s'(j-1) dt - e dt^2/2
     !> + dH dt^2/6 (s' < 0 while sliding). A slide starts at the end of a step where
@@ -389,13 +389,13 @@ contains
             else
                 dacc = avg(j) - avg_prev
                 e = tmug(qq) - avg_prev
-                sdj = sd1 + e * dt - 0.5_dp * dacc * dt                                   ! (F.26)
+                sdj = sd1 + e * dt - 0.5_dp * dacc * dt                                   ! (F.27)
                 sj = s1 - sd1 * dt - 0.5_dp * dt * dt * e + dacc * dt * dt / 6.0_dp       ! (F.27)
             end if
             if (.not. slide) then
                 if (avg(j) > tmug(qq)) slide = .true.
             else if (sdj >= 0.0_dp) then
-                ! end of the slide: this step is discarded (D-3)
+                ! end of the slide: this step is discarded (doc/flexible.md section 4)
                 slide = .false.
                 sj = s1
                 sdj = 0.0_dp
@@ -413,7 +413,7 @@ contains
         s_end = s1
     end subroutine slammer_slide
 
-    !> SLAMMER's coupled analysis (Coupled, doc/flexible.md (F.17)-(F.22), (F.28)) on its
+    !> SLAMMER's coupled analysis (Coupled, doc/flexible.md (F.10)-(F.14), (F.28)) on its
     !> input acc = -record (cm/s^2; SLAMMER flips the record of normal polarity here).
     !> Sticking: the modal equation under acc; sliding: under the yield load -ky g with the
     !> reduced mass d1 = 1 - L^2/(M Mtot); the base force per
@@ -441,7 +441,7 @@ contains
         logical :: slide
 
         n = size(accel)
-        ! coefficients: k = 1 sticking (d1 = 1), k = 2 sliding (d1 = 1 - L^2/(M Mtot))  (F.19)
+        ! coefficients: k = 1 sticking (d1 = 1), k = 2 sliding (d1 = 1 - L^2/(M Mtot))  (F.11)
         d1s = 1.0_dp - participation_modal * participation_total
         d1 = [1.0_dp, d1s]
         do k = 1, 2
@@ -472,7 +472,7 @@ contains
             sdd1 = sdd2
             mug = tmug(qq)
             a_j = -(accel(j) * gcm)
-            ! load of the modal equation (F.18)
+            ! load of the modal equation (F.10)
             if (j == 1) then
                 acc11 = 0.0_dp
                 acc22 = a_j
@@ -494,7 +494,7 @@ contains
             v2 = v1 + dv
             w2 = (-participation_modal * acc22 - 2.0_dp * xi * omega * v2 &
                   - omega * omega * u2) / d1(k)
-            ! sliding acceleration and base force per unit mass (F.20), (F.21)
+            ! sliding acceleration and base force per unit mass (F.13), (F.12)
             if (slide) sdd2 = -a_j - mug - participation_total * w2
             basef = -a_j - participation_total * w2
             if (slide) then

@@ -41,6 +41,8 @@ module seispulse_flexible_exact
     use seispulse_sdof_sim, only: sdof_step_t, sdof_step
     use seispulse_pieces, only: record_step_check
     use seispulse_roots, only: scalar_function, find_root
+    use seispulse_ode, only: ode_system, ode_dop853_t, ode_dop853_factor
+    use seispulse_flexible_model, only: ky_table_validate
     implicit none
     private
 
@@ -96,6 +98,29 @@ module seispulse_flexible_exact
     contains
         procedure :: taylor => phase_taylor
     end type phase_t
+
+    !> The slide with ky(s) linear on a table segment (F.50): y = (u, u', s, s'),
+    !> time from the start of the piece; ky continued linearly past the segment's end.
+    type, extends(ode_system) :: table_slide_sys_t
+        real(dp) :: c = 0.0_dp, w2 = 0.0_dp     !! stick damping (1/s) and stiffness (1/s^2)
+        real(dp) :: gk0 = 0.0_dp, gk1 = 0.0_dp  !! g ky at s_j (m/s^2), g dky/ds (1/s^2)
+        real(dp) :: sj = 0.0_dp                 !! segment start (m)
+        real(dp) :: ga0 = 0.0_dp, gas = 0.0_dp  !! g a at the piece start, its slope
+    contains
+        procedure :: rhs => table_slide_rhs
+    end type table_slide_sys_t
+
+    !> A polynomial of degree 7 on [0, 1] (the dense output of one component), minus level.
+    type, extends(zero_function) :: poly_fn_t
+        real(dp) :: c(0:7) = 0.0_dp
+    contains
+        procedure :: taylor => poly_taylor
+    end type poly_fn_t
+
+    !> DOP853 tolerance for sliding with a yield table.
+    real(dp), parameter :: table_rtol = 1.0e-12_dp
+    !> DOP853 steps allowed in one piece of a record step.
+    integer, parameter :: max_ode_steps = 100000
 
 contains
 
@@ -218,8 +243,15 @@ contains
 
         type(phase_t) :: ph
         type(prop_t) :: p_stick, p_slide, pr
+        type(ode_dop853_t) :: ode
+        type(table_slide_sys_t) :: sys
+        type(poly_fn_t) :: pf
+        real(dp), allocatable :: tab_d(:), tab_k(:)
+        real(dp) :: hguess, yv(4), yn(4), fv(4), fn(4), sc(4)
+        integer :: nt
+        logical :: tab
         real(dp) :: cst, w2t, csl, w2s, x, h, t0, as, a0, a1, fa(0:2), fb(0:2), m3, xs
-        real(dp) :: u, v, s, sd, gky, tol
+        real(dp) :: u, v, s, sd, gky, tol, ue, ve, se, sde, d2e
         integer :: n, i, nev, k
         logical :: sliding, found, last
 
@@ -228,15 +260,29 @@ contains
         t_end = 0.0_dp
         call check_modal(accel, dt, g, omega, xi, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (.not. positive(ky)) then
+        if (.not. (positive(ky) .or. present(ky_disp) .or. present(ky_values))) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky = '//real_str(ky) &
                            //': must be > 0 (g; +inf: no sliding)')
             return
         end if
+        tab = .false.
+        gky = g * ky
         if (present(ky_disp) .or. present(ky_values)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky_disp, ky_values: a ' &
-                           //'yield table is not available for the exact coupled analysis')
-            return
+            if (.not. (present(ky_disp) .and. present(ky_values))) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky_disp, ky_values: ' &
+                               //'give both or neither')
+                return
+            end if
+            call ky_table_validate(ky_disp, ky_values, stat, errmsg)
+            if (stat /= SEISPULSE_SUCCESS) return
+            ! one row: the constant yield (the same arithmetic, bit for bit)
+            gky = g * ky_values(1)
+            tab = size(ky_disp) > 1
+            if (tab) then
+                allocate(tab_d, source=ky_disp)
+                allocate(tab_k, source=ky_values)
+                nt = size(tab_d)
+            end if
         end if
         n = size(accel)
         if (.not. hist_ok(s_hist, 's_hist')) return
@@ -244,13 +290,24 @@ contains
         if (.not. hist_ok(u_modal, 'u_modal')) return
         if (.not. hist_ok(hea, 'hea')) return
 
-        gky = g * ky
         cst = 2.0_dp * xi * omega
         w2t = omega**2
         csl = cst / d1
         w2s = w2t / d1
         call propagator(cst, w2t, dt, p_stick)
         call propagator(csl, w2s, dt, p_slide)
+        if (tab) then
+            ! tolerances: rtol on the state, atol at 1e-12 of the scales of a slide
+            sc(1) = lm * g * maxval(tab_k) / w2t
+            sc(2) = g * maxval(tab_k) / omega
+            sc(3) = g * maxval(tab_k) * dt * dt
+            sc(4) = g * maxval(tab_k) * dt
+            call ode%init(4, table_rtol, table_rtol * sc, stat, errmsg)
+            if (stat /= SEISPULSE_SUCCESS) return
+            sys%c = cst
+            sys%w2 = w2t
+            hguess = dt
+        end if
         u = 0.0_dp
         v = 0.0_dp
         s = 0.0_dp
@@ -258,7 +315,8 @@ contains
         sliding = .false.
         ! the mass starts at rest: it slides at once if HEA(0) = d1 g a(0) exceeds g ky
         call set_phase(0, 0.0_dp, accel(1), accel(1))
-        if (onset_now()) call start_slide()
+        call phase_f(ph, 0.0_dp, u, v, sd, fa)
+        if (onset_now(fa)) call start_slide()
         call record(1, accel(1))
 
         last = .false.
@@ -286,33 +344,52 @@ contains
                 end if
                 h = dt - x
                 if (.not. (h > 0.0_dp)) exit events
-                call set_phase(merge(1, 0, sliding), x, as, a1)
-                if (x > 0.0_dp) then
-                    call propagator(ph%c, ph%w2, h, pr)
-                else if (sliding) then
-                    pr = p_slide
-                else
-                    pr = p_stick
+                if (tab .and. sliding) then
+                    call table_piece(h, as, a1, found, xs)
+                    if (stat /= SEISPULSE_SUCCESS) return
+                    if (.not. found) exit events
+                    as = as + (a1 - as) * (xs / h)
+                    x = x + xs
+                    sd = 0.0_dp
+                    sliding = .false.
+                    t_end = t0 + x
+                    gky = g * table_ky(s)
+                    cycle events
                 end if
+                call set_phase(merge(1, 0, sliding), x, as, a1)
+                call phase_f(ph, 0.0_dp, u, v, sd, fa)
                 if (.not. sliding) then
-                    if (onset_now()) then
+                    if (onset_now(fa)) then
                         call start_slide()
                         cycle events
                     end if
                 end if
-                call ph%taylor(0.0_dp, fa)
-                if (sliding) then
-                    fa(0) = max(fa(0), 0.0_dp)
-                    if (zero(fa(0))) fa(1) = max(fa(1), 0.0_dp)
+                fa(0) = max(fa(0), 0.0_dp)
+                if (sliding .and. zero(fa(0))) fa(1) = max(fa(1), 0.0_dp)
+                ! the end of the piece (the full-step propagators computed once)
+                if (x > 0.0_dp) then
+                    call propagator(ph%c, ph%w2, h, pr)
+                    call phase_state(ph, pr, h, ue, ve, se, sde, d2e)
+                else if (sliding) then
+                    call phase_state(ph, p_slide, h, ue, ve, se, sde, d2e)
                 else
-                    fa(0) = max(fa(0), 0.0_dp)
+                    call phase_state(ph, p_stick, h, ue, ve, se, sde, d2e)
                 end if
-                call end_values(pr, h, fb)
+                call phase_f(ph, h, ue, ve, sde, fb)
                 m3 = phase_bound(h)
-                call first_zero(ph, h, fa, fb, m3, found, xs, stat, errmsg)
-                if (stat /= SEISPULSE_SUCCESS) return
+                ! most steps: no event, proven by the first test of first_zero
+                found = .false.
+                if (.not. excluded(fa, fb, h, m3)) then
+                    call first_zero(ph, h, fa, fb, m3, found, xs, stat, errmsg)
+                    if (stat /= SEISPULSE_SUCCESS) return
+                end if
                 if (.not. found) then
-                    call advance(pr, h)
+                    u = ue
+                    v = ve
+                    if (sliding) then
+                        s = se
+                        sd = sde
+                    end if
                     exit events
                 end if
                 ! the event at xs: advance the state there
@@ -331,6 +408,7 @@ contains
             if (i <= n - 1) call record(i + 1, a1)
             if (last .and. .not. sliding) exit
         end do
+        if (stat /= SEISPULSE_SUCCESS) return
         if (sliding) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky: the mass still slides ' &
                            //'long after the record (the run-out does not end)')
@@ -384,13 +462,12 @@ contains
 
         !> At rest, HEA exceeds g ky at the start of the phase (more than rounding), or
         !> reaches it there and grows.
-        logical function onset_now()
-            real(dp) :: f(0:2)
+        logical function onset_now(f)
+            real(dp), intent(in) :: f(0:2)
             if (.not. ieee_is_finite(gky)) then
                 onset_now = .false.
                 return
             end if
-            call ph%taylor(0.0_dp, f)
             tol = 8.0_dp * epsilon(1.0_dp) * (gky + abs(ph%ga0) + lmt * abs(ph%acc0))
             if (f(0) < -tol) then
                 onset_now = .true.
@@ -405,16 +482,6 @@ contains
             sliding = .true.
             sd = 0.0_dp
         end subroutine start_slide
-
-        !> f, f', f'' at the end of the phase (tau = h) from the propagator pr.
-        subroutine end_values(p, hh, f)
-            type(prop_t), intent(in) :: p
-            real(dp), intent(in) :: hh
-            real(dp), intent(out) :: f(0:2)
-            real(dp) :: uu, vv, ssd, dd2, ss
-            call phase_state(ph, p, hh, uu, vv, ss, ssd, dd2)
-            call phase_f(ph, hh, uu, vv, ssd, f)
-        end subroutine end_values
 
         !> Move the state by the phase over hh (propagator p).
         subroutine advance(p, hh)
@@ -436,7 +503,8 @@ contains
             real(dp) :: snp, crk, grow
             snp = -ph%c * ph%jrk0 - ph%w2 * ph%acc0
             crk = -ph%c * snp - ph%w2 * ph%jrk0
-            grow = exp(max(0.0_dp, -ph%c) * hh)
+            grow = 1.0_dp
+            if (ph%c < 0.0_dp) grow = exp(-ph%c * hh)
             if (ph%slide) then
                 ! f''' = (2/pi) u'''' and (u''', u'''') solves the free oscillator
                 phase_bound = lmt * sqrt(ph%w2 * ph%jrk0**2 + snp**2) * grow
@@ -447,6 +515,159 @@ contains
             phase_bound = phase_bound * (1.0_dp + 1.0e-10_dp)
         end function phase_bound
 
+        !> ky (g) at s (m): linear on the table's segments, constant beyond the last row.
+        pure real(dp) function table_ky(ss)
+            real(dp), intent(in) :: ss
+            integer :: j
+            table_ky = tab_k(nt)
+            do j = 1, nt - 1
+                if (ss < tab_d(j + 1)) then
+                    table_ky = tab_k(j) + (tab_k(j + 1) - tab_k(j)) &
+                               * ((ss - tab_d(j)) / (tab_d(j + 1) - tab_d(j)))
+                    return
+                end if
+            end do
+        end function table_ky
+
+        !> The segment of s: its start, g ky there and g dky/ds into sys.
+        subroutine set_segment(ss)
+            real(dp), intent(in) :: ss
+            integer :: j
+            sys%sj = tab_d(nt)
+            sys%gk0 = g * tab_k(nt)
+            sys%gk1 = 0.0_dp
+            do j = 1, nt - 1
+                if (ss < tab_d(j + 1)) then
+                    sys%sj = tab_d(j)
+                    sys%gk0 = g * tab_k(j)
+                    sys%gk1 = g * (tab_k(j + 1) - tab_k(j)) / (tab_d(j + 1) - tab_d(j))
+                    exit
+                end if
+            end do
+        end subroutine set_segment
+
+        !> Slide with the table over hp (a from aa to ae) by DOP853 (F.50)-(F.52): on each
+        !> accepted step the stop is the first zero of the dense output's polynomial of s'
+        !> (first_zero, a proven bracket on that polynomial), a segment end the crossing of
+        !> its polynomial of s (increasing until the stop: one crossing, Brent); the
+        !> integration restarts there with the next segment's law.
+        subroutine table_piece(hp, aa, ae, found_stop, x_stop)
+            real(dp), intent(in) :: hp, aa, ae
+            logical, intent(out) :: found_stop
+            real(dp), intent(out) :: x_stop
+            real(dp) :: t, hh, err, fa2(0:2), fb2(0:2), xz, xe, xb2, mm, dnext
+            integer :: it
+            logical :: fnd
+            found_stop = .false.
+            x_stop = hp
+            sys%ga0 = g * aa
+            sys%gas = g * (ae - aa) / hp
+            call set_segment(s)
+            t = 0.0_dp
+            yv = [u, v, s, sd]
+            call sys%rhs(t, yv, fv)
+            do it = 1, max_ode_steps
+                if (.not. (hp - t > 4.0_dp * epsilon(1.0_dp) * hp)) exit
+                hh = min(hguess, hp - t)
+                if (hp - t - hh < 1.0e-3_dp * hh) hh = hp - t
+                call ode%step(sys, t, yv, fv, hh, t + hh, yn, fn, err)
+                if (.not. err <= 1.0_dp) then
+                    hguess = hh * ode_dop853_factor(err)
+                    cycle
+                end if
+                call ode%dense_setup(sys, t, yv, fv, hh, yn, fn)
+                ! the stop: first zero of s'(x) on (0, 1]
+                call dense_poly(4, pf%c)
+                call pf%taylor(0.0_dp, fa2)
+                fa2(0) = max(fa2(0), 0.0_dp)
+                if (.not. (fa2(0) > 0.0_dp)) fa2(1) = max(fa2(1), 0.0_dp)
+                call pf%taylor(1.0_dp, fb2)
+                mm = poly_bound3(pf%c)
+                call first_zero(pf, 1.0_dp, fa2, fb2, mm, fnd, xz, stat, errmsg)
+                if (stat /= SEISPULSE_SUCCESS) return
+                xe = 1.0_dp
+                if (fnd) xe = xz
+                ! a segment end before the stop: s rises to it once
+                if (sys%sj < tab_d(nt)) then
+                    dnext = next_break(s)
+                    if (ode%dense%component(3, xe) >= dnext) then
+                        call dense_poly(3, pf%c)
+                        pf%c(0) = pf%c(0) - dnext
+                        call find_root(pf, 0.0_dp, xe, xb2, stat, errmsg, &
+                                       fa_known=pf%c(0), fb_known=ode%dense%component(3, xe) &
+                                       - dnext)
+                        if (stat /= SEISPULSE_SUCCESS) return
+                        call ode%dense%value(xb2, yv)
+                        yv(3) = dnext
+                        t = t + xb2 * hh
+                        call take(yv)
+                        call set_segment(s)
+                        call sys%rhs(t, yv, fv)
+                        cycle
+                    end if
+                end if
+                if (fnd) then
+                    call ode%dense%value(xz, yv)
+                    yv(4) = 0.0_dp
+                    call take(yv)
+                    found_stop = .true.
+                    x_stop = t + xz * hh
+                    return
+                end if
+                t = t + hh
+                yv = yn
+                fv = fn
+                call take(yv)
+                hguess = hh * ode_dop853_factor(err)
+            end do
+            if (it > max_ode_steps) then
+                call set_error(stat, errmsg, SEISPULSE_INTERNAL, 'coupled_exact: too many ' &
+                               //'integrator steps in one record step (a bug)')
+            end if
+        end subroutine table_piece
+
+        !> The table row after s (m).
+        pure real(dp) function next_break(ss)
+            real(dp), intent(in) :: ss
+            integer :: j
+            next_break = huge(1.0_dp)
+            do j = 2, nt
+                if (tab_d(j) > ss) then
+                    next_break = tab_d(j)
+                    return
+                end if
+            end do
+        end function next_break
+
+        subroutine take(y)
+            real(dp), intent(in) :: y(4)
+            u = y(1)
+            v = y(2)
+            s = y(3)
+            sd = y(4)
+        end subroutine take
+
+        !> Monomial coefficients in x of component m of the last step's dense output.
+        subroutine dense_poly(m, c)
+            integer, intent(in) :: m
+            real(dp), intent(out) :: c(0:7)
+            c = 0.0_dp
+            c(1) = ode%dense%r(m, 7)
+            c(0) = c(0) + ode%dense%r(m, 6)
+            call times_one_minus_x(c)
+            c(0) = c(0) + ode%dense%r(m, 5)
+            c = eoshift(c, -1)
+            c(0) = c(0) + ode%dense%r(m, 4)
+            call times_one_minus_x(c)
+            c(0) = c(0) + ode%dense%r(m, 3)
+            c = eoshift(c, -1)
+            c(0) = c(0) + ode%dense%r(m, 2)
+            call times_one_minus_x(c)
+            c(0) = c(0) + ode%dense%r(m, 1)
+            c = eoshift(c, -1)
+            c(0) = c(0) + ode%dense%y0(m)
+        end subroutine dense_poly
+
         !> Histories at sample j (a = record value there).
         subroutine record(j, aj)
             integer, intent(in) :: j
@@ -456,7 +677,9 @@ contains
             if (present(sdot_hist)) sdot_hist(j) = sd
             if (present(u_modal)) u_modal(j) = u
             if (present(hea)) then
-                if (sliding) then
+                if (sliding .and. tab) then
+                    acc = (-lm * g * table_ky(s) - cst * v - w2t * u) / d1
+                else if (sliding) then
                     acc = (-lm * gky - cst * v - w2t * u) / d1
                 else
                     acc = -lm * g * aj - cst * v - w2t * u
@@ -528,6 +751,50 @@ contains
         call phase_state(self, p, x, u, v, s, sd, d2)
         call phase_f(self, x, u, v, sd, f)
     end subroutine phase_taylor
+
+    !> The slide with a linear ky(s) (F.50): d1 u'' + c u' + w2 u = -(4/pi) g ky(s),
+    !> s'' = g a - g ky(s) + (2/pi) u''.
+    subroutine table_slide_rhs(self, t, y, dydt)
+        class(table_slide_sys_t), intent(inout) :: self
+        real(dp), intent(in) :: t
+        real(dp), contiguous, intent(in) :: y(:)
+        real(dp), contiguous, intent(out) :: dydt(:)
+        real(dp) :: gk, acc
+        gk = self%gk0 + self%gk1 * (y(3) - self%sj)
+        acc = (-lm * gk - self%c * y(2) - self%w2 * y(1)) / d1
+        dydt(1:4) = [y(2), acc, y(4), self%ga0 + self%gas * t - gk + lmt * acc]
+    end subroutine table_slide_rhs
+
+    !> p, p', p'' of the polynomial at x.
+    subroutine poly_taylor(self, x, f)
+        class(poly_fn_t), intent(inout) :: self
+        real(dp), intent(in) :: x
+        real(dp), intent(out) :: f(0:2)
+        integer :: k
+        f = 0.0_dp
+        do k = 7, 0, -1
+            f(2) = f(2) * x + 2.0_dp * f(1)
+            f(1) = f(1) * x + f(0)
+            f(0) = f(0) * x + self%c(k)
+        end do
+    end subroutine poly_taylor
+
+    !> max |p'''| on [0, 1] <= sum k(k-1)(k-2) |c_k|.
+    pure real(dp) function poly_bound3(c) result(m)
+        real(dp), intent(in) :: c(0:7)
+        integer :: k
+        m = 0.0_dp
+        do k = 3, 7
+            m = m + real(k * (k - 1) * (k - 2), dp) * abs(c(k))
+        end do
+        m = m * (1.0_dp + 1.0e-10_dp)
+    end function poly_bound3
+
+    !> c times (1 - x), degree kept within 7.
+    pure subroutine times_one_minus_x(c)
+        real(dp), intent(inout) :: c(0:7)
+        c = c - eoshift(c, -1)
+    end subroutine times_one_minus_x
 
     ! ------------------------------------------------------------------------------
     ! The oscillator's matrix functions
@@ -677,6 +944,10 @@ contains
         real(dp) :: dl, dr
         excluded = .false.
         if (.not. (fr(0) > 0.0_dp)) return
+        ! the crude bound f >= f(xa) - |f'(xa)| L - max(0, M3 L/3 - f''(xa)) L^2/2 first
+        excluded = fl(0) - abs(fl(1)) * el - max(0.0_dp, m3 * el / 3.0_dp - fl(2)) * el * el &
+                   * 0.5_dp > 0.0_dp
+        if (excluded) return
         dl = first_positive_root(fl(0), fl(1), 0.5_dp * (fl(2) - m3 * el / 3.0_dp))
         dr = first_positive_root(fr(0), -fr(1), 0.5_dp * (fr(2) - m3 * el / 3.0_dp))
         excluded = dl + dr > el

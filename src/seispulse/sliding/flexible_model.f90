@@ -4,8 +4,8 @@
 !> The sliding mass is a uniform 1-D shear beam of height H on a rigid base, kept to its
 !> fundamental mode (doc/flexible.md (F.1)-(F.8)): omega = pi Vs/(2 H), participation
 !> L/M = 4/pi, L/Mtot = 2/pi. Its damping is the user's viscous damping plus the
-!> radiation damping of Lee [L04] (F.9); an equivalent-linear soil [RB99] iterates Vs and
-!> the material damping on the effective strain of the response (F.10)-(F.16) with the
+!> radiation damping of Lee [L04] (F.15)-(F.16); an equivalent-linear soil [RB99] iterates Vs
+!> and the material damping on the effective strain of the response (F.17)-(F.23) with the
 !> hyperbolic modulus curve and the scaled Masing damping of Darendeli [D01]. The one
 !> iteration routine, eql_iterate, serves every rule: the response is an object of a
 !> type extending modal_peak_t (its `peak` binding returns max|u| for a frequency and a
@@ -28,7 +28,7 @@ module seispulse_flexible_model
     public :: participation_modal, participation_total, strain_factor, eql_tolerance_pct
 
     integer, parameter :: SOIL_LINEAR = 1             !! linear elastic sliding mass
-    integer, parameter :: SOIL_EQUIVALENT_LINEAR = 2  !! equivalent-linear iteration (F.10)-(F.16)
+    integer, parameter :: SOIL_EQUIVALENT_LINEAR = 2  !! equivalent-linear iteration (F.17)-(F.23)
     integer, parameter :: FLEX_EXACT = 1    !! exact piecewise-linear response (= NEWMARK_EXACT)
     integer, parameter :: FLEX_SLAMMER = 2  !! SLAMMER 1.1's arithmetic (= NEWMARK_SLAMMER)
 
@@ -40,11 +40,11 @@ module seispulse_flexible_model
     !> L/Mtot, 2/pi (F.6)
     real(dp), parameter :: participation_total = 2.0_dp / pi
     !> effective strain per u/H: 0.65 (effective-strain ratio) x 1.57 (the mode's largest
-    !> slope, pi/2 as SLAMMER writes it) (F.11)
+    !> slope, pi/2 as SLAMMER writes it) (F.17)
     real(dp), parameter :: strain_factor = 0.65_dp * 1.57_dp
-    !> convergence of the equivalent-linear iteration: both relative changes <= 5 % (F.16)
+    !> convergence of the equivalent-linear iteration: both relative changes <= 5 % (F.23)
     real(dp), parameter :: eql_tolerance_pct = 5.0_dp
-    !> below this strain ratio gamma/gamma_r the Masing damping is its series (F.14)
+    !> below this strain ratio gamma/gamma_r the Masing damping is its series (F.20)
     real(dp), parameter :: masing_series_below = 0.1_dp
 
     !> The flexible sliding mass (SI; damping as a fraction, the reference strain in percent).
@@ -130,15 +130,15 @@ contains
     end subroutine flexible_mass_validate
 
     !> Radiation ("impedance") damping of the sliding mass on its base, Lee [L04]
-    !> (doc/flexible.md (F.9)): xi_f = min(0.2, 0.55016 (vs_base/vs)^-0.9904) (fraction).
+    !> (doc/flexible.md (F.16)): xi_f = min(0.2, 0.55016 (vs_base/vs)^-0.9904) (fraction).
     pure real(dp) function radiation_damping(vs, vs_base) result(xi_f)
         real(dp), intent(in) :: vs       !! Vs of the sliding mass (m/s) > 0
         real(dp), intent(in) :: vs_base  !! Vs below the slip surface (m/s) > 0
-        xi_f = min(0.2_dp, 0.55016_dp * (vs_base / vs)**(-0.9904_dp))   ! (F.9)
+        xi_f = min(0.2_dp, 0.55016_dp * (vs_base / vs)**(-0.9904_dp))   ! (F.16)
     end function radiation_damping
 
     !> Masing damping of the hyperbolic curve (percent) at the strain ratio x = gamma/gamma_r
-    !> >= 0 (doc/flexible.md (F.14)): (100/pi) [4 (1 + x)(x - ln(1 + x))/x^2 - 2]; below
+    !> >= 0 (doc/flexible.md (F.20)): (100/pi) [4 (1 + x)(x - ln(1 + x))/x^2 - 2]; below
     !> x = 0.1 its series (400/pi) sum_m (-1)^(m+1) x^m/((m+1)(m+2)), so that it tends to 0
     !> without cancellation.
     pure real(dp) function masing_damping_pct(x) result(d)
@@ -160,7 +160,7 @@ contains
     end function masing_damping_pct
 
     !> Equivalent-linear soil properties at an effective strain (doc/flexible.md
-    !> (F.12)-(F.15)): the hyperbolic modulus reduction G/Gmax = 1/(1 + gamma/gamma_r) and
+    !> (F.18)-(F.21)): the hyperbolic modulus reduction G/Gmax = 1/(1 + gamma/gamma_r) and
     !> the material damping xi_mat = (0.62 (G/Gmax)^0.1 D_Masing + 1 %) as a fraction.
     pure subroutine eql_properties(gamma_eff_pct, ref_strain_pct, g_ratio, damping_material)
         real(dp), intent(in) :: gamma_eff_pct      !! effective shear strain (percent) >= 0
@@ -169,8 +169,8 @@ contains
         real(dp), intent(out) :: damping_material  !! xi_mat (fraction)
         real(dp) :: x
         x = gamma_eff_pct / ref_strain_pct
-        g_ratio = 1.0_dp / (1.0_dp + x)                                          ! (F.12)
-        damping_material = (0.62_dp * g_ratio**0.1_dp * masing_damping_pct(x) &   ! (F.15)
+        g_ratio = 1.0_dp / (1.0_dp + x)                                          ! (F.18)
+        damping_material = (0.62_dp * g_ratio**0.1_dp * masing_damping_pct(x) &   ! (F.21)
                             + 1.0_dp) / 100.0_dp
     end subroutine eql_properties
 
@@ -220,7 +220,7 @@ contains
         end do
     end subroutine ky_table_validate
 
-    !> The equivalent-linear iteration (doc/flexible.md (F.10)-(F.16)), shared by every
+    !> The equivalent-linear iteration (doc/flexible.md (F.17)-(F.23)), shared by every
     !> integration rule. From Vs0 = mass%vs and xi = mass%damping + xi_f(Vs0), each pass runs
     !> the response once (O(n)), takes gamma_eff = 0.65 x 1.57 max|u|/H, and sets
     !> Vs = Vs0 sqrt(G/Gmax), xi = xi_mat + xi_f(Vs) (the user's damping is dropped after the
@@ -256,10 +256,10 @@ contains
             call response%peak(pi * vs / (2.0_dp * mass%height), xi, u_peak, stat, errmsg)
             if (stat /= SEISPULSE_SUCCESS) return
             iterations = it
-            gamma_pct = 100.0_dp * strain_factor * u_peak / mass%height          ! (F.11)
+            gamma_pct = 100.0_dp * strain_factor * u_peak / mass%height          ! (F.17)
             call eql_properties(gamma_pct, mass%ref_strain_pct, g_ratio, d_mat)
-            vs_new = mass%vs * sqrt(g_ratio)                                     ! (F.13)
-            dg_pct = abs((vs * vs - vs_new * vs_new) / (vs * vs)) * 100.0_dp     ! (F.16)
+            vs_new = mass%vs * sqrt(g_ratio)                                     ! (F.19)
+            dg_pct = abs((vs * vs - vs_new * vs_new) / (vs * vs)) * 100.0_dp     ! (F.23)
             if (d_mat_prev > 0.0_dp) then
                 dd_pct = abs((d_mat_prev - d_mat) / d_mat_prev) * 100.0_dp
             else
@@ -267,7 +267,7 @@ contains
             end if
             vs = vs_new
             xi_f = radiation_damping(vs, mass%vs_base)
-            xi = d_mat + xi_f                                                    ! (F.15)
+            xi = d_mat + xi_f                                                    ! (F.22)
             d_mat_prev = d_mat
             if (dg_pct <= eql_tolerance_pct .and. dd_pct <= eql_tolerance_pct) then
                 converged = .true.
