@@ -1,5 +1,5 @@
 !> Flexible sliding masses, exact (seispulse_flexible_exact): the modal recurrence against
-!> closed forms for step and ramp input (positive, negative damping); the coupled model
+!> closed forms for step and ramp input (positive, negative, critical, over-damping); the coupled model
 !> without sliding against the modal response; the coupled model against an independent
 !> integration written here (RK4 on sub-steps with events located by bisection on the
 !> re-integrated sub-step) on a synthetic record and on a short soft mass with many
@@ -11,6 +11,8 @@ module test_flexible_exact
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT
     use seispulse_flexible_exact, only: modal_response_exact, coupled_exact, zero_function, &
                                         first_zero
+    use seispulse_pulses, only: exp_pulse
+    use seispulse_sliding_closed, only: half_cycle_t, half_cycle
     use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, NEWMARK_EXACT, &
                                  NEWMARK_SLAMMER
     use testing, only: test_error, unit_test, new_unittest, check, same_bits
@@ -41,6 +43,10 @@ contains
                  new_unittest('coupled = independent RK4: short soft mass, many slides', &
                               test_coupled_many_slides), &
                  new_unittest('coupled -> rigid exact as Vs grows', test_coupled_rigid_limit), &
+                 new_unittest('decoupled (rigid exact on HEA) -> rigid exact as Vs grows', &
+                              test_decoupled_rigid_limit), &
+                 new_unittest('stiff mass under a sampled exponential pulse: closed form', &
+                              test_pulse_closed_form), &
                  new_unittest('first_zero: close double zero, touch, none', test_first_zero), &
                  new_unittest('rigid ky table, one row = constant ky (bitwise)', &
                               test_table_one_row), &
@@ -257,7 +263,29 @@ contains
         real(dp), parameter :: dt = 0.005_dp, omega = 2.0_dp * pi / 0.37_dp
         real(dp) :: a(n), u(n), hea(n), ue(n), t, wd, kk, c1, c2, w2, cc, up0
         real(dp), parameter :: xis(3) = [0.05_dp, -0.1_dp, 0.7_dp]
+        real(dp) :: l1, l2
         integer :: i, j, stat
+        ! over-damped and critical step responses: u = K/w2 (1 + (l2 e^(l1 t) - l1 e^(l2 t))/(l1 - l2))
+        do j = 1, 2
+            a = 0.2_dp
+            kk = -4.0_dp / pi * g0 * 0.2_dp
+            if (j == 1) then
+                call modal_response_exact(a, dt, g0, omega, 1.5_dp, u, hea, stat)
+                l1 = -omega * (1.5_dp - sqrt(1.25_dp))
+                l2 = -omega * (1.5_dp + sqrt(1.25_dp))
+                ue = [(kk / omega**2 * (1.0_dp + (l2 * exp(l1 * (i - 1) * dt) - l1 &
+                       * exp(l2 * (i - 1) * dt)) / (l1 - l2)), i = 1, n)]
+            else
+                call modal_response_exact(a, dt, g0, omega, 1.0_dp, u, hea, stat)
+                ue = [(kk / omega**2 * (1.0_dp - exp(-omega * (i - 1) * dt) * (1.0_dp + omega &
+                       * (i - 1) * dt)), i = 1, n)]
+            end if
+            call check(error, stat, SEISPULSE_SUCCESS, 'over-damped: status')
+            if (allocated(error)) return
+            call check(error, u, ue, atol=1.0e-13_dp * maxval(abs(ue)), &
+                       message='over-damped / critical step response')
+            if (allocated(error)) return
+        end do
         do j = 1, 3
             wd = omega * sqrt(1.0_dp - xis(j)**2)
             w2 = omega**2
@@ -317,18 +345,19 @@ contains
         call check(error, uc, u, atol=1.0e-12_dp * maxval(abs(u)), message='u = modal u')
     end subroutine test_coupled_no_slide
 
-    !> A synthetic record, H = 20 m, Vs = 300 m/s, damping 0.2 and -0.005 plus an over-damped
-    !> sliding oscillator (xi = 0.6): exact = RK4 with 400 sub-steps per sample.
+    !> A synthetic record, H = 20 m, Vs = 300 m/s, damping 0.2 and -0.005, an over-damped
+    !> sliding oscillator (xi = 0.6) and an over-damped mass (xi = 1.2): exact = RK4 with
+    !> 400 sub-steps per sample.
     subroutine test_coupled_reference(error)
         type(test_error), allocatable, intent(out) :: error
         integer, parameter :: n = 1600
         real(dp), parameter :: dt = 0.005_dp
         real(dp) :: a(n), sh(n), uh(n), sr(n), ur(n), smax, sfin, tend, send, omega
-        real(dp), parameter :: xis(3) = [0.2_dp, -0.005_dp, 0.6_dp]
+        real(dp), parameter :: xis(4) = [0.2_dp, -0.005_dp, 0.6_dp, 1.2_dp]
         integer :: j
         a = synthetic(n, dt, 2)
         omega = pi * 300.0_dp / (2.0_dp * 20.0_dp)
-        do j = 1, 3
+        do j = 1, 4
             call run_coupled(error, a, dt, omega, xis(j), 0.12_dp, smax, sfin, tend, 'record', &
                              s_hist=sh, u_hist=uh)
             if (allocated(error)) return
@@ -694,6 +723,74 @@ contains
         call check(error, sh, sr, atol=1.0e-10_dp * send, message='s history')
     end subroutine test_coupled_table_reference
 
+    !> The decoupled analysis (the rigid exact rule on the HEA of the exact modal
+    !> response, doc/flexible.md (F.36)) tends to the rigid block on the record itself.
+    subroutine test_decoupled_rigid_limit(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 1600
+        real(dp), parameter :: dt = 0.005_dp
+        real(dp) :: a(n), u(n), hea(n), d_prev, d
+        type(newmark_block_t) :: blk
+        type(newmark_result_t) :: res, rd
+        real(dp), parameter :: vss(3) = [1.0e3_dp, 1.0e4_dp, 1.0e5_dp]
+        integer :: stat, j
+        a = synthetic(n, dt, 4)
+        blk%ky = 0.1_dp
+        call newmark_rigid(a, dt, blk, NEWMARK_EXACT, g0, res, stat)
+        d_prev = huge(1.0_dp)
+        do j = 1, 3
+            call modal_response_exact(a, dt, g0, pi * vss(j) / 20.0_dp, 0.1_dp, u, hea, stat)
+            call newmark_rigid(hea, dt, blk, NEWMARK_EXACT, g0, rd, stat)
+            call check(error, stat, SEISPULSE_SUCCESS, 'status')
+            if (allocated(error)) return
+            d = abs(rd%final_disp - res%final_disp)
+            call check(error, d < d_prev, 'difference falls with Vs')
+            if (allocated(error)) return
+            d_prev = d
+        end do
+        call check(error, rd%final_disp, res%final_disp, rtol=1.0e-5_dp, message='Vs = 1e5')
+    end subroutine test_decoupled_rigid_limit
+
+    !> One lobe of the exponential pulse (A = 1, t_d = 1 s, g = 1) sampled at t_d/256 on a
+    !> mass of omega = 2e4 rad/s: coupled and decoupled slips equal the rigid block's
+    !> (1e-6) and the closed form of the half cycle (seispulse_sliding_closed) to the
+    !> O(dt^2) of the sampling.
+    subroutine test_pulse_closed_form(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: ns = 256
+        real(dp), parameter :: betas(2) = [-pi, 0.4_dp], eta = 0.3_dp, om = 2.0e4_dp
+        real(dp) :: tau(ns + 1), a(ns + 1), v(ns + 1), d(ns + 1), u(ns + 1), hea(ns + 1)
+        real(dp) :: smax, sfin, tend
+        type(half_cycle_t) :: hc
+        type(newmark_block_t) :: blk
+        type(newmark_result_t) :: res, rd
+        integer :: i, j, stat
+        character(len=200) :: msg
+        tau = [(real(i - 1, dp) / ns, i = 1, ns + 1)]
+        blk%ky = eta
+        do j = 1, 2
+            call half_cycle(eta, betas(j), 1.0_dp, hc, stat)
+            call exp_pulse(tau, [betas(j)], .false., a, v, d, stat)
+            call newmark_rigid(a, 1.0_dp / ns, blk, NEWMARK_EXACT, 1.0_dp, res, stat)
+            call coupled_exact(a, 1.0_dp / ns, 1.0_dp, om, 0.1_dp, eta, smax, sfin, tend, stat, &
+                               msg)
+            call check(error, stat, SEISPULSE_SUCCESS, 'coupled status')
+            if (allocated(error)) return
+            call modal_response_exact(a, 1.0_dp / ns, 1.0_dp, om, 0.1_dp, u, hea, stat)
+            call newmark_rigid(hea, 1.0_dp / ns, blk, NEWMARK_EXACT, 1.0_dp, rd, stat)
+            call check(error, sfin, res%final_disp, rtol=1.0e-6_dp, message='coupled = rigid')
+            if (allocated(error)) return
+            call check(error, rd%final_disp, res%final_disp, rtol=1.0e-6_dp, &
+                       message='decoupled = rigid')
+            if (allocated(error)) return
+            call check(error, sfin, hc%um, rtol=3.0e-4_dp, message='coupled = closed form')
+            if (allocated(error)) return
+            call check(error, rd%final_disp, hc%um, rtol=3.0e-4_dp, &
+                       message='decoupled = closed form')
+            if (allocated(error)) return
+        end do
+    end subroutine test_pulse_closed_form
+
     subroutine dip_taylor(self, x, f)
         class(dip_t), intent(inout) :: self
         real(dp), intent(in) :: x
@@ -744,8 +841,8 @@ contains
         character(len=200) :: msg
         a = 0.1_dp
         msg = ''
-        call modal_response_exact(a, 0.01_dp, g0, 10.0_dp, 1.0_dp, u, hea, stat, msg)
-        call check(error, stat, SEISPULSE_INVALID_INPUT, 'xi = 1')
+        call modal_response_exact(a, 0.01_dp, g0, 10.0_dp, -1.0_dp, u, hea, stat, msg)
+        call check(error, stat, SEISPULSE_INVALID_INPUT, 'xi = -1')
         if (allocated(error)) return
         call check(error, index(msg, 'xi') > 0, 'message names xi: '//trim(msg))
         if (allocated(error)) return

@@ -130,13 +130,14 @@ contains
 
     !> Exact one-mode response to the piecewise-linear record (the record as given):
     !> u'' + 2 xi omega u' + omega^2 u = -(4/pi) g a(t) from rest (F.30), at the samples,
-    !> by the exact recurrence of seispulse_sdof_sim (F.34); HEA = a + (2/pi) u''/g (F.31).
+    !> by the exact recurrence of seispulse_sdof_sim (F.34) (|xi| < 1; over-damped: the
+    !> propagator of (F.38)); HEA = a + (2/pi) u''/g (F.31).
     subroutine modal_response_exact(accel, dt, g, omega, xi, u, hea, stat, errmsg, udot, uddot)
         real(dp), intent(in) :: accel(:)                      !! record (g) at (i-1) dt
         real(dp), intent(in) :: dt                            !! time step (s) > 0
         real(dp), intent(in) :: g                             !! gravity (m/s^2) > 0
         real(dp), intent(in) :: omega                         !! circular frequency (rad/s) > 0
-        real(dp), intent(in) :: xi                            !! damping ratio in (-1, 1)
+        real(dp), intent(in) :: xi                            !! damping ratio > -1
         real(dp), intent(out) :: u(:)                         !! modal displacement (m)
         real(dp), intent(out) :: hea(:)                       !! HEA (g)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
@@ -144,8 +145,10 @@ contains
         real(dp), intent(out), optional :: udot(:)            !! u' (m/s)
         real(dp), intent(out), optional :: uddot(:)           !! u'' (m/s^2)
         type(sdof_step_t) :: st
+        type(prop_t) :: pr
         real(dp) :: z, v, zn, acc, w2, c, gl
         integer :: i, n
+        logical :: over
         call check_modal(accel, dt, g, omega, xi, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         n = size(accel)
@@ -168,11 +171,17 @@ contains
                 return
             end if
         end if
-        ! sdof_step solves z'' + 2 xi omega z' + omega^2 z = -a_g: a_g = (4/pi) g a
-        st = sdof_step(2.0_dp * pi / omega, xi, dt)
+        ! sdof_step solves z'' + 2 xi omega z' + omega^2 z = -a_g: a_g = (4/pi) g a;
+        ! over-damped (xi >= 1): the propagator of (F.38)
+        over = xi >= 1.0_dp
         gl = lm * g
         w2 = omega**2
         c = 2.0_dp * xi * omega
+        if (over) then
+            call propagator(c, w2, dt, pr)
+        else
+            st = sdof_step(2.0_dp * pi / omega, xi, dt)
+        end if
         z = 0.0_dp
         v = 0.0_dp
         do i = 1, n
@@ -186,9 +195,19 @@ contains
     contains
         subroutine step(j)
             integer, intent(in) :: j
-            real(dp) :: ap, ac
+            real(dp) :: ap, ac, x1, x2, l1
             ap = accel(j - 1)
             ac = accel(j)
+            if (over) then
+                ! x(h) = x0 + P1 x0' + P2 (0, l'), x0' = (v, -gl a_n - c v - w2 z) (F.38)
+                x1 = v
+                x2 = -gl * ap - c * v - w2 * z
+                l1 = -gl * (ac - ap) / dt
+                zn = z + pr%p1(1, 1) * x1 + pr%p1(1, 2) * x2 + pr%p2(1, 2) * l1
+                v = v + pr%p1(2, 1) * x1 + pr%p1(2, 2) * x2 + pr%p2(2, 2) * l1
+                z = zn
+                return
+            end if
             zn = st%e11 * z + st%e12 * v + gl * (st%b1 * ap + st%c1 * ac)
             v = st%e21 * z + st%e22 * v + gl * (st%b2 * ap + st%c2 * ac)
             z = zn
@@ -205,9 +224,9 @@ contains
         if (.not. finite_positive(omega)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'omega = '//real_str(omega) &
                            //': must be a finite number > 0 (rad/s)')
-        else if (.not. (abs(xi) < 1.0_dp)) then
+        else if (.not. (xi > -1.0_dp .and. ieee_is_finite(xi))) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'xi = '//real_str(xi) &
-                           //': the damping ratio must be in (-1, 1)')
+                           //': the damping ratio must be finite and > -1')
         end if
     end subroutine check_modal
 
@@ -227,7 +246,7 @@ contains
         real(dp), intent(in) :: dt                            !! time step (s) > 0
         real(dp), intent(in) :: g                             !! gravity (m/s^2) > 0
         real(dp), intent(in) :: omega                         !! circular frequency (rad/s) > 0
-        real(dp), intent(in) :: xi                            !! total damping ratio in (-1, 1)
+        real(dp), intent(in) :: xi                            !! total damping ratio > -1
         real(dp), intent(in) :: ky                            !! yield acceleration (g) > 0
         real(dp), intent(out) :: max_disp                     !! largest s (m)
         real(dp), intent(out) :: final_disp                   !! s at rest at the end (m)
@@ -950,7 +969,11 @@ contains
         if (excluded) return
         dl = first_positive_root(fl(0), fl(1), 0.5_dp * (fl(2) - m3 * el / 3.0_dp))
         dr = first_positive_root(fr(0), -fr(1), 0.5_dp * (fr(2) - m3 * el / 3.0_dp))
-        excluded = dl + dr > el
+        if (dl >= el .or. dr >= el) then
+            excluded = .true.
+        else
+            excluded = dl + dr > el
+        end if
     end function excluded
 
     !> f' < 0 on (xa, xa + el) from the Taylor upper bounds of f' (F.47).
