@@ -8,7 +8,8 @@ module test_flexible
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
                                 SEISPULSE_NO_CONVERGENCE
-    use seispulse_newmark, only: NEWMARK_BOTH, NEWMARK_ASYM
+    use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, &
+                                 NEWMARK_BOTH, NEWMARK_ASYM, NEWMARK_EXACT
     use seispulse_flexible_model, only: flexible_mass_t, flexible_result_t, modal_peak_t, &
                                         flexible_mass_validate, radiation_damping, &
                                         eql_properties, ky_table_validate, eql_iterate, &
@@ -61,7 +62,9 @@ contains
                  new_unittest('SLAMMER yield table: row 2 from the first step', test_ky_table), &
                  new_unittest('polarity, kmax sign and histories', test_polarity_histories), &
                  new_unittest('SLAMMER 1.1 Java on the same samples (LE, EQL, table)', &
-                              test_slammer_java)]
+                              test_slammer_java), &
+                 new_unittest('exact rule: stiff limit = rigid block, two-way odd, near SLAMMER', &
+                              test_exact_dispatch)]
     end subroutine collect_flexible
 
     ! ---------------------------------------------------------------- helpers
@@ -803,5 +806,72 @@ contains
             call check(error, res%damping_final, damp, rtol=1.0e-9_dp, message='damping')
         end subroutine one
     end subroutine test_slammer_java
+
+    !> The exact rule through flexible_decoupled / flexible_coupled: a very stiff mass is the
+    !> rigid block (newmark_rigid, exact) on the record; two-way sliding is odd in the
+    !> record; the histories match the scalars; and both analyses (linear and
+    !> equivalent-linear) stay within 1 % of SLAMMER's arithmetic on a smooth record.
+    subroutine test_exact_dispatch(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(flexible_mass_t) :: mass
+        type(flexible_result_t) :: r, ri, rs
+        type(newmark_result_t) :: rr
+        real(dp) :: a(1500), hea(1500), s(1500)
+        integer :: stat, soil, k_coupled
+        logical :: coupled
+        a = synthetic()
+        mass = flexible_mass_t(height=10.0_dp, vs=1.0e9_dp, vs_base=1.0e9_dp, damping=0.05_dp)
+        call flexible_decoupled(a, 0.01_dp, 0.1_dp, mass, FLEX_EXACT, g0, r, stat, hea=hea)
+        call check(error, stat, SEISPULSE_SUCCESS)
+        if (allocated(error)) return
+        call check(error, hea, a, rtol=1.0e-9_dp, atol=1.0e-12_dp, message='HEA = a')
+        if (allocated(error)) return
+        call newmark_rigid(a, 0.01_dp, newmark_block_t(ky=0.1_dp), NEWMARK_EXACT, g0, rr, stat)
+        call check(error, r%max_disp, rr%max_disp, rtol=1.0e-9_dp, message='stiff = rigid')
+        if (allocated(error)) return
+        call check(error, rr%max_disp > 0.5_dp, 'slides')
+        if (allocated(error)) return
+        ! two ways: the record times -1 gives the displacement times -1
+        mass = flexible_mass_t(height=30.0_dp, vs=250.0_dp, vs_base=600.0_dp, damping=0.05_dp)
+        call flexible_decoupled(a, 0.01_dp, 0.1_dp, mass, FLEX_EXACT, g0, r, stat, &
+                                mode=NEWMARK_BOTH, s_hist=s)
+        call flexible_decoupled(-a, 0.01_dp, 0.1_dp, mass, FLEX_EXACT, g0, ri, stat, &
+                                mode=NEWMARK_BOTH)
+        call check(error, ri%final_disp, -r%final_disp, rtol=1.0e-13_dp, message='two-way odd')
+        if (allocated(error)) return
+        ! the true extreme lies between samples: at least the largest sample, and close
+        call check(error, r%max_disp >= maxval(abs(s)), 'max |s| >= the samples')
+        if (allocated(error)) return
+        call check(error, r%max_disp, maxval(abs(s)), rtol=1.0e-4_dp, message='max |s|')
+        if (allocated(error)) return
+        ! near SLAMMER's arithmetic
+        do soil = SOIL_LINEAR, SOIL_EQUIVALENT_LINEAR
+            mass%soil = soil
+            do k_coupled = 0, 1
+                coupled = k_coupled == 1
+                if (coupled) then
+                    call flexible_coupled(a, 0.01_dp, 0.1_dp, mass, FLEX_EXACT, g0, r, stat)
+                    call flexible_coupled(a, 0.01_dp, 0.1_dp, mass, FLEX_SLAMMER, g0, rs, stat)
+                else
+                    call flexible_decoupled(a, 0.01_dp, 0.1_dp, mass, FLEX_EXACT, g0, r, stat)
+                    call flexible_decoupled(a, 0.01_dp, 0.1_dp, mass, FLEX_SLAMMER, g0, rs, stat)
+                end if
+                call check(error, stat, SEISPULSE_SUCCESS)
+                if (allocated(error)) return
+                call check(error, r%max_disp, rs%max_disp, rtol=1.0e-2_dp, message='disp')
+                if (allocated(error)) return
+                call check(error, r%kmax, rs%kmax, rtol=1.0e-2_dp, message='kmax')
+                if (allocated(error)) return
+                call check(error, r%vs_final, rs%vs_final, rtol=1.0e-2_dp, message='vs')
+                if (allocated(error)) return
+                call check(error, r%iterations == rs%iterations .and. r%converged, 'passes')
+                if (allocated(error)) return
+            end do
+        end do
+        ! the total damping must stay in (-1, 1) for the exact recurrence
+        mass%damping = 0.85_dp
+        call flexible_coupled(a, 0.01_dp, 0.1_dp, mass, FLEX_EXACT, g0, r, stat)
+        call check(error, stat, SEISPULSE_INVALID_INPUT, 'total damping >= 1')
+    end subroutine test_exact_dispatch
 
 end module test_flexible

@@ -31,11 +31,13 @@ module seispulse_flexible
     use seispulse_format, only: real_str
     use seispulse_pieces, only: record_step_check
     use seispulse_special, only: pi
-    use seispulse_newmark, only: NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM
+    use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, &
+                                 NEWMARK_DOWN, NEWMARK_ASYM, NEWMARK_EXACT
     use seispulse_flexible_model, only: flexible_mass_t, flexible_result_t, modal_peak_t, &
                                         flexible_mass_validate, ky_table_validate, eql_iterate, &
-                                        participation_modal, participation_total, &
-                                        FLEX_SLAMMER, FLEX_EXACT
+                                        radiation_damping, participation_modal, &
+                                        participation_total, FLEX_SLAMMER, FLEX_EXACT
+    use seispulse_flexible_exact, only: modal_response_exact, coupled_exact
     implicit none
     private
 
@@ -53,6 +55,18 @@ module seispulse_flexible
     contains
         procedure :: peak => slammer_peak
     end type slammer_peak_t
+
+    !> The exact modal response as the equivalent-linear iteration sees it: the record
+    !> (g, pointing to the caller's array during the analysis) and the work arrays of a pass.
+    type, extends(modal_peak_t) :: exact_peak_t
+        real(dp), pointer :: accel(:) => null()  !! record (g)
+        real(dp) :: dt = 0.0_dp                  !! time step (s)
+        real(dp) :: g = 0.0_dp                   !! gravity (m/s^2)
+        real(dp), allocatable :: u(:)            !! modal displacement of a pass (m)
+        real(dp), allocatable :: hea(:)          !! HEA of a pass (g)
+    contains
+        procedure :: peak => exact_peak
+    end type exact_peak_t
 
 contains
 
@@ -203,12 +217,22 @@ contains
         if (.not. same_size(sdot_hist, 'sdot_hist')) return
 
         if (method == FLEX_EXACT) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'method: the exact rule ' &
-                           //'is not available yet (use slammer)')
-            return
+            ! the exact recurrence needs |xi| < 1 (the largest xi is the first pass's)
+            if (.not. abs(mass%damping + radiation_damping(mass%vs, mass%vs_base)) < 1.0_dp) &
+                then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'damping = ' &
+                               //real_str(mass%damping)//': with the radiation damping ' &
+                               //real_str(radiation_damping(mass%vs, mass%vs_base)) &
+                               //' the total must be in (-1, 1) for the exact rule')
+                return
+            end if
+            call exact_run(coupled, accel, dt, tdisp, tky, mass, g, mode_, ky_up, &
+                           present(ky_disp), res, eql_stat, stat, errmsg, hea, u_modal, &
+                           s_hist, sdot_hist)
+        else
+            call slammer_run(coupled, accel, dt, tdisp, tky, mass, g, res, eql_stat, stat, &
+                             errmsg, hea, u_modal, s_hist, sdot_hist)
         end if
-        call slammer_run(coupled, accel, dt, tdisp, tky, mass, g, res, eql_stat, stat, &
-                         errmsg, hea, u_modal, s_hist, sdot_hist)
         if (stat /= SEISPULSE_SUCCESS) return
         if (.not. (ieee_is_finite(res%max_disp) .and. ieee_is_finite(res%kmax))) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'damping = ' &
@@ -231,6 +255,88 @@ contains
         end function same_size
 
     end subroutine flexible_run
+
+    ! ------------------------------------------------------------------------------
+    ! The exact rule (doc/flexible.md sections 5-7, module seispulse_flexible_exact)
+    ! ------------------------------------------------------------------------------
+
+    !> FLEX_EXACT: the equivalent-linear iteration on the exact modal response, then the
+    !> rigid block on the exact HEA (newmark_rigid, exact rule: mode, ky_up and the table
+    !> interpolated linearly) or the exact coupled analysis (coupled_exact).
+    subroutine exact_run(coupled, accel, dt, tdisp, tky, mass, g, mode, ky_up, table, res, &
+                         eql_stat, stat, errmsg, hea, u_modal, s_hist, sdot_hist)
+        logical, intent(in) :: coupled
+        real(dp), intent(in), target :: accel(:)
+        real(dp), intent(in) :: dt, tdisp(:), tky(:), g
+        type(flexible_mass_t), intent(in) :: mass
+        integer, intent(in) :: mode
+        real(dp), intent(in), optional :: ky_up
+        logical, intent(in) :: table
+        type(flexible_result_t), intent(inout) :: res
+        integer, intent(out) :: eql_stat, stat
+        character(len=*), intent(inout), optional :: errmsg
+        real(dp), intent(out), optional :: hea(:), u_modal(:), s_hist(:), sdot_hist(:)
+        type(exact_peak_t) :: resp
+        type(newmark_block_t) :: blk
+        type(newmark_result_t) :: rres
+        real(dp) :: omega, xi
+
+        resp%accel => accel
+        resp%dt = dt
+        resp%g = g
+        allocate(resp%u(size(accel)), resp%hea(size(accel)))
+        call eql_iterate(mass, resp, res%vs_final, res%damping_final, res%damping_radiation, &
+                         res%iterations, res%converged, eql_stat, errmsg)
+        nullify(resp%accel)
+        stat = eql_stat
+        if (eql_stat /= SEISPULSE_SUCCESS .and. eql_stat /= SEISPULSE_NO_CONVERGENCE) return
+        xi = res%damping_final
+        omega = pi * res%vs_final / (2.0_dp * mass%height)                    ! (F.2)
+        res%period = 4.0_dp * mass%height / res%vs_final
+
+        ! the final decoupled response: HEA and kmax (both analyses)
+        call modal_response_exact(accel, dt, g, omega, xi, resp%u, resp%hea, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        res%kmax = signed_peak(resp%hea)
+        if (present(hea)) hea(:) = resp%hea
+        if (.not. coupled) then
+            if (present(u_modal)) u_modal(:) = resp%u
+            blk%mode = mode
+            blk%ky = tky(1)
+            if (present(ky_up)) blk%ky_up = ky_up
+            if (table) then
+                allocate(blk%ky_disp, source=tdisp)
+                allocate(blk%ky_values, source=tky)
+            end if
+            call newmark_rigid(resp%hea, dt, blk, NEWMARK_EXACT, g, rres, stat, errmsg, &
+                               u_hist=s_hist, w_hist=sdot_hist)
+            if (stat /= SEISPULSE_SUCCESS) return
+            res%max_disp = rres%max_disp
+            res%final_disp = rres%final_disp
+            res%t_end = rres%t_end
+        else if (table) then
+            call coupled_exact(accel, dt, g, omega, xi, tky(1), res%max_disp, res%final_disp, &
+                               res%t_end, stat, errmsg, ky_disp=tdisp, ky_values=tky, &
+                               s_hist=s_hist, sdot_hist=sdot_hist, u_modal=u_modal)
+        else
+            call coupled_exact(accel, dt, g, omega, xi, tky(1), res%max_disp, res%final_disp, &
+                               res%t_end, stat, errmsg, s_hist=s_hist, sdot_hist=sdot_hist, &
+                               u_modal=u_modal)
+        end if
+    end subroutine exact_run
+
+    !> max |u| (m) at the samples of the exact modal response for (omega, xi): O(n).
+    subroutine exact_peak(self, omega, xi, u_peak, stat, errmsg)
+        class(exact_peak_t), intent(inout) :: self
+        real(dp), intent(in) :: omega, xi
+        real(dp), intent(out) :: u_peak
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        u_peak = 0.0_dp
+        call modal_response_exact(self%accel, self%dt, self%g, omega, xi, self%u, self%hea, &
+                                  stat, errmsg)
+        if (stat == SEISPULSE_SUCCESS) u_peak = maxval(abs(self%u))
+    end subroutine exact_peak
 
     ! ------------------------------------------------------------------------------
     ! SLAMMER 1.1's arithmetic (doc/flexible.md section 4)
