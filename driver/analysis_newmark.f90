@@ -720,7 +720,7 @@ contains
                                 fn%damping_final, fn%period, real(fn%iterations, dp), &
                                 merge(1.0_dp, 0.0_dp, fn%converged .and. fi%converged)]
                             if (unconverged) then
-                                write(error_unit, '(a)') 'seispulse: warning: '//where &
+                                write(error_unit, '(a)') 'warning: '//where &
                                     //list_item('files', ir)//' = '''//r%file//''', ' &
                                     //row_name(cfg, ib)//': '//trim(msg)
                                 flush(error_unit)
