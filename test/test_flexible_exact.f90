@@ -13,6 +13,8 @@ module test_flexible_exact
                                         first_zero
     use seispulse_pulses, only: exp_pulse
     use seispulse_sliding_closed, only: half_cycle_t, half_cycle
+    use seispulse_flexible_model, only: flexible_mass_t, flexible_result_t, FLEX_EXACT
+    use seispulse_flexible, only: flexible_decoupled, flexible_coupled
     use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, NEWMARK_EXACT, &
                                  NEWMARK_SLAMMER
     use testing, only: test_error, unit_test, new_unittest, check, same_bits
@@ -42,6 +44,8 @@ contains
                               test_coupled_reference), &
                  new_unittest('coupled = independent RK4: short soft mass, many slides', &
                               test_coupled_many_slides), &
+                 new_unittest('coupled: linear upsampling of the record changes nothing', &
+                              test_coupled_upsampling), &
                  new_unittest('coupled -> rigid exact as Vs grows', test_coupled_rigid_limit), &
                  new_unittest('decoupled (rigid exact on HEA) -> rigid exact as Vs grows', &
                               test_decoupled_rigid_limit), &
@@ -61,6 +65,10 @@ contains
                               test_coupled_table_flat), &
                  new_unittest('coupled ky table = independent RK4 with events', &
                               test_coupled_table_reference), &
+                 new_unittest('flexible_decoupled(exact) = rigid exact on the HEA (bitwise)', &
+                              test_dispatch_decoupled), &
+                 new_unittest('flexible_coupled(exact) = coupled_exact (bitwise)', &
+                              test_dispatch_coupled), &
                  new_unittest('bad input is a status naming the parameter', test_bad_input)]
     end subroutine collect_flexible_exact
 
@@ -84,6 +92,20 @@ contains
             a(i) = 1.5_dp * env * a(i)
         end do
     end function synthetic
+
+    !> The piecewise-linear record at t (s), 0 after the last sample.
+    pure real(dp) function record_at(accel, dt, t) result(a)
+        real(dp), intent(in) :: accel(:), dt, t
+        integer :: i
+        real(dp) :: r
+        i = int(t / dt) + 1
+        if (i >= size(accel)) then
+            a = 0.0_dp
+            return
+        end if
+        r = min(max(t / dt - real(i - 1, dp), 0.0_dp), 1.0_dp)
+        a = accel(i) + (accel(i + 1) - accel(i)) * r
+    end function record_at
 
     !> Independent integration of the coupled model: classical RK4 on m sub-steps per
     !> sample step, events (HEA = g ky, s' = 0) located by bisection on the sub-step
@@ -163,16 +185,7 @@ contains
 
         real(dp) function acc_at(tt)
             real(dp), intent(in) :: tt
-            integer :: ii
-            real(dp) :: r
-            ii = int(tt / dt) + 1
-            if (ii >= n) then
-                acc_at = 0.0_dp
-                return
-            end if
-            r = tt / dt - real(ii - 1, dp)
-            r = min(max(r, 0.0_dp), 1.0_dp)
-            acc_at = accel(ii) + (accel(ii + 1) - accel(ii)) * r
+            acc_at = record_at(accel, dt, tt)
         end function acc_at
 
         !> ky (g) at s (m): the constant, or the table interpolated.
@@ -572,15 +585,7 @@ contains
         end function kyu
         real(dp) function acc_at(tt)
             real(dp), intent(in) :: tt
-            integer :: ii
-            real(dp) :: r
-            ii = int(tt / dt) + 1
-            if (ii >= n) then
-                acc_at = 0.0_dp
-                return
-            end if
-            r = min(max(tt / dt - real(ii - 1, dp), 0.0_dp), 1.0_dp)
-            acc_at = accel(ii) + (accel(ii + 1) - accel(ii)) * r
+            acc_at = record_at(accel, dt, tt)
         end function acc_at
         function rhs(yy, tt) result(f)
             real(dp), intent(in) :: yy(2), tt
@@ -790,6 +795,126 @@ contains
             if (allocated(error)) return
         end do
     end subroutine test_pulse_closed_form
+
+    !> The exact coupled solution depends only on the piecewise-linear record: sampling it
+    !> 8 times finer (linear interpolation) gives the same slip (dt = 0.02 s, H = 5 m,
+    !> Vs = 600 m/s: the sliding oscillator's period, 15 ms, is shorter than a step).
+    subroutine test_coupled_upsampling(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 600, m = 8
+        real(dp), parameter :: dt = 0.02_dp
+        real(dp) :: a(n), b((n - 1) * m + 1), sh(n), sb((n - 1) * m + 1), smax, s1, s2, tend, om
+        integer :: i, j
+        a = synthetic(n, dt, 7)
+        do i = 1, n - 1
+            do j = 0, m - 1
+                b((i - 1) * m + j + 1) = a(i) + (a(i + 1) - a(i)) * (real(j, dp) / m)
+            end do
+        end do
+        b(size(b)) = a(n)
+        om = pi * 600.0_dp / 10.0_dp
+        call run_coupled(error, a, dt, om, 0.25_dp, 0.1_dp, smax, s1, tend, 'samples', s_hist=sh)
+        if (allocated(error)) return
+        call run_coupled(error, b, dt / m, om, 0.25_dp, 0.1_dp, smax, s2, tend, 'upsampled', &
+                         s_hist=sb)
+        if (allocated(error)) return
+        call check(error, s1 > 0.01_dp, 'slides')
+        if (allocated(error)) return
+        call check(error, s2, s1, rtol=1.0e-12_dp, message='final s')
+        if (allocated(error)) return
+        call check(error, sb(1::m), sh, atol=1.0e-12_dp * s1, message='s at the samples')
+    end subroutine test_coupled_upsampling
+
+    !> The dispatch of seispulse_flexible (linear soil): the decoupled slip is the rigid
+    !> exact rule on the HEA of modal_response_exact for the final omega, xi (F.36), bit for
+    !> bit, with a constant yield, two ways and a yield table.
+    subroutine test_dispatch_decoupled(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 1600
+        real(dp), parameter :: dt = 0.005_dp
+        real(dp) :: a(n), u(n), hea(n), s1(n), s2(n), om
+        type(flexible_mass_t) :: m
+        type(flexible_result_t) :: r
+        type(newmark_block_t) :: blk
+        type(newmark_result_t) :: rr
+        integer :: stat, k
+        character(len=200) :: msg
+        a = synthetic(n, dt, 8)
+        m%height = 20.0_dp
+        m%vs = 300.0_dp
+        m%vs_base = 900.0_dp
+        m%damping = 0.05_dp
+        do k = 1, 3
+            msg = ''
+            select case (k)
+            case (1)
+                call flexible_decoupled(a, dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, s_hist=s1)
+                blk = newmark_block_t()
+                blk%ky = 0.1_dp
+            case (2)
+                call flexible_decoupled(a, dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, &
+                                        mode=2, s_hist=s1)
+                blk = newmark_block_t(mode=2, ky=0.1_dp)
+            case default
+                call flexible_decoupled(a, dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, &
+                                        ky_disp=[0.0_dp, 0.02_dp], ky_values=[0.12_dp, 0.07_dp], &
+                                        s_hist=s1)
+                blk = newmark_block_t()
+                allocate(blk%ky_disp, source=[0.0_dp, 0.02_dp])
+                allocate(blk%ky_values, source=[0.12_dp, 0.07_dp])
+            end select
+            call check(error, stat, SEISPULSE_SUCCESS, 'decoupled: '//trim(msg))
+            if (allocated(error)) return
+            om = pi * r%vs_final / (2.0_dp * m%height)
+            call modal_response_exact(a, dt, g0, om, r%damping_final, u, hea, stat)
+            call newmark_rigid(hea, dt, blk, NEWMARK_EXACT, g0, rr, stat, u_hist=s2)
+            call check(error, r%max_disp > 0.01_dp .and. identical(s1, s2) &
+                       .and. same_bits(r%final_disp, rr%final_disp), 'bitwise')
+            if (allocated(error)) return
+        end do
+    end subroutine test_dispatch_decoupled
+
+    !> The dispatch of seispulse_flexible: flexible_coupled(FLEX_EXACT) is coupled_exact for
+    !> the final omega, xi, bit for bit (constant yield and table).
+    subroutine test_dispatch_coupled(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 1600
+        real(dp), parameter :: dt = 0.005_dp
+        real(dp) :: a(n), s1(n), s2(n), om, smax, sfin, tend
+        type(flexible_mass_t) :: m
+        type(flexible_result_t) :: r
+        integer :: stat, k
+        character(len=200) :: msg
+        a = synthetic(n, dt, 8)
+        m%height = 20.0_dp
+        m%vs = 300.0_dp
+        m%vs_base = 900.0_dp
+        m%damping = 0.05_dp
+        do k = 1, 2
+            msg = ''
+            if (k == 1) then
+                call flexible_coupled(a, dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, s_hist=s1)
+            else
+                call flexible_coupled(a, dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, &
+                                      ky_disp=[0.0_dp, 0.02_dp], ky_values=[0.12_dp, 0.07_dp], &
+                                      s_hist=s1)
+            end if
+            call check(error, stat, SEISPULSE_SUCCESS, 'coupled: '//trim(msg))
+            if (allocated(error)) return
+            om = pi * r%vs_final / (2.0_dp * m%height)
+            if (k == 1) then
+                call coupled_exact(a, dt, g0, om, r%damping_final, 0.1_dp, smax, sfin, tend, stat, &
+                                   s_hist=s2)
+            else
+                call coupled_exact(a, dt, g0, om, r%damping_final, 0.1_dp, smax, sfin, tend, stat, &
+                                   ky_disp=[0.0_dp, 0.02_dp], ky_values=[0.12_dp, 0.07_dp], &
+                                   s_hist=s2)
+            end if
+            call check(error, r%max_disp > 0.01_dp .and. identical(s1, s2) &
+                       .and. same_bits(r%final_disp, sfin), 'bitwise')
+            if (allocated(error)) return
+        end do
+    end subroutine test_dispatch_coupled
 
     subroutine dip_taylor(self, x, f)
         class(dip_t), intent(inout) :: self

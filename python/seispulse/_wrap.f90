@@ -347,64 +347,19 @@ end subroutine sp_overturning_map
 ! ---------------------------------------------------------------------------------
 
 !> One analysis with histories and sliding intervals. nh = n for histories, else 1; the
-!> nslides intervals are kept for sp_fetch_slides.
+!> nslides intervals are kept for sp_fetch_slides. table /= 0: the yield table ky_disp (m),
+!> ky_values (g) instead of ky (mode down); else they are ignored (one dummy row).
 subroutine sp_newmark_rigid(n, accel, dt, mode, ky, ky_up, k_down, k_up, method, g, nh, &
-                            u_hist, w_hist, nslides, max_disp, final_disp, u_max, u_min, &
-                            max_vel, t_end, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_errors, only: SEISPULSE_SUCCESS
-    use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid
-    use sp_runs_held, only: held_slides
-    implicit none
-    !f2py intent(hide) :: n
-    integer, intent(in) :: n, mode, method, nh
-    real(dp), intent(in) :: accel(n), dt, ky, ky_up, k_down, k_up, g
-    real(dp), intent(out) :: u_hist(nh), w_hist(nh)
-    real(dp), intent(out) :: max_disp, final_disp, u_max, u_min, max_vel, t_end
-    integer, intent(out) :: nslides, stat
-    character(len=256), intent(out) :: errmsg
-    type(newmark_result_t) :: res
-    errmsg = ''
-    if (allocated(held_slides)) deallocate(held_slides)
-    u_hist = 0.0_dp
-    w_hist = 0.0_dp
-    max_disp = 0.0_dp
-    final_disp = 0.0_dp
-    u_max = 0.0_dp
-    u_min = 0.0_dp
-    max_vel = 0.0_dp
-    t_end = 0.0_dp
-    nslides = 0
-    if (nh == n) then
-        call newmark_rigid(accel, dt, newmark_block_t(mode, ky, ky_up, k_down, k_up), method, g, &
-                           res, stat, errmsg, u_hist, w_hist)
-    else
-        call newmark_rigid(accel, dt, newmark_block_t(mode, ky, ky_up, k_down, k_up), method, g, &
-                           res, stat, errmsg)
-    end if
-    if (stat /= SEISPULSE_SUCCESS) return
-    max_disp = res%max_disp
-    final_disp = res%final_disp
-    u_max = res%u_max
-    u_min = res%u_min
-    max_vel = res%max_vel
-    t_end = res%t_end
-    nslides = size(res%slides)
-    call move_alloc(res%slides, held_slides)
-end subroutine sp_newmark_rigid
-
-!> sp_newmark_rigid with a yield table (mode down): ky(u) from ky_disp (m), ky_values (g).
-subroutine sp_newmark_rigid_table(n, accel, dt, nt, ky_disp, ky_values, method, g, nh, &
-                                  u_hist, w_hist, nslides, max_disp, final_disp, u_max, &
-                                  u_min, max_vel, t_end, stat, errmsg)
+                            table, nt, ky_disp, ky_values, u_hist, w_hist, nslides, max_disp, &
+                            final_disp, u_max, u_min, max_vel, t_end, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid
     use sp_runs_held, only: held_slides
     implicit none
     !f2py intent(hide) :: n, nt
-    integer, intent(in) :: n, nt, method, nh
-    real(dp), intent(in) :: accel(n), dt, ky_disp(nt), ky_values(nt), g
+    integer, intent(in) :: n, mode, method, nh, table, nt
+    real(dp), intent(in) :: accel(n), dt, ky, ky_up, k_down, k_up, g, ky_disp(nt), ky_values(nt)
     real(dp), intent(out) :: u_hist(nh), w_hist(nh)
     real(dp), intent(out) :: max_disp, final_disp, u_max, u_min, max_vel, t_end
     integer, intent(out) :: nslides, stat
@@ -422,8 +377,11 @@ subroutine sp_newmark_rigid_table(n, accel, dt, nt, ky_disp, ky_values, method, 
     max_vel = 0.0_dp
     t_end = 0.0_dp
     nslides = 0
-    allocate(blk%ky_disp, source=ky_disp)
-    allocate(blk%ky_values, source=ky_values)
+    blk = newmark_block_t(mode, ky, ky_up, k_down, k_up)
+    if (table /= 0) then
+        allocate(blk%ky_disp, source=ky_disp)
+        allocate(blk%ky_values, source=ky_values)
+    end if
     if (nh == n) then
         call newmark_rigid(accel, dt, blk, method, g, res, stat, errmsg, u_hist, w_hist)
     else
@@ -438,7 +396,8 @@ subroutine sp_newmark_rigid_table(n, accel, dt, nt, ky_disp, ky_values, method, 
     t_end = res%t_end
     nslides = size(res%slides)
     call move_alloc(res%slides, held_slides)
-end subroutine sp_newmark_rigid_table
+end subroutine sp_newmark_rigid
+
 
 ! Hand-written (not in _wrap_loops.txt): each block runs the whole record accel(n).
 !> Summaries for many blocks on one record (ky, ky_up, k_down, k_up of length nk).

@@ -30,7 +30,7 @@ import numpy as np
 from . import _core
 from . import _fortran_codes as _f
 from ._seispulse import (sp_fetch_slides, sp_flexible, sp_newmark_incline, sp_newmark_rigid,
-                         sp_newmark_rigid_many, sp_newmark_rigid_table)
+                         sp_newmark_rigid_many)
 from .errors import ConvergenceError, InvalidInputError
 from .sliding import Slide
 
@@ -141,9 +141,10 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
     g = _core.check_positive("g", g, " (m/s^2)")
     history = _core.check_bool("history", history)
     intervals = _core.check_bool("intervals", intervals)
+    table_disp = table_ky = np.zeros(1)   # a dummy row unless ky_table is given
     if ky_table is not None:
-        return _rigid_table(rec, step, ky, mode, ky_up, method, g, k_down, k_up, incline,
-                            history, intervals, ky_table)
+        table_disp, table_ky = _table(ky_table, ky, mode, ky_up, k_down, k_up, incline)
+        ky = 1.0   # ignored: the table gives the yield
     if incline is not None:
         if not isinstance(incline, Incline):
             raise InvalidInputError("incline: must be the result of seispulse.newmark.incline()")
@@ -178,9 +179,11 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
     nh = rec.size if history else 1
     with _core.HELD_LOCK:
         (u, w, nslides, max_disp, final_disp, u_max, u_min, max_vel, t_end, stat,
-         msg) = sp_newmark_rigid(rec, step, mode_code, *scalars, method_code, g, nh)
+         msg) = sp_newmark_rigid(rec, step, mode_code, *scalars, method_code, g, nh,
+                                 int(ky_table is not None), table_disp, table_ky)
         fields = sp_fetch_slides(nslides if stat == 0 and intervals else 0)
-    _core.raise_for_status(stat, msg, indexed=("accel",))
+    _core.raise_for_status(stat, msg, indexed={"accel": "accel", "ky_disp": "ky_table[0]",
+                                               "ky_values": "ky_table[1]"})
     out = _core.slides(Slide, fields) if intervals else None
     time = disp = vel = None
     if history:
@@ -190,9 +193,9 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
                  float(t_end), time, disp, vel, out)
 
 
-def _rigid_table(rec, step, ky, mode, ky_up, method, g, k_down, k_up, incline, history,
-                 intervals, ky_table):
-    """:func:`rigid` with ky_table (checked arguments: rec, step, mode, method, g, flags)."""
+
+def _table(ky_table, ky, mode, ky_up, k_down, k_up, incline):
+    """The checked ky_table of :func:`rigid` as two float arrays (disp m, ky g)."""
     if ky is not None or ky_up is not None or incline is not None or k_down != 1.0 \
             or k_up != 1.0:
         raise InvalidInputError("ky_table: give either ky_table or ky (and no ky_up, k_down, "
@@ -210,20 +213,9 @@ def _rigid_table(rec, step, ky, mode, ky_up, method, g, k_down, k_up, incline, h
         raise InvalidInputError("ky_table: must be a pair (disp_m, ky_g) of 1-d arrays")
     if disp.size != kyv.size:
         raise InvalidInputError(f"ky_table: {disp.size} displacements but {kyv.size} yields")
-    nh = rec.size if history else 1
-    with _core.HELD_LOCK:
-        (u, w, nslides, max_disp, final_disp, u_max, u_min, max_vel, t_end, stat,
-         msg) = sp_newmark_rigid_table(rec, step, disp, kyv, _METHOD_CODES[method], g, nh)
-        fields = sp_fetch_slides(nslides if stat == 0 and intervals else 0)
-    _core.raise_for_status(stat, msg, indexed={"accel": "accel", "ky_disp": "ky_table[0]",
-                                                 "ky_values": "ky_table[1]"})
-    out = _core.slides(Slide, fields) if intervals else None
-    time = disp_h = vel = None
-    if history:
-        time = np.arange(rec.size) * step
-        disp_h, vel = u, w
-    return Rigid(float(max_disp), float(final_disp), float(u_max), float(u_min), float(max_vel),
-                 float(t_end), time, disp_h, vel, out)
+    if disp.size == 0:
+        raise InvalidInputError("ky_table: the table needs at least one row")
+    return disp, kyv
 
 
 Flexible = namedtuple("Flexible", ["max_disp", "final_disp", "kmax", "vs_final", "damping_final",
@@ -243,7 +235,6 @@ With ``history=True``: time (s), hea (g; for coupled, that of the decoupled resp
 one kmax comes from), u_modal (m, the modal displacement), disp s (m) and vel s' (m/s) at
 the samples, else None. ky and ky_up: the yields given (g; with a table, ky is the array of
 its yields; ky_up None unless mode='asym'), for :func:`plot_flexible`."""
-
 
 def _flexible(analysis, accel, dt, ky, height, vs, vs_base, damping, soil, ref_strain_pct,
               method, g, mode, ky_up, ky_table, max_iter, history, allow_unconverged):

@@ -10,7 +10,7 @@ module seispulse_checks
     private
 
     public :: outside, finite_positive, finite_at_least, positive, in_open, in_closed, &
-              check_finite_times, check_ascending_times, check_output_grid
+              check_finite_times, check_ascending_times, check_output_grid, check_history_sizes
 
 contains
 
@@ -146,5 +146,30 @@ contains
             call check_ascending_times(t_grid, 't_grid', stat, errmsg)
         end if
     end subroutine check_output_grid
+
+    !> Optional histories at the samples of a record of n samples: each one present has n
+    !> elements, else a message naming it ('<name>: must have the size of accel').
+    subroutine check_history_sizes(n, names, stat, errmsg, h1, h2, h3, h4)
+        integer, intent(in) :: n                              !! samples of the record
+        character(len=*), intent(in) :: names(4)              !! names of h1..h4 in messages
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp), intent(in), optional :: h1(:), h2(:), h3(:), h4(:)  !! the histories
+        logical :: bad(4)
+        integer :: k
+        stat = SEISPULSE_SUCCESS
+        bad = .false.
+        if (present(h1)) bad(1) = size(h1) /= n
+        if (present(h2)) bad(2) = size(h2) /= n
+        if (present(h3)) bad(3) = size(h3) /= n
+        if (present(h4)) bad(4) = size(h4) /= n
+        do k = 1, 4
+            if (bad(k)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, trim(names(k)) &
+                               //': must have the size of accel')
+                return
+            end if
+        end do
+    end subroutine check_history_sizes
 
 end module seispulse_checks

@@ -6,7 +6,7 @@ module seispulse_format
     implicit none
     private
 
-    public :: real_str, int_str, num_str, quote, upper
+    public :: real_str, int_str, num_str, quote, upper, name_of, code_of
 
     !> longest quoted text in a message, in bytes (longer text is cut, with '...')
     integer, parameter :: QUOTE_MAX = 40
@@ -113,5 +113,28 @@ contains
             end if
         end do
     end function upper
+
+    !> The name of a code in a table of names: table(code), '?' outside the table.
+    pure function name_of(code, table) result(name)
+        integer, intent(in) :: code                !! 1-based index
+        character(len=*), intent(in) :: table(:)   !! the names
+        character(len=:), allocatable :: name
+        if (code >= 1 .and. code <= size(table)) then
+            name = trim(table(code))
+        else
+            name = '?'
+        end if
+    end function name_of
+
+    !> The code of a name in a table of names: its index, 0 if absent.
+    pure integer function code_of(name, table)
+        character(len=*), intent(in) :: name       !! the name (trailing blanks ignored)
+        character(len=*), intent(in) :: table(:)   !! the names
+        integer :: k
+        code_of = 0
+        do k = 1, size(table)
+            if (trim(table(k)) == trim(name)) code_of = k
+        end do
+    end function code_of
 
 end module seispulse_format

@@ -134,10 +134,12 @@ contains
     ! ------------------------------------------------------------------------------
 
     !> Coefficients of one exact step of length h (s) for period T > 0 (s) and damping
-    !> 0 <= zeta < 1, for a_g in m/s^2 (multiply b, c by g for a_g in g). Unchecked.
+    !> 0 <= zeta < 1, for a_g in m/s^2 (multiply b, c by g for a_g in g). Unchecked. The
+    !> same formulas hold for negative damping -1 < zeta < 0 (a growing response;
+    !> seispulse_flexible_exact uses them for the total damping of a sliding mass).
     pure function sdof_step(period, zeta, h) result(st)
         real(dp), intent(in) :: period  !! natural period (s), > 0
-        real(dp), intent(in) :: zeta    !! damping ratio, in [0, 1)
+        real(dp), intent(in) :: zeta    !! damping ratio, in (-1, 1)
         real(dp), intent(in) :: h       !! step (s), > 0
         type(sdof_step_t) :: st
         st%omega = 2.0_dp * pi / period

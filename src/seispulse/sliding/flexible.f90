@@ -25,7 +25,7 @@
 module seispulse_flexible
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use seispulse_kinds, only: dp
-    use seispulse_checks, only: positive
+    use seispulse_checks, only: positive, check_history_sizes
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
                                 SEISPULSE_NO_CONVERGENCE, set_error
     use seispulse_format, only: real_str
@@ -211,10 +211,9 @@ contains
             tdisp(1) = 0.0_dp
             tky(1) = ky
         end if
-        if (.not. same_size(hea, 'hea')) return
-        if (.not. same_size(u_modal, 'u_modal')) return
-        if (.not. same_size(s_hist, 's_hist')) return
-        if (.not. same_size(sdot_hist, 'sdot_hist')) return
+        call check_history_sizes(size(accel), [character(len=9) :: 'hea', 'u_modal', 's_hist', &
+                                 'sdot_hist'], stat, errmsg, hea, u_modal, s_hist, sdot_hist)
+        if (stat /= SEISPULSE_SUCCESS) return
 
         if (method == FLEX_EXACT) then
             ! the exact recurrence needs |xi| < 1 (the largest xi is the first pass's)
@@ -241,19 +240,6 @@ contains
             return
         end if
         stat = eql_stat   ! SEISPULSE_NO_CONVERGENCE: errmsg already says so
-    contains
-
-        !> An optional history has the size of accel (else an error naming it).
-        logical function same_size(hist, name)
-            real(dp), intent(in), optional :: hist(:)
-            character(len=*), intent(in) :: name
-            same_size = .true.
-            if (.not. present(hist)) return
-            same_size = size(hist) == size(accel)
-            if (.not. same_size) call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, name &
-                                                //': must have the size of accel')
-        end function same_size
-
     end subroutine flexible_run
 
     ! ------------------------------------------------------------------------------

@@ -1,4 +1,4 @@
-!> Flexible sliding masses integrated exactly (doc/flexible.md sections 5-7, Eqs. F.30-F.59):
+!> Flexible sliding masses integrated exactly (doc/flexible.md sections 5-7, Eqs. F.30-F.50):
 !> the one-mode shear beam's response to the piecewise-linear record by the exact
 !> recurrence, and the coupled stick-slip model of Rathje & Bray [RB99] (after Chopra &
 !> Zhang [CZ91]) with its phases integrated in closed form and its onsets and stops
@@ -8,7 +8,7 @@
 !> polarity as given: positive a drives downslope sliding). u is the modal coordinate of
 !> the decoupled response (omega = pi Vs/(2H), L/M = 4/pi, L/Mtot = 2/pi, d1 = 1 - 8/pi^2):
 !>     stick:  u'' + 2 xi omega u' + omega^2 u = -(4/pi) g a(t)                   (F.30)
-!>     HEA  =  g a + (2/pi) u''   (the base force per unit mass)                  (F.31)
+!>     g HEA = g a + (2/pi) u''   (the base force per unit mass)                 (F.31)
 !>     slide:  d1 u'' + 2 xi omega u' + omega^2 u = -(4/pi) g ky,                 (F.32)
 !>             s'' = g a - g ky + (2/pi) u''  (= (HEA_stick form - g ky)/d1)      (F.33)
 !> Sliding starts when HEA exceeds g ky and stops when s' returns to 0 (one way).
@@ -99,7 +99,7 @@ module seispulse_flexible_exact
         procedure :: taylor => phase_taylor
     end type phase_t
 
-    !> The slide with ky(s) linear on a table segment (F.50): y = (u, u', s, s'),
+    !> The slide with ky(s) linear on a table segment (F.49): y = (u, u', s, s'),
     !> time from the start of the piece; ky continued linearly past the segment's end.
     type, extends(ode_system) :: table_slide_sys_t
         real(dp) :: c = 0.0_dp, w2 = 0.0_dp     !! stick damping (1/s) and stiffness (1/s^2)
@@ -237,7 +237,8 @@ contains
     !> Coupled stick-slip of the flexible mass (F.30)-(F.33), exact: downslope sliding s
     !> (m, >= 0) under the record as given. After the last sample the record is 0 and a
     !> mass still sliding runs out to rest (final_disp includes it, t_end says when).
-    !> Histories at the samples: s (m), s' (m/s), u (m, the sign of (F.30)) and HEA (g).
+    !> Histories at the samples: s (m), s' (m/s), u (m, the sign of (F.30)) and
+    !> hea = a + (2/pi) u''/g (g) with u'' of the phase the mass is in ((F.30) or (F.32)).
     !> ky = +inf: never slides. With ky_disp, ky_values (m, g): ky(s) interpolated
     !> linearly, constant beyond the last row; then ky is ignored.
     subroutine coupled_exact(accel, dt, g, omega, xi, ky, max_disp, final_disp, t_end, stat, &
@@ -565,7 +566,7 @@ contains
             end do
         end subroutine set_segment
 
-        !> Slide with the table over hp (a from aa to ae) by DOP853 (F.50)-(F.52): on each
+        !> Slide with the table over hp (a from aa to ae) by DOP853 (F.49)-(F.49): on each
         !> accepted step the stop is the first zero of the dense output's polynomial of s'
         !> (first_zero, a proven bracket on that polynomial), a segment end the crossing of
         !> its polynomial of s (increasing until the stop: one crossing, Brent); the
@@ -726,7 +727,7 @@ contains
         v = ph%v0 + dv
         d2 = p%p2(1, 1) * x2(1) + p%p2(1, 2) * x2(2)
         if (ph%slide) then
-            ! (F.33) integrated: s' and s from the record and the modal increments
+            ! (F.41): s' and s from the record and the modal increments
             sd = ph%sd0 + tau * (ph%ga0 - ph%gky + 0.5_dp * ph%gas * tau) + lmt * dv
             s = ph%s0 + tau * (ph%sd0 + tau * (0.5_dp * (ph%ga0 - ph%gky) &
                 + ph%gas * tau / 6.0_dp)) + lmt * d2
@@ -771,7 +772,7 @@ contains
         call phase_f(self, x, u, v, sd, f)
     end subroutine phase_taylor
 
-    !> The slide with a linear ky(s) (F.50): d1 u'' + c u' + w2 u = -(4/pi) g ky(s),
+    !> The slide with a linear ky(s) (F.49): d1 u'' + c u' + w2 u = -(4/pi) g ky(s),
     !> s'' = g a - g ky(s) + (2/pi) u''.
     subroutine table_slide_rhs(self, t, y, dydt)
         class(table_slide_sys_t), intent(inout) :: self

@@ -16,7 +16,7 @@ module seispulse_flexible_model
     use seispulse_checks, only: finite_positive, outside
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
                                 SEISPULSE_NO_CONVERGENCE, set_error
-    use seispulse_format, only: real_str, int_str
+    use seispulse_format, only: real_str, int_str, name_of, code_of
     use seispulse_special, only: log1p, pi
     implicit none
     private
@@ -284,21 +284,13 @@ contains
     pure function flexible_soil_name(code) result(name)
         integer, intent(in) :: code  !! SOIL_LINEAR or SOIL_EQUIVALENT_LINEAR
         character(len=:), allocatable :: name
-        if (code >= 1 .and. code <= size(soil_names)) then
-            name = trim(soil_names(code))
-        else
-            name = '?'
-        end if
+        name = name_of(code, soil_names)
     end function flexible_soil_name
 
     !> Code of a soil name (0 if unknown).
     pure integer function flexible_soil_code(name)
         character(len=*), intent(in) :: name  !! 'linear' or 'equivalent_linear'
-        integer :: k
-        flexible_soil_code = 0
-        do k = 1, size(soil_names)
-            if (trim(soil_names(k)) == trim(name)) flexible_soil_code = k
-        end do
+        flexible_soil_code = code_of(name, soil_names)
     end function flexible_soil_code
 
 end module seispulse_flexible_model

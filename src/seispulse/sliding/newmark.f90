@@ -33,7 +33,7 @@ module seispulse_newmark
     use seispulse_checks, only: positive
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
                                 set_error
-    use seispulse_format, only: real_str
+    use seispulse_format, only: real_str, name_of, code_of
     use seispulse_sliding_sim, only: slide_t
     use seispulse_pieces, only: record_step_check
     use seispulse_sliding_closed, only: inclined_resistances
@@ -288,29 +288,6 @@ contains
         newmark_method_code = code_of(name, method_names)
     end function newmark_method_code
 
-    !> table(code), '?' outside the table.
-    pure function name_of(code, table) result(name)
-        integer, intent(in) :: code
-        character(len=*), intent(in) :: table(:)
-        character(len=:), allocatable :: name
-        if (code >= 1 .and. code <= size(table)) then
-            name = trim(table(code))
-        else
-            name = '?'
-        end if
-    end function name_of
-
-    !> Index of name in table, 0 if absent.
-    pure integer function code_of(name, table)
-        character(len=*), intent(in) :: name
-        character(len=*), intent(in) :: table(:)
-        integer :: k
-        code_of = 0
-        do k = 1, size(table)
-            if (trim(table(k)) == trim(name)) code_of = k
-        end do
-    end function code_of
-
     ! ------------------------------------------------------------------------------
     ! Exact piecewise-linear integration
     ! ------------------------------------------------------------------------------
@@ -466,15 +443,7 @@ contains
         res%u_max = g * res%u_max
         res%u_min = g * res%u_min
         res%max_disp = max(res%u_max, -res%u_min)
-        deallocate(res%slides)
-        allocate(res%slides(nsl))
-        do i = 1, nsl
-            res%slides(i) = buf(i)
-            res%slides(i)%u_start = g * buf(i)%u_start
-            res%slides(i)%u_stop = g * buf(i)%u_stop
-            res%slides(i)%w_peak = g * buf(i)%w_peak
-            res%max_vel = max(res%max_vel, res%slides(i)%w_peak)
-        end do
+        call slides_to_si(buf, nsl, g, res)
 
     contains
 
@@ -665,15 +634,7 @@ contains
         res%u_max = g * u
         res%u_min = 0.0_dp
         res%max_disp = res%u_max
-        deallocate(res%slides)
-        allocate(res%slides(k))
-        do i = 1, k
-            res%slides(i) = buf(i)
-            res%slides(i)%u_start = g * buf(i)%u_start
-            res%slides(i)%u_stop = g * buf(i)%u_stop
-            res%slides(i)%w_peak = g * buf(i)%w_peak
-            res%max_vel = max(res%max_vel, res%slides(i)%w_peak)
-        end do
+        call slides_to_si(buf, k, g, res)
 
     contains
 
@@ -1017,6 +978,25 @@ contains
     ! ------------------------------------------------------------------------------
     ! Small helpers
     ! ------------------------------------------------------------------------------
+
+    !> res%slides = buf(1:nsl) with u_start, u_stop, w_peak times g (g s^2 -> m, g s -> m/s)
+    !> and max_vel their largest w_peak.
+    pure subroutine slides_to_si(buf, nsl, g, res)
+        type(slide_t), intent(in) :: buf(:)
+        integer, intent(in) :: nsl
+        real(dp), intent(in) :: g
+        type(newmark_result_t), intent(inout) :: res
+        integer :: i
+        deallocate(res%slides)
+        allocate(res%slides(nsl))
+        do i = 1, nsl
+            res%slides(i) = buf(i)
+            res%slides(i)%u_start = g * buf(i)%u_start
+            res%slides(i)%u_stop = g * buf(i)%u_stop
+            res%slides(i)%w_peak = g * buf(i)%w_peak
+            res%max_vel = max(res%max_vel, res%slides(i)%w_peak)
+        end do
+    end subroutine slides_to_si
 
     !> Append a slide to buf(1:nsl), doubling buf when it is full.
     pure subroutine append_slide(buf, nsl, slide)
