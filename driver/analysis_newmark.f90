@@ -1,10 +1,15 @@
-!> Analysis 'newmark': rigid-block (Newmark) sliding on accelerogram files, one row per
+!> Analysis 'newmark': rigid-block (Newmark) sliding, or a flexible sliding mass
+!> (decoupled or coupled, doc/flexible.md section 9), on accelerogram files, one row per
 !> record and yield acceleration, for the record as read ("normal") and turned over
 !> ("inverse", the record times -1).
 !>
 !> Groups: &records (driver_records, shared with analysis 'sdof': the files and how to
-!> read and scale each one) and &newmark (the yield accelerations ky, or friction values
-!> mu on one incline, the mode and the integration rule). Table <output>_newmark.
+!> read and scale each one), &newmark (the method, the yield accelerations ky, a yield
+!> table, or friction values mu on one incline, the mode and the integration rule) and,
+!> for the flexible methods, &slope (driver_slope: the sliding mass). Table
+!> <output>_newmark. A flexible case whose equivalent-linear iteration does not
+!> converge keeps the results of its last iteration with converged = 0: a warning on
+!> stderr and in the header, not a failure.
 !> Everything is checked before any record is read. A record that cannot be read or
 !> scaled fails its rows (NaN results, status 1; the message goes to stderr and into the
 !> table's header) and the other records are still computed; run_newmark then returns
@@ -12,17 +17,21 @@
 !> numbers come from seispulse_records (reading, PGA scaling) and seispulse_newmark (the
 !> sliding block); the driver only reads, checks, converts units and writes.
 module driver_newmark
-    use, intrinsic :: iso_fortran_env, only: output_unit
+    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
     use seispulse, only: dp, SEISPULSE_SUCCESS, int_str, newmark_block_t, newmark_result_t, &
                          newmark_rigid, newmark_incline, newmark_block_validate, &
                          newmark_mode_code, newmark_method_code, newmark_mode_name, &
                          newmark_method_name, NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM, positive, &
-                         finite_positive
+                         finite_positive, NEWMARK_EXACT, SEISPULSE_NO_CONVERGENCE, &
+                         flexible_mass_t, flexible_result_t, flexible_decoupled, flexible_coupled, &
+                         ky_table_validate
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, &
-                            list_length, list_item, value_name, num, ROWS_FAILED
+                            list_length, list_item, value_name, num, name_index, ROWS_FAILED
     use driver_tables, only: write_tables, say_written
+    use driver_slope, only: slope_keys, slope_defaults, read_slope, check_slope, echo_slope, &
+                            slope_line
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
                               path_len, records_missing, record_line, failed_records
@@ -35,14 +44,19 @@ module driver_newmark
     public :: run_newmark, newmark_groups
 
     !> Groups this analysis reads (besides &run).
-    character(len=8), parameter :: newmark_groups(2) = [character(len=8) :: 'records', &
-        'newmark']
+    character(len=8), parameter :: newmark_groups(3) = [character(len=8) :: 'records', &
+        'newmark', 'slope']
 
-    character(len=12), parameter :: newmark_keys(13) = [character(len=12) :: 'ky', 'mode', &
+    character(len=12), parameter :: newmark_keys(16) = [character(len=12) :: 'ky', 'mode', &
         'ky_up', 'k_down', 'k_up', 'mu', 'slope_deg', 'xi_deg', 'along_plane', 'method', 'g', &
-        'intensity', 'sa_periods']
+        'intensity', 'sa_periods', 'rule', 'ky_disp', 'ky_table']
     character(len=4), parameter :: mode_names(3) = [character(len=4) :: 'down', 'both', 'asym']
     character(len=7), parameter :: method_names(2) = [character(len=7) :: 'exact', 'slammer']
+    !> The analyses of `method` (KIND_* in this order); 'exact', 'slammer': the old form of
+    !> method = 'rigid' with that rule.
+    character(len=9), parameter :: kind_names(3) = [character(len=9) :: 'rigid', &
+        'decoupled', 'coupled']
+    integer, parameter :: KIND_RIGID = 1, KIND_DECOUPLED = 2, KIND_COUPLED = 3
 
     !> Most ky (or mu) values.
     integer, parameter :: max_ky = 1000
@@ -54,8 +68,10 @@ module driver_newmark
     ! the intensity table (driver_intensity_table): on/off and the Sa periods (s)
     logical :: intensity
     real(dp) :: sa_periods(max_ky)
+    character(len=32) :: rule
+    real(dp) :: ky_disp(max_ky), ky_table(max_ky)
     namelist /newmark/ ky, mode, ky_up, k_down, k_up, mu, slope_deg, xi_deg, along_plane, &
-        method, g, intensity, sa_periods
+        method, g, intensity, sa_periods, rule, ky_disp, ky_table
 
     !> The validated input.
     type :: config_t
@@ -68,9 +84,17 @@ module driver_newmark
         real(dp) :: xi_deg = 0.0_dp
         logical :: along_plane = .true.
         integer :: mode = NEWMARK_DOWN
-        integer :: method = 0
+        integer :: method = 0                            !! the rule: NEWMARK_EXACT, _SLAMMER
         real(dp) :: g = 9.80665_dp
+        integer :: kind = KIND_RIGID                     !! KIND_*
+        type(flexible_mass_t) :: mass                    !! &slope (flexible methods)
+        real(dp), allocatable :: ky_disp(:), ky_values(:) !! yield table (m, g), if given
     end type config_t
+
+    !> A note on one record's rows that is not a failure (an unconverged iteration).
+    type :: note_t
+        character(len=:), allocatable :: text
+    end type note_t
 
 contains
 
@@ -87,10 +111,14 @@ contains
         slope_deg = 0.0_dp
         xi_deg = 0.0_dp
         along_plane = .true.
-        method = 'exact'
+        method = 'rigid'
         g = 9.80665_dp
         intensity = .false.
         sa_periods = nan
+        rule = 'exact'
+        ky_disp = nan
+        ky_table = nan
+        call slope_defaults()
     end subroutine set_defaults
 
     subroutine read_newmark(unit, text, ios, iomsg)
@@ -114,10 +142,11 @@ contains
         character(len=*), intent(in) :: prefix            !! output prefix
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
-        type(nml_group) :: gr, gn
+        type(nml_group) :: gr, gn, gs
         type(config_t) :: cfg
         type(intensity_table_t) :: itab
         type(record_out_t), allocatable :: outs(:)
+        type(note_t), allocatable :: notes(:)
         real(dp), allocatable :: table(:, :)
         character(len=512) :: files_out(2)
         integer :: nfailed, nrows, nblk, ir
@@ -128,6 +157,8 @@ contains
         if (stat /= 0) return
         call read_optional(path, groups, 'newmark', newmark_keys, read_newmark, gn, stat, &
                            errmsg)
+        if (stat /= 0) return
+        call read_optional(path, groups, 'slope', slope_keys, read_slope, gs, stat, errmsg)
         if (stat /= 0) return
         stat = 1
         if (find_group(groups, 'records') == 0) then
@@ -143,6 +174,8 @@ contains
         if (len(errmsg) > 0) return
         call check_newmark(path, gn, cfg, errmsg)
         if (len(errmsg) > 0) return
+        call check_method_slope(path, gn, gs, cfg, errmsg)
+        if (len(errmsg) > 0) return
         call intensity_check(located(path, gn), intensity, given(gn, 'sa_periods'), sa_periods, &
                              itab, errmsg)
         if (len(errmsg) > 0) return
@@ -151,12 +184,13 @@ contains
         call echo_records(cfg%recs, cfg%slammer_rounding)
         call echo_newmark(cfg)
         call intensity_echo(itab)
+        if (cfg%kind /= KIND_RIGID) call echo_slope(cfg%mass)
 
         ! --- compute every row (nothing is written before all of them are done)
-        call compute(path, gr, cfg, outs, table, nfailed, itab)
+        call compute(path, gr, cfg, outs, notes, table, nfailed, itab)
 
         ! --- write
-        call write_result(path, prefix, cfg, outs, table, files_out, stat, errmsg)
+        call write_result(path, prefix, cfg, outs, notes, table, files_out, stat, errmsg)
         if (stat /= 0) then
             stat = 1
             errmsg = path//': &run: output: '//errmsg
@@ -201,6 +235,8 @@ contains
             'xi_deg', 'along_plane']
         character(len=12), parameter :: asym_keys(3) = [character(len=12) :: 'ky_up', &
             'k_down', 'k_up']
+        character(len=12), parameter :: rigid_keys(6) = [character(len=12) :: 'mu', &
+            'slope_deg', 'xi_deg', 'along_plane', 'k_down', 'k_up']
         integer :: n, i, k, n_up, st
         real(dp) :: nan
 
@@ -208,12 +244,31 @@ contains
         where = located(path, gn)
         errmsg = ''
 
-        ! --- method and g
-        cfg%method = newmark_method_code(trim(lower(adjustl(method))))
-        if (cfg%method == 0) then
-            errmsg = where//'method = '''//trim(method)//''': unknown method (allowed: ' &
-                     //join(method_names)//')'
-            return
+        ! --- method (the analysis), rule and g
+        cfg%kind = name_index(method, kind_names)
+        if (cfg%kind > 0) then
+            cfg%method = newmark_method_code(trim(lower(adjustl(rule))))
+            if (cfg%method == 0) then
+                errmsg = where//'rule = '''//trim(rule)//''': unknown rule (allowed: ' &
+                         //join(method_names)//')'
+                return
+            end if
+        else
+            ! the old form: method = 'exact' | 'slammer' is a rigid block with that rule
+            cfg%kind = KIND_RIGID
+            cfg%method = newmark_method_code(trim(lower(adjustl(method))))
+            if (cfg%method == 0) then
+                errmsg = where//'method = '''//trim(method)//''': unknown method (allowed: ' &
+                         //join(kind_names)//'; the old '//join(method_names)//' = rigid ' &
+                         //'with that rule)'
+                return
+            end if
+            if (given(gn, 'rule')) then
+                errmsg = where//'rule: not with method = '''//trim(adjustl(method)) &
+                         //''' (the old form of method = ''rigid'', rule = ''' &
+                         //trim(adjustl(method))//'''): give method = ''rigid'' and the rule'
+                return
+            end if
         end if
         if (.not. finite_positive(g)) then
             errmsg = where//'g = '//num(g)//': must be a finite number > 0 (m/s2)'
@@ -229,6 +284,31 @@ contains
                          //join(mode_names)//')'
                 return
             end if
+            if (cfg%mode /= NEWMARK_DOWN .and. cfg%kind /= KIND_RIGID .and. &
+                (cfg%kind /= KIND_DECOUPLED .or. cfg%method /= NEWMARK_EXACT)) then
+                errmsg = where//'mode = '''//trim(mode)//''': a flexible mass slides both ' &
+                         //'ways only with method = ''decoupled'' and rule = ''exact'' ' &
+                         //'(method is '''//trim(kind_names(cfg%kind))//''', rule ''' &
+                         //newmark_method_name(cfg%method)//''')'
+                return
+            end if
+        end if
+
+        ! --- keys of the rigid block only
+        if (cfg%kind /= KIND_RIGID) then
+            do i = 1, size(rigid_keys)
+                if (given(gn, trim(rigid_keys(i)))) then
+                    errmsg = where//trim(rigid_keys(i))//': only with method = ''rigid'' ' &
+                             //'(method is '''//trim(kind_names(cfg%kind))//''')'
+                    return
+                end if
+            end do
+        end if
+
+        ! --- a yield table instead of ky
+        if (given(gn, 'ky_disp') .or. given(gn, 'ky_table')) then
+            call check_table(where, gn, cfg, errmsg)
+            return
         end if
 
         ! --- ky or mu
@@ -351,6 +431,105 @@ contains
         end do
     end subroutine check_newmark
 
+    !> &newmark with ky_disp and ky_table: one block with the yield table (mode down).
+    subroutine check_table(where, gn, cfg, errmsg)
+        character(len=*), intent(in) :: where             !! "file:line: &newmark: "
+        type(nml_group), intent(in) :: gn
+        type(config_t), intent(inout) :: cfg
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=1024) :: msg
+        integer :: n, n2, st
+
+        errmsg = ''
+        if (given(gn, 'ky') .or. given(gn, 'mu')) then
+            errmsg = where//merge('ky', 'mu', given(gn, 'ky'))//', ky_table: give one of ' &
+                     //'them (ky_disp and ky_table: a yield table ky(u) instead of ky)'
+            return
+        end if
+        if (.not. given(gn, 'ky_disp') .or. .not. given(gn, 'ky_table')) then
+            errmsg = where//merge('ky_table', 'ky_disp ', given(gn, 'ky_disp')) &
+                     //': missing (a yield table needs both: ky_disp, the displacements ' &
+                     //'(m), and ky_table, the yield accelerations (g))'
+            errmsg = trim(errmsg)
+            return
+        end if
+        if (cfg%mode /= NEWMARK_DOWN) then
+            errmsg = where//'mode = '''//trim(mode)//''': a yield table slides one way ' &
+                     //'(mode ''down'')'
+            return
+        end if
+        if (given(gn, 'ky_up')) then
+            errmsg = where//'ky_up: only for mode ''asym'' (with a yield table the mode is ' &
+                     //'''down'')'
+            return
+        end if
+        call list_length(ky_disp, 'ky_disp', n, errmsg)
+        if (len(errmsg) == 0) call list_length(ky_table, 'ky_table', n2, errmsg)
+        if (len(errmsg) > 0) then
+            errmsg = where//errmsg
+            return
+        end if
+        if (n /= n2) then
+            errmsg = where//'ky_table: '//int_str(n2)//' values for '//int_str(n) &
+                     //' ky_disp (one yield acceleration per displacement)'
+            return
+        end if
+        msg = ''
+        call ky_table_validate(ky_disp(1:n), ky_table(1:n), st, msg)
+        if (st /= SEISPULSE_SUCCESS) then
+            errmsg = where//table_message(trim(msg))
+            return
+        end if
+        cfg%ky_disp = ky_disp(1:n)
+        cfg%ky_values = ky_table(1:n)
+        allocate(cfg%blocks(1), cfg%mu(1))
+        cfg%mu = ieee_value(0.0_dp, ieee_quiet_nan)
+        cfg%blocks(1)%mode = NEWMARK_DOWN
+        cfg%blocks(1)%ky = ky_table(1)
+        cfg%blocks(1)%ky_up = ky_table(1)
+        if (cfg%kind == KIND_RIGID) then
+            cfg%blocks(1)%ky_disp = cfg%ky_disp
+            cfg%blocks(1)%ky_values = cfg%ky_values
+            msg = ''
+            call newmark_block_validate(cfg%blocks(1), st, msg)
+            if (st /= SEISPULSE_SUCCESS) errmsg = where//table_message(trim(msg))
+        end if
+    end subroutine check_table
+
+    !> The library names the table's values ky_values; the key is ky_table.
+    function table_message(msg) result(s)
+        character(len=*), intent(in) :: msg
+        character(len=:), allocatable :: s
+        integer :: k
+        s = msg
+        k = index(s, 'ky_values')
+        do while (k > 0)
+            s = s(1:k - 1)//'ky_table'//s(k + 9:)
+            k = index(s, 'ky_values')
+        end do
+    end function table_message
+
+    !> &slope: required for 'decoupled' and 'coupled', refused for 'rigid'.
+    subroutine check_method_slope(path, gn, gs, cfg, errmsg)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gn, gs
+        type(config_t), intent(inout) :: cfg
+        character(len=:), allocatable, intent(out) :: errmsg
+        errmsg = ''
+        if (cfg%kind == KIND_RIGID) then
+            if (gs%line > 0) errmsg = located(path, gs)//'method = ''rigid'' (&newmark) has ' &
+                //'no sliding mass: give method = ''decoupled'' or ''coupled'', or leave ' &
+                //'&slope out'
+            return
+        end if
+        if (gs%line == 0) then
+            errmsg = located(path, gn)//'method = '''//trim(kind_names(cfg%kind)) &
+                     //''': needs the group &slope (height, vs, vs_base of the sliding mass)'
+            return
+        end if
+        call check_slope(path, gs, cfg%mass, errmsg)
+    end subroutine check_method_slope
+
     ! ------------------------------------------------------------------------------
     ! Echo
     ! ------------------------------------------------------------------------------
@@ -358,7 +537,13 @@ contains
     !> &newmark with the keys in use.
     subroutine echo_newmark(cfg)
         type(config_t), intent(in) :: cfg
-        if (cfg%with_mu) then
+        if (allocated(cfg%ky_disp)) then
+            call echo_table(size(cfg%ky_disp))
+        else if (cfg%kind /= KIND_RIGID .and. cfg%mode == NEWMARK_ASYM) then
+            call echo_flexible_asym(size(cfg%blocks))
+        else if (cfg%kind /= KIND_RIGID) then
+            call echo_flexible(size(cfg%blocks))
+        else if (cfg%with_mu) then
             call echo_mu(size(cfg%mu))
         else if (cfg%mode == NEWMARK_ASYM) then
             call echo_asym(size(cfg%blocks))
@@ -414,6 +599,51 @@ contains
             write(output_unit, nml=newmark)
         end subroutine echo_mu
 
+        subroutine echo_table(n)
+            integer, intent(in) :: n
+            real(dp) :: ky_disp(n), ky_table(n), g
+            character(len=9) :: method
+            character(len=7) :: rule
+            namelist /newmark/ ky_disp, ky_table, method, rule, g
+            ky_disp = cfg%ky_disp
+            ky_table = cfg%ky_values
+            method = kind_names(cfg%kind)
+            rule = newmark_method_name(cfg%method)
+            g = cfg%g
+            write(output_unit, nml=newmark)
+        end subroutine echo_table
+
+        subroutine echo_flexible(n)
+            integer, intent(in) :: n
+            real(dp) :: ky(n), g
+            character(len=4) :: mode
+            character(len=9) :: method
+            character(len=7) :: rule
+            namelist /newmark/ ky, mode, method, rule, g
+            ky = cfg%blocks%ky
+            mode = newmark_mode_name(cfg%mode)
+            method = kind_names(cfg%kind)
+            rule = newmark_method_name(cfg%method)
+            g = cfg%g
+            write(output_unit, nml=newmark)
+        end subroutine echo_flexible
+
+        subroutine echo_flexible_asym(n)
+            integer, intent(in) :: n
+            real(dp) :: ky(n), ky_up(n), g
+            character(len=4) :: mode
+            character(len=9) :: method
+            character(len=7) :: rule
+            namelist /newmark/ ky, mode, ky_up, method, rule, g
+            ky = cfg%blocks%ky
+            ky_up = cfg%blocks%ky_up
+            mode = newmark_mode_name(cfg%mode)
+            method = kind_names(cfg%kind)
+            rule = newmark_method_name(cfg%method)
+            g = cfg%g
+            write(output_unit, nml=newmark)
+        end subroutine echo_flexible_asym
+
     end subroutine echo_newmark
 
     ! ------------------------------------------------------------------------------
@@ -422,21 +652,26 @@ contains
 
     !> Every record (read, polarity, scale), every block, normal and inverse. A record
     !> that fails leaves NaN results and status 1 in its rows; the message goes to
-    !> stderr at once. Progress: one line per record on stderr.
-    subroutine compute(path, gr, cfg, outs, table, nfailed, itab)
+    !> stderr at once. An unconverged flexible case keeps its results (converged = 0)
+    !> with a warning on stderr and a note for the header. Progress: one line per record
+    !> on stderr.
+    subroutine compute(path, gr, cfg, outs, notes, table, nfailed, itab)
         character(len=*), intent(in) :: path
         type(nml_group), intent(in) :: gr
         type(config_t), intent(in) :: cfg
         type(record_out_t), allocatable, intent(out) :: outs(:)
+        type(note_t), allocatable, intent(out) :: notes(:)  !! per record ('' if none)
         real(dp), allocatable, intent(out) :: table(:, :)   !! the numeric columns
         integer, intent(out) :: nfailed
         type(intensity_table_t), intent(inout) :: itab     !! its rows, if it is on
         type(newmark_result_t) :: rn, ri
+        type(flexible_result_t) :: fn, fi
         real(dp), allocatable :: accel(:)
         character(len=:), allocatable :: where, errmsg
         character(len=4096) :: msg
         real(dp) :: nan, ky_up_col
-        integer :: nrec, nblk, ir, ib, row, st, st2, c0, i
+        integer :: nrec, nblk, ir, ib, row, st, st2, c0, i, ncol
+        logical :: unconverged
 
         nan = ieee_value(nan, ieee_quiet_nan)
         where = located(path, gr)
@@ -444,12 +679,15 @@ contains
         nblk = size(cfg%blocks)
         c0 = 2                       ! columns before ky: pga, scale (and mu)
         if (cfg%with_mu) c0 = 3
-        allocate(outs(nrec))
-        allocate(table(nrec * nblk, c0 + 11))
+        ncol = c0 + 11               ! ... status
+        if (cfg%kind /= KIND_RIGID) ncol = c0 + 17   ! ... kmax .. converged, status
+        allocate(outs(nrec), notes(nrec))
+        allocate(table(nrec * nblk, ncol))
         table = nan
         nfailed = 0
         call intensity_start(itab, nrec)
         do ir = 1, nrec
+            notes(ir)%text = ''
             associate (r => cfg%recs(ir), o => outs(ir))
                 ! --- read, turn over, scale
                 call load_record(where, r, ir, nrec, 'newmark', cfg%slammer_rounding, o, accel)
@@ -468,15 +706,27 @@ contains
                         if (cfg%with_mu) table(row, 3) = cfg%mu(ib)
                         table(row, c0 + 1) = b%ky
                         table(row, c0 + 2) = ky_up_col
-                        table(row, c0 + 11) = 1.0_dp
+                        table(row, ncol) = 1.0_dp
                         if (.not. o%ok) cycle
                         table(row, 1) = o%pga
                         table(row, 2) = o%factor
                         msg = ''
                         st2 = SEISPULSE_SUCCESS
-                        call newmark_rigid(accel, o%dt, b, cfg%method, cfg%g, rn, st, msg)
-                        if (st == SEISPULSE_SUCCESS) &
-                            call newmark_rigid(-accel, o%dt, b, cfg%method, cfg%g, ri, st2, msg)
+                        unconverged = .false.
+                        if (cfg%kind == KIND_RIGID) then
+                            call newmark_rigid(accel, o%dt, b, cfg%method, cfg%g, rn, st, msg)
+                            if (st == SEISPULSE_SUCCESS) call newmark_rigid(-accel, o%dt, b, &
+                                cfg%method, cfg%g, ri, st2, msg)
+                        else
+                            call flexible_row(cfg, b, accel, o%dt, fn, st, msg)
+                            if (st == SEISPULSE_SUCCESS .or. st == SEISPULSE_NO_CONVERGENCE) &
+                                call flexible_row(cfg, b, -accel, o%dt, fi, st2, msg)
+                            ! not converged: the last iteration's results, with a warning
+                            unconverged = st == SEISPULSE_NO_CONVERGENCE .or. &
+                                          st2 == SEISPULSE_NO_CONVERGENCE
+                            if (st == SEISPULSE_NO_CONVERGENCE) st = SEISPULSE_SUCCESS
+                            if (st2 == SEISPULSE_NO_CONVERGENCE) st2 = SEISPULSE_SUCCESS
+                        end if
                         if (st /= SEISPULSE_SUCCESS .or. st2 /= SEISPULSE_SUCCESS) then
                             ! a failure of the sliding analysis itself: this row only
                             errmsg = where//list_item('files', ir)//' = '''//r%file//''', ' &
@@ -486,19 +736,64 @@ contains
                             o%message = o%message//row_name(cfg, ib)//': '//trim(msg)
                             cycle
                         end if
-                        table(row, c0 + 3:c0 + 10) = [rn%max_disp, 100.0_dp * rn%max_disp, &
-                            rn%final_disp, 100.0_dp * rn%final_disp, ri%max_disp, &
-                            100.0_dp * ri%max_disp, ri%final_disp, 100.0_dp * ri%final_disp]
-                        table(row, c0 + 11) = 0.0_dp
+                        if (cfg%kind == KIND_RIGID) then
+                            table(row, c0 + 3:c0 + 10) = [rn%max_disp, 100.0_dp * rn%max_disp, &
+                                rn%final_disp, 100.0_dp * rn%final_disp, ri%max_disp, &
+                                100.0_dp * ri%max_disp, ri%final_disp, 100.0_dp * ri%final_disp]
+                        else
+                            table(row, c0 + 3:c0 + 16) = [fn%max_disp, 100.0_dp * fn%max_disp, &
+                                fn%final_disp, 100.0_dp * fn%final_disp, fi%max_disp, &
+                                100.0_dp * fi%max_disp, fi%final_disp, &
+                                100.0_dp * fi%final_disp, fn%kmax, fn%vs_final, &
+                                fn%damping_final, fn%period, real(fn%iterations, dp), &
+                                merge(1.0_dp, 0.0_dp, fn%converged .and. fi%converged)]
+                            if (unconverged) then
+                                write(error_unit, '(a)') 'warning: '//where &
+                                    //list_item('files', ir)//' = '''//r%file//''', ' &
+                                    //row_name(cfg, ib)//': '//trim(msg)
+                                flush(error_unit)
+                                if (len(notes(ir)%text) > 0) notes(ir)%text = notes(ir)%text &
+                                    //'; '
+                                notes(ir)%text = notes(ir)%text//row_name(cfg, ib)//': ' &
+                                                 //trim(msg)
+                            end if
+                        end if
+                        table(row, ncol) = 0.0_dp
                     end associate
                 end do
             end associate
         end do
         nfailed = 0
         do i = 1, size(table, 1)
-            if (table(i, c0 + 11) > 0.5_dp) nfailed = nfailed + 1
+            if (table(i, ncol) > 0.5_dp) nfailed = nfailed + 1
         end do
     end subroutine compute
+
+    !> One flexible case (decoupled or coupled) on accel (g): the library's stat
+    !> (SEISPULSE_NO_CONVERGENCE: res holds the last iteration) and message.
+    subroutine flexible_row(cfg, b, accel, dt, res, stat, errmsg)
+        type(config_t), intent(in) :: cfg
+        type(newmark_block_t), intent(in) :: b           !! ky (g), mode, ky_up (g)
+        real(dp), intent(in) :: accel(:)                 !! g
+        real(dp), intent(in) :: dt                       !! s
+        type(flexible_result_t), intent(out) :: res
+        integer, intent(out) :: stat
+        character(len=*), intent(inout) :: errmsg
+        ! an unallocated ky_disp/ky_values (no table) is passed on as absent
+        if (cfg%kind == KIND_DECOUPLED) then
+            if (b%mode == NEWMARK_ASYM) then
+                call flexible_decoupled(accel, dt, b%ky, cfg%mass, cfg%method, cfg%g, res, &
+                                        stat, errmsg, mode=b%mode, ky_up=b%ky_up)
+            else
+                call flexible_decoupled(accel, dt, b%ky, cfg%mass, cfg%method, cfg%g, res, &
+                                        stat, errmsg, mode=b%mode, ky_disp=cfg%ky_disp, &
+                                        ky_values=cfg%ky_values)
+            end if
+        else
+            call flexible_coupled(accel, dt, b%ky, cfg%mass, cfg%method, cfg%g, res, stat, &
+                                  errmsg, ky_disp=cfg%ky_disp, ky_values=cfg%ky_values)
+        end if
+    end subroutine flexible_row
 
     !> "ky(2) = 0.1" or "mu(2) = 0.3" (without the index for a single value).
     function row_name(cfg, ib) result(s)
@@ -507,6 +802,8 @@ contains
         character(len=:), allocatable :: s
         if (cfg%with_mu) then
             s = value_name('mu', ib, size(cfg%blocks))//' = '//num(cfg%mu(ib))
+        else if (allocated(cfg%ky_disp)) then
+            s = 'ky_table'
         else
             s = value_name('ky', ib, size(cfg%blocks))//' = '//num(cfg%blocks(ib)%ky)
         end if
@@ -516,10 +813,11 @@ contains
     ! Output
     ! ------------------------------------------------------------------------------
 
-    subroutine write_result(path, prefix, cfg, outs, table, files_out, stat, errmsg)
+    subroutine write_result(path, prefix, cfg, outs, notes, table, files_out, stat, errmsg)
         character(len=*), intent(in) :: path, prefix
         type(config_t), intent(in) :: cfg
         type(record_out_t), intent(in) :: outs(:)
+        type(note_t), intent(in) :: notes(:)
         real(dp), intent(in) :: table(:, :)
         character(len=*), intent(out) :: files_out(2)
         integer, intent(out) :: stat
@@ -528,9 +826,13 @@ contains
         character(len=16), allocatable :: names(:), col_units(:)
         character(len=path_len), allocatable :: labels(:)
         character(len=:), allocatable :: line
-        integer :: nblk, ir, k
+        integer :: nblk, ir, k, nc, i
 
         nblk = size(cfg%blocks)
+        if (cfg%kind /= KIND_RIGID .or. allocated(cfg%ky_disp)) then
+            call write_flexible()
+            return
+        end if
         allocate(comments(7 + size(outs)))
         comments(1) = 'seispulse analysis newmark: rigid-block (Newmark) sliding on ' &
                       //'accelerograms, one row per record and '//merge('mu', 'ky', cfg%with_mu)
@@ -580,6 +882,95 @@ contains
         end do
         call write_tables(prefix, 'newmark', comments, names, col_units, table, files_out, &
                           stat, errmsg, labels=labels)
+
+    contains
+
+        !> The table of a flexible mass, or of a rigid block with a yield table.
+        subroutine write_flexible()
+            logical :: flexible
+            flexible = cfg%kind /= KIND_RIGID
+            allocate(comments(12 + size(outs)))
+            nc = 0
+            if (flexible) then
+                call add('seispulse analysis newmark: '//trim(kind_names(cfg%kind)) &
+                         //' flexible sliding mass on accelerograms (doc/flexible.md), one ' &
+                         //'row per record and ky')
+            else
+                call add('seispulse analysis newmark: rigid-block (Newmark) sliding on ' &
+                         //'accelerograms with a yield table, one row per record')
+            end if
+            call add('input: '//trim(path))
+            call add('method = '//trim(kind_names(cfg%kind))//', rule = ' &
+                     //newmark_method_name(cfg%method)//', mode = ' &
+                     //newmark_mode_name(cfg%mode)//', g = '//num(cfg%g)//' m/s2')
+            if (flexible) call add(slope_line(cfg%mass))
+            if (allocated(cfg%ky_disp)) then
+                line = 'yield table (ky_disp m: ky_table g):'
+                do i = 1, size(cfg%ky_disp)
+                    line = line//' '//num(cfg%ky_disp(i))//': '//num(cfg%ky_values(i))
+                    if (i < size(cfg%ky_disp)) line = line//','
+                end do
+                call add(line//'; the column ky is ky_table(1)')
+            end if
+            call add('sign convention: positive slip = downslope, driven by positive ' &
+                     //'ground acceleration; normal = the record times scale (scale < 0: ' &
+                     //'polarity -1), inverse = the normal record x -1')
+            call add('max: largest |u| over time; final: u when the mass is at rest at ' &
+                     //'the end (signed); ky_up = inf: no upslope sliding (mode ''down''); ' &
+                     //'pga: after scaling')
+            if (flexible) then
+                call add('kmax: the peak of the average acceleration of the mass (HEA, g), ' &
+                         //'signed, of the normal record (the inverse''s is -kmax); ' &
+                         //'vs_final (m/s), damping_final (user or material, plus ' &
+                         //'radiation) and period = 4 height / vs_final (s) of the final ' &
+                         //'response, iterations (equivalent-linear; 0 for linear): the ' &
+                         //'same for normal and inverse')
+                call add('converged: 1, or 0 when the equivalent-linear iteration stopped ' &
+                         //'at max_iter: the results of its last iteration, a warning below ' &
+                         //'and on stderr, status 0')
+            end if
+            call add('status: 0 ok, 1 failed (NaN results; the reason is below and on ' &
+                     //'stderr); exit status 1 when a row failed (2: an input error, no table)')
+            call add('records (index, file, format read, npts, dt (s), PGA as read (g), ' &
+                     //'scale factor):')
+            do ir = 1, size(outs)
+                associate (o => outs(ir), r => cfg%recs(ir))
+                    line = record_line(ir, r, o)
+                    if (o%ok .and. len(o%message) > 0) line = line//'; FAILED rows: ' &
+                        //o%message
+                    if (len(notes(ir)%text) > 0) line = line//'; NOT CONVERGED: ' &
+                        //notes(ir)%text
+                    call add(line)
+                end associate
+            end do
+
+            allocate(names(size(table, 2) + 1), col_units(size(table, 2) + 1))
+            names(1:4) = [character(len=16) :: 'record', 'pga', 'scale', 'ky']
+            col_units(1:4) = [character(len=16) :: '-', 'g', '-', 'g']
+            names(5:14) = [character(len=16) :: 'ky_up', 'max_normal', 'max_normal', &
+                'final_normal', 'final_normal', 'max_inverse', 'max_inverse', &
+                'final_inverse', 'final_inverse', 'status']
+            col_units(5:14) = [character(len=16) :: 'g', 'm', 'cm', 'm', 'cm', 'm', 'cm', &
+                'm', 'cm', '-']
+            if (flexible) then
+                names(14:20) = [character(len=16) :: 'kmax', 'vs_final', 'damping_final', &
+                    'period', 'iterations', 'converged', 'status']
+                col_units(14:20) = [character(len=16) :: 'g', 'm/s', '-', 's', '-', '-', '-']
+            end if
+            allocate(labels(size(table, 1)))
+            do ir = 1, size(outs)
+                labels((ir - 1) * nblk + 1:ir * nblk) = outs(ir)%name
+            end do
+            call write_tables(prefix, 'newmark', comments(1:nc), names, col_units, table, &
+                              files_out, stat, errmsg, labels=labels)
+        end subroutine write_flexible
+
+        subroutine add(text)
+            character(len=*), intent(in) :: text
+            nc = nc + 1
+            comments(nc) = text
+        end subroutine add
+
     end subroutine write_result
 
 end module driver_newmark

@@ -44,7 +44,7 @@ program seispulse_driver
     character(len=12), parameter :: all_groups(21) = [character(len=12) :: 'pulse', 'time', &
         'block', 'method', 'history', 'rocking', 'map', 'records', 'newmark', 'sdof', &
         'sdof_history', 'sdof_beta', 'sdof_shock', 'wall', 'backfill', 'seismic', 'body', &
-        'cylinder', 'roll', 'winkler', 'empirical']
+        'cylinder', 'roll', 'winkler', 'empirical', 'slope']
 
     character(len=:), allocatable :: path, errmsg
     character(len=4096) :: arg

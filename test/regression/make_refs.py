@@ -95,6 +95,19 @@ quadrature (mp.quad) of a^2 and |a| on each step (split at the zero of a); the H
 times by the real root in the step of the cubic cumulative integral (polyroots); Tm by a
 DFT summed directly at k/(N dt), N the power of two >= max(n, 1/(0.05 dt)); Sa from the
 oscillator pieces of analysis 'sdof' below (true peaks, damping 0.05), (2 pi/T)^2 SD/g.
+
+Analysis 'newmark' with method 'decoupled' or 'coupled' (a flexible sliding mass, &slope;
+doc/flexible.md), per ky (or yield table) and polarity:
+  * rule 'slammer': SLAMMER 1.1's Decoupled and Coupled as transcribed in plain Python by
+    test/python/slammer_reference.py (float arithmetic in SLAMMER's order and units,
+    checked there against SLAMMER's own Java); kmax, the final Vs and damping and the
+    iterations from the same run, period = 4 height / vs_final;
+  * rule 'exact', linear soil, method 'decoupled': the one-mode shear beam (omega =
+    pi Vs / (2 H), damping + min(0.2, 0.55016 (vs_base/vs)^-0.9904)) driven by
+    -(4/pi) a(t) g, a linear between samples, solved in closed form step by step in mpmath
+    (homogeneous e^(-xi w t) (A cos w_d t + B sin w_d t) plus the linear particular
+    solution) from rest; HEA = a + (2/pi) u''/g at the samples, taken as linear between
+    them, drives the exact rigid block above (newmark_exact).
 """
 import math
 import re
@@ -888,8 +901,21 @@ TO_G = {"g": mpf(1), "m/s2": G_STANDARD, "m/s^2": G_STANDARD, "cm/s2": 100 * G_S
         "cm/s^2": 100 * G_STANDARD, "gal": 100 * G_STANDARD}
 
 
-def read_record(path, fmt, units, dt):
-    """(accel in g, dt) of a record file, values as the exact decimals written."""
+def read_record(path, fmt, units, dt, as_double=False):
+    """(accel in g, dt) of a record file, values as the exact decimals written (as_double:
+    as the driver holds them, each decimal rounded to a double and divided in double by
+    9.80665 or 100 * 9.80665)."""
+    if as_double:
+        acc, step = read_record(path, fmt, "g", dt)
+        file_units, undo = ("g" if units == "auto" else units), 1
+        if Path(path).suffix.lower() == ".at2" or fmt == "at2":
+            line3 = Path(path).read_text().splitlines()[2].upper()
+            file_units = "cm/s2" if "CM/S" in line3 else "m/s2" if "M/S" in line3 else "g"
+            undo = TO_G[file_units]                   # read_record divided by it
+        gd = 9.80665
+        div = {"g": None, "m/s2": gd, "m/s^2": gd}.get(file_units, 100.0 * gd)
+        raw = [float(x * undo) for x in acc]          # the decimals as doubles
+        return [x if div is None else x / div for x in raw], step
     lines = Path(path).read_text().splitlines()
     if fmt == "auto" and Path(path).suffix.lower() == ".at2":
         fmt = "at2"
@@ -1034,6 +1060,97 @@ def newmark_blocks(nb):
     return [(mp.nan, k, up, mpf(kd), mpf(ku)) for k, up in zip(kys, ups)], mode
 
 
+FLEX_COLUMNS = ["kmax (g)", "vs_final (m/s)", "damping_final (-)", "period (s)",
+                "iterations (-)", "converged (-)"]
+
+
+def radiation_damping(vs, vs_base):
+    """Lee's radiation damping (fraction), capped at 0.2 (doc/flexible.md)."""
+    return min(mpf("0.2"), mpf("0.55016") * (mpf(vs_base) / mpf(vs)) ** mpf("-0.9904"))
+
+
+def modal_hea_exact(acc, dt, g, omega, xi):
+    """HEA (g) at the samples of the one-mode beam u'' + 2 xi w u' + w^2 u = -(4/pi) a g
+    under the piecewise-linear record acc (g), from rest, in closed form per step."""
+    wd = omega * mp.sqrt(1 - xi * xi)
+    c = -4 / mp.pi * g
+    u = v = mpf(0)
+    hea = []
+    for i, a0 in enumerate(acc):
+        f0 = c * a0
+        hea.append(a0 + 2 / mp.pi * (f0 - 2 * xi * omega * v - omega**2 * u) / g)
+        if i + 1 == len(acc):
+            break
+        s = (c * acc[i + 1] - f0) / dt                 # load slope (m/s^3)
+        big_a = u - (f0 / omega**2 - 2 * xi * s / omega**3)
+        big_b = (v - s / omega**2 + xi * omega * big_a) / wd
+        e, co, si = mp.exp(-xi * omega * dt), mp.cos(wd * dt), mp.sin(wd * dt)
+        u = e * (big_a * co + big_b * si) + (f0 + s * dt) / omega**2 - 2 * xi * s / omega**3
+        v = e * ((-xi * omega * big_a + wd * big_b) * co
+                 + (-xi * omega * big_b - wd * big_a) * si) + s / omega**2
+    return hea
+
+
+def signed_peak(values):
+    """The value of largest magnitude (the positive one on a tie)."""
+    top = max(values)
+    low = min(values)
+    return top if top >= -low else low
+
+
+def driver_doubles(path, fmt, units, dt, target, scale, polarity, slammer_rounding):
+    """The scaled record (g) in the driver's double arithmetic: the decimals as doubles,
+    the unit division, factor = target / PGA (or scale) times the polarity, each sample
+    times the factor (SLAMMER's loops amplify a last-bit change of the input)."""
+    acc, _ = read_record(path, fmt, units, dt, as_double=True)
+    pga = max(abs(x) for x in acc)
+    if target > 0:
+        ref_pga = round(pga * 1000) / 1000 if slammer_rounding else pga
+        factor = float(target) / ref_pga
+    else:
+        factor = float(scale)
+    factor = polarity * factor
+    return [x * factor for x in acc]
+
+
+def flexible_case(acc, dt, g, ky, nb, ns, acc_double=None):
+    """[max, max cm, final, final cm] x (normal, inverse) + the flexible columns
+    (acc_double: the record as the driver holds it, for SLAMMER's rule)."""
+    method = nb["method"].lower()
+    rule = nb.get("rule", "exact").lower()
+    height, vs, vs_base = (mpf(ns[k]) for k in ("height", "vs", "vs_base"))
+    damping = mpf(ns.get("damping", "0.05"))
+    soil = ns.get("soil", "linear").lower()
+    table = None
+    if "ky_disp" in nb:
+        table = ([float(x) for x in _as_list(nb["ky_disp"])],
+                 [float(x) for x in _as_list(nb["ky_table"])])
+    out = []
+    if rule == "slammer":
+        import slammer_reference as sref
+        run = sref.decoupled if method == "decoupled" else sref.coupled
+        kw = dict(soil=soil, ref_strain_pct=float(ns.get("ref_strain_pct", 0.05)),
+                  ky_table=table)
+        for sign in (1, -1):
+            r = run([sign * x for x in acc_double], float(dt), float(ky), float(height),
+                    float(vs), float(vs_base), float(damping), **kw)
+            d = mpf(r.disp_cm) / 100          # one way: max = final
+            out += [d, 100 * d, d, 100 * d]
+            if sign == 1:
+                first = r
+        return out + [mpf(first.kmax_g), mpf(first.vs_final_mps), mpf(first.damping_final),
+                      4 * height / mpf(first.vs_final_mps), mpf(first.iterations), mpf(1)]
+    if method != "decoupled" or soil != "linear" or table is not None:
+        raise ValueError("exact references: method 'decoupled', soil 'linear', no table")
+    xi = damping + radiation_damping(vs, vs_base)
+    hea = modal_hea_exact(acc, dt, g, mp.pi * vs / (2 * height), xi)
+    for sign in (1, -1):
+        mx, fin = (x * g for x in newmark_exact([sign * h for h in hea], dt, mpf(ky), mp.inf,
+                                                1, 1))
+        out += [mx, 100 * mx, fin, 100 * fin]
+    return out + [signed_peak(hea), vs, xi, 4 * height / vs, mpf(0), mpf(1)]
+
+
 def newmark_rows(nml_path, nml):
     nr, nb = nml["records"], nml["newmark"]
     files = _as_list(nr["files"])
@@ -1045,6 +1162,9 @@ def newmark_rows(nml_path, nml):
     targets = per_file(nr, "target_pga", n, 0.0)
     pols = per_file(nr, "polarity", n, 1)
     slammer_rounding = nr.get("pga_rounding", "exact").lower() == "slammer"
+    flexible = nb.get("method", "").lower() in ("decoupled", "coupled")
+    if "ky_disp" in nb:
+        nb = dict(nb, ky=_as_list(nb["ky_table"])[0])
     blocks, mode = newmark_blocks(nb)
     method = nb.get("method", "exact").lower()
     g = mpf(nb.get("g", G_STANDARD))
@@ -1071,7 +1191,13 @@ def newmark_rows(nml_path, nml):
         for mu, ky, ky_up, kd, ku in blocks:
             row = [name, pga, factor] + ([mu] if with_mu else []) + [ky, ky_up]
             if acc is None:
-                rows.append(row + [mp.nan] * 8 + [mpf(1)])
+                rows.append(row + [mp.nan] * (14 if flexible else 8) + [mpf(1)])
+                continue
+            if flexible:
+                dbl = driver_doubles(Path(nml_path).parent / file, fmts[i], units[i], dts[i],
+                                     targets[i], scales[i], pols[i], slammer_rounding)
+                rows.append(row + flexible_case(acc, dt, g, ky, nb, nml["slope"], dbl)
+                            + [mpf(0)])
                 continue
             for sign in (1, -1):
                 signed = [sign * x for x in acc]
@@ -1083,7 +1209,10 @@ def newmark_rows(nml_path, nml):
                     mx, fin = (x * g for x in newmark_exact(signed, dt, ky, ky_up, kd, ku))
                 row += [mx, 100 * mx, fin, 100 * fin]
             rows.append(row + [mpf(0)])
-    return newmark_header(with_mu), rows
+    header = newmark_header(with_mu)
+    if flexible:
+        header = header.replace("status (-)", ",".join(FLEX_COLUMNS + ["status (-)"]))
+    return header, rows
 
 
 def csv_cell(x):
