@@ -41,7 +41,7 @@ program seispulse_driver
         'rocking', 'newmark', 'sdof', 'sdof_beta', 'sdof_shock', 'walls', 'cylinder', 'winkler', &
         'empirical']
     !> Every group of any analysis (besides run), for the first check.
-    character(len=12), parameter :: all_groups(21) = [character(len=12) :: 'pulse', 'time', &
+    character(len=12), parameter :: all_groups(22) = [character(len=12) :: 'pulse', 'time', &
         'block', 'method', 'history', 'rocking', 'map', 'records', 'newmark', 'sdof', &
         'sdof_history', 'sdof_beta', 'sdof_shock', 'wall', 'backfill', 'seismic', 'body', &
         'cylinder', 'roll', 'winkler', 'empirical', 'slope']
