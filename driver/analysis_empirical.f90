@@ -9,8 +9,9 @@
 !> Tm and Sa(1.5 Ts) (seispulse_intensity) feed the models, magnitude and ts are given
 !> (one value or one per record), and the rigorous rigid-block result of the record
 !> (newmark_rigid, exact and SLAMMER's rule, the record as scaled, downslope) stands in
-!> every row next to the estimates. Table <output>_empirical. A record that cannot be
-!> read fails its rows (NaN, status 1) and the driver exits with status 1.
+!> every row next to the estimates. Table <output>_empirical. A record without energy
+!> (PGA = 0 or Arias intensity 0) gives disp 0 (no sliding) in every row. A record that
+!> cannot be read fails its rows (NaN, status 1) and the driver exits with status 1.
 module driver_empirical
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
@@ -128,6 +129,7 @@ contains
         real(dp), allocatable :: table(:, :)
         character(len=32), allocatable :: labels(:)
         character(len=512) :: files_out(2)
+        character(len=:), allocatable :: named
         integer :: nfailed, ir
 
         call set_defaults()
@@ -165,8 +167,13 @@ contains
         if (nfailed > 0) then
             stat = ROWS_FAILED
             errmsg = int_str(nfailed)//' of '//int_str(size(table, 1))//' rows failed'
-            if (cfg%with_records) errmsg = errmsg//' (records: '//failed_records(outs, &
-                [(.not. outs(ir)%ok, ir = 1, size(outs))])//')'
+            if (cfg%with_records) then
+                ! the records with a failed row (read or not)
+                named = failed_records(outs, [(any(table(:, C_STATUS) > 0.5_dp .and. &
+                                                   nint(table(:, C_CASE)) == ir), &
+                                               ir = 1, size(outs))])
+                if (len(named) > 0) errmsg = errmsg//' (records: '//named//')'
+            end if
         end if
 
     contains
@@ -419,7 +426,7 @@ contains
         character(len=4096) :: msg
         real(dp) :: nan, inp(NIN), sa
         integer :: c, i, m, n, have, st, nky
-        logical :: ok
+        logical :: ok, still
 
         nan = ieee_value(nan, ieee_quiet_nan)
         where = located(path, gr)
@@ -478,15 +485,16 @@ contains
                 cfg%inputs(c, :) = inp
             end if
             have = have_of(inp)
+            ! a record gives PGA, PGV, Ia, Sa and Tm itself (NaN when it failed, and Tm
+            ! when no frequency of its band carries energy): the given inputs decide
+            if (cfg%with_records) have = ior(have, EMP_NEED_PGA + EMP_NEED_PGV &
+                                                  + EMP_NEED_ARIAS + 32 + 64)
+            ! a record without energy: no sliding in any model
+            still = cfg%with_records .and. ok .and. &
+                    .not. (inp(IN_PGA) > 0.0_dp .and. inp(IN_ARIAS) > 0.0_dp)
             do i = 1, nky
                 do m = 1, NMODEL
-                    if (cfg%with_records .and. .not. ok) then
-                        ! a failed record: the rows its given inputs allow, NaN
-                        if (iand(needs_of(m), have + EMP_NEED_PGA + EMP_NEED_PGV &
-                                 + EMP_NEED_ARIAS + 32 + 64) /= needs_of(m)) cycle
-                    else if (iand(needs_of(m), have) /= needs_of(m)) then
-                        cycle
-                    end if
+                    if (iand(needs_of(m), have) /= needs_of(m)) cycle
                     n = n + 1
                     lab(n) = model_label(m)
                     rows(n, :) = nan
@@ -498,6 +506,11 @@ contains
                     rows(n, C_STATUS) = 1.0_dp
                     if (.not. ok) then
                         nfailed = nfailed + 1
+                        cycle
+                    end if
+                    if (still) then
+                        call no_sliding(rows(n, :))
+                        if (m == M_BT07) rows(n, C_PZERO) = 1.0_dp
                         cycle
                     end if
                     call model_row(m, cfg%ky(i), inp, cfg%slammer, rows(n, :))
@@ -540,17 +553,20 @@ contains
             call bray_travasarou_2007(ky, inp(IN_TS), inp(IN_SA), inp(IN_M), d, s, p0, st, &
                                       msg, slammer=sl)
         case (M_RA11_M, M_RA11_PGV)
+            if (ieee_is_nan(inp(IN_TM))) then
+                ! a record whose band 0.25-20 Hz carries no energy (doc/intensity.md)
+                call report('empirical: '//model_label(m)//', ky = '//num(ky)//': tm = ' &
+                            //'NaN: the record has no mean period (no Fourier amplitude ' &
+                            //'at 0.25-20 Hz)')
+                return
+            end if
             form = merge(EMP_RA11_PGA_M, EMP_RA11_PGA_PGV, m == M_RA11_M)
             call rathje_antonakos_2011(form, ky, inp(IN_TS), inp(IN_TM), inp(IN_PGA), &
                                        inp(IN_PGV), inp(IN_M), d, s, km, kv, dr, st, msg, &
                                        slammer=sl)
         case default
             if (iand(empirical_needs(m), EMP_NEED_PGA) /= 0 .and. .not. ky < inp(IN_PGA)) then
-                row(C_DISP) = 0.0_dp
-                row(C_D16) = 0.0_dp
-                row(C_D84) = 0.0_dp
-                row(C_PFAIL) = 0.0_dp
-                row(C_STATUS) = 0.0_dp
+                call no_sliding(row)
                 return
             end if
             call empirical_rigid(m, ky, inp(IN_PGA), inp(IN_PGV), inp(IN_ARIAS), inp(IN_M), &
@@ -571,6 +587,16 @@ contains
         row(C_KMAX) = km
         row(C_STATUS) = 0.0_dp
     end subroutine model_row
+
+    !> A row of no sliding: disp, d16, d84 and p_failure 0, status 0 (sigma as it was).
+    pure subroutine no_sliding(row)
+        real(dp), intent(inout) :: row(NCOL)
+        row(C_DISP) = 0.0_dp
+        row(C_D16) = 0.0_dp
+        row(C_D84) = 0.0_dp
+        row(C_PFAIL) = 0.0_dp
+        row(C_STATUS) = 0.0_dp
+    end subroutine no_sliding
 
     ! ------------------------------------------------------------------------------
     ! Output
@@ -611,6 +637,8 @@ contains
                       //' (SLAMMER 1.1''s rules for these two)'
         comments(6) = 'a model of ky/PGA with ky >= PGA: disp 0 (a rigid block does not ' &
                       //'slide), sigma NaN; NaN: not applicable'
+        if (cfg%with_records) comments(6) = trim(comments(6))//'; a record without ' &
+            //'energy (PGA = 0 or arias = 0): disp 0 in every row (p_zero 1)'
         if (cfg%with_records) then
             comments(7) = 'cases are the records: pga (g), pgv (cm/s), arias (m/s), tm (s) ' &
                           //'and sa_15ts = Sa(1.5 ts) (g, damping '//num(cfg%damping) &

@@ -269,7 +269,7 @@ contains
     subroutine test_no_energy(error)
         type(test_error), allocatable, intent(out) :: error
         type(intensity_t) :: im
-        real(dp) :: z(50)
+        real(dp) :: z(50), tm1
         integer :: stat
         z = 0.0_dp
         call record_intensity(z, 0.01_dp, g0, im, stat)
@@ -282,7 +282,7 @@ contains
                    .and. ieee_is_nan(im%d5_75) .and. ieee_is_nan(im%d5_95) &
                    .and. ieee_is_nan(im%tm), 'NaN durations and Tm')
         if (allocated(error)) return
-        ! one sample: no step, no energy; its flat spectrum still has a Tm
+        ! one sample: no step, no motion, no energy: no Tm either (doc/intensity.md section 4)
         call record_intensity([0.2_dp], 0.01_dp, g0, im, stat)
         call check(error, stat, SEISPULSE_SUCCESS)
         if (allocated(error)) return
@@ -290,7 +290,12 @@ contains
         if (allocated(error)) return
         call check(error, .not. im%arias > 0.0_dp .and. ieee_is_nan(im%d5_95), 'one sample')
         if (allocated(error)) return
-        call check(error, im%tm > 0.0_dp, 'one sample: Tm')
+        call check(error, ieee_is_nan(im%tm), 'one sample: Tm NaN')
+        if (allocated(error)) return
+        call mean_period([0.2_dp], 0.01_dp, tm1, stat)
+        call check(error, stat, SEISPULSE_SUCCESS)
+        if (allocated(error)) return
+        call check(error, ieee_is_nan(tm1), 'mean_period of one sample: NaN')
     end subroutine test_no_energy
 
     subroutine test_errors(error)

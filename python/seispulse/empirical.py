@@ -13,6 +13,9 @@ SLAMMER 1.1 offers them (Fortran module ``seispulse_empirical``, doc/empirical.m
 
 Units are the sources': yields and accelerations in g, PGV in cm/s, Arias intensity in
 m/s, periods in s; displacements come back in cm (``disp_cm``) and m (``disp_m``).
+:func:`seispulse.records.intensity` gives ``pgv`` in m/s: pass its ``pgv_cm_s`` (cm/s),
+e.g. ``im = records.intensity(rec); saygili_rathje_2008_pgv(ky, im.pga, im.pgv_cm_s)``;
+its ``pga`` (g), ``arias`` (m/s) and ``tm`` (s) are in these units already.
 Every argument broadcasts like a numpy ufunc. ``sigma`` is the standard deviation of
 log10 D or of ln D as the source gives it (``log_base`` 'log10' or 'ln'); ``d16_cm`` and
 ``d84_cm`` are the median divided and multiplied by base**sigma (the 16 % and 84 %
@@ -67,15 +70,48 @@ def _spread(disp, sigma, base):
     return disp / factor, disp * factor
 
 
+def _loop(wrapper, arrays, before=(), after=()):
+    """Broadcast the named inputs ({name: value}), run the element-by-element wrapper
+    (scalar arguments `before` and `after` the arrays) and return (shape, outputs). An
+    element out of range raises InvalidInputError naming it as name[index] of the
+    argument the caller passed (the wrapper stops at the first bad element: found by
+    bisecting on prefixes, log2(n) more calls, on the error path only)."""
+    shape, arr = _core.broadcast(**arrays)
+    flat = [_core.flat(arr[name], shape) for name in arrays]
+    *outs, stat, msg = wrapper(*before, *flat, *after)
+    if stat != _core.SEISPULSE_SUCCESS and len(flat[0]) > 1:
+        good, bad = 0, len(flat[0])             # prefix `good` passes, prefix `bad` fails
+        while bad - good > 1:
+            mid = (good + bad) // 2
+            if wrapper(*before, *(f[:mid] for f in flat), *after)[-2] == \
+                    _core.SEISPULSE_SUCCESS:
+                good = mid
+            else:
+                bad = mid
+        index = np.unravel_index(bad - 1, shape)
+        _core.raise_for_status(stat, msg, rename={name: _element(name, arr[name], index)
+                                                  for name in arrays})
+    _core.raise_for_status(stat, msg)
+    return shape, outs
+
+
+def _element(name, arr, index):
+    """`name` with the index of its element at the broadcast `index` (a single value: the
+    bare name, the same for every element)."""
+    if arr.size == 1:
+        return name
+    own = index[len(index) - arr.ndim:]
+    return f"{name}[{', '.join(str(0 if n == 1 else int(k)) for n, k in zip(arr.shape, own))}]"
+
+
 def _base_names(base, shape):
     return _core.names([_BASES.get(code, "") for code in range(max(_BASES) + 1)], base, shape)
 
 
 def _rigid(model, ky, pga=0.0, pgv=0.0, arias=0.0, magnitude=0.0):
-    shape, arr = _core.broadcast(ky=ky, pga=pga, pgv=pgv, arias=arias, magnitude=magnitude)
-    flat = [_core.flat(arr[name], shape) for name in ("ky", "pga", "pgv", "arias", "magnitude")]
-    disp, sigma, base, stat, msg = sp_emp_rigid(model, *flat)
-    _core.raise_for_status(stat, msg)
+    shape, (disp, sigma, base) = _loop(sp_emp_rigid, {"ky": ky, "pga": pga, "pgv": pgv,
+                                                      "arias": arias, "magnitude": magnitude},
+                                       before=(model,))
     d16, d84 = _spread(disp, sigma, base)
     disp_cm, sig, lo, hi = _core.shaped(shape, disp, sigma, d16, d84)
     return Displacement(disp_cm, disp_cm / 100.0, sig, _base_names(base, shape), lo, hi)
@@ -129,14 +165,15 @@ def saygili_rathje_2008_pga(ky, pga):
 
 
 def saygili_rathje_2008_pgv(ky, pga, pgv):
-    """Saygili & Rathje (2008), PGA-PGV model (E.9), PGV in cm/s; sigma 0.41 + 0.52 ky/PGA
+    """Saygili & Rathje (2008), PGA-PGV model (E.9), PGV in cm/s (a record's
+    ``records.intensity(rec).pgv_cm_s``, not its ``pgv`` in m/s); sigma 0.41 + 0.52 ky/PGA
     (ln)."""
     return _rigid(_f.EMP_SR08_PGA_PGV, ky, pga=pga, pgv=pgv)
 
 
 def saygili_rathje_2008_pgv_arias(ky, pga, pgv, arias):
-    """Saygili & Rathje (2008), PGA-PGV-Ia model (E.10), PGV cm/s, Ia m/s; sigma
-    0.20 + 0.79 ky/PGA (ln)."""
+    """Saygili & Rathje (2008), PGA-PGV-Ia model (E.10), PGV cm/s (``pgv_cm_s`` of
+    records.intensity, not its ``pgv`` in m/s), Ia m/s; sigma 0.20 + 0.79 ky/PGA (ln)."""
     return _rigid(_f.EMP_SR08_PGA_PGV_ARIAS, ky, pga=pga, pgv=pgv, arias=arias)
 
 
@@ -157,10 +194,8 @@ def bray_travasarou_2007(ky, ts, sa, magnitude, slammer=False):
     slammer=True: SLAMMER 1.1's arithmetic (Eq. 5 at every ts, its polynomial normal
     distribution, which is wrong for P(D = 0) > 1/2: doc/empirical.md section 5)."""
     slammer = _core.check_bool("slammer", slammer)
-    shape, arr = _core.broadcast(ky=ky, ts=ts, sa=sa, magnitude=magnitude)
-    flat = [_core.flat(arr[name], shape) for name in ("ky", "ts", "sa", "magnitude")]
-    disp, sigma, p_zero, stat, msg = sp_emp_bray_travasarou(*flat, int(slammer))
-    _core.raise_for_status(stat, msg)
+    shape, (disp, sigma, p_zero) = _loop(sp_emp_bray_travasarou, {
+        "ky": ky, "ts": ts, "sa": sa, "magnitude": magnitude}, after=(int(slammer),))
     base = np.full(disp.shape, _f.EMP_LN)
     d16, d84 = _spread(disp, sigma, base)
     disp_cm, sig, lo, hi, p0 = _core.shaped(shape, disp, sigma, d16, d84, p_zero)
@@ -171,8 +206,9 @@ def rathje_antonakos_2011(ky, ts, tm, pga, magnitude=None, pgv=None, slammer=Fal
     """Rathje & Antonakos (2011), the unified model (E.26)-(E.32): the displacement of a
     sliding mass of site period ts (s) under a motion of mean period tm (s) and peak
     acceleration pga (g): kmax from ts/tm and pga, then Rathje & Saygili (2009) with
-    magnitude (the 'pga_m' form) or Saygili & Rathje (2008) with pgv (cm/s; kvelmax, the
-    'pga_pgv' form) at kmax, times the period factor. Give exactly one of magnitude and
+    magnitude (the 'pga_m' form) or Saygili & Rathje (2008) with pgv (cm/s: a record's
+    ``records.intensity(rec).pgv_cm_s``; kvelmax, the 'pga_pgv' form) at kmax, times the
+    period factor. Give exactly one of magnitude and
     pgv. ky >= kmax: no sliding (0).
 
     slammer=True: SLAMMER 1.1's rules, ts/tm capped at 8 and 0 also when ky > pga."""
@@ -182,13 +218,10 @@ def rathje_antonakos_2011(ky, ts, tm, pga, magnitude=None, pgv=None, slammer=Fal
                                 "PGA-M form; pgv in cm/s: the PGA-PGV form)")
     form, name = ((_f.EMP_RA11_PGA_M, "pga_m") if pgv is None else
                   (_f.EMP_RA11_PGA_PGV, "pga_pgv"))
-    shape, arr = _core.broadcast(ky=ky, ts=ts, tm=tm, pga=pga,
-                                 pgv=0.0 if pgv is None else pgv,
-                                 magnitude=0.0 if magnitude is None else magnitude)
-    flat = [_core.flat(arr[k], shape) for k in ("ky", "ts", "tm", "pga", "pgv", "magnitude")]
-    disp, sigma, kmax, kvel, drig, stat, msg = sp_emp_rathje_antonakos(form, *flat,
-                                                                       int(slammer))
-    _core.raise_for_status(stat, msg)
+    shape, (disp, sigma, kmax, kvel, drig) = _loop(sp_emp_rathje_antonakos, {
+        "ky": ky, "ts": ts, "tm": tm, "pga": pga, "pgv": 0.0 if pgv is None else pgv,
+        "magnitude": 0.0 if magnitude is None else magnitude},
+        before=(form,), after=(int(slammer),))
     base = np.full(disp.shape, _f.EMP_LN)
     d16, d84 = _spread(disp, sigma, base)
     disp_cm, sig, lo, hi, km, kv, dr = _core.shaped(shape, disp, sigma, d16, d84, kmax, kvel,
@@ -201,7 +234,5 @@ def probability_of_failure(disp_cm):
     """Jibson et al. (2000), (E.35): P(failure) = 0.335 [1 - exp(-0.048 D^1.565)], D the
     Newmark displacement in cm (>= 0). Calibrated on shallow, disrupted landslides of the
     1994 Northridge earthquake."""
-    arr = _core.as_float_array("disp_cm", disp_cm)
-    p, stat, msg = sp_emp_probability_of_failure(_core.flat(arr, arr.shape))
-    _core.raise_for_status(stat, msg, rename={"disp": "disp_cm"})
-    return _core.shaped(arr.shape, p)[0]
+    shape, (p,) = _loop(sp_emp_probability_of_failure, {"disp_cm": disp_cm})
+    return _core.shaped(shape, p)[0]

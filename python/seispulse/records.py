@@ -324,11 +324,19 @@ def from_array(accel, dt, units="g", name="record"):
     return Record(arr, dt, name=name)
 
 
-#: Intensity measures of a record (doc/intensity.md): pga (g), pgv (m/s), pgd (m),
-#: arias (m/s), cav (m/s), d5_75, d5_95 (s), t5, t75, t95 (s from the first sample),
-#: tm (s).
-Intensity = namedtuple("Intensity", ["pga", "pgv", "pgd", "arias", "cav", "d5_75", "d5_95",
-                                     "t5", "t75", "t95", "tm"])
+class Intensity(namedtuple("Intensity", ["pga", "pgv", "pgd", "arias", "cav", "d5_75",
+                                         "d5_95", "t5", "t75", "t95", "tm"])):
+    """Intensity measures of a record (doc/intensity.md): pga (g), pgv (m/s), pgd (m),
+    arias (m/s), cav (m/s), d5_75, d5_95 (s), t5, t75, t95 (s from the first sample),
+    tm (s); and the property ``pgv_cm_s``, the PGV in cm/s, the unit of the empirical
+    models of :mod:`seispulse.empirical` (``pgv`` is m/s: pass ``pgv_cm_s`` to them)."""
+
+    __slots__ = ()
+
+    @property
+    def pgv_cm_s(self):
+        """Peak ground velocity (cm/s): 100 * pgv, the unit seispulse.empirical takes."""
+        return 100.0 * self.pgv
 
 
 def intensity(rec_or_accel, dt=None, g=STANDARD_GRAVITY):
@@ -337,7 +345,10 @@ def intensity(rec_or_accel, dt=None, g=STANDARD_GRAVITY):
     The acceleration is linear between samples and every measure is exact for it:
 
     * ``pga`` max |a| (g); ``pgv`` (m/s) and ``pgd`` (m) the largest |velocity| and
-      |displacement| from rest at the first sample, between the samples too;
+      |displacement| from rest at the first sample, between the samples too; the
+      property ``pgv_cm_s`` is the PGV in cm/s, the unit of :mod:`seispulse.empirical`
+      (e.g. ``saygili_rathje_2008_pgv(ky, im.pga, im.pgv_cm_s)``; ``arias`` (m/s) and
+      ``tm`` (s) go in as they are);
     * ``arias`` = pi/(2g) int a^2 dt (m/s, a in m/s^2) [A70]; ``cav`` = int |a| dt
       (m/s) [EPRI88], sign changes inside a step included;
     * ``t5``, ``t75``, ``t95`` (s from the first sample): the first times the Husid
@@ -347,8 +358,8 @@ def intensity(rec_or_accel, dt=None, g=STANDARD_GRAVITY):
       amplitudes C at 0.25 <= f <= 20 Hz, the record zero-padded to the next power of
       two >= max(npts, 20/dt) points (df <= 0.05 Hz).
 
-    A record without energy (all zeros, or one sample) has NaN durations and times, and
-    Tm is NaN when no frequency of 0.25-20 Hz carries energy.
+    A record without energy (all zeros, or one sample) has NaN durations, times and Tm,
+    and Tm is NaN when no frequency of 0.25-20 Hz carries energy.
 
     Parameters
     ----------

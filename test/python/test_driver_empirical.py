@@ -204,3 +204,56 @@ def test_input_errors_are_located(driver, tmp_path, body, expected):
     assert expected in proc.stderr, proc.stderr
     assert proc.stderr.count("\n") == 1
     assert not (tmp_path / "out").exists()
+
+
+def _write_record(path, accel, dt=0.02):
+    lines = ["# " + path.stem, "# time_s, accel_g"]
+    lines += [f"{i * dt:.2f},{a!r}" for i, a in enumerate(accel)]
+    path.write_text("\n".join(lines) + "\n")
+
+
+def test_record_without_energy_gives_no_sliding(driver, tmp_path):
+    """A record of zeros (PGA = 0, Ia = 0) among good ones: every model's row is there,
+    with disp 0 (no sliding, as at ky >= PGA), status 0 and P(D = 0) = 1, and the run is
+    a success; the good record's rows are the API's."""
+    shutil.copytree(RECORDS, tmp_path / "records")
+    _write_record(tmp_path / "records" / "zero.csv", [0.0] * 201)
+    proc = run(driver, tmp_path, """&run analysis = 'empirical', output = 'out/z' /
+&records files = 'records/zero.csv', 'records/quake_b.csv' /
+&empirical ky = 0.1, magnitude = 6.5, ts = 0.2 /
+""")
+    assert proc.returncode == 0, proc.stderr
+    rows = read_rows(tmp_path / "out" / "z_empirical.csv")
+    zero = [r for r in rows if r["case"] == 1]
+    good = [r for r in rows if r["case"] == 2]
+    assert len(zero) == len(good) == 14
+    assert [r["model"] for r in zero] == [r["model"] for r in good]
+    assert all(r["disp"] == 0.0 and r["d16"] == 0.0 and r["d84"] == 0.0
+               and r["p_failure"] == 0.0 and r["status"] == 0.0 for r in zero)
+    assert [r["p_zero"] for r in zero if r["model"] == "bray_travasarou_2007"] == [1.0]
+    assert all(r["pga"] == 0.0 and r["arias"] == 0.0 and math.isnan(r["tm"]) for r in zero)
+    check_rows_against_api(good)
+
+
+def test_tm_nan_fails_unified_rows_and_names_the_record(driver, tmp_path):
+    """A record with energy but no Fourier amplitude at 0.25-20 Hz (dt = 3 s: Tm NaN)
+    keeps its unified-model rows, failed (status 1, NaN) with a message naming tm, next to
+    the other models' results; the summary names that record, and only it."""
+    shutil.copytree(RECORDS, tmp_path / "records")
+    _write_record(tmp_path / "records" / "slow.csv", [0.0, 0.2, -0.1, 0.15, 0.0], dt=3.0)
+    proc = run(driver, tmp_path, """&run analysis = 'empirical', output = 'out/t' /
+&records files = 'records/quake_b.csv', 'records/slow.csv' /
+&empirical ky = 0.05, magnitude = 6.5, ts = 0.2 /
+""")
+    assert proc.returncode == 1
+    rows = read_rows(tmp_path / "out" / "t_empirical.csv")
+    slow = [r for r in rows if r["case"] == 2]
+    assert len(slow) == 14 and math.isnan(slow[0]["tm"]) and slow[0]["pga"] == 0.2
+    ra = [r for r in slow if r["model"].startswith("rathje_antonakos_2011")]
+    assert len(ra) == 2 and all(r["status"] == 1.0 and math.isnan(r["disp"]) for r in ra)
+    check_rows_against_api([r for r in slow if not r["model"].startswith("rathje_antonakos")])
+    assert "rathje_antonakos_2011_m, ky = 0.05: tm = NaN" in proc.stderr
+    last = proc.stderr.strip().splitlines()[-1]
+    assert "2 of 28 rows failed (records: 2 'slow')" in last, last
+    assert "quake_b" not in last
+

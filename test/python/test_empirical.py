@@ -3,6 +3,7 @@ through the library), the published examples of Bray & Travasarou (2007), SLAMME
 Java formulas (RigidBlockSimplified, CoupledSimplified, UnifiedModel) rewritten here and
 compared at the digits SLAMMER prints, and bad input naming the parameter."""
 import math
+import re
 
 import numpy as np
 import pytest
@@ -300,9 +301,9 @@ def test_bray_travasarou_matches_slammer_where_it_is_right():
 
 def test_bray_travasarou_slammer_wrong_for_likely_zero():
     """For P(D = 0) > 1/2 (x < 0) SLAMMER's polynomial is outside its domain: with ky 0.3,
-    Ts 0.3 s and Sa 0.22 g (x = -3.0) it gives a probability above 1, with Sa 0.1 g
+    Ts 0.3 s and Sa 0.22 g (x = -3.04) it gives a probability above 1 (1.628), with Sa 0.1 g
     (x = -5.8, past the pole at -1/0.2316419) a negative one; the exact values are
-    0.9986... and 0.99999999..."""
+    0.99881... and 0.99999999..."""
     for sa, wrong in ((0.22, lambda p: p > 1.5), (0.1, lambda p: p < 0.0)):
         d_s, p_s = slammer_bt07(0.3, 0.3, sa, 7.0)
         assert wrong(p_s)
@@ -310,6 +311,25 @@ def test_bray_travasarou_slammer_wrong_for_likely_zero():
         x = -1.76 - 3.22 * math.log(0.3) - 0.484 * 0.3 * math.log(0.3) + 3.52 * math.log(sa)
         assert r.p_zero == pytest.approx(0.5 * math.erfc(x / math.sqrt(2)), rel=1e-14)
         assert 0.998 < r.p_zero < 1.0
+
+
+def test_doc_example_of_slammer_polynomial(source_root):
+    """doc/empirical.md section 5 states x, SLAMMER's value and the exact P(D = 0) of its
+    example inputs: the printed digits are those of the inputs it names."""
+    text = (source_root / "doc" / "empirical.md").read_text(encoding="utf-8")
+    m = re.search(r"at x = (-[\d.]+) \(ky = ([\d.]+), Ts = ([\d.]+) s, Sa = ([\d.]+) g\)"
+                  r"\s+it gives ([\d.]+) instead of ([\d.]+)", text)
+    assert m, "the example sentence of doc/empirical.md section 5"
+    x_doc, ky, ts, sa, slam_doc, exact_doc = (float(v) for v in m.groups())
+    x = -1.76 - 3.22 * math.log(ky) - 0.484 * ts * math.log(ky) + 3.52 * math.log(sa)
+    decimals = lambda s: len(s.split(".")[1]) if "." in s else 0
+    assert round(x, decimals(m.group(1))) == x_doc
+    p_slammer = slammer_bt07(ky, ts, sa, 7.0)[1]
+    assert round(p_slammer, decimals(m.group(5))) == slam_doc
+    exact = 0.5 * math.erfc(x / math.sqrt(2))
+    assert round(exact, decimals(m.group(6))) == exact_doc
+    assert empirical.bray_travasarou_2007(ky, ts, sa, 7.0, slammer=True).p_zero == \
+        pytest.approx(p_slammer, rel=1e-14)
 
 
 def test_unified_matches_slammer():
@@ -374,3 +394,22 @@ def test_readme_example(source_root, capsys):
     assert len(printed) == 4 and len(stated) == 4
     for out, claim in zip(printed, stated):
         assert claim.startswith(out), (out, claim)
+
+
+@pytest.mark.parametrize("call, start", [
+    (lambda: empirical.rathje_antonakos_2011([0.1, 0.1], [0.3, 0.3], [0.5, -1], 0.4,
+                                             magnitude=7), "tm[1] = -1"),
+    (lambda: empirical.jibson_2007_ratio([[0.1], [0.2]], [0.3, 0.15, 0.5]),
+     "ky[1, 0] = 0.2: ky/pga"),
+    (lambda: empirical.jibson_1993([1.0, 2.0, 3.0, -4.0, 5.0], 0.1), "arias[3] = -4"),
+    (lambda: empirical.bray_travasarou_2007(0.1, 0.2, [0.5, 0.6], [7.0, 12.0]),
+     "magnitude[1] = 12"),
+    (lambda: empirical.probability_of_failure([1.0, np.nan]), "disp_cm[1] = NaN"),
+    (lambda: empirical.jibson_1993([1.0, 2.0], -0.1), "ky = -0.1"),
+])
+def test_broadcast_errors_name_the_element(call, start):
+    """An element out of range is named by its index in the argument passed (a single
+    value, the same for every element, by its bare name)."""
+    with pytest.raises(InvalidInputError) as info:
+        call()
+    assert str(info.value).startswith(start), str(info.value)

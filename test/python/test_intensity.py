@@ -5,6 +5,8 @@ reproduced exactly), Tm against numpy.fft, spectral acceleration against
 seispulse.sdof, argument errors."""
 from pathlib import Path
 
+import math
+
 import numpy as np
 import pytest
 from scipy.integrate import cumulative_trapezoid
@@ -158,7 +160,25 @@ def test_records_without_energy():
     assert (im.pga, im.pgv, im.pgd, im.arias, im.cav) == (0.0, 0.0, 0.0, 0.0, 0.0)
     assert all(np.isnan([im.d5_75, im.d5_95, im.t5, im.t75, im.t95, im.tm]))
     one = records.intensity([0.1], 0.01)
-    assert one.arias == 0.0 and np.isnan(one.d5_95) and one.tm > 0
+    assert one.arias == 0.0 and np.isnan(one.d5_95) and np.isnan(one.tm)
+
+
+def test_pgv_in_the_units_of_the_empirical_models():
+    """Intensity.pgv is m/s; pgv_cm_s is the same peak in cm/s, the unit the empirical
+    models take: fed to saygili_rathje_2008_pgv it gives the model at PGV (cm/s) written
+    out ([SR08] PGA-PGV, doc/empirical.md (E.9))."""
+    from seispulse import empirical
+    dt = 0.01
+    t = np.arange(400) * dt
+    im = records.intensity(0.3 * np.sin(2 * np.pi * t) * np.exp(-t), dt)
+    assert isinstance(im, tuple) and len(im) == 11 and im._fields[-1] == "tm"
+    assert im.pgv_cm_s == 100.0 * im.pgv and 10.0 < im.pgv_cm_s < 100.0
+    ky, r = 0.1, 0.1 / im.pga
+    pgv = 100.0 * im.pgv
+    ln_d = (-1.56 - 4.58 * r - 20.84 * r**2 + 44.75 * r**3 - 30.50 * r**4
+            - 0.64 * math.log(im.pga) + 1.55 * math.log(pgv))
+    d = empirical.saygili_rathje_2008_pgv(ky, im.pga, im.pgv_cm_s)
+    assert d.disp_cm == pytest.approx(math.exp(ln_d), rel=1e-13)
 
 
 @pytest.mark.parametrize("args, kwargs, name", [

@@ -12,8 +12,8 @@
 !> integral, on a bracket that holds by construction.
 !>
 !> A record without energy (every sample 0, or a single sample) has no Husid curve: its
-!> durations and times are NaN, as is Tm when no frequency of 0.25-20 Hz carries energy;
-!> this is no error (doc/intensity.md section 4).
+!> durations, times and Tm are NaN, as is Tm when no frequency of 0.25-20 Hz carries
+!> energy; this is no error (doc/intensity.md section 4).
 module seispulse_intensity
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
     use seispulse_kinds, only: dp
@@ -150,7 +150,8 @@ contains
     !>     Tm = sum(C_k^2 / f_k) / sum(C_k^2)   over 0.25 Hz <= f_k <= 20 Hz,
     !> C_k = |X_k| the amplitudes of the DFT of the samples zero-padded to
     !> N = next power of two >= max(n, 20/dt) points (df = 1/(N dt) <= 0.05 Hz),
-    !> f_k = k / (N dt). NaN when no frequency of the band carries energy.
+    !> f_k = k / (N dt). NaN for a record without energy (every sample 0, or a single
+    !> sample: no step, no motion) and when no frequency of the band carries energy.
     subroutine mean_period(accel, dt, tm, stat, errmsg)
         real(dp), intent(in) :: accel(:)                      !! ground acceleration (any units)
         real(dp), intent(in) :: dt                            !! time step (s), > 0
@@ -181,7 +182,7 @@ contains
             return
         end if
         pga = record_pga(accel)
-        if (.not. pga > 0.0_dp) return
+        if (.not. pga > 0.0_dp .or. n < 2) return
         allocate(x(npad))
         x(:) = (0.0_dp, 0.0_dp)
         x(1:n) = cmplx(accel / pga, 0.0_dp, kind=dp)
