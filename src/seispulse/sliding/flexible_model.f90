@@ -258,6 +258,14 @@ contains
             iterations = it
             gamma_pct = 100.0_dp * strain_factor * u_peak / mass%height          ! (F.17)
             call eql_properties(gamma_pct, mass%ref_strain_pct, g_ratio, d_mat)
+            if (.not. (ieee_is_finite(d_mat) .and. g_ratio > 0.0_dp)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ref_strain_pct = ' &
+                               //real_str(mass%ref_strain_pct)//': the strain ratio ' &
+                               //'gamma_eff/gamma_r = '//real_str(gamma_pct) &
+                               //'/ref_strain_pct overflows; must be a larger reference ' &
+                               //'strain (percent)')
+                return
+            end if
             vs_new = mass%vs * sqrt(g_ratio)                                     ! (F.19)
             dg_pct = abs((vs * vs - vs_new * vs_new) / (vs * vs)) * 100.0_dp     ! (F.23)
             if (d_mat_prev > 0.0_dp) then
