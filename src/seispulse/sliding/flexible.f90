@@ -21,7 +21,13 @@
 !> Sign: positive record acceleration drives downslope (positive) sliding in both
 !> analyses. SLAMMER reaches the same by flipping the sign of its input inside the
 !> decoupled analysis and not inside the coupled one; here the coupled rule runs on the
-!> flipped record, as SLAMMER does, and its histories are turned back.
+!> flipped record, as SLAMMER does, and its histories are turned back. kmax has the sign
+!> of the HEA of the record as given in both analyses (SLAMMER's Coupled reports -kmax).
+!>
+!> Displacement: max_disp is the largest |s| over the run; SLAMMER publishes |s| at the end
+!> of the record (|final_disp|). They differ only where SLAMMER's coupled trapezoid steps
+!> back after an onset. SLAMMER's coupled arithmetic is used only for omega dt <= 10
+!> (slammer_coupled_wdt_max); SLAMMER's decoupled arithmetic is stable at any omega dt.
 module seispulse_flexible
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use seispulse_kinds, only: dp

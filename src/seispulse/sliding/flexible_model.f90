@@ -52,7 +52,9 @@ module seispulse_flexible_model
         real(dp) :: height = 0.0_dp          !! H (m) > 0
         real(dp) :: vs = 0.0_dp              !! shear-wave velocity of the sliding mass (m/s) > 0
         real(dp) :: vs_base = 0.0_dp         !! Vs below the slip surface (m/s) > 0
-        real(dp) :: damping = 0.05_dp        !! user viscous damping (fraction), -0.5 <= d < 1
+        !> user viscous damping (fraction), -0.5 <= d < 1; the analyses also need d + xi_f >= 0
+        !> (and < 1 for the exact rule), xi_f the radiation damping
+        real(dp) :: damping = 0.05_dp
         integer :: soil = SOIL_LINEAR        !! SOIL_LINEAR or SOIL_EQUIVALENT_LINEAR
         real(dp) :: ref_strain_pct = 0.05_dp !! reference strain (percent) > 0 (EQL only)
         integer :: max_iter = 100            !! equivalent-linear iteration cap >= 1
@@ -60,10 +62,14 @@ module seispulse_flexible_model
 
     !> Result of a decoupled or coupled analysis (SI).
     type :: flexible_result_t
-        real(dp) :: max_disp = 0.0_dp        !! largest |s| (m)
+        !> largest |s| over the run (m); SLAMMER publishes |final_disp|, which is smaller
+        !> only where its coupled trapezoid steps back after an onset (doc/flexible.md
+        !> section 4)
+        real(dp) :: max_disp = 0.0_dp
         real(dp) :: final_disp = 0.0_dp      !! s at the end (m) (signed for two-way exact)
         !> signed HEA of largest |value| (g) of the final decoupled response to the record as
-        !> given (SLAMMER's tables print |kmax|)
+        !> given, both analyses (SLAMMER's Decoupled sign; its Coupled reports -kmax, its
+        !> tables print |kmax|)
         real(dp) :: kmax = 0.0_dp
         real(dp) :: vs_final = 0.0_dp        !! Vs used for the final response (m/s)
         !> total damping used (fraction): material (or the user's) + radiation
