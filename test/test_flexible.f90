@@ -842,31 +842,32 @@ contains
                  78.89116877491246_dp, 0.28888464563895105_dp, [0.0_dp, 0.02_dp], &
                  [0.15_dp, 0.06_dp])
         if (allocated(error)) return
+        ! (decoupled, coupled) pairs: the same kmax, Vs and damping
         ! three rows [(0, 0.15 g), (2 cm, 0.08 g), (10 cm, 0.04 g)]: the row after row 2
-        call one(.false., a, 0.15_dp, m1, 53.133062784929194_dp, 0.2438057480095921_dp, &
-                 78.89116877491246_dp, 0.28888464563895105_dp, [0.0_dp, 0.02_dp, 0.1_dp], &
-                 [0.15_dp, 0.08_dp, 0.04_dp])
-        if (allocated(error)) return
-        call one(.true., a, 0.15_dp, m1, 83.24605469350666_dp, 0.2438057480095921_dp, &
-                 78.89116877491246_dp, 0.28888464563895105_dp, [0.0_dp, 0.02_dp, 0.1_dp], &
-                 [0.15_dp, 0.08_dp, 0.04_dp])
+        call pair(a, 0.15_dp, m1, [53.133062784929194_dp, 83.24605469350666_dp], &
+                  [0.2438057480095921_dp, 78.89116877491246_dp, 0.28888464563895105_dp], &
+                  [0.0_dp, 0.02_dp, 0.1_dp], [0.15_dp, 0.08_dp, 0.04_dp])
         if (allocated(error)) return
         ! a reference strain of 0.001 %: Vs 250 -> 12.2 m/s
         m1%ref_strain_pct = 0.001_dp
-        call one(.false., a, 0.1_dp, m1, 0.05122061132280804_dp, 0.12193044308666648_dp, &
-                 12.213196669466289_dp, 0.23220781055611783_dp)
-        if (allocated(error)) return
-        call one(.true., a, 0.1_dp, m1, 0.24898093033406518_dp, 0.12193044308666648_dp, &
-                 12.213196669466289_dp, 0.23220781055611783_dp)
+        call pair(a, 0.1_dp, m1, [0.05122061132280804_dp, 0.24898093033406518_dp], &
+                  [0.12193044308666648_dp, 12.213196669466289_dp, 0.23220781055611783_dp])
         if (allocated(error)) return
         ! user damping 0.9 (total 1.1), linear, inverse polarity
         m1 = flexible_mass_t(height=30.0_dp, vs=250.0_dp, vs_base=600.0_dp, damping=0.9_dp)
-        call one(.false., -a, 0.1_dp, m1, 114.80295143020008_dp, 0.6576724151652487_dp, &
-                 250.0_dp, 1.1_dp)
-        if (allocated(error)) return
-        call one(.true., -a, 0.1_dp, m1, 108.33866461790474_dp, 0.6576724151652487_dp, &
-                 250.0_dp, 1.1_dp)
+        call pair(-a, 0.1_dp, m1, [114.80295143020008_dp, 108.33866461790474_dp], &
+                  [0.6576724151652487_dp, 250.0_dp, 1.1_dp])
     contains
+        !> decoupled then coupled: disp_cm(2), props = (|kmax| g, Vs m/s, damping)
+        subroutine pair(rec, ky, mass, disp_cm, props, tdisp, tky)
+            real(dp), intent(in) :: rec(:), ky, disp_cm(2), props(3)
+            type(flexible_mass_t), intent(in) :: mass
+            real(dp), intent(in), optional :: tdisp(:), tky(:)
+            call one(.false., rec, ky, mass, disp_cm(1), props(1), props(2), props(3), tdisp, &
+                     tky)
+            if (allocated(error)) return
+            call one(.true., rec, ky, mass, disp_cm(2), props(1), props(2), props(3), tdisp, tky)
+        end subroutine pair
         subroutine one(coupled, rec, ky, mass, disp_cm, kmax, vs, damp, tdisp, tky)
             logical, intent(in) :: coupled
             real(dp), intent(in) :: rec(:), ky
