@@ -402,7 +402,7 @@ contains
         m = good
         m%height = 1.0e-300_dp
         call flexible_decoupled(a, 0.01_dp, 0.1_dp, m, FLEX_EXACT, g0, res, stat, msg)
-        call expect('height = 0.1E-299, vs = 200.0: omega = pi vs/(2 height) = ')
+        call expect('height = 0.1E-299, vs = 200.0: omega = pi vs/(2 height) must be in [')
         if (allocated(error)) return
         ! SLAMMER's coupled arithmetic beyond omega dt = 10: H = 0.1 m, omega dt = 31.4
         m = good
@@ -434,15 +434,8 @@ contains
         m%ref_strain_pct = 1.0e-300_dp
         call flexible_decoupled(a, 0.01_dp, 0.1_dp, m, FLEX_EXACT, g0, res, stat, msg)
         call expect('ref_strain_pct = 0.1E-299: the strain ratio')
-        if (allocated(error)) return
-        ! valid input whose response overflows: the neutral message (both rules)
-        call flexible_decoupled(1.5e306_dp * a, 0.01_dp, 0.1_dp, good, FLEX_SLAMMER, g0, &
-                                res, stat, msg)
-        call expect('the response overflows (omega = ')
-        if (allocated(error)) return
-        call flexible_decoupled(1.5e308_dp * a, 0.01_dp, 0.1_dp, good, FLEX_EXACT, g0, res, &
-                                stat, msg)
-        call expect('the response overflows (omega = ')
+        ! (valid input whose response overflows: test_newmark_flexible_api.py, as this
+        ! suite also runs with overflow traps)
 
     contains
 

@@ -289,7 +289,7 @@ def test_slammer_coupled_unstable_range_rejected(height):
     (dict(height=1e-300), r"^height = 0\.1E-299, vs = 250\.0: omega = pi vs/\(2 height\)"),
     (dict(vs=1e300), r"^height = 20\.0, vs = 0\.1E\+301: omega = "),
     (dict(soil="equivalent_linear", ref_strain_pct=1e-300),
-     r"^ref_strain_pct = 0\.1E-299: the strain ratio gamma_eff/gamma_r = .* overflows"),
+     r"^ref_strain_pct = 0\.1E-299: the strain ratio gamma_eff/gamma_r = .* exceeds"),
 ])
 def test_messages_name_the_parameter(analysis, method, changes, pattern):
     """Input that makes the response diverge or overflow is rejected up front, naming the

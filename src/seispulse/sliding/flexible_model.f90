@@ -46,6 +46,8 @@ module seispulse_flexible_model
     real(dp), parameter :: eql_tolerance_pct = 5.0_dp
     !> below this strain ratio gamma/gamma_r the Masing damping is its series (F.20)
     real(dp), parameter :: masing_series_below = 0.1_dp
+    !> largest strain ratio gamma_eff/gamma_r of the iteration: (F.20) stays finite (x^2)
+    real(dp), parameter :: strain_ratio_max = 1.0e150_dp
 
     !> The flexible sliding mass (SI; damping as a fraction, the reference strain in percent).
     type :: flexible_mass_t
@@ -263,15 +265,19 @@ contains
             if (stat /= SEISPULSE_SUCCESS) return
             iterations = it
             gamma_pct = 100.0_dp * strain_factor * u_peak / mass%height          ! (F.17)
-            call eql_properties(gamma_pct, mass%ref_strain_pct, g_ratio, d_mat)
-            if (.not. (ieee_is_finite(d_mat) .and. g_ratio > 0.0_dp)) then
+            if (.not. ieee_is_finite(gamma_pct)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'the response ' &
+                               //'overflows (equivalent-linear pass '//int_str(it)//')')
+                return
+            else if (gamma_pct / strain_ratio_max > mass%ref_strain_pct) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ref_strain_pct = ' &
                                //real_str(mass%ref_strain_pct)//': the strain ratio ' &
                                //'gamma_eff/gamma_r = '//real_str(gamma_pct) &
-                               //'/ref_strain_pct overflows; must be a larger reference ' &
-                               //'strain (percent)')
+                               //'/ref_strain_pct exceeds '//real_str(strain_ratio_max) &
+                               //'; must be a larger reference strain (percent)')
                 return
             end if
+            call eql_properties(gamma_pct, mass%ref_strain_pct, g_ratio, d_mat)
             vs_new = mass%vs * sqrt(g_ratio)                                     ! (F.19)
             dg_pct = abs((vs * vs - vs_new * vs_new) / (vs * vs)) * 100.0_dp     ! (F.23)
             if (d_mat_prev > 0.0_dp) then
