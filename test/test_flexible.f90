@@ -382,6 +382,60 @@ contains
         m%vs = 0.0_dp
         call flexible_coupled(a, 0.01_dp, 0.1_dp, m, FLEX_SLAMMER, g0, res, stat, msg)
         call expect('vs = ')
+        if (allocated(error)) return
+        ! a negative total damping: xi_f(200 on 800) = 0.55016 x 4^-0.9904 = 0.13938
+        m = good
+        m%vs_base = 800.0_dp
+        m%damping = -0.14_dp
+        call flexible_decoupled(a, 0.01_dp, 0.1_dp, m, FLEX_EXACT, g0, res, stat, msg)
+        call expect('damping = -0.14: with the radiation damping xi_f = 0.13938')
+        if (allocated(error)) return
+        m%soil = SOIL_EQUIVALENT_LINEAR
+        call flexible_coupled(a, 0.01_dp, 0.1_dp, m, FLEX_SLAMMER, g0, res, stat, msg)
+        call expect('damping = -0.14: with the radiation damping xi_f = 0.13938')
+        if (allocated(error)) return
+        m%damping = -0.13_dp   ! total 0.0094: allowed
+        call flexible_coupled(a, 0.01_dp, 0.1_dp, m, FLEX_SLAMMER, g0, res, stat, msg)
+        call check(error, stat, SEISPULSE_SUCCESS, 'total damping 0.0094')
+        if (allocated(error)) return
+        ! omega = pi vs/(2 H) overflows: height named
+        m = good
+        m%height = 1.0e-300_dp
+        call flexible_decoupled(a, 0.01_dp, 0.1_dp, m, FLEX_EXACT, g0, res, stat, msg)
+        call expect('height = 0.1E-299, vs = 200.0: omega = pi vs/(2 height) must be in [')
+        if (allocated(error)) return
+        ! SLAMMER's coupled arithmetic beyond omega dt = 10: H = 0.1 m, omega dt = 31.4
+        m = good
+        m%height = 0.1_dp
+        call flexible_coupled(a, 0.01_dp, 0.1_dp, m, FLEX_SLAMMER, g0, res, stat, msg)
+        call expect('height = 0.1: SLAMMER''s coupled arithmetic is unstable for omega ' &
+                    //'dt = 31.4159265358979 > 10.0')
+        if (allocated(error)) return
+        call check(error, index(msg, 'use method=''exact''') > 0, msg)
+        if (allocated(error)) return
+        call flexible_coupled(a, 0.01_dp, 0.1_dp, m, FLEX_EXACT, g0, res, stat, msg)
+        call check(error, stat, SEISPULSE_SUCCESS, 'exact coupled at omega dt = 31')
+        if (allocated(error)) return
+        call flexible_decoupled(a, 0.01_dp, 0.1_dp, m, FLEX_SLAMMER, g0, res, stat, msg)
+        call check(error, stat, SEISPULSE_SUCCESS, 'SLAMMER decoupled at omega dt = 31')
+        if (allocated(error)) return
+        ! SLAMMER's units: 100 g and accel(i) 100 g finite
+        call flexible_decoupled(a, 0.01_dp, 0.1_dp, good, FLEX_SLAMMER, 1.0e307_dp, res, &
+                                stat, msg)
+        call expect('g = 0.1E+308: 100 g')
+        if (allocated(error)) return
+        call flexible_coupled([a(1:4), 1.0e306_dp], 0.01_dp, 0.1_dp, good, FLEX_SLAMMER, g0, &
+                              res, stat, msg)
+        call expect('accel(5) = 0.1E+307: accel 100 g')
+        if (allocated(error)) return
+        ! a reference strain so small that gamma_eff/gamma_r overflows
+        m = good
+        m%soil = SOIL_EQUIVALENT_LINEAR
+        m%ref_strain_pct = 1.0e-300_dp
+        call flexible_decoupled(a, 0.01_dp, 0.1_dp, m, FLEX_EXACT, g0, res, stat, msg)
+        call expect('ref_strain_pct = 0.1E-299: the strain ratio')
+        ! (valid input whose response overflows: test_newmark_flexible_api.py, as this
+        ! suite also runs with overflow traps)
 
     contains
 
@@ -741,7 +795,8 @@ contains
 
     !> SLAMMER 1.1's Decoupled and Coupled (its Java code, through the harness that calls
     !> them as its GUI does, normal polarity, no scaling) on the synthetic record: disp
-    !> (cm), |kmax| (g), final Vs (m/s) and total damping. Agreement to 1e-9 relative.
+    !> (cm; SLAMMER returns |s| at the end of the record, so |final_disp|), |kmax| (g),
+    !> final Vs (m/s) and total damping. Agreement to 1e-9 relative.
     subroutine test_slammer_java(error)
         type(test_error), allocatable, intent(out) :: error
         real(dp) :: a(1500)
@@ -779,7 +834,33 @@ contains
         call one(.true., a, 0.15_dp, m1, 58.9436826000949_dp, 0.2438057480095921_dp, &
                  78.89116877491246_dp, 0.28888464563895105_dp, [0.0_dp, 0.02_dp], &
                  [0.15_dp, 0.06_dp])
+        if (allocated(error)) return
+        ! (decoupled, coupled) pairs: the same kmax, Vs and damping
+        ! three rows [(0, 0.15 g), (2 cm, 0.08 g), (10 cm, 0.04 g)]: the row after row 2
+        call pair(a, 0.15_dp, m1, [53.133062784929194_dp, 83.24605469350666_dp], &
+                  [0.2438057480095921_dp, 78.89116877491246_dp, 0.28888464563895105_dp], &
+                  [0.0_dp, 0.02_dp, 0.1_dp], [0.15_dp, 0.08_dp, 0.04_dp])
+        if (allocated(error)) return
+        ! a reference strain of 0.001 %: Vs 250 -> 12.2 m/s
+        m1%ref_strain_pct = 0.001_dp
+        call pair(a, 0.1_dp, m1, [0.05122061132280804_dp, 0.24898093033406518_dp], &
+                  [0.12193044308666648_dp, 12.213196669466289_dp, 0.23220781055611783_dp])
+        if (allocated(error)) return
+        ! user damping 0.9 (total 1.1), linear, inverse polarity
+        m1 = flexible_mass_t(height=30.0_dp, vs=250.0_dp, vs_base=600.0_dp, damping=0.9_dp)
+        call pair(-a, 0.1_dp, m1, [114.80295143020008_dp, 108.33866461790474_dp], &
+                  [0.6576724151652487_dp, 250.0_dp, 1.1_dp])
     contains
+        !> decoupled then coupled: disp_cm(2), props = (|kmax| g, Vs m/s, damping)
+        subroutine pair(rec, ky, mass, disp_cm, props, tdisp, tky)
+            real(dp), intent(in) :: rec(:), ky, disp_cm(2), props(3)
+            type(flexible_mass_t), intent(in) :: mass
+            real(dp), intent(in), optional :: tdisp(:), tky(:)
+            call one(.false., rec, ky, mass, disp_cm(1), props(1), props(2), props(3), tdisp, &
+                     tky)
+            if (allocated(error)) return
+            call one(.true., rec, ky, mass, disp_cm(2), props(1), props(2), props(3), tdisp, tky)
+        end subroutine pair
         subroutine one(coupled, rec, ky, mass, disp_cm, kmax, vs, damp, tdisp, tky)
             logical, intent(in) :: coupled
             real(dp), intent(in) :: rec(:), ky
@@ -797,7 +878,8 @@ contains
             end if
             call check(error, stat, SEISPULSE_SUCCESS)
             if (allocated(error)) return
-            call check(error, 100.0_dp * res%max_disp, disp_cm, rtol=1.0e-9_dp, message='disp')
+            call check(error, 100.0_dp * abs(res%final_disp), disp_cm, rtol=1.0e-9_dp, &
+                       message='disp')
             if (allocated(error)) return
             call check(error, abs(res%kmax), kmax, rtol=1.0e-9_dp, message='kmax')
             if (allocated(error)) return

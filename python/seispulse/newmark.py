@@ -224,9 +224,13 @@ Flexible = namedtuple("Flexible", ["max_disp", "final_disp", "kmax", "vs_final",
                                    "ky_up"])
 Flexible.__doc__ = """Result of :func:`decoupled` or :func:`coupled` (SI).
 
-max_disp: largest sliding displacement |s| (m); final_disp: s at the end (m; signed for
-two-way sliding, positive downslope); kmax: the equivalent acceleration (HEA) of largest
-|value| of the final decoupled response to the record as given, with its sign (g);
+max_disp: largest sliding displacement |s| over the run (m); final_disp: s at the end (m;
+signed for two-way sliding, positive downslope). SLAMMER publishes |final_disp|; the two
+differ only when SLAMMER's coupled trapezoid steps back after an onset (method='slammer',
+coupled), where max_disp can exceed it. kmax: the equivalent acceleration (HEA) of largest
+|value| of the final decoupled response, with the sign of the HEA of the record as given
+(g), for both analyses (SLAMMER's Decoupled convention; SLAMMER's Coupled reports the
+opposite sign, and SLAMMER's tables print |kmax|);
 vs_final (m/s), damping_final (total: material or the user's, plus radiation) and
 damping_radiation (fractions): the properties of the final response; period = 4 H/vs_final
 (s); iterations of the equivalent-linear soil (0 for linear) and whether it converged;
@@ -325,15 +329,19 @@ _FLEXIBLE_DOC = """{summary}
         Shear-wave velocity below the slip surface (m/s) > 0 (radiation damping).
     damping : float
         Viscous damping of the mass (fraction) in [-0.5, 1); the radiation damping
-        min(0.2, 0.55016 (vs_base/vs)^-0.9904) is added. A negative value cancels part of it.
-        The equivalent-linear soil replaces it by its material damping after the first pass.
+        xi_f = min(0.2, 0.55016 (vs_base/vs)^-0.9904) is added, and the total damping +
+        xi_f must be >= 0 (a negative value cancels part of xi_f at most); with
+        method='exact' also damping + xi_f < 1. The equivalent-linear soil replaces it by
+        its material damping after the first pass.
     soil : {{'linear', 'equivalent_linear'}}
         Linear elastic, or equivalent-linear (hyperbolic G/Gmax, scaled Masing damping).
     ref_strain_pct : float
         Reference strain of the equivalent-linear soil, in PERCENT (0.05 = 0.05 %) > 0.
     method : {{'slammer', 'exact'}}
         SLAMMER 1.1's arithmetic step for step, or the exact response to the
-        piecewise-linear record.
+        piecewise-linear record. SLAMMER's coupled arithmetic is unstable for a stiff mass
+        on a coarse record: coupled with method='slammer' needs omega dt <= 10 (omega =
+        pi vs_final/(2 height), i.e. T >= 0.63 dt), else InvalidInputError naming height.
     g : float
         Gravity (m/s^2) > 0.{mode_doc}
     ky_table : (disp_m, ky_g), optional

@@ -21,15 +21,21 @@
 !> Sign: positive record acceleration drives downslope (positive) sliding in both
 !> analyses. SLAMMER reaches the same by flipping the sign of its input inside the
 !> decoupled analysis and not inside the coupled one; here the coupled rule runs on the
-!> flipped record, as SLAMMER does, and its histories are turned back.
+!> flipped record, as SLAMMER does, and its histories are turned back. kmax has the sign
+!> of the HEA of the record as given in both analyses (SLAMMER's Coupled reports -kmax).
+!>
+!> Displacement: max_disp is the largest |s| over the run; SLAMMER publishes |s| at the end
+!> of the record (|final_disp|). They differ only where SLAMMER's coupled trapezoid steps
+!> back after an onset. SLAMMER's coupled arithmetic is used only for omega dt <= 10
+!> (slammer_coupled_wdt_max); SLAMMER's decoupled arithmetic is stable at any omega dt.
 module seispulse_flexible
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use seispulse_kinds, only: dp
     use seispulse_checks, only: positive, check_history_sizes
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
                                 SEISPULSE_NO_CONVERGENCE, set_error
-    use seispulse_format, only: real_str
-    use seispulse_pieces, only: record_step_check
+    use seispulse_format, only: real_str, int_str
+    use seispulse_pieces, only: record_step_check, g_product_max
     use seispulse_special, only: pi
     use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid, &
                                  NEWMARK_DOWN, NEWMARK_ASYM, NEWMARK_EXACT
@@ -45,6 +51,13 @@ module seispulse_flexible
 
     !> Newmark's average-acceleration parameters (doc/flexible.md (F.24), [C12])
     real(dp), parameter :: beta = 0.25_dp, gamma = 0.5_dp
+    !> Largest omega dt (final properties) of SLAMMER's coupled arithmetic: above about 12
+    !> its stick/slip switching with u'' from equilibrium turns the average-acceleration
+    !> ringing of u'' into spurious slides (doc/flexible.md section 4, "Range")
+    real(dp), parameter :: slammer_coupled_wdt_max = 10.0_dp
+    !> Range of omega (rad/s) and smallest dt (s) accepted: the terms of k-hat (F.24) stay
+    !> below 1e301, so no product of the response's coefficients overflows
+    real(dp), parameter :: omega_min = 1.0e-150_dp, omega_max = 1.0e150_dp, dt_min = 1.0e-150_dp
 
     !> SLAMMER's modal response as the equivalent-linear iteration sees it: the record
     !> (g, pointing to the caller's array for the duration of the analysis) and its units.
@@ -214,9 +227,13 @@ contains
         call check_history_sizes(size(accel), [character(len=9) :: 'hea', 'u_modal', 's_hist', &
                                  'sdot_hist'], stat, errmsg, hea, u_modal, s_hist, sdot_hist)
         if (stat /= SEISPULSE_SUCCESS) return
+        call response_checks(accel, dt, mass, method, g, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
 
         if (method == FLEX_EXACT) then
-            ! the exact recurrence needs |xi| < 1 (the largest xi is the first pass's)
+            ! the exact recurrence needs |xi| < 1: the first pass takes damping + xi_f, the
+            ! later ones xi_mat + xi_f <= (0.62 x 63.7 % + 1 %) + 0.2 < 0.61 (doc/flexible.md
+            ! (F.16), (F.20)-(F.22)), so the first pass's total is the one to check
             if (.not. abs(mass%damping + radiation_damping(mass%vs, mass%vs_base)) < 1.0_dp) &
                 then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'damping = ' &
@@ -234,13 +251,75 @@ contains
         end if
         if (stat /= SEISPULSE_SUCCESS) return
         if (.not. (ieee_is_finite(res%max_disp) .and. ieee_is_finite(res%kmax))) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'damping = ' &
-                           //real_str(mass%damping)//': the response diverges (total ' &
-                           //'damping '//real_str(res%damping_final)//')')
+            call overflow_error(res, mass, stat, errmsg)
             return
         end if
         stat = eql_stat   ! SEISPULSE_NO_CONVERGENCE: errmsg already says so
     end subroutine flexible_run
+
+    !> Checks of the response's inputs that name the real parameter: a total damping
+    !> (user + radiation, the first equivalent-linear pass's) >= 0, dt >= dt_min, omega =
+    !> pi vs/(2 H) in [omega_min, omega_max] (height, vs), and for the SLAMMER rule g_cm =
+    !> 100 g and every accel(i) g_cm finite.
+    subroutine response_checks(accel, dt, mass, method, g, stat, errmsg)
+        real(dp), intent(in) :: accel(:), dt, g
+        type(flexible_mass_t), intent(in) :: mass
+        integer, intent(in) :: method
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        real(dp) :: xi_f, xi, a_max
+        integer :: i
+        stat = SEISPULSE_SUCCESS
+        xi_f = radiation_damping(mass%vs, mass%vs_base)                      ! (F.16)
+        xi = mass%damping + xi_f
+        if (xi < 0.0_dp) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'damping = ' &
+                           //real_str(mass%damping)//': with the radiation damping xi_f = ' &
+                           //real_str(xi_f)//' the total damping '//real_str(xi) &
+                           //' must be >= 0 (damping >= -xi_f)')
+            return
+        end if
+        if (dt < dt_min) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'dt = '//real_str(dt) &
+                           //': must be >= '//real_str(dt_min)//' (s)')
+            return
+        end if
+        ! omega = pi vs/(2 H) in [omega_min, omega_max], compared without overflow  (F.2)
+        if (mass%vs / omega_max > mass%height / (0.5_dp * pi) &
+            .or. 0.5_dp * pi * mass%vs < omega_min * mass%height) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'height = ' &
+                           //real_str(mass%height)//', vs = '//real_str(mass%vs) &
+                           //': omega = pi vs/(2 height) must be in ['//real_str(omega_min) &
+                           //', '//real_str(omega_max)//'] rad/s')
+            return
+        end if
+        if (method /= FLEX_SLAMMER) return
+        if (g > huge(g) / 100.0_dp) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(g) &
+                           //': 100 g (cm/s^2 per g, SLAMMER''s unit) overflows')
+            return
+        end if
+        a_max = g_product_max(100.0_dp * g)
+        do i = 1, size(accel)
+            if (abs(accel(i)) > a_max) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel('//int_str(i) &
+                               //') = '//real_str(accel(i))//': accel 100 g (cm/s^2) ' &
+                               //'overflows (g = '//real_str(g)//' m/s^2)')
+                return
+            end if
+        end do
+    end subroutine response_checks
+
+    !> The response of valid input that still overflows (no one parameter to blame).
+    subroutine overflow_error(res, mass, stat, errmsg)
+        type(flexible_result_t), intent(in) :: res
+        type(flexible_mass_t), intent(in) :: mass
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'the response overflows ' &
+                       //'(omega = '//real_str(pi * res%vs_final / (2.0_dp * mass%height)) &
+                       //' rad/s, total damping '//real_str(res%damping_final)//')')
+    end subroutine overflow_error
 
     ! ------------------------------------------------------------------------------
     ! The exact rule (doc/flexible.md sections 5-7, module seispulse_flexible_exact)
@@ -283,6 +362,10 @@ contains
         ! the final decoupled response: HEA and kmax (both analyses)
         call modal_response_exact(accel, dt, g, omega, xi, resp%u, resp%hea, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
+        if (.not. all(ieee_is_finite(resp%hea))) then
+            call overflow_error(res, mass, stat, errmsg)
+            return
+        end if
         res%kmax = signed_peak(resp%hea)
         if (present(hea)) hea(:) = resp%hea
         if (.not. coupled) then
@@ -358,6 +441,16 @@ contains
         xi = res%damping_final
         omega = pi * res%vs_final / (2.0_dp * mass%height)                    ! (F.2)
         res%period = 4.0_dp * mass%height / res%vs_final
+        if (coupled .and. omega > slammer_coupled_wdt_max / dt) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'height = ' &
+                           //real_str(mass%height)//': SLAMMER''s coupled arithmetic is ' &
+                           //'unstable for omega dt = '//real_str(omega * min(dt, huge(dt) &
+                           / omega))//' > ' &
+                           //real_str(slammer_coupled_wdt_max)//' (T/dt < ' &
+                           //real_str(2.0_dp * pi / slammer_coupled_wdt_max)//', vs = ' &
+                           //real_str(res%vs_final)//' m/s); use method=''exact''')
+            return
+        end if
 
         ! the final decoupled response: HEA and kmax (both analyses)
         allocate(avg(size(accel)))

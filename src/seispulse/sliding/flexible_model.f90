@@ -46,13 +46,17 @@ module seispulse_flexible_model
     real(dp), parameter :: eql_tolerance_pct = 5.0_dp
     !> below this strain ratio gamma/gamma_r the Masing damping is its series (F.20)
     real(dp), parameter :: masing_series_below = 0.1_dp
+    !> largest strain ratio gamma_eff/gamma_r of the iteration: (F.20) stays finite (x^2)
+    real(dp), parameter :: strain_ratio_max = 1.0e150_dp
 
     !> The flexible sliding mass (SI; damping as a fraction, the reference strain in percent).
     type :: flexible_mass_t
         real(dp) :: height = 0.0_dp          !! H (m) > 0
         real(dp) :: vs = 0.0_dp              !! shear-wave velocity of the sliding mass (m/s) > 0
         real(dp) :: vs_base = 0.0_dp         !! Vs below the slip surface (m/s) > 0
-        real(dp) :: damping = 0.05_dp        !! user viscous damping (fraction), -0.5 <= d < 1
+        !> user viscous damping (fraction), -0.5 <= d < 1; the analyses also need d + xi_f >= 0
+        !> (and < 1 for the exact rule), xi_f the radiation damping
+        real(dp) :: damping = 0.05_dp
         integer :: soil = SOIL_LINEAR        !! SOIL_LINEAR or SOIL_EQUIVALENT_LINEAR
         real(dp) :: ref_strain_pct = 0.05_dp !! reference strain (percent) > 0 (EQL only)
         integer :: max_iter = 100            !! equivalent-linear iteration cap >= 1
@@ -60,10 +64,14 @@ module seispulse_flexible_model
 
     !> Result of a decoupled or coupled analysis (SI).
     type :: flexible_result_t
-        real(dp) :: max_disp = 0.0_dp        !! largest |s| (m)
+        !> largest |s| over the run (m); SLAMMER publishes |final_disp|, which is smaller
+        !> only where its coupled trapezoid steps back after an onset (doc/flexible.md
+        !> section 4)
+        real(dp) :: max_disp = 0.0_dp
         real(dp) :: final_disp = 0.0_dp      !! s at the end (m) (signed for two-way exact)
         !> signed HEA of largest |value| (g) of the final decoupled response to the record as
-        !> given (SLAMMER's tables print |kmax|)
+        !> given, both analyses (SLAMMER's Decoupled sign; its Coupled reports -kmax, its
+        !> tables print |kmax|)
         real(dp) :: kmax = 0.0_dp
         real(dp) :: vs_final = 0.0_dp        !! Vs used for the final response (m/s)
         !> total damping used (fraction): material (or the user's) + radiation
@@ -257,6 +265,18 @@ contains
             if (stat /= SEISPULSE_SUCCESS) return
             iterations = it
             gamma_pct = 100.0_dp * strain_factor * u_peak / mass%height          ! (F.17)
+            if (.not. ieee_is_finite(gamma_pct)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'the response ' &
+                               //'overflows (equivalent-linear pass '//int_str(it)//')')
+                return
+            else if (gamma_pct / strain_ratio_max > mass%ref_strain_pct) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ref_strain_pct = ' &
+                               //real_str(mass%ref_strain_pct)//': the strain ratio ' &
+                               //'gamma_eff/gamma_r = '//real_str(gamma_pct) &
+                               //'/ref_strain_pct exceeds '//real_str(strain_ratio_max) &
+                               //'; must be a larger reference strain (percent)')
+                return
+            end if
             call eql_properties(gamma_pct, mass%ref_strain_pct, g_ratio, d_mat)
             vs_new = mass%vs * sqrt(g_ratio)                                     ! (F.19)
             dg_pct = abs((vs * vs - vs_new * vs_new) / (vs * vs)) * 100.0_dp     ! (F.23)
