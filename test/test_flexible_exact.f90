@@ -9,6 +9,7 @@
 !> independent integrations and the constant yield; the dispatch of seispulse_flexible;
 !> the first-zero search on a function with close zeros; bad input.
 module test_flexible_exact
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT
     use seispulse_flexible_exact, only: modal_response_exact, coupled_exact, zero_function, &
@@ -71,6 +72,13 @@ contains
                               test_dispatch_decoupled), &
                  new_unittest('flexible_coupled(exact) = coupled_exact (bitwise)', &
                               test_dispatch_coupled), &
+                 new_unittest('coupled: zeros appended to the record change nothing', &
+                              test_coupled_zero_padding), &
+                 new_unittest('coupled: stiff masses (omega 1.6e6, 1.6e7, H = 1e-5 m)', &
+                              test_coupled_stiff), &
+                 new_unittest('modal response: overflow is a status', test_modal_overflow), &
+                 new_unittest('first_zero: a bound that is not finite proves nothing', &
+                              test_first_zero_inf), &
                  new_unittest('bad input is a status naming the parameter', test_bad_input)]
     end subroutine collect_flexible_exact
 
@@ -111,7 +119,8 @@ contains
 
     !> Independent integration of the coupled model: classical RK4 on m sub-steps per
     !> sample step, events (HEA = g ky, s' = 0) located by bisection on the sub-step
-    !> re-integrated from its start; the run-out after the record with a = 0.
+    !> re-integrated from its start; after the record a = 0 until the mass is at rest and
+    !> the stuck beam's energy bound (2/pi) sqrt(omega^2 u'^2 + u''^2) < g ky (F.48).
     subroutine reference_coupled(accel, dt, g, omega, xi, ky, m, s_end, s_hist, u_hist, kd, kv)
         real(dp), intent(in) :: accel(:), dt, g, omega, xi, ky
         integer, intent(in) :: m
@@ -130,7 +139,10 @@ contains
         i = 0
         do k = 1, 100000000
             i = i + 1
-            if (i > n - 1 .and. .not. slide) exit
+            if (i > n - 1 .and. .not. slide) then
+                if (2.0_dp / pi * sqrt(omega**2 * y(2)**2 + (-2.0_dp * xi * omega * y(2) &
+                    - omega**2 * y(1))**2) < g * kys(y(3))) exit
+            end if
             do j = 0, m - 1
                 t = real(i - 1, dp) * dt + j * hs
                 rest = hs
@@ -361,18 +373,25 @@ contains
         call check(error, uc, u, atol=1.0e-12_dp * maxval(abs(u)), message='u = modal u')
     end subroutine test_coupled_no_slide
 
-    !> A synthetic record, H = 20 m, Vs = 300 m/s, damping 0.2 and -0.005, an over-damped
+    !> A synthetic record, H = 20 m, Vs = 300 m/s, damping 0.2 and 0.02, an over-damped
     !> sliding oscillator (xi = 0.6) and an over-damped mass (xi = 1.2): exact = RK4 with
-    !> 400 sub-steps per sample.
+    !> 400 sub-steps per sample. A negative damping (-0.005) is refused.
     subroutine test_coupled_reference(error)
         type(test_error), allocatable, intent(out) :: error
         integer, parameter :: n = 1600
         real(dp), parameter :: dt = 0.005_dp
         real(dp) :: a(n), sh(n), uh(n), sr(n), ur(n), smax, sfin, tend, send, omega
-        real(dp), parameter :: xis(4) = [0.2_dp, -0.005_dp, 0.6_dp, 1.2_dp]
-        integer :: j
+        real(dp), parameter :: xis(4) = [0.2_dp, 0.02_dp, 0.6_dp, 1.2_dp]
+        integer :: j, stat
+        character(len=200) :: msg
         a = synthetic(n, dt, 2)
         omega = pi * 300.0_dp / (2.0_dp * 20.0_dp)
+        msg = ''
+        call coupled_exact(a, dt, g0, omega, -0.005_dp, 0.12_dp, smax, sfin, tend, stat, msg)
+        call check(error, stat, SEISPULSE_INVALID_INPUT, 'xi < 0 refused')
+        if (allocated(error)) return
+        call check(error, index(msg, 'xi') > 0, 'message names xi: '//trim(msg))
+        if (allocated(error)) return
         do j = 1, 4
             call run_coupled(error, a, dt, omega, xis(j), 0.12_dp, smax, sfin, tend, 'record', &
                              s_hist=sh, u_hist=uh)
@@ -958,6 +977,96 @@ contains
         call first_zero(f, 1.0_dp, fa, fb, m3, found, x, stat)
         call check(error, .not. found, 'no zero above the axis')
     end subroutine test_first_zero
+
+    !> The record ends at 0 with the beam ringing (H = 100 m, Vs = 600 m/s, small ky); the
+    !> same record with 2000 zeros appended gives the same final s and t_end (F.48); the
+    !> end rule of the RK4 reference is the same (final s = reference).
+    subroutine test_coupled_zero_padding(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 800, np = 2000
+        real(dp), parameter :: dt = 0.01_dp
+        real(dp) :: a(n + np), smax, sfin, tend, sfin2, tend2, omega, send
+        real(dp) :: sr(n), ur(n)
+        real(dp), parameter :: kys(2) = [0.05_dp, 0.1_dp]
+        integer :: j
+        a = 0.0_dp
+        a(1:n) = 2.0_dp * synthetic(n, dt, 5)
+        a(n) = 0.0_dp
+        omega = pi * 600.0_dp / (2.0_dp * 100.0_dp)
+        do j = 1, 2
+            call run_coupled(error, a(1:n), dt, omega, 0.05_dp, kys(j), smax, sfin, tend, &
+                             'record')
+            if (allocated(error)) return
+            call run_coupled(error, a, dt, omega, 0.05_dp, kys(j), smax, sfin2, tend2, 'padded')
+            if (allocated(error)) return
+            call check(error, sfin > 1.0e-3_dp, 'slides')
+            if (allocated(error)) return
+            call check(error, sfin2, sfin, rtol=1.0e-12_dp, message='final s, padded, ky = ' &
+                       //trim(num(kys(j))))
+            if (allocated(error)) return
+            call check(error, tend2, tend, rtol=1.0e-12_dp, message='t_end, padded')
+            if (allocated(error)) return
+        end do
+        ! the RK4 reference with the same end rule (ky = 0.1, the last run)
+        call reference_coupled(a(1:n), dt, g0, omega, 0.05_dp, 0.1_dp, 100, send, sr, ur)
+        call check(error, sfin, send, rtol=1.0e-11_dp, message='final s = RK4')
+    end subroutine test_coupled_zero_padding
+
+    !> Stiff masses: omega = 1.6e6 and 1.6e7 rad/s (Vs = 1e5 m/s, H = 0.1 and 0.01 m) and
+    !> H = 1e-5 m (omega = 1.6e10 rad/s) on a record with dt = 0.01 s: a result (no
+    !> error), close to the rigid block's (newmark_rigid, exact).
+    subroutine test_coupled_stiff(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 800
+        real(dp), parameter :: dt = 0.01_dp
+        real(dp) :: a(n), smax, sfin, tend
+        real(dp), parameter :: hs(3) = [0.1_dp, 0.01_dp, 1.0e-5_dp]
+        type(newmark_block_t) :: blk
+        type(newmark_result_t) :: res
+        integer :: stat, j
+        a = 2.0_dp * synthetic(n, dt, 6)
+        blk%ky = 0.1_dp
+        call newmark_rigid(a, dt, blk, NEWMARK_EXACT, g0, res, stat)
+        call check(error, stat, SEISPULSE_SUCCESS, 'rigid: status')
+        if (allocated(error)) return
+        do j = 1, 3
+            call run_coupled(error, a, dt, pi * 1.0e5_dp / (2.0_dp * hs(j)), 0.25_dp, 0.1_dp, &
+                             smax, sfin, tend, 'stiff, H = '//trim(num(hs(j))))
+            if (allocated(error)) return
+            call check(error, sfin, res%final_disp, rtol=1.0e-3_dp, message='rigid limit, H = ' &
+                       //trim(num(hs(j))))
+            if (allocated(error)) return
+        end do
+    end subroutine test_coupled_stiff
+
+    !> A negative damping that overflows the modal response is a status, not Inf.
+    subroutine test_modal_overflow(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 20000
+        real(dp) :: a(n), u(n), hea(n)
+        integer :: stat
+        character(len=200) :: msg
+        a = synthetic(n, 0.01_dp, 1)
+        msg = ''
+        call modal_response_exact(a, 0.01_dp, g0, 600.0_dp, -0.9_dp, u, hea, stat, msg)
+        call check(error, stat, SEISPULSE_INVALID_INPUT, 'overflow: status')
+        if (allocated(error)) return
+        call check(error, index(msg, 'xi') > 0, 'message names xi: '//trim(msg))
+    end subroutine test_modal_overflow
+
+    !> An infinite bound on f''' never proves a zero absent: first_zero returns a status.
+    subroutine test_first_zero_inf(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(dip_t) :: f
+        real(dp) :: fa(0:2), fb(0:2), x
+        logical :: found
+        integer :: stat
+        f%lift = -1.0e-10_dp
+        call f%taylor(0.0_dp, fa)
+        call f%taylor(1.0_dp, fb)
+        call first_zero(f, 1.0_dp, fa, fb, ieee_value(1.0_dp, ieee_positive_inf), found, x, stat)
+        call check(error, stat, SEISPULSE_INVALID_INPUT, 'status')
+    end subroutine test_first_zero_inf
 
     subroutine test_bad_input(error)
         type(test_error), allocatable, intent(out) :: error
