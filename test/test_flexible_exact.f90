@@ -9,7 +9,7 @@
 !> independent integrations and the constant yield; the dispatch of seispulse_flexible;
 !> the first-zero search on a function with close zeros; bad input.
 module test_flexible_exact
-    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_is_finite
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT
     use seispulse_flexible_exact, only: modal_response_exact, coupled_exact, zero_function, &
@@ -58,6 +58,8 @@ contains
                  new_unittest('rigid ky table, one row = constant ky (bitwise)', &
                               test_table_one_row), &
                  new_unittest('rigid ky table, equal rows = constant ky', test_table_flat), &
+                 new_unittest('rigid ky table: a long run-out after the record', &
+                              test_table_long_runout), &
                  new_unittest('rigid ky table, exact = independent RK4 with events', &
                               test_table_reference), &
                  new_unittest('rigid ky table, slammer = RigidBlock rule written here', &
@@ -501,7 +503,7 @@ contains
         real(dp) :: a(n), u1(n), u2(n)
         type(newmark_block_t) :: bc, bt
         type(newmark_result_t) :: r1, r2
-        integer :: stat
+        integer :: stat, j
         a = synthetic(n, dt, 5)
         bc%ky = 0.12_dp
         bt = table_block([0.0_dp, 0.013_dp, 0.02_dp, 0.3_dp], [0.12_dp, 0.12_dp, 0.12_dp, 0.12_dp])
@@ -516,7 +518,51 @@ contains
         call check(error, r2%t_end, r1%t_end, rtol=1.0e-12_dp, message='t_end')
         if (allocated(error)) return
         call check(error, size(r2%slides), size(r1%slides), 'slides')
+        if (allocated(error)) return
+        ! the peak speed inside a step, as the constant rule finds it
+        call check(error, r2%max_vel, r1%max_vel, rtol=1.0e-12_dp, message='max_vel')
+        if (allocated(error)) return
+        do j = 1, size(r1%slides)
+            call check(error, r2%slides(j)%w_peak, r1%slides(j)%w_peak, rtol=1.0e-12_dp, &
+                       message='w_peak')
+            if (allocated(error)) return
+            call check(error, r2%slides(j)%t_peak, r1%slides(j)%t_peak, atol=1.0e-9_dp, &
+                       message='t_peak')
+            if (allocated(error)) return
+        end do
     end subroutine test_table_flat
+
+    !> A tiny last yield (1e-9 g): the run-out after the record is long; the table gives the
+    !> constant rule's value (the same closed form w^2/(2 ky)); a table softening to 1e-9 g
+    !> gives a value.
+    subroutine test_table_long_runout(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 1000
+        real(dp), parameter :: dt = 0.01_dp
+        real(dp) :: a(n)
+        type(newmark_block_t) :: bc, bt
+        type(newmark_result_t) :: r1, r2
+        integer :: stat
+        a = synthetic(n, dt, 5)
+        a(n - 100:n) = 0.4_dp
+        bc%ky = 1.0e-9_dp
+        bt = table_block([0.0_dp, 1.0e3_dp], [1.0e-9_dp, 1.0e-9_dp])
+        call newmark_rigid(a, dt, bc, NEWMARK_EXACT, g0, r1, stat)
+        call check(error, stat, SEISPULSE_SUCCESS, 'constant: status')
+        if (allocated(error)) return
+        call newmark_rigid(a, dt, bt, NEWMARK_EXACT, g0, r2, stat)
+        call check(error, stat, SEISPULSE_SUCCESS, 'table: status')
+        if (allocated(error)) return
+        call check(error, r2%final_disp, r1%final_disp, rtol=1.0e-9_dp, message='final')
+        if (allocated(error)) return
+        call check(error, r2%t_end, r1%t_end, rtol=1.0e-9_dp, message='t_end')
+        if (allocated(error)) return
+        bt = table_block([0.0_dp, 0.01_dp], [0.3_dp, 1.0e-9_dp])
+        call newmark_rigid(a, dt, bt, NEWMARK_EXACT, g0, r2, stat)
+        call check(error, stat, SEISPULSE_SUCCESS, 'softening to 1e-9: status')
+        call check(error, r2%final_disp > 0.01_dp .and. ieee_is_finite(r2%final_disp), &
+                   'softening to 1e-9: slides past the table')
+    end subroutine test_table_long_runout
 
     !> ky falls from 0.15 to 0.06 over 2 cm then rises to 0.11 at 10 cm: exact = RK4 with
     !> 400 sub-steps per sample, stops and onsets by bisection (g = 9.80665).
