@@ -901,30 +901,34 @@ contains
     !> bit, with a constant yield, two ways and a yield table.
     subroutine test_dispatch_decoupled(error)
         type(test_error), allocatable, intent(out) :: error
-        integer, parameter :: n = 1600
+        integer, parameter :: n = 1600, np = 4000
         real(dp), parameter :: dt = 0.005_dp
-        real(dp) :: a(n), u(n), hea(n), s1(n), s2(n), om
+        real(dp) :: a(n + np), u(n + np), hea(n + np), s1(n), s2(n + np), om
+        real(dp) :: sfin, tend
         type(flexible_mass_t) :: m
         type(flexible_result_t) :: r
         type(newmark_block_t) :: blk
         type(newmark_result_t) :: rr
         integer :: stat, k
         character(len=200) :: msg
-        a = synthetic(n, dt, 8)
+        ! the record ends at 0; the reference pads it with zeros (F.48)
+        a = 0.0_dp
+        a(1:n) = synthetic(n, dt, 8)
+        a(n) = 0.0_dp
         m = flexible_mass_t(height=20.0_dp, vs=300.0_dp, vs_base=900.0_dp, damping=0.05_dp)
         do k = 1, 3
             msg = ''
             select case (k)
             case (1)
-                call flexible_decoupled(a, dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, s_hist=s1)
+                call flexible_decoupled(a(1:n), dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, s_hist=s1)
                 blk = newmark_block_t()
                 blk%ky = 0.1_dp
             case (2)
-                call flexible_decoupled(a, dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, &
+                call flexible_decoupled(a(1:n), dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, &
                                         mode=2, s_hist=s1)
                 blk = newmark_block_t(mode=2, ky=0.1_dp)
             case default
-                call flexible_decoupled(a, dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, &
+                call flexible_decoupled(a(1:n), dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, &
                                         ky_disp=[0.0_dp, 0.02_dp], ky_values=[0.12_dp, 0.07_dp], &
                                         s_hist=s1)
                 blk = newmark_block_t()
@@ -936,8 +940,30 @@ contains
             om = pi * r%vs_final / (2.0_dp * m%height)
             call modal_response_exact(a, dt, g0, om, r%damping_final, u, hea, stat)
             call newmark_rigid(hea, dt, blk, NEWMARK_EXACT, g0, rr, stat, u_hist=s2)
-            call check(error, r%max_disp > 0.01_dp .and. identical(s1, s2) &
-                       .and. same_bits(r%final_disp, rr%final_disp), 'bitwise')
+            call check(error, r%max_disp > 0.01_dp .and. identical(s1, s2(1:n)) &
+                       .and. same_bits(r%final_disp, rr%final_disp) &
+                       .and. same_bits(r%t_end, rr%t_end), 'bitwise')
+            if (allocated(error)) return
+            sfin = r%final_disp
+            tend = r%t_end
+            ! zero-padding the record changes nothing (the same final s and t_end)
+            select case (k)
+            case (1)
+                call flexible_decoupled(a(1:n + 2000), dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, &
+                                        msg)
+            case (2)
+                call flexible_decoupled(a(1:n + 2000), dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, &
+                                        msg, mode=2)
+            case default
+                call flexible_decoupled(a(1:n + 2000), dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, &
+                                        msg, ky_disp=[0.0_dp, 0.02_dp], &
+                                        ky_values=[0.12_dp, 0.07_dp])
+            end select
+            call check(error, stat, SEISPULSE_SUCCESS, 'padded: '//trim(msg))
+            if (allocated(error)) return
+            call check(error, r%final_disp, sfin, rtol=1.0e-12_dp, message='padded: final s')
+            if (allocated(error)) return
+            call check(error, r%t_end, tend, rtol=1.0e-12_dp, message='padded: t_end')
             if (allocated(error)) return
         end do
     end subroutine test_dispatch_decoupled

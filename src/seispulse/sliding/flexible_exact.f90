@@ -46,7 +46,7 @@ module seispulse_flexible_exact
     implicit none
     private
 
-    public :: modal_response_exact, coupled_exact
+    public :: modal_response_exact, modal_hea_extended, coupled_exact
     public :: zero_function, first_zero, prop_t, propagator
 
     real(dp), parameter :: lm = 4.0_dp / pi          !! L/M of the first mode
@@ -210,6 +210,108 @@ contains
             z = zn
         end subroutine step
     end subroutine modal_response_exact
+
+    !> HEA (g) of the record followed by the beam's free vibration after it (a = 0 from the
+    !> last sample on, the recurrence of modal_response_exact), sampled at dt (F.48): at least
+    !> min_tail samples after the record, then until the stuck beam's energy bound
+    !> (2/pi) sqrt(omega^2 u'^2 + u''^2)/g is below ky_min (g) and no slide on HEA alone can
+    !> start again. hea(1:n) is modal_response_exact's HEA bit for bit.
+    subroutine modal_hea_extended(accel, dt, g, omega, xi, ky_min, min_tail, hea, stat, errmsg)
+        real(dp), intent(in) :: accel(:)                      !! record (g) at (i-1) dt
+        real(dp), intent(in) :: dt                            !! time step (s) > 0
+        real(dp), intent(in) :: g                             !! gravity (m/s^2) > 0
+        real(dp), intent(in) :: omega                         !! circular frequency (rad/s) > 0
+        real(dp), intent(in) :: xi                            !! damping ratio >= 0
+        real(dp), intent(in) :: ky_min                        !! smallest yield (g) > 0
+        integer, intent(in) :: min_tail                       !! samples after the record >= 0
+        real(dp), allocatable, intent(out) :: hea(:)          !! HEA (g), n + tail samples
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp), allocatable :: u(:), ud(:)
+        type(sdof_step_t) :: st
+        type(prop_t) :: pr
+        real(dp) :: z, v, zn, acc, w2, c
+        integer :: n, ntail, pass, j
+        logical :: over
+        call check_modal(accel, dt, g, omega, xi, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        if (xi < 0.0_dp) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'xi = '//real_str(xi) &
+                           //': the damping ratio must be >= 0 (the free vibration after the ' &
+                           //'record grows)')
+            return
+        end if
+        if (.not. positive(ky_min)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky = '//real_str(ky_min) &
+                           //': must be > 0 (g)')
+            return
+        end if
+        n = size(accel)
+        allocate(u(n), ud(n), hea(n))
+        call modal_response_exact(accel, dt, g, omega, xi, u, hea, stat, errmsg, udot=ud)
+        if (stat /= SEISPULSE_SUCCESS) return
+        over = xi >= 1.0_dp
+        w2 = omega**2
+        c = 2.0_dp * xi * omega
+        if (over) then
+            call propagator(c, w2, dt, pr)
+        else
+            st = sdof_step(2.0_dp * pi / omega, xi, dt)
+        end if
+        ! pass 1 counts the tail, pass 2 stores it (the same arithmetic)
+        ntail = 0
+        do pass = 1, 2
+            z = u(n)
+            v = ud(n)
+            do j = 1, max_runout + 1
+                if (pass == 2 .and. j > ntail) exit
+                acc = -c * v - w2 * z
+                if (pass == 1 .and. j > min_tail) then
+                    if (lmt * sqrt(w2 * v * v + acc * acc) * (1.0_dp + 1.0e-10_dp) < g * ky_min) &
+                        exit
+                end if
+                if (j > max_runout) then
+                    call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky = ' &
+                                   //real_str(ky_min)//': the free vibration after the ' &
+                                   //'record stays above the yield for '//int_str(max_runout) &
+                                   //' steps')
+                    return
+                end if
+                call free_step()
+                if (pass == 1) then
+                    ntail = j
+                else
+                    hea(n + j) = lmt * (-c * v - w2 * z) / g
+                end if
+            end do
+            if (pass == 1) then
+                if (ntail == 0) return
+                call grow()
+            end if
+        end do
+    contains
+        !> One step of the recurrence of modal_response_exact with a = 0.
+        subroutine free_step()
+            real(dp) :: x1, x2
+            if (over) then
+                x1 = v
+                x2 = -c * v - w2 * z
+                zn = z + pr%p1(1, 1) * x1 + pr%p1(1, 2) * x2
+                v = v + pr%p1(2, 1) * x1 + pr%p1(2, 2) * x2
+                z = zn
+                return
+            end if
+            zn = st%e11 * z + st%e12 * v
+            v = st%e21 * z + st%e22 * v
+            z = zn
+        end subroutine free_step
+        subroutine grow()
+            real(dp), allocatable :: tmp(:)
+            allocate(tmp(n + ntail))
+            tmp(1:n) = hea
+            call move_alloc(tmp, hea)
+        end subroutine grow
+    end subroutine modal_hea_extended
 
     !> Checks shared by the two public routines.
     subroutine check_modal(accel, dt, g, omega, xi, stat, errmsg)
