@@ -162,15 +162,8 @@ contains
         if (stat /= SEISPULSE_SUCCESS) return
         ! sdof_step solves z'' + 2 xi omega z' + omega^2 z = -a_g: a_g = (4/pi) g a;
         ! over-damped (xi >= 1): the propagator of (F.38)
-        over = xi >= 1.0_dp
         gl = lm * g
-        w2 = omega**2
-        c = 2.0_dp * xi * omega
-        if (over) then
-            call propagator(c, w2, dt, pr)
-        else
-            st = sdof_step(2.0_dp * pi / omega, xi, dt)
-        end if
+        call modal_setup(dt, omega, xi, over, w2, c, st, pr)
         z = 0.0_dp
         v = 0.0_dp
         do i = 1, n
@@ -235,12 +228,8 @@ contains
         logical :: over
         call check_modal(accel, dt, g, omega, xi, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (xi < 0.0_dp) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'xi = '//real_str(xi) &
-                           //': the damping ratio must be >= 0 (the free vibration after the ' &
-                           //'record grows)')
-            return
-        end if
+        call check_damping(xi, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         if (.not. positive(ky_min)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky = '//real_str(ky_min) &
                            //': must be > 0 (g)')
@@ -250,14 +239,7 @@ contains
         allocate(u(n), ud(n), hea(n))
         call modal_response_exact(accel, dt, g, omega, xi, u, hea, stat, errmsg, udot=ud)
         if (stat /= SEISPULSE_SUCCESS) return
-        over = xi >= 1.0_dp
-        w2 = omega**2
-        c = 2.0_dp * xi * omega
-        if (over) then
-            call propagator(c, w2, dt, pr)
-        else
-            st = sdof_step(2.0_dp * pi / omega, xi, dt)
-        end if
+        call modal_setup(dt, omega, xi, over, w2, c, st, pr)
         ! pass 1 counts the tail, pass 2 stores it (the same arithmetic)
         ntail = 0
         do pass = 1, 2
@@ -312,6 +294,36 @@ contains
             call move_alloc(tmp, hea)
         end subroutine grow
     end subroutine modal_hea_extended
+
+    !> The one-step recurrence of the modal response: sdof_step (|xi| < 1) or, over-damped
+    !> (xi >= 1), the propagator of (F.38); w2 = omega^2, c = 2 xi omega.
+    subroutine modal_setup(dt, omega, xi, over, w2, c, st, pr)
+        real(dp), intent(in) :: dt, omega, xi
+        logical, intent(out) :: over
+        real(dp), intent(out) :: w2, c
+        type(sdof_step_t), intent(out) :: st
+        type(prop_t), intent(out) :: pr
+        over = xi >= 1.0_dp
+        w2 = omega**2
+        c = 2.0_dp * xi * omega
+        if (over) then
+            call propagator(c, w2, dt, pr)
+        else
+            st = sdof_step(2.0_dp * pi / omega, xi, dt)
+        end if
+    end subroutine modal_setup
+
+    !> The analyses that run on after the record need xi >= 0 (F.48).
+    subroutine check_damping(xi, stat, errmsg)
+        real(dp), intent(in) :: xi
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        stat = SEISPULSE_SUCCESS
+        if (xi < 0.0_dp) call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'xi = ' &
+                                        //real_str(xi)//': the total damping ratio must be ' &
+                                        //'>= 0 (the free vibration after the record would ' &
+                                        //'grow and the sliding never end)')
+    end subroutine check_damping
 
     !> Checks shared by the two public routines.
     subroutine check_modal(accel, dt, g, omega, xi, stat, errmsg)
@@ -383,12 +395,8 @@ contains
         t_end = 0.0_dp
         call check_modal(accel, dt, g, omega, xi, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (xi < 0.0_dp) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'xi = '//real_str(xi) &
-                           //': the total damping ratio must be >= 0 (the free vibration after ' &
-                           //'the record grows and the sliding would not end)')
-            return
-        end if
+        call check_damping(xi, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         if (.not. (positive(ky) .or. present(ky_disp) .or. present(ky_values))) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky = '//real_str(ky) &
                            //': must be > 0 (g; +inf: no sliding)')

@@ -817,42 +817,35 @@ contains
     pure real(dp) function table_bound(self, hh)
         class(table_slide_t), intent(in) :: self
         real(dp), intent(in) :: hh
-        real(dp) :: z0, z1, r
-        z0 = self%f0
-        z1 = -self%kappa * self%w0 + self%f1
-        if (self%kappa > 0.0_dp) then
-            table_bound = self%kappa * sqrt(z0 * z0 + z1 * z1 / self%kappa)
-        else if (self%kappa < 0.0_dp) then
-            r = sqrt(-self%kappa)
-            table_bound = -self%kappa * (abs(z0) * cosh(r * hh) + abs(z1) * sinh(r * hh) / r)
-        else
-            table_bound = 0.0_dp
-        end if
-        table_bound = table_bound * (1.0_dp + 1.0e-10_dp)
+        table_bound = kappa_bound(self%kappa, self%f0, -self%kappa * self%w0 + self%f1, hh)
     end function table_bound
+
+    !> |kappa| max |z| over [0, hh] for z'' = -kappa z, z(0) = z0, z'(0) = z1 (N.9).
+    pure real(dp) function kappa_bound(kappa, z0, z1, hh) result(m)
+        real(dp), intent(in) :: kappa, z0, z1, hh
+        real(dp) :: r
+        if (kappa > 0.0_dp) then
+            m = kappa * sqrt(z0 * z0 + z1 * z1 / kappa)
+        else if (kappa < 0.0_dp) then
+            r = sqrt(-kappa)
+            m = -kappa * (abs(z0) * cosh(r * hh) + abs(z1) * sinh(r * hh) / r)
+        else
+            m = 0.0_dp
+        end if
+        m = m * (1.0_dp + 1.0e-10_dp)
+    end function kappa_bound
 
     !> Bound on |Y'''''| = |kappa Y'''| over [x0, x0 + hh] (mode 2 of table_taylor): Y'''
     !> solves w'' = -kappa w with w = Y''', w' = -kappa Y'' at x0 (as (N.9)).
     function turn_bound(ph, hh) result(m)
         type(table_slide_t), intent(inout) :: ph
         real(dp), intent(in) :: hh
-        real(dp) :: m, f(0:2), w0, w1, r
-        real(dp) :: zs
+        real(dp) :: m, f(0:2), zs
         zs = ph%zsign
         ph%zsign = 1.0_dp
         call table_taylor(ph, 0.0_dp, f)
         ph%zsign = zs
-        w0 = f(1)
-        w1 = f(2)
-        if (ph%kappa > 0.0_dp) then
-            m = ph%kappa * sqrt(w0 * w0 + w1 * w1 / ph%kappa)
-        else if (ph%kappa < 0.0_dp) then
-            r = sqrt(-ph%kappa)
-            m = -ph%kappa * (abs(w0) * cosh(r * hh) + abs(w1) * sinh(r * hh) / r)
-        else
-            m = 0.0_dp
-        end if
-        m = m * (1.0_dp + 1.0e-10_dp)
+        m = kappa_bound(ph%kappa, f(1), f(2), hh)
     end function turn_bound
 
     !> Stumpff functions c_k(z) = sum_j (-z)^j/(2j + k)!, k = 0..3: cos s, sin(s)/s,
