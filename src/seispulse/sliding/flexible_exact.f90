@@ -846,15 +846,15 @@ contains
             c(0) = c(0) + ode%dense%r(m, 6)
             call times_one_minus_x(c)
             c(0) = c(0) + ode%dense%r(m, 5)
-            c = eoshift(c, -1)
+            call times_x(c)
             c(0) = c(0) + ode%dense%r(m, 4)
             call times_one_minus_x(c)
             c(0) = c(0) + ode%dense%r(m, 3)
-            c = eoshift(c, -1)
+            call times_x(c)
             c(0) = c(0) + ode%dense%r(m, 2)
             call times_one_minus_x(c)
             c(0) = c(0) + ode%dense%r(m, 1)
-            c = eoshift(c, -1)
+            call times_x(c)
             c(0) = c(0) + ode%dense%y0(m)
         end subroutine dense_poly
 
@@ -980,11 +980,24 @@ contains
         m = m * (1.0_dp + 1.0e-10_dp)
     end function poly_bound3
 
-    !> c times (1 - x), degree kept within 7.
+    !> c times (1 - x), degree kept within 7 (explicit shifts: no temporary).
     pure subroutine times_one_minus_x(c)
         real(dp), intent(inout) :: c(0:7)
-        c = c - eoshift(c, -1)
+        integer :: k
+        do k = 7, 1, -1
+            c(k) = c(k) - c(k - 1)
+        end do
     end subroutine times_one_minus_x
+
+    !> c times x, degree kept within 7.
+    pure subroutine times_x(c)
+        real(dp), intent(inout) :: c(0:7)
+        integer :: k
+        do k = 7, 1, -1
+            c(k) = c(k - 1)
+        end do
+        c(0) = 0.0_dp
+    end subroutine times_x
 
     ! ------------------------------------------------------------------------------
     ! The oscillator's matrix functions
