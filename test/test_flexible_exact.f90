@@ -9,6 +9,7 @@
 !> independent integrations and the constant yield; the dispatch of seispulse_flexible;
 !> the first-zero search on a function with close zeros; bad input.
 module test_flexible_exact
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_is_finite
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT
     use seispulse_flexible_exact, only: modal_response_exact, coupled_exact, zero_function, &
@@ -57,6 +58,8 @@ contains
                  new_unittest('rigid ky table, one row = constant ky (bitwise)', &
                               test_table_one_row), &
                  new_unittest('rigid ky table, equal rows = constant ky', test_table_flat), &
+                 new_unittest('rigid ky table: a long run-out after the record', &
+                              test_table_long_runout), &
                  new_unittest('rigid ky table, exact = independent RK4 with events', &
                               test_table_reference), &
                  new_unittest('rigid ky table, slammer = RigidBlock rule written here', &
@@ -71,6 +74,13 @@ contains
                               test_dispatch_decoupled), &
                  new_unittest('flexible_coupled(exact) = coupled_exact (bitwise)', &
                               test_dispatch_coupled), &
+                 new_unittest('coupled: zeros appended to the record change nothing', &
+                              test_coupled_zero_padding), &
+                 new_unittest('coupled: stiff masses (omega 1.6e6, 1.6e7, H = 1e-5 m)', &
+                              test_coupled_stiff), &
+                 new_unittest('modal response: overflow is a status', test_modal_overflow), &
+                 new_unittest('first_zero: a bound that is not finite proves nothing', &
+                              test_first_zero_inf), &
                  new_unittest('bad input is a status naming the parameter', test_bad_input)]
     end subroutine collect_flexible_exact
 
@@ -111,7 +121,8 @@ contains
 
     !> Independent integration of the coupled model: classical RK4 on m sub-steps per
     !> sample step, events (HEA = g ky, s' = 0) located by bisection on the sub-step
-    !> re-integrated from its start; the run-out after the record with a = 0.
+    !> re-integrated from its start; after the record a = 0 until the mass is at rest and
+    !> the stuck beam's energy bound (2/pi) sqrt(omega^2 u'^2 + u''^2) < g ky (F.48).
     subroutine reference_coupled(accel, dt, g, omega, xi, ky, m, s_end, s_hist, u_hist, kd, kv)
         real(dp), intent(in) :: accel(:), dt, g, omega, xi, ky
         integer, intent(in) :: m
@@ -130,7 +141,10 @@ contains
         i = 0
         do k = 1, 100000000
             i = i + 1
-            if (i > n - 1 .and. .not. slide) exit
+            if (i > n - 1 .and. .not. slide) then
+                if (2.0_dp / pi * sqrt(omega**2 * y(2)**2 + (-2.0_dp * xi * omega * y(2) &
+                    - omega**2 * y(1))**2) < g * kys(y(3))) exit
+            end if
             do j = 0, m - 1
                 t = real(i - 1, dp) * dt + j * hs
                 rest = hs
@@ -361,18 +375,25 @@ contains
         call check(error, uc, u, atol=1.0e-12_dp * maxval(abs(u)), message='u = modal u')
     end subroutine test_coupled_no_slide
 
-    !> A synthetic record, H = 20 m, Vs = 300 m/s, damping 0.2 and -0.005, an over-damped
+    !> A synthetic record, H = 20 m, Vs = 300 m/s, damping 0.2 and 0.02, an over-damped
     !> sliding oscillator (xi = 0.6) and an over-damped mass (xi = 1.2): exact = RK4 with
-    !> 400 sub-steps per sample.
+    !> 400 sub-steps per sample. A negative damping (-0.005) is refused.
     subroutine test_coupled_reference(error)
         type(test_error), allocatable, intent(out) :: error
         integer, parameter :: n = 1600
         real(dp), parameter :: dt = 0.005_dp
         real(dp) :: a(n), sh(n), uh(n), sr(n), ur(n), smax, sfin, tend, send, omega
-        real(dp), parameter :: xis(4) = [0.2_dp, -0.005_dp, 0.6_dp, 1.2_dp]
-        integer :: j
+        real(dp), parameter :: xis(4) = [0.2_dp, 0.02_dp, 0.6_dp, 1.2_dp]
+        integer :: j, stat
+        character(len=200) :: msg
         a = synthetic(n, dt, 2)
         omega = pi * 300.0_dp / (2.0_dp * 20.0_dp)
+        msg = ''
+        call coupled_exact(a, dt, g0, omega, -0.005_dp, 0.12_dp, smax, sfin, tend, stat, msg)
+        call check(error, stat, SEISPULSE_INVALID_INPUT, 'xi < 0 refused')
+        if (allocated(error)) return
+        call check(error, index(msg, 'xi') > 0, 'message names xi: '//trim(msg))
+        if (allocated(error)) return
         do j = 1, 4
             call run_coupled(error, a, dt, omega, xis(j), 0.12_dp, smax, sfin, tend, 'record', &
                              s_hist=sh, u_hist=uh)
@@ -482,7 +503,7 @@ contains
         real(dp) :: a(n), u1(n), u2(n)
         type(newmark_block_t) :: bc, bt
         type(newmark_result_t) :: r1, r2
-        integer :: stat
+        integer :: stat, j
         a = synthetic(n, dt, 5)
         bc%ky = 0.12_dp
         bt = table_block([0.0_dp, 0.013_dp, 0.02_dp, 0.3_dp], [0.12_dp, 0.12_dp, 0.12_dp, 0.12_dp])
@@ -497,7 +518,51 @@ contains
         call check(error, r2%t_end, r1%t_end, rtol=1.0e-12_dp, message='t_end')
         if (allocated(error)) return
         call check(error, size(r2%slides), size(r1%slides), 'slides')
+        if (allocated(error)) return
+        ! the peak speed inside a step, as the constant rule finds it
+        call check(error, r2%max_vel, r1%max_vel, rtol=1.0e-12_dp, message='max_vel')
+        if (allocated(error)) return
+        do j = 1, size(r1%slides)
+            call check(error, r2%slides(j)%w_peak, r1%slides(j)%w_peak, rtol=1.0e-12_dp, &
+                       message='w_peak')
+            if (allocated(error)) return
+            call check(error, r2%slides(j)%t_peak, r1%slides(j)%t_peak, atol=1.0e-9_dp, &
+                       message='t_peak')
+            if (allocated(error)) return
+        end do
     end subroutine test_table_flat
+
+    !> A tiny last yield (1e-9 g): the run-out after the record is long; the table gives the
+    !> constant rule's value (the same closed form w^2/(2 ky)); a table softening to 1e-9 g
+    !> gives a value.
+    subroutine test_table_long_runout(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 1000
+        real(dp), parameter :: dt = 0.01_dp
+        real(dp) :: a(n)
+        type(newmark_block_t) :: bc, bt
+        type(newmark_result_t) :: r1, r2
+        integer :: stat
+        a = synthetic(n, dt, 5)
+        a(n - 100:n) = 0.4_dp
+        bc%ky = 1.0e-9_dp
+        bt = table_block([0.0_dp, 1.0e3_dp], [1.0e-9_dp, 1.0e-9_dp])
+        call newmark_rigid(a, dt, bc, NEWMARK_EXACT, g0, r1, stat)
+        call check(error, stat, SEISPULSE_SUCCESS, 'constant: status')
+        if (allocated(error)) return
+        call newmark_rigid(a, dt, bt, NEWMARK_EXACT, g0, r2, stat)
+        call check(error, stat, SEISPULSE_SUCCESS, 'table: status')
+        if (allocated(error)) return
+        call check(error, r2%final_disp, r1%final_disp, rtol=1.0e-9_dp, message='final')
+        if (allocated(error)) return
+        call check(error, r2%t_end, r1%t_end, rtol=1.0e-9_dp, message='t_end')
+        if (allocated(error)) return
+        bt = table_block([0.0_dp, 0.01_dp], [0.3_dp, 1.0e-9_dp])
+        call newmark_rigid(a, dt, bt, NEWMARK_EXACT, g0, r2, stat)
+        call check(error, stat, SEISPULSE_SUCCESS, 'softening to 1e-9: status')
+        call check(error, r2%final_disp > 0.01_dp .and. ieee_is_finite(r2%final_disp), &
+                   'softening to 1e-9: slides past the table')
+    end subroutine test_table_long_runout
 
     !> ky falls from 0.15 to 0.06 over 2 cm then rises to 0.11 at 10 cm: exact = RK4 with
     !> 400 sub-steps per sample, stops and onsets by bisection (g = 9.80665).
@@ -836,30 +901,35 @@ contains
     !> bit, with a constant yield, two ways and a yield table.
     subroutine test_dispatch_decoupled(error)
         type(test_error), allocatable, intent(out) :: error
-        integer, parameter :: n = 1600
+        integer, parameter :: n = 800, np = 4000
         real(dp), parameter :: dt = 0.005_dp
-        real(dp) :: a(n), u(n), hea(n), s1(n), s2(n), om
+        real(dp) :: a(n + np), u(n + np), hea(n + np), s1(n), s2(n + np), om
+        real(dp) :: sfin, tend
         type(flexible_mass_t) :: m
         type(flexible_result_t) :: r
         type(newmark_block_t) :: blk
         type(newmark_result_t) :: rr
         integer :: stat, k
         character(len=200) :: msg
-        a = synthetic(n, dt, 8)
+        ! the record stops at 4 s in strong shaking, its last sample 0; the reference pads
+        ! it with zeros (F.48)
+        a = 0.0_dp
+        a(1:n) = synthetic(n, dt, 8)
+        a(n) = 0.0_dp
         m = flexible_mass_t(height=20.0_dp, vs=300.0_dp, vs_base=900.0_dp, damping=0.05_dp)
         do k = 1, 3
             msg = ''
             select case (k)
             case (1)
-                call flexible_decoupled(a, dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, s_hist=s1)
+                call flexible_decoupled(a(1:n), dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, s_hist=s1)
                 blk = newmark_block_t()
                 blk%ky = 0.1_dp
             case (2)
-                call flexible_decoupled(a, dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, &
+                call flexible_decoupled(a(1:n), dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, &
                                         mode=2, s_hist=s1)
                 blk = newmark_block_t(mode=2, ky=0.1_dp)
             case default
-                call flexible_decoupled(a, dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, &
+                call flexible_decoupled(a(1:n), dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, msg, &
                                         ky_disp=[0.0_dp, 0.02_dp], ky_values=[0.12_dp, 0.07_dp], &
                                         s_hist=s1)
                 blk = newmark_block_t()
@@ -871,8 +941,30 @@ contains
             om = pi * r%vs_final / (2.0_dp * m%height)
             call modal_response_exact(a, dt, g0, om, r%damping_final, u, hea, stat)
             call newmark_rigid(hea, dt, blk, NEWMARK_EXACT, g0, rr, stat, u_hist=s2)
-            call check(error, r%max_disp > 0.01_dp .and. identical(s1, s2) &
-                       .and. same_bits(r%final_disp, rr%final_disp), 'bitwise')
+            call check(error, r%max_disp > 0.01_dp .and. identical(s1, s2(1:n)) &
+                       .and. same_bits(r%final_disp, rr%final_disp) &
+                       .and. same_bits(r%t_end, rr%t_end), 'bitwise')
+            if (allocated(error)) return
+            sfin = r%final_disp
+            tend = r%t_end
+            ! zero-padding the record changes nothing (the same final s and t_end)
+            select case (k)
+            case (1)
+                call flexible_decoupled(a(1:n + 2000), dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, &
+                                        msg)
+            case (2)
+                call flexible_decoupled(a(1:n + 2000), dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, &
+                                        msg, mode=2)
+            case default
+                call flexible_decoupled(a(1:n + 2000), dt, 0.1_dp, m, FLEX_EXACT, g0, r, stat, &
+                                        msg, ky_disp=[0.0_dp, 0.02_dp], &
+                                        ky_values=[0.12_dp, 0.07_dp])
+            end select
+            call check(error, stat, SEISPULSE_SUCCESS, 'padded: '//trim(msg))
+            if (allocated(error)) return
+            call check(error, r%final_disp, sfin, rtol=1.0e-12_dp, message='padded: final s')
+            if (allocated(error)) return
+            call check(error, r%t_end, tend, rtol=1.0e-12_dp, message='padded: t_end')
             if (allocated(error)) return
         end do
     end subroutine test_dispatch_decoupled
@@ -958,6 +1050,98 @@ contains
         call first_zero(f, 1.0_dp, fa, fb, m3, found, x, stat)
         call check(error, .not. found, 'no zero above the axis')
     end subroutine test_first_zero
+
+    !> The record stops at 4 s in strong shaking (its last sample 0) with the beam ringing
+    !> (H = 100 m, Vs = 600 m/s): with ky = 0.05 the free vibration starts a new slide after
+    !> the record. The same record with 2000 zeros appended gives the same final s and t_end
+    !> (F.48); the RK4 reference with the same end rule gives the same final s.
+    subroutine test_coupled_zero_padding(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 400, np = 2000
+        real(dp), parameter :: dt = 0.01_dp
+        real(dp) :: a(n + np), smax, sfin, tend, sfin2, tend2, omega, send, s05
+        real(dp) :: sr(n), ur(n)
+        real(dp), parameter :: kys(2) = [0.05_dp, 0.1_dp]
+        integer :: j
+        a = 0.0_dp
+        a(1:n) = 2.0_dp * synthetic(n, dt, 5)
+        a(n) = 0.0_dp
+        omega = pi * 600.0_dp / (2.0_dp * 100.0_dp)
+        do j = 1, 2
+            call run_coupled(error, a(1:n), dt, omega, 0.05_dp, kys(j), smax, sfin, tend, &
+                             'record')
+            if (allocated(error)) return
+            call run_coupled(error, a, dt, omega, 0.05_dp, kys(j), smax, sfin2, tend2, 'padded')
+            if (allocated(error)) return
+            call check(error, sfin > 1.0e-3_dp, 'slides')
+            if (allocated(error)) return
+            call check(error, sfin2, sfin, rtol=1.0e-12_dp, message='final s, padded, ky = ' &
+                       //trim(num(kys(j))))
+            if (allocated(error)) return
+            call check(error, tend2, tend, rtol=1.0e-12_dp, message='t_end, padded')
+            if (allocated(error)) return
+            if (j == 1) s05 = sfin
+        end do
+        ! the RK4 reference with the same end rule (ky = 0.05: a slide after the record)
+        call reference_coupled(a(1:n), dt, g0, omega, 0.05_dp, 0.05_dp, 200, send, sr, ur)
+        call check(error, s05, send, rtol=1.0e-11_dp, message='final s = RK4')
+    end subroutine test_coupled_zero_padding
+
+    !> Stiff masses: omega = 1.6e6 and 1.6e7 rad/s (Vs = 1e5 m/s, H = 0.1 and 0.01 m) and
+    !> H = 1e-5 m (omega = 1.6e10 rad/s) on a record with dt = 0.01 s: a result (no
+    !> error), close to the rigid block's (newmark_rigid, exact).
+    subroutine test_coupled_stiff(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 800
+        real(dp), parameter :: dt = 0.01_dp
+        real(dp) :: a(n), smax, sfin, tend
+        real(dp), parameter :: hs(3) = [0.1_dp, 0.01_dp, 1.0e-5_dp]
+        type(newmark_block_t) :: blk
+        type(newmark_result_t) :: res
+        integer :: stat, j
+        a = 2.0_dp * synthetic(n, dt, 6)
+        blk%ky = 0.1_dp
+        call newmark_rigid(a, dt, blk, NEWMARK_EXACT, g0, res, stat)
+        call check(error, stat, SEISPULSE_SUCCESS, 'rigid: status')
+        if (allocated(error)) return
+        do j = 1, 3
+            call run_coupled(error, a, dt, pi * 1.0e5_dp / (2.0_dp * hs(j)), 0.25_dp, 0.1_dp, &
+                             smax, sfin, tend, 'stiff, H = '//trim(num(hs(j))))
+            if (allocated(error)) return
+            call check(error, sfin, res%final_disp, rtol=1.0e-3_dp, message='rigid limit, H = ' &
+                       //trim(num(hs(j))))
+            if (allocated(error)) return
+        end do
+    end subroutine test_coupled_stiff
+
+    !> A negative damping that overflows the modal response is a status, not Inf.
+    subroutine test_modal_overflow(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 20000
+        real(dp) :: a(n), u(n), hea(n)
+        integer :: stat
+        character(len=200) :: msg
+        a = synthetic(n, 0.01_dp, 1)
+        msg = ''
+        call modal_response_exact(a, 0.01_dp, g0, 600.0_dp, -0.9_dp, u, hea, stat, msg)
+        call check(error, stat, SEISPULSE_INVALID_INPUT, 'overflow: status')
+        if (allocated(error)) return
+        call check(error, index(msg, 'xi') > 0, 'message names xi: '//trim(msg))
+    end subroutine test_modal_overflow
+
+    !> An infinite bound on f''' never proves a zero absent: first_zero returns a status.
+    subroutine test_first_zero_inf(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(dip_t) :: f
+        real(dp) :: fa(0:2), fb(0:2), x
+        logical :: found
+        integer :: stat
+        f%lift = -1.0e-10_dp
+        call f%taylor(0.0_dp, fa)
+        call f%taylor(1.0_dp, fb)
+        call first_zero(f, 1.0_dp, fa, fb, ieee_value(1.0_dp, ieee_positive_inf), found, x, stat)
+        call check(error, stat, SEISPULSE_INVALID_INPUT, 'status')
+    end subroutine test_first_zero_inf
 
     subroutine test_bad_input(error)
         type(test_error), allocatable, intent(out) :: error

@@ -43,7 +43,7 @@ module seispulse_flexible
                                         flexible_mass_validate, ky_table_validate, eql_iterate, &
                                         radiation_damping, participation_modal, &
                                         participation_total, FLEX_SLAMMER, FLEX_EXACT
-    use seispulse_flexible_exact, only: modal_response_exact, coupled_exact
+    use seispulse_flexible_exact, only: modal_response_exact, modal_hea_extended, coupled_exact
     implicit none
     private
 
@@ -344,7 +344,9 @@ contains
         type(exact_peak_t) :: resp
         type(newmark_block_t) :: blk
         type(newmark_result_t) :: rres
-        real(dp) :: omega, xi
+        real(dp) :: omega, xi, kylo
+        real(dp), allocatable :: hext(:), sh(:), wh(:)
+        integer :: ntail, round
 
         resp%accel => accel
         resp%dt = dt
@@ -377,9 +379,32 @@ contains
                 allocate(blk%ky_disp, source=tdisp)
                 allocate(blk%ky_values, source=tky)
             end if
-            call newmark_rigid(resp%hea, dt, blk, NEWMARK_EXACT, g, rres, stat, errmsg, &
-                               u_hist=s_hist, w_hist=sdot_hist)
-            if (stat /= SEISPULSE_SUCCESS) return
+            ! the HEA goes on after the record (the beam's free vibration) until no slide can
+            ! start and the block is at rest (doc/flexible.flex-exact.md (F.48))
+            kylo = minval(tky)
+            if (mode == NEWMARK_ASYM) kylo = min(kylo, ky_up)
+            ntail = 0
+            do round = 1, 65
+                if (round > 64) then
+                    call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky: the block ' &
+                                   //'still slides long after the record')
+                    return
+                end if
+                call modal_hea_extended(accel, dt, g, omega, xi, kylo, ntail, hext, stat, &
+                                        errmsg)
+                if (stat /= SEISPULSE_SUCCESS) return
+                if (allocated(sh)) deallocate(sh, wh)
+                allocate(sh(size(hext)), wh(size(hext)))
+                call newmark_rigid(hext, dt, blk, NEWMARK_EXACT, g, rres, stat, errmsg, &
+                                   u_hist=sh, w_hist=wh)
+                if (stat /= SEISPULSE_SUCCESS) return
+                if (rres%t_end <= real(size(hext) - 1, dp) * dt) exit
+                ! still sliding at the end of the tail: a longer tail
+                ntail = 2 * (size(hext) - size(accel)) &
+                        + ceiling((rres%t_end - real(size(hext) - 1, dp) * dt) / dt)
+            end do
+            if (present(s_hist)) s_hist(:) = sh(1:size(accel))
+            if (present(sdot_hist)) sdot_hist(:) = wh(1:size(accel))
             res%max_disp = rres%max_disp
             res%final_disp = rres%final_disp
             res%t_end = rres%t_end

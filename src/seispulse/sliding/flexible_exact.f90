@@ -34,7 +34,7 @@ module seispulse_flexible_exact
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
                                 set_error
-    use seispulse_format, only: real_str
+    use seispulse_format, only: real_str, int_str
     use seispulse_checks, only: finite_positive, positive, check_history_sizes
     use seispulse_special, only: pi, complex_phis
     use seispulse_divided_differences, only: cexp_dd1, cexp_dd2, cexp_dd3
@@ -46,15 +46,19 @@ module seispulse_flexible_exact
     implicit none
     private
 
-    public :: modal_response_exact, coupled_exact
+    public :: modal_response_exact, modal_hea_extended, coupled_exact
     public :: zero_function, first_zero, prop_t, propagator
 
     real(dp), parameter :: lm = 4.0_dp / pi          !! L/M of the first mode
     real(dp), parameter :: lmt = 2.0_dp / pi         !! L/Mtot
     real(dp), parameter :: d1 = 1.0_dp - 8.0_dp / pi**2  !! 1 - L^2/(M Mtot)
 
-    !> Events (onsets, stops) allowed in one step before it is reported as a bug.
+    !> Events (onsets, stops) allowed in one step before it is reported as chatter.
     integer, parameter :: max_events = 16
+    !> Sub-pieces of a step of a stiff phase (omega tau > stiff_len; lengths doubling
+    !> from stiff_len/omega, restarted after each event): enough for omega dt < 2^60.
+    integer, parameter :: max_sub = 64
+    real(dp), parameter :: stiff_len = 8.0_dp
     !> Depth of the interval stack of `first_zero` (intervals down to h 2^-62).
     integer, parameter :: max_depth = 62
     !> Steps of the run-out after the record before it is reported as an error.
@@ -144,6 +148,7 @@ contains
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         real(dp), intent(out), optional :: udot(:)            !! u' (m/s)
         real(dp), intent(out), optional :: uddot(:)           !! u'' (m/s^2)
+        real(dp), parameter :: big = 1.0e150_dp  !! |u| + |u'|/omega (m) beyond which it fails
         type(sdof_step_t) :: st
         type(prop_t) :: pr
         real(dp) :: z, v, zn, acc, w2, c, gl
@@ -157,19 +162,20 @@ contains
         if (stat /= SEISPULSE_SUCCESS) return
         ! sdof_step solves z'' + 2 xi omega z' + omega^2 z = -a_g: a_g = (4/pi) g a;
         ! over-damped (xi >= 1): the propagator of (F.38)
-        over = xi >= 1.0_dp
         gl = lm * g
-        w2 = omega**2
-        c = 2.0_dp * xi * omega
-        if (over) then
-            call propagator(c, w2, dt, pr)
-        else
-            st = sdof_step(2.0_dp * pi / omega, xi, dt)
-        end if
+        call modal_setup(dt, omega, xi, over, w2, c, st, pr)
         z = 0.0_dp
         v = 0.0_dp
         do i = 1, n
             if (i > 1) call step(i)
+            if (.not. (abs(z) + abs(v) / omega < big)) then
+                ! a negative damping grows the response beyond range: refuse before overflow
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'xi = '//real_str(xi) &
+                               //': the modal response overflows near t = ' &
+                               //real_str(real(i - 1, dp) * dt)//' s (omega = ' &
+                               //real_str(omega)//' rad/s)')
+                return
+            end if
             acc = -gl * accel(i) - c * v - w2 * z
             u(i) = z
             hea(i) = accel(i) + lmt * acc / g
@@ -198,6 +204,127 @@ contains
         end subroutine step
     end subroutine modal_response_exact
 
+    !> HEA (g) of the record followed by the beam's free vibration after it (a = 0 from the
+    !> last sample on, the recurrence of modal_response_exact), sampled at dt (F.48): at least
+    !> min_tail samples after the record, then until the stuck beam's energy bound
+    !> (2/pi) sqrt(omega^2 u'^2 + u''^2)/g is below ky_min (g) and no slide on HEA alone can
+    !> start again. hea(1:n) is modal_response_exact's HEA bit for bit.
+    subroutine modal_hea_extended(accel, dt, g, omega, xi, ky_min, min_tail, hea, stat, errmsg)
+        real(dp), intent(in) :: accel(:)                      !! record (g) at (i-1) dt
+        real(dp), intent(in) :: dt                            !! time step (s) > 0
+        real(dp), intent(in) :: g                             !! gravity (m/s^2) > 0
+        real(dp), intent(in) :: omega                         !! circular frequency (rad/s) > 0
+        real(dp), intent(in) :: xi                            !! damping ratio >= 0
+        real(dp), intent(in) :: ky_min                        !! smallest yield (g) > 0
+        integer, intent(in) :: min_tail                       !! samples after the record >= 0
+        real(dp), allocatable, intent(out) :: hea(:)          !! HEA (g), n + tail samples
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp), allocatable :: u(:), ud(:)
+        type(sdof_step_t) :: st
+        type(prop_t) :: pr
+        real(dp) :: z, v, zn, acc, w2, c
+        integer :: n, ntail, pass, j
+        logical :: over
+        call check_modal(accel, dt, g, omega, xi, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        call check_damping(xi, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        if (.not. positive(ky_min)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky = '//real_str(ky_min) &
+                           //': must be > 0 (g)')
+            return
+        end if
+        n = size(accel)
+        allocate(u(n), ud(n), hea(n))
+        call modal_response_exact(accel, dt, g, omega, xi, u, hea, stat, errmsg, udot=ud)
+        if (stat /= SEISPULSE_SUCCESS) return
+        call modal_setup(dt, omega, xi, over, w2, c, st, pr)
+        ! pass 1 counts the tail, pass 2 stores it (the same arithmetic)
+        ntail = 0
+        do pass = 1, 2
+            z = u(n)
+            v = ud(n)
+            do j = 1, max_runout + 1
+                if (pass == 2 .and. j > ntail) exit
+                acc = -c * v - w2 * z
+                if (pass == 1 .and. j > min_tail) then
+                    if (lmt * sqrt(w2 * v * v + acc * acc) * (1.0_dp + 1.0e-10_dp) < g * ky_min) &
+                        exit
+                end if
+                if (j > max_runout) then
+                    call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky = ' &
+                                   //real_str(ky_min)//': the free vibration after the ' &
+                                   //'record stays above the yield for '//int_str(max_runout) &
+                                   //' steps')
+                    return
+                end if
+                call free_step()
+                if (pass == 1) then
+                    ntail = j
+                else
+                    hea(n + j) = lmt * (-c * v - w2 * z) / g
+                end if
+            end do
+            if (pass == 1) then
+                if (ntail == 0) return
+                call grow()
+            end if
+        end do
+    contains
+        !> One step of the recurrence of modal_response_exact with a = 0.
+        subroutine free_step()
+            real(dp) :: x1, x2
+            if (over) then
+                x1 = v
+                x2 = -c * v - w2 * z
+                zn = z + pr%p1(1, 1) * x1 + pr%p1(1, 2) * x2
+                v = v + pr%p1(2, 1) * x1 + pr%p1(2, 2) * x2
+                z = zn
+                return
+            end if
+            zn = st%e11 * z + st%e12 * v
+            v = st%e21 * z + st%e22 * v
+            z = zn
+        end subroutine free_step
+        subroutine grow()
+            real(dp), allocatable :: tmp(:)
+            allocate(tmp(n + ntail))
+            tmp(1:n) = hea
+            call move_alloc(tmp, hea)
+        end subroutine grow
+    end subroutine modal_hea_extended
+
+    !> The one-step recurrence of the modal response: sdof_step (|xi| < 1) or, over-damped
+    !> (xi >= 1), the propagator of (F.38); w2 = omega^2, c = 2 xi omega.
+    subroutine modal_setup(dt, omega, xi, over, w2, c, st, pr)
+        real(dp), intent(in) :: dt, omega, xi
+        logical, intent(out) :: over
+        real(dp), intent(out) :: w2, c
+        type(sdof_step_t), intent(out) :: st
+        type(prop_t), intent(out) :: pr
+        over = xi >= 1.0_dp
+        w2 = omega**2
+        c = 2.0_dp * xi * omega
+        if (over) then
+            call propagator(c, w2, dt, pr)
+        else
+            st = sdof_step(2.0_dp * pi / omega, xi, dt)
+        end if
+    end subroutine modal_setup
+
+    !> The analyses that run on after the record need xi >= 0 (F.48).
+    subroutine check_damping(xi, stat, errmsg)
+        real(dp), intent(in) :: xi
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        stat = SEISPULSE_SUCCESS
+        if (xi < 0.0_dp) call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'xi = ' &
+                                        //real_str(xi)//': the total damping ratio must be ' &
+                                        //'>= 0 (the free vibration after the record would ' &
+                                        //'grow and the sliding never end)')
+    end subroutine check_damping
+
     !> Checks shared by the two public routines.
     subroutine check_modal(accel, dt, g, omega, xi, stat, errmsg)
         real(dp), intent(in) :: accel(:), dt, g, omega, xi
@@ -219,8 +346,11 @@ contains
     ! ------------------------------------------------------------------------------
 
     !> Coupled stick-slip of the flexible mass (F.30)-(F.33), exact: downslope sliding s
-    !> (m, >= 0) under the record as given. After the last sample the record is 0 and a
-    !> mass still sliding runs out to rest (final_disp includes it, t_end says when).
+    !> (m, >= 0) under the record as given. After the last sample the record is 0 and the
+    !> analysis goes on until the mass is at rest and the beam's free vibration can no longer
+    !> start a slide, (2/pi) sqrt(omega^2 u'^2 + u''^2) < g ky (F.48) (final_disp includes
+    !> it, t_end says when the last slide ended): zero samples appended change nothing.
+    !> xi < 0 is refused (the free vibration would grow without end).
     !> Histories at the samples: s (m), s' (m/s), u (m, the sign of (F.30)) and
     !> hea = a + (2/pi) u''/g (g) with u'' of the phase the mass is in ((F.30) or (F.32)).
     !> ky = +inf: never slides. With ky_disp, ky_values (m, g): ky(s) interpolated
@@ -231,7 +361,7 @@ contains
         real(dp), intent(in) :: dt                            !! time step (s) > 0
         real(dp), intent(in) :: g                             !! gravity (m/s^2) > 0
         real(dp), intent(in) :: omega                         !! circular frequency (rad/s) > 0
-        real(dp), intent(in) :: xi                            !! total damping ratio > -1
+        real(dp), intent(in) :: xi                            !! total damping ratio >= 0
         real(dp), intent(in) :: ky                            !! yield acceleration (g) > 0
         real(dp), intent(out) :: max_disp                     !! largest s (m)
         real(dp), intent(out) :: final_disp                   !! s at rest at the end (m)
@@ -256,13 +386,16 @@ contains
         logical :: tab
         real(dp) :: cst, w2t, csl, w2s, x, h, t0, as, a0, a1, fa(0:2), fb(0:2), m3, xs
         real(dp) :: u, v, s, sd, gky, tol, ue, ve, se, sde, d2e
-        integer :: n, i, nev, k
-        logical :: sliding, found, last
+        real(dp) :: hp, lsub, om
+        integer :: n, i, nev, k, it
+        logical :: sliding, found, done
 
         max_disp = 0.0_dp
         final_disp = 0.0_dp
         t_end = 0.0_dp
         call check_modal(accel, dt, g, omega, xi, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        call check_damping(xi, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         if (.not. (positive(ky) .or. present(ky_disp) .or. present(ky_values))) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky = '//real_str(ky) &
@@ -322,7 +455,7 @@ contains
         if (onset_now(fa)) call start_slide()
         call record(1, accel(1))
 
-        last = .false.
+        done = .false.
         i = 0
         do k = 1, n - 1 + max_runout
             i = i + 1
@@ -330,19 +463,26 @@ contains
                 a0 = accel(i)
                 a1 = accel(i + 1)
             else
-                ! after the record: a = 0 until the slide ends
-                if (.not. sliding) exit
+                ! after the record: a = 0 until the mass is at rest and no onset can follow
+                ! (F.48)
+                if (.not. sliding .and. quiet()) then
+                    done = .true.
+                    exit
+                end if
                 a0 = 0.0_dp
                 a1 = 0.0_dp
-                last = .true.
             end if
             t0 = real(i - 1, dp) * dt
             x = 0.0_dp
             as = a0
-            events: do nev = 1, max_events + 1
-                if (nev > max_events) then
-                    call set_error(stat, errmsg, SEISPULSE_INTERNAL, 'coupled_exact: too many ' &
-                                   //'events in one step near t = '//real_str(t0)//' (a bug)')
+            nev = 0
+            lsub = 0.0_dp
+            events: do it = 1, (max_events + 1) * max_sub
+                if (nev > max_events .or. it == (max_events + 1) * max_sub) then
+                    call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'coupled_exact: more ' &
+                                   //'than '//int_str(max_events)//' onsets and stops in one ' &
+                                   //'step near t = '//real_str(t0)//' s (the stick-slip ' &
+                                   //'chatters: a smaller dt or another ky)')
                     return
                 end if
                 h = dt - x
@@ -369,22 +509,34 @@ contains
                 end if
                 fa(0) = max(fa(0), 0.0_dp)
                 if (sliding .and. zero(fa(0))) fa(1) = max(fa(1), 0.0_dp)
-                ! the end of the piece (the full-step propagators computed once)
-                if (x > 0.0_dp) then
-                    call propagator(ph%c, ph%w2, h, pr)
-                    call phase_state(ph, pr, h, ue, ve, se, sde, d2e)
-                else if (sliding) then
-                    call phase_state(ph, p_slide, h, ue, ve, se, sde, d2e)
-                else
-                    call phase_state(ph, p_stick, h, ue, ve, se, sde, d2e)
+                ! a stiff phase (omega h > stiff_len): pieces from stiff_len/omega on, doubling,
+                ! with the bound renewed at each piece's start (the transient decays)
+                hp = h
+                om = sqrt(ph%w2)
+                if (om * h > stiff_len) then
+                    if (.not. (lsub > 0.0_dp)) lsub = stiff_len / om
+                    hp = min(h, lsub)
+                    lsub = 2.0_dp * lsub
                 end if
-                call phase_f(ph, h, ue, ve, sde, fb)
-                m3 = phase_bound(h)
+                ! the end of the piece (the full-step propagators computed once)
+                if (x > 0.0_dp .or. hp < h) then
+                    call propagator(ph%c, ph%w2, hp, pr)
+                    call phase_state(ph, pr, hp, ue, ve, se, sde, d2e)
+                else if (sliding) then
+                    call phase_state(ph, p_slide, hp, ue, ve, se, sde, d2e)
+                else
+                    call phase_state(ph, p_stick, hp, ue, ve, se, sde, d2e)
+                end if
+                call phase_f(ph, hp, ue, ve, sde, fb)
+                m3 = phase_bound(hp)
                 ! most steps: no event, proven by the first test of first_zero
                 found = .false.
-                if (.not. excluded(fa, fb, h, m3)) then
-                    call first_zero(ph, h, fa, fb, m3, found, xs, stat, errmsg)
-                    if (stat /= SEISPULSE_SUCCESS) return
+                if (.not. excluded(fa, fb, hp, m3)) then
+                    call first_zero(ph, hp, fa, fb, m3, found, xs, stat, errmsg)
+                    if (stat /= SEISPULSE_SUCCESS) then
+                        call stiff_message()
+                        return
+                    end if
                 end if
                 if (.not. found) then
                     u = ue
@@ -393,9 +545,17 @@ contains
                         s = se
                         sd = sde
                     end if
+                    if (hp < h) then
+                        ! the next piece of a stiff phase
+                        as = as + (a1 - as) * (hp / h)
+                        x = x + hp
+                        cycle events
+                    end if
                     exit events
                 end if
                 ! the event at xs: advance the state there
+                nev = nev + 1
+                lsub = 0.0_dp
                 call propagator(ph%c, ph%w2, xs, pr)
                 call advance(pr, xs)
                 as = as + (a1 - as) * (xs / h)
@@ -408,19 +568,46 @@ contains
                     call start_slide()
                 end if
             end do events
+            if (.not. (ieee_is_finite(u) .and. ieee_is_finite(v) .and. ieee_is_finite(s) &
+                       .and. ieee_is_finite(sd))) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'coupled_exact: the ' &
+                               //'response overflows near t = '//real_str(t0)//' s (omega = ' &
+                               //real_str(omega)//' rad/s, xi = '//real_str(xi)//')')
+                return
+            end if
             if (i <= n - 1) call record(i + 1, a1)
-            if (last .and. .not. sliding) exit
         end do
-        if (stat /= SEISPULSE_SUCCESS) return
-        if (sliding) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky: the mass still slides ' &
-                           //'long after the record (the run-out does not end)')
+        if (.not. done) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky = '//real_str(ky) &
+                           //': the mass still slides or the beam can still start a slide ' &
+                           //int_str(max_runout)//' steps after the record (the run-out ' &
+                           //'does not end)')
             return
         end if
         final_disp = s
         max_disp = s
 
     contains
+
+        !> At rest after the record (a = 0): the stuck beam's (u', u'') has the energy
+        !> N^2 = omega^2 u'^2 + u''^2, not increasing for xi >= 0, and |u''| <= N; no onset
+        !> can follow once (2/pi) N < g ky (F.48).
+        logical function quiet()
+            real(dp) :: acc, nn
+            acc = -cst * v - w2t * u
+            nn = sqrt(w2t * v * v + acc * acc)
+            quiet = lmt * nn * (1.0_dp + 1.0e-10_dp) < gky
+            if (.not. ieee_is_finite(gky)) quiet = .true.
+        end function quiet
+
+        !> A first_zero that does not decide: the mass is too stiff for dt (or the bound
+        !> is not finite); the message names omega.
+        subroutine stiff_message()
+            stat = SEISPULSE_INVALID_INPUT
+            if (present(errmsg)) errmsg = 'omega = '//real_str(omega)//' rad/s, dt = ' &
+                //real_str(dt)//' s: the onsets and stops of this stiff mass cannot be ' &
+                //'decided within the bounds of the exact rule (a larger height or a lower vs)'
+        end subroutine stiff_message
 
         !> The phase (0 stick, 1 slide) from the current state at x with g a = as .. a1.
         subroutine set_phase(mode, xx, aa, ae)
@@ -465,11 +652,21 @@ contains
             if (f(0) < -tol) then
                 onset_now = .true.
             else if (f(0) <= tol) then
-                onset_now = f(1) < 0.0_dp .or. (zero(f(1)) .and. f(2) < 0.0_dp)
+                ! a double zero (f = f' = 0): the slide's s'''' decides (s'' = -f/d1,
+                ! s''' = -f'/d1 at an onset; s'''' = (2/pi) u'''' of (F.32), a'' = 0)
+                onset_now = f(1) < 0.0_dp .or. (zero(f(1)) .and. slide_s4() > 0.0_dp)
             else
                 onset_now = .false.
             end if
         end function onset_now
+
+        !> s'''' at the start of a slide from the current state (F.32)-(F.33).
+        real(dp) function slide_s4()
+            real(dp) :: acc, jrk
+            acc = (-lm * gky - cst * v - w2t * u) / d1
+            jrk = (-cst * acc - w2t * v) / d1
+            slide_s4 = lmt * (-cst * jrk - w2t * acc) / d1
+        end function slide_s4
 
         subroutine start_slide()
             sliding = .true.
@@ -649,15 +846,15 @@ contains
             c(0) = c(0) + ode%dense%r(m, 6)
             call times_one_minus_x(c)
             c(0) = c(0) + ode%dense%r(m, 5)
-            c = eoshift(c, -1)
+            call times_x(c)
             c(0) = c(0) + ode%dense%r(m, 4)
             call times_one_minus_x(c)
             c(0) = c(0) + ode%dense%r(m, 3)
-            c = eoshift(c, -1)
+            call times_x(c)
             c(0) = c(0) + ode%dense%r(m, 2)
             call times_one_minus_x(c)
             c(0) = c(0) + ode%dense%r(m, 1)
-            c = eoshift(c, -1)
+            call times_x(c)
             c(0) = c(0) + ode%dense%y0(m)
         end subroutine dense_poly
 
@@ -783,11 +980,24 @@ contains
         m = m * (1.0_dp + 1.0e-10_dp)
     end function poly_bound3
 
-    !> c times (1 - x), degree kept within 7.
+    !> c times (1 - x), degree kept within 7 (explicit shifts: no temporary).
     pure subroutine times_one_minus_x(c)
         real(dp), intent(inout) :: c(0:7)
-        c = c - eoshift(c, -1)
+        integer :: k
+        do k = 7, 1, -1
+            c(k) = c(k) - c(k - 1)
+        end do
     end subroutine times_one_minus_x
+
+    !> c times x, degree kept within 7.
+    pure subroutine times_x(c)
+        real(dp), intent(inout) :: c(0:7)
+        integer :: k
+        do k = 7, 1, -1
+            c(k) = c(k - 1)
+        end do
+        c(0) = 0.0_dp
+    end subroutine times_x
 
     ! ------------------------------------------------------------------------------
     ! The oscillator's matrix functions
@@ -879,6 +1089,13 @@ contains
         stat = SEISPULSE_SUCCESS
         found = .false.
         x = h
+        if (.not. (ieee_is_finite(m3) .and. all(ieee_is_finite(fa)) &
+                   .and. all(ieee_is_finite(fb)))) then
+            ! a bound that is not finite proves nothing
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'first_zero: f or the ' &
+                           //'bound on its third derivative is not finite (overflow)')
+            return
+        end if
         width = 4.0_dp * epsilon(1.0_dp) * h
         xa = 0.0_dp
         fl = fa
@@ -918,7 +1135,9 @@ contains
             xs(top) = xm
             fs(:, top) = fm
         end do
-        call set_error(stat, errmsg, SEISPULSE_INTERNAL, 'first_zero: no decision (a bug)')
+        call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'first_zero: no decision in ' &
+                       //int_str(64 * (max_depth + 2))//' sub-intervals (the bound on the ' &
+                       //'third derivative is too large for the interval)')
 
     contains
 
@@ -937,6 +1156,9 @@ contains
         real(dp) :: dl, dr
         excluded = .false.
         if (.not. (fr(0) > 0.0_dp)) return
+        ! a bound or a value that is not finite proves nothing
+        if (.not. (ieee_is_finite(m3) .and. all(ieee_is_finite(fl)) &
+                   .and. all(ieee_is_finite(fr)))) return
         ! the crude bound f >= f(xa) - |f'(xa)| L - max(0, M3 L/3 - f''(xa)) L^2/2 first
         excluded = fl(0) - abs(fl(1)) * el - max(0.0_dp, m3 * el / 3.0_dp - fl(2)) * el * el &
                    * 0.5_dp > 0.0_dp

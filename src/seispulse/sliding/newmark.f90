@@ -33,7 +33,7 @@ module seispulse_newmark
     use seispulse_checks, only: positive
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
                                 set_error
-    use seispulse_format, only: real_str, name_of, code_of
+    use seispulse_format, only: real_str, int_str, name_of, code_of
     use seispulse_sliding_sim, only: slide_t
     use seispulse_pieces, only: record_step_check
     use seispulse_sliding_closed, only: inclined_resistances
@@ -61,6 +61,11 @@ module seispulse_newmark
     !> Events allowed in one step; a handful are possible (stop, reversal, stop,
     !> onset), so reaching this is a bug, reported as such.
     integer, parameter :: max_events = 8
+    !> Turning points of the speed searched in one piece of a table slide.
+    integer, parameter :: max_turns = 1000
+    !> Steps of the run-out of a table slide after the record (beyond: closed form on the
+    !> last row, or an error).
+    integer, parameter :: max_runout = 10000000
 
     !> SLAMMER's "at rest" test on the velocity (cm/s).
     real(dp), parameter :: slammer_rest = 1.0e-15_dp
@@ -98,7 +103,9 @@ module seispulse_newmark
         real(dp) :: f0 = 0.0_dp     !! a - ky at the start (g)
         real(dp) :: f1 = 0.0_dp     !! slope of a (g/s)
         real(dp) :: target = 0.0_dp !! Y at the segment end (mode 1)
-        integer :: mode = 0         !! 0: f = Y', 1: f = Y - target
+        real(dp) :: x0 = 0.0_dp     !! origin of f in mode 2 (s)
+        real(dp) :: zsign = 1.0_dp  !! sign of f in mode 2
+        integer :: mode = 0         !! 0: f = Y', 1: f = Y - target, 2: f = zsign Y''(x0 + x)
     contains
         procedure :: taylor => table_taylor
         procedure :: disp => table_disp
@@ -513,9 +520,9 @@ contains
         type(table_slide_t) :: ph
         real(dp) :: dd(size(kd))
         real(dp) :: u, w, x, h, as, a0, a1, t0, fa(0:2), fb(0:2), m3, xs, xb, ky_now, xo, wpk
-        real(dp) :: tpk, kmin
+        real(dp) :: tpk, kmin, rl
         integer :: n, i, k, nev, nt, seg, lim
-        logical :: sliding, found, want_u, want_w
+        logical :: sliding, found, want_u, want_w, closed
 
         stat = SEISPULSE_SUCCESS
         n = size(accel)
@@ -538,18 +545,34 @@ contains
         if (exceeds(accel(1), ky_now)) call start(0.0_dp)
 
         lim = n - 1
+        closed = .false.
         i = 0
         steps: do while (i < lim)
             i = i + 1
+            t0 = real(i - 1, dp) * dt
             if (i <= n - 1) then
                 a0 = accel(i)
                 a1 = accel(i + 1)
             else
                 if (.not. sliding) exit steps
+                if (closed .and. seg == nt) then
+                    ! a long run-out on the last row (ky constant, a = 0): it stops after
+                    ! w/ky (as in rigid_exact)
+                    if (kv(nt) < w / huge(w)) then
+                        call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky_values: ' &
+                                       //'too small for the final sliding velocity (the ' &
+                                       //'stop time overflows)')
+                        return
+                    end if
+                    xs = w / kv(nt)
+                    u = u + 0.5_dp * w * xs
+                    w = 0.0_dp
+                    call stop_slide(t0 + xs)
+                    exit steps
+                end if
                 a0 = 0.0_dp
                 a1 = 0.0_dp
             end if
-            t0 = real(i - 1, dp) * dt
             x = 0.0_dp
             as = a0
             events: do nev = 1, max_events + 2 * nt + 1
@@ -580,6 +603,7 @@ contains
                             ph%mode = 0
                             if (stat /= SEISPULSE_SUCCESS) return
                             call peak_in(xb)
+                            if (stat /= SEISPULSE_SUCCESS) return
                             w = ph%vel(xb)
                             u = dd(seg + 1)
                             seg = seg + 1
@@ -589,6 +613,7 @@ contains
                         end if
                     end if
                     call peak_in(xs)
+                    if (stat /= SEISPULSE_SUCCESS) return
                     u = u + ph%disp(xs)
                     if (.not. found) then
                         w = ph%vel(h)
@@ -618,14 +643,22 @@ contains
                 if (want_u) u_hist(i + 1) = u
                 if (want_w) w_hist(i + 1) = w * g
                 if (i == n - 1 .and. sliding) then
-                    ! the run-out: ky >= kmin decelerates it to rest within w/kmin
-                    lim = n - 1 + ceiling(w / (kmin * dt)) + 2
+                    ! the run-out: ky >= kmin decelerates it to rest within w/kmin (the count
+                    ! in real arithmetic; a longer one: closed form on the last row)
+                    rl = w / (kmin * dt)
+                    if (rl < real(max_runout, dp)) then
+                        lim = n - 1 + ceiling(rl) + 2
+                    else
+                        closed = .true.
+                        lim = n - 1 + max_runout
+                    end if
                 end if
             end if
         end do steps
         if (sliding) then
-            call set_error(stat, errmsg, SEISPULSE_INTERNAL, 'newmark: the run-out after the ' &
-                           //'record did not end (a bug)')
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ky_values: the run-out ' &
+                           //'after the record exceeds '//int_str(max_runout)//' steps ' &
+                           //'(a yield too small on a row before the last)')
             return
         end if
 
@@ -683,10 +716,48 @@ contains
             ky_now = table_ky(u)
         end subroutine stop_slide
 
-        !> The speed at the end of a piece of length xx (peaks at piece ends).
+        !> The peak speed on a piece of length xx: its interior maxima (the zeros of Y''
+        !> from + to -; Y'' solves z'' = -kappa z, first_zero with the bound of |z'''| =
+        !> |kappa Y'''|) and its end.
         subroutine peak_in(xx)
             real(dp), intent(in) :: xx
-            real(dp) :: ww
+            real(dp) :: ww, xa, za(0:2), zb(0:2), xz
+            integer :: j
+            logical :: fnd
+            xa = 0.0_dp
+            ph%mode = 2
+            ph%zsign = 1.0_dp
+            do j = 1, max_turns
+                if (.not. (xx - xa > 0.0_dp)) exit
+                ph%x0 = xa
+                call ph%taylor(0.0_dp, za)
+                if (j == 1 .and. (za(0) < 0.0_dp .or. (.not. (abs(za(0)) > 0.0_dp) &
+                                                       .and. za(1) < 0.0_dp))) then
+                    ! the speed falls first: the next turn is a minimum
+                    ph%zsign = -1.0_dp
+                    za = -za
+                end if
+                za(0) = max(za(0), 0.0_dp)
+                if (.not. (za(0) > 0.0_dp)) za(1) = max(za(1), 0.0_dp)
+                call ph%taylor(xx - xa, zb)
+                call first_zero(ph, xx - xa, za, zb, turn_bound(ph, xx - xa), fnd, xz, stat, &
+                                errmsg)
+                if (stat /= SEISPULSE_SUCCESS) exit
+                if (.not. (fnd .and. xz > 0.0_dp)) exit
+                if (ph%zsign > 0.0_dp) then
+                    ww = ph%vel(xa + xz)
+                    if (ww > wpk) then
+                        wpk = ww
+                        tpk = t0 + x + xa + xz
+                    end if
+                end if
+                xa = xa + xz
+                ph%zsign = -ph%zsign
+            end do
+            ph%mode = 0
+            ph%x0 = 0.0_dp
+            ph%zsign = 1.0_dp
+            if (stat /= SEISPULSE_SUCCESS) return
             ww = ph%vel(xx)
             if (ww > wpk) then
                 wpk = ww
@@ -705,7 +776,15 @@ contains
         y = self%disp(x)
         yp = self%vel(x)
         ypp = -self%kappa * y + self%f0 + self%f1 * x
-        if (self%mode == 1) then
+        if (self%mode == 2) then
+            ! f = zsign Y''(x0 + x): Y'''' = -kappa Y''
+            y = self%disp(self%x0 + x)
+            yp = self%vel(self%x0 + x)
+            ypp = -self%kappa * y + self%f0 + self%f1 * (self%x0 + x)
+            f(0) = self%zsign * ypp
+            f(1) = self%zsign * (-self%kappa * yp + self%f1)
+            f(2) = -self%zsign * self%kappa * ypp
+        else if (self%mode == 1) then
             f(0) = y - self%target
             f(1) = yp
             f(2) = ypp
@@ -738,19 +817,36 @@ contains
     pure real(dp) function table_bound(self, hh)
         class(table_slide_t), intent(in) :: self
         real(dp), intent(in) :: hh
-        real(dp) :: z0, z1, r
-        z0 = self%f0
-        z1 = -self%kappa * self%w0 + self%f1
-        if (self%kappa > 0.0_dp) then
-            table_bound = self%kappa * sqrt(z0 * z0 + z1 * z1 / self%kappa)
-        else if (self%kappa < 0.0_dp) then
-            r = sqrt(-self%kappa)
-            table_bound = -self%kappa * (abs(z0) * cosh(r * hh) + abs(z1) * sinh(r * hh) / r)
-        else
-            table_bound = 0.0_dp
-        end if
-        table_bound = table_bound * (1.0_dp + 1.0e-10_dp)
+        table_bound = kappa_bound(self%kappa, self%f0, -self%kappa * self%w0 + self%f1, hh)
     end function table_bound
+
+    !> |kappa| max |z| over [0, hh] for z'' = -kappa z, z(0) = z0, z'(0) = z1 (N.9).
+    pure real(dp) function kappa_bound(kappa, z0, z1, hh) result(m)
+        real(dp), intent(in) :: kappa, z0, z1, hh
+        real(dp) :: r
+        if (kappa > 0.0_dp) then
+            m = kappa * sqrt(z0 * z0 + z1 * z1 / kappa)
+        else if (kappa < 0.0_dp) then
+            r = sqrt(-kappa)
+            m = -kappa * (abs(z0) * cosh(r * hh) + abs(z1) * sinh(r * hh) / r)
+        else
+            m = 0.0_dp
+        end if
+        m = m * (1.0_dp + 1.0e-10_dp)
+    end function kappa_bound
+
+    !> Bound on |Y'''''| = |kappa Y'''| over [x0, x0 + hh] (mode 2 of table_taylor): Y'''
+    !> solves w'' = -kappa w with w = Y''', w' = -kappa Y'' at x0 (as (N.9)).
+    function turn_bound(ph, hh) result(m)
+        type(table_slide_t), intent(inout) :: ph
+        real(dp), intent(in) :: hh
+        real(dp) :: m, f(0:2), zs
+        zs = ph%zsign
+        ph%zsign = 1.0_dp
+        call table_taylor(ph, 0.0_dp, f)
+        ph%zsign = zs
+        m = kappa_bound(ph%kappa, f(1), f(2), hh)
+    end function turn_bound
 
     !> Stumpff functions c_k(z) = sum_j (-z)^j/(2j + k)!, k = 0..3: cos s, sin(s)/s,
     !> (1 - cos s)/s^2, (s - sin s)/s^3 of s = sqrt(z) (cosh, sinh for z < 0); for |z| <= 1 the
