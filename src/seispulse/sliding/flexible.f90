@@ -380,7 +380,7 @@ contains
                 allocate(blk%ky_values, source=tky)
             end if
             ! the HEA goes on after the record (the beam's free vibration) until no slide can
-            ! start and the block is at rest (doc/flexible.flex-exact.md (F.48))
+            ! start and the block is at rest (doc/flexible.md (F.48))
             kylo = minval(tky)
             if (mode == NEWMARK_ASYM) kylo = min(kylo, ky_up)
             ntail = 0
