@@ -43,7 +43,7 @@ end module sp_flexible_helpers
 
 !> One decoupled (analysis 1) or coupled (analysis 2) run. soil, method and mode are the
 !> library's codes; a yield table (ky_disp, ky_values) when table = 1 (then ky is
-!> ignored; else they are a placeholder of size 1); histories when nh = n
+!> ignored; else they are dummy arrays of size 1, not read); histories when nh = n
 !> (else nh = 1 and they are left 0). On SEISPULSE_NO_CONVERGENCE the outputs hold the
 !> last iteration's results.
 subroutine sp_flexible(n, accel, dt, ky, analysis, height, vs, vs_base, damping, soil, &

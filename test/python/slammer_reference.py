@@ -38,7 +38,9 @@ them the way SLAMMER's GUI does were compiled and run as
     w=$(mktemp -d); mkdir -p $w/src/slammer/analysis
     cp Analysis.java Coupled.java DeCoupledCommon.java Decoupled.java RigidBlock.java \\
        $w/src/slammer/analysis/
-    cp -r harness/stubs/* harness/Harness.java $w/src/
+    # plus a small driver class Harness (reads a CSV record, scales it by target / PGA and
+    # calls the routines with the units and signs SLAMMER's GUI uses) and stand-ins for
+    # SLAMMER's plotting class, as test/data/slammer/README.md describes
     javac -nowarn -d $w/out $(find $w/src -name '*.java')
     # method csv targetPGA(g) ky(g) H(m) Vs Vs_base(m/s) damping(fraction) refstrain(%)
     #   eql(0/1) polarity(nor/inv); CATAB="d_cm,ky2" adds the table row (d_cm, ky2)

@@ -4,7 +4,7 @@
 !> Rathje [SR08] (three forms) and Rathje & Saygili [RS09]; the coupled flexible model
 !> of Bray & Travasarou [BT07] with its probability of zero displacement; the unified
 !> rigid/flexible model of Rathje & Antonakos [RA11]; and the probability-of-failure
-!> curve of Jibson et al. [J98] (2000). Equations: doc/empirical.md (E.1)-(E.40).
+!> curve of Jibson et al. [J98] (2000). Equations: doc/empirical.md (E.1)-(E.35).
 !>
 !> Units as the sources: displacements in cm, accelerations and yields in g, PGV in
 !> cm/s, Arias intensity in m/s, periods in s. Each model's standard deviation is that
