@@ -172,8 +172,9 @@ def test_bray_travasarou_published_examples():
     assert round(r.p_zero, 2) == 0.0
     assert 20 <= r.d16_cm <= 25 and 80 <= r.d84_cm <= 85
     assert (r.sigma, r.log_base) == (0.66, "ln")
-    # A 30 m fill (worked by hand from the same equations): ky 0.14, Ts 0.4 s, Sa(0.6 s) 0.48 g, M 7.2: P(D = 0) = 0.01,
-    # ln D = 2.29, D about 10 cm, 16-84 % range 5 to 20 cm
+    # A 30 m fill (worked by hand from the same equations): ky 0.14, Ts 0.4 s,
+    # Sa(0.6 s) 0.48 g, M 7.2: P(D = 0) = 0.01, ln D = 2.29, D about 10 cm, 16-84 % range
+    # 5 to 20 cm
     r = empirical.bray_travasarou_2007(0.14, 0.4, 0.48, 7.2)
     assert round(r.p_zero, 2) == 0.01
     assert math.log(r.disp_cm) == pytest.approx(2.29, abs=0.005)
