@@ -46,6 +46,8 @@ module driver_empirical
     integer, parameter :: NIN = 7
     integer, parameter :: IN_PGA = 1, IN_PGV = 2, IN_ARIAS = 3, IN_M = 4, IN_TS = 5, &
                           IN_SA = 6, IN_TM = 7
+    !> Need bits of the driver's own inputs, above the library's EMP_NEED_* (1, 2, 4, 8).
+    integer, parameter :: NEED_TS = 16, NEED_SA = 32, NEED_TM = 64
     character(len=9), parameter :: in_keys(NIN) = [character(len=9) :: 'pga', 'pgv', 'arias', &
         'magnitude', 'ts', 'sa_15ts', 'tm']
     !> The names empirical_check knows them by.
@@ -363,16 +365,16 @@ contains
     ! Computation
     ! ------------------------------------------------------------------------------
 
-    !> The inputs besides ky of row model m (EMP_NEED_* bits; 16 ts, 32 Sa, 64 Tm).
+    !> The inputs besides ky of row model m (EMP_NEED_* and NEED_* bits).
     pure integer function needs_of(m) result(nd)
         integer, intent(in) :: m
         select case (m)
         case (M_BT07)
-            nd = 16 + 32 + EMP_NEED_M
+            nd = NEED_TS + NEED_SA + EMP_NEED_M
         case (M_RA11_M)
-            nd = 16 + 64 + EMP_NEED_PGA + EMP_NEED_M
+            nd = NEED_TS + NEED_TM + EMP_NEED_PGA + EMP_NEED_M
         case (M_RA11_PGV)
-            nd = 16 + 64 + EMP_NEED_PGA + EMP_NEED_PGV
+            nd = NEED_TS + NEED_TM + EMP_NEED_PGA + EMP_NEED_PGV
         case default
             nd = empirical_needs(m)
         end select
@@ -402,9 +404,9 @@ contains
         if (.not. ieee_is_nan(inp(IN_PGV))) h = h + EMP_NEED_PGV
         if (.not. ieee_is_nan(inp(IN_ARIAS))) h = h + EMP_NEED_ARIAS
         if (.not. ieee_is_nan(inp(IN_M))) h = h + EMP_NEED_M
-        if (.not. ieee_is_nan(inp(IN_TS))) h = h + 16
-        if (.not. ieee_is_nan(inp(IN_SA))) h = h + 32
-        if (.not. ieee_is_nan(inp(IN_TM))) h = h + 64
+        if (.not. ieee_is_nan(inp(IN_TS))) h = h + NEED_TS
+        if (.not. ieee_is_nan(inp(IN_SA))) h = h + NEED_SA
+        if (.not. ieee_is_nan(inp(IN_TM))) h = h + NEED_TM
     end function have_of
 
     !> Every case (a record: read, intensity measures, rigorous rigid block), every ky,
@@ -488,7 +490,7 @@ contains
             ! a record gives PGA, PGV, Ia, Sa and Tm itself (NaN when it failed, and Tm
             ! when no frequency of its band carries energy): the given inputs decide
             if (cfg%with_records) have = ior(have, EMP_NEED_PGA + EMP_NEED_PGV &
-                                                  + EMP_NEED_ARIAS + 32 + 64)
+                                                  + EMP_NEED_ARIAS + NEED_SA + NEED_TM)
             ! a record without energy: no sliding in any model
             still = cfg%with_records .and. ok .and. &
                     .not. (inp(IN_PGA) > 0.0_dp .and. inp(IN_ARIAS) > 0.0_dp)
@@ -576,10 +578,10 @@ contains
             call report('empirical: '//model_label(m)//', ky = '//num(ky)//': '//trim(msg))
             return
         end if
-        f = merge(10.0_dp, exp(1.0_dp), base == EMP_LOG10)**s
+        row(C_BASE) = merge(10.0_dp, exp(1.0_dp), base == EMP_LOG10)
+        f = row(C_BASE)**s
         row(C_DISP) = d
         row(C_SIGMA) = s
-        row(C_BASE) = merge(10.0_dp, exp(1.0_dp), base == EMP_LOG10)
         row(C_D16) = d / f
         row(C_D84) = d * f
         row(C_PZERO) = p0

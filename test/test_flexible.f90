@@ -796,7 +796,7 @@ contains
     !> SLAMMER 1.1's Decoupled and Coupled (its Java code, through the harness that calls
     !> them as its GUI does, normal polarity, no scaling) on the synthetic record: disp
     !> (cm; SLAMMER returns |s| at the end of the record, so |final_disp|), |kmax| (g),
-    !> final Vs (m/s) and total damping. Agreement to 1e-9 relative.
+    !> final Vs (m/s) and total damping. Agreement to 1e-10 relative (measured 3.4e-12).
     subroutine test_slammer_java(error)
         type(test_error), allocatable, intent(out) :: error
         real(dp) :: a(1500)
@@ -878,14 +878,14 @@ contains
             end if
             call check(error, stat, SEISPULSE_SUCCESS)
             if (allocated(error)) return
-            call check(error, 100.0_dp * abs(res%final_disp), disp_cm, rtol=1.0e-9_dp, &
+            call check(error, 100.0_dp * abs(res%final_disp), disp_cm, rtol=1.0e-10_dp, &
                        message='disp')
             if (allocated(error)) return
-            call check(error, abs(res%kmax), kmax, rtol=1.0e-9_dp, message='kmax')
+            call check(error, abs(res%kmax), kmax, rtol=1.0e-10_dp, message='kmax')
             if (allocated(error)) return
-            call check(error, res%vs_final, vs, rtol=1.0e-9_dp, message='vs')
+            call check(error, res%vs_final, vs, rtol=1.0e-10_dp, message='vs')
             if (allocated(error)) return
-            call check(error, res%damping_final, damp, rtol=1.0e-9_dp, message='damping')
+            call check(error, res%damping_final, damp, rtol=1.0e-10_dp, message='damping')
         end subroutine one
     end subroutine test_slammer_java
 
@@ -924,7 +924,7 @@ contains
         ! the true extreme lies between samples: at least the largest sample, and close
         call check(error, r%max_disp >= maxval(abs(s)), 'max |s| >= the samples')
         if (allocated(error)) return
-        call check(error, r%max_disp, maxval(abs(s)), rtol=1.0e-4_dp, message='max |s|')
+        call check(error, r%max_disp, maxval(abs(s)), rtol=1.0e-5_dp, message='max |s|')
         if (allocated(error)) return
         ! near SLAMMER's arithmetic
         do soil = SOIL_LINEAR, SOIL_EQUIVALENT_LINEAR

@@ -236,8 +236,9 @@ damping_radiation (fractions): the properties of the final response; period = 4 
 (s); iterations of the equivalent-linear soil (0 for linear) and whether it converged;
 t_end: end of the last slide (s from the first sample).
 With ``history=True``: time (s), hea (g; for coupled, that of the decoupled response, the
-one kmax comes from), u_modal (m, the modal displacement), disp s (m) and vel s' (m/s) at
-the samples, else None. ky and ky_up: the yields given (g; with a table, ky is the array of
+one kmax comes from), u_modal (m, the modal displacement relative to the base, with the sign of
+doc/flexible.md (F.30): a positive record acceleration drives it negative), disp s (m) and
+vel s' (m/s; both positive downslope) at the samples, else None. ky and ky_up: the yields given (g; with a table, ky is the array of
 its yields; ky_up None unless mode='asym'), for :func:`plot_flexible`."""
 
 def _flexible(analysis, accel, dt, ky, height, vs, vs_base, damping, soil, ref_strain_pct,

@@ -169,11 +169,11 @@ def test_slammer_rule_matches_slammer_transcription(driver, tmp_path):
         normal = ref(accel, dt, 0.1, **mass)
         inverse = ref([-a for a in accel], dt, 0.1, **mass)
         row = data[0]
-        assert row[COL["max_normal (cm)"]] == pytest.approx(normal.disp_cm, rel=1e-9)
-        assert row[COL["max_inverse (cm)"]] == pytest.approx(inverse.disp_cm, rel=1e-9)
-        assert row[COL["kmax (g)"]] == pytest.approx(normal.kmax_g, rel=1e-9)
-        assert row[COL["vs_final (m/s)"]] == pytest.approx(normal.vs_final_mps, rel=1e-9)
-        assert row[COL["damping_final (-)"]] == pytest.approx(normal.damping_final, rel=1e-9)
+        assert row[COL["max_normal (cm)"]] == pytest.approx(normal.disp_cm, rel=1e-12)
+        assert row[COL["max_inverse (cm)"]] == pytest.approx(inverse.disp_cm, rel=1e-12)
+        assert row[COL["kmax (g)"]] == pytest.approx(normal.kmax_g, rel=1e-12)
+        assert row[COL["vs_final (m/s)"]] == pytest.approx(normal.vs_final_mps, rel=1e-12)
+        assert row[COL["damping_final (-)"]] == pytest.approx(normal.damping_final, rel=1e-12)
         assert row[COL["iterations (-)"]] == normal.iterations
         assert normal.disp_cm > 0.1 and inverse.disp_cm > 0.1
 

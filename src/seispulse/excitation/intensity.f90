@@ -85,7 +85,7 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         real(dp), intent(out), optional :: husid(:)           !! normalized Husid curve (-)
-        real(dp), allocatable :: vel(:), disp(:), cum(:)
+        real(dp), allocatable :: vel(:), disp(:), cum(:), scaled(:)  !! scaled: accel / PGA
         real(dp) :: nan, e_tot, s_cav, scale
         integer :: n
 
@@ -114,7 +114,8 @@ contains
         scale = im%pga
         if (.not. scale > 0.0_dp) scale = 1.0_dp
         allocate(cum(n))
-        call scaled_integrals(accel / scale, cum, s_cav)
+        scaled = accel / scale
+        call scaled_integrals(scaled, cum, s_cav)
         e_tot = cum(n)
         im%arias = safe_product([pi / 2.0_dp, g, dt, e_tot, scale, scale])  ! (I.5), (I.6)
         im%cav = safe_product([g, dt, s_cav, scale])                         ! (I.7), (I.8)
@@ -127,11 +128,11 @@ contains
         ! Husid times (I.9), (I.10) and durations (I.11), (I.12)
         if (e_tot > 0.0_dp) then
             if (present(husid)) husid(:) = cum / e_tot
-            call husid_time(accel / scale, dt, cum, 0.05_dp, im%t5, stat, errmsg)
+            call husid_time(scaled, dt, cum, 0.05_dp, im%t5, stat, errmsg)
             if (stat == SEISPULSE_SUCCESS) &
-                call husid_time(accel / scale, dt, cum, 0.75_dp, im%t75, stat, errmsg)
+                call husid_time(scaled, dt, cum, 0.75_dp, im%t75, stat, errmsg)
             if (stat == SEISPULSE_SUCCESS) &
-                call husid_time(accel / scale, dt, cum, 0.95_dp, im%t95, stat, errmsg)
+                call husid_time(scaled, dt, cum, 0.95_dp, im%t95, stat, errmsg)
             if (stat /= SEISPULSE_SUCCESS) return
             im%d5_75 = im%t75 - im%t5
             im%d5_95 = im%t95 - im%t5

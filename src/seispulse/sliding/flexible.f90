@@ -42,7 +42,8 @@ module seispulse_flexible
     use seispulse_flexible_model, only: flexible_mass_t, flexible_result_t, modal_peak_t, &
                                         flexible_mass_validate, ky_table_validate, eql_iterate, &
                                         radiation_damping, participation_modal, &
-                                        participation_total, FLEX_SLAMMER, FLEX_EXACT
+                                        participation_total, modal_omega, modal_period, &
+                                        FLEX_SLAMMER, FLEX_EXACT
     use seispulse_flexible_exact, only: modal_response_exact, modal_hea_extended, coupled_exact
     implicit none
     private
@@ -113,9 +114,10 @@ contains
         real(dp), intent(in), optional :: ky_disp(:)          !! table: displacement (m)
         real(dp), intent(in), optional :: ky_values(:)        !! table: yield (g)
         real(dp), intent(out), optional :: hea(:)             !! HEA at the samples (g)
-        real(dp), intent(out), optional :: u_modal(:)         !! modal displacement u (m)
-        real(dp), intent(out), optional :: s_hist(:)          !! sliding displacement (m)
-        real(dp), intent(out), optional :: sdot_hist(:)       !! sliding velocity (m/s)
+        !> modal displacement u (m) relative to the base, the sign of (F.30): a > 0 drives u < 0
+        real(dp), intent(out), optional :: u_modal(:)
+        real(dp), intent(out), optional :: s_hist(:)          !! sliding displacement (m, > 0 down)
+        real(dp), intent(out), optional :: sdot_hist(:)       !! sliding velocity (m/s, > 0 down)
         call flexible_run(.false., accel, dt, ky, mass, method, g, res, stat, errmsg, mode, &
                           ky_up, ky_disp, ky_values, hea, u_modal, s_hist, sdot_hist)
     end subroutine flexible_decoupled
@@ -138,9 +140,10 @@ contains
         real(dp), intent(in), optional :: ky_disp(:)          !! table: displacement (m)
         real(dp), intent(in), optional :: ky_values(:)        !! table: yield (g)
         real(dp), intent(out), optional :: hea(:)             !! decoupled HEA (g)
-        real(dp), intent(out), optional :: u_modal(:)         !! modal displacement u (m)
-        real(dp), intent(out), optional :: s_hist(:)          !! sliding displacement (m)
-        real(dp), intent(out), optional :: sdot_hist(:)       !! sliding velocity (m/s)
+        !> modal displacement u (m) relative to the base, the sign of (F.30): a > 0 drives u < 0
+        real(dp), intent(out), optional :: u_modal(:)
+        real(dp), intent(out), optional :: s_hist(:)          !! sliding displacement (m, > 0 down)
+        real(dp), intent(out), optional :: sdot_hist(:)       !! sliding velocity (m/s, > 0 down)
         call flexible_run(.true., accel, dt, ky, mass, method, g, res, stat, errmsg, &
                           ky_disp=ky_disp, ky_values=ky_values, hea=hea, u_modal=u_modal, &
                           s_hist=s_hist, sdot_hist=sdot_hist)
@@ -231,15 +234,15 @@ contains
         if (stat /= SEISPULSE_SUCCESS) return
 
         if (method == FLEX_EXACT) then
-            ! the exact recurrence needs |xi| < 1: the first pass takes damping + xi_f, the
-            ! later ones xi_mat + xi_f <= (0.62 x 63.7 % + 1 %) + 0.2 < 0.61 (doc/flexible.md
-            ! (F.16), (F.20)-(F.22)), so the first pass's total is the one to check
-            if (.not. abs(mass%damping + radiation_damping(mass%vs, mass%vs_base)) < 1.0_dp) &
-                then
+            ! the analyses take an under-damped mass (total < 1; total >= 0 is checked by
+            ! response_checks): the first pass takes damping + xi_f, the later ones
+            ! xi_mat + xi_f <= (0.62 x 63.7 % + 1 %) + 0.2 < 0.61 (doc/flexible.md (F.16),
+            ! (F.20)-(F.22)), so the first pass's total is the one to check
+            if (.not. mass%damping + radiation_damping(mass%vs, mass%vs_base) < 1.0_dp) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'damping = ' &
                                //real_str(mass%damping)//': with the radiation damping ' &
                                //real_str(radiation_damping(mass%vs, mass%vs_base)) &
-                               //' the total must be in (-1, 1) for the exact rule')
+                               //' the total must be < 1 for the exact rule')
                 return
             end if
             call exact_run(coupled, accel, dt, tdisp, tky, mass, g, mode_, ky_up, &
@@ -317,7 +320,7 @@ contains
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
         call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'the response overflows ' &
-                       //'(omega = '//real_str(pi * res%vs_final / (2.0_dp * mass%height)) &
+                       //'(omega = '//real_str(modal_omega(res%vs_final, mass%height)) &
                        //' rad/s, total damping '//real_str(res%damping_final)//')')
     end subroutine overflow_error
 
@@ -358,8 +361,8 @@ contains
         stat = eql_stat
         if (eql_stat /= SEISPULSE_SUCCESS .and. eql_stat /= SEISPULSE_NO_CONVERGENCE) return
         xi = res%damping_final
-        omega = pi * res%vs_final / (2.0_dp * mass%height)                    ! (F.2)
-        res%period = 4.0_dp * mass%height / res%vs_final
+        omega = modal_omega(res%vs_final, mass%height)
+        res%period = modal_period(res%vs_final, mass%height)
 
         ! the final decoupled response: HEA and kmax (both analyses)
         call modal_response_exact(accel, dt, g, omega, xi, resp%u, resp%hea, stat, errmsg)
@@ -464,8 +467,8 @@ contains
         if (eql_stat /= SEISPULSE_SUCCESS .and. eql_stat /= SEISPULSE_NO_CONVERGENCE) return
         stat = SEISPULSE_SUCCESS
         xi = res%damping_final
-        omega = pi * res%vs_final / (2.0_dp * mass%height)                    ! (F.2)
-        res%period = 4.0_dp * mass%height / res%vs_final
+        omega = modal_omega(res%vs_final, mass%height)
+        res%period = modal_period(res%vs_final, mass%height)
         if (coupled .and. omega > slammer_coupled_wdt_max / dt) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'height = ' &
                            //real_str(mass%height)//': SLAMMER''s coupled arithmetic is ' &

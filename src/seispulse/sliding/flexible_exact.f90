@@ -42,7 +42,7 @@ module seispulse_flexible_exact
     use seispulse_pieces, only: record_step_check
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_ode, only: ode_system, ode_dop853_t, ode_dop853_factor
-    use seispulse_flexible_model, only: ky_table_validate
+    use seispulse_flexible_model, only: ky_table_validate, ky_table_at
     implicit none
     private
 
@@ -142,7 +142,8 @@ contains
         real(dp), intent(in) :: g                             !! gravity (m/s^2) > 0
         real(dp), intent(in) :: omega                         !! circular frequency (rad/s) > 0
         real(dp), intent(in) :: xi                            !! damping ratio > -1
-        real(dp), intent(out) :: u(:)                         !! modal displacement (m)
+        !> modal displacement (m) relative to the base, the sign of (F.30): a > 0 drives u < 0
+        real(dp), intent(out) :: u(:)
         real(dp), intent(out) :: hea(:)                       !! HEA (g)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
@@ -372,7 +373,7 @@ contains
         real(dp), intent(in), optional :: ky_values(:)        !! table: yields (g)
         real(dp), intent(out), optional :: s_hist(:)          !! s at the samples (m)
         real(dp), intent(out), optional :: sdot_hist(:)       !! s' at the samples (m/s)
-        real(dp), intent(out), optional :: u_modal(:)         !! u at the samples (m)
+        real(dp), intent(out), optional :: u_modal(:)         !! u at the samples (m), (F.30) sign
         real(dp), intent(out), optional :: hea(:)             !! HEA at the samples (g)
 
         type(phase_t) :: ph
@@ -708,15 +709,7 @@ contains
         !> ky (g) at s (m): linear on the table's segments, constant beyond the last row.
         pure real(dp) function table_ky(ss)
             real(dp), intent(in) :: ss
-            integer :: j
-            table_ky = tab_k(nt)
-            do j = 1, nt - 1
-                if (ss < tab_d(j + 1)) then
-                    table_ky = tab_k(j) + (tab_k(j + 1) - tab_k(j)) &
-                               * ((ss - tab_d(j)) / (tab_d(j + 1) - tab_d(j)))
-                    return
-                end if
-            end do
+            table_ky = ky_table_at(ss, tab_d(1:nt), tab_k(1:nt))
         end function table_ky
 
         !> The segment of s: its start, g ky there and g dky/ds into sys.

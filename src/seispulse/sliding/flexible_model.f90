@@ -26,6 +26,7 @@ module seispulse_flexible_model
     public :: flexible_mass_validate, radiation_damping, eql_properties, ky_table_validate, &
               eql_iterate, masing_damping_pct, flexible_soil_name, flexible_soil_code
     public :: participation_modal, participation_total, strain_factor, eql_tolerance_pct
+    public :: modal_omega, modal_period, ky_table_at
 
     integer, parameter :: SOIL_LINEAR = 1             !! linear elastic sliding mass
     integer, parameter :: SOIL_EQUIVALENT_LINEAR = 2  !! equivalent-linear iteration (F.17)-(F.23)
@@ -228,6 +229,38 @@ contains
         end do
     end subroutine ky_table_validate
 
+    !> ky (g) at the displacement x (m) of a checked table: linear on its segments, constant
+    !> beyond the last row (doc/flexible.md section 6; doc/newmark.md section 5).
+    pure real(dp) function ky_table_at(x, ky_disp, ky_values) result(ky)
+        real(dp), intent(in) :: x              !! displacement (m)
+        real(dp), intent(in) :: ky_disp(:)     !! table displacements (m), from 0, increasing
+        real(dp), intent(in) :: ky_values(:)   !! table yields (g), same size
+        integer :: j, nt
+        nt = size(ky_disp)
+        ky = ky_values(nt)
+        do j = 1, nt - 1
+            if (x < ky_disp(j + 1)) then
+                ky = ky_values(j) + (ky_values(j + 1) - ky_values(j)) &
+                     * ((x - ky_disp(j)) / (ky_disp(j + 1) - ky_disp(j)))
+                return
+            end if
+        end do
+    end function ky_table_at
+
+    !> Circular frequency of the mass's first shear mode (rad/s), (F.2): pi Vs / (2 H).
+    elemental real(dp) function modal_omega(vs, height)
+        real(dp), intent(in) :: vs      !! shear-wave velocity (m/s)
+        real(dp), intent(in) :: height  !! H (m)
+        modal_omega = pi * vs / (2.0_dp * height)
+    end function modal_omega
+
+    !> Period of the mass's first shear mode (s), (F.2): 4 H / Vs.
+    elemental real(dp) function modal_period(vs, height)
+        real(dp), intent(in) :: vs      !! shear-wave velocity (m/s)
+        real(dp), intent(in) :: height  !! H (m)
+        modal_period = 4.0_dp * height / vs
+    end function modal_period
+
     !> The equivalent-linear iteration (doc/flexible.md (F.17)-(F.23)), shared by every
     !> integration rule. From Vs0 = mass%vs and xi = mass%damping + xi_f(Vs0), each pass runs
     !> the response once (O(n)), takes gamma_eff = 0.65 x 1.57 max|u|/H, and sets
@@ -261,7 +294,7 @@ contains
         converged = .false.
         d_mat_prev = 0.0_dp
         do it = 1, mass%max_iter
-            call response%peak(pi * vs / (2.0_dp * mass%height), xi, u_peak, stat, errmsg)
+            call response%peak(modal_omega(vs, mass%height), xi, u_peak, stat, errmsg)
             if (stat /= SEISPULSE_SUCCESS) return
             iterations = it
             gamma_pct = 100.0_dp * strain_factor * u_peak / mass%height          ! (F.17)

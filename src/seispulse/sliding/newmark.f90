@@ -37,7 +37,7 @@ module seispulse_newmark
     use seispulse_sliding_sim, only: slide_t
     use seispulse_pieces, only: record_step_check
     use seispulse_sliding_closed, only: inclined_resistances
-    use seispulse_flexible_model, only: ky_table_validate
+    use seispulse_flexible_model, only: ky_table_validate, ky_table_at
     use seispulse_flexible_exact, only: zero_function, first_zero
     use seispulse_roots, only: find_root
     use seispulse_special, only: inv_fact => inv_factorial
@@ -674,14 +674,7 @@ contains
         !> ky at U (g s^2): linear on the segments, constant beyond the last row.
         pure real(dp) function table_ky(uu)
             real(dp), intent(in) :: uu
-            integer :: j
-            table_ky = kv(nt)
-            do j = 1, nt - 1
-                if (uu < dd(j + 1)) then
-                    table_ky = kv(j) + (kv(j + 1) - kv(j)) * ((uu - dd(j)) / (dd(j + 1) - dd(j)))
-                    return
-                end if
-            end do
+            table_ky = ky_table_at(uu, dd(1:nt), kv(1:nt))
         end function table_ky
 
         !> The slide on the current segment from (u, w) with a = aa .. ae over hh.
