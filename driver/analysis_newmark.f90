@@ -826,7 +826,7 @@ contains
         character(len=16), allocatable :: names(:), col_units(:)
         character(len=path_len), allocatable :: labels(:)
         character(len=:), allocatable :: line
-        integer :: nblk, ir, k, nc, i
+        integer :: nblk, ir, nc, i
 
         nblk = size(cfg%blocks)
         if (cfg%kind /= KIND_RIGID .or. allocated(cfg%ky_disp)) then
@@ -861,27 +861,7 @@ contains
             end associate
         end do
 
-        allocate(names(size(table, 2) + 1), col_units(size(table, 2) + 1))
-        if (cfg%with_mu) then
-            names(1:5) = [character(len=16) :: 'record', 'pga', 'scale', 'mu', 'ky']
-            col_units(1:5) = [character(len=16) :: '-', 'g', '-', '-', 'g']
-            k = 5
-        else
-            names(1:4) = [character(len=16) :: 'record', 'pga', 'scale', 'ky']
-            col_units(1:4) = [character(len=16) :: '-', 'g', '-', 'g']
-            k = 4
-        end if
-        names(k + 1:) = [character(len=16) :: 'ky_up', 'max_normal', 'max_normal', &
-            'final_normal', 'final_normal', 'max_inverse', 'max_inverse', 'final_inverse', &
-            'final_inverse', 'status']
-        col_units(k + 1:) = [character(len=16) :: 'g', 'm', 'cm', 'm', 'cm', 'm', 'cm', 'm', &
-            'cm', '-']
-        allocate(labels(size(table, 1)))
-        do ir = 1, size(outs)
-            labels((ir - 1) * nblk + 1:ir * nblk) = outs(ir)%name
-        end do
-        call write_tables(prefix, 'newmark', comments, names, col_units, table, files_out, &
-                          stat, errmsg, labels=labels)
+        call write_columns(comments)
 
     contains
 
@@ -944,26 +924,43 @@ contains
                 end associate
             end do
 
+            call write_columns(comments(1:nc))
+        end subroutine write_flexible
+
+        !> The columns (the rigid block's, with mu, or with the flexible mass's six before
+        !> status), the row labels, and the one table writer.
+        subroutine write_columns(text)
+            character(len=*), intent(in) :: text(:)  !! the header comments
+            integer :: k
             allocate(names(size(table, 2) + 1), col_units(size(table, 2) + 1))
-            names(1:4) = [character(len=16) :: 'record', 'pga', 'scale', 'ky']
-            col_units(1:4) = [character(len=16) :: '-', 'g', '-', 'g']
-            names(5:14) = [character(len=16) :: 'ky_up', 'max_normal', 'max_normal', &
+            names(1:3) = [character(len=16) :: 'record', 'pga', 'scale']
+            col_units(1:3) = [character(len=16) :: '-', 'g', '-']
+            k = 4
+            if (cfg%with_mu) then
+                names(4) = 'mu'
+                col_units(4) = '-'
+                k = 5
+            end if
+            names(k) = 'ky'
+            col_units(k) = 'g'
+            names(k + 1:k + 10) = [character(len=16) :: 'ky_up', 'max_normal', 'max_normal', &
                 'final_normal', 'final_normal', 'max_inverse', 'max_inverse', &
                 'final_inverse', 'final_inverse', 'status']
-            col_units(5:14) = [character(len=16) :: 'g', 'm', 'cm', 'm', 'cm', 'm', 'cm', &
-                'm', 'cm', '-']
-            if (flexible) then
-                names(14:20) = [character(len=16) :: 'kmax', 'vs_final', 'damping_final', &
-                    'period', 'iterations', 'converged', 'status']
-                col_units(14:20) = [character(len=16) :: 'g', 'm/s', '-', 's', '-', '-', '-']
+            col_units(k + 1:k + 10) = [character(len=16) :: 'g', 'm', 'cm', 'm', 'cm', 'm', &
+                'cm', 'm', 'cm', '-']
+            if (cfg%kind /= KIND_RIGID) then
+                names(k + 10:k + 16) = [character(len=16) :: 'kmax', 'vs_final', &
+                    'damping_final', 'period', 'iterations', 'converged', 'status']
+                col_units(k + 10:k + 16) = [character(len=16) :: 'g', 'm/s', '-', 's', '-', &
+                    '-', '-']
             end if
             allocate(labels(size(table, 1)))
             do ir = 1, size(outs)
                 labels((ir - 1) * nblk + 1:ir * nblk) = outs(ir)%name
             end do
-            call write_tables(prefix, 'newmark', comments(1:nc), names, col_units, table, &
-                              files_out, stat, errmsg, labels=labels)
-        end subroutine write_flexible
+            call write_tables(prefix, 'newmark', text, names, col_units, table, files_out, &
+                              stat, errmsg, labels=labels)
+        end subroutine write_columns
 
         subroutine add(text)
             character(len=*), intent(in) :: text
