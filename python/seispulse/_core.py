@@ -171,3 +171,22 @@ def record_and_step(accel, dt):
     if dt is None:
         raise InvalidInputError("dt: the time step of accel (s, > 0) is required")
     return np.ascontiguousarray(rec), check_positive("dt", dt, " (s)")
+
+
+def missing_package(package, purpose):
+    """The ImportError of an optional package that is not installed: it names the package,
+    what needs it and how to install it (``package``: the name pip knows)."""
+    return ImportError(f"{purpose} needs the optional package '{package}', which is not "
+                       f"installed: pip install {package}", name=package)
+
+
+def optional_import(package, purpose):
+    """Import an optional package (pandas, ...) at the point of use; a missing one raises
+    :func:`missing_package`'s ImportError. Never called at ``import seispulse``."""
+    import importlib
+    try:
+        return importlib.import_module(package)
+    except ModuleNotFoundError as exc:
+        if exc.name != package:     # the package is there but one of its imports fails
+            raise
+        raise missing_package(package, purpose) from None

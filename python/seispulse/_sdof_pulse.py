@@ -30,6 +30,7 @@ from ._seispulse import (sp_beta_pulse, sp_dynamic_coefficient, sp_harmonic_resp
                          sp_impulse_max, sp_impulse_response, sp_pulse_peak_accel,
                          sp_rect_pulse_response, sp_sdof_pulse_peaks, sp_sdof_pulse_response,
                          sp_sdof_pulse_spectrum)
+from ._table import TableResult
 from .errors import InvalidInputError
 from .pulse import Pulse
 
@@ -62,20 +63,36 @@ OscillatorPeaks = namedtuple("OscillatorPeaks", ["z_max", "t_z", "v_max", "t_v",
 OscillatorPeaks.__doc__ = """Maxima over all t >= 0 (free vibration after the pulse included)
 of |z| (m), |z'| (m/s), |a_abs| (m/s^2), and the times where they occur (s)."""
 
-PulseSpectrum = namedtuple("PulseSpectrum", ["periods", "sd", "sv", "sa", "psv", "psa"])
-PulseSpectrum.__doc__ = """Response spectra of a pulse: periods (s); sd = max|z| (m),
-sv = max|z'| (m/s), sa = max|a_abs| (m/s^2), the maxima over t >= 0 found as in
-:func:`pulse_peaks`; psv = omega sd (m/s) and psa = omega^2 sd (m/s^2), the pseudo-spectra
-of Eq. 2.33 (period 0: psv = 0, psa = sa = peak |a_g|)."""
+
+class PulseSpectrum(TableResult, namedtuple("PulseSpectrum", ["periods", "sd", "sv", "sa",
+                                                              "psv", "psa"])):
+    """Response spectra of a pulse: periods (s); sd = max|z| (m), sv = max|z'| (m/s),
+    sa = max|a_abs| (m/s^2), the maxima over t >= 0 found as in :func:`pulse_peaks`;
+    psv = omega sd (m/s) and psa = omega^2 sd (m/s^2), the pseudo-spectra of Eq. 2.33
+    (period 0: psv = 0, psa = sa = peak |a_g|). ``print()`` shows the table;
+    :meth:`to_frame` gives it as a pandas DataFrame."""
+
+    __slots__ = ()
+    _COLUMNS = (("periods", "period", "s"), ("sd", "sd", "m"), ("sv", "sv", "m/s"),
+                ("sa", "sa", "m/s^2"), ("psv", "psv", "m/s"), ("psa", "psa", "m/s^2"))
+
 
 SpectrumTimes = namedtuple("SpectrumTimes", ["t_sd", "t_sv", "t_sa"])
 SpectrumTimes.__doc__ = """Times (s) where sd, sv and sa are reached."""
 
-ShockSpectrum = namedtuple("ShockSpectrum", ["ratios", "periods", "sd", "sv", "sa", "psv",
-                                             "psa", "amplification"])
-ShockSpectrum.__doc__ = """Shock spectrum of a pulse against ratios = t_d / T: periods (s),
-sd (m), sv (m/s), sa (m/s^2), psv (m/s), psa (m/s^2) as in :class:`PulseSpectrum`, and
-amplification = psa / peak |a_g| (dimensionless)."""
+
+class ShockSpectrum(TableResult, namedtuple("ShockSpectrum", ["ratios", "periods", "sd", "sv",
+                                                              "sa", "psv", "psa",
+                                                              "amplification"])):
+    """Shock spectrum of a pulse against ratios = t_d / T: periods (s), sd (m), sv (m/s),
+    sa (m/s^2), psv (m/s), psa (m/s^2) as in :class:`PulseSpectrum`, and
+    amplification = psa / peak |a_g| (dimensionless). ``print()`` shows the table (arrays
+    flattened); :meth:`to_frame` gives it as a pandas DataFrame."""
+
+    __slots__ = ()
+    _COLUMNS = (("ratios", "ratio", "t_d/T"), ("periods", "period", "s"), ("sd", "sd", "m"),
+                ("sv", "sv", "m/s"), ("sa", "sa", "m/s^2"), ("psv", "psv", "m/s"),
+                ("psa", "psa", "m/s^2"), ("amplification", "amplification", "psa/pga"))
 
 
 #: Fortran arrays whose elements name(i) errors give as the caller's name[i - 1] (flat

@@ -31,6 +31,7 @@ from . import _core
 from . import _fortran_codes as _f
 from ._seispulse import (sp_fetch_slides, sp_flexible, sp_newmark_incline, sp_newmark_rigid,
                          sp_newmark_rigid_many)
+from ._table import TableResult
 from .errors import ConvergenceError, InvalidInputError
 from .sliding import Slide
 
@@ -56,16 +57,37 @@ downslope ky and upslope ky_up (g; +inf: no sliding that way) and the along-plan
 factors k_down, k_up (the slip along the plane is k times the slip of the yield
 problem). Pass it to :func:`rigid` as ``incline=``."""
 
-Rigid = namedtuple("Rigid", ["max_disp", "final_disp", "u_max", "u_min", "max_vel", "t_end",
-                             "time", "disp", "vel", "slides"])
-Rigid.__doc__ = """Result of :func:`rigid` (SI).
 
-max_disp: largest |u| over time (m); final_disp: u when the block is at rest at the
-end (m, signed, positive downslope); u_max >= 0 and u_min <= 0: the extremes of u (m);
-max_vel: largest |u'| (m/s); t_end: end of the last slide (s from the first sample).
-With ``history=True``: time (s), disp u (m) and vel u' (m/s) at the samples, else None.
-With ``intervals=True``: slides, a list of :class:`seispulse.sliding.Slide` (times s,
-u m, w_peak m/s), else None. For an array of ky the scalar fields are arrays."""
+class Rigid(TableResult, namedtuple("Rigid", ["max_disp", "final_disp", "u_max", "u_min",
+                                              "max_vel", "t_end", "time", "disp", "vel",
+                                              "slides", "ky", "ky_up"],
+                                    defaults=(None, None))):
+    """Result of :func:`rigid` (SI).
+
+    max_disp: largest |u| over time (m); final_disp: u when the block is at rest at the
+    end (m, signed, positive downslope); u_max >= 0 and u_min <= 0: the extremes of u (m);
+    max_vel: largest |u'| (m/s); t_end: end of the last slide (s from the first sample).
+    With ``history=True``: time (s), disp u (m) and vel u' (m/s) at the samples, else None.
+    With ``intervals=True``: slides, a list of :class:`seispulse.sliding.Slide` (times s,
+    u m, w_peak m/s), else None. For an array of ky the scalar fields are arrays.
+    ky (g): the yield(s) of the run, shaped as the results (None with a yield table);
+    ky_up (g): the upslope yield(s) of mode 'asym' (None for the other modes).
+    ``print()`` shows one row per ky; :meth:`to_frame` gives that table as a pandas
+    DataFrame."""
+
+    __slots__ = ()
+    _COLUMNS = (("ky", "ky", "g"), ("ky_up", "ky_up", "g"), ("max_disp", "max_disp", "m"),
+                ("final_disp", "final_disp", "m"), ("u_max", "u_max", "m"),
+                ("u_min", "u_min", "m"), ("max_vel", "max_vel", "m/s"),
+                ("t_end", "t_end", "s"))
+
+    def _table_notes(self):
+        notes = []
+        if self.time is not None:
+            notes.append(f"history: time, disp, vel at {len(self.time)} samples")
+        if self.slides is not None:
+            notes.append(f"slides: {len(self.slides)} sliding intervals")
+        return notes
 
 
 def incline(mu, slope_deg, xi_deg=0.0, along_plane=True):
@@ -174,7 +196,8 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
         _core.raise_for_status(stat, msg, indexed=("accel",))
         return Rigid(max_disp.reshape(shape), final_disp.reshape(shape), u_max.reshape(shape),
                      u_min.reshape(shape), max_vel.reshape(shape), t_end.reshape(shape),
-                     None, None, None, None)
+                     None, None, None, None, flat[0].reshape(shape),
+                     flat[1].reshape(shape) if mode == "asym" else None)
     scalars = [float(arr[k]) for k in ("ky", "ky_up", "k_down", "k_up")]
     nh = rec.size if history else 1
     with _core.HELD_LOCK:
@@ -190,7 +213,9 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
         time = np.arange(rec.size) * step
         disp, vel = u, w
     return Rigid(float(max_disp), float(final_disp), float(u_max), float(u_min), float(max_vel),
-                 float(t_end), time, disp, vel, out)
+                 float(t_end), time, disp, vel, out,
+                 None if ky_table is not None else scalars[0],
+                 scalars[1] if mode == "asym" else None)
 
 
 

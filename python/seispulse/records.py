@@ -20,6 +20,9 @@ records (:meth:`Record.scaled`, :meth:`Record.scaled_to_pga`, :meth:`Record.inve
 or the exact ground velocity and displacement of the piecewise linear acceleration
 (:meth:`Record.velocity`, :meth:`Record.displacement`).
 
+:func:`sample` lists and reads the sample records that ship with pySLAMMER (an optional
+package, ``pip install pyslammer``).
+
 :func:`intensity` (and :meth:`Record.intensity`) returns the ground-motion intensity
 measures of a record (PGA, PGV, PGD, Arias intensity, CAV, the significant durations
 D5-75 and D5-95, the mean period Tm; doc/intensity.md), :func:`spectral_acceleration`
@@ -38,7 +41,7 @@ from ._seispulse import (sp_ground_motion, sp_pga_scale_factor, sp_record_fetch,
                          sp_record_intensity, sp_record_read, sp_spectral_acceleration)
 from .errors import InvalidInputError
 
-__all__ = ["STANDARD_GRAVITY", "FORMATS", "UNITS", "Record", "read", "from_array",
+__all__ = ["STANDARD_GRAVITY", "FORMATS", "UNITS", "Record", "read", "from_array", "sample",
            "Intensity", "intensity", "spectral_acceleration"]
 
 #: Standard gravity (m/s^2): converts m/s^2 and cm/s^2 to g, default ``g`` of the
@@ -322,6 +325,66 @@ def from_array(accel, dt, units="g", name="record"):
     if ucode != _f.UNITS_G:
         arr = arr / _UNIT_TO_G[ucode]
     return Record(arr, dt, name=name)
+
+
+#: The optional package whose sample records :func:`sample` reads, and their folder in it.
+_SAMPLE_PACKAGE = "pyslammer"
+_SAMPLE_DIR = "sample_ground_motions"
+
+
+def _sample_files():
+    """{name: path} of the records shipped with pyslammer (name: file name without the
+    .csv extension), located without importing pyslammer."""
+    import importlib.util
+    try:
+        spec = importlib.util.find_spec(_SAMPLE_PACKAGE)
+    except (ImportError, ValueError):
+        spec = None
+    purpose = "seispulse.records.sample() (the sample records)"
+    if spec is None or not spec.submodule_search_locations:
+        raise _core.missing_package(_SAMPLE_PACKAGE, purpose)
+    for base in spec.submodule_search_locations:
+        folder = os.path.join(base, _SAMPLE_DIR)
+        if os.path.isdir(folder):
+            return {f[:-4]: os.path.join(folder, f) for f in sorted(os.listdir(folder))
+                    if f.lower().endswith(".csv")}
+    raise _core.missing_package(_SAMPLE_PACKAGE, purpose + f": no {_SAMPLE_DIR} folder in "
+                                "the installed pyslammer; reinstall it")
+
+
+def sample(name=None):
+    """The sample accelerograms that ship with pySLAMMER (an optional package:
+    ``pip install pyslammer``): SLAMMER's CSV files, accelerations in g.
+
+    Parameters
+    ----------
+    name : str, optional
+        A record's name, e.g. ``'Kocaeli_1999_ATS-090'`` (the file name; the ``.csv``
+        extension may be given). None: list the names.
+
+    Returns
+    -------
+    tuple of str or Record
+        name None: the names, sorted; else the record, read by :func:`read` (as
+        ``read(path)`` returns it: accel in g, ``path`` the file).
+
+    Raises
+    ------
+    ImportError
+        pyslammer is not installed (the message names it and the pip command).
+    InvalidInputError
+        An unknown name (the message lists the known ones).
+    """
+    files = _sample_files()
+    if name is None:
+        return tuple(files)
+    if not isinstance(name, str):
+        raise InvalidInputError(f"name = {name!r}: must be a record name (str) or None")
+    key = name[:-4] if name.lower().endswith(".csv") else name
+    if key not in files:
+        raise InvalidInputError(f"name = {name!r}: no such sample record in pyslammer "
+                                f"(known: {', '.join(files)})")
+    return read(files[key])
 
 
 class Intensity(namedtuple("Intensity", ["pga", "pgv", "pgd", "arias", "cav", "d5_75",

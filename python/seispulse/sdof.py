@@ -34,6 +34,7 @@ from . import _fortran_codes as _f
 from ._sdof_pulse import *  # noqa: F401,F403  (closed forms, seispulse.sdof.<name>)
 from ._seispulse import (sp_design_envelope, sp_sdof_response, sp_sdof_spectrum,
                          sp_sdof_threads, sp_spectral_shape)
+from ._table import TableResult
 from .errors import InvalidInputError
 
 __all__ = ["STANDARD_GRAVITY", "PEAKS", "Response", "Spectrum", "Shape", "response",
@@ -51,16 +52,32 @@ Response.__doc__ = """Response history of :func:`response` at the samples: time 
 first sample), disp = z, the displacement relative to the ground (m), vel = z' (m/s),
 acc = a_abs, the absolute acceleration of the mass (g)."""
 
-Spectrum = namedtuple("Spectrum", ["periods", "damping", "sd", "sv", "sa", "psv", "psa",
-                                   "t_sd", "t_sv", "t_sa"])
-Spectrum.__doc__ = """Response spectra of :func:`spectrum`.
 
-periods (s) and damping (ratio) as given; sd = max|z| (m), sv = max|z'| (m/s),
-sa = max|a_abs| (g): true maxima over the record; psv = omega sd (m/s) and
-psa = omega^2 sd (g): the pseudo-spectra of Eq. 2.33 (T = 0: psv = 0, psa = PGA).
-t_sd, t_sv, t_sa: the times of the maxima (s from the first sample). For a scalar
-damping the arrays have the shape of periods; for a sequence of dampings they are
-(len(damping), len(periods))."""
+class Spectrum(TableResult, namedtuple("Spectrum", ["periods", "damping", "sd", "sv", "sa",
+                                                    "psv", "psa", "t_sd", "t_sv", "t_sa"])):
+    """Response spectra of :func:`spectrum`.
+
+    periods (s) and damping (ratio) as given; sd = max|z| (m), sv = max|z'| (m/s),
+    sa = max|a_abs| (g): true maxima over the record; psv = omega sd (m/s) and
+    psa = omega^2 sd (g): the pseudo-spectra of Eq. 2.33 (T = 0: psv = 0, psa = PGA).
+    t_sd, t_sv, t_sa: the times of the maxima (s from the first sample). For a scalar
+    damping the arrays have the shape of periods; for a sequence of dampings they are
+    (len(damping), len(periods)). ``print()`` shows one row per damping and period;
+    :meth:`to_frame` gives that table as a pandas DataFrame."""
+
+    __slots__ = ()
+    _COLUMNS = (("sd", "sd", "m"), ("sv", "sv", "m/s"), ("sa", "sa", "g"),
+                ("psv", "psv", "m/s"), ("psa", "psa", "g"), ("t_sd", "t_sd", "s"),
+                ("t_sv", "t_sv", "s"), ("t_sa", "t_sa", "s"))
+
+    def _table_columns(self):
+        per = np.atleast_1d(np.asarray(self.periods, dtype=np.float64))
+        damp = np.atleast_1d(np.asarray(self.damping, dtype=np.float64))
+        # the arrays are (damping, period): damping-major rows
+        return ([("damping", "ratio", np.repeat(damp, per.size)),
+                 ("period", "s", np.tile(per, damp.size))]
+                + super()._table_columns())
+
 
 Shape = namedtuple("Shape", ["shape", "t_peak", "peak"])
 Shape.__doc__ = """Normalized spectral shape of :func:`normalized_shape`: shape = PSA/PGA at

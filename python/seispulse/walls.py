@@ -22,6 +22,7 @@ import numpy as np
 
 from . import _core, _walls_one_term, _walls_vy, codes
 from ._seispulse import sp_wall_comparison, sp_wall_pressure
+from ._table import TableResult
 from ._walls_one_term import *  # noqa: F401,F403
 from ._walls_vy import *  # noqa: F401,F403
 
@@ -31,12 +32,27 @@ COMPARISON_ROWS = ("static active (Coulomb)", "Mononobe-Okabe total, EN 1998-5 E
                    "Wood (1973) rigid wall", "EN 1998-5 rigid wall", "Veletsos-Younan rigid wall",
                    "one-term solution")
 
-Comparison = namedtuple("Comparison", ["method", "thrust", "z", "moment", "kv_used"])
-Comparison.__doc__ = """One wall, every method: ``method`` (the labels of
-:data:`COMPARISON_ROWS`), ``thrust`` (kN/m: total for the static and M-O total rows, the
-dynamic increment for the others), ``z`` (m above the base, point of application),
-``moment`` (kNm/m about the base), ``kv_used`` (the signed kv of the M-O rows: the sign
-with the larger total thrust; kv > 0 acts upward)."""
+
+class Comparison(TableResult, namedtuple("Comparison", ["method", "thrust", "z", "moment",
+                                                        "kv_used"])):
+    """One wall, every method: ``method`` (the labels of :data:`COMPARISON_ROWS`),
+    ``thrust`` (kN/m: total for the static and M-O total rows, the dynamic increment for
+    the others), ``z`` (m above the base, point of application), ``moment`` (kNm/m about
+    the base), ``kv_used`` (the signed kv of the M-O rows: the sign with the larger total
+    thrust; kv > 0 acts upward). ``print()`` shows the table; :meth:`to_frame` gives it as
+    a pandas DataFrame (``attrs['kv_used']``)."""
+
+    __slots__ = ()
+    _COLUMNS = (("method", "method", ""), ("thrust", "thrust", "kN/m"), ("z", "z", "m"),
+                ("moment", "moment", "kNm/m"))
+
+    def _table_notes(self):
+        return [f"kv_used = {self.kv_used:.6g} (the signed kv of the Mononobe-Okabe rows; "
+                "> 0 acts upward)"]
+
+    def _frame_attrs(self):
+        return {"kv_used": self.kv_used}
+
 
 PressureProfile = namedtuple("PressureProfile", ["depth", "static", "mo_dynamic", "ec8_rigid",
                                                  "vy", "one_term"])
