@@ -6,6 +6,7 @@
 #        their output goes to build/meson-logs/*-output.txt, printed only when a step fails
 # run    build, then the batch driver on input/example.nml (tables go under out/)
 # test   everything: meson suites, a -fcheck=all/-ffpe-trap build, install and pip checks
+# build, run and test also let .venv's python `import seispulse` (pylink, below)
 #
 # Variables: PYTHON (interpreter the venv is made from, default python3), BUILDDIR (build).
 
@@ -20,13 +21,14 @@ VENV     := .venv
 VENV_BIN := $(CURDIR)/$(VENV)/bin
 VENV_PY  := $(VENV_BIN)/python
 STAMP    := $(VENV)/.seispulse-deps
-PIP_PKGS := 'numpy>=1.24' meson meson-python ninja pytest mpmath scipy matplotlib pyslammer eqsig
+PIP_PKGS := 'numpy>=1.24' meson meson-python ninja pytest mpmath scipy matplotlib pyslammer eqsig \
+            pandas
 # meson and ninja from the venv (ninja is found on PATH)
 MESON    := PATH="$(VENV_BIN):$$PATH" $(VENV_BIN)/meson
 DRIVER   := $(BUILDDIR)/driver/seispulse
 EXAMPLE  := input/example.nml
 
-.PHONY: help deps sysdeps venv build run test clean
+.PHONY: help deps sysdeps venv pylink build run test clean
 
 help:
 	@echo 'seispulse make targets:'
@@ -102,6 +104,17 @@ $(STAMP): Makefile | sysdeps
 
 venv: $(STAMP)
 
+# `import seispulse` from .venv: a file seispulse-build.pth in its site-packages names
+# $(BUILDDIR)/python, where meson builds the package (extension and .py copies), so every
+# rebuild is importable at once, with no reinstall step. Written only when it changes.
+PTH_LINE := $(abspath $(BUILDDIR))/python
+pylink: $(STAMP)
+	@site=$$($(VENV_PY) -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])'); \
+	pth=$$site/seispulse-build.pth; \
+	[ "$$(cat "$$pth" 2>/dev/null)" = '$(PTH_LINE)' ] || { \
+	    echo '$(PTH_LINE)' > "$$pth"; \
+	    echo "pylink: $(VENV)/bin/python imports seispulse from $(PTH_LINE) ($$pth)"; }
+
 # Configure once; meson regenerates by itself when meson.build files change. A new venv
 # (newer stamp) reconfigures, so -Dpython always names this venv's interpreter.
 $(BUILDDIR)/build.ninja: $(STAMP)
@@ -111,7 +124,7 @@ $(BUILDDIR)/build.ninja: $(STAMP)
 	$(MESON) setup $$reconf $(BUILDDIR) -Dpython=$(VENV_PY) >$$log 2>&1 || { cat $$log; exit 1; }
 	@touch $@
 
-build: sysdeps $(BUILDDIR)/build.ninja
+build: sysdeps $(BUILDDIR)/build.ninja pylink
 	@log=$(BUILDDIR)/meson-logs/compile-output.txt; \
 	echo "meson compile -C $(BUILDDIR) (output: $$log)"; \
 	$(MESON) compile -C $(BUILDDIR) >$$log 2>&1 || { cat $$log; exit 1; }; \
@@ -122,7 +135,7 @@ run: build
 
 # run_tests.py configures/compiles build/ itself, so that a compile error is one counted
 # failure and the other stages still run.
-test: deps
+test: deps pylink
 	@$(VENV_PY) tools/run_tests.py --builddir $(BUILDDIR)
 
 clean:

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # pip check: build the wheel with meson-python from the source tree and install it into a
-# temp dir (pip --target), then import it from a directory outside the repository.
+# temp dir (pip --target), then import it from a directory outside the repository; and,
+# when make has linked the build tree into the environment (seispulse-build.pth), import
+# it from there without PYTHONPATH.
 # --no-build-isolation: use the meson-python/numpy/meson/ninja of the environment (.venv);
 # nothing is downloaded.
 #
@@ -65,6 +67,27 @@ if [ $rc -ne 0 ] || [ "${out%% *}" != ok ]; then
     fail import "import from the installed wheel failed (exit $rc)"
 else
     ok import
+fi
+
+# `make build|run|test` put seispulse-build.pth into the environment's site-packages
+# (pylink): then its python imports seispulse from the build tree, from any directory.
+site=$("$PYTHON" -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')
+if [ -f "$site/seispulse-build.pth" ]; then
+    built=$(head -n 1 "$site/seispulse-build.pth")
+    out=$(cd "$work" && env -u PYTHONPATH PYTHONDONTWRITEBYTECODE=1 "$PYTHON" -c '
+import sys
+import seispulse, seispulse.pulse as p
+assert seispulse.__file__.startswith(sys.argv[1]), seispulse.__file__
+assert abs(p.exp_pulse(0.25, 0.0).v - 0.0625) < 1e-15
+print("ok")
+' "$built" 2>&1)
+    rc=$?
+    if [ $rc -ne 0 ] || [ "${out%% *}" != ok ]; then
+        printf '%s\n' "$out" | tail -n 20 | sed 's/^/    | /'
+        fail venv-import "the environment's python does not import seispulse from $built"
+    else
+        ok venv-import
+    fi
 fi
 
 finish

@@ -334,7 +334,7 @@ def test_readme_example(source_root, monkeypatch, capsys):
     section = text[text.index("\n## Intensity measures\n"):]
     code = section[section.index("```python\n") + 10:section.index("\n```\n")]
     shown = section[section.index("prints (run from the source tree)"):]
-    shown = shown[shown.index("```\n") + 4:]
+    shown = shown[shown.index("```text\n") + 8:]
     shown = shown[:shown.index("```")]
     monkeypatch.chdir(source_root)
     exec(compile(code, "README.md (Intensity measures)", "exec"), {})
