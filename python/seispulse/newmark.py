@@ -154,8 +154,9 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
     Returns
     -------
     Rigid
-        max_disp (m), final_disp (m), u_max, u_min (m), max_vel (m/s), t_end (s), and the
-        optional histories and intervals.
+        max_disp (m), final_disp (m), u_max, u_min (m), max_vel (m/s), t_end (s), the
+        optional histories and intervals, and ky, ky_up (g) as used; ``print()`` shows a
+        table (one row per ky), ``to_frame()`` gives it as a pandas DataFrame.
     """
     rec, step = _core.record_and_step(accel, dt)
     mode = _core.check_choice("mode", mode, MODES)

@@ -20,6 +20,7 @@ that is not run, and every sh command that is not a driver run, must be listed i
 NOT_RUN, and every entry of NOT_RUN must still match a block, so a new block is never
 skipped silently and a stale entry is noticed.
 """
+import importlib.util
 import os
 import re
 import shutil
@@ -229,9 +230,17 @@ def run_driver(driver, nml, cwd, where):
 
 # ------------------------------------------------------------------ python
 
+#: Optional packages a python block needs when it uses these names.
+OPTIONAL = {"records.sample(": "pyslammer", "plot": "matplotlib", "to_frame(": "pandas"}
+
+
 @pytest.mark.parametrize("index", runnable("python"))
 def test_python_block(index, workdir):
     b = BLOCKS[index]
+    for use, package in OPTIONAL.items():
+        if use in b.text and importlib.util.find_spec(package) is None:
+            pytest.skip(f"README.md:{b.line} uses {use}...: needs {package} (pip install "
+                        f"{package})")
     script = workdir / f"readme_block_{b.number}.py"
     script.write_text(b.text, encoding="utf-8")
     env = dict(os.environ, MPLBACKEND="Agg", PYTHONDONTWRITEBYTECODE="1")
