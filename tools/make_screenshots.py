@@ -12,16 +12,15 @@ Plots (seispulse.plot, records of input/records/):
 ``--table FILE`` also renders a text table of the batch driver (any text file, drawn in
 a monospace font as it is) into doc/img/<FILE's stem>.png, or ``--table-name NAME``.png.
 ``--out DIR`` writes elsewhere (the tests use it). Runs from any directory: the records
-are found from this file's location; seispulse is the one Python imports (installed by
-`make`, or on PYTHONPATH), else the build tree's build/python.
+are found from this file's location, and seispulse in this tree's build/python (after
+`make`), else the one Python imports.
 """
 import argparse
-import importlib.util
 import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-if importlib.util.find_spec("seispulse") is None:   # not installed, not on PYTHONPATH
+if (ROOT / "build" / "python" / "seispulse" / "__init__.py").exists():   # this tree's build
     sys.path.insert(0, str(ROOT / "build" / "python"))
 
 import matplotlib  # noqa: E402

@@ -88,18 +88,18 @@ def _title(axes, title):
 
 
 def _record_accel(name, record, dt, units="g"):
-    """(time s, acceleration g) of a Record (g), or of an array in `units` with dt (s)."""
-    if hasattr(record, "accel") and hasattr(record, "dt"):
-        return np.asarray(record.time, float), np.asarray(record.accel, float)
-    acc = _core.as_float_array(name, record)
-    if acc.ndim != 1:
-        raise InvalidInputError(f"{name}: must be a 1-d array of samples (got shape {acc.shape})")
-    if dt is None:
-        raise InvalidInputError(f"dt: the time step of {name} (s, > 0) is required")
-    step = _core.check_positive("dt", dt, " (s)")
-    factor = {"g": 1.0, "m/s2": 1.0 / STANDARD_GRAVITY}[
-        _core.check_choice("units", units, ("g", "m/s2"))]
-    return np.arange(acc.size) * step, acc * factor
+    """(time s, acceleration g) of a Record, or of samples in `units` (the names
+    :func:`seispulse.records.from_array` takes) at the time step dt (s)."""
+    from . import records
+    if not isinstance(record, records.Record):
+        if dt is None:
+            raise InvalidInputError(f"dt: the time step of {name} (s, > 0) is required")
+        acc = _core.as_float_array(name, record)
+        if acc.ndim != 1:
+            raise InvalidInputError(f"{name}: must be a 1-d array of samples "
+                                    f"(got shape {acc.shape})")
+        record = records.from_array(acc, dt, units)
+    return record.time, np.asarray(record.accel, float)
 
 
 # ------------------------------------------------------------------ spectra
@@ -142,6 +142,9 @@ def spectra(source, dt=None, periods=None, damping=None, quantity="psa", xscale=
     quantity = _core.check_choice("quantity", quantity, tuple(QUANTITIES))
     xscale = _core.check_choice("xscale", xscale, ("log", "linear"))
     computed = isinstance(source, (sdof.Spectrum, sdof.PulseSpectrum))
+    if not computed and hasattr(source, "_fields"):
+        raise InvalidInputError("source: must be a Record, samples in g, a sdof.Spectrum or a "
+                                f"sdof.PulseSpectrum (got {type(source).__name__})")
     if computed:
         if periods is not None or damping is not None or dt is not None:
             raise InvalidInputError("periods, damping, dt: only for a record (the spectrum "
@@ -365,7 +368,10 @@ def pulse(p, t=None, dimensionless=False, g=STANDARD_GRAVITY, ax=None, title=Non
         if t is None:
             raise InvalidInputError("t: the times of the PulseHistory are required")
         tt = _core.as_float_array("t", t).reshape(-1)
-        a, v, d = (np.broadcast_to(np.asarray(x, float), tt.shape) for x in p)
+        if any(np.size(x) != tt.size for x in p):
+            raise InvalidInputError(f"t: {tt.size} times, but the PulseHistory has "
+                                    f"{np.size(p.a)} values")
+        a, v, d = (np.asarray(x, float).reshape(-1) for x in p)
     else:
         raise InvalidInputError("p: must be a seispulse.pulse.Pulse (define) or a PulseHistory")
     fig, axes = _figure("pulse", ax, 3)
@@ -405,9 +411,9 @@ def rocking(run, block=None, excitation=None, dt=None, units="m/s2", ax=None, ti
         excitation panel is left out.
     dt : float, optional
         Time step (s) of an array excitation.
-    units : {'m/s2', 'g'}
-        Units of an array excitation (m/s^2, as :func:`seispulse.rocking.simulate`
-        takes it).
+    units : str
+        Units of an array excitation, as :func:`seispulse.records.from_array` names them
+        (default m/s^2, as :func:`seispulse.rocking.simulate` takes it; 'g', 'cm/s2' ...).
     ax : sequence of matplotlib Axes, optional
         Three axes (two without an excitation).
     title : str, optional
@@ -416,12 +422,14 @@ def rocking(run, block=None, excitation=None, dt=None, units="m/s2", ax=None, ti
     Returns
     -------
     matplotlib.figure.Figure
-        Panels: ground acceleration a_g (g), theta (rad; theta/alpha on the right),
+        Panels: ground acceleration a_g (g: a pulse or samples in SI units over the
+        block's g, a Record or samples in g as they are), theta (rad; theta/alpha on the right),
         angular velocity theta' (rad/s) against t (s); impacts marked on theta; for a
         block that overturned, a dotted line at its t_end (after it simulate reports
         theta = +-pi/2 and theta' = 0).
     """
     from . import pulse as pl
+    from . import records
     from . import rocking as rk
     if not isinstance(run, rk.RockingRun):
         raise InvalidInputError("run: must be the result of seispulse.rocking.simulate")
@@ -436,7 +444,11 @@ def rocking(run, block=None, excitation=None, dt=None, units="m/s2", ax=None, ti
         if isinstance(excitation, pl.Pulse):
             exc = (t, _pulse_history(excitation, t)[0] / g)
         else:
-            exc = _record_accel("excitation", excitation, dt, units)
+            t_exc, acc = _record_accel("excitation", excitation, dt, units)
+            if not isinstance(excitation, records.Record) and \
+                    records._unit_code(units) != _f.UNITS_G:
+                acc = acc * (STANDARD_GRAVITY / g)   # SI samples: in units of the run's g
+            exc = (t_exc, acc)
     fig, axes = _figure("rocking", ax, 3 if exc is not None else 2)
     if exc is not None:
         axes[0].plot(*exc, color="0.4", linewidth=0.9, label="ground a_g")

@@ -192,6 +192,11 @@ def test_rocking_under_records(rec, tmp_path):
         np.testing.assert_allclose(lines_of(fig.axes[0])[0].get_ydata(), rec.accel,
                                    rtol=1e-15)
         np.testing.assert_allclose(lines_of(fig.axes[0])[0].get_xdata(), rec.time, rtol=1e-15)
+    # samples in m/s^2 are drawn over the run's g, as the uplift threshold tan(alpha)
+    blk = rocking.rectangular_block(0.1, 1.0, g=9.81)
+    run = rocking.simulate(blk, accel=acc, dt=rec.dt, t=np.linspace(0, 5, 501))
+    fig = plot.rocking(run, blk, acc, dt=rec.dt)
+    np.testing.assert_allclose(lines_of(fig.axes[0])[0].get_ydata(), acc / 9.81, rtol=1e-15)
     fig = plot.rocking(run)   # no block, no excitation: theta and theta'
     rendered(fig, tmp_path / "r2.png")
     assert len(fig.axes) == 2
@@ -322,6 +327,11 @@ def test_bad_input(rec):
                      units="furlongs")
     with pytest.raises(InvalidInputError, match="^t: the times"):
         plot.pulse(pulse.half_sine(np.linspace(0, 1, 5), amp=1.0, duration=1.0))
+    with pytest.raises(InvalidInputError, match="^t: 5 times, but the PulseHistory has 3"):
+        plot.pulse(pulse.half_sine(np.linspace(0, 1, 3), amp=1.0, duration=1.0),
+                   np.linspace(0, 1, 5))
+    with pytest.raises(InvalidInputError, match="^source"):
+        plot.spectra(walls.comparison(**WALL))
     with pytest.raises(InvalidInputError, match="^p: must be"):
         plot.pulse("half_sine")
     with pytest.raises(InvalidInputError, match="^profile"):
