@@ -35,11 +35,9 @@ from . import _core
 from . import _fortran_codes as _f
 from ._seispulse import sp_pulse_eval
 from .errors import InvalidInputError
+from .pulse import STANDARD_GRAVITY   # m/s^2: converts m/s^2 to g where a plot shows both
 
 __all__ = ["QUANTITIES", "spectra", "newmark", "rocking", "walls", "pulse", "overturning_map"]
-
-#: Standard gravity (m/s^2): converts m/s^2 to g where a plot shows both.
-STANDARD_GRAVITY = 9.80665
 
 #: Ordinates of :func:`spectra`: the field of the spectrum and its label without the unit.
 QUANTITIES = {"sa": "SA, max |absolute acceleration|", "psa": "PSA = (2 pi/T)^2 SD",
