@@ -427,39 +427,7 @@ def plot_flexible(result, record=None, ax=None):
     for two-way sliding) and, with ``record`` (the accelerations in g or a Record), the
     ground acceleration, on one axes; the sliding displacement (m) on a second one. ``ax``:
     a pair of axes, or one (the displacement then goes on a twin y axis). Returns the two
-    axes."""
-    if not isinstance(result, Flexible):
-        raise InvalidInputError("result: must be the result of newmark.decoupled or coupled")
-    if result.time is None:
-        raise InvalidInputError("result: has no history (run it with history=True)")
-    from .cylinder import _pyplot
-    plt = _pyplot("plot_flexible")
-    if ax is None:
-        _, (ax_a, ax_s) = plt.subplots(2, 1, sharex=True)
-    elif isinstance(ax, (tuple, list, np.ndarray)):
-        if len(ax) != 2:
-            raise InvalidInputError("ax: one axes or a pair of them")
-        ax_a, ax_s = ax
-    else:
-        ax_a = ax
-        ax_s = ax.twinx()
-    t = result.time
-    if record is not None:
-        acc = record.accel if hasattr(record, "accel") else record
-        acc = _core.as_float_array("record", acc)
-        if acc.shape != t.shape:
-            raise InvalidInputError(f"record: must have the {t.size} samples of the result")
-        ax_a.plot(t, acc, color="0.6", linewidth=0.8, label="ground a (g)")
-    ax_a.plot(t, result.hea, color="C0", linewidth=1.0, label="HEA (g)")
-    for k, value in enumerate(np.atleast_1d(result.ky)):
-        ax_a.axhline(value, color="C3", linestyle="--", linewidth=0.9,
-                     label="ky" if k == 0 else None)
-    if result.ky_up is not None and np.isfinite(result.ky_up):
-        ax_a.axhline(-result.ky_up, color="C3", linestyle=":", linewidth=0.9, label="-ky_up")
-    ax_a.set_ylabel("acceleration (g)")
-    ax_a.legend(loc="upper right", fontsize="small")
-    ax_s.plot(t, result.disp, color="C1", label="sliding s (m)")
-    ax_s.set_ylabel("sliding displacement s (m)")
-    ax_s.set_xlabel("t (s)")
-    ax_s.legend(loc="lower right" if ax_s is not ax_a else "upper left", fontsize="small")
-    return ax_a, ax_s
+    axes. :func:`seispulse.plot.newmark` draws the relative velocity too and returns the
+    figure."""
+    from . import plot
+    return plot._flexible_pair(result, record, ax)

@@ -390,19 +390,9 @@ def _draw_classes(ax, classes, x, y):
 
 def plot_overturning_map(classes, freq_ratio, amp_ratio, ax=None, title=None):
     """Draw a map of :func:`overturning_map` with matplotlib (an optional dependency):
-    one colour per class over (omega_p/p, a_p/(g tan alpha)). Returns the axes."""
-    try:
-        import matplotlib.pyplot as plt
-    except ImportError as exc:  # optional
-        raise ImportError("plot_overturning_map needs matplotlib (pip install matplotlib)") \
-            from exc
-    if ax is None:
-        _, ax = plt.subplots()
-    mesh = _draw_classes(ax, classes, freq_ratio, amp_ratio)
-    bar = ax.figure.colorbar(mesh, ax=ax, ticks=range(4))
-    bar.ax.set_yticklabels(MAP_CLASSES)
-    ax.set_xlabel("omega_p / p")
-    ax.set_ylabel("a_p / (g tan alpha)")
-    if title:
-        ax.set_title(title)
-    return ax
+    one colour per class over (omega_p/p, a_p/(g tan alpha)), the legend of the classes
+    inside the figure. Returns the axes (:func:`seispulse.plot.overturning_map` draws
+    it and returns the figure)."""
+    from . import plot
+    fig = plot.overturning_map(classes, freq_ratio, amp_ratio, ax=ax, title=title)
+    return ax if ax is not None else fig.axes[0]

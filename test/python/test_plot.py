@@ -1,0 +1,375 @@
+"""seispulse.plot: every helper renders a non-empty PNG with the Agg backend from a plain
+savefig, labels its axes with units, keeps its legends (and every axes with its tick
+labels) inside the figure, and draws exactly the numbers the API returns."""
+import re
+import struct
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+mpl = pytest.importorskip("matplotlib")
+mpl.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+from seispulse import (InvalidInputError, newmark, plot, pulse, records,  # noqa: E402
+                       rocking, sdof, walls)
+
+G = 9.80665
+PNG = b"\x89PNG\r\n\x1a\n"
+# an axis label ends with its unit in parentheses; (-) for a dimensionless quantity
+UNIT = re.compile(r"\((g|m|m/s|m/s\^2|s|rad|rad/s|kPa|-)\)")
+RECORD_B = "input/records/quake_b.csv"
+RECORD_A = "input/records/quake_a.AT2"
+
+
+@pytest.fixture(autouse=True)
+def _close_figures():
+    yield
+    plt.close("all")
+
+
+@pytest.fixture
+def rec(source_root):
+    return records.read(source_root / RECORD_B)
+
+
+def rendered(fig, path, units=True):
+    """Save fig with a plain savefig and check the file, the labels and the layout."""
+    fig.savefig(path)
+    data = path.read_bytes()
+    assert data[:8] == PNG and len(data) > 10_000
+    width, height = struct.unpack(">II", data[16:24])   # IHDR
+    assert (width, height) == (round(fig.bbox.width), round(fig.bbox.height))
+    renderer = fig.canvas.get_renderer()
+    box = fig.bbox
+    inside = (lambda b: b.x0 >= box.x0 - 1 and b.y0 >= box.y0 - 1 and b.x1 <= box.x1 + 1
+              and b.y1 <= box.y1 + 1)
+    legends = [a.get_legend() for a in fig.axes if a.get_legend() is not None] + fig.legends
+    for legend in legends:
+        assert inside(legend.get_window_extent(renderer)), "legend cut off by savefig"
+    for axis in fig.axes:
+        assert inside(axis.get_tightbbox(renderer)), f"axes {axis.get_ylabel()!r} cut off"
+        for label in (axis.get_xlabel(), axis.get_ylabel()):
+            if units and label:
+                assert UNIT.search(label), f"no unit in {label!r}"
+    return legends
+
+
+def lines_of(axis):
+    """The data lines of an axes (not the horizontal and vertical guide lines)."""
+    return [ln for ln in axis.get_lines() if np.size(ln.get_xdata()) > 2]
+
+
+# ------------------------------------------------------------------ spectra
+
+def test_spectra_of_a_record(rec, tmp_path):
+    periods = [1.0, 0.0, 0.1, 3.0, 0.5]   # any order, with the ground itself
+    fig = plot.spectra(rec, periods=periods, damping=[0.02, 0.05, 0.1])
+    legends = rendered(fig, tmp_path / "spectra.png")
+    (axis,) = fig.axes
+    assert axis.get_xscale() == "log" and axis.get_xlabel() == "period T (s)"
+    assert axis.get_ylabel().endswith("(g)") and axis.get_title() == "quake_b"
+    assert [t.get_text() for t in legends[0].get_texts()] == [
+        "zeta = 2 %", "zeta = 5 %", "zeta = 10 %"]
+    ref = sdof.spectrum(rec, periods=periods, damping=[0.02, 0.05, 0.1])
+    order = [2, 4, 0, 3]   # T > 0 ascending: the log axis leaves T = 0 out
+    for k, line in enumerate(axis.get_lines()):
+        np.testing.assert_array_equal(line.get_xdata(), np.array(periods)[order])
+        np.testing.assert_array_equal(line.get_ydata(), ref.psa[k][order])
+    # linear axis: T = 0 drawn (PSA = PGA there)
+    fig = plot.spectra(rec, periods=periods, damping=0.05, quantity="sd", xscale="linear")
+    (line,) = fig.axes[0].get_lines()
+    np.testing.assert_array_equal(line.get_xdata(), [0.0, 0.1, 0.5, 1.0, 3.0])
+    ref = sdof.spectrum(rec, periods=periods, damping=0.05)
+    np.testing.assert_array_equal(line.get_ydata(), ref.sd[[1, 2, 4, 0, 3]])
+    assert fig.axes[0].get_ylabel().endswith("(m)")
+
+
+@pytest.mark.parametrize("quantity, unit", [("sa", "(g)"), ("psa", "(g)"), ("sv", "(m/s)"),
+                                            ("psv", "(m/s)"), ("sd", "(m)")])
+def test_spectra_given(rec, quantity, unit, tmp_path):
+    spec = sdof.spectrum(rec, periods=np.geomspace(0.05, 5, 30), damping=[0.05, 0.2])
+    fig = plot.spectra(spec, quantity=quantity)
+    rendered(fig, tmp_path / "s.png")
+    axis = fig.axes[0]
+    assert axis.get_ylabel().endswith(unit)
+    for k, line in enumerate(axis.get_lines()):
+        np.testing.assert_array_equal(line.get_ydata(), getattr(spec, quantity)[k])
+
+
+def test_spectra_of_a_pulse_and_into_an_axes(tmp_path):
+    p = pulse.define("half_sine", amp=0.3, amp_unit="g", duration=0.5)
+    spec = sdof.pulse_spectrum(p, np.geomspace(0.05, 4, 40), damping=0.05)
+    fig, axis = plt.subplots(layout="constrained")
+    assert plot.spectra(spec, ax=axis) is fig
+    rendered(fig, tmp_path / "p.png")
+    assert axis.get_ylabel().endswith("(m/s^2)")
+    np.testing.assert_array_equal(axis.get_lines()[0].get_ydata(), spec.psa)
+
+
+def test_spectra_default_grid(source_root, tmp_path):
+    fig = plot.spectra(records.read(source_root / RECORD_A))
+    rendered(fig, tmp_path / "d.png")
+    assert len(fig.axes[0].get_lines()) == len(plot.DEFAULT_DAMPINGS)
+    np.testing.assert_array_equal(fig.axes[0].get_lines()[0].get_xdata(), plot.DEFAULT_PERIODS)
+
+
+# ------------------------------------------------------------------ Newmark
+
+def test_newmark_rigid(rec, tmp_path):
+    r = newmark.rigid(rec, ky=0.05, mode="both", history=True)
+    fig = plot.newmark(r, rec, ky=0.05, ky_up=0.05)
+    rendered(fig, tmp_path / "rigid.png")
+    ax_a, ax_v, ax_u = fig.axes
+    assert (ax_a.get_ylabel(), ax_v.get_ylabel(), ax_u.get_ylabel()) == (
+        "acceleration (g)", "relative velocity (m/s)", "sliding displacement (m)")
+    assert ax_u.get_xlabel() == "time t (s)"
+    assert ax_a.get_shared_x_axes().joined(ax_a, ax_u)
+    np.testing.assert_array_equal(lines_of(ax_a)[0].get_ydata(), rec.accel)
+    np.testing.assert_array_equal(lines_of(ax_v)[0].get_ydata(), r.vel)
+    np.testing.assert_array_equal(lines_of(ax_u)[0].get_ydata(), r.disp)
+    np.testing.assert_array_equal(lines_of(ax_u)[0].get_xdata(), rec.time)
+    guides = sorted(float(ln.get_ydata()[0]) for ln in ax_a.get_lines()
+                    if np.size(ln.get_xdata()) == 2)
+    assert guides == [-0.05, 0.05]
+    # no record: the two motion panels only; an array record in g with the result's step
+    assert len(plot.newmark(r).axes) == 2
+    fig = plot.newmark(r, rec.accel)
+    np.testing.assert_array_equal(lines_of(fig.axes[0])[0].get_xdata(), r.time)
+
+
+def test_newmark_flexible(rec, tmp_path):
+    f = newmark.decoupled(rec, ky=0.05, height=20.0, vs=300.0, vs_base=600.0, history=True)
+    fig = plot.newmark(f, rec)
+    rendered(fig, tmp_path / "flex.png")
+    ax_a, ax_v, ax_u = fig.axes
+    data = lines_of(ax_a)
+    np.testing.assert_array_equal(data[1].get_ydata(), f.hea)
+    np.testing.assert_array_equal(lines_of(ax_v)[0].get_ydata(), f.vel)
+    np.testing.assert_array_equal(lines_of(ax_u)[0].get_ydata(), f.disp)
+    # into the caller's axes
+    fig2, axes = plt.subplots(3, 1, layout="constrained")
+    assert plot.newmark(f, rec, ax=axes) is fig2
+
+
+# ------------------------------------------------------------------ rocking
+
+def test_rocking_under_a_pulse(tmp_path):
+    blk = rocking.rectangular_block(0.2, 1.0)   # tan(alpha) = 0.2
+    p = pulse.define("sine_cycle", amp=0.4, amp_unit="g", period=0.6)
+    t = np.linspace(0.0, 4.0, 801)
+    run = rocking.simulate(blk, p, t=t)
+    assert run.outcome.startswith("overturn")
+    fig = plot.rocking(run, blk, p)
+    rendered(fig, tmp_path / "rock.png")
+    ax_a, ax_th, ax_om = fig.axes[:3]
+    a = pulse.sine_cycle(t, amp=0.4, amp_unit="g", period=0.6).a / G
+    np.testing.assert_allclose(lines_of(ax_a)[0].get_ydata(), a, rtol=0, atol=1e-15)
+    levels = sorted(float(ln.get_ydata()[0]) for ln in ax_a.get_lines()
+                    if np.size(ln.get_ydata()) == 2 and ln.get_ydata()[0] == ln.get_ydata()[1])
+    np.testing.assert_allclose(levels, [-0.2, 0.2], rtol=1e-15)
+    np.testing.assert_array_equal(lines_of(ax_th)[0].get_ydata(), run.theta)
+    np.testing.assert_array_equal(lines_of(ax_om)[0].get_ydata(), run.omega)
+    assert ax_th.get_ylabel() == "rotation theta (rad)"
+    assert ax_om.get_ylabel() == "angular velocity theta' (rad/s)"
+    # theta/alpha on a second axis: its ticks are theta/alpha
+    second = [c for c in ax_th.get_children() if type(c).__name__ == "SecondaryAxis"]
+    assert second and second[0].get_ylabel() == "theta / alpha (-)"
+    texts = [t.get_text() for t in ax_th.get_legend().get_texts()]
+    assert "impacts" in texts and "overturned" in texts
+
+
+def test_rocking_under_records(rec, tmp_path):
+    blk = rocking.rectangular_block(0.1, 1.0)
+    acc = rec.accel * G   # simulate takes m/s^2
+    run = rocking.simulate(blk, accel=acc, dt=rec.dt, t=np.linspace(0, 5, 501))
+    for excitation, kw in ((rec, {}), (acc, {"dt": rec.dt}),
+                           (rec.accel, {"dt": rec.dt, "units": "g"})):
+        fig = plot.rocking(run, blk, excitation, **kw)
+        rendered(fig, tmp_path / "r.png")
+        np.testing.assert_allclose(lines_of(fig.axes[0])[0].get_ydata(), rec.accel,
+                                   rtol=1e-15)
+        np.testing.assert_allclose(lines_of(fig.axes[0])[0].get_xdata(), rec.time, rtol=1e-15)
+    # samples in m/s^2 are drawn over the run's g, as the uplift threshold tan(alpha)
+    blk = rocking.rectangular_block(0.1, 1.0, g=9.81)
+    run = rocking.simulate(blk, accel=acc, dt=rec.dt, t=np.linspace(0, 5, 501))
+    fig = plot.rocking(run, blk, acc, dt=rec.dt)
+    np.testing.assert_allclose(lines_of(fig.axes[0])[0].get_ydata(), acc / 9.81, rtol=1e-15)
+    fig = plot.rocking(run)   # no block, no excitation: theta and theta'
+    rendered(fig, tmp_path / "r2.png")
+    assert len(fig.axes) == 2
+
+
+# ------------------------------------------------------------------ pulses
+
+def test_pulse_defined(tmp_path):
+    p = pulse.define("half_sine", amp=0.3, amp_unit="g", duration=0.8)
+    fig = plot.pulse(p)
+    rendered(fig, tmp_path / "pulse.png")
+    ax_a, ax_v, ax_d = fig.axes[:3]
+    t = lines_of(ax_a)[0].get_xdata()
+    assert t[0] == 0.0 and t[-1] == pytest.approx(1.0)   # 1.25 times the pulse
+    ref = pulse.half_sine(t, amp=0.3 * G, duration=0.8)
+    for axis, y in zip((ax_a, ax_v, ax_d), ref):
+        np.testing.assert_allclose(lines_of(axis)[0].get_ydata(), y, rtol=1e-15, atol=1e-15)
+    assert [ax.get_ylabel() for ax in (ax_a, ax_v, ax_d)] == [
+        "acceleration a (m/s^2)", "velocity v (m/s)", "displacement d (m)"]
+    second = [c for c in ax_a.get_children() if type(c).__name__ == "SecondaryAxis"]
+    assert second[0].get_ylabel() == "a (g)"
+    # the default grid covers every cycle, and the Ricker wavelet's whole length
+    p = pulse.define("sine_cycle", amp=1.0, period=0.5, cycles=4)
+    t = lines_of(plot.pulse(p).axes[0])[0].get_xdata()
+    assert t[-1] == pytest.approx(1.25 * 2.0)
+    p = pulse.define("ricker", amp=1.0, freq=2.0)
+    t = lines_of(plot.pulse(p).axes[0])[0].get_xdata()
+    assert t[-1] == pytest.approx(1.25 * 1.5)
+
+
+def test_pulse_history(tmp_path):
+    tau = np.linspace(0, 2.5, 251)
+    h = pulse.exp_pulse(tau, beta=-np.pi, full=True)
+    fig = plot.pulse(h, tau, dimensionless=True)
+    rendered(fig, tmp_path / "exp.png")
+    assert fig.axes[2].get_xlabel() == "tau = t / t_d (-)"
+    for axis, y in zip(fig.axes, h):
+        np.testing.assert_array_equal(lines_of(axis)[0].get_ydata(), y)
+    t = np.linspace(0, 2, 101)
+    fig = plot.pulse(pulse.ricker(t, amp=3.0, freq=1.2), t, title="Ricker")
+    assert fig.axes[0].get_title() == "Ricker"
+
+
+# ------------------------------------------------------------------ walls
+
+WALL = dict(height=6.0, gamma=20.0, phi_deg=32.0, kh=0.2, kv=0.1, alpha_s=0.24)
+
+
+def test_walls(tmp_path):
+    prof = walls.pressure_profile(np.linspace(0, 6, 61), **WALL)
+    cmp = walls.comparison(**WALL)
+    fig = plot.walls(prof, cmp, title="H = 6 m")
+    rendered(fig, tmp_path / "walls.png")
+    ax_p, ax_q = fig.axes
+    assert ax_p.get_xlabel() == "pressure on the wall (kPa)"
+    assert ax_p.get_ylabel() == "depth below the top (m)"
+    assert ax_p.get_ylim()[0] > ax_p.get_ylim()[1]   # depth grows downward
+    for line, field in zip(ax_p.get_lines(), ("static", "mo_dynamic", "ec8_rigid", "vy",
+                                              "one_term")):
+        np.testing.assert_array_equal(line.get_xdata(), getattr(prof, field))
+        np.testing.assert_array_equal(line.get_ydata(), prof.depth)
+    widths = [bar.get_width() for bar in ax_q.patches]
+    np.testing.assert_array_equal(widths, cmp.thrust)
+    assert [t.get_text() for t in ax_q.get_yticklabels()] == list(walls.COMPARISON_ROWS)
+    assert "(kN/m)" in ax_q.get_xlabel()
+    notes = [t.get_text() for t in ax_q.texts]
+    assert notes == [f" z = {z:.2f} m" for z in cmp.z]
+    # the profile alone, into an axes
+    fig, axis = plt.subplots(layout="constrained")
+    plot.walls(prof, ax=axis)
+    rendered(fig, tmp_path / "w1.png")
+
+
+# ------------------------------------------------------------------ overturning maps
+
+def test_overturning_map(tmp_path):
+    freq, amp = np.linspace(0.5, 6, 12), np.linspace(0.5, 4, 9)
+    classes = rocking.overturning_map("sine_cycle", freq, amp, alpha=0.2)
+    fig = plot.overturning_map(classes, freq, amp, title="sine cycle")
+    legends = rendered(fig, tmp_path / "map.png", units=False)
+    (axis,) = fig.axes
+    assert (axis.get_xlabel(), axis.get_ylabel()) == ("omega_p / p", "a_p / (g tan alpha)")
+    assert [t.get_text() for t in legends[0].get_texts()] == list(rocking.MAP_CLASSES)
+    # below the cells, not over them
+    renderer = fig.canvas.get_renderer()
+    assert legends[0].get_window_extent(renderer).y1 < axis.get_window_extent(renderer).y0
+    np.testing.assert_array_equal(axis.collections[0].get_array().reshape(classes.shape),
+                                  classes)
+    # the old entry point: the same drawing, returns the axes; in the caller's axes the
+    # legend goes inside them
+    ax = rocking.plot_overturning_map(classes, freq, amp)
+    rendered(ax.figure, tmp_path / "map2.png", units=False)
+    fig, axis = plt.subplots()
+    assert rocking.plot_overturning_map(classes, freq, amp, ax=axis) is axis
+    legends = rendered(fig, tmp_path / "map3.png", units=False)
+    assert axis.get_window_extent(fig.canvas.get_renderer()).contains(
+        *legends[0].get_window_extent().get_points()[0])
+
+
+# ------------------------------------------------------------------ errors, dependency
+
+def test_bad_input(rec):
+    r = newmark.rigid(rec, ky=0.05)
+    with pytest.raises(InvalidInputError, match="^result: has no history"):
+        plot.newmark(r)
+    r = newmark.rigid(rec, ky=0.05, history=True)
+    with pytest.raises(InvalidInputError, match="^record: must have the 200 samples"):
+        plot.newmark(r, rec.accel[:10])
+    with pytest.raises(InvalidInputError, match="^result"):
+        plot.newmark(rec)
+    with pytest.raises(InvalidInputError, match="^ax: needs 3 axes"):
+        plot.newmark(r, rec, ax=plt.subplots(2)[1])
+    with pytest.raises(InvalidInputError, match="^quantity"):
+        plot.spectra(rec, quantity="pga")
+    with pytest.raises(InvalidInputError, match="^xscale"):
+        plot.spectra(rec, xscale="loglog")
+    spec = sdof.spectrum(rec, periods=[0.1, 1.0])
+    with pytest.raises(InvalidInputError, match="^periods, damping, dt"):
+        plot.spectra(spec, damping=0.05)
+    with pytest.raises(InvalidInputError, match="^dt"):
+        plot.spectra(rec.accel)
+    blk = rocking.rectangular_block(0.2, 1.0)
+    p = pulse.define("half_sine", amp=3.0, duration=0.5)
+    with pytest.raises(InvalidInputError, match="^run: has no history"):
+        plot.rocking(rocking.simulate(blk, p), blk)
+    with pytest.raises(InvalidInputError, match="^units"):
+        plot.rocking(rocking.simulate(blk, p, t=[0.0, 1.0]), blk, [0.0, 1.0], dt=0.1,
+                     units="furlongs")
+    with pytest.raises(InvalidInputError, match="^t: the times"):
+        plot.pulse(pulse.half_sine(np.linspace(0, 1, 5), amp=1.0, duration=1.0))
+    with pytest.raises(InvalidInputError, match="^t: 5 times, but the PulseHistory has 3"):
+        plot.pulse(pulse.half_sine(np.linspace(0, 1, 3), amp=1.0, duration=1.0),
+                   np.linspace(0, 1, 5))
+    with pytest.raises(InvalidInputError, match="^source"):
+        plot.spectra(walls.comparison(**WALL))
+    with pytest.raises(InvalidInputError, match="^p: must be"):
+        plot.pulse("half_sine")
+    with pytest.raises(InvalidInputError, match="^profile"):
+        plot.walls(walls.comparison(**WALL))
+    with pytest.raises(InvalidInputError, match="^legend"):
+        plot.overturning_map(np.zeros((2, 2)), [1, 2], [1, 2], legend="left")
+
+
+def test_matplotlib_optional(source_root):
+    """import seispulse does not import matplotlib; without it a plot raises ImportError
+    naming it and how to install it."""
+    code = ("import sys\n"
+            "import seispulse\n"
+            "assert 'matplotlib' not in sys.modules, 'imported at import seispulse'\n"
+            "sys.modules['matplotlib'] = None\n"
+            "sys.modules['matplotlib.pyplot'] = None\n"
+            "from seispulse import plot, pulse\n"
+            "try:\n"
+            "    plot.pulse(pulse.define('half_sine', amp=1.0, duration=1.0))\n"
+            "except ImportError as exc:\n"
+            "    print(exc)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout
+    assert "matplotlib" in out and "pip install matplotlib" in out
+
+
+def test_screenshot_script(source_root, tmp_path):
+    """tools/make_screenshots.py renders the README's pictures (small PNGs of the sizes it
+    sets) and a text table given with --table."""
+    table = tmp_path / "table.txt"
+    table.write_text("# a table\n  ky (g)  max_disp (m)\n    0.05        0.1008\n")
+    out = subprocess.run([sys.executable, str(source_root / "tools" / "make_screenshots.py"),
+                          "--out", str(tmp_path), "--table", str(table)],
+                         capture_output=True, text=True, check=True).stdout
+    sizes = {"spectra.png": (700, 400), "newmark.png": (700, 600)}
+    for name, (width, height) in sizes.items():
+        data = (tmp_path / name).read_bytes()
+        assert data[:8] == PNG and 10_000 < len(data) < 150_000
+        assert struct.unpack(">II", data[16:24]) == (width, height)
+        assert name in out
+    assert (tmp_path / "table.png").read_bytes()[:8] == PNG
