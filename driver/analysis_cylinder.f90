@@ -49,6 +49,7 @@ module driver_cylinder
                                      locate_run_message, map_kind, map_template, progress_t, &
                                      axes_names, map_axes_code, map_grids, map_axes_header, &
                                      map_table
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -1502,13 +1503,13 @@ contains
             if (s%use_records) then
                 call echo_records(s%recs, s%slammer_rounding)
             else if (s%pin%group%line > 0) then
-                call write_pulse_group(output_unit)
+                call write_pulse_group(echo_unit())
             end if
         end if
-        write(output_unit, nml=body)
-        write(output_unit, nml=cylinder)
-        if (s%task == 'map') write(output_unit, nml=map)
-        if (s%task == 'roll') write(output_unit, nml=roll)
+        write(echo_unit(), nml=body)
+        write(echo_unit(), nml=cylinder)
+        if (s%task == 'map') write(echo_unit(), nml=map)
+        if (s%task == 'roll') write(echo_unit(), nml=roll)
     end subroutine echo
 
 end module driver_cylinder

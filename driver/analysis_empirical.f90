@@ -30,6 +30,7 @@ module driver_empirical
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
                               record_line, failed_records
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -356,7 +357,7 @@ contains
             slammer = cfg%slammer
             damping = cfg%damping
             g = cfg%g
-            write(output_unit, nml=empirical)
+            write(echo_unit(), nml=empirical)
         end subroutine echo_n
 
     end subroutine echo_empirical

@@ -38,6 +38,7 @@ module driver_newmark
     use driver_intensity_table, only: intensity_table_t, intensity_check, intensity_echo, &
                                       intensity_start, intensity_record, intensity_failures, &
                                       intensity_write
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -563,7 +564,7 @@ contains
             mode = newmark_mode_name(cfg%mode)
             method = newmark_method_name(cfg%method)
             g = cfg%g
-            write(output_unit, nml=newmark)
+            write(echo_unit(), nml=newmark)
         end subroutine echo_ky
 
         subroutine echo_asym(n)
@@ -579,7 +580,7 @@ contains
             mode = newmark_mode_name(cfg%mode)
             method = newmark_method_name(cfg%method)
             g = cfg%g
-            write(output_unit, nml=newmark)
+            write(echo_unit(), nml=newmark)
         end subroutine echo_asym
 
         subroutine echo_mu(n)
@@ -596,7 +597,7 @@ contains
             mode = newmark_mode_name(cfg%mode)
             method = newmark_method_name(cfg%method)
             g = cfg%g
-            write(output_unit, nml=newmark)
+            write(echo_unit(), nml=newmark)
         end subroutine echo_mu
 
         subroutine echo_table(n)
@@ -610,7 +611,7 @@ contains
             method = kind_names(cfg%kind)
             rule = newmark_method_name(cfg%method)
             g = cfg%g
-            write(output_unit, nml=newmark)
+            write(echo_unit(), nml=newmark)
         end subroutine echo_table
 
         subroutine echo_flexible(n)
@@ -625,7 +626,7 @@ contains
             method = kind_names(cfg%kind)
             rule = newmark_method_name(cfg%method)
             g = cfg%g
-            write(output_unit, nml=newmark)
+            write(echo_unit(), nml=newmark)
         end subroutine echo_flexible
 
         subroutine echo_flexible_asym(n)
@@ -641,7 +642,7 @@ contains
             method = kind_names(cfg%kind)
             rule = newmark_method_name(cfg%method)
             g = cfg%g
-            write(output_unit, nml=newmark)
+            write(echo_unit(), nml=newmark)
         end subroutine echo_flexible_asym
 
     end subroutine echo_newmark

@@ -31,6 +31,7 @@ module driver_rocking
     use driver_axis, only: axis_values
     use driver_rocking_common, only: check_run_options, restitution_and_model, &
                                      locate_run_message, map_kind, map_template, progress_t
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -706,8 +707,8 @@ contains
         character(len=:), allocatable :: task
         task = trim(lower(adjustl(what)))
         what = task
-        if (task /= 'map') call write_pulse_group(output_unit)
-        write(output_unit, nml=block)
+        if (task /= 'map') call write_pulse_group(echo_unit())
+        write(echo_unit(), nml=block)
         if (abs(kv) > 0.0_dp) then
             call echo_rocking_kv()
         else
@@ -715,7 +716,7 @@ contains
         end if
         if (task == 'map') then
             if (not_one(cycles)) then
-                write(output_unit, nml=map)
+                write(echo_unit(), nml=map)
             else
                 call echo_map_without_cycles()
             end if
@@ -725,13 +726,13 @@ contains
     !> Echo &rocking as before kv existed (kv = 0: the same output as without it).
     subroutine echo_rocking()
         namelist /rocking/ what, t_max, rtol, t_end, npts, dt
-        write(output_unit, nml=rocking)
+        write(echo_unit(), nml=rocking)
     end subroutine echo_rocking
 
     !> Echo &rocking with kv.
     subroutine echo_rocking_kv()
         namelist /rocking/ what, t_max, rtol, t_end, npts, dt, kv
-        write(output_unit, nml=rocking)
+        write(echo_unit(), nml=rocking)
     end subroutine echo_rocking_kv
 
     !> The echo of &map without `cycles` when it is 1 (the default), so that the echo of
@@ -740,7 +741,7 @@ contains
     subroutine echo_map_without_cycles()
         namelist /map/ kind, beta, full, peak_frac, t0_periods, freq_ratio, freq_range, &
             freq_count, amp_ratio, amp_range, amp_count
-        write(output_unit, nml=map)
+        write(echo_unit(), nml=map)
     end subroutine echo_map_without_cycles
 
 end module driver_rocking

@@ -32,6 +32,7 @@ module driver_sdof
                               records_missing, record_line, failed_records
     use driver_sdof_common, only: max_periods, max_dampings, check_dampings
     use driver_axis, only: axis_values
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -401,7 +402,7 @@ contains
             plateau_below = cfg%plateau_below
             shape = cfg%shape
             if (cfg%envelope) then
-                write(output_unit, nml=sdof)
+                write(echo_unit(), nml=sdof)
             else
                 call echo_no_envelope()
             end if
@@ -420,7 +421,7 @@ contains
             threads = cfg%threads
             envelope = .false.
             shape = cfg%shape
-            write(output_unit, nml=sdof)
+            write(echo_unit(), nml=sdof)
         end subroutine echo_no_envelope
 
         subroutine echo_plain(nd)
@@ -429,7 +430,7 @@ contains
             namelist /sdof/ damping, g
             damping = cfg%dampings
             g = cfg%g
-            write(output_unit, nml=sdof)
+            write(echo_unit(), nml=sdof)
         end subroutine echo_plain
 
         subroutine echo_history(np, nd)
@@ -438,7 +439,7 @@ contains
             namelist /sdof_history/ periods, damping
             periods = cfg%h_periods
             damping = cfg%h_dampings
-            write(output_unit, nml=sdof_history)
+            write(echo_unit(), nml=sdof_history)
         end subroutine echo_history
 
     end subroutine echo_sdof

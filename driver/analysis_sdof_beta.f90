@@ -15,6 +15,7 @@ module driver_sdof_beta
     use driver_tables, only: write_tables, say_written
     use driver_sdof_common, only: max_periods, max_dampings, check_list
     use driver_axis, only: axis_values
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -175,7 +176,7 @@ contains
         ratios = values
         gamma = gammas
         model = model_name
-        write(output_unit, nml=sdof_beta)
+        write(echo_unit(), nml=sdof_beta)
     end subroutine echo_beta
 
 end module driver_sdof_beta

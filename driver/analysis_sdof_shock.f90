@@ -18,6 +18,7 @@ module driver_sdof_shock
                                   write_pulse_group
     use driver_sdof_common, only: max_periods, max_dampings, check_dampings
     use driver_axis, only: axis_values
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -164,7 +165,7 @@ contains
         end if
 
         ! --- echo the effective input
-        call write_pulse_group(output_unit)
+        call write_pulse_group(echo_unit())
         call echo_shock(by_period, axis, dampings)
 
         ! --- compute
@@ -252,7 +253,7 @@ contains
         namelist /sdof_shock/ periods, damping
         periods = values
         damping = dampings
-        write(output_unit, nml=sdof_shock)
+        write(echo_unit(), nml=sdof_shock)
     end subroutine echo_shock_periods
 
     subroutine echo_shock_ratios(values, dampings)
@@ -261,7 +262,7 @@ contains
         namelist /sdof_shock/ ratios, damping
         ratios = values
         damping = dampings
-        write(output_unit, nml=sdof_shock)
+        write(echo_unit(), nml=sdof_shock)
     end subroutine echo_shock_ratios
 
 end module driver_sdof_shock

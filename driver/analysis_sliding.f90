@@ -22,6 +22,7 @@ module driver_sliding
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid
     use driver_tables, only: write_tables, delete_files, say_written, code_legend
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -177,10 +178,10 @@ contains
         end if
 
         ! --- echo the effective input
-        call write_pulse_group(output_unit)
-        write(output_unit, nml=block)
-        write(output_unit, nml=method)
-        if (with_history) write(output_unit, nml=history)
+        call write_pulse_group(echo_unit())
+        write(echo_unit(), nml=block)
+        write(echo_unit(), nml=method)
+        if (with_history) write(echo_unit(), nml=history)
 
         ! --- compute every case (nothing is written before all of them succeed)
         do i = 1, size(cases)

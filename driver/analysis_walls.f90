@@ -21,6 +21,7 @@ module driver_walls
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, given, name_index
     use driver_tables, only: write_tables, delete_files
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -195,9 +196,9 @@ contains
         if (len(errmsg) > 0) return
 
         ! --- echo the effective input
-        write(output_unit, nml=wall)
-        write(output_unit, nml=backfill)
-        write(output_unit, nml=seismic)
+        write(echo_unit(), nml=wall)
+        write(echo_unit(), nml=backfill)
+        write(echo_unit(), nml=seismic)
 
         ! --- compute (no output is written before both tables are computed)
         call compute(path, gb, c, res, errmsg)

@@ -50,6 +50,7 @@ module driver_winkler
     use driver_rocking_common, only: check_run_options, locate_run_message, map_kind, &
                                      map_template, progress_t, axes_names, map_axes_code, &
                                      map_grids, map_axes_header, map_table
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -1413,13 +1414,13 @@ contains
             if (s%use_records) then
                 call echo_records(s%recs, s%slammer_rounding)
             else
-                call write_pulse_group(output_unit)
+                call write_pulse_group(echo_unit())
             end if
         end if
         if (s%task /= 'master' .and. s%task /= 'inelastic' .and. s%task /= 'capacity') &
             k = s%k
-        write(output_unit, nml=winkler)
-        if (s%task == 'map') write(output_unit, nml=map)
+        write(echo_unit(), nml=winkler)
+        if (s%task == 'map') write(echo_unit(), nml=map)
     end subroutine echo
 
 end module driver_winkler

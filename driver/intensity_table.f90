@@ -14,6 +14,7 @@ module driver_intensity_table
     use driver_input, only: list_length, value_name, num
     use driver_tables, only: write_tables, say_written
     use driver_records, only: record_in_t, record_out_t, record_line, report, path_len
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -137,7 +138,7 @@ contains
             namelist /newmark/ intensity, sa_periods
             intensity = .true.
             sa_periods = itab%periods
-            write(output_unit, nml=newmark)
+            write(echo_unit(), nml=newmark)
         end subroutine echo
     end subroutine intensity_echo
 

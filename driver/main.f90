@@ -22,7 +22,9 @@ program seispulse_driver
     use driver_cylinder, only: run_cylinder, cylinder_groups
     use driver_winkler, only: run_winkler, winkler_groups
     use driver_empirical, only: run_empirical, empirical_groups
-    use driver_run_group, only: run_analysis, run_output, read_run, run_keys, write_run
+    use driver_run_group, only: run_analysis, run_output, read_run, run_keys, write_run, &
+                                run_verbose
+    use driver_echo, only: echo_unit, echo_start, echo_finish, echo_file_path
     implicit none
 
     interface
@@ -80,6 +82,7 @@ program seispulse_driver
     if (stat /= 0) call fail(errmsg)
     if (len(run_output()) == 0) call fail(located(path, groups(irun)) &
         //'output: missing (the prefix of the output files, e.g. ''out/case1'')')
+    call echo_start(run_output())
 
     select case (lower(run_analysis()))
     case ('pulse')
@@ -132,6 +135,7 @@ program seispulse_driver
                   //''': unknown analysis (allowed: '//join(analyses)//')')
     end select
     if (stat /= 0) call fail(errmsg)
+    call write_echo()
     call finish(EXIT_OK)
 
 contains
@@ -146,18 +150,32 @@ contains
                 call fail(located(path, groups(k))//'not a group of analysis ''' &
                           //lower(run_analysis())//''' (allowed: run, '//join(allowed)//')')
         end do
-        call write_run(output_unit)
+        call write_run(echo_unit())
     end subroutine start
 
     !> The error message, then exit: with `status` (EXIT_ROWS_FAILED: the tables are
-    !> written, some rows failed), else EXIT_INPUT_ERROR (nothing written).
-    subroutine fail(message, status)
+    !> written, some rows failed), else EXIT_INPUT_ERROR (nothing written; with verbose,
+    !> the echo so far on standard output).
+    recursive subroutine fail(message, status)
         character(len=*), intent(in) :: message
         integer, intent(in), optional :: status
+        character(len=:), allocatable :: msg
+        integer :: st
+        if (present(status)) call write_echo()
         write(error_unit, '(a)') 'seispulse: error: '//message
         if (present(status)) call finish(status)
+        if (run_verbose()) call echo_finish(path, groups, run_output(), .false., .true., st, msg)
         call finish(EXIT_INPUT_ERROR)
     end subroutine fail
+
+    !> The echo of the effective input: the file (and standard output with verbose).
+    recursive subroutine write_echo()
+        character(len=:), allocatable :: msg
+        integer :: st
+        call echo_finish(path, groups, run_output(), .true., run_verbose(), st, msg)
+        if (st /= 0) call fail(msg)
+        write(output_unit, '(a)') 'effective input written to '//echo_file_path(run_output())
+    end subroutine write_echo
 
     subroutine finish(status)
         integer, intent(in) :: status

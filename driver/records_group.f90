@@ -16,6 +16,7 @@ module driver_records
     use driver_namelist_scan, only: nml_group
     use driver_input, only: located, join, given, list_length, list_item, name_index, &
                             value_name, num
+    use driver_echo, only: echo_unit, echo_path
     implicit none
     private
 
@@ -322,7 +323,7 @@ contains
         integer :: i, flen
         flen = 1
         do i = 1, size(recs)
-            flen = max(flen, len(recs(i)%file))
+            flen = max(flen, len(echo_path(recs(i)%path)))
         end do
         call echo_records_n(recs, slammer_rounding, size(recs), flen)
     end subroutine echo_records
@@ -339,7 +340,7 @@ contains
         integer :: polarity(n), i
         namelist /records/ files, format, units, dt, scale, target_pga, pga_rounding, polarity
         do i = 1, n
-            files(i) = recs(i)%file
+            files(i) = echo_path(recs(i)%path)
             format(i) = record_format_name(recs(i)%fmt)
             units(i) = units_name(recs(i)%units)
             dt(i) = recs(i)%dt
@@ -348,7 +349,7 @@ contains
             polarity(i) = recs(i)%polarity
         end do
         pga_rounding = merge('slammer', 'exact  ', slammer_rounding)
-        write(output_unit, nml=records)
+        write(echo_unit(), nml=records)
     end subroutine echo_records_n
 
     ! ------------------------------------------------------------------------------

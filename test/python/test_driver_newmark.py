@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 from seispulse import newmark, records
+from driver_echo import echo_text, with_output
 
 HERE = Path(__file__).resolve().parent
 RECORDS = HERE.parent / "regression" / "records"
@@ -79,7 +80,9 @@ def test_example_input_runs(driver, source_root, tmp_path):
     assert proc.returncode == 0, proc.stderr
     assert "out/newmark_example_newmark.txt" in proc.stdout
     assert "out/newmark_example_newmark.csv" in proc.stdout
-    assert "&RECORDS" in proc.stdout.upper() and "&NEWMARK" in proc.stdout.upper()
+    echo = echo_text(tmp_path, proc.stdout)
+    assert "&records" in echo and "&newmark" in echo
+    assert "&" not in proc.stdout, "the echo goes to its file, not to stdout"
     header, names, data = read_table(tmp_path / "out" / "newmark_example_newmark.csv")
     assert header == HEADER
     assert names == ["quake_a"] * 4 + ["quake_b"] * 4
@@ -385,8 +388,7 @@ def test_echo_reads_back_to_the_same_table(driver, tmp_path):
     proc = newmark_run(driver, tmp_path, rg, "ky=0.05, 0.1, mode='asym', ky_up=0.2, "
                        "k_down=1.1", output="first")
     assert proc.returncode == 0, proc.stderr
-    echo = proc.stdout.split("newmark table written")[0]
-    echo = re.sub(r'OUTPUT="first\s*"', 'OUTPUT="second"', echo)
+    echo = with_output(echo_text(tmp_path, proc.stdout), "first", "second")
     (tmp_path / "echo.nml").write_text(echo)
     proc2 = subprocess.run([driver, "echo.nml"], cwd=tmp_path, capture_output=True,
                            text=True, timeout=120)
