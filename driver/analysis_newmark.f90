@@ -29,6 +29,7 @@ module driver_newmark
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, &
                             list_length, list_item, value_name, num, name_index, ROWS_FAILED
+    use driver_input, only: missing_group
     use driver_tables, only: write_tables, say_written
     use driver_slope, only: slope_keys, slope_defaults, read_slope, check_slope, echo_slope, &
                             slope_line
@@ -163,11 +164,11 @@ contains
         if (stat /= 0) return
         stat = 1
         if (find_group(groups, 'records') == 0) then
-            errmsg = path//records_missing
+            errmsg = missing_group(path, 'records')//records_missing
             return
         end if
         if (find_group(groups, 'newmark') == 0) then
-            errmsg = path//': &newmark: missing group (it gives the yield accelerations ky ' &
+            errmsg = missing_group(path, 'newmark')//' (it gives the yield accelerations ky ' &
                      //'or the friction mu of an incline)'
             return
         end if

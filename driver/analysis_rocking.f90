@@ -24,6 +24,7 @@ module driver_rocking
                          pi, in_open
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given
+    use driver_input, only: missing_group
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid, &
                                   warn_unused_template, template_text, not_one
@@ -181,7 +182,7 @@ contains
         call check_rocking(path, gr, task, errmsg)
         if (len(errmsg) > 0) return
         if (find_group(groups, 'block') == 0) then
-            errmsg = path//': &block: missing group (it gives the block: b and h, or alpha ' &
+            errmsg = missing_group(path, 'block')//' (it gives the block: b and h, or alpha ' &
                      //'or alpha_deg with r)'
             return
         end if
@@ -192,7 +193,7 @@ contains
                 return
             end if
             if (find_group(groups, 'map') == 0) then
-                errmsg = path//': &map: missing group (what = ''map'' needs the grids: ' &
+                errmsg = missing_group(path, 'map')//' (what = ''map'' needs the grids: ' &
                          //'freq_ratio or freq_range, amp_ratio or amp_range)'
                 return
             end if

@@ -26,6 +26,7 @@ module driver_sdof
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, given, list_item, &
                             name_index, num, ROWS_FAILED
+    use driver_input, only: missing_group
     use driver_tables, only: write_tables, delete_files, say_written
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
@@ -173,12 +174,12 @@ contains
         if (stat /= 0) return
         stat = 1
         if (find_group(groups, 'records') == 0) then
-            errmsg = path//records_missing
+            errmsg = missing_group(path, 'records')//records_missing
             return
         end if
         if (find_group(groups, 'sdof') == 0 .and. find_group(groups, 'sdof_history') == 0) &
             then
-            errmsg = path//': &sdof: missing group (it gives the spectrum periods: periods ' &
+            errmsg = missing_group(path, 'sdof')//' (it gives the spectrum periods: periods ' &
                      //'= a list, or period_range = min, max with period_count; and the ' &
                      //'damping ratios)'
             return

@@ -12,6 +12,7 @@ module driver_sdof_beta
                          BETA_HYSTERETIC, BETA_VISCOUS
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, name_index
+    use driver_input, only: missing_group
     use driver_tables, only: write_tables, say_written
     use driver_sdof_common, only: max_periods, max_dampings, check_list
     use driver_axis, only: axis_values
@@ -84,7 +85,7 @@ contains
         if (stat /= 0) return
         stat = 1
         if (find_group(groups, 'sdof_beta') == 0) then
-            errmsg = path//': &sdof_beta: missing group (it gives the frequency ratios ' &
+            errmsg = missing_group(path, 'sdof_beta')//' (it gives the frequency ratios ' &
                      //'theta/omega: ratios = a list, or ratio_range = min, max with ' &
                      //'ratio_count)'
             return

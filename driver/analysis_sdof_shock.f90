@@ -13,6 +13,7 @@ module driver_sdof_shock
                          pulse_peak_accel, pulse_kind_name, PULSE_RICKER, PULSE_MP
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, read_optional, given, value_name, num
+    use driver_input, only: missing_group
     use driver_tables, only: write_tables, say_written
     use driver_pulse_group, only: pulse_input_t, read_pulse_group, build_pulse, &
                                   write_pulse_group
@@ -95,7 +96,7 @@ contains
         if (stat /= 0) return
         stat = 1
         if (find_group(groups, 'sdof_shock') == 0) then
-            errmsg = path//': &sdof_shock: missing group (it gives the oscillators: ratios ' &
+            errmsg = missing_group(path, 'sdof_shock')//' (it gives the oscillators: ratios ' &
                      //'t_d/T or periods, as a list or a range, and the damping ratios)'
             return
         end if

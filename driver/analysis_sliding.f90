@@ -19,6 +19,7 @@ module driver_sliding
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, list_length, &
                             list_item
+    use driver_input, only: missing_group
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid
     use driver_tables, only: write_tables, delete_files, say_written, code_legend
@@ -164,7 +165,7 @@ contains
         if (stat /= 0) return
         stat = 1
         if (find_group(groups, 'block') == 0) then
-            errmsg = path//': &block: missing group (it gives the friction: mu, eta1, ' &
+            errmsg = missing_group(path, 'block')//' (it gives the friction: mu, eta1, ' &
                      //'mu_list or eta_list)'
             return
         end if

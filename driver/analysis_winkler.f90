@@ -39,6 +39,7 @@ module driver_winkler
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, list_item, &
                             name_index, ROWS_FAILED
+    use driver_input, only: missing_group
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid, &
                                   warn_unused_template, template_text
@@ -265,7 +266,7 @@ contains
 
         ! --- what to compute, which groups and keys go with it
         if (find_group(groups, 'winkler') == 0) then
-            errmsg = path//': &winkler: missing group (it gives the body and the soil: ' &
+            errmsg = missing_group(path, 'winkler')//' (it gives the body and the soil: ' &
                      //'footing, r (or b and alpha), h, mass, k ...)'
             return
         end if
@@ -370,7 +371,7 @@ contains
                 errmsg = located(path, s%gr)//'not with &pulse (a history runs under one ' &
                          //'pulse or under records: give one of the two groups)'
             else if (.not. (has_pulse .or. has_records)) then
-                errmsg = path//': &pulse: missing group (what = ''history'' needs the ' &
+                errmsg = missing_group(path, 'pulse')//' (what = ''history'' needs the ' &
                          //'excitation: &pulse, or &records with the record files)'
             end if
             s%use_records = has_records
@@ -381,7 +382,7 @@ contains
         else if (has_records) then
             errmsg = located(path, s%gr)//'only with what = ''history'''
         else if (s%task == 'map' .and. find_group(groups, 'map') == 0) then
-            errmsg = path//': &map: missing group (what = ''map'' needs the grids: ' &
+            errmsg = missing_group(path, 'map')//' (what = ''map'' needs the grids: ' &
                      //'freq_ratio or freq_range, amp_ratio or amp_range, or on axes = ' &
                      //'''dimensional'' freq_hz or freq_hz_range, pga or pga_range)'
         end if

@@ -393,7 +393,7 @@ contains
     !> LOCAL STAND-IN for driver_tables' table_path (design section 2), until that exists:
     !> <prefix>_<table>.<ext>, except that a `_`-word suffix of the base name of `prefix`
     !> equal to a `_`-word prefix of `table` is written once (the longest such overlap).
-    function table_path(prefix, table, ext) result(path)
+    pure function table_path(prefix, table, ext) result(path)
         character(len=*), intent(in) :: prefix, table, ext
         character(len=:), allocatable :: path, base
         integer :: k, m, best

@@ -10,7 +10,8 @@ program seispulse_driver
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     use, intrinsic :: iso_c_binding, only: c_int
     use driver_namelist_scan, only: nml_group, scan_file, lower
-    use driver_input, only: find_group, check_keys, read_group, located, join, ROWS_FAILED
+    use driver_input, only: find_group, check_keys, read_group, located, join, ROWS_FAILED, &
+                            set_run_line
     use driver_pulse, only: run_pulse, pulse_groups
     use driver_sliding, only: run_sliding, sliding_groups
     use driver_rocking, only: run_rocking, rocking_groups
@@ -61,7 +62,7 @@ program seispulse_driver
     path = trim(arg)
 
     call scan_file(path, groups, stat, errmsg)
-    if (stat /= 0) call fail(path//': '//errmsg)
+    if (stat /= 0) call fail(errmsg)
 
     ! every group must be known and appear once
     do i = 1, size(groups)
@@ -75,7 +76,8 @@ program seispulse_driver
     end do
 
     irun = find_group(groups, 'run')
-    if (irun == 0) call fail(path//': &run: missing group (it names the analysis and output)')
+    if (irun == 0) call fail(path//':1: &run: missing group (it names the analysis and output)')
+    call set_run_line(groups(irun)%line)
     call check_keys(path, groups(irun), run_keys, stat, errmsg)
     if (stat /= 0) call fail(errmsg)
     call read_group(path, groups(irun), read_run, stat, errmsg)
@@ -162,11 +164,42 @@ contains
         character(len=:), allocatable :: msg
         integer :: st
         if (present(status)) call write_echo()
-        write(error_unit, '(a)') 'seispulse: error: '//message
+        write(error_unit, '(a)') 'seispulse: error: '//with_line(message, present(status))
         if (present(status)) call finish(status)
         if (run_verbose()) call echo_finish(path, groups, run_output(), .false., .true., st, msg)
         call finish(EXIT_INPUT_ERROR)
     end subroutine fail
+
+    !> The message in the form "file:line: &group: ...": a message "file: &group: ..." gets
+    !> the line of that group (of &run if the group is missing); the summary of failed
+    !> rows (`rows`) the place of &records (else of the analysis' group, else &run).
+    function with_line(message, rows) result(text)
+        character(len=*), intent(in) :: message
+        logical, intent(in) :: rows
+        character(len=:), allocatable :: text, name
+        character(len=16) :: num
+        integer :: k, ig
+        text = message
+        if (.not. allocated(groups)) return
+        if (rows) then
+            ig = find_group(groups, 'records')
+            if (ig == 0) ig = find_group(groups, lower(run_analysis()))
+            if (ig == 0) ig = find_group(groups, 'run')
+            if (ig > 0) text = located(path, groups(ig))//message
+            return
+        end if
+        if (len(message) < len(path) + 3) return
+        if (message(1:len(path) + 3) /= path//': &') return
+        name = message(len(path) + 4:)
+        k = index(name, ':')
+        if (k == 0) return
+        name = name(1:k - 1)
+        ig = find_group(groups, name)
+        if (ig == 0) ig = find_group(groups, 'run')
+        if (ig == 0) return
+        write(num, '(i0)') groups(ig)%line
+        text = path//':'//trim(num)//message(len(path) + 1:)
+    end function with_line
 
     !> The echo of the effective input: the file (and standard output with verbose).
     recursive subroutine write_echo()

@@ -26,8 +26,9 @@ module driver_namelist_scan
 contains
 
     !> Read `path` and split it into groups and items. Comments (! to end of line,
-    !> outside quotes) are dropped. stat /= 0 with a message if the file cannot be
-    !> read or a group is not closed with '/'.
+    !> outside quotes) are dropped. stat /= 0 with a message ("file: ..." or
+    !> "file:line: &group: ...") if the file cannot be read or a group is not closed
+    !> with '/'.
     subroutine scan_file(path, groups, stat, errmsg)
         character(len=*), intent(in) :: path
         type(nml_group), allocatable, intent(out) :: groups(:)
@@ -40,11 +41,12 @@ contains
         if (ios /= 0) then
             allocate(groups(0))
             stat = 1
-            errmsg = 'cannot open the input file: '//trim(iomsg)
+            errmsg = path//': cannot open the input file: '//trim(iomsg)
             return
         end if
         call scan_unit(u, groups, stat, errmsg)
         close(u)
+        if (stat /= 0) errmsg = path//':'//errmsg
     end subroutine scan_file
 
     !> scan_file on a unit open for reading, from its current position to its end (lines
@@ -108,8 +110,11 @@ contains
         end do
         if (in_group) then
             stat = 1
-            write(iomsg, '(a, i0, a)') 'group starting on line ', start_line, &
-                ' is not closed with /'
+            ! "<line>: &<name>: ..." (the caller puts the file in front)
+            i = verify(body, ' ')
+            if (i == 0) i = len(body) + 1
+            write(iomsg, '(i0, a)') start_line, ': &'//lower(body(i:i - 1 + max(0, &
+                scan(body(i:)//' ', ' ') - 1)))//': not closed with / (the group starts here)'
             errmsg = trim(iomsg)
         end if
     end subroutine scan_unit

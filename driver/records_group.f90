@@ -41,9 +41,9 @@ module driver_records
     !> Most failed records named in a final message.
     integer, parameter :: max_named = 20
 
-    !> After the input file's name: the message when &records is missing.
-    character(len=*), parameter :: records_missing = ': &records: missing group (it lists ' &
-        //'the record files: files = ''a.AT2'', ...)'
+    !> After missing_group(path, 'records'): what the group is for.
+    character(len=*), parameter :: records_missing = ' (it lists the record files: ' &
+        //'files = ''a.AT2'', ...)'
 
     ! namelist variables (defaults are set in records_defaults)
     character(len=path_len) :: files(max_files)

@@ -285,7 +285,7 @@ def read(path, fmt="auto", units=None, dt=None):
     Raises
     ------
     InvalidInputError
-        A malformed file (the message starts with ``<path>, line <n>:``) or a bad
+        A malformed file (the message starts with ``<path>:<n>:``) or a bad
         argument.
     FileError
         The file cannot be opened or read.

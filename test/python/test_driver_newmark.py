@@ -236,9 +236,10 @@ def test_bad_record_fails_its_rows_only(driver, tmp_path):
     assert len(errors) == 2, proc.stderr
     first = errors[0]
     for word in ["mixed.nml:2:", "&records", "files(2) = 'records/bad.csv'",
-                 "records/bad.csv, line 4", "0.0.3"]:
+                 "records/bad.csv:4", "0.0.3"]:
         assert word in first, first
-    assert errors[1] == "seispulse: error: 2 of 6 rows failed (records: 2 'bad')"
+    assert errors[1] == ("seispulse: error: mixed.nml:2: &records: 2 of 6 rows failed "
+                         "(records: 2 'bad')")
     header, names, data = table_of(tmp_path, "mixed")
     assert names == ["quake_b", "quake_b", "bad", "bad", "quake_c", "quake_c"]
     np.testing.assert_array_equal(data[[0, 1, 4, 5]], ref)
@@ -246,7 +247,7 @@ def test_bad_record_fails_its_rows_only(driver, tmp_path):
     assert list(data[2:4, 2]) == [0.05, 0.1] and np.all(np.isinf(data[2:4, 3]))
     assert list(data[:, -1]) == [0, 0, 1, 1, 0, 0]
     txt = (tmp_path / "mixed_newmark.txt").read_text()
-    assert "FAILED" in txt and "records/bad.csv, line 4" in txt
+    assert "FAILED" in txt and "records/bad.csv:4" in txt
     progress = [ln for ln in proc.stderr.splitlines() if ln.startswith("newmark: record ")]
     assert [p.split(":")[1] for p in progress] == [" record 1/3", " record 2/3",
                                                    " record 3/3"]

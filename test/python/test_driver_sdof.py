@@ -322,9 +322,10 @@ def test_bad_record_fails_its_rows_only(driver, tmp_path):
     errors = [ln for ln in proc.stderr.splitlines() if ln.startswith("seispulse: error: ")]
     assert len(errors) == 2, proc.stderr
     for word in ["case.nml:2:", "&records", "files(2) = 'records/bad.csv'",
-                 "records/bad.csv, line 4", "0.0.3"]:
+                 "records/bad.csv:4", "0.0.3"]:
         assert word in errors[0], errors[0]
-    assert errors[1] == ("seispulse: error: 1 of 3 records failed (2 'bad'): their rows "
+    assert errors[1] == ("seispulse: error: case.nml:2: &records: 1 of 3 records failed "
+                         "(2 'bad'): their rows "
                          "hold NaN and status 1")
     progress = [ln for ln in proc.stderr.splitlines() if ln.startswith("sdof: record ")]
     assert [p.split(":")[1] for p in progress] == [" record 1/3", " record 2/3",
@@ -348,7 +349,7 @@ def test_bad_record_fails_its_rows_only(driver, tmp_path):
     np.testing.assert_array_equal(hist[~bad], ref_hist)
     for table in ("sdof", "sdof_envelope", "sdof_history"):
         txt = (tmp_path / f"mixed_{table}.txt").read_text()
-        assert "FAILED" in txt and "records/bad.csv, line 4" in txt
+        assert "FAILED" in txt and "records/bad.csv:4" in txt
 
 
 def test_every_record_failing_still_writes_the_tables(driver, tmp_path):
