@@ -12,8 +12,8 @@ module driver_records
     use seispulse, only: dp, SEISPULSE_SUCCESS, int_str, record_t, read_record, record_pga, &
                          pga_scale_factor, record_format_name, record_units_name, RECORD_AUTO, &
                          RECORD_COLUMN, UNITS_G, UNITS_M_S2, UNITS_CM_S2, finite_at_least, &
-                         finite_positive
-    use driver_namelist_scan, only: nml_group
+                         finite_positive, accel_unit_code
+    use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: located, join, given, list_length, list_item, name_index, &
                             value_name, num
     use driver_echo, only: echo_unit, echo_path
@@ -28,8 +28,6 @@ module driver_records
         'format', 'units', 'dt', 'scale', 'target_pga', 'pga_rounding', 'polarity']
     character(len=10), parameter :: format_names(5) = [character(len=10) :: 'auto', 'at2', &
         'slammer', 'column', 'time_accel']
-    character(len=6), parameter :: units_names(7) = [character(len=6) :: 'auto', 'g', &
-        'm/s2', 'cm/s2', 'm/s^2', 'cm/s^2', 'gal']
     character(len=7), parameter :: rounding_names(2) = [character(len=7) :: 'exact', 'slammer']
 
     !> Most record files.
@@ -117,6 +115,7 @@ contains
         character(len=:), allocatable :: where, item
         integer :: n, i, k, n_fmt, n_units, n_dt, n_scale, n_target, n_pol, code
         real(dp) :: x
+        character(len=256) :: msg
 
         where = located(path, gr)
         errmsg = ''
@@ -186,20 +185,17 @@ contains
                 if (n_units > 0) then
                     k = min(i, n_units)
                     item = value_name('units', k, n_units)
-                    select case (name_index(units(k), units_names))
-                    case (1)
+                    if (trim(lower(adjustl(units(k)))) == 'auto') then
                         r%units = 0
-                    case (2)
-                        r%units = UNITS_G
-                    case (3, 5)
-                        r%units = UNITS_M_S2
-                    case (4, 6, 7)
-                        r%units = UNITS_CM_S2
-                    case default
-                        errmsg = where//item//' = '''//trim(units(k))//''': unknown units ' &
-                                 //'(allowed: '//join(units_names)//')'
-                        return
-                    end select
+                    else
+                        ! the one vocabulary of acceleration units (seispulse_records)
+                        call accel_unit_code(units(k), r%units, code, msg)
+                        if (code /= SEISPULSE_SUCCESS) then
+                            errmsg = where//item//' = '//trim(msg)//'; or auto (the AT2 ' &
+                                     //'header''s units, else g)'
+                            return
+                        end if
+                    end if
                 end if
                 if (n_dt > 0) then
                     k = min(i, n_dt)

@@ -10,7 +10,7 @@ module test_records
                                  ground_motion, record_format_name, record_units_name, &
                                  RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, &
                                  RECORD_TIME_ACCEL, UNITS_G, UNITS_M_S2, UNITS_CM_S2, &
-                                 STANDARD_GRAVITY
+                                 STANDARD_GRAVITY, accel_unit_code, accel_unit_factor
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
     private
@@ -52,8 +52,43 @@ contains
                  new_unittest('pga_scale_factor: exact and SLAMMER rounding', test_scale), &
                  new_unittest('ground_motion: linear acceleration, exact polynomials', &
                               test_ground_linear), &
-                 new_unittest('ground_motion: errors', test_ground_errors)]
+                 new_unittest('ground_motion: errors', test_ground_errors), &
+                 new_unittest('acceleration unit names: codes, factors, errors', test_unit_names)]
     end subroutine collect_records
+
+    !> The one vocabulary of acceleration units: every name and case, the factor to g
+    !> (1, 1/g, 1/(100 g) for a g of 9.81), unknown names and a bad g refused.
+    subroutine test_unit_names(error)
+        type(test_error), allocatable, intent(out) :: error
+        character(len=8), parameter :: names(10) = [character(len=8) :: 'g', 'G', ' m/s2', &
+            'M/S2', 'm/s^2', 'cm/s2', 'CM/S^2', 'gal', 'Gal ', 'GAL']
+        integer, parameter :: codes(10) = [UNITS_G, UNITS_G, UNITS_M_S2, UNITS_M_S2, &
+            UNITS_M_S2, UNITS_CM_S2, UNITS_CM_S2, UNITS_CM_S2, UNITS_CM_S2, UNITS_CM_S2]
+        real(dp), parameter :: expect(3) = [1.0_dp, 1.0_dp / 9.81_dp, 1.0_dp / 981.0_dp]
+        character(len=256) :: msg
+        integer :: i, code, stat
+        real(dp) :: factor
+        do i = 1, size(names)
+            call accel_unit_code(names(i), code, stat)
+            call check(error, stat == SEISPULSE_SUCCESS .and. code == codes(i), trim(names(i)))
+            if (allocated(error)) return
+            call accel_unit_factor(names(i), 9.81_dp, factor, stat)
+            call check(error, stat == SEISPULSE_SUCCESS, trim(names(i)))
+            if (allocated(error)) return
+            call check(error, factor, expect(codes(i)), rtol=1.0e-15_dp)
+            if (allocated(error)) return
+        end do
+        msg = ''
+        call accel_unit_code('ft/s2', code, stat, msg)
+        call check(error, stat == SEISPULSE_INVALID_INPUT .and. code == 0 .and. trim(msg) == &
+                   "'ft/s2': unknown acceleration unit (allowed: g, m/s2, m/s^2, cm/s2, " &
+                   //"cm/s^2, gal)", trim(msg))
+        if (allocated(error)) return
+        msg = ''
+        call accel_unit_factor('m/s2', 0.0_dp, factor, stat, msg)
+        call check(error, stat == SEISPULSE_INVALID_INPUT .and. index(msg, 'g = ') == 1, &
+                   trim(msg))
+    end subroutine test_unit_names
 
     ! ---------------------------------------------------------------- helpers
 

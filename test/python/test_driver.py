@@ -87,7 +87,7 @@ BAD = [
     ("&run analysis='pulse', output='o' /\n&pulse kind = 'gabor' /\n",
      ["&pulse", "kind = 'gabor'", "allowed"]),
     ("&run analysis='pulse', output='o' /\n&pulse amp_unit = 'ft' /\n",
-     ["&pulse", "amp_unit", "allowed: m/s2, g"]),
+     ["&pulse", "amp_unit", "allowed: g, m/s2, m/s^2, cm/s2, cm/s^2, gal"]),
     ("&run analysis='pulse', output='o' /\n&pulse kind='triangular', peak_frac=2 /\n",
      ["&pulse", "peak_frac = 2.0", "[0, 1]"]),
     ("&run analysis='pulse', output='o' /\n&pulse kind='mp', gamma=0.5 /\n",
