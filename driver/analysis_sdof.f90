@@ -70,7 +70,7 @@ module driver_sdof
         type(record_in_t), allocatable :: recs(:)
         logical :: slammer_rounding = .false.
         logical :: spectra = .false.                !! spectrum periods given
-        real(dp), allocatable :: periods(:)         !! spectrum periods (s), ascending
+        real(dp), allocatable :: periods(:)         !! spectrum periods (s), as given
         character(len=:), allocatable :: grid       !! how they were given (for the header)
         real(dp), allocatable :: dampings(:)        !! damping ratios of the spectra
         real(dp) :: g = 9.80665_dp                  !! m/s2
@@ -280,7 +280,7 @@ contains
 
         ! --- spectrum periods
         call axis_values(gs, 'periods', 'period', periods, period_range, period_count, &
-                         spacing, .false., .true., max_periods, cfg%periods, cfg%grid, errmsg)
+                         spacing, .false., .false., max_periods, cfg%periods, cfg%grid, errmsg)
         if (len(errmsg) > 0) then
             errmsg = where//errmsg
             return

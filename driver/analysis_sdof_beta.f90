@@ -92,7 +92,7 @@ contains
         end if
         where = located(path, gb)
         call axis_values(gb, 'ratios', 'ratio', ratios, ratio_range, ratio_count, spacing, &
-                         .false., .true., max_periods, axis, grid, errmsg)
+                         .false., .false., max_periods, axis, grid, errmsg)
         if (len(errmsg) == 0 .and. size(axis) == 0) errmsg = 'ratios: missing (give ' &
             //'ratios = a list of theta/omega, or ratio_range = min, max with ratio_count)'
         if (len(errmsg) > 0) then

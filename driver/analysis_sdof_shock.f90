@@ -120,14 +120,14 @@ contains
                 return
             end if
             call axis_values(gk, 'periods', 'period', periods, period_range, period_count, &
-                             spacing, .false., .true., max_periods, axis, grid, errmsg)
+                             spacing, .false., .false., max_periods, axis, grid, errmsg)
         else
             if (given(gk, 'period_count')) then
                 errmsg = where//'period_count: only with period_range'
                 return
             end if
             call axis_values(gk, 'ratios', 'ratio', ratios, ratio_range, ratio_count, spacing, &
-                             .true., .true., max_periods, axis, grid, errmsg)
+                             .true., .false., max_periods, axis, grid, errmsg)
             if (len(errmsg) == 0 .and. size(axis) == 0) errmsg = 'ratios: missing (give ' &
                 //'ratios = a list of t_d/T, or ratio_range = min, max with ratio_count; ' &
                 //'or periods in s)'

@@ -368,7 +368,6 @@ BAD = [
     # (records group, sdof group, history group, words of the one-line message)
     (R, "periods=0.1, -0.2", None, ["case.nml:3:", "&sdof", "periods(2) = -0.2", ">= 0"]),
     (R, "periods=-1", None, ["&sdof", "periods = -1.0", ">= 0"]),
-    (R, "periods=0.1, 0.5, 0.3", None, ["&sdof", "periods(3) = 0.3", "ascending"]),
     (R, "periods=0.1, nan, 0.3", None, ["&sdof", "periods(2)", "missing or NaN"]),
     (R, "periods=0.1, damping=1.0", None, ["&sdof", "damping = 1.0", "[0, 1)"]),
     (R, "periods=0.1, damping=0.05, -0.01", None, ["&sdof", "damping(2) = -0.01", "[0, 1)"]),
