@@ -2,17 +2,18 @@
 !>
 !> Each analysis writes its groups as read and completed with `write(echo_unit(),
 !> nml=group)` (values of the keys as the analysis uses them). At the end of the run
-!> `echo_finish` reads that text back, keeps only the keys that are set (a key whose
-!> values are all NaN or blank is dropped unless the input gave it; trailing NaN or
-!> blank values of an array are dropped; strings are trimmed; reals are written as the
-!> shortest decimal that reads back to the same double) and writes a valid namelist that
-!> re-runs the same analysis: the file table_path(prefix, 'input', 'nml'), and standard
-!> output too with `verbose = .true.` in &run. File names in the echo (the record files
-!> of &records) are rewritten relative to the directory of the echo file.
+!> `echo_finish` reads that text back and keeps, for each group of the input, the keys
+!> the input gave (a key the analysis does not echo, such as a range it echoes as a
+!> list, as the input wrote it); trailing NaN or blank values of an array are dropped,
+!> strings trimmed, reals written as the shortest decimal that reads back to the same
+!> double. The result is a valid namelist that re-runs the same analysis: the file
+!> table_path(prefix, 'input', 'nml'), and standard output too with `verbose = .true.`
+!> in &run. File names in the echo (the record files of &records) are rewritten
+!> relative to the directory of the echo file.
 module driver_echo
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
-    use seispulse, only: dp
+    use seispulse, only: dp, int_str
     use driver_namelist_scan, only: nml_group, scan_unit, lower
     use driver_input, only: find_group, given, num
     implicit none
@@ -246,7 +247,7 @@ contains
             end if
             call clean_value(v, unset(i))
             if (star > 1) then
-                values(i)%s = int_text(reps)//'*'//v
+                values(i)%s = int_str(reps)//'*'//v
             else
                 values(i)%s = v
             end if
@@ -368,14 +369,6 @@ contains
         end do
         q = q//''''
     end function quoted
-
-    pure function int_text(i) result(s)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=16) :: buf
-        write(buf, '(i0)') i
-        s = trim(buf)
-    end function int_text
 
     pure logical function starts_with(s, head)
         character(len=*), intent(in) :: s, head
