@@ -37,6 +37,7 @@ module driver_cylinder
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, list_item, &
                             name_index, ROWS_FAILED
+    use driver_input, only: missing_group
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid, &
                                   warn_unused_template, template_text
@@ -49,6 +50,7 @@ module driver_cylinder
                                      locate_run_message, map_kind, map_template, progress_t, &
                                      axes_names, map_axes_code, map_grids, map_axes_header, &
                                      map_table
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -331,7 +333,7 @@ contains
         has_pulse = find_group(groups, 'pulse') > 0
         has_records = find_group(groups, 'records') > 0
         if (find_group(groups, 'body') == 0) then
-            errmsg = path//': &body: missing group (it gives the body: shape, r and h, ' &
+            errmsg = missing_group(path, 'body')//' (it gives the body: shape, r and h, ' &
                      //'or b and h for a block)'
             return
         end if
@@ -356,7 +358,7 @@ contains
                 errmsg = located(path, s%gr)//'not with &pulse (a history runs under one ' &
                          //'pulse or under records: give one of the two groups)'
             else if (.not. (has_pulse .or. has_records)) then
-                errmsg = path//': &pulse: missing group (what = ''history'' needs the ' &
+                errmsg = missing_group(path, 'pulse')//' (what = ''history'' needs the ' &
                          //'excitation: &pulse, or &records with the record files)'
             end if
             s%use_records = has_records
@@ -368,7 +370,7 @@ contains
             else if (has_records) then
                 errmsg = located(path, s%gr)//'only with what = ''history'' or ''roll'''
             else if (s%task == 'map' .and. find_group(groups, 'map') == 0) then
-                errmsg = path//': &map: missing group (what = ''map'' needs the grids: ' &
+                errmsg = missing_group(path, 'map')//' (what = ''map'' needs the grids: ' &
                          //'freq_ratio or freq_range, amp_ratio or amp_range, or on axes = ' &
                          //'''dimensional'' freq_hz or freq_hz_range, pga or pga_range)'
             end if
@@ -1332,7 +1334,7 @@ contains
                              //'upright at rest and nothing moves the base (give &pulse, ' &
                              //'&records, or an initial tilt or rate)'
                 else
-                    errmsg = path//': &pulse: missing group (what = ''roll'' needs an ' &
+                    errmsg = missing_group(path, 'pulse')//' (what = ''roll'' needs an ' &
                              //'excitation, &pulse or &records, or an initial state in &roll)'
                 end if
                 return
@@ -1502,13 +1504,13 @@ contains
             if (s%use_records) then
                 call echo_records(s%recs, s%slammer_rounding)
             else if (s%pin%group%line > 0) then
-                call write_pulse_group(output_unit)
+                call write_pulse_group(echo_unit())
             end if
         end if
-        write(output_unit, nml=body)
-        write(output_unit, nml=cylinder)
-        if (s%task == 'map') write(output_unit, nml=map)
-        if (s%task == 'roll') write(output_unit, nml=roll)
+        write(echo_unit(), nml=body)
+        write(echo_unit(), nml=cylinder)
+        if (s%task == 'map') write(echo_unit(), nml=map)
+        if (s%task == 'roll') write(echo_unit(), nml=roll)
     end subroutine echo
 
 end module driver_cylinder

@@ -26,10 +26,12 @@ module driver_empirical
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, given, list_length, value_name, num, &
                             ROWS_FAILED
+    use driver_input, only: missing_group
     use driver_tables, only: write_tables, say_written
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
                               record_line, failed_records
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -141,7 +143,7 @@ contains
         if (stat /= 0) return
         stat = 1
         if (find_group(groups, 'empirical') == 0) then
-            errmsg = path//': &empirical: missing group (it gives the yield accelerations ' &
+            errmsg = missing_group(path, 'empirical')//' (it gives the yield accelerations ' &
                      //'ky and the models'' inputs)'
             return
         end if
@@ -356,7 +358,7 @@ contains
             slammer = cfg%slammer
             damping = cfg%damping
             g = cfg%g
-            write(output_unit, nml=empirical)
+            write(echo_unit(), nml=empirical)
         end subroutine echo_n
 
     end subroutine echo_empirical

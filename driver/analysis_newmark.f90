@@ -29,6 +29,7 @@ module driver_newmark
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, &
                             list_length, list_item, value_name, num, name_index, ROWS_FAILED
+    use driver_input, only: missing_group
     use driver_tables, only: write_tables, say_written
     use driver_slope, only: slope_keys, slope_defaults, read_slope, check_slope, echo_slope, &
                             slope_line
@@ -38,6 +39,7 @@ module driver_newmark
     use driver_intensity_table, only: intensity_table_t, intensity_check, intensity_echo, &
                                       intensity_start, intensity_record, intensity_failures, &
                                       intensity_write
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -162,11 +164,11 @@ contains
         if (stat /= 0) return
         stat = 1
         if (find_group(groups, 'records') == 0) then
-            errmsg = path//records_missing
+            errmsg = missing_group(path, 'records')//records_missing
             return
         end if
         if (find_group(groups, 'newmark') == 0) then
-            errmsg = path//': &newmark: missing group (it gives the yield accelerations ky ' &
+            errmsg = missing_group(path, 'newmark')//' (it gives the yield accelerations ky ' &
                      //'or the friction mu of an incline)'
             return
         end if
@@ -563,7 +565,7 @@ contains
             mode = newmark_mode_name(cfg%mode)
             method = newmark_method_name(cfg%method)
             g = cfg%g
-            write(output_unit, nml=newmark)
+            write(echo_unit(), nml=newmark)
         end subroutine echo_ky
 
         subroutine echo_asym(n)
@@ -579,7 +581,7 @@ contains
             mode = newmark_mode_name(cfg%mode)
             method = newmark_method_name(cfg%method)
             g = cfg%g
-            write(output_unit, nml=newmark)
+            write(echo_unit(), nml=newmark)
         end subroutine echo_asym
 
         subroutine echo_mu(n)
@@ -596,7 +598,7 @@ contains
             mode = newmark_mode_name(cfg%mode)
             method = newmark_method_name(cfg%method)
             g = cfg%g
-            write(output_unit, nml=newmark)
+            write(echo_unit(), nml=newmark)
         end subroutine echo_mu
 
         subroutine echo_table(n)
@@ -610,7 +612,7 @@ contains
             method = kind_names(cfg%kind)
             rule = newmark_method_name(cfg%method)
             g = cfg%g
-            write(output_unit, nml=newmark)
+            write(echo_unit(), nml=newmark)
         end subroutine echo_table
 
         subroutine echo_flexible(n)
@@ -625,7 +627,7 @@ contains
             method = kind_names(cfg%kind)
             rule = newmark_method_name(cfg%method)
             g = cfg%g
-            write(output_unit, nml=newmark)
+            write(echo_unit(), nml=newmark)
         end subroutine echo_flexible
 
         subroutine echo_flexible_asym(n)
@@ -641,7 +643,7 @@ contains
             method = kind_names(cfg%kind)
             rule = newmark_method_name(cfg%method)
             g = cfg%g
-            write(output_unit, nml=newmark)
+            write(echo_unit(), nml=newmark)
         end subroutine echo_flexible_asym
 
     end subroutine echo_newmark

@@ -13,6 +13,7 @@ module driver_pulse
     use driver_pulse_group, only: pulse_input_t, read_pulse_group, build_pulse, &
                                   write_pulse_group
     use driver_tables, only: write_tables, say_written
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -129,8 +130,8 @@ contains
         if (.not. (dt > 0.0_dp)) dt = (t_end - t_start) / (npts - 1)
 
         ! --- echo the effective input
-        call write_pulse_group(output_unit)
-        write(output_unit, nml=time)
+        call write_pulse_group(echo_unit())
+        write(echo_unit(), nml=time)
 
         ! --- evaluate and write
         allocate(t(npts), table(npts, 5))

@@ -24,6 +24,7 @@ module driver_rocking
                          pi, in_open
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given
+    use driver_input, only: missing_group
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid, &
                                   warn_unused_template, template_text, not_one
@@ -31,6 +32,7 @@ module driver_rocking
     use driver_axis, only: axis_values
     use driver_rocking_common, only: check_run_options, restitution_and_model, &
                                      locate_run_message, map_kind, map_template, progress_t
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -180,7 +182,7 @@ contains
         call check_rocking(path, gr, task, errmsg)
         if (len(errmsg) > 0) return
         if (find_group(groups, 'block') == 0) then
-            errmsg = path//': &block: missing group (it gives the block: b and h, or alpha ' &
+            errmsg = missing_group(path, 'block')//' (it gives the block: b and h, or alpha ' &
                      //'or alpha_deg with r)'
             return
         end if
@@ -191,7 +193,7 @@ contains
                 return
             end if
             if (find_group(groups, 'map') == 0) then
-                errmsg = path//': &map: missing group (what = ''map'' needs the grids: ' &
+                errmsg = missing_group(path, 'map')//' (what = ''map'' needs the grids: ' &
                          //'freq_ratio or freq_range, amp_ratio or amp_range)'
                 return
             end if
@@ -706,8 +708,8 @@ contains
         character(len=:), allocatable :: task
         task = trim(lower(adjustl(what)))
         what = task
-        if (task /= 'map') call write_pulse_group(output_unit)
-        write(output_unit, nml=block)
+        if (task /= 'map') call write_pulse_group(echo_unit())
+        write(echo_unit(), nml=block)
         if (abs(kv) > 0.0_dp) then
             call echo_rocking_kv()
         else
@@ -715,7 +717,7 @@ contains
         end if
         if (task == 'map') then
             if (not_one(cycles)) then
-                write(output_unit, nml=map)
+                write(echo_unit(), nml=map)
             else
                 call echo_map_without_cycles()
             end if
@@ -725,13 +727,13 @@ contains
     !> Echo &rocking as before kv existed (kv = 0: the same output as without it).
     subroutine echo_rocking()
         namelist /rocking/ what, t_max, rtol, t_end, npts, dt
-        write(output_unit, nml=rocking)
+        write(echo_unit(), nml=rocking)
     end subroutine echo_rocking
 
     !> Echo &rocking with kv.
     subroutine echo_rocking_kv()
         namelist /rocking/ what, t_max, rtol, t_end, npts, dt, kv
-        write(output_unit, nml=rocking)
+        write(echo_unit(), nml=rocking)
     end subroutine echo_rocking_kv
 
     !> The echo of &map without `cycles` when it is 1 (the default), so that the echo of
@@ -740,7 +742,7 @@ contains
     subroutine echo_map_without_cycles()
         namelist /map/ kind, beta, full, peak_frac, t0_periods, freq_ratio, freq_range, &
             freq_count, amp_ratio, amp_range, amp_count
-        write(output_unit, nml=map)
+        write(echo_unit(), nml=map)
     end subroutine echo_map_without_cycles
 
 end module driver_rocking

@@ -26,12 +26,14 @@ module driver_sdof
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, given, list_item, &
                             name_index, num, ROWS_FAILED
+    use driver_input, only: missing_group
     use driver_tables, only: write_tables, delete_files, say_written
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
                               records_missing, record_line, failed_records
     use driver_sdof_common, only: max_periods, max_dampings, check_dampings
     use driver_axis, only: axis_values
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -68,7 +70,7 @@ module driver_sdof
         type(record_in_t), allocatable :: recs(:)
         logical :: slammer_rounding = .false.
         logical :: spectra = .false.                !! spectrum periods given
-        real(dp), allocatable :: periods(:)         !! spectrum periods (s), ascending
+        real(dp), allocatable :: periods(:)         !! spectrum periods (s), as given
         character(len=:), allocatable :: grid       !! how they were given (for the header)
         real(dp), allocatable :: dampings(:)        !! damping ratios of the spectra
         real(dp) :: g = 9.80665_dp                  !! m/s2
@@ -172,12 +174,12 @@ contains
         if (stat /= 0) return
         stat = 1
         if (find_group(groups, 'records') == 0) then
-            errmsg = path//records_missing
+            errmsg = missing_group(path, 'records')//records_missing
             return
         end if
         if (find_group(groups, 'sdof') == 0 .and. find_group(groups, 'sdof_history') == 0) &
             then
-            errmsg = path//': &sdof: missing group (it gives the spectrum periods: periods ' &
+            errmsg = missing_group(path, 'sdof')//' (it gives the spectrum periods: periods ' &
                      //'= a list, or period_range = min, max with period_count; and the ' &
                      //'damping ratios)'
             return
@@ -278,7 +280,7 @@ contains
 
         ! --- spectrum periods
         call axis_values(gs, 'periods', 'period', periods, period_range, period_count, &
-                         spacing, .false., .true., max_periods, cfg%periods, cfg%grid, errmsg)
+                         spacing, .false., .false., max_periods, cfg%periods, cfg%grid, errmsg)
         if (len(errmsg) > 0) then
             errmsg = where//errmsg
             return
@@ -401,7 +403,7 @@ contains
             plateau_below = cfg%plateau_below
             shape = cfg%shape
             if (cfg%envelope) then
-                write(output_unit, nml=sdof)
+                write(echo_unit(), nml=sdof)
             else
                 call echo_no_envelope()
             end if
@@ -420,7 +422,7 @@ contains
             threads = cfg%threads
             envelope = .false.
             shape = cfg%shape
-            write(output_unit, nml=sdof)
+            write(echo_unit(), nml=sdof)
         end subroutine echo_no_envelope
 
         subroutine echo_plain(nd)
@@ -429,7 +431,7 @@ contains
             namelist /sdof/ damping, g
             damping = cfg%dampings
             g = cfg%g
-            write(output_unit, nml=sdof)
+            write(echo_unit(), nml=sdof)
         end subroutine echo_plain
 
         subroutine echo_history(np, nd)
@@ -438,7 +440,7 @@ contains
             namelist /sdof_history/ periods, damping
             periods = cfg%h_periods
             damping = cfg%h_dampings
-            write(output_unit, nml=sdof_history)
+            write(echo_unit(), nml=sdof_history)
         end subroutine echo_history
 
     end subroutine echo_sdof

@@ -12,9 +12,11 @@ module driver_sdof_beta
                          BETA_HYSTERETIC, BETA_VISCOUS
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, name_index
+    use driver_input, only: missing_group
     use driver_tables, only: write_tables, say_written
     use driver_sdof_common, only: max_periods, max_dampings, check_list
     use driver_axis, only: axis_values
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -83,14 +85,14 @@ contains
         if (stat /= 0) return
         stat = 1
         if (find_group(groups, 'sdof_beta') == 0) then
-            errmsg = path//': &sdof_beta: missing group (it gives the frequency ratios ' &
+            errmsg = missing_group(path, 'sdof_beta')//' (it gives the frequency ratios ' &
                      //'theta/omega: ratios = a list, or ratio_range = min, max with ' &
                      //'ratio_count)'
             return
         end if
         where = located(path, gb)
         call axis_values(gb, 'ratios', 'ratio', ratios, ratio_range, ratio_count, spacing, &
-                         .false., .true., max_periods, axis, grid, errmsg)
+                         .false., .false., max_periods, axis, grid, errmsg)
         if (len(errmsg) == 0 .and. size(axis) == 0) errmsg = 'ratios: missing (give ' &
             //'ratios = a list of theta/omega, or ratio_range = min, max with ratio_count)'
         if (len(errmsg) > 0) then
@@ -175,7 +177,7 @@ contains
         ratios = values
         gamma = gammas
         model = model_name
-        write(output_unit, nml=sdof_beta)
+        write(echo_unit(), nml=sdof_beta)
     end subroutine echo_beta
 
 end module driver_sdof_beta

@@ -13,11 +13,13 @@ module driver_sdof_shock
                          pulse_peak_accel, pulse_kind_name, PULSE_RICKER, PULSE_MP
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, read_optional, given, value_name, num
+    use driver_input, only: missing_group
     use driver_tables, only: write_tables, say_written
     use driver_pulse_group, only: pulse_input_t, read_pulse_group, build_pulse, &
                                   write_pulse_group
     use driver_sdof_common, only: max_periods, max_dampings, check_dampings
     use driver_axis, only: axis_values
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -94,7 +96,7 @@ contains
         if (stat /= 0) return
         stat = 1
         if (find_group(groups, 'sdof_shock') == 0) then
-            errmsg = path//': &sdof_shock: missing group (it gives the oscillators: ratios ' &
+            errmsg = missing_group(path, 'sdof_shock')//' (it gives the oscillators: ratios ' &
                      //'t_d/T or periods, as a list or a range, and the damping ratios)'
             return
         end if
@@ -118,14 +120,14 @@ contains
                 return
             end if
             call axis_values(gk, 'periods', 'period', periods, period_range, period_count, &
-                             spacing, .false., .true., max_periods, axis, grid, errmsg)
+                             spacing, .false., .false., max_periods, axis, grid, errmsg)
         else
             if (given(gk, 'period_count')) then
                 errmsg = where//'period_count: only with period_range'
                 return
             end if
             call axis_values(gk, 'ratios', 'ratio', ratios, ratio_range, ratio_count, spacing, &
-                             .true., .true., max_periods, axis, grid, errmsg)
+                             .true., .false., max_periods, axis, grid, errmsg)
             if (len(errmsg) == 0 .and. size(axis) == 0) errmsg = 'ratios: missing (give ' &
                 //'ratios = a list of t_d/T, or ratio_range = min, max with ratio_count; ' &
                 //'or periods in s)'
@@ -164,7 +166,7 @@ contains
         end if
 
         ! --- echo the effective input
-        call write_pulse_group(output_unit)
+        call write_pulse_group(echo_unit())
         call echo_shock(by_period, axis, dampings)
 
         ! --- compute
@@ -252,7 +254,7 @@ contains
         namelist /sdof_shock/ periods, damping
         periods = values
         damping = dampings
-        write(output_unit, nml=sdof_shock)
+        write(echo_unit(), nml=sdof_shock)
     end subroutine echo_shock_periods
 
     subroutine echo_shock_ratios(values, dampings)
@@ -261,7 +263,7 @@ contains
         namelist /sdof_shock/ ratios, damping
         ratios = values
         damping = dampings
-        write(output_unit, nml=sdof_shock)
+        write(echo_unit(), nml=sdof_shock)
     end subroutine echo_shock_ratios
 
 end module driver_sdof_shock

@@ -19,9 +19,11 @@ module driver_sliding
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, list_length, &
                             list_item
+    use driver_input, only: missing_group
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid
     use driver_tables, only: write_tables, delete_files, say_written, code_legend
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -163,7 +165,7 @@ contains
         if (stat /= 0) return
         stat = 1
         if (find_group(groups, 'block') == 0) then
-            errmsg = path//': &block: missing group (it gives the friction: mu, eta1, ' &
+            errmsg = missing_group(path, 'block')//' (it gives the friction: mu, eta1, ' &
                      //'mu_list or eta_list)'
             return
         end if
@@ -177,10 +179,10 @@ contains
         end if
 
         ! --- echo the effective input
-        call write_pulse_group(output_unit)
-        write(output_unit, nml=block)
-        write(output_unit, nml=method)
-        if (with_history) write(output_unit, nml=history)
+        call write_pulse_group(echo_unit())
+        write(echo_unit(), nml=block)
+        write(echo_unit(), nml=method)
+        if (with_history) write(echo_unit(), nml=history)
 
         ! --- compute every case (nothing is written before all of them succeed)
         do i = 1, size(cases)

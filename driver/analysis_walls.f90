@@ -20,7 +20,9 @@ module driver_walls
                          wall_pressure_profile, wall_row_label, WALL_ROWS, WALL_PROFILE_COLUMNS
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, given, name_index
+    use driver_input, only: missing_group, located_key
     use driver_tables, only: write_tables, delete_files
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -172,15 +174,15 @@ contains
         if (stat /= 0) return
         stat = 1
         if (find_group(groups, 'wall') == 0) then
-            errmsg = path//': &wall: missing group (it gives the wall height, m)'
+            errmsg = missing_group(path, 'wall')//' (it gives the wall height, m)'
             return
         end if
         if (find_group(groups, 'backfill') == 0) then
-            errmsg = path//': &backfill: missing group (it gives gamma, kN/m3, and phi_deg)'
+            errmsg = missing_group(path, 'backfill')//' (it gives gamma, kN/m3, and phi_deg)'
             return
         end if
         if (find_group(groups, 'seismic') == 0) then
-            errmsg = path//': &seismic: missing group (code = ''EC8'' with agr and ground, ' &
+            errmsg = missing_group(path, 'seismic')//' (code = ''EC8'' with agr and ground, ' &
                      //'or code = ''direct'' with kh)'
             return
         end if
@@ -195,12 +197,12 @@ contains
         if (len(errmsg) > 0) return
 
         ! --- echo the effective input
-        write(output_unit, nml=wall)
-        write(output_unit, nml=backfill)
-        write(output_unit, nml=seismic)
+        write(echo_unit(), nml=wall)
+        write(echo_unit(), nml=backfill)
+        write(echo_unit(), nml=seismic)
 
         ! --- compute (no output is written before both tables are computed)
-        call compute(path, gb, c, res, errmsg)
+        call compute(path, [gb, gw, gs], c, res, errmsg)
         if (len(errmsg) > 0) return
 
         ! --- write
@@ -497,9 +499,9 @@ contains
     ! ------------------------------------------------------------------------------
 
     !> The thrusts of every method and the pressure profile. errmsg is empty on success.
-    subroutine compute(path, gb, c, res, errmsg)
+    subroutine compute(path, gbws, c, res, errmsg)
         character(len=*), intent(in) :: path
-        type(nml_group), intent(in) :: gb
+        type(nml_group), intent(in) :: gbws(3)            !! &backfill, &wall, &seismic
         type(wall_case_t), intent(in) :: c
         type(result_t), intent(out) :: res
         character(len=:), allocatable, intent(out) :: errmsg
@@ -510,9 +512,10 @@ contains
         msg = ''
         call wall_comparison(c, res%thrust, res%z, res%moment, res%kv_used, st, msg)
         if (st /= SEISPULSE_SUCCESS) then
-            errmsg = path//': '//trim(msg)
-            ! a resonance comes from &backfill frequency; a missing active wedge from beta
-            if (index(msg, 'omega_ratio') == 1) errmsg = located(path, gb)//'frequency = ' &
+            ! the group of the key the message starts with (a missing active wedge:
+            ! beta_deg of &backfill); a resonance comes from &backfill frequency
+            errmsg = located_key(path, gbws, trim(msg))
+            if (index(msg, 'omega_ratio') == 1) errmsg = located(path, gbws(1))//'frequency = ' &
                 //real_str(frequency)//' Hz: '//trim(msg)
             return
         end if
@@ -520,7 +523,7 @@ contains
         res%depth = height*[(real(i, dp), i = 0, npoints - 1)]/real(npoints - 1, dp)
         call wall_pressure_profile(c, res%depth, res%p, st, msg)
         if (st /= SEISPULSE_SUCCESS) then
-            errmsg = path//': '//trim(msg)
+            errmsg = located_key(path, gbws, trim(msg))
             return
         end if
     end subroutine compute

@@ -39,6 +39,7 @@ module driver_winkler
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, list_item, &
                             name_index, ROWS_FAILED
+    use driver_input, only: missing_group
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid, &
                                   warn_unused_template, template_text
@@ -50,6 +51,7 @@ module driver_winkler
     use driver_rocking_common, only: check_run_options, locate_run_message, map_kind, &
                                      map_template, progress_t, axes_names, map_axes_code, &
                                      map_grids, map_axes_header, map_table
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -264,7 +266,7 @@ contains
 
         ! --- what to compute, which groups and keys go with it
         if (find_group(groups, 'winkler') == 0) then
-            errmsg = path//': &winkler: missing group (it gives the body and the soil: ' &
+            errmsg = missing_group(path, 'winkler')//' (it gives the body and the soil: ' &
                      //'footing, r (or b and alpha), h, mass, k ...)'
             return
         end if
@@ -369,7 +371,7 @@ contains
                 errmsg = located(path, s%gr)//'not with &pulse (a history runs under one ' &
                          //'pulse or under records: give one of the two groups)'
             else if (.not. (has_pulse .or. has_records)) then
-                errmsg = path//': &pulse: missing group (what = ''history'' needs the ' &
+                errmsg = missing_group(path, 'pulse')//' (what = ''history'' needs the ' &
                          //'excitation: &pulse, or &records with the record files)'
             end if
             s%use_records = has_records
@@ -380,7 +382,7 @@ contains
         else if (has_records) then
             errmsg = located(path, s%gr)//'only with what = ''history'''
         else if (s%task == 'map' .and. find_group(groups, 'map') == 0) then
-            errmsg = path//': &map: missing group (what = ''map'' needs the grids: ' &
+            errmsg = missing_group(path, 'map')//' (what = ''map'' needs the grids: ' &
                      //'freq_ratio or freq_range, amp_ratio or amp_range, or on axes = ' &
                      //'''dimensional'' freq_hz or freq_hz_range, pga or pga_range)'
         end if
@@ -1413,13 +1415,13 @@ contains
             if (s%use_records) then
                 call echo_records(s%recs, s%slammer_rounding)
             else
-                call write_pulse_group(output_unit)
+                call write_pulse_group(echo_unit())
             end if
         end if
         if (s%task /= 'master' .and. s%task /= 'inelastic' .and. s%task /= 'capacity') &
             k = s%k
-        write(output_unit, nml=winkler)
-        if (s%task == 'map') write(output_unit, nml=map)
+        write(echo_unit(), nml=winkler)
+        if (s%task == 'map') write(echo_unit(), nml=map)
     end subroutine echo
 
 end module driver_winkler

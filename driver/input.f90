@@ -10,7 +10,7 @@ module driver_input
 
     public :: group_reader, find_group, check_keys, read_group, located, join
     public :: read_optional, given, list_length, list_item, value_name, name_index, num
-    public :: ROWS_FAILED
+    public :: ROWS_FAILED, set_run_line, missing_group, located_key
 
     !> stat of an analysis that wrote its tables but failed some rows (a record that could
     !> not be read or analysed): the driver exits with status 1.
@@ -27,7 +27,24 @@ module driver_input
         end subroutine group_reader
     end interface
 
+    !> Line of &run in the input file: a missing group is reported at it (the analysis
+    !> that &run chose needs the group).
+    integer :: run_line = 0
+
 contains
+
+    !> Remember the line of &run (for missing_group).
+    subroutine set_run_line(line)
+        integer, intent(in) :: line
+        run_line = line
+    end subroutine set_run_line
+
+    !> "file:line: &name: missing group", the line that of &run.
+    function missing_group(path, name) result(text)
+        character(len=*), intent(in) :: path, name
+        character(len=:), allocatable :: text
+        text = path//':'//int_str(run_line)//': &'//name//': missing group'
+    end function missing_group
 
     !> Index of group `name` in `groups`, 0 if absent.
     pure integer function find_group(groups, name)
@@ -256,6 +273,28 @@ contains
         write(num, '(i0)') group%line
         prefix = path//':'//trim(num)//': &'//group%name//': '
     end function located
+
+    !> "file:line: &group: " + msg for a message of the library that starts with a key
+    !> name ("beta_deg = 30.0: ..."): the group of `candidates` that gave that key, else
+    !> the first of them.
+    function located_key(path, candidates, msg) result(text)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: candidates(:)
+        character(len=*), intent(in) :: msg
+        character(len=:), allocatable :: text
+        integer :: i, k
+        k = verify(msg, 'abcdefghijklmnopqrstuvwxyz0123456789_') - 1
+        if (k < 0) k = len(msg)
+        do i = 1, size(candidates)
+            if (k > 0) then
+                if (given(candidates(i), msg(1:k))) then
+                    text = located(path, candidates(i))//msg
+                    return
+                end if
+            end if
+        end do
+        text = located(path, candidates(1))//msg
+    end function located_key
 
     !> "a, b, c" from a list of names.
     pure function join(names) result(list)

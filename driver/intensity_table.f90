@@ -9,11 +9,12 @@
 module driver_intensity_table
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
     use, intrinsic :: iso_fortran_env, only: output_unit
-    use seispulse, only: dp, SEISPULSE_SUCCESS, intensity_t, record_intensity, &
+    use seispulse, only: dp, int_str, SEISPULSE_SUCCESS, intensity_t, record_intensity, &
                          spectral_acceleration, sdof_validate
-    use driver_input, only: list_length, value_name, num
+    use driver_input, only: list_length, value_name, num, list_item
     use driver_tables, only: write_tables, say_written
     use driver_records, only: record_in_t, record_out_t, record_line, report, path_len
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -44,7 +45,7 @@ contains
         type(intensity_table_t), intent(out) :: itab
         character(len=:), allocatable, intent(out) :: errmsg
         character(len=1024) :: msg
-        integer :: n, i, st
+        integer :: n, i, j, st
         errmsg = ''
         itab%on = on
         allocate(itab%periods(0))
@@ -67,6 +68,15 @@ contains
                 errmsg = where//trim(msg)
                 return
             end if
+            ! any order; a period twice would give two columns of one name
+            do j = 1, i - 1
+                if (.not. abs(sa_periods(i) - sa_periods(j)) > 0.0_dp) then
+                    errmsg = where//list_item('sa_periods', i)//' = '//num(sa_periods(i)) &
+                             //': given twice (sa_periods('//int_str(j)//'); the table has ' &
+                             //'one column per period)'
+                    return
+                end if
+            end do
         end do
         itab%periods = sa_periods(1:n)
     end subroutine intensity_check
@@ -137,7 +147,7 @@ contains
             namelist /newmark/ intensity, sa_periods
             intensity = .true.
             sa_periods = itab%periods
-            write(output_unit, nml=newmark)
+            write(echo_unit(), nml=newmark)
         end subroutine echo
     end subroutine intensity_echo
 

@@ -10,7 +10,8 @@ program seispulse_driver
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     use, intrinsic :: iso_c_binding, only: c_int
     use driver_namelist_scan, only: nml_group, scan_file, lower
-    use driver_input, only: find_group, check_keys, read_group, located, join, ROWS_FAILED
+    use driver_input, only: find_group, check_keys, read_group, located, join, ROWS_FAILED, &
+                            set_run_line
     use driver_pulse, only: run_pulse, pulse_groups
     use driver_sliding, only: run_sliding, sliding_groups
     use driver_rocking, only: run_rocking, rocking_groups
@@ -22,7 +23,9 @@ program seispulse_driver
     use driver_cylinder, only: run_cylinder, cylinder_groups
     use driver_winkler, only: run_winkler, winkler_groups
     use driver_empirical, only: run_empirical, empirical_groups
-    use driver_run_group, only: run_analysis, run_output, read_run, run_keys, write_run
+    use driver_run_group, only: run_analysis, run_output, read_run, run_keys, write_run, &
+                                run_verbose
+    use driver_echo, only: echo_unit, echo_start, echo_finish, echo_file_path
     implicit none
 
     interface
@@ -59,7 +62,7 @@ program seispulse_driver
     path = trim(arg)
 
     call scan_file(path, groups, stat, errmsg)
-    if (stat /= 0) call fail(path//': '//errmsg)
+    if (stat /= 0) call fail(errmsg)
 
     ! every group must be known and appear once
     do i = 1, size(groups)
@@ -73,13 +76,15 @@ program seispulse_driver
     end do
 
     irun = find_group(groups, 'run')
-    if (irun == 0) call fail(path//': &run: missing group (it names the analysis and output)')
+    if (irun == 0) call fail(path//':1: &run: missing group (it names the analysis and output)')
+    call set_run_line(groups(irun)%line)
     call check_keys(path, groups(irun), run_keys, stat, errmsg)
     if (stat /= 0) call fail(errmsg)
     call read_group(path, groups(irun), read_run, stat, errmsg)
     if (stat /= 0) call fail(errmsg)
     if (len(run_output()) == 0) call fail(located(path, groups(irun)) &
         //'output: missing (the prefix of the output files, e.g. ''out/case1'')')
+    call echo_start(run_output())
 
     select case (lower(run_analysis()))
     case ('pulse')
@@ -132,6 +137,7 @@ program seispulse_driver
                   //''': unknown analysis (allowed: '//join(analyses)//')')
     end select
     if (stat /= 0) call fail(errmsg)
+    call write_echo()
     call finish(EXIT_OK)
 
 contains
@@ -146,18 +152,63 @@ contains
                 call fail(located(path, groups(k))//'not a group of analysis ''' &
                           //lower(run_analysis())//''' (allowed: run, '//join(allowed)//')')
         end do
-        call write_run(output_unit)
+        call write_run(echo_unit())
     end subroutine start
 
     !> The error message, then exit: with `status` (EXIT_ROWS_FAILED: the tables are
-    !> written, some rows failed), else EXIT_INPUT_ERROR (nothing written).
-    subroutine fail(message, status)
+    !> written, some rows failed), else EXIT_INPUT_ERROR (nothing written; with verbose,
+    !> the echo so far on standard output).
+    recursive subroutine fail(message, status)
         character(len=*), intent(in) :: message
         integer, intent(in), optional :: status
-        write(error_unit, '(a)') 'seispulse: error: '//message
+        character(len=:), allocatable :: msg
+        integer :: st
+        if (present(status)) call write_echo()
+        write(error_unit, '(a)') 'seispulse: error: '//with_line(message, present(status))
         if (present(status)) call finish(status)
+        if (run_verbose()) call echo_finish(path, groups, run_output(), .false., .true., st, msg)
         call finish(EXIT_INPUT_ERROR)
     end subroutine fail
+
+    !> The message in the form "file:line: &group: ...": a message "file: &group: ..." gets
+    !> the line of that group (of &run if the group is missing); the summary of failed
+    !> rows (`rows`) the place of &records (else of the analysis' group, else &run).
+    function with_line(message, rows) result(text)
+        character(len=*), intent(in) :: message
+        logical, intent(in) :: rows
+        character(len=:), allocatable :: text, name
+        character(len=16) :: num
+        integer :: k, ig
+        text = message
+        if (.not. allocated(groups)) return
+        if (rows) then
+            ig = find_group(groups, 'records')
+            if (ig == 0) ig = find_group(groups, lower(run_analysis()))
+            if (ig == 0) ig = find_group(groups, 'run')
+            if (ig > 0) text = located(path, groups(ig))//message
+            return
+        end if
+        if (len(message) < len(path) + 3) return
+        if (message(1:len(path) + 3) /= path//': &') return
+        name = message(len(path) + 4:)
+        k = index(name, ':')
+        if (k == 0) return
+        name = name(1:k - 1)
+        ig = find_group(groups, name)
+        if (ig == 0) ig = find_group(groups, 'run')
+        if (ig == 0) return
+        write(num, '(i0)') groups(ig)%line
+        text = path//':'//trim(num)//message(len(path) + 1:)
+    end function with_line
+
+    !> The echo of the effective input: the file (and standard output with verbose).
+    recursive subroutine write_echo()
+        character(len=:), allocatable :: msg
+        integer :: st
+        call echo_finish(path, groups, run_output(), .true., run_verbose(), st, msg)
+        if (st /= 0) call fail(msg)
+        write(output_unit, '(a)') 'effective input written to '//echo_file_path(run_output())
+    end subroutine write_echo
 
     subroutine finish(status)
         integer, intent(in) :: status

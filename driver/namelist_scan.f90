@@ -8,9 +8,7 @@ module driver_namelist_scan
     implicit none
     private
 
-    public :: nml_item, nml_group, scan_file, lower
-
-    integer, parameter :: maxlen = 4096
+    public :: nml_item, nml_group, scan_file, scan_unit, lower
 
     !> One "key = value" item of a group, as written.
     type :: nml_item
@@ -28,28 +26,45 @@ module driver_namelist_scan
 contains
 
     !> Read `path` and split it into groups and items. Comments (! to end of line,
-    !> outside quotes) are dropped. stat /= 0 with a message if the file cannot be
-    !> read or a group is not closed with '/'.
+    !> outside quotes) are dropped. stat /= 0 with a message ("file: ..." or
+    !> "file:line: &group: ...") if the file cannot be read or a group is not closed
+    !> with '/'.
     subroutine scan_file(path, groups, stat, errmsg)
         character(len=*), intent(in) :: path
         type(nml_group), allocatable, intent(out) :: groups(:)
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
-        character(len=maxlen) :: line
+        character(len=512) :: iomsg
+        integer :: u, ios
+
+        open(newunit=u, file=path, status='old', action='read', iostat=ios, iomsg=iomsg)
+        if (ios /= 0) then
+            allocate(groups(0))
+            stat = 1
+            errmsg = path//': cannot open the input file: '//trim(iomsg)
+            return
+        end if
+        call scan_unit(u, groups, stat, errmsg)
+        close(u)
+        if (stat /= 0) errmsg = path//':'//errmsg
+    end subroutine scan_file
+
+    !> scan_file on a unit open for reading, from its current position to its end (lines
+    !> of any length).
+    subroutine scan_unit(u, groups, stat, errmsg)
+        integer, intent(in) :: u
+        type(nml_group), allocatable, intent(out) :: groups(:)
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=:), allocatable :: line
         character(len=:), allocatable :: body
         character(len=512) :: iomsg
-        integer :: u, ios, lineno, i, start_line
+        integer :: ios, lineno, i, start_line
         logical :: in_group
         character :: quote
 
         allocate(groups(0))
         errmsg = ''
-        open(newunit=u, file=path, status='old', action='read', iostat=ios, iomsg=iomsg)
-        if (ios /= 0) then
-            stat = 1
-            errmsg = 'cannot open the input file: '//trim(iomsg)
-            return
-        end if
         stat = 0
         in_group = .false.
         quote = ' '
@@ -57,7 +72,7 @@ contains
         body = ''
         start_line = 0
         do
-            read(u, '(a)', iostat=ios) line
+            call read_line(u, line, ios)
             if (ios /= 0) exit
             lineno = lineno + 1
             i = 0
@@ -93,14 +108,34 @@ contains
             end do
             if (in_group) body = body//' '
         end do
-        close(u)
         if (in_group) then
             stat = 1
-            write(iomsg, '(a, i0, a)') 'group starting on line ', start_line, &
-                ' is not closed with /'
+            ! "<line>: &<name>: ..." (the caller puts the file in front)
+            i = verify(body, ' ')
+            if (i == 0) i = len(body) + 1
+            write(iomsg, '(i0, a)') start_line, ': &'//lower(body(i:i - 1 + max(0, &
+                scan(body(i:)//' ', ' ') - 1)))//': not closed with / (the group starts here)'
             errmsg = trim(iomsg)
         end if
-    end subroutine scan_file
+    end subroutine scan_unit
+
+    !> One line of any length (non-advancing reads of 512-character chunks); ios /= 0 at
+    !> the end of the file.
+    subroutine read_line(u, line, ios)
+        integer, intent(in) :: u
+        character(len=:), allocatable, intent(out) :: line
+        integer, intent(out) :: ios
+        character(len=512) :: chunk
+        integer :: got
+        line = ''
+        do
+            read(u, '(a)', advance='no', iostat=ios, size=got) chunk
+            line = line//chunk(1:got)
+            if (ios /= 0) exit
+        end do
+        ! a last line without a newline still counts
+        if (is_iostat_eor(ios) .or. (is_iostat_end(ios) .and. len(line) > 0)) ios = 0
+    end subroutine read_line
 
     !> Split "name key = value, key = value ..." into the group name and items.
     subroutine add_group(groups, body, line)

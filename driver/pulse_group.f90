@@ -10,7 +10,8 @@ module driver_pulse_group
     use seispulse, only: dp, pulse_t, pulse_validate, pulse_kind_from_name, pulse_kind_name, &
                          SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, PULSE_TRIANGULAR, PULSE_RICKER, &
                          PULSE_MP, PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE, finite_positive, &
-                         pulse_end_time, real_str
+                         pulse_end_time, real_str, accel_unit_code, UNITS_G, UNITS_M_S2, &
+                         UNITS_CM_S2
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, check_keys, read_group, located, given
     implicit none
@@ -114,7 +115,7 @@ contains
         character(len=:), allocatable, intent(out) :: errmsg
         logical, intent(in), optional :: g_used
         character(len=256) :: msg
-        integer :: code, i
+        integer :: code, i, unit_code
         real(dp) :: amp_si
         logical :: g_always
 
@@ -133,10 +134,18 @@ contains
             return
         end if
         amp_si = amp
-        select case (lower(trim(amp_unit)))
-        case ('m/s2')
+        call accel_unit_code(amp_unit, unit_code, i, msg)
+        if (i /= SEISPULSE_SUCCESS) then
+            errmsg = located(path, pin%group)//'amp_unit = '//trim(msg)
+            return
+        end if
+        select case (unit_code)
+        case (UNITS_M_S2)
             if (code /= PULSE_MP) pin%amp_g = amp / g
-        case ('g')
+        case (UNITS_CM_S2)
+            if (code /= PULSE_MP) pin%amp_g = amp / (100.0_dp * g)
+            amp_si = amp / 100.0_dp
+        case (UNITS_G)
             if (.not. finite_positive(g)) then
                 errmsg = located(path, pin%group)//'g: must be a finite number > 0 (m/s2)'
                 return
@@ -145,10 +154,6 @@ contains
             ! SI for the library; the namelist variable keeps the value as given, so the
             ! echo reads back the same pulse
             amp_si = amp * g
-        case default
-            errmsg = located(path, pin%group)//'amp_unit = '''//trim(amp_unit) &
-                     //''': unknown unit (allowed: m/s2, g)'
-            return
         end select
         if (code == PULSE_MP) amp_si = vamp
         if (ieee_is_nan(t0)) then

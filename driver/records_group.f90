@@ -12,10 +12,11 @@ module driver_records
     use seispulse, only: dp, SEISPULSE_SUCCESS, int_str, record_t, read_record, record_pga, &
                          pga_scale_factor, record_format_name, record_units_name, RECORD_AUTO, &
                          RECORD_COLUMN, UNITS_G, UNITS_M_S2, UNITS_CM_S2, finite_at_least, &
-                         finite_positive
-    use driver_namelist_scan, only: nml_group
+                         finite_positive, accel_unit_code
+    use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: located, join, given, list_length, list_item, name_index, &
                             value_name, num
+    use driver_echo, only: echo_unit, echo_path
     implicit none
     private
 
@@ -27,8 +28,6 @@ module driver_records
         'format', 'units', 'dt', 'scale', 'target_pga', 'pga_rounding', 'polarity']
     character(len=10), parameter :: format_names(5) = [character(len=10) :: 'auto', 'at2', &
         'slammer', 'column', 'time_accel']
-    character(len=6), parameter :: units_names(7) = [character(len=6) :: 'auto', 'g', &
-        'm/s2', 'cm/s2', 'm/s^2', 'cm/s^2', 'gal']
     character(len=7), parameter :: rounding_names(2) = [character(len=7) :: 'exact', 'slammer']
 
     !> Most record files.
@@ -40,9 +39,9 @@ module driver_records
     !> Most failed records named in a final message.
     integer, parameter :: max_named = 20
 
-    !> After the input file's name: the message when &records is missing.
-    character(len=*), parameter :: records_missing = ': &records: missing group (it lists ' &
-        //'the record files: files = ''a.AT2'', ...)'
+    !> After missing_group(path, 'records'): what the group is for.
+    character(len=*), parameter :: records_missing = ' (it lists the record files: ' &
+        //'files = ''a.AT2'', ...)'
 
     ! namelist variables (defaults are set in records_defaults)
     character(len=path_len) :: files(max_files)
@@ -116,6 +115,7 @@ contains
         character(len=:), allocatable :: where, item
         integer :: n, i, k, n_fmt, n_units, n_dt, n_scale, n_target, n_pol, code
         real(dp) :: x
+        character(len=256) :: msg
 
         where = located(path, gr)
         errmsg = ''
@@ -185,20 +185,17 @@ contains
                 if (n_units > 0) then
                     k = min(i, n_units)
                     item = value_name('units', k, n_units)
-                    select case (name_index(units(k), units_names))
-                    case (1)
+                    if (trim(lower(adjustl(units(k)))) == 'auto') then
                         r%units = 0
-                    case (2)
-                        r%units = UNITS_G
-                    case (3, 5)
-                        r%units = UNITS_M_S2
-                    case (4, 6, 7)
-                        r%units = UNITS_CM_S2
-                    case default
-                        errmsg = where//item//' = '''//trim(units(k))//''': unknown units ' &
-                                 //'(allowed: '//join(units_names)//')'
-                        return
-                    end select
+                    else
+                        ! the one vocabulary of acceleration units (seispulse_records)
+                        call accel_unit_code(units(k), r%units, code, msg)
+                        if (code /= SEISPULSE_SUCCESS) then
+                            errmsg = where//item//' = '//trim(msg)//'; or auto (the AT2 ' &
+                                     //'header''s units, else g)'
+                            return
+                        end if
+                    end if
                 end if
                 if (n_dt > 0) then
                     k = min(i, n_dt)
@@ -322,7 +319,7 @@ contains
         integer :: i, flen
         flen = 1
         do i = 1, size(recs)
-            flen = max(flen, len(recs(i)%file))
+            flen = max(flen, len(echo_path(recs(i)%path)))
         end do
         call echo_records_n(recs, slammer_rounding, size(recs), flen)
     end subroutine echo_records
@@ -339,7 +336,7 @@ contains
         integer :: polarity(n), i
         namelist /records/ files, format, units, dt, scale, target_pga, pga_rounding, polarity
         do i = 1, n
-            files(i) = recs(i)%file
+            files(i) = echo_path(recs(i)%path)
             format(i) = record_format_name(recs(i)%fmt)
             units(i) = units_name(recs(i)%units)
             dt(i) = recs(i)%dt
@@ -348,7 +345,7 @@ contains
             polarity(i) = recs(i)%polarity
         end do
         pga_rounding = merge('slammer', 'exact  ', slammer_rounding)
-        write(output_unit, nml=records)
+        write(echo_unit(), nml=records)
     end subroutine echo_records_n
 
     ! ------------------------------------------------------------------------------

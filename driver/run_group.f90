@@ -4,12 +4,17 @@ module driver_run_group
     private
 
     public :: run_analysis, run_output, read_run, run_keys, write_run
+    public :: run_verbose
 
-    character(len=8), parameter :: run_keys(2) = [character(len=8) :: 'analysis', 'output']
+    character(len=8), parameter :: run_keys(3) = [character(len=8) :: 'analysis', 'output', &
+        'verbose']
 
     character(len=32) :: analysis = ''
     character(len=1024) :: output = ''
     namelist /run/ analysis, output
+    !> Also echo the effective input on standard output (it always goes to its file).
+    logical :: verbose = .false.
+    namelist /run/ verbose
 
 contains
 
@@ -35,6 +40,10 @@ contains
         character(len=:), allocatable :: s
         s = trim(output)
     end function run_output
+
+    logical function run_verbose()
+        run_verbose = verbose
+    end function run_verbose
 
     !> Echo the group (for the log).
     subroutine write_run(unit)

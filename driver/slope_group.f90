@@ -11,6 +11,7 @@ module driver_slope
     use driver_namelist_scan, only: nml_group
     use driver_namelist_scan, only: lower
     use driver_input, only: located, given, num
+    use driver_echo, only: echo_unit
     implicit none
     private
 
@@ -122,7 +123,7 @@ contains
         soil = flexible_soil_name(mass%soil)
         ref_strain_pct = mass%ref_strain_pct
         max_iter = mass%max_iter
-        write(output_unit, nml=slope)
+        write(echo_unit(), nml=slope)
     end subroutine echo_slope
 
     !> "sliding mass: height = 50 m, vs = 600 m/s, ..." (a header line of the table).

@@ -103,7 +103,8 @@ module seispulse
                                  ground_motion, record_format_name, record_units_name, &
                                  RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, &
                                  RECORD_TIME_ACCEL, UNITS_G, UNITS_M_S2, UNITS_CM_S2, &
-                                 STANDARD_GRAVITY
+                                 STANDARD_GRAVITY, accel_unit_code, accel_unit_factor, &
+                                 ACCEL_UNIT_NAMES
     use seispulse_intensity, only: intensity_t, record_intensity, spectral_acceleration, &
                                    mean_period, TM_F_LOW, TM_F_HIGH, TM_DF_MAX, TM_MAX_POINTS
     use seispulse_fft, only: fft, next_power_of_two, is_power_of_two

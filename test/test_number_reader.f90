@@ -91,7 +91,7 @@ contains
         character(len=200) :: msg
         real(dp) :: x
         integer :: stat
-        call check(error, at_line('a/b.txt', 12) == 'a/b.txt, line 12: ', 'at_line')
+        call check(error, at_line('a/b.txt', 12) == 'a/b.txt:12: ', 'at_line')
         if (allocated(error)) return
         msg = ''
         call value_at('f.csv', 3, '2.5', x, stat, msg)
@@ -104,13 +104,13 @@ contains
         call value_at('f.csv', 3, '1,5', x, stat, msg)
         call check(error, stat, SEISPULSE_INVALID_INPUT, 'value_at 1,5')
         if (allocated(error)) return
-        call check(error, msg == "f.csv, line 3: non-numeric value '1,5' (expected a number " &
+        call check(error, msg == "f.csv:3: non-numeric value '1,5' (expected a number " &
                    //"such as -1.25E-03)", trim(msg))
         if (allocated(error)) return
         call value_at('f.csv', 7, '1e400', x, stat, msg)
         call check(error, stat, SEISPULSE_INVALID_INPUT, 'value_at 1e400')
         if (allocated(error)) return
-        call check(error, msg == "f.csv, line 7: value '1e400' is out of the range of double " &
+        call check(error, msg == "f.csv:7: value '1e400' is out of the range of double " &
                    //"precision (|x| < 1e308 expected)", trim(msg))
     end subroutine test_messages
 

@@ -10,7 +10,7 @@ module test_records
                                  ground_motion, record_format_name, record_units_name, &
                                  RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, &
                                  RECORD_TIME_ACCEL, UNITS_G, UNITS_M_S2, UNITS_CM_S2, &
-                                 STANDARD_GRAVITY
+                                 STANDARD_GRAVITY, accel_unit_code, accel_unit_factor
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
     private
@@ -52,8 +52,43 @@ contains
                  new_unittest('pga_scale_factor: exact and SLAMMER rounding', test_scale), &
                  new_unittest('ground_motion: linear acceleration, exact polynomials', &
                               test_ground_linear), &
-                 new_unittest('ground_motion: errors', test_ground_errors)]
+                 new_unittest('ground_motion: errors', test_ground_errors), &
+                 new_unittest('acceleration unit names: codes, factors, errors', test_unit_names)]
     end subroutine collect_records
+
+    !> The one vocabulary of acceleration units: every name and case, the factor to g
+    !> (1, 1/g, 1/(100 g) for a g of 9.81), unknown names and a bad g refused.
+    subroutine test_unit_names(error)
+        type(test_error), allocatable, intent(out) :: error
+        character(len=8), parameter :: names(10) = [character(len=8) :: 'g', 'G', ' m/s2', &
+            'M/S2', 'm/s^2', 'cm/s2', 'CM/S^2', 'gal', 'Gal ', 'GAL']
+        integer, parameter :: codes(10) = [UNITS_G, UNITS_G, UNITS_M_S2, UNITS_M_S2, &
+            UNITS_M_S2, UNITS_CM_S2, UNITS_CM_S2, UNITS_CM_S2, UNITS_CM_S2, UNITS_CM_S2]
+        real(dp), parameter :: expect(3) = [1.0_dp, 1.0_dp / 9.81_dp, 1.0_dp / 981.0_dp]
+        character(len=256) :: msg
+        integer :: i, code, stat
+        real(dp) :: factor
+        do i = 1, size(names)
+            call accel_unit_code(names(i), code, stat)
+            call check(error, stat == SEISPULSE_SUCCESS .and. code == codes(i), trim(names(i)))
+            if (allocated(error)) return
+            call accel_unit_factor(names(i), 9.81_dp, factor, stat)
+            call check(error, stat == SEISPULSE_SUCCESS, trim(names(i)))
+            if (allocated(error)) return
+            call check(error, factor, expect(codes(i)), rtol=1.0e-15_dp)
+            if (allocated(error)) return
+        end do
+        msg = ''
+        call accel_unit_code('ft/s2', code, stat, msg)
+        call check(error, stat == SEISPULSE_INVALID_INPUT .and. code == 0 .and. trim(msg) == &
+                   "'ft/s2': unknown acceleration unit (allowed: g, m/s2, m/s^2, cm/s2, " &
+                   //"cm/s^2, gal)", trim(msg))
+        if (allocated(error)) return
+        msg = ''
+        call accel_unit_factor('m/s2', 0.0_dp, factor, stat, msg)
+        call check(error, stat == SEISPULSE_INVALID_INPUT .and. index(msg, 'g = ') == 1, &
+                   trim(msg))
+    end subroutine test_unit_names
 
     ! ---------------------------------------------------------------- helpers
 
@@ -120,7 +155,7 @@ contains
     end subroutine read_ok
 
     !> A failed read of `text`: status `code`, message starting with `<path>` + `head`
-    !> (head = ', line 6: ' or ': ') and containing `part` (and `part2`).
+    !> (head = ':6: ' or ': ') and containing `part` (and `part2`).
     subroutine read_fails(error, text, tag, code, head, part, part2, fmt, units, dt)
         type(test_error), allocatable, intent(inout) :: error
         character(len=*), intent(in) :: text, tag
@@ -249,7 +284,7 @@ contains
         if (allocated(error)) return
         call read_fails(error, head//'NPTS=     4, DT=   .0050 SEC'//NL// &
                         '  .1E-01  .2E-01  .3E-01'//NL//'  .4E-01  .5E-01'//NL, &
-                        'more.at2', SEISPULSE_INVALID_INPUT, ', line 6: ', &
+                        'more.at2', SEISPULSE_INVALID_INPUT, ':6: ', &
                         'more values than NPTS = 4', "'.5E-01'")
         if (allocated(error)) return
         call read_fails(error, head//'NPTS=     4, DT=   .0050 SEC'//NL, &
@@ -261,39 +296,39 @@ contains
         character(len=*), parameter :: head = 'PEER NGA STRONG MOTION DATABASE RECORD'//NL// &
             'title'//NL//'ACCELERATION TIME SERIES IN UNITS OF G'//NL
         call read_fails(error, head//'NPTS=     6'//NL//'1 2 3 4 5 6'//NL, 'nodt.at2', &
-                        SEISPULSE_INVALID_INPUT, ', line 4: ', 'DT missing', &
+                        SEISPULSE_INVALID_INPUT, ':4: ', 'DT missing', &
                         "'NPTS=  5590, DT=   .0050 SEC'")
         if (allocated(error)) return
         call read_fails(error, head//'DT= .005'//NL//'1 2 3 4 5 6'//NL, 'nonpts.at2', &
-                        SEISPULSE_INVALID_INPUT, ', line 4: ', 'NPTS missing', &
+                        SEISPULSE_INVALID_INPUT, ':4: ', 'NPTS missing', &
                         "'  3999    .0100    NPTS, DT'")
         if (allocated(error)) return
         call read_fails(error, head//'NPTS=  6.5, DT= .005'//NL//'1 2 3 4 5 6'//NL, &
-                        'badnpts.at2', SEISPULSE_INVALID_INPUT, ', line 4: ', &
+                        'badnpts.at2', SEISPULSE_INVALID_INPUT, ':4: ', &
                         "NPTS = '6.5' is not a positive integer")
         if (allocated(error)) return
         call read_fails(error, head//'NPTS=  6, DT= x.005'//NL//'1 2 3 4 5 6'//NL, &
-                        'baddt.at2', SEISPULSE_INVALID_INPUT, ', line 4: ', &
+                        'baddt.at2', SEISPULSE_INVALID_INPUT, ':4: ', &
                         "DT = 'x.005' is not a number")
         if (allocated(error)) return
         call read_fails(error, head//'NPTS=  6, DT= 0'//NL//'1 2 3 4 5 6'//NL, &
-                        'zerodt.at2', SEISPULSE_INVALID_INPUT, ', line 4: ', 'must be > 0')
+                        'zerodt.at2', SEISPULSE_INVALID_INPUT, ':4: ', 'must be > 0')
         if (allocated(error)) return
         call read_fails(error, head//'  6    NPTS, DT'//NL//'1 2 3 4 5 6'//NL, &
-                        'oldone.at2', SEISPULSE_INVALID_INPUT, ', line 4: ', &
+                        'oldone.at2', SEISPULSE_INVALID_INPUT, ':4: ', &
                         'two values expected before NPTS, DT')
         if (allocated(error)) return
         call read_fails(error, 'PEER NGA STRONG MOTION DATABASE RECORD'//NL//'title'//NL// &
                         'VELOCITY TIME SERIES IN UNITS OF CM/S'//NL// &
                         'NPTS=     2, DT=   .0050 SEC'//NL//'1 2'//NL, 'velocity.at2', &
-                        SEISPULSE_INVALID_INPUT, ', line 3: ', 'not an acceleration record')
+                        SEISPULSE_INVALID_INPUT, ':3: ', 'not an acceleration record')
         if (allocated(error)) return
         call read_fails(error, 'PEER'//NL//'title'//NL//'TIME SERIES IN UNITS OF G'//NL// &
                         'NPTS=     2, DT=   .0050 SEC'//NL//'1 2'//NL, 'noaccel.at2', &
-                        SEISPULSE_INVALID_INPUT, ', line 3: ', "expected the quantity and units")
+                        SEISPULSE_INVALID_INPUT, ':3: ', "expected the quantity and units")
         if (allocated(error)) return
         call read_fails(error, 'PEER NGA'//NL//'title'//NL, 'short.at2', &
-                        SEISPULSE_INVALID_INPUT, ', line 3: ', 'the AT2 header has 4 lines')
+                        SEISPULSE_INVALID_INPUT, ':3: ', 'the AT2 header has 4 lines')
     end subroutine test_at2_header
 
     subroutine test_at2_caller(error)
@@ -305,7 +340,7 @@ contains
         character(len=*), parameter :: none = 'PEER'//NL//'t'//NL// &
             'ACCELERATION TIME SERIES'//NL//'NPTS= 2, DT= .01 SEC'//NL//'4.903325 -9.80665'//NL
         ! the caller's units against the header's
-        call read_fails(error, cm, 'units.at2', SEISPULSE_INVALID_INPUT, ', line 3: ', &
+        call read_fails(error, cm, 'units.at2', SEISPULSE_INVALID_INPUT, ':3: ', &
                         'the header gives the units as cm/s2', 'units = g was passed', &
                         units=UNITS_G)
         if (allocated(error)) return
@@ -323,7 +358,7 @@ contains
         if (allocated(error)) return
         call check(error, rec%dt, 0.01_dp, rtol=0.0_dp, message="header's dt")
         if (allocated(error)) return
-        call read_fails(error, cm, 'dt_far.at2', SEISPULSE_INVALID_INPUT, ', line 4: ', &
+        call read_fails(error, cm, 'dt_far.at2', SEISPULSE_INVALID_INPUT, ':4: ', &
                         'DT = 0.01 s, but dt = 0.02 s was given', dt=0.02_dp)
     end subroutine test_at2_caller
 
@@ -339,23 +374,23 @@ contains
         integer :: k
         do k = 1, size(bad)
             call read_fails(error, head//'3.0 '//trim(bad(k))//NL, 'token.at2', &
-                            SEISPULSE_INVALID_INPUT, ', line 6: ', &
+                            SEISPULSE_INVALID_INPUT, ':6: ', &
                             "non-numeric value '"//trim(bad(k))//"'")
             if (allocated(error)) return
         end do
         ! a long token is quoted in part
         call read_fails(error, head//'3.0 '//repeat('x', 100)//NL, 'longtoken.at2', &
-                        SEISPULSE_INVALID_INPUT, ', line 6: ', "'"//repeat('x', 40)//"...'")
+                        SEISPULSE_INVALID_INPUT, ':6: ', "'"//repeat('x', 40)//"...'")
         if (allocated(error)) return
         call read_fails(error, head//'3.0 1e400'//NL, 'range.at2', SEISPULSE_INVALID_INPUT, &
-                        ', line 6: ', "value '1e400' is out of the range")
+                        ':6: ', "value '1e400' is out of the range")
         if (allocated(error)) return
         ! a data line with an empty value
         call read_fails(error, '# c'//NL//'0.0,1.0'//NL//'0.1,,2.0'//NL, 'empty_value.csv', &
-                        SEISPULSE_INVALID_INPUT, ', line 3: ', 'empty value')
+                        SEISPULSE_INVALID_INPUT, ':3: ', 'empty value')
         if (allocated(error)) return
         call read_fails(error, '# c'//NL//'0.0,1.0'//NL//'0.1,2.0,'//NL, 'trailing.csv', &
-                        SEISPULSE_INVALID_INPUT, ', line 3: ', 'empty value')
+                        SEISPULSE_INVALID_INPUT, ':3: ', 'empty value')
     end subroutine test_non_numeric
 
     subroutine test_number_forms(error)
@@ -417,7 +452,7 @@ contains
         if (allocated(error)) return
         ! explicit SLAMMER needs the two comment lines
         call read_fails(error, '# only one'//NL//'0,1'//NL//'1,2'//NL, 'slammer3.csv', &
-                        SEISPULSE_INVALID_INPUT, ', line 2: ', "expected a '#' comment line", &
+                        SEISPULSE_INVALID_INPUT, ':2: ', "expected a '#' comment line", &
                         fmt=RECORD_SLAMMER)
     end subroutine test_slammer
 
@@ -480,25 +515,25 @@ contains
         ! off the grid at line 5 (t = 0.35 where 0.3 is expected, dt = 0.1)
         call read_fails(error, '# t a'//NL//'0.0 1'//NL//'0.1 2'//NL//'0.2 3'//NL// &
                         '0.35 4'//NL//'0.4 5'//NL//'0.5 6'//NL, 'grid.txt', &
-                        SEISPULSE_INVALID_INPUT, ', line 5: ', 'time 0.35 is off the uniform', &
+                        SEISPULSE_INVALID_INPUT, ':5: ', 'time 0.35 is off the uniform', &
                         'expected 0.3 (dt = 0.1 s')
         if (allocated(error)) return
         ! 2 % of dt off: rejected (tolerance 1 %)
         call read_fails(error, '0.0 1'//NL//'0.102 2'//NL//'0.2 3'//NL, 'grid2.txt', &
-                        SEISPULSE_INVALID_INPUT, ', line 2: ', 'time 0.102 is off the uniform')
+                        SEISPULSE_INVALID_INPUT, ':2: ', 'time 0.102 is off the uniform')
         if (allocated(error)) return
         ! not increasing
         call read_fails(error, '0.0 1'//NL//'0.1 2'//NL//'0.1 3'//NL//'0.3 4'//NL, &
-                        'order.txt', SEISPULSE_INVALID_INPUT, ', line 3: ', &
+                        'order.txt', SEISPULSE_INVALID_INPUT, ':3: ', &
                         'time 0.1 is not after the previous time 0.1 (line 2)')
         if (allocated(error)) return
         ! a row of 3 values, of 1 value
         call read_fails(error, '0.0 1'//NL//'0.1 2 3'//NL, 'three.txt', &
-                        SEISPULSE_INVALID_INPUT, ', line 2: ', &
+                        SEISPULSE_INVALID_INPUT, ':2: ', &
                         'expected 2 values (time, acceleration), found 3')
         if (allocated(error)) return
         call read_fails(error, '0.0 1'//NL//'0.1'//NL, 'one.txt', &
-                        SEISPULSE_INVALID_INPUT, ', line 2: ', 'found 1')
+                        SEISPULSE_INVALID_INPUT, ':2: ', 'found 1')
         if (allocated(error)) return
         ! one row only
         call read_fails(error, '# c'//NL//'0.0 1'//NL, 'onerow.txt', SEISPULSE_INVALID_INPUT, &
@@ -532,7 +567,7 @@ contains
                         'dt: a single-column file has no time step', dt=0.0_dp)
         if (allocated(error)) return
         call read_fails(error, '1'//NL//'2 3'//NL, 'column_two.txt', SEISPULSE_INVALID_INPUT, &
-                        ', line 2: ', 'expected 1 value', fmt=RECORD_COLUMN, dt=0.1_dp)
+                        ':2: ', 'expected 1 value', fmt=RECORD_COLUMN, dt=0.1_dp)
     end subroutine test_column
 
     subroutine test_detection(error)
@@ -569,15 +604,15 @@ contains
         call check(error, rec%fmt, RECORD_TIME_ACCEL, 'explicit time_accel')
         if (allocated(error)) return
         call read_fails(error, '# c'//NL//'0.0 1.0 2.0'//NL, 'three_auto.txt', &
-                        SEISPULSE_INVALID_INPUT, ', line 2: ', 'expected 1 or 2 numbers', &
+                        SEISPULSE_INVALID_INPUT, ':2: ', 'expected 1 or 2 numbers', &
                         "found '0.0 1.0 2.0'")
         if (allocated(error)) return
         call read_fails(error, '# c'//NL//'time,accel'//NL//'0 1'//NL, 'header_auto.txt', &
-                        SEISPULSE_INVALID_INPUT, ', line 2: ', 'expected 1 or 2 numbers')
+                        SEISPULSE_INVALID_INPUT, ':2: ', 'expected 1 or 2 numbers')
         if (allocated(error)) return
         ! an explicit AT2 on a CSV: line 3 is not an AT2 header line
         call read_fails(error, '# a'//NL//'# b'//NL//'0 1'//NL//'1 2'//NL, 'csv_as_at2.csv', &
-                        SEISPULSE_INVALID_INPUT, ', line 3: ', 'expected the quantity', &
+                        SEISPULSE_INVALID_INPUT, ':3: ', 'expected the quantity', &
                         fmt=RECORD_AT2)
     end subroutine test_detection
 
@@ -648,7 +683,7 @@ contains
         if (allocated(error)) return
         ! a long bad line: the error names it and quotes the start
         call read_fails(error, '0 1'//NL//'0.5 2 '//repeat('9', 50000)//NL, 'longbad.txt', &
-                        SEISPULSE_INVALID_INPUT, ', line 2: ', 'found 3')
+                        SEISPULSE_INVALID_INPUT, ':2: ', 'found 3')
     end subroutine test_long_lines
 
     subroutine test_bad_arguments(error)

@@ -359,7 +359,7 @@ contains
 
     subroutine test_envelope(error)
         type(test_error), allocatable, intent(out) :: error
-        real(dp) :: env(4), shp(4), tp, pk
+        real(dp) :: env(4), env3(3), shp(4), tp, pk
         integer :: stat
         call design_envelope([0.1_dp, 0.2_dp, 0.4_dp, 1.0_dp], &
                              reshape([1.0_dp, 2.0_dp, 3.0_dp, 1.0_dp, &
@@ -376,9 +376,19 @@ contains
         call check(error, maxval(abs(env - [2.5_dp, 2.0_dp, 3.0_dp, 1.5_dp])) < tiny(1.0_dp), &
                    'no plateau')
         if (allocated(error)) return
-        call design_envelope([0.1_dp, 0.1_dp, 0.4_dp, 1.0_dp], reshape([1.0_dp, 2.0_dp, &
-                             3.0_dp, 1.0_dp], [4, 1]), 0.0_dp, env, stat)
-        call check(error, stat == SEISPULSE_INVALID_INPUT, 'periods not ascending')
+        ! any order: the same plateau, by period (peaks 2.5, 2, 3, 1.5 at 0.1, 0.2, 0.4, 1 s;
+        ! below 0.3 s held at the largest at that or any longer period: 3), and a period
+        ! given twice
+        call design_envelope([0.4_dp, 1.0_dp, 0.1_dp, 0.2_dp], &
+                             reshape([3.0_dp, 1.0_dp, 1.0_dp, 2.0_dp, &
+                                      2.0_dp, 1.5_dp, 2.5_dp, 1.0_dp], [4, 2]), 0.3_dp, env, stat)
+        call check(error, stat == SEISPULSE_SUCCESS .and. maxval(abs(env - [3.0_dp, 1.5_dp, &
+                   3.0_dp, 3.0_dp])) < tiny(1.0_dp), 'periods in any order')
+        if (allocated(error)) return
+        call design_envelope([1.0_dp, 0.1_dp, 0.1_dp], reshape([1.0_dp, 2.0_dp, 2.0_dp], &
+                             [3, 1]), 0.5_dp, env3, stat)
+        call check(error, stat == SEISPULSE_SUCCESS .and. maxval(abs(env3 - [1.0_dp, 2.0_dp, &
+                   2.0_dp])) < tiny(1.0_dp), 'a period twice')
         if (allocated(error)) return
         call spectral_shape([0.1_dp, 0.3_dp, 0.5_dp, 1.0_dp], [0.5_dp, 1.25_dp, 0.75_dp, &
                             0.2_dp], 0.5_dp, shp, tp, pk, stat)

@@ -127,6 +127,22 @@ def check_positive(name, value, unit=""):
     return x
 
 
+def accel_unit_code(name, units):
+    """The Fortran UNITS_* code of an acceleration unit given as argument ``name``: the
+    library's one vocabulary (accel_unit_code), the same as the driver's: 'g', 'm/s2',
+    'm/s^2', 'cm/s2', 'cm/s^2', 'gal', case and surrounding blanks ignored."""
+    from ._seispulse import sp_accel_unit_code
+    if not isinstance(units, str):
+        raise InvalidInputError(f"{name} = {units!r}: must be the name of a unit (a str)")
+    code, stat, msg = sp_accel_unit_code(units if units.strip() else "?")
+    if stat != SEISPULSE_SUCCESS:
+        msg = msg.decode("ascii", "replace") if isinstance(msg, bytes) else str(msg)
+        if not units.strip():
+            msg = msg.replace("'?'", repr(units), 1)
+        raise_for_status(stat, f"{name} = {msg.strip()}")
+    return int(code)
+
+
 def raise_for_status(stat, errmsg, rename=None, indexed=None):
     """Raise the exception of a nonzero Fortran status, with its message.
 

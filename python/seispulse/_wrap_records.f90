@@ -100,3 +100,30 @@ subroutine sp_ground_motion(n, accel, dt, g, vel, disp, stat, errmsg)
     errmsg = ''
     call ground_motion(accel, dt, g, vel, disp, stat, errmsg)
 end subroutine sp_ground_motion
+
+!> The UNITS_* code of an acceleration unit name (accel_unit_code: the one vocabulary of
+!> the library, the driver and Python).
+subroutine sp_accel_unit_code(name, code, stat, errmsg)
+    use seispulse_records, only: accel_unit_code
+    implicit none
+    character(len=*), intent(in) :: name
+    integer, intent(out) :: code
+    integer, intent(out) :: stat
+    character(len=1024), intent(out) :: errmsg
+    errmsg = ''
+    call accel_unit_code(name, code, stat, errmsg)
+end subroutine sp_accel_unit_code
+
+!> The factor from an acceleration unit to g (accel_unit_factor); g in m/s^2.
+subroutine sp_accel_unit_factor(name, g, factor, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_records, only: accel_unit_factor
+    implicit none
+    character(len=*), intent(in) :: name
+    real(dp), intent(in) :: g
+    real(dp), intent(out) :: factor
+    integer, intent(out) :: stat
+    character(len=1024), intent(out) :: errmsg
+    errmsg = ''
+    call accel_unit_factor(name, g, factor, stat, errmsg)
+end subroutine sp_accel_unit_factor

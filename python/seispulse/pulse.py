@@ -128,11 +128,15 @@ def exp_pulse_impulse_amplitude(beta):
 # ------------------------------------------------------------------ SI pulses
 
 def _amplitude(amp, amp_unit, g):
-    """Amplitude in m/s^2 from a value in m/s^2 or in g."""
-    _core.check_choice("amp_unit", amp_unit, ("m/s2", "g"))
-    if amp_unit == "g":
+    """Amplitude in m/s^2 from a value in ``amp_unit``: 'g' (times g), 'm/s2' (as is),
+    'cm/s2' (/ 100), with the aliases 'm/s^2', 'cm/s^2', 'gal', any case (the library's
+    one vocabulary of acceleration units, as in the driver)."""
+    code = _core.accel_unit_code("amp_unit", amp_unit)
+    if code == _fortran_codes.UNITS_G:
         g = _core.check_positive("g", g, " (m/s^2)")
         return _core.as_float_array("amp", amp) * g
+    if code == _fortran_codes.UNITS_CM_S2:
+        return _core.as_float_array("amp", amp) / 100.0
     return amp
 
 

@@ -42,7 +42,7 @@ from ._seispulse import (sp_ground_motion, sp_pga_scale_factor, sp_record_fetch,
 from .errors import InvalidInputError
 
 __all__ = ["STANDARD_GRAVITY", "FORMATS", "UNITS", "Record", "read", "from_array", "sample",
-           "Intensity", "intensity", "spectral_acceleration"]
+           "Intensity", "intensity", "spectral_acceleration", "accel_unit_factor"]
 
 #: Standard gravity (m/s^2): converts m/s^2 and cm/s^2 to g, default ``g`` of the
 #: velocity and displacement.
@@ -54,11 +54,10 @@ _FORMAT_CODES = {"auto": _f.RECORD_AUTO, "at2": _f.RECORD_AT2, "slammer": _f.REC
 FORMATS = tuple(_FORMAT_CODES)
 _FORMAT_NAMES = {code: name for name, code in _FORMAT_CODES.items()}
 
-#: Units of the values in a file or array (aliases: 'm/s^2', 'cm/s^2', 'gal').
+#: Units of the values in a file or array (aliases: 'm/s^2', 'cm/s^2', 'gal'; any case:
+#: the library's one vocabulary, as in the driver and for pulses).
 UNITS = ("g", "m/s2", "cm/s2")
 
-_UNIT_CODES = {"g": _f.UNITS_G, "m/s2": _f.UNITS_M_S2, "m/s^2": _f.UNITS_M_S2,
-               "cm/s2": _f.UNITS_CM_S2, "cm/s^2": _f.UNITS_CM_S2, "gal": _f.UNITS_CM_S2}
 _UNIT_TO_G = {_f.UNITS_G: 1.0, _f.UNITS_M_S2: STANDARD_GRAVITY,
               _f.UNITS_CM_S2: 100.0 * STANDARD_GRAVITY}
 
@@ -74,10 +73,19 @@ def _text(raw):
 
 
 def _unit_code(units):
-    if not isinstance(units, str) or units.lower() not in _UNIT_CODES:
-        allowed = ", ".join(map(repr, _UNIT_CODES))
-        raise InvalidInputError(f"units = {units!r}: unknown units (allowed: {allowed})")
-    return _UNIT_CODES[units.lower()]
+    return _core.accel_unit_code("units", units)
+
+
+def accel_unit_factor(units, g=STANDARD_GRAVITY):
+    """The factor from an acceleration unit to g: a value in ``units`` times the factor
+    is in g (1 for 'g', 1/g for 'm/s2', 1/(100 g) for 'cm/s2'). ``units``: 'g', 'm/s2',
+    'm/s^2', 'cm/s2', 'cm/s^2', 'gal', any case (the library's one vocabulary, the
+    driver's too); ``g`` in m/s^2."""
+    from ._seispulse import sp_accel_unit_factor
+    _core.accel_unit_code("units", units)
+    factor, stat, msg = sp_accel_unit_factor(units, _core.as_scalar("g", g))
+    _core.raise_for_status(stat, msg)
+    return float(factor)
 
 
 class Record:
@@ -288,7 +296,7 @@ def read(path, fmt="auto", units=None, dt=None):
     Raises
     ------
     InvalidInputError
-        A malformed file (the message starts with ``<path>, line <n>:``) or a bad
+        A malformed file (the message starts with ``<path>:<n>:``) or a bad
         argument.
     FileError
         The file cannot be opened or read.

@@ -215,7 +215,7 @@ def envelope(periods, spectra, plateau_below=0.0):
     Parameters
     ----------
     periods : array_like
-        Periods (s), strictly ascending.
+        Periods (s), in any order (the plateau goes by period, not by position).
     spectra : array_like
         Ordinates, shape (n_spectra, len(periods)) (or one spectrum), any units.
     plateau_below : float

@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 from seispulse import pulse as p
+from driver_echo import echo_text
 
 
 def run(driver, cwd, text, name="case.nml"):
@@ -23,7 +24,9 @@ def test_example_input_runs(driver, source_root, tmp_path):
                           capture_output=True, text=True, timeout=60)
     assert proc.returncode == 0, proc.stderr
     assert "out/example_pulse.txt" in proc.stdout and "out/example_pulse.csv" in proc.stdout
-    assert "&PULSE" in proc.stdout.upper(), "effective input is echoed"
+    echo = echo_text(tmp_path, proc.stdout)
+    assert "&pulse" in echo, "effective input is echoed"
+    assert "&" not in proc.stdout, "the echo goes to its file, not to stdout"
     csv = read_csv(tmp_path / "out" / "example_pulse.csv")
     txt = np.loadtxt(tmp_path / "out" / "example_pulse.txt", comments="#")
     np.testing.assert_array_equal(csv, txt)
@@ -84,7 +87,7 @@ BAD = [
     ("&run analysis='pulse', output='o' /\n&pulse kind = 'gabor' /\n",
      ["&pulse", "kind = 'gabor'", "allowed"]),
     ("&run analysis='pulse', output='o' /\n&pulse amp_unit = 'ft' /\n",
-     ["&pulse", "amp_unit", "allowed: m/s2, g"]),
+     ["&pulse", "amp_unit", "allowed: g, m/s2, m/s^2, cm/s2, cm/s^2, gal"]),
     ("&run analysis='pulse', output='o' /\n&pulse kind='triangular', peak_frac=2 /\n",
      ["&pulse", "peak_frac = 2.0", "[0, 1]"]),
     ("&run analysis='pulse', output='o' /\n&pulse kind='mp', gamma=0.5 /\n",

@@ -27,8 +27,6 @@ BAD = [
     (beta("ratios = -0.5"), "&sdof_beta: ratios = -0.5: must be a finite number >= 0"),
     (beta("ratios = 0.5, 1.0e-7, -2.5"),
      "&sdof_beta: ratios(3) = -2.5: must be a finite number >= 0"),
-    (beta("ratios = 1.0, 0.5"),
-     "&sdof_beta: ratios(2) = 0.5: the values must be strictly ascending"),
     (beta("ratios = 0.5, ratio_range = 0.1, 1.0"),
      "&sdof_beta: ratios, ratio_range: give only one of them (a list, or a range with "
      "ratio_count)"),

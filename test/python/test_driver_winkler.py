@@ -478,4 +478,4 @@ def test_errors(driver, tmp_path, opts, extra, fragments):
 def test_missing_winkler_group(driver, tmp_path):
     proc = run(driver, tmp_path, "&run analysis='winkler', output='o' /\n")
     assert proc.returncode == 2
-    assert "case.nml: &winkler: missing group" in proc.stderr
+    assert "case.nml:1: &winkler: missing group" in proc.stderr

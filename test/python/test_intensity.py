@@ -13,6 +13,7 @@ from scipy.integrate import cumulative_trapezoid
 
 from seispulse import records, sdof
 from seispulse.errors import InvalidInputError
+from driver_echo import echo_text
 
 G = 9.80665
 
@@ -282,7 +283,7 @@ def test_driver_intensity_table(driver, source_root, tmp_path):
                           text=True, timeout=120)
     assert proc.returncode == 0, proc.stderr
     assert "out/newmark_intensity_intensity.csv" in proc.stdout
-    assert "INTENSITY=T" in proc.stdout.upper().replace(" ", "")
+    assert "intensity = .true." in echo_text(tmp_path, proc.stdout)
     header, rows = _read_csv(tmp_path / "out" / "newmark_intensity_intensity.csv")
     assert header == ["record (-)", "pga (g)", "pgv (m/s)", "pgd (m)", "arias (m/s)",
                       "cav (m/s)", "d5_75 (s)", "d5_95 (s)", "tm (s)", "sa_T=0.2 (g)",
@@ -305,7 +306,8 @@ def test_driver_intensity_table(driver, source_root, tmp_path):
     proc = subprocess.run([driver, "off.nml"], cwd=tmp_path, capture_output=True, text=True,
                           timeout=120)
     assert proc.returncode == 0, proc.stderr
-    assert sorted(p.name for p in (tmp_path / "off").iterdir()) == ["x_newmark.csv",
+    assert sorted(p.name for p in (tmp_path / "off").iterdir()) == ["x_input.nml",
+                                                                    "x_newmark.csv",
                                                                     "x_newmark.txt"]
 
 

@@ -81,9 +81,9 @@ def test_at2_old_header_units(tmp_path):
     np.testing.assert_allclose(rec.accel, [1.0, -0.5, 0.01, 0.0, -2.0], rtol=3e-16, atol=0)
     for alias in ("cm/s2", "cm/s^2", "gal", "GAL"):
         assert R.read(path, units=alias).accel.tobytes() == rec.accel.tobytes()
-    fails(path, ", line 3: ", "the header gives the units as cm/s2", "units = g was passed",
+    fails(path, ":3: ", "the header gives the units as cm/s2", "units = g was passed",
           units="g")
-    fails(path, ", line 3: ", "units = m/s2 was passed", units="m/s^2")
+    fails(path, ":3: ", "units = m/s2 was passed", units="m/s^2")
 
 
 def test_at2_npts_mismatch(tmp_path):
@@ -92,17 +92,17 @@ def test_at2_npts_mismatch(tmp_path):
     fails(fewer, ": ", "NPTS = 6", "only 5 values")
     more = write(tmp_path, "more.at2", AT2_HEAD + "NPTS=     4, DT=   .0050 SEC\n"
                  "  .1E-01  .2E-01  .3E-01\n  .4E-01  .5E-01\n")
-    fails(more, ", line 6: ", "more values than NPTS = 4", "'.5E-01'")
+    fails(more, ":6: ", "more values than NPTS = 4", "'.5E-01'")
 
 
 def test_at2_bad_header(tmp_path):
     nodt = write(tmp_path, "nodt.at2", AT2_HEAD + "NPTS=     6\n1 2 3 4 5 6\n")
-    fails(nodt, ", line 4: ", "DT missing", "'NPTS=  5590, DT=   .0050 SEC'",
+    fails(nodt, ":4: ", "DT missing", "'NPTS=  5590, DT=   .0050 SEC'",
           "'  3999    .0100    NPTS, DT'")
     vel = write(tmp_path, "vel.at2", AT2_WEST2.replace("ACCELERATION", "VELOCITY"))
-    fails(vel, ", line 3: ", "not an acceleration record")
+    fails(vel, ":3: ", "not an acceleration record")
     dtbad = write(tmp_path, "dt.at2", AT2_WEST2)
-    fails(dtbad, ", line 4: ", "DT = 0.005 s, but dt = 0.01 s was given", dt=0.01)
+    fails(dtbad, ":4: ", "DT = 0.005 s, but dt = 0.01 s was given", dt=0.01)
     assert R.read(dtbad, dt=0.005 * (1 + 5e-7)).dt == 0.005
 
 
@@ -111,7 +111,7 @@ def test_at2_bad_header(tmp_path):
 def test_non_numeric_token(tmp_path, token):
     text = AT2_HEAD + "NPTS=     4, DT=   .0050 SEC\n1.0 2.0\n3.0 " + token + "\n"
     path = write(tmp_path, "token.at2", text)
-    fails(path, ", line 6: ", f"non-numeric value '{token}'")
+    fails(path, ":6: ", f"non-numeric value '{token}'")
 
 
 def test_number_forms(tmp_path):
@@ -156,19 +156,19 @@ def test_time_accel(tmp_path):
 
 def test_time_accel_errors(tmp_path):
     grid = write(tmp_path, "grid.txt", "# t a\n0.0 1\n0.1 2\n0.2 3\n0.35 4\n0.4 5\n0.5 6\n")
-    fails(grid, ", line 5: ", "time 0.35 is off the uniform time grid", "expected 0.3",
+    fails(grid, ":5: ", "time 0.35 is off the uniform time grid", "expected 0.3",
           "dt = 0.1 s")
     order = write(tmp_path, "order.txt", "0.0 1\n0.1 2\n0.1 3\n0.3 4\n")
-    fails(order, ", line 3: ", "time 0.1 is not after the previous time 0.1 (line 2)")
+    fails(order, ":3: ", "time 0.1 is not after the previous time 0.1 (line 2)")
     three = write(tmp_path, "three.txt", "0.0 1\n0.1 2 3\n")
-    fails(three, ", line 2: ", "expected 2 values (time, acceleration), found 3")
+    fails(three, ":2: ", "expected 2 values (time, acceleration), found 3")
     three_first = write(tmp_path, "three_first.txt", "# c\n0.0 1 2\n")
-    fails(three_first, ", line 2: ", "expected 1 or 2 numbers", "'0.0 1 2'")
+    fails(three_first, ":2: ", "expected 1 or 2 numbers", "'0.0 1 2'")
     ok = write(tmp_path, "ok.txt", "0 1\n0.02 2\n0.04 3\n")
     fails(ok, ": ", "the times give dt = 0.02 s", "dt = 0.01 s was given", dt=0.01)
     assert R.read(ok, dt=0.02).dt == pytest.approx(0.02, rel=1e-15)
     empty_value = write(tmp_path, "empty_value.csv", "0,1\n0.1,,2\n")
-    fails(empty_value, ", line 2: ", "empty value")
+    fails(empty_value, ":2: ", "empty value")
 
 
 def test_single_column(tmp_path):
@@ -215,7 +215,7 @@ def test_paths_with_spaces_and_non_ascii(tmp_path):
         assert rec.path == str(path)
         assert rec.accel.tolist() == [0.5, -0.25]
     bad = write(tmp_path / "dir with spaces", "mauvais é.csv", "0,1\n0.1,x\n")
-    fails(bad, ", line 2: ", "non-numeric value 'x'")
+    fails(bad, ":2: ", "non-numeric value 'x'")
     with pytest.raises(FileError, match="cannot open"):
         R.read(tmp_path / "dir with spaces" / "absent é.csv")
 

@@ -216,7 +216,8 @@ def test_response_bad_input():
         sdof.response([0.0, 0.1], 0.01, 1.0, damping=1.5)
     with pytest.raises(InvalidInputError, match="period"):
         sdof.response([0.0, 0.1], 0.01)
-    with pytest.raises(InvalidInputError, match="ascending"):
-        sdof.envelope([0.2, 0.1], [[1.0, 2.0]])
+    # periods in any order: the plateau goes by period, not by position
+    np.testing.assert_array_equal(sdof.envelope([0.4, 0.1, 0.2], [[1.0, 2.0, 3.0]],
+                                                plateau_below=0.3), [1.0, 3.0, 3.0])
     with pytest.raises(InvalidInputError, match="pga"):
         sdof.normalized_shape([0.1], [1.0], 0.0)

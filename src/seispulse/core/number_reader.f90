@@ -1,5 +1,5 @@
 !> Decimal numbers in text files: a strict, correctly rounded reader and the
-!> "<path>, line <n>: " prefix of the messages that point into a file.
+!> "<path>:<n>: " prefix of the messages that point into a file.
 !>
 !> Numbers with at most 15 significant digits and a decimal exponent within +-22 are
 !> converted exactly (one correctly rounded product or quotient of exact doubles,
@@ -179,12 +179,12 @@ contains
         end if
     end subroutine value_at
 
-    !> The prefix of a message about line `lnum` of file `path`: "<path>, line <n>: ".
+    !> The prefix of a message about line `lnum` of file `path`: "<path>:<n>: ".
     pure function at_line(path, lnum) result(s)
         character(len=*), intent(in) :: path  !! the file
         integer, intent(in) :: lnum           !! the line number
         character(len=:), allocatable :: s
-        s = path//', line '//int_str(lnum)//': '
+        s = path//':'//int_str(lnum)//': '
     end function at_line
 
 end module seispulse_number_reader

@@ -26,7 +26,7 @@
 !> The reader is strict: every value is validated as a decimal number before it is
 !> converted (seispulse_number_reader: `nan`, `inf`, `1.0.0`, `1/2` are errors), every
 !> row must have the number of values of its format, nothing is truncated. Messages
-!> start with `<path>, line <n>: ` (or `<path>: ` for the whole file) and say what was
+!> start with `<path>:<n>: ` (or `<path>: ` for the whole file) and say what was
 !> expected and what was found. A UTF-8 byte-order mark, CRLF line ends, a last line
 !> without a newline and trailing commas on comment lines are accepted.
 !>

@@ -14,7 +14,7 @@ module seispulse_records
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use seispulse_kinds, only: dp
     use seispulse_checks, only: finite_positive
-    use seispulse_format, only: num_str, int_str
+    use seispulse_format, only: num_str, int_str, upper, quote, code_of
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error
     use seispulse_record_reader, only: read_record_file, base_name, record_format_name, &
                                        record_units_name, RECORD_AUTO, RECORD_AT2, &
@@ -27,8 +27,17 @@ module seispulse_records
               record_format_name, record_units_name
     public :: RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, RECORD_TIME_ACCEL
     public :: UNITS_G, UNITS_M_S2, UNITS_CM_S2, STANDARD_GRAVITY
+    public :: accel_unit_code, accel_unit_factor, ACCEL_UNIT_NAMES
 
     real(dp), parameter :: STANDARD_GRAVITY = 9.80665_dp  !! m/s^2, for unit conversion
+
+    !> The acceleration units accepted by name, everywhere (records, pulses, the driver,
+    !> Python): the one vocabulary. Matched without regard to case or surrounding blanks.
+    character(len=6), parameter :: ACCEL_UNIT_NAMES(6) = [character(len=6) :: 'g', 'm/s2', &
+        'm/s^2', 'cm/s2', 'cm/s^2', 'gal']
+    !> The UNITS_* code of each name of ACCEL_UNIT_NAMES.
+    integer, parameter :: ACCEL_UNIT_CODES(6) = [UNITS_G, UNITS_M_S2, UNITS_M_S2, UNITS_CM_S2, &
+        UNITS_CM_S2, UNITS_CM_S2]
 
     !> An accelerogram sampled at a constant time step, in g.
     type :: record_t
@@ -233,6 +242,65 @@ contains
             end if
         end if
     end subroutine ground_motion
+
+    !> The UNITS_* code of an acceleration unit named as in ACCEL_UNIT_NAMES ('g', 'm/s2',
+    !> 'm/s^2', 'cm/s2', 'cm/s^2', 'gal'; case and surrounding blanks ignored). An unknown
+    !> name: SEISPULSE_INVALID_INPUT, the message "'<name>': unknown acceleration unit
+    !> (allowed: ...)" (the caller puts the key in front).
+    subroutine accel_unit_code(name, code, stat, errmsg)
+        character(len=*), intent(in) :: name              !! the unit as written
+        integer, intent(out) :: code                      !! UNITS_*, 0 when unknown
+        integer, intent(out) :: stat                      !! SEISPULSE_SUCCESS or an error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        integer :: k, i
+        stat = SEISPULSE_SUCCESS
+        code = 0
+        k = code_of(upper(adjustl(name)), [(upper(ACCEL_UNIT_NAMES(i)), i = 1, &
+                                            size(ACCEL_UNIT_NAMES))])
+        if (k == 0) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, quote(trim(adjustl(name))) &
+                           //': unknown acceleration unit (allowed: '//unit_list()//')')
+            return
+        end if
+        code = ACCEL_UNIT_CODES(k)
+    end subroutine accel_unit_code
+
+    !> The factor from an acceleration unit to g: a value in `name` times `factor` is in
+    !> g (1 for g, 1/g for m/s2, 1/(100 g) for cm/s2 and gal). Names as accel_unit_code.
+    subroutine accel_unit_factor(name, g, factor, stat, errmsg)
+        character(len=*), intent(in) :: name              !! the unit as written
+        real(dp), intent(in) :: g                         !! gravity (m/s^2), finite > 0
+        real(dp), intent(out) :: factor                   !! to g; 0 on error
+        integer, intent(out) :: stat                      !! SEISPULSE_SUCCESS or an error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        integer :: code
+        factor = 0.0_dp
+        call accel_unit_code(name, code, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        if (.not. finite_positive(g)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//num_str(g) &
+                           //': must be a finite number > 0 (m/s^2)')
+            return
+        end if
+        select case (code)
+        case (UNITS_G)
+            factor = 1.0_dp
+        case (UNITS_M_S2)
+            factor = 1.0_dp / g
+        case default
+            factor = 1.0_dp / (100.0_dp * g)
+        end select
+    end subroutine accel_unit_factor
+
+    !> "g, m/s2, ..." (ACCEL_UNIT_NAMES).
+    pure function unit_list() result(s)
+        character(len=:), allocatable :: s
+        integer :: i
+        s = trim(ACCEL_UNIT_NAMES(1))
+        do i = 2, size(ACCEL_UNIT_NAMES)
+            s = s//', '//trim(ACCEL_UNIT_NAMES(i))
+        end do
+    end function unit_list
 
     !> Values in `units` to g (in place); a non-finite result is an error.
     subroutine to_g(a, units, path, stat, errmsg)

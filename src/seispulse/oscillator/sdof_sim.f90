@@ -853,16 +853,18 @@ contains
     !> Design envelope of several spectra on one period grid (doc/oscillator.md section 6): the
     !> largest ordinate at each period; below `plateau_below` (s) the curve is held at
     !> the largest ordinate at that or any longer period (the book's short-period
-    !> plateau, "peak values kept, not a decreasing branch"; 0 = no plateau).
+    !> plateau, "peak values kept, not a decreasing branch"; 0 = no plateau). The periods
+    !> may come in any order (a period twice gives the same value twice); env(i) belongs
+    !> to periods(i).
     subroutine design_envelope(periods, spectra, plateau_below, env, stat, errmsg)
-        real(dp), intent(in) :: periods(:)                    !! periods (s), ascending
+        real(dp), intent(in) :: periods(:)                    !! periods (s), any order
         real(dp), intent(in) :: spectra(:, :)                 !! ordinates, (period, spectrum)
         real(dp), intent(in) :: plateau_below                 !! plateau limit (s), >= 0
         real(dp), intent(out) :: env(:)                       !! envelope, size(periods)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        integer :: i, np
-        real(dp) :: run
+        integer :: i, j, np
+        real(dp), allocatable :: peak(:)
         stat = SEISPULSE_SUCCESS
         np = size(periods)
         if (np < 1 .or. size(spectra, 2) < 1) then
@@ -891,14 +893,6 @@ contains
                 return
             end if
         end do
-        do i = 2, np
-            if (.not. (periods(i) > periods(i - 1))) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'periods('//int_str(i) &
-                               //') = '//real_str(periods(i)) &
-                               //': the periods must be strictly ascending')
-                return
-            end if
-        end do
         if (.not. ieee_is_finite(plateau_below)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'plateau_below = ' &
                            //real_str(plateau_below)//': must be finite and >= 0 (s)')
@@ -908,13 +902,18 @@ contains
                            //real_str(plateau_below)//': must be finite and >= 0 (s)')
             return
         end if
+        allocate(peak(np))
         do i = 1, np
-            env(i) = maxval(spectra(i, :))
+            peak(i) = maxval(spectra(i, :))
         end do
-        run = env(np)
-        do i = np, 1, -1
-            run = max(run, env(i))
-            if (periods(i) < plateau_below) env(i) = run
+        env(:) = peak
+        ! the plateau: the largest ordinate at this or any longer period (by value, so that
+        ! the order of the periods does not matter)
+        do i = 1, np
+            if (.not. periods(i) < plateau_below) cycle
+            do j = 1, np
+                if (periods(j) >= periods(i)) env(i) = max(env(i), peak(j))
+            end do
         end do
     end subroutine design_envelope
 
