@@ -328,7 +328,7 @@ contains
     ! The exact rule (doc/flexible.md sections 5-7, module seispulse_flexible_exact)
     ! ------------------------------------------------------------------------------
 
-    !> FLEX_EXACT: the equivalent-linear iteration on the exact modal response, then the
+    !> FLEX_EXACT. The equivalent-linear iteration on the exact modal response, then the
     !> rigid block on the exact HEA (newmark_rigid, exact rule: mode, ky_up and the table
     !> interpolated linearly) or the exact coupled analysis (coupled_exact).
     subroutine exact_run(coupled, accel, dt, tdisp, tky, mass, g, mode, ky_up, table, res, &
@@ -439,7 +439,7 @@ contains
     ! SLAMMER 1.1's arithmetic (doc/flexible.md section 4)
     ! ------------------------------------------------------------------------------
 
-    !> FLEX_SLAMMER: both analyses in SLAMMER's units. eql_stat receives the status of the
+    !> FLEX_SLAMMER. Both analyses in SLAMMER's units. eql_stat receives the status of the
     !> equivalent-linear iteration (SEISPULSE_NO_CONVERGENCE is not an error here). The
     !> histories are filled in SLAMMER's units, then converted in place.
     subroutine slammer_run(coupled, accel, dt, tdisp, tky, mass, g, res, eql_stat, stat, &
