@@ -24,6 +24,8 @@ module seispulse_sliding_closed
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error
     use seispulse_checks, only: outside
+    use seispulse_optval, only: optval
+    use seispulse_records, only: STANDARD_GRAVITY
     use seispulse_format, only: real_str
     use seispulse_special, only: expm1, log1p, pi
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
@@ -615,12 +617,15 @@ contains
     !> K1,2 = cos(lambda - xi) +- mu sin(lambda - xi) (section 7): the along-plane slip is
     !> K times the slip of the dimensionless problem. eta = +inf when K <= 0 (the pulse
     !> cannot drive the block that way).
+    !> xi_deg is optional (default 0 as in Python's `sliding.inclined_resistances`);
+    !> when omitted, pass eta1, eta2, k1, k2 and stat by keyword.
     subroutine inclined_resistances(mu, ag_over_g, slope_deg, xi_deg, eta1, eta2, k1, k2, &
                                     stat, errmsg)
         real(dp), intent(in) :: mu                            !! friction coefficient > 0
         real(dp), intent(in) :: ag_over_g                     !! A_g/g > 0
         real(dp), intent(in) :: slope_deg                     !! lambda in [0, 90) deg
-        real(dp), intent(in) :: xi_deg                        !! xi in [-90, 90] deg
+        !> xi in [-90, 90] deg; default 0 (horizontal excitation)
+        real(dp), intent(in), optional :: xi_deg
         real(dp), intent(out) :: eta1                         !! downhill resistance / A_g
         real(dp), intent(out) :: eta2                         !! uphill resistance / A_g
         real(dp), intent(out) :: k1                           !! downhill along-plane factor
@@ -628,6 +633,8 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         real(dp) :: lam, dl, eta, inf
+        real(dp) :: xi_in
+        xi_in = optval(xi_deg, 0.0_dp)
         inf = ieee_value(inf, ieee_positive_inf)
         eta1 = ieee_value(eta1, ieee_quiet_nan)
         eta2 = eta1
@@ -643,9 +650,9 @@ contains
         else if (outside(slope_deg, 0.0_dp, 90.0_dp, .false., .true.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'slope_deg = ' &
                            //real_str(slope_deg)//': must be in [0, 90) degrees')
-        else if (outside(xi_deg, -90.0_dp, 90.0_dp, .false., .false.)) then
+        else if (outside(xi_in, -90.0_dp, 90.0_dp, .false., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'xi_deg = ' &
-                           //real_str(xi_deg)//': must be in [-90, 90] degrees')
+                           //real_str(xi_in)//': must be in [-90, 90] degrees')
         end if
         if (stat /= SEISPULSE_SUCCESS) return
         lam = slope_deg * (pi / 180.0_dp)
@@ -656,7 +663,7 @@ contains
                 //' any excitation (statically unstable slope)')
             return
         end if
-        dl = lam - xi_deg * (pi / 180.0_dp)
+        dl = lam - xi_in * (pi / 180.0_dp)
         eta = mu / ag_over_g
         k1 = cos(dl) + mu * sin(dl)
         k2 = cos(dl) - mu * sin(dl)
@@ -672,32 +679,50 @@ contains
     !> amplitude A_g (in g) and half-duration t_d (s) acting at angle xi to the horizontal,
     !> positive downhill: times in s, slips in m along the plane (with the factors K of
     !> section 7 when along_plane; without them, as in the chapter's example 1.9.2).
+    !> The arguments from full to g are optional with the defaults of Python's
+    !> `sliding.block`; when one is omitted, pass res and stat by keyword.
     subroutine block_response(mu, ag_over_g, td, beta, full, slope_deg, xi_deg, &
                               static_factor, static_reverse, along_plane, g, res, stat, errmsg)
         real(dp), intent(in) :: mu                            !! friction coefficient > 0
         real(dp), intent(in) :: ag_over_g                     !! A_g/g > 0
         real(dp), intent(in) :: td                            !! t_d, one lobe (s) > 0
         real(dp), intent(in) :: beta                          !! pulse shape, not NaN
-        logical, intent(in) :: full                           !! full cycle
-        real(dp), intent(in) :: slope_deg                     !! lambda in [0, 90) deg
-        real(dp), intent(in) :: xi_deg                        !! xi in [-90, 90] deg
-        real(dp), intent(in) :: static_factor                 !! a >= 1
-        logical, intent(in) :: static_reverse                 !! a also at the reverse onset
-        logical, intent(in) :: along_plane                    !! apply K1, K2
-        real(dp), intent(in) :: g                             !! gravity (m/s^2) > 0
+        !> full cycle (.true.) or one lobe; default .false.
+        logical, intent(in), optional :: full
+        !> lambda in [0, 90) deg; default 0 (horizontal plane)
+        real(dp), intent(in), optional :: slope_deg
+        !> xi in [-90, 90] deg; default 0 (horizontal excitation)
+        real(dp), intent(in), optional :: xi_deg
+        !> a >= 1 (static over kinetic friction); default 1
+        real(dp), intent(in), optional :: static_factor
+        !> a also at the reverse onset; default .false.
+        logical, intent(in), optional :: static_reverse
+        !> apply K1, K2; default .true.
+        logical, intent(in), optional :: along_plane
+        !> gravity (m/s^2) > 0; default STANDARD_GRAVITY (9.80665)
+        real(dp), intent(in), optional :: g
         type(sliding_block_t), intent(out) :: res                     !! the response (SI)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         real(dp) :: eta1, eta2, k1, k2
-        call inclined_resistances(mu, ag_over_g, slope_deg, xi_deg, eta1, eta2, k1, k2, &
+        logical :: full_in, reverse_in, along_in
+        real(dp) :: slope_in, xi_in, static_in, g_in
+        full_in = optval(full, .false.)
+        slope_in = optval(slope_deg, 0.0_dp)
+        xi_in = optval(xi_deg, 0.0_dp)
+        static_in = optval(static_factor, 1.0_dp)
+        reverse_in = optval(static_reverse, .false.)
+        along_in = optval(along_plane, .true.)
+        g_in = optval(g, STANDARD_GRAVITY)
+        call inclined_resistances(mu, ag_over_g, slope_in, xi_in, eta1, eta2, k1, k2, &
                                   stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (.not. along_plane) then
+        if (.not. along_in) then
             k1 = 1.0_dp
             k2 = 1.0_dp
         end if
-        call block_response_eta(eta1, eta2, k1, k2, ag_over_g, td, beta, full, static_factor, &
-                                static_reverse, g, res, stat, errmsg)
+        call block_response_eta(eta1, eta2, k1, k2, ag_over_g, td, beta, full_in, static_in, &
+                                reverse_in, g_in, res, stat, errmsg)
     end subroutine block_response
 
     !> The same from the resistances eta1, eta2 (over A_g) and the along-plane factors
