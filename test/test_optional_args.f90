@@ -17,6 +17,15 @@ module test_optional_args
     use seispulse_sliding_closed, only: sliding_block_t, block_response, inclined_resistances
     use seispulse_newmark, only: newmark_block_t, newmark_incline
     use seispulse_records, only: STANDARD_GRAVITY
+    use seispulse_pulses, only: pulse_t, exponential_pulse, triangular_pulse, exp_pulse, &
+                                exp_pulse_peaks
+    use seispulse_sliding_closed, only: half_cycle_t, full_cycle_t, yield_time, half_cycle, &
+                                        full_cycle
+    use seispulse_sliding_norm, only: table_1_3
+    use seispulse_rocking_sim, only: rocking_block_t, rectangular_block, symmetric_block
+    use seispulse_cylinder, only: rocking_body_t, cylinder_props, block_props
+    use seispulse_sdof_sim, only: sdof_response
+    use seispulse_intensity, only: spectral_acceleration
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
     private
@@ -40,7 +49,14 @@ contains
                  new_unittest('EC8 spectra: Type 1, ground A, 5 %, q 1.5, beta 0.2', &
                               test_spectra), &
                  new_unittest('block_response, inclined_resistances, newmark_incline', &
-                              test_sliding)]
+                              test_sliding), &
+                 new_unittest('pulses: full = .false., peak_frac = 0.5', test_pulses), &
+                 new_unittest('yield_time, half_cycle, full_cycle, table_1_3 defaults', &
+                              test_sliding_closed), &
+                 new_unittest('rocking blocks and bodies: g, mass defaults; p = sqrt(3g/4R)', &
+                              test_bodies), &
+                 new_unittest('sdof_response, spectral_acceleration: 5 %, standard g', &
+                              test_oscillator)]
     end subroutine collect_optional_args
 
     subroutine test_optval(error)
@@ -243,5 +259,134 @@ contains
         call newmark_incline(0.45_dp, 12.0_dp, along_plane=.false., blk=n2, stat=stat)
         call check(error, n2%k_down, 1.0_dp, rtol=0.0_dp, message='along_plane = .false.')
     end subroutine test_sliding
+
+    subroutine test_pulses(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(pulse_t) :: p1, p2
+        real(dp), parameter :: tau(4) = [0.1_dp, 0.7_dp, 1.3_dp, 2.5_dp]
+        real(dp) :: a1(4), v1(4), d1(4), a2(4), v2(4), d2(4), vg1, dg1, vg2, dg2
+        integer :: stat, i
+        p1 = exponential_pulse(2.0_dp, 0.5_dp, -3.0_dp)
+        p2 = exponential_pulse(2.0_dp, 0.5_dp, -3.0_dp, .false.)
+        call check(error, (p1%full .eqv. p2%full) .and. .not. p1%full, 'full = .false.')
+        if (allocated(error)) return
+        p1 = triangular_pulse(2.0_dp, 0.5_dp)
+        call check(error, p1%peak_frac, 0.5_dp, rtol=0.0_dp, message='peak_frac = 0.5')
+        if (allocated(error)) return
+        call exp_pulse(tau, [-3.0_dp], a=a1, v=v1, d=d1, stat=stat)
+        call check(error, stat, SEISPULSE_SUCCESS)
+        if (allocated(error)) return
+        call exp_pulse(tau, [-3.0_dp], .false., a2, v2, d2, stat)
+        do i = 1, 4
+            call check(error, d1(i), d2(i), rtol=0.0_dp, message='exp_pulse d omitted')
+            if (allocated(error)) return
+        end do
+        ! one lobe: nothing after tau = 1
+        call check(error, a1(4), 0.0_dp, atol=0.0_dp, message='one lobe: a = 0 at tau = 2.5')
+        if (allocated(error)) return
+        call exp_pulse_peaks(-3.0_dp, vg=vg1, dg=dg1, stat=stat)
+        call exp_pulse_peaks(-3.0_dp, .false., vg2, dg2, stat)
+        call check(error, vg1, vg2, rtol=0.0_dp, message='exp_pulse_peaks vg')
+        if (allocated(error)) return
+        call check(error, dg1, dg2, rtol=0.0_dp, message='exp_pulse_peaks dg')
+    end subroutine test_pulses
+
+    subroutine test_sliding_closed(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(half_cycle_t) :: h1, h2
+        type(full_cycle_t) :: f1, f2
+        real(dp) :: t1, t2, r1(6), r2(6)
+        integer :: stat, i
+        call yield_time(0.4_dp, -2.0_dp, tau_y=t1, stat=stat)
+        call yield_time(0.4_dp, -2.0_dp, 1.0_dp, t2, stat)
+        call check(error, t1, t2, rtol=0.0_dp, message='yield_time')
+        if (allocated(error)) return
+        call half_cycle(0.4_dp, -2.0_dp, res=h1, stat=stat)
+        call half_cycle(0.4_dp, -2.0_dp, 1.0_dp, h2, stat)
+        call check(error, h1%um, h2%um, rtol=0.0_dp, message='half_cycle um')
+        if (allocated(error)) return
+        call check(error, h1%tau_y, t1, rtol=0.0_dp, message='half_cycle onset = yield_time')
+        if (allocated(error)) return
+        call full_cycle(0.4_dp, 0.5_dp, -2.0_dp, res=f1, stat=stat)
+        call full_cycle(0.4_dp, 0.5_dp, -2.0_dp, 1.0_dp, .false., f2, stat)
+        call check(error, f1%um1, f2%um1, rtol=0.0_dp, message='full_cycle um1')
+        if (allocated(error)) return
+        call check(error, f1%tau_y2, f2%tau_y2, rtol=0.0_dp, message='full_cycle tau_y2')
+        if (allocated(error)) return
+        call full_cycle(0.4_dp, 0.5_dp, -2.0_dp, static_factor=1.2_dp, res=f2, stat=stat)
+        call check(error, f2%tau_y1 > f1%tau_y1, 'static friction delays the onset')
+        if (allocated(error)) return
+        call table_1_3(-2.0_dp, ratios=r1, stat=stat)
+        call table_1_3(-2.0_dp, .false., r2, stat)
+        do i = 1, 6
+            call check(error, r1(i), r2(i), rtol=0.0_dp, message='table_1_3')
+            if (allocated(error)) return
+        end do
+    end subroutine test_sliding_closed
+
+    subroutine test_bodies(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(rocking_block_t) :: k1, k2
+        type(rocking_body_t) :: c1, c2
+        integer :: stat
+        call rectangular_block(0.2_dp, 0.8_dp, blk=k1, stat=stat)
+        call check(error, stat, SEISPULSE_SUCCESS)
+        if (allocated(error)) return
+        call rectangular_block(0.2_dp, 0.8_dp, STANDARD_GRAVITY, k2, stat)
+        call check(error, k1%p, k2%p, rtol=0.0_dp, message='rectangular_block p')
+        if (allocated(error)) return
+        call check(error, k1%p, sqrt(3.0_dp*9.80665_dp/(4.0_dp*hypot(0.2_dp, 0.8_dp))), &
+                   rtol=1.0e-15_dp, message='p = sqrt(3 g/(4 R)), g = 9.80665')
+        if (allocated(error)) return
+        call symmetric_block(0.5_dp, 0.25_dp, 4.0_dp/3.0_dp, blk=k2, stat=stat)
+        call check(error, k2%p, sqrt(3.0_dp*9.80665_dp/(4.0_dp*0.5_dp)), rtol=1.0e-15_dp, &
+                   message='symmetric_block p')
+        if (allocated(error)) return
+        call cylinder_props(0.5_dp, 1.5_dp, body=c1, stat=stat)
+        call check(error, stat, SEISPULSE_SUCCESS)
+        if (allocated(error)) return
+        call cylinder_props(0.5_dp, 1.5_dp, 1.0_dp, STANDARD_GRAVITY, c2, stat)
+        call check(error, c1%j_o, c2%j_o, rtol=0.0_dp, message='cylinder J_o')
+        if (allocated(error)) return
+        call check(error, c1%mass, 1.0_dp, rtol=0.0_dp, message='cylinder mass = 1 kg')
+        if (allocated(error)) return
+        call check(error, c1%g, 9.80665_dp, rtol=0.0_dp, message='cylinder g')
+        if (allocated(error)) return
+        call block_props(0.2_dp, 0.8_dp, body=c1, stat=stat)
+        call block_props(0.2_dp, 0.8_dp, 1.0_dp, STANDARD_GRAVITY, c2, stat)
+        call check(error, c1%j_o, c2%j_o, rtol=0.0_dp, message='block J_o')
+        if (allocated(error)) return
+        ! J_o = 4/3 m R^2 of a uniform block, m = 1 kg
+        call check(error, c1%j_o, 4.0_dp/3.0_dp*(0.2_dp**2 + 0.8_dp**2), rtol=1.0e-15_dp, &
+                   message='block J_o = 4/3 m R^2')
+    end subroutine test_bodies
+
+    subroutine test_oscillator(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: n = 200
+        real(dp) :: accel(n), z1(n), v1(n), a1(n), z2(n), v2(n), a2(n), sa1, sa2
+        integer :: stat, i
+        do i = 1, n
+            accel(i) = 0.3_dp*sin(2.0_dp*pi*(i - 1)*0.01_dp/0.4_dp)
+        end do
+        call sdof_response(accel, 0.01_dp, 0.5_dp, disp=z1, vel=v1, acc=a1, stat=stat)
+        call check(error, stat, SEISPULSE_SUCCESS)
+        if (allocated(error)) return
+        call sdof_response(accel, 0.01_dp, 0.5_dp, 0.05_dp, STANDARD_GRAVITY, z2, v2, a2, stat)
+        do i = 1, n, 37
+            call check(error, z1(i), z2(i), rtol=0.0_dp, message='sdof_response z')
+            if (allocated(error)) return
+            call check(error, a1(i), a2(i), rtol=0.0_dp, message='sdof_response a')
+            if (allocated(error)) return
+        end do
+        call spectral_acceleration(accel, 0.01_dp, 0.5_dp, sa=sa1, stat=stat)
+        call check(error, stat, SEISPULSE_SUCCESS)
+        if (allocated(error)) return
+        call spectral_acceleration(accel, 0.01_dp, 0.5_dp, 0.05_dp, STANDARD_GRAVITY, sa2, stat)
+        call check(error, sa1, sa2, rtol=0.0_dp, message='spectral_acceleration')
+        if (allocated(error)) return
+        call spectral_acceleration(accel, 0.01_dp, 0.5_dp, damping=0.2_dp, sa=sa2, stat=stat)
+        call check(error, sa2 < sa1, 'more damping, lower Sa')
+    end subroutine test_oscillator
 
 end module test_optional_args

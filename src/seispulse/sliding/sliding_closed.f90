@@ -132,17 +132,22 @@ contains
 
     !> Onset time tau_y = t_y/t_d of sliding under the exponential pulse (Eq. 1.12), and
     !> with static friction a*eta at the onset (Eq. 1.34). NaN when a*eta >= 1: no sliding.
+    !> static_factor is optional (default 1, as Python's `sliding.yield_time`); when
+    !> omitted, pass tau_y and stat by keyword.
     subroutine yield_time(eta, beta, static_factor, tau_y, stat, errmsg)
         real(dp), intent(in) :: eta                           !! a_y/A_g > 0
         real(dp), intent(in) :: beta                          !! pulse shape, not NaN
-        real(dp), intent(in) :: static_factor                 !! a >= 1 (1: no static friction)
+        !> a >= 1 (1: no static friction); default 1.0
+        real(dp), intent(in), optional :: static_factor
         real(dp), intent(out) :: tau_y                        !! t_y/t_d in [0, 1/2], or NaN
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp) :: static_in
+        static_in = optval(static_factor, 1.0_dp)
         tau_y = ieee_value(tau_y, ieee_quiet_nan)
-        call check_half(eta, beta, static_factor, stat, errmsg)
+        call check_half(eta, beta, static_in, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (static_factor * eta < 1.0_dp) tau_y = exp_rise_time(static_factor * eta, beta)
+        if (static_in * eta < 1.0_dp) tau_y = exp_rise_time(static_in * eta, beta)
     end subroutine yield_time
 
     ! ------------------------------------------------------------------------------
@@ -253,24 +258,29 @@ contains
 
     !> Response to a half-cycle pulse (section 3; static friction: section 8).
     !> Sliding needs static_factor*eta < 1; otherwise regime = SLIDING_REGIME_NONE with zero slip.
+    !> static_factor is optional (default 1, as Python's `sliding.half_cycle`); when
+    !> omitted, pass res and stat by keyword.
     subroutine half_cycle(eta, beta, static_factor, res, stat, errmsg)
         real(dp), intent(in) :: eta                           !! kinetic a_y/A_g > 0
         real(dp), intent(in) :: beta                          !! pulse shape, not NaN
-        real(dp), intent(in) :: static_factor                 !! a >= 1: onset at a*eta
+        !> a >= 1: onset at a*eta; default 1.0
+        real(dp), intent(in), optional :: static_factor
         type(half_cycle_t), intent(out) :: res                !! the response
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         type(exp_consts_t) :: c
-        call check_half(eta, beta, static_factor, stat, errmsg)
+        real(dp) :: static_in
+        static_in = optval(static_factor, 1.0_dp)
+        call check_half(eta, beta, static_in, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         res%tau_y = ieee_value(res%tau_y, ieee_quiet_nan)
         res%tau_m = res%tau_y
-        if (.not. (static_factor * eta < 1.0_dp)) return
+        if (.not. (static_in * eta < 1.0_dp)) return
         c = exp_consts(beta)
-        res%tau_y = exp_rise_time(static_factor * eta, beta)
+        res%tau_y = exp_rise_time(static_in * eta, beta)
         call one_slide(c, .false., res%tau_y, eta, res%tau_m, res%um, res%dugm, res%vm, &
                        res%regime, stat, errmsg)
-        if (beta > huge(beta)) res%vm = spike_vm(static_factor * eta, eta)
+        if (beta > huge(beta)) res%vm = spike_vm(static_in * eta, eta)
     end subroutine half_cycle
 
     ! ------------------------------------------------------------------------------
@@ -282,19 +292,27 @@ contains
     !> stop of section 7). eta1 resists forward (downhill) sliding, eta2 reverse sliding.
     !> Static friction (section 8) acts at the first onset, and at the reverse onset too
     !> when static_reverse.
+    !> static_factor and static_reverse are optional (defaults 1 and .false., as Python's
+    !> `sliding.full_cycle`); when one is omitted, pass res and stat by keyword.
     subroutine full_cycle(eta1, eta2, beta, static_factor, static_reverse, res, stat, errmsg)
         real(dp), intent(in) :: eta1                          !! forward a_y1/A_g > 0
         real(dp), intent(in) :: eta2                          !! reverse a_y2/A_g > 0
         real(dp), intent(in) :: beta                          !! pulse shape, not NaN
-        real(dp), intent(in) :: static_factor                 !! a >= 1
-        logical, intent(in) :: static_reverse                 !! a also at the reverse onset
+        !> a >= 1; default 1.0
+        real(dp), intent(in), optional :: static_factor
+        !> a also at the reverse onset; default .false.
+        logical, intent(in), optional :: static_reverse
         type(full_cycle_t), intent(out) :: res                !! the response
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         type(exp_consts_t) :: c
         real(dp) :: nan, on2, tbar0, tbar_m, dug
         integer :: regime
-        call check_full(eta1, eta2, beta, static_factor, stat, errmsg)
+        real(dp) :: static_in
+        logical :: reverse_in
+        static_in = optval(static_factor, 1.0_dp)
+        reverse_in = optval(static_reverse, .false.)
+        call check_full(eta1, eta2, beta, static_in, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         nan = ieee_value(nan, ieee_quiet_nan)
         res%tau_y1 = nan
@@ -303,25 +321,25 @@ contains
         res%tau_m2 = nan
         c = exp_consts(beta)
 
-        if (.not. (static_factor * eta1 < 1.0_dp)) then
+        if (.not. (static_in * eta1 < 1.0_dp)) then
             ! no forward slide: the second lobe acts alone, as a half cycle (section 7)
-            if (.not. (static_factor * eta2 < 1.0_dp)) return
+            if (.not. (static_in * eta2 < 1.0_dp)) return
             res%mode = SLIDING_MODE_REVERSE_ONLY
-            tbar0 = exp_rise_time(static_factor * eta2, beta)
-            call reverse_slide(static_factor * eta2)
+            tbar0 = exp_rise_time(static_in * eta2, beta)
+            call reverse_slide(static_in * eta2)
             return
         end if
 
         ! forward slide: onset 1.12/1.34, stop by the corrected 1.19 on [1 - tau_y, 2 - tau_y]
-        res%tau_y1 = exp_rise_time(static_factor * eta1, beta)
+        res%tau_y1 = exp_rise_time(static_in * eta1, beta)
         call one_slide(c, .true., res%tau_y1, eta1, res%tau_m1, res%um1, dug, res%vm1, &
                        regime, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (beta > huge(beta)) res%vm1 = spike_vm(static_factor * eta1, eta1)
+        if (beta > huge(beta)) res%vm1 = spike_vm(static_in * eta1, eta1)
         res%ures = res%um1
         res%mode = SLIDING_MODE_UNILATERAL
         on2 = eta2
-        if (static_reverse) on2 = static_factor * eta2
+        if (reverse_in) on2 = static_in * eta2
         if (.not. (on2 < 1.0_dp)) return
 
         ! the second lobe exceeds on2 on (1 + tau_y(on2), 2 - tau_y(on2)) (section 7)
