@@ -10,7 +10,8 @@ derived type, or a public abstract interface):
                  `!>` before it)
   no-default     an optional dummy argument whose comment does not say what happens
                  when it is absent (words: default, absent, omitted, not present, if
-                 present, when present, if given, when given, optional)
+                 present, when present, required, if given, when given, optional);
+                 optional outputs (intent(out), errmsg) are exempt
   metadata       a doc block whose first line reads `word: ...` and that has more lines
                  (or whose `word` is one of FORD's metadata keys): FORD takes that line
                  for metadata and drops it (write `word. ...` or reword)
@@ -39,7 +40,7 @@ FORD_META_KEYS = {
     "proc_internals", "since", "source", "summary", "title", "version",
 }
 META_RE = re.compile(r"^[ ]{0,3}(?P<key>[A-Za-z0-9_-]+):\s*(?P<value>.*)")
-DEFAULT_RE = re.compile(r"default|absent|omitted|not present|if present|when present|"
+DEFAULT_RE = re.compile(r"default|absent|omitted|not present|if present|when present|required|"
                         r"if given|when given|optional", re.IGNORECASE)
 
 IDENT = r"[a-z][a-z0-9_]*"

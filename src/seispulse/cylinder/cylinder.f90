@@ -110,9 +110,12 @@ contains
         type(rocking_body_t), intent(out) :: body             !! the body
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: r_inner             !! inner radius (m), in [0, r)
-        real(dp), intent(in), optional :: j_o                 !! J_o (kg m^2), >= m R^2
-        real(dp), intent(in), optional :: j_axis              !! J about the axis (kg m^2), > 0
+        !> inner radius (m), in [0, r); default 0 (solid cylinder)
+        real(dp), intent(in), optional :: r_inner
+        !> J_o (kg m^2), >= m R^2 (custom body); default that of the solid or hollow cylinder
+        real(dp), intent(in), optional :: j_o
+        !> J about the axis (kg m^2), > 0; default (absent or NaN) that of the cylinder
+        real(dp), intent(in), optional :: j_axis
         real(dp) :: ri, mr2
         logical :: has_axis
 
@@ -233,7 +236,7 @@ contains
         type(rocking_block_t), intent(out) :: blk             !! its rocking block
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: e                   !! restitution, [0, 1]
+        real(dp), intent(in), optional :: e                   !! restitution, [0, 1]; default body%e
         logical, intent(in), optional :: linearized           !! Eq. 2.7 (default .false.)
         call check_body(body, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
@@ -260,7 +263,8 @@ contains
         type(rocking_body_t), intent(out) :: cyl              !! its solid cylinder
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: theta_c             !! slenderness (rad), (0, pi/2)
+        !> slenderness (rad), (0, pi/2); default the block's own
+        real(dp), intent(in), optional :: theta_c
         real(dp) :: th, s, big_r, r, jr
         call check_body(block, stat, errmsg, 'block')
         if (stat /= SEISPULSE_SUCCESS) return
@@ -289,7 +293,8 @@ contains
         type(rocking_body_t), intent(out) :: block            !! its uniform block
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: alpha               !! slenderness (rad), (0, pi/2)
+        !> slenderness (rad), (0, pi/2); default the body's theta_c
+        real(dp), intent(in), optional :: alpha
         real(dp) :: al, big_r, b
         call check_body(cyl, stat, errmsg, 'cyl')
         if (stat /= SEISPULSE_SUCCESS) return
@@ -385,9 +390,10 @@ contains
         integer, intent(out) :: classes(:, :)                 !! size(y) x size(x)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        type(pulse_t), intent(in), optional :: template       !! shape parameters of the kind
+        !> shape parameters of the kind; absent: pulse_t defaults (as overturning_map)
+        type(pulse_t), intent(in), optional :: template
         logical, intent(in), optional :: linearized           !! Eq. 2.7 (default .false.)
-        real(dp), intent(in), optional :: e                   !! restitution, [0, 1]
+        real(dp), intent(in), optional :: e                   !! restitution, [0, 1]; default body%e
         real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
         real(dp), intent(in), optional :: kv                  !! a_v/a_g, vertical (default 0)
         real(dp) :: fr(size(x)), ar(size(y)), ee, tan_c
@@ -509,10 +515,12 @@ contains
         real(dp), intent(out) :: pga_g(:)                     !! overturning PGA (g), size(freq_hz)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        type(pulse_t), intent(in), optional :: template       !! shape parameters of the kind
-        real(dp), intent(in), optional :: pga_max_g           !! top of the scan (g)
+        !> shape parameters of the kind; absent: pulse_t defaults (as overturning_map)
+        type(pulse_t), intent(in), optional :: template
+        !> top of the scan (g); default 20 tan(theta_c)
+        real(dp), intent(in), optional :: pga_max_g
         integer, intent(in), optional :: n_scan               !! scan size, default 200
-        real(dp), intent(in), optional :: e                   !! restitution, [0, 1]
+        real(dp), intent(in), optional :: e                   !! restitution, [0, 1]; default body%e
         logical, intent(in), optional :: linearized           !! Eq. 2.7 (default .false.)
         real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
         real(dp) :: ee, tan_c, lo0, top, ratio, fr, lo, hi, mid

@@ -291,7 +291,7 @@ contains
 
     !> The beta-dependent constants, computed once per beta.
     elemental function exp_consts(beta) result(c)
-        real(dp), intent(in) :: beta
+        real(dp), intent(in) :: beta  !! shape parameter (dimensionless), not NaN
         type(exp_consts_t) :: c
         real(dp) :: p1, p2, p3
         c%beta = beta
@@ -317,10 +317,12 @@ contains
     !> Evaluate the half or full cycle at tau (doc/pulses.md section 1 in the phi_k form).
     !> One routine, not one per phase: this is the hot loop of every pulse table.
     elemental subroutine exp_eval(c, tau, full, a, v, d)
-        type(exp_consts_t), intent(in) :: c
-        real(dp), intent(in) :: tau
-        logical, intent(in) :: full
-        real(dp), intent(out) :: a, v, d
+        type(exp_consts_t), intent(in) :: c  !! exp_consts(beta)
+        real(dp), intent(in) :: tau          !! t/t_d (dimensionless), finite
+        logical, intent(in) :: full          !! full cycle (two lobes)
+        real(dp), intent(out) :: a           !! acceleration / A_g
+        real(dp), intent(out) :: v           !! velocity / (A_g t_d)
+        real(dp), intent(out) :: d           !! displacement / (A_g t_d^2)
         real(dp) :: s, r, x, p1, p2, p3, w
         logical :: second_lobe, falling
         if (tau < 0.0_dp) then
@@ -582,7 +584,8 @@ contains
     elemental function pulse_accel(p, t, consts) result(a)
         type(pulse_t), intent(in) :: p                          !! a valid pulse
         real(dp), intent(in) :: t                               !! time (s)
-        type(exp_consts_t), intent(in), optional :: consts      !! exp_consts(p%beta)
+        !> exp_consts(p%beta), to skip recomputing it; absent: computed
+        type(exp_consts_t), intent(in), optional :: consts
         real(dp) :: a                                           !! a_g(t) (m/s^2)
         real(dp) :: v, d, te
         select case (p%kind)
@@ -685,9 +688,10 @@ contains
                                   + f%k(3)**3 * sin(f%k(3) * x + f%nu)))
     end function mp_jerk_slope
 
+    !> mp_jerk as a `scalar_function` for the root finder (units A f_p per unit x).
     function mp_jerk_eval(self, x) result(y)
-        class(mp_jerk_t), intent(inout) :: self
-        real(dp), intent(in) :: x
+        class(mp_jerk_t), intent(inout) :: self  !! wave numbers and phase
+        real(dp), intent(in) :: x                !! f_p (t - t0) (dimensionless)
         real(dp) :: y
         y = mp_jerk(self, x)
     end function mp_jerk_eval
@@ -1032,7 +1036,8 @@ contains
         real(dp), intent(out) :: a                              !! acceleration (m/s^2)
         real(dp), intent(out) :: v                              !! velocity (m/s)
         real(dp), intent(out) :: d                              !! displacement (m)
-        type(exp_consts_t), intent(in), optional :: consts      !! exp_consts(p%beta)
+        !> exp_consts(p%beta), to skip recomputing it; absent: computed
+        type(exp_consts_t), intent(in), optional :: consts
         type(exp_consts_t) :: c
         if (present(consts)) then
             call pulse_point(p, consts, pulse_end_time(p), t, a, v, d)

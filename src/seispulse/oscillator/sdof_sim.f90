@@ -102,8 +102,10 @@ contains
         real(dp), intent(in) :: damping                       !! damping ratio
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        character(len=*), intent(in), optional :: period_name   !! name in messages
-        character(len=*), intent(in), optional :: damping_name  !! name in messages
+        !> name in messages; default 'period'
+        character(len=*), intent(in), optional :: period_name
+        !> name in messages; default 'damping'
+        character(len=*), intent(in), optional :: damping_name
         character(len=:), allocatable :: pname, dname
         stat = SEISPULSE_SUCCESS
         pname = 'period'
@@ -304,7 +306,8 @@ contains
         real(dp), intent(out) :: sa(:, :)                     !! max |a_abs| (g)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        integer, intent(in), optional :: peaks                !! SDOF_PEAKS_EXACT or _SAMPLES
+        !> SDOF_PEAKS_EXACT or _SAMPLES; default SDOF_PEAKS_EXACT
+        integer, intent(in), optional :: peaks
         integer, intent(in), optional :: threads              !! OpenMP threads (0: default)
         real(dp), intent(out), optional :: t_sd(:, :)         !! time of max |z| (s)
         real(dp), intent(out), optional :: t_sv(:, :)         !! time of max |z'| (s)

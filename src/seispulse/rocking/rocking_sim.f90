@@ -344,12 +344,15 @@ contains
         type(rocking_run_t), intent(out) :: run               !! the result
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: t_grid(:)           !! output times (s), ascending
+        !> output times (s), ascending; absent: no history (with theta_grid, omega_grid)
+        real(dp), intent(in), optional :: t_grid(:)
         real(dp), intent(out), optional :: theta_grid(:)      !! theta at t_grid (rad)
         real(dp), intent(out), optional :: omega_grid(:)      !! theta' at t_grid (rad/s)
-        real(dp), intent(in), optional :: t_max               !! end of the run (s), > 0
-        real(dp), intent(in), optional :: theta0              !! initial theta (rad), |.| < pi/2
-        real(dp), intent(in), optional :: omega0              !! initial theta' (rad/s)
+        !> end of the run (s), > 0; absent: until rest, overturning or the step budget
+        real(dp), intent(in), optional :: t_max
+        !> initial theta (rad), |.| < pi/2; default 0 (at rest)
+        real(dp), intent(in), optional :: theta0
+        real(dp), intent(in), optional :: omega0              !! initial theta' (rad/s); default 0
         real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
         real(dp), intent(in), optional :: kv                  !! a_v/a_g (1), default 0
         type(rocking_state_t) :: st
@@ -409,14 +412,18 @@ contains
         type(rocking_run_t), intent(out) :: run               !! the result
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: t_grid(:)           !! output times (s), ascending
+        !> output times (s), ascending; absent: no history (with theta_grid, omega_grid)
+        real(dp), intent(in), optional :: t_grid(:)
         real(dp), intent(out), optional :: theta_grid(:)      !! theta at t_grid (rad)
         real(dp), intent(out), optional :: omega_grid(:)      !! theta' at t_grid (rad/s)
-        real(dp), intent(in), optional :: t_max               !! end of the run (s), > 0
-        real(dp), intent(in), optional :: theta0              !! initial theta (rad), |.| < pi/2
-        real(dp), intent(in), optional :: omega0              !! initial theta' (rad/s)
+        !> end of the run (s), > 0; absent: until rest, overturning or the step budget
+        real(dp), intent(in), optional :: t_max
+        !> initial theta (rad), |.| < pi/2; default 0 (at rest)
+        real(dp), intent(in), optional :: theta0
+        real(dp), intent(in), optional :: omega0              !! initial theta' (rad/s); default 0
         real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
-        real(dp), intent(in), optional :: accel_v(:)          !! vertical acceleration (g), finite
+        !> vertical acceleration (g), finite; absent: none
+        real(dp), intent(in), optional :: accel_v(:)
         type(rocking_state_t) :: st
         type(piece_iter_t) :: it
         real(dp) :: th0, om0
@@ -499,7 +506,8 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         logical, intent(in), optional :: linearized           !! Eq. 2.7 (default .false.)
-        type(pulse_t), intent(in), optional :: template       !! shape parameters of the kind
+        !> shape parameters of the kind; absent: pulse_t defaults
+        type(pulse_t), intent(in), optional :: template
         real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
         real(dp), intent(in), optional :: kv                  !! a_v/a_g (1), default 0
         type(rocking_block_t) :: blk

@@ -313,7 +313,7 @@ contains
 
     !> The name of a rigid-block model code ('' for an unknown code).
     pure function empirical_model_name(model) result(name)
-        integer, intent(in) :: model
+        integer, intent(in) :: model  !! EMP_* code of a rigid-block model
         character(len=:), allocatable :: name
         if (model >= 1 .and. model <= EMP_RIGID_MODELS) then
             name = trim(model_names(model))
@@ -324,7 +324,7 @@ contains
 
     !> The code of a rigid-block model name (0 for an unknown name).
     pure integer function empirical_model_code(name) result(model)
-        character(len=*), intent(in) :: name
+        character(len=*), intent(in) :: name  !! model name as empirical_model_name gives it
         integer :: k
         model = 0
         do k = 1, EMP_RIGID_MODELS
@@ -335,7 +335,7 @@ contains
     !> The inputs besides ky a rigid-block model takes: a sum of EMP_NEED_* bits (0 for an
     !> unknown model).
     pure integer function empirical_needs(model) result(needs)
-        integer, intent(in) :: model
+        integer, intent(in) :: model  !! EMP_* code of a rigid-block model
         select case (model)
         case (EMP_JIBSON_1993, EMP_JIBSON_1998, EMP_JIBSON_2007_ARIAS)
             needs = EMP_NEED_ARIAS
@@ -507,7 +507,7 @@ contains
         real(dp), intent(out) :: p_zero      !! probability of D <= 1 cm
         integer, intent(out) :: stat         !! SEISPULSE_SUCCESS or an error
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        logical, intent(in), optional :: slammer  !! SLAMMER 1.1's arithmetic
+        logical, intent(in), optional :: slammer  !! SLAMMER 1.1's arithmetic; default .false.
         logical :: sl
         disp_cm = 0.0_dp
         sigma = BT07_SIGMA
@@ -552,7 +552,7 @@ contains
                                              !! ky >= kmax)
         integer, intent(out) :: stat         !! SEISPULSE_SUCCESS or an error
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        logical, intent(in), optional :: slammer  !! SLAMMER 1.1's rules
+        logical, intent(in), optional :: slammer  !! SLAMMER 1.1's rules; default .false.
         logical :: sl
         real(dp) :: pr, r, f
         disp_cm = 0.0_dp

@@ -110,9 +110,12 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         integer, intent(in), optional :: mode                 !! NEWMARK_DOWN (default), BOTH, ASYM
-        real(dp), intent(in), optional :: ky_up               !! upslope yield (g), NEWMARK_ASYM
-        real(dp), intent(in), optional :: ky_disp(:)          !! table: displacement (m)
-        real(dp), intent(in), optional :: ky_values(:)        !! table: yield (g)
+        !> upslope yield (g); required for NEWMARK_ASYM, unused otherwise
+        real(dp), intent(in), optional :: ky_up
+        !> yield table: displacement (m); with ky_values, or absent (ky used)
+        real(dp), intent(in), optional :: ky_disp(:)
+        !> yield table: yield (g); with ky_disp, or absent (ky used)
+        real(dp), intent(in), optional :: ky_values(:)
         real(dp), intent(out), optional :: hea(:)             !! HEA at the samples (g)
         !> modal displacement u (m) relative to the base, the sign of (F.30): a > 0 drives u < 0
         real(dp), intent(out), optional :: u_modal(:)
@@ -137,8 +140,10 @@ contains
         type(flexible_result_t), intent(out) :: res           !! the result
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: ky_disp(:)          !! table: displacement (m)
-        real(dp), intent(in), optional :: ky_values(:)        !! table: yield (g)
+        !> yield table: displacement (m); with ky_values, or absent (ky used)
+        real(dp), intent(in), optional :: ky_disp(:)
+        !> yield table: yield (g); with ky_disp, or absent (ky used)
+        real(dp), intent(in), optional :: ky_values(:)
         real(dp), intent(out), optional :: hea(:)             !! decoupled HEA (g)
         !> modal displacement u (m) relative to the base, the sign of (F.30): a > 0 drives u < 0
         real(dp), intent(out), optional :: u_modal(:)

@@ -572,7 +572,10 @@ contains
     !> u_m = (1 - eta)/(2 eta), u_m/du_gm = (1 - eta)/(2 - eta), V_m/V_g = 1 - eta.
     elemental subroutine rectangle_half(eta, tau_m, um, ratio, vm)
         real(dp), intent(in) :: eta                 !! 0 < eta < 1
-        real(dp), intent(out) :: tau_m, um, ratio, vm
+        real(dp), intent(out) :: tau_m  !! stop t_m/t_d
+        real(dp), intent(out) :: um     !! slip u_m/(A_g t_d^2)
+        real(dp), intent(out) :: ratio  !! u_m/du_gm (dimensionless)
+        real(dp), intent(out) :: vm     !! peak sliding velocity V_m/V_g
         tau_m = 1.0_dp / eta
         um = (1.0_dp - eta) / (2.0_dp * eta)
         ratio = (1.0_dp - eta) / (2.0_dp - eta)
@@ -584,7 +587,11 @@ contains
     !> u_res = ((1 - eta)/(1 + eta))^2.
     elemental subroutine rectangle_full(eta, tau_m1, um1, tau_m2, um2, ures)
         real(dp), intent(in) :: eta                 !! 0 < eta < 1
-        real(dp), intent(out) :: tau_m1, um1, tau_m2, um2, ures
+        real(dp), intent(out) :: tau_m1  !! forward stop t_m1/t_d
+        real(dp), intent(out) :: um1     !! forward slip u_m1/(A_g t_d^2)
+        real(dp), intent(out) :: tau_m2  !! reverse stop t_m2/t_d
+        real(dp), intent(out) :: um2     !! reverse slip u_m2/(A_g t_d^2)
+        real(dp), intent(out) :: ures    !! residual slip u_res/(A_g t_d^2)
         real(dp) :: q
         q = (1.0_dp - eta) / (1.0_dp + eta)
         tau_m1 = 2.0_dp / (1.0_dp + eta)
@@ -601,8 +608,11 @@ contains
     !> eta)^3/12.
     elemental subroutine triangle_half(eta, tau_y, tau_m, um, vm, regime)
         real(dp), intent(in) :: eta                 !! 0 < eta < 1
-        real(dp), intent(out) :: tau_y, tau_m, um, vm
-        integer, intent(out) :: regime
+        real(dp), intent(out) :: tau_y  !! onset t_y/t_d
+        real(dp), intent(out) :: tau_m  !! stop t_m/t_d
+        real(dp), intent(out) :: um     !! slip u_m/(A_g t_d^2)
+        real(dp), intent(out) :: vm     !! peak sliding velocity V_m/V_g
+        integer, intent(out) :: regime  !! SLIDING_REGIME_FREE or SLIDING_REGIME_FORCED
         real(dp), parameter :: sqrt2 = sqrt(2.0_dp)
         tau_y = 0.5_dp * eta
         vm = (1.0_dp - eta)**2
