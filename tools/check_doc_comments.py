@@ -22,8 +22,11 @@ src/seispulse/core/errors.f90 (every SEISPULSE_* code with its value).
 Prints `ok   doc/<check>` or `FAIL doc/<check>: why` lines (the form tools/run_tests.py
 counts), the offending places under a FAIL, and exits 1 on any failure.
 
-Usage: python tools/check_doc_comments.py [--root DIR] [--list]   (--list: print every
-public procedure and its arguments with their comments, for review)
+Usage: python tools/check_doc_comments.py [--root DIR] [--list] [--units]
+  --list   print every public procedure and its arguments with their comments, for review
+  --units  also list the real/complex arguments whose comment names no unit (a heuristic:
+           a unit in parentheses, an SI unit word, "dimensionless", "ratio", ...); a
+           review aid, not a failure
 """
 
 import argparse
@@ -40,6 +43,11 @@ FORD_META_KEYS = {
     "proc_internals", "since", "source", "summary", "title", "version",
 }
 META_RE = re.compile(r"^[ ]{0,3}(?P<key>[A-Za-z0-9_-]+):\s*(?P<value>.*)")
+UNIT_RE = re.compile(
+    r"\((?:[^()]*\b(?:m|s|kg|N|rad|Hz|g|Pa|kPa|MPa|kN|J|W|deg|degrees|radians|percent|cm|mm|"
+    r"1/s)\b[^()]*)\)|\(-\)|\b(?:m/s\S*|rad/s|N m|kN/m\S*|dimensionless|ratio|fraction|factor|"
+    r"coefficient|any unit|units? of|unit|deg|degrees|radians|percent|A_g|t_d|g|s|m|rad|Hz)\b|%|/",
+    re.IGNORECASE)
 DEFAULT_RE = re.compile(r"default|absent|omitted|not present|if present|when present|required|"
                         r"if given|when given|optional", re.IGNORECASE)
 
@@ -380,10 +388,10 @@ def public_procs(mod):
     return sorted(n for n in names if n in mod.procs)
 
 
-def check(root, listing=False):
+def check(root, listing=False, units=False):
     files = sorted((root / "src").rglob("*.f90"))
     nfail = 0
-    undocumented, nodefault, meta = [], [], []
+    undocumented, nodefault, meta, nounit = [], [], [], []
     nprocs = nargs = 0
     for f in files:
         mods, problems = parse_file(f)
@@ -402,6 +410,9 @@ def check(root, listing=False):
                     if listing:
                         opt = " [optional]" if a in proc.optional else ""
                         print(f"    {a}{opt}: {doc}")
+                    if units and doc and proc.types.get(a, "").startswith(("real", "complex")) \
+                            and not UNIT_RE.search(doc):
+                        nounit.append(f"{where}: {pname}: {a}: {doc}")
                     if not doc:
                         undocumented.append(f"{where}: {pname}: {a}")
                     elif a in proc.optional and a not in proc.outputs and \
@@ -420,6 +431,11 @@ def check(root, listing=False):
         else:
             print(f"ok   doc/{name} ({nprocs} public procedures, {nargs} arguments)")
     nfail += check_status_codes(root)
+    if units:
+        print(f"note: {len(nounit)} real/complex arguments whose comment names no unit "
+              "(heuristic, review aid)")
+        for item in nounit:
+            print(f"    {item}")
     return nfail
 
 
@@ -460,8 +476,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--root", default=str(ROOT), help="repository root")
     parser.add_argument("--list", action="store_true", help="list the public procedures")
+    parser.add_argument("--units", action="store_true", help="list arguments without a unit")
     args = parser.parse_args()
-    return 1 if check(Path(args.root), args.list) else 0
+    return 1 if check(Path(args.root), args.list, args.units) else 0
 
 
 if __name__ == "__main__":

@@ -224,7 +224,7 @@ contains
     !> full is optional (default .false., as Python's `pulse.exp_pulse_peaks`); when
     !> omitted, pass vg, dg and stat by keyword.
     subroutine exp_pulse_peaks(beta, full, vg, dg, stat, errmsg)
-        real(dp), intent(in) :: beta                          !! shape parameter, not NaN
+        real(dp), intent(in) :: beta                          !! shape parameter (-), not NaN
         !> full cycle; default .false.
         logical, intent(in), optional :: full
         real(dp), intent(out) :: vg                           !! V_g/(A_g t_d)
@@ -251,7 +251,7 @@ contains
     !> units of I/t_d, of the pulse whose lobe has area (impulse) I; equals 1/vg and
     !> is +inf for the spike, where a/vg tends to a Dirac delta at t_d/2.
     subroutine exp_pulse_impulse_amplitude(beta, amp, stat, errmsg)
-        real(dp), intent(in) :: beta                          !! shape parameter, not NaN
+        real(dp), intent(in) :: beta                          !! shape parameter (-), not NaN
         real(dp), intent(out) :: amp                          !! A_g t_d / I
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
@@ -273,7 +273,7 @@ contains
     !> level/2 (beta = 0), 0 (-inf) and 1/2 (+inf). Unchecked.
     elemental function exp_rise_time(level, beta) result(tau)
         real(dp), intent(in) :: level  !! a/A_g in (0, 1)
-        real(dp), intent(in) :: beta   !! pulse shape, not NaN
+        real(dp), intent(in) :: beta   !! pulse shape (-), not NaN
         real(dp) :: tau
         if (beta < -huge(beta)) then
             tau = 0.0_dp
@@ -291,7 +291,7 @@ contains
 
     !> The beta-dependent constants, computed once per beta.
     elemental function exp_consts(beta) result(c)
-        real(dp), intent(in) :: beta  !! shape parameter (dimensionless), not NaN
+        real(dp), intent(in) :: beta  !! shape parameter (-), not NaN
         type(exp_consts_t) :: c
         real(dp) :: p1, p2, p3
         c%beta = beta

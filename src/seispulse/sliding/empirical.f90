@@ -124,7 +124,7 @@ contains
     elemental real(dp) function jibson_2007_ratio_m(ky, pga, m) result(d)
         real(dp), intent(in) :: ky   !! yield acceleration (g), 0 < ky < pga
         real(dp), intent(in) :: pga  !! peak ground acceleration (g)
-        real(dp), intent(in) :: m    !! moment magnitude
+        real(dp), intent(in) :: m    !! moment magnitude (-)
         d = 10.0_dp**(-2.710_dp + log10_ratio_term(ky / pga, 2.335_dp, -1.478_dp) &
                       + 0.424_dp * m)
     end function jibson_2007_ratio_m
@@ -192,7 +192,7 @@ contains
     elemental real(dp) function rathje_saygili_2009(ky, pga, m) result(d)
         real(dp), intent(in) :: ky   !! yield acceleration (g), 0 < ky < pga
         real(dp), intent(in) :: pga  !! peak ground acceleration (g)
-        real(dp), intent(in) :: m    !! moment magnitude
+        real(dp), intent(in) :: m    !! moment magnitude (-)
         d = exp(quartic(ky / pga, [4.89_dp, -4.85_dp, -19.64_dp, 42.49_dp, -29.06_dp]) &
                 + 0.72_dp * log(pga) + 0.89_dp * (m - 6.0_dp))
     end function rathje_saygili_2009
@@ -224,7 +224,7 @@ contains
         real(dp), intent(in) :: ky   !! yield coefficient (g), > 0
         real(dp), intent(in) :: ts   !! site period of the sliding mass (s), >= 0
         real(dp), intent(in) :: sa   !! Sa(1.5 Ts) (g), > 0 (PGA when Ts < 0.05 s)
-        real(dp), intent(in) :: m    !! moment magnitude
+        real(dp), intent(in) :: m    !! moment magnitude (-)
         logical, intent(in) :: slammer  !! SLAMMER's form (no nearly rigid branch)
         real(dp) :: lk, ls
         lk = log(ky)
@@ -420,7 +420,7 @@ contains
         real(dp), intent(in) :: pga          !! peak ground acceleration (g), > ky
         real(dp), intent(in) :: pgv          !! peak ground velocity (cm/s), > 0
         real(dp), intent(in) :: arias        !! Arias intensity (m/s), > 0
-        real(dp), intent(in) :: magnitude    !! moment magnitude, in (0, 10)
+        real(dp), intent(in) :: magnitude    !! moment magnitude (-), in (0, 10)
         real(dp), intent(out) :: disp_cm     !! median displacement (cm)
         real(dp), intent(out) :: sigma       !! standard deviation of log D
         integer, intent(out) :: log_base     !! EMP_LOG10 or EMP_LN
@@ -501,7 +501,7 @@ contains
         real(dp), intent(in) :: ky           !! yield coefficient (g), > 0
         real(dp), intent(in) :: ts           !! site period (s), >= 0
         real(dp), intent(in) :: sa           !! Sa(1.5 Ts) (g), > 0 (PGA for Ts < 0.05 s)
-        real(dp), intent(in) :: magnitude    !! moment magnitude, in (0, 10)
+        real(dp), intent(in) :: magnitude    !! moment magnitude (-), in (0, 10)
         real(dp), intent(out) :: disp_cm     !! median of the non-zero displacement (cm)
         real(dp), intent(out) :: sigma       !! standard deviation of ln D
         real(dp), intent(out) :: p_zero      !! probability of D <= 1 cm

@@ -136,7 +136,7 @@ contains
     !> omitted, pass tau_y and stat by keyword.
     subroutine yield_time(eta, beta, static_factor, tau_y, stat, errmsg)
         real(dp), intent(in) :: eta                           !! a_y/A_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         !> a >= 1 (1: no static friction); default 1.0
         real(dp), intent(in), optional :: static_factor
         real(dp), intent(out) :: tau_y                        !! t_y/t_d in [0, 1/2], or NaN
@@ -262,7 +262,7 @@ contains
     !> omitted, pass res and stat by keyword.
     subroutine half_cycle(eta, beta, static_factor, res, stat, errmsg)
         real(dp), intent(in) :: eta                           !! kinetic a_y/A_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         !> a >= 1: onset at a*eta; default 1.0
         real(dp), intent(in), optional :: static_factor
         type(half_cycle_t), intent(out) :: res                !! the response
@@ -297,7 +297,7 @@ contains
     subroutine full_cycle(eta1, eta2, beta, static_factor, static_reverse, res, stat, errmsg)
         real(dp), intent(in) :: eta1                          !! forward a_y1/A_g > 0
         real(dp), intent(in) :: eta2                          !! reverse a_y2/A_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         !> a >= 1; default 1.0
         real(dp), intent(in), optional :: static_factor
         !> a also at the reverse onset; default .false.
@@ -380,7 +380,7 @@ contains
     !> dimensionless pulse (A_g = 1, t_d = 1) instead of the closed forms.
     subroutine half_cycle_integrated(eta, beta, static_factor, res, stat, errmsg)
         real(dp), intent(in) :: eta                           !! kinetic a_y/A_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         real(dp), intent(in) :: static_factor                 !! a >= 1: onset at a*eta
         type(half_cycle_t), intent(out) :: res                !! the response
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
@@ -416,7 +416,7 @@ contains
                                      res, stat, errmsg)
         real(dp), intent(in) :: eta1                          !! forward a_y1/A_g > 0
         real(dp), intent(in) :: eta2                          !! reverse a_y2/A_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         real(dp), intent(in) :: static_factor                 !! a >= 1
         logical, intent(in) :: static_reverse                 !! a also at the reverse onset
         logical, intent(in) :: full                           !! full cycle
@@ -500,7 +500,7 @@ contains
     !> (reverses at once) for eta < eta_cr and sticks above (section 5), the root of
     !> tau_m1(eta) = 1 + tau_y(eta) in (0, 1). 1 for the rectangle, 0 for the spike.
     subroutine eta_critical(beta, eta_cr, stat, errmsg)
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         real(dp), intent(out) :: eta_cr                       !! critical eta
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
@@ -714,7 +714,7 @@ contains
         real(dp), intent(in) :: mu                            !! friction coefficient > 0
         real(dp), intent(in) :: ag_over_g                     !! A_g/g > 0
         real(dp), intent(in) :: td                            !! t_d, one lobe (s) > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         !> full cycle (.true.) or one lobe; default .false.
         logical, intent(in), optional :: full
         !> lambda in [0, 90) deg; default 0 (horizontal plane)
@@ -763,7 +763,7 @@ contains
         real(dp), intent(in) :: k2                            !! uphill along-plane factor
         real(dp), intent(in) :: ag_over_g                     !! A_g/g > 0
         real(dp), intent(in) :: td                            !! t_d, one lobe (s) > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         logical, intent(in) :: full                           !! full cycle
         real(dp), intent(in) :: static_factor                 !! a >= 1
         logical, intent(in) :: static_reverse                 !! a also at the reverse onset
