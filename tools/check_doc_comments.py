@@ -429,7 +429,7 @@ def check(root, listing=False, units=False):
             for item in items:
                 print(f"    {item}")
         else:
-            print(f"ok   doc/{name} ({nprocs} public procedures, {nargs} arguments)")
+            print(f"ok   doc/{name}: {nprocs} public procedures, {nargs} arguments")
     nfail += check_status_codes(root)
     if units:
         print(f"note: {len(nounit)} real/complex arguments whose comment names no unit "
@@ -467,8 +467,8 @@ def check_status_codes(root):
         for p in problems:
             print(f"    {p}")
         return 1
-    print(f"ok   doc/status-codes ({len(codes)} codes, README.md and doc/ford.md as in "
-          "errors.f90)")
+    print(f"ok   doc/status-codes: {len(codes)} codes, README.md and doc/ford.md as in "
+          "errors.f90")
     return 0
 
 

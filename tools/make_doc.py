@@ -8,7 +8,7 @@ the index, links between pages point to the HTML pages); run FORD on doc/ford.md
 with the output in <builddir>/doc/api. Any warning or error of FORD is a failure: every
 source file must parse and no doc comment may be read as FORD metadata.
 
-Prints `ok   doc/ford (...)` or `FAIL doc/ford: why` (the form tools/run_tests.py counts)
+Prints `ok   doc/ford: ...` or `FAIL doc/ford: why` (the form tools/run_tests.py counts)
 and exits 1 on failure.
 
 Usage: python tools/make_doc.py [--builddir build] [--no-install]
@@ -111,8 +111,8 @@ def main():
         return 1
     nproc = len(list((out / "proc").glob("*.html"))) if (out / "proc").is_dir() else 0
     nmod = len(list((out / "module").glob("*.html"))) if (out / "module").is_dir() else 0
-    print(f"ok   doc/ford ({nmod} modules, {nproc} procedure pages, {npages} theory pages, "
-          f"{seconds:.0f} s)")
+    print(f"ok   doc/ford: {nmod} modules, {nproc} procedure pages, {npages} theory pages, "
+          f"{seconds:.0f} s")
     print(f"API reference: {out / 'index.html'}")
     return 0
 
