@@ -5,7 +5,10 @@
 # build  meson setup + compile in build/ (the f2py extension is built with .venv's python);
 #        their output goes to build/meson-logs/*-output.txt, printed only when a step fails
 # run    build, then the batch driver on input/example.nml (tables go under out/)
-# test   everything: meson suites, a -fcheck=all/-ffpe-trap build, install and pip checks
+# test   everything: meson suites, a -fcheck=all/-ffpe-trap build, install and pip checks,
+#        the doc-comment checker and the API reference (FORD)
+# doc    the HTML API reference of the Fortran library with FORD (installed into .venv if
+#        missing): $(BUILDDIR)/doc/api/index.html
 # build, run and test also let .venv's python `import seispulse` (pylink, below)
 #
 # Variables: PYTHON (interpreter the venv is made from, default python3), BUILDDIR (build).
@@ -28,13 +31,14 @@ MESON    := PATH="$(VENV_BIN):$$PATH" $(VENV_BIN)/meson
 DRIVER   := $(BUILDDIR)/driver/seispulse
 EXAMPLE  := input/example.nml
 
-.PHONY: help deps sysdeps venv pylink build run test clean
+.PHONY: help deps sysdeps venv pylink build run test doc clean
 
 help:
 	@echo 'seispulse make targets:'
 	@echo '  make run     build, then run the driver on $(EXAMPLE) (tables go under out/)'
 	@echo '  make test    build and run every test suite; last line "N passed, N failed"'
 	@echo '  make build   configure ($(BUILDDIR)/, meson) and compile only'
+	@echo '  make doc     HTML API reference with FORD: $(BUILDDIR)/doc/api/index.html'
 	@echo '  make deps    install system packages if missing and the .venv Python tools'
 	@echo '  make clean   remove build directories (keeps .venv)'
 	@echo 'Variables: PYTHON=$(PYTHON) (interpreter for .venv)'
@@ -137,6 +141,10 @@ run: build
 # failure and the other stages still run.
 test: deps pylink
 	@$(VENV_PY) tools/run_tests.py --builddir $(BUILDDIR)
+
+# FORD (pip, into .venv when missing) on doc/ford.md: src/ and the theory pages doc/*.md
+doc: $(STAMP)
+	@$(VENV_PY) tools/make_doc.py --builddir $(BUILDDIR)
 
 clean:
 	rm -rf $(BUILDDIR) build-check build-install

@@ -1,4 +1,4 @@
-!> seispulse: closed-form and exact numerical answers for idealized near-fault
+!> The seispulse library: closed-form and exact numerical answers for idealized near-fault
 !> pulses and accelerograms. This facade re-exports the public API; `use seispulse`
 !> is all a design code needs.
 module seispulse

@@ -32,6 +32,7 @@ program tester
     use test_walls_one_term, only: collect_walls_one_term
     use test_codes, only: collect_codes
     use test_empirical, only: collect_empirical
+    use test_optional_args, only: collect_optional_args
     implicit none
     character(len=64) :: wanted
     integer :: npass, nfail, nrun
@@ -157,6 +158,10 @@ program tester
     if (selected('empirical')) then
         call collect_empirical(tests)
         call run_suite('empirical', tests, output_unit, npass, nfail)
+    end if
+    if (selected('optional_args')) then
+        call collect_optional_args(tests)
+        call run_suite('optional_args', tests, output_unit, npass, nfail)
     end if
     if (nrun == 0) then
         write(error_unit, '(a)') 'unknown suite: '//trim(wanted)

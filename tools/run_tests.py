@@ -8,6 +8,9 @@ Stages, each run even if an earlier one failed:
   install  test/install/check_install.sh: meson install to a temp prefix, link a program
            against it with pkg-config (shared and static)
   pip      test/install/check_pip.sh: pip install into a temp dir, import from outside
+  doc      tools/check_doc_comments.py (every argument of a public procedure documented,
+           optional ones with their default; README's status codes = errors.f90), then
+           tools/make_doc.py (FORD: the HTML API reference, no warning allowed)
 
 Counts come from meson-logs/testlog.json: a test whose output ends with our Fortran
 tester's `N passed, N failed` line or with pytest's summary counts those individual
@@ -35,7 +38,7 @@ VENV_BIN = ROOT / ".venv" / "bin"
 CHECK_DIR = "build-check"
 INSTALL_DIR = "build-install"
 CHECK_FFLAGS = "-O0 -g -fcheck=all -ffpe-trap=invalid,zero,overflow"
-STAGES = ("build", "check", "install", "pip")
+STAGES = ("build", "check", "install", "pip", "doc")
 MAIN_SUITES = ("unit", "python", "regression")
 
 FORTRAN_RE = re.compile(r"^\s*(\d+) passed, (\d+) failed(?:, (\d+) skipped)?\s*$")
@@ -320,6 +323,13 @@ def stage_pip(stage, env, args):
                  ["bash", ROOT / "test/install/check_pip.sh"])
 
 
+def stage_doc(stage, env, args):
+    banner("doc: doc-comment checker, FORD API reference")
+    script_stage(stage, env, [args.python, ROOT / "tools/check_doc_comments.py"])
+    script_stage(stage, env, [args.python, ROOT / "tools/make_doc.py", "--builddir",
+                              args.builddir])
+
+
 def make_env(python):
     env = dict(os.environ)
     path = [str(Path(python).parent)]
@@ -344,7 +354,7 @@ def main():
     env = make_env(args.python)
 
     funcs = {"build": stage_build, "check": stage_check, "install": stage_install,
-             "pip": stage_pip}
+             "pip": stage_pip, "doc": stage_doc}
     stages = []
     for name in args.only or STAGES:
         stage = Stage(name)

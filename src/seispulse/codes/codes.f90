@@ -69,6 +69,7 @@ module seispulse_codes
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_NO_SOLUTION, &
                                 set_error
     use seispulse_checks, only: outside
+    use seispulse_optval, only: optval
     use seispulse_format, only: real_str, int_str
     use seispulse_special, only: pi
     implicit none
@@ -150,15 +151,24 @@ contains
     !> thrust routines with +kv and -kv). r may be any value in [1, 2]: Table 7.1 has
     !> 1, 1.5 and 2 (ec8_r_factor); values in between are accepted for National Annexes
     !> and interpolation, which EN itself does not provide.
+    !> r and vertical_ratio are optional (defaults as Python's `codes.seismic_coefficients`);
+    !> when omitted, pass kh, kv and stat by keyword.
     pure subroutine ec8_seismic_coefficients(alpha, s, r, vertical_ratio, kh, kv, stat, errmsg)
         real(dp), intent(in) :: alpha           !! ag/g (ag = gamma_I agR, on ground type A), >= 0
         real(dp), intent(in) :: s               !! soil factor S (EN 1998-1 Tables 3.2/3.3), > 0
-        real(dp), intent(in) :: r               !! wall factor r (Table 7.1), in [1, 2]
-        real(dp), intent(in) :: vertical_ratio  !! avg/ag (EN 1998-1 Table 3.4), >= 0
+        !> wall factor r (Table 7.1), in [1, 2]; default 1 (as Python's
+        !> `codes.seismic_coefficients`)
+        real(dp), intent(in), optional :: r
+        !> avg/ag (EN 1998-1 Table 3.4), >= 0; default 0.90 (Type 1 spectrum,
+        !> ec8_vertical_ratio(EC8_SPECTRUM_TYPE_1))
+        real(dp), intent(in), optional :: vertical_ratio
         real(dp), intent(out) :: kh             !! horizontal seismic coefficient (dimensionless)
         real(dp), intent(out) :: kv             !! vertical coefficient, magnitude (dimensionless)
         integer, intent(out) :: stat            !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
         character(len=*), intent(inout), optional :: errmsg  !! message naming the parameter
+        real(dp) :: r_in, ratio_in
+        r_in = optval(r, 1.0_dp)
+        ratio_in = optval(vertical_ratio, ec8_vertical_ratio(EC8_SPECTRUM_TYPE_1))
         kh = 0.0_dp
         kv = 0.0_dp
         stat = SEISPULSE_SUCCESS
@@ -168,17 +178,17 @@ contains
         else if (outside(s, 0.0_dp, big, .true., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 's = '//real_str(s)// &
                            ': the soil factor S must be finite and > 0')
-        else if (outside(r, 1.0_dp, 2.0_dp, .false., .false.)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'r = '//real_str(r)// &
+        else if (outside(r_in, 1.0_dp, 2.0_dp, .false., .false.)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'r = '//real_str(r_in)// &
                            ': must lie in [1, 2] (EN 1998-5 Table 7.1: 1, 1.5, 2)')
-        else if (outside(vertical_ratio, 0.0_dp, big, .false., .false.)) then
+        else if (outside(ratio_in, 0.0_dp, big, .false., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'vertical_ratio = '// &
-                           real_str(vertical_ratio)//': avg/ag must be finite and >= 0 '// &
+                           real_str(ratio_in)//': avg/ag must be finite and >= 0 '// &
                            '(ec8_vertical_ratio gives NaN for an unknown spectrum type)')
         end if
         if (stat /= SEISPULSE_SUCCESS) return
-        kh = alpha*s/r                                   ! (7.1)
-        if (vertical_ratio > 0.6_dp) then
+        kh = alpha*s/r_in                                ! (7.1)
+        if (ratio_in > 0.6_dp) then
             kv = 0.5_dp*kh                               ! (7.2)
         else
             kv = 0.33_dp*kh                              ! (7.3)
@@ -228,31 +238,44 @@ contains
     !> tan(theta) = kh/(1 - kv) with kv signed (dry backfill; ec8_thrust handles water).
     !> SEISPULSE_NO_SOLUTION when no planar wedge is in equilibrium (then k = 0, theta is
     !> set, and for an active backfill steeper than phi_d - theta `k_e3` holds EN's E.3).
+    !> The five arguments after kv are optional with the defaults of Python's
+    !> `codes.mononobe_okabe` (a vertical wall, smooth, level dry backfill, active,
+    !> characteristic values); when one is omitted, pass k, theta and stat by keyword:
+    !> `call mononobe_okabe(30.0_dp, 0.1_dp, 0.0_dp, k=k, theta=theta, stat=stat)`.
     pure subroutine mononobe_okabe(phi_deg, kh, kv, delta_deg, psi_deg, beta_deg, passive, &
                                    gamma_phi, k, theta, stat, errmsg, k_e3)
         real(dp), intent(in) :: phi_deg    !! soil friction angle phi', degrees, in (0, 90)
         real(dp), intent(in) :: kh         !! horizontal seismic coefficient, finite, >= 0
         real(dp), intent(in) :: kv         !! vertical seismic coefficient, signed (> 0 upward), < 1
-        real(dp), intent(in) :: delta_deg  !! soil-wall friction angle, degrees, in [0, phi_deg]
-        real(dp), intent(in) :: psi_deg    !! back face to horizontal, deg, (0, 180); 90 vertical
-        real(dp), intent(in) :: beta_deg   !! backfill slope, degrees, in (-90, 90), > 0 rising
-        logical, intent(in) :: passive     !! .true.: passive coefficient; .false.: active
-        real(dp), intent(in) :: gamma_phi  !! partial factor on tan(phi') and tan(delta), >= 1
+        !> soil-wall friction angle, degrees, in [0, phi_deg]; default 0
+        real(dp), intent(in), optional :: delta_deg
+        !> back face to horizontal, degrees, (0, 180); default 90 (vertical)
+        real(dp), intent(in), optional :: psi_deg
+        !> backfill slope, degrees, in (-90, 90), > 0 rising; default 0 (level)
+        real(dp), intent(in), optional :: beta_deg
+        !> .true.: passive coefficient; .false.: active; default .false.
+        logical, intent(in), optional :: passive
+        !> partial factor on tan(phi') and tan(delta), >= 1; default 1 (characteristic)
+        real(dp), intent(in), optional :: gamma_phi
         real(dp), intent(out) :: k         !! K (dimensionless): thrust = 1/2 gamma (1 - kv) K H^2
         real(dp), intent(out) :: theta     !! seismic angle theta = atan(kh/(1 - kv)), radians
         integer, intent(out) :: stat       !! SEISPULSE_SUCCESS, _INVALID_INPUT or _NO_SOLUTION
         character(len=*), intent(inout), optional :: errmsg  !! message naming the parameter
         real(dp), intent(out), optional :: k_e3  !! E.3 when beta > phi_d - theta (active), else 0
-        real(dp) :: phi, delta, psi, beta, ke3
+        real(dp) :: phi, delta, psi, beta, ke3, delta_in, psi_in, beta_in, gphi_in
         integer :: code
         k = 0.0_dp
         theta = 0.0_dp
         if (present(k_e3)) k_e3 = 0.0_dp
-        call mo_check(phi_deg, kh, kv, delta_deg, psi_deg, beta_deg, gamma_phi, stat, errmsg)
+        delta_in = optval(delta_deg, 0.0_dp)
+        psi_in = optval(psi_deg, 90.0_dp)
+        beta_in = optval(beta_deg, 0.0_dp)
+        gphi_in = optval(gamma_phi, 1.0_dp)
+        call mo_check(phi_deg, kh, kv, delta_in, psi_in, beta_in, gphi_in, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call design_angles(phi_deg, delta_deg, psi_deg, beta_deg, gamma_phi, phi, delta, psi, beta)
+        call design_angles(phi_deg, delta_in, psi_in, beta_in, gphi_in, phi, delta, psi, beta)
         theta = atan2(kh, 1.0_dp - kv)                   ! Annex E(5): tan theta = kh/(1 - kv)
-        call mo_core(phi, delta, psi, beta, theta, passive, k, ke3, code)
+        call mo_core(phi, delta, psi, beta, theta, optval(passive, .false.), k, ke3, code)
         if (code /= MO_OK) then
             call mo_fail(code, phi, delta, psi, beta, theta, ke3, '', stat, errmsg)
             if (present(k_e3) .and. code == MO_BEYOND_LIMIT) k_e3 = ke3
@@ -449,64 +472,85 @@ contains
     !> passive thrusts call mononobe_okabe. m_base sums thrust x height with every thrust
     !> taken as a horizontal force (exact for a vertical back and delta = 0; resolve the
     !> inclined thrust yourself otherwise).
+    !> delta_deg, psi_deg, beta_deg and the four arguments after kv are optional with the
+    !> defaults of Python's `codes.earth_thrust`; when one is omitted, pass the arguments
+    !> after it by keyword: `call ec8_thrust(6.0_dp, 20.0_dp, 30.0_dp, kh=0.1_dp, kv=0.05_dp,
+    !> res=res, stat=stat)` is a dry backfill behind a smooth vertical wall.
     pure subroutine ec8_thrust(height, gamma, phi_deg, delta_deg, psi_deg, beta_deg, kh, kv, &
                                water_case, gamma_w, gamma_d, gamma_phi, res, stat, errmsg)
         real(dp), intent(in) :: height     !! vertical height H of the back face, m, > 0
         real(dp), intent(in) :: gamma      !! soil unit weight (saturated below water), kN/m3, > 0
         real(dp), intent(in) :: phi_deg    !! friction angle phi', degrees, (0, 90)
-        real(dp), intent(in) :: delta_deg  !! soil-wall friction angle, degrees, [0, phi_deg]
-        real(dp), intent(in) :: psi_deg    !! back face to the horizontal, degrees, (0, 180)
-        real(dp), intent(in) :: beta_deg   !! backfill slope, degrees, (-90, 90)
+        !> soil-wall friction angle, degrees, [0, phi_deg]; default 0
+        real(dp), intent(in), optional :: delta_deg
+        !> back face to the horizontal, degrees, (0, 180); default 90 (vertical)
+        real(dp), intent(in), optional :: psi_deg
+        !> backfill slope, degrees, (-90, 90), > 0 rising; default 0 (level)
+        real(dp), intent(in), optional :: beta_deg
         real(dp), intent(in) :: kh         !! horizontal seismic coefficient, >= 0
         real(dp), intent(in) :: kv         !! vertical seismic coefficient, signed (> 0 upward), < 1
-        integer, intent(in) :: water_case  !! WATER_DRY, WATER_IMPERVIOUS or WATER_PERMEABLE
-        real(dp), intent(in) :: gamma_w    !! water unit weight, kN/m3, (0, gamma) (cases 2, 3)
-        real(dp), intent(in) :: gamma_d    !! dry unit weight of the soil, kN/m3, > 0 (case 3)
-        real(dp), intent(in) :: gamma_phi  !! partial factor on tan(phi') and tan(delta), >= 1
+        !> WATER_DRY, WATER_IMPERVIOUS or WATER_PERMEABLE; default WATER_DRY
+        integer, intent(in), optional :: water_case
+        !> water unit weight, kN/m3, (0, gamma) (cases 2, 3); default 9.81
+        real(dp), intent(in), optional :: gamma_w
+        !> dry unit weight of the soil, kN/m3, > 0; required for WATER_PERMEABLE, unused
+        !> otherwise (default 0)
+        real(dp), intent(in), optional :: gamma_d
+        !> partial factor on tan(phi') and tan(delta), >= 1; default 1 (characteristic)
+        real(dp), intent(in), optional :: gamma_phi
         type(ec8_thrust_t), intent(out) :: res  !! thrusts kN/m, heights m, moment kNm/m
         integer, intent(out) :: stat       !! SEISPULSE_SUCCESS, _INVALID_INPUT or _NO_SOLUTION
         character(len=*), intent(inout), optional :: errmsg  !! message naming the parameter
         real(dp) :: phi, delta, psi, beta, gstar, ratio, ke3, theta
         integer :: code
         character(len=:), allocatable :: context
+        real(dp) :: delta_in, psi_in, beta_in, gamma_w_in, gamma_d_in, gphi_in
+        integer :: water
         stat = SEISPULSE_SUCCESS
+        delta_in = optval(delta_deg, 0.0_dp)
+        psi_in = optval(psi_deg, 90.0_dp)
+        beta_in = optval(beta_deg, 0.0_dp)
+        water = optval(water_case, WATER_DRY)
+        gamma_w_in = optval(gamma_w, 9.81_dp)
+        gamma_d_in = optval(gamma_d, 0.0_dp)
+        gphi_in = optval(gamma_phi, 1.0_dp)
         if (outside(height, 0.0_dp, big, .true., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'height = '//real_str(height)// &
                            ': the wall height H (m) must be finite and > 0')
         else if (outside(gamma, 0.0_dp, big, .true., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'gamma = '//real_str(gamma)// &
                            ': the unit weight (kN/m3) must be finite and > 0')
-        else if (water_case < WATER_DRY .or. water_case > WATER_PERMEABLE) then
+        else if (water < WATER_DRY .or. water > WATER_PERMEABLE) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'water_case = '// &
-                           int_str(water_case)//': must be 1 (dry), 2 (impervious, below '// &
+                           int_str(water)//': must be 1 (dry), 2 (impervious, below '// &
                            'the water table) or 3 (permeable, below the water table)')
-        else if (water_case /= WATER_DRY .and. outside(gamma_w, 0.0_dp, gamma, .true., .true.)) then
+        else if (water /= WATER_DRY .and. outside(gamma_w_in, 0.0_dp, gamma, .true., .true.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'gamma_w = '// &
-                           real_str(gamma_w)//': the unit weight of water (kN/m3) must lie in '// &
-                           '(0, gamma) = (0, '//real_str(gamma)//') below the water table')
-        else if (water_case == WATER_PERMEABLE .and. &
-                 outside(gamma_d, 0.0_dp, big, .true., .false.)) then
+                           real_str(gamma_w_in)//': the unit weight of water (kN/m3) must '// &
+                           'lie in (0, gamma) = (0, '//real_str(gamma)//') below the water table')
+        else if (water == WATER_PERMEABLE .and. &
+                 outside(gamma_d_in, 0.0_dp, big, .true., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'gamma_d = '// &
-                           real_str(gamma_d)//': the dry unit weight (kN/m3) must be finite '// &
+                           real_str(gamma_d_in)//': the dry unit weight (kN/m3) must be finite '// &
                            'and > 0 for permeable soil')
         end if
         if (stat /= SEISPULSE_SUCCESS) return
-        call mo_check(phi_deg, kh, kv, delta_deg, psi_deg, beta_deg, gamma_phi, stat, errmsg)
+        call mo_check(phi_deg, kh, kv, delta_in, psi_in, beta_in, gphi_in, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call design_angles(phi_deg, delta_deg, psi_deg, beta_deg, gamma_phi, phi, delta, psi, beta)
+        call design_angles(phi_deg, delta_in, psi_in, beta_in, gphi_in, phi, delta, psi, beta)
 
-        select case (water_case)
+        select case (water)
         case (WATER_DRY)
             gstar = gamma
             ratio = 1.0_dp
             context = ''
         case (WATER_IMPERVIOUS)
-            gstar = gamma - gamma_w
+            gstar = gamma - gamma_w_in
             ratio = gamma/gstar                          ! E.9? (not verified)
             context = ', impervious soil'
         case default
-            gstar = gamma - gamma_w
-            ratio = gamma_d/gstar                        ! E.12? (not verified)
+            gstar = gamma - gamma_w_in
+            ratio = gamma_d_in/gstar                     ! E.12? (not verified)
             context = ', permeable soil'
         end select
         theta = atan2(ratio*kh, 1.0_dp - kv)
@@ -529,8 +573,8 @@ contains
         res%e_soil = 0.5_dp*gstar*(1.0_dp - kv)*res%k*height**2      ! E.1, soil term
         res%e_static = 0.5_dp*gstar*res%k_static*height**2
         res%e_dynamic = res%e_soil - res%e_static
-        if (water_case /= WATER_DRY) res%e_ws = 0.5_dp*gamma_w*height**2
-        if (water_case == WATER_PERMEABLE) res%e_wd = 7.0_dp/12.0_dp*kh*gamma_w*height**2   ! E.13
+        if (water /= WATER_DRY) res%e_ws = 0.5_dp*gamma_w_in*height**2
+        if (water == WATER_PERMEABLE) res%e_wd = 7.0_dp/12.0_dp*kh*gamma_w_in*height**2   ! E.13
         res%total = res%e_soil + res%e_ws + res%e_wd
         res%z_static = height/3.0_dp
         res%z_dynamic = 0.5_dp*height
@@ -733,25 +777,35 @@ contains
     !> Horizontal elastic response spectrum, EN 1998-1 §3.2.2.2 (3.2)-(3.5), recommended
     !> S, TB, TC, TD. EN states the forms for 0 <= T <= 4 s; (3.5) is applied beyond 4 s
     !> too (EN 1998-1 Annex A covers long periods). Se is in the units of ag.
+    !> spectrum_type, ground and xi_percent are optional (defaults as Python's
+    !> `codes.elastic_spectrum`); when one is omitted, pass se and stat by keyword.
     pure subroutine ec8_elastic_spectrum(periods, ag, spectrum_type, ground, xi_percent, se, &
                                          stat, errmsg)
         real(dp), intent(in) :: periods(:)    !! periods T, s, finite, >= 0
         real(dp), intent(in) :: ag            !! ground accel. on type A ground (any unit), >= 0
-        integer, intent(in) :: spectrum_type  !! EC8_SPECTRUM_TYPE_1 or _2
-        integer, intent(in) :: ground         !! EC8_GROUND_A .. _E
-        real(dp), intent(in) :: xi_percent    !! viscous damping, percent, >= 0 (5 gives eta = 1)
+        !> EC8_SPECTRUM_TYPE_1 or _2; default EC8_SPECTRUM_TYPE_1
+        integer, intent(in), optional :: spectrum_type
+        !> EC8_GROUND_A .. _E; default EC8_GROUND_A
+        integer, intent(in), optional :: ground
+        !> viscous damping, percent, >= 0 (5 gives eta = 1); default 5
+        real(dp), intent(in), optional :: xi_percent
         real(dp), intent(out) :: se(:)        !! Se(T), units of ag (size of periods)
         integer, intent(out) :: stat          !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
         character(len=*), intent(inout), optional :: errmsg  !! message naming the parameter
         real(dp) :: s, tb, tc, td, eta, t, plateau
         integer :: i
+        integer :: type_in, ground_in
+        real(dp) :: xi_in
+        type_in = optval(spectrum_type, EC8_SPECTRUM_TYPE_1)
+        ground_in = optval(ground, EC8_GROUND_A)
+        xi_in = optval(xi_percent, 5.0_dp)
         se = 0.0_dp
-        call spectrum_check(periods, ag, size(se), 'se', spectrum_type, ground, stat, errmsg)
+        call spectrum_check(periods, ag, size(se), 'se', type_in, ground_in, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call ec8_check_damping(xi_percent, stat, errmsg)
+        call ec8_check_damping(xi_in, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call ec8_ground_parameters(spectrum_type, ground, s, tb, tc, td, stat, errmsg)
-        eta = ec8_damping_correction(xi_percent)
+        call ec8_ground_parameters(type_in, ground_in, s, tb, tc, td, stat, errmsg)
+        eta = ec8_damping_correction(xi_in)
         plateau = ag*s*eta*2.5_dp
         do i = 1, size(periods)
             t = periods(i)
@@ -771,39 +825,51 @@ contains
     !> floor beta ag for T >= TC (beta = 0.2 recommended, an NDP). q >= 1 is accepted;
     !> the 2/3 ag S at T = 0 of (3.13) presumes q >= 1.5 (for q < 1.5 it lies below the
     !> elastic ag S/q).
+    !> spectrum_type, ground, q and beta are optional (defaults as Python's
+    !> `codes.design_spectrum`); when one is omitted, pass sd and stat by keyword.
     pure subroutine ec8_design_spectrum(periods, ag, spectrum_type, ground, q, beta, sd, stat, &
                                         errmsg)
         real(dp), intent(in) :: periods(:)    !! periods T, s, finite, >= 0
         real(dp), intent(in) :: ag            !! ground accel. on type A ground (any unit), >= 0
-        integer, intent(in) :: spectrum_type  !! EC8_SPECTRUM_TYPE_1 or _2
-        integer, intent(in) :: ground         !! EC8_GROUND_A .. _E
-        real(dp), intent(in) :: q             !! behaviour factor, finite, >= 1
-        real(dp), intent(in) :: beta          !! lower-bound factor, finite, >= 0 (0.2 recommended)
+        !> EC8_SPECTRUM_TYPE_1 or _2; default EC8_SPECTRUM_TYPE_1
+        integer, intent(in), optional :: spectrum_type
+        !> EC8_GROUND_A .. _E; default EC8_GROUND_A
+        integer, intent(in), optional :: ground
+        !> behaviour factor, finite, >= 1; default 1.5
+        real(dp), intent(in), optional :: q
+        !> lower-bound factor, finite, >= 0; default 0.2 (recommended)
+        real(dp), intent(in), optional :: beta
         real(dp), intent(out) :: sd(:)        !! Sd(T), units of ag (size of periods)
         integer, intent(out) :: stat          !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
         character(len=*), intent(inout), optional :: errmsg  !! message naming the parameter
         real(dp) :: s, tb, tc, td, t, plateau, floor
         integer :: i
+        integer :: type_in, ground_in
+        real(dp) :: q_in, beta_in
+        type_in = optval(spectrum_type, EC8_SPECTRUM_TYPE_1)
+        ground_in = optval(ground, EC8_GROUND_A)
+        q_in = optval(q, 1.5_dp)
+        beta_in = optval(beta, 0.2_dp)
         sd = 0.0_dp
-        call spectrum_check(periods, ag, size(sd), 'sd', spectrum_type, ground, stat, errmsg)
+        call spectrum_check(periods, ag, size(sd), 'sd', type_in, ground_in, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (outside(q, 1.0_dp, big, .false., .false.)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'q = '//real_str(q)// &
+        if (outside(q_in, 1.0_dp, big, .false., .false.)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'q = '//real_str(q_in)// &
                            ': the behaviour factor must be finite and >= 1')
             return
         end if
-        if (outside(beta, 0.0_dp, big, .false., .false.)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'beta = '//real_str(beta)// &
+        if (outside(beta_in, 0.0_dp, big, .false., .false.)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'beta = '//real_str(beta_in)// &
                            ': the lower-bound factor must be finite and >= 0 (0.2 recommended)')
             return
         end if
-        call ec8_ground_parameters(spectrum_type, ground, s, tb, tc, td, stat, errmsg)
-        plateau = ag*s*2.5_dp/q
-        floor = beta*ag
+        call ec8_ground_parameters(type_in, ground_in, s, tb, tc, td, stat, errmsg)
+        plateau = ag*s*2.5_dp/q_in
+        floor = beta_in*ag
         do i = 1, size(periods)
             t = periods(i)
             if (t <= tb) then
-                sd(i) = ag*s*(2.0_dp/3.0_dp + t/tb*(2.5_dp/q - 2.0_dp/3.0_dp))   ! (3.13)
+                sd(i) = ag*s*(2.0_dp/3.0_dp + t/tb*(2.5_dp/q_in - 2.0_dp/3.0_dp)) ! (3.13)
             else if (t <= tc) then
                 sd(i) = plateau                                              ! (3.14)
             else if (t <= td) then

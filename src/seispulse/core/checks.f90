@@ -80,7 +80,8 @@ contains
         character(len=*), intent(in) :: name                  !! their name in messages
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        character(len=*), intent(in), optional :: unit        !! appended to the message
+        !> appended to the message (e.g. " (s)"); absent: nothing
+        character(len=*), intent(in), optional :: unit
         integer :: i
         character(len=24) :: idx
         character(len=:), allocatable :: msg
@@ -122,9 +123,12 @@ contains
         character(len=*), intent(in) :: x_name, y_name        !! names of the grids in messages
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: t_grid(:)           !! output times
-        real(dp), intent(in), optional :: x_grid(:)           !! first output grid
-        real(dp), intent(in), optional :: y_grid(:)           !! second output grid
+        !> output times (s); all three grids present or all absent (no output)
+        real(dp), intent(in), optional :: t_grid(:)
+        !> first output grid; present with t_grid, else absent
+        real(dp), intent(in), optional :: x_grid(:)
+        !> second output grid; present with t_grid, else absent
+        real(dp), intent(in), optional :: y_grid(:)
         character(len=:), allocatable :: together
         stat = SEISPULSE_SUCCESS
         if (.not. (present(t_grid) .or. present(x_grid) .or. present(y_grid))) return
@@ -154,7 +158,8 @@ contains
         character(len=*), intent(in) :: names(4)              !! names of h1..h4 in messages
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: h1(:), h2(:), h3(:), h4(:)  !! the histories
+        !> the histories (any unit); each absent one is not checked
+        real(dp), intent(in), optional :: h1(:), h2(:), h3(:), h4(:)
         logical :: bad(4)
         integer :: k
         stat = SEISPULSE_SUCCESS

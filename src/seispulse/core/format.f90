@@ -48,7 +48,7 @@ contains
     !> A number for messages: fixed notation with up to 15 significant digits for
     !> 1e-5 <= |x| < 1e15 ("0.01", "133.895", "-0.35"), real_str's form otherwise.
     pure function num_str(x) result(s)
-        real(dp), intent(in) :: x
+        real(dp), intent(in) :: x  !! the number (any unit; the caller writes the unit)
         character(len=:), allocatable :: s
         character(len=64) :: buf
         integer :: nd, k
@@ -83,7 +83,7 @@ contains
     !> 'text' for a message, cut to QUOTE_MAX bytes (at a UTF-8 character boundary)
     !> with '...' when longer.
     pure function quote(text) result(s)
-        character(len=*), intent(in) :: text
+        character(len=*), intent(in) :: text  !! the text to quote (any length)
         character(len=:), allocatable :: s
         integer :: k
         if (len(text) <= QUOTE_MAX) then
@@ -101,7 +101,7 @@ contains
 
     !> s in upper case (ASCII letters only).
     pure function upper(s) result(u)
-        character(len=*), intent(in) :: s
+        character(len=*), intent(in) :: s  !! the text (ASCII or UTF-8)
         character(len=len(s)) :: u
         integer :: i, c
         do i = 1, len(s)

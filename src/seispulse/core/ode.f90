@@ -711,9 +711,10 @@ contains
         v = v + self%y0(m)
     end function dense_component
 
+    !> sgn y(comp)(t0 + x h) - level: the function `ode_locate` finds the roots of.
     function dense_eval(self, x) result(y)
-        class(ode_dense_base), intent(inout) :: self
-        real(dp), intent(in) :: x
+        class(ode_dense_base), intent(inout) :: self  !! the dense output of one step
+        real(dp), intent(in) :: x  !! fraction of the step (dimensionless), in [0, 1]
         real(dp) :: y
         y = self%sgn * self%component(self%comp, x) - self%level
     end function dense_eval

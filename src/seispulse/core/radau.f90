@@ -169,7 +169,9 @@ contains
     pure function ode_radau5_factor(err, newton_iters, theta) result(fac)
         real(dp), intent(in) :: err            !! error norm of the step, >= 0, or huge
         integer, intent(in) :: newton_iters    !! Newton iterations of the step (1..7)
-        real(dp), intent(in), optional :: theta  !! Newton contraction rate of the step
+        !> Newton contraction rate of the step (dimensionless); absent: the step size is always
+        !> changed
+        real(dp), intent(in), optional :: theta
         real(dp) :: fac
         real(dp) :: sf
         if (err >= huge(1.0_dp)) then

@@ -63,8 +63,10 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         integer, intent(in), optional :: max_iter             !! evaluation limit (default 1000)
-        real(dp), intent(in), optional :: fa_known            !! f(a), if the caller has it
-        real(dp), intent(in), optional :: fb_known            !! f(b), if the caller has it
+        !> f(a), if the caller has it; absent: evaluated
+        real(dp), intent(in), optional :: fa_known
+        !> f(b), if the caller has it; absent: evaluated
+        real(dp), intent(in), optional :: fb_known
         integer, intent(out), optional :: n_eval              !! evaluations used
         real(dp) :: fa, fb, xl, xh, fx, dfx, step, step_old, tol
         integer :: iter, limit, evals
@@ -160,8 +162,10 @@ contains
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         real(dp), intent(in), optional :: xtol                !! absolute tolerance in x (default 0)
         integer, intent(in), optional :: max_iter             !! evaluation limit (default 1000)
-        real(dp), intent(in), optional :: fa_known            !! f(a), if the caller has it
-        real(dp), intent(in), optional :: fb_known            !! f(b), if the caller has it
+        !> f(a), if the caller has it; absent: evaluated
+        real(dp), intent(in), optional :: fa_known
+        !> f(b), if the caller has it; absent: evaluated
+        real(dp), intent(in), optional :: fb_known
         integer, intent(out), optional :: n_eval              !! evaluations used
         real(dp) :: xa, xb, xc, fa, fb, fc, d, e, tol1, xm, p, q, r, s, abs_tol
         integer :: iter, limit, evals

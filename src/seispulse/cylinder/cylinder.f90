@@ -18,6 +18,8 @@ module seispulse_cylinder
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
                                 SEISPULSE_NO_CONVERGENCE, set_error
     use seispulse_format, only: real_str, int_str
+    use seispulse_optval, only: optval
+    use seispulse_records, only: STANDARD_GRAVITY
     use seispulse_special, only: pi
     use seispulse_pulses, only: pulse_t
     use seispulse_rocking_sim, only: rocking_block_t, symmetric_block, overturning_map
@@ -96,21 +98,31 @@ contains
     !> (Y.6), Housner's e = max(0, 1 - (2 m R^2/J_o) sin^2 theta_c) (Y.7), W = m g,
     !> M_max = m g r and F_uplift = W r/h (Y.11). A NaN j_axis counts as not given;
     !> j_axis is only taken with j_o (solid and hollow cylinders compute theirs).
+    !> mass and g are optional (defaults 1 kg and STANDARD_GRAVITY, as Python's
+    !> `cylinder.props`); when one is omitted, pass body and stat by keyword.
     subroutine cylinder_props(r, h, mass, g, body, stat, errmsg, r_inner, j_o, j_axis)
         real(dp), intent(in) :: r                             !! base radius (m), > 0
         real(dp), intent(in) :: h                             !! CoM height (m), > 0
-        real(dp), intent(in) :: mass                          !! mass (kg), > 0
-        real(dp), intent(in) :: g                             !! gravity (m/s^2), > 0
+        !> mass (kg), > 0; default 1.0
+        real(dp), intent(in), optional :: mass
+        !> gravity (m/s^2), > 0; default STANDARD_GRAVITY (9.80665 m/s^2)
+        real(dp), intent(in), optional :: g
         type(rocking_body_t), intent(out) :: body             !! the body
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: r_inner             !! inner radius (m), in [0, r)
-        real(dp), intent(in), optional :: j_o                 !! J_o (kg m^2), >= m R^2
-        real(dp), intent(in), optional :: j_axis              !! J about the axis (kg m^2), > 0
+        !> inner radius (m), in [0, r); default 0 (solid cylinder)
+        real(dp), intent(in), optional :: r_inner
+        !> J_o (kg m^2), >= m R^2 (custom body); default that of the solid or hollow cylinder
+        real(dp), intent(in), optional :: j_o
+        !> J about the axis (kg m^2), > 0; default (absent or NaN) that of the cylinder
+        real(dp), intent(in), optional :: j_axis
         real(dp) :: ri, mr2
         logical :: has_axis
 
-        call check_geometry(r, 'r', 'the base radius', h, mass, g, stat, errmsg)
+        real(dp) :: mass_in, g_in
+        mass_in = optval(mass, 1.0_dp)
+        g_in = optval(g, STANDARD_GRAVITY)
+        call check_geometry(r, 'r', 'the base radius', h, mass_in, g_in, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         ri = 0.0_dp
         if (present(r_inner)) then
@@ -126,11 +138,11 @@ contains
         if (present(j_axis)) has_axis = .not. ieee_is_nan(j_axis)
         body%r = r
         body%h = h
-        body%mass = mass
-        body%g = g
+        body%mass = mass_in
+        body%g = g_in
         body%big_r = hypot(r, h)                                            ! (Y.1)
         body%theta_c = atan2(r, h)                                          ! (Y.1)
-        mr2 = mass * body%big_r**2
+        mr2 = mass_in * body%big_r**2
         if (present(j_o)) then
             if (ri > 0.0_dp) then
                 call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'r_inner = ' &
@@ -172,9 +184,9 @@ contains
             end if
             body%r_inner = ri
             ! (Y.2), (Y.4): transverse diameter axis through the centre of mass
-            body%j_g = mass * (3.0_dp * (r * r + ri * ri) + 4.0_dp * h * h) / 12.0_dp
+            body%j_g = mass_in * (3.0_dp * (r * r + ri * ri) + 4.0_dp * h * h) / 12.0_dp
             body%j_o = body%j_g + mr2                         ! parallel axes (Y.3)
-            body%j_axis = 0.5_dp * mass * (r * r + ri * ri)
+            body%j_axis = 0.5_dp * mass_in * (r * r + ri * ri)
         end if
         call finish_body(body, body%j_o / mr2, stat, errmsg)
     end subroutine cylinder_props
@@ -183,27 +195,34 @@ contains
     !> doc/rocking.md section 1): J_o = (4/3) m R^2, J_G = m (b^2 + h^2)/3, j_axis NaN (the
     !> depth is unknown), p = sqrt(3 g/(4 R)), e = max(0, 1 - 1.5 sin^2 theta_c); the same
     !> p and e as rectangular_block(b, h, g).
+    !> mass and g are optional (defaults 1 kg and STANDARD_GRAVITY, as Python's
+    !> `cylinder.block_props`); when one is omitted, pass body and stat by keyword.
     subroutine block_props(b, h, mass, g, body, stat, errmsg)
         real(dp), intent(in) :: b                             !! half-width (m), > 0
         real(dp), intent(in) :: h                             !! half-height (m), > 0
-        real(dp), intent(in) :: mass                          !! mass (kg), > 0
-        real(dp), intent(in) :: g                             !! gravity (m/s^2), > 0
+        !> mass (kg), > 0; default 1.0
+        real(dp), intent(in), optional :: mass
+        !> gravity (m/s^2), > 0; default STANDARD_GRAVITY (9.80665 m/s^2)
+        real(dp), intent(in), optional :: g
         type(rocking_body_t), intent(out) :: body             !! the block
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
 
-        call check_geometry(b, 'b', 'the half-width', h, mass, g, stat, errmsg)
+        real(dp) :: mass_in, g_in
+        mass_in = optval(mass, 1.0_dp)
+        g_in = optval(g, STANDARD_GRAVITY)
+        call check_geometry(b, 'b', 'the half-width', h, mass_in, g_in, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         body%shape = BODY_BLOCK
         body%r = b
         body%r_inner = 0.0_dp
         body%h = h
-        body%mass = mass
-        body%g = g
+        body%mass = mass_in
+        body%g = g_in
         body%big_r = hypot(b, h)
         body%theta_c = atan2(b, h)
-        body%j_g = mass * (b * b + h * h) / 3.0_dp                          ! (Y.5)
-        body%j_o = (4.0_dp / 3.0_dp) * mass * body%big_r**2                 ! (Y.5)
+        body%j_g = mass_in * (b * b + h * h) / 3.0_dp                       ! (Y.5)
+        body%j_o = (4.0_dp / 3.0_dp) * mass_in * body%big_r**2              ! (Y.5)
         body%j_axis = ieee_value(1.0_dp, ieee_quiet_nan)
         call finish_body(body, 4.0_dp / 3.0_dp, stat, errmsg)
     end subroutine block_props
@@ -217,7 +236,7 @@ contains
         type(rocking_block_t), intent(out) :: blk             !! its rocking block
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: e                   !! restitution, [0, 1]
+        real(dp), intent(in), optional :: e                   !! restitution, [0, 1]; default body%e
         logical, intent(in), optional :: linearized           !! Eq. 2.7 (default .false.)
         call check_body(body, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
@@ -244,7 +263,8 @@ contains
         type(rocking_body_t), intent(out) :: cyl              !! its solid cylinder
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: theta_c             !! slenderness (rad), (0, pi/2)
+        !> slenderness (rad), (0, pi/2); default the block's own
+        real(dp), intent(in), optional :: theta_c
         real(dp) :: th, s, big_r, r, jr
         call check_body(block, stat, errmsg, 'block')
         if (stat /= SEISPULSE_SUCCESS) return
@@ -273,7 +293,8 @@ contains
         type(rocking_body_t), intent(out) :: block            !! its uniform block
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: alpha               !! slenderness (rad), (0, pi/2)
+        !> slenderness (rad), (0, pi/2); default the body's theta_c
+        real(dp), intent(in), optional :: alpha
         real(dp) :: al, big_r, b
         call check_body(cyl, stat, errmsg, 'cyl')
         if (stat /= SEISPULSE_SUCCESS) return
@@ -369,9 +390,10 @@ contains
         integer, intent(out) :: classes(:, :)                 !! size(y) x size(x)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        type(pulse_t), intent(in), optional :: template       !! shape parameters of the kind
+        !> shape parameters of the kind; absent: pulse_t defaults (as overturning_map)
+        type(pulse_t), intent(in), optional :: template
         logical, intent(in), optional :: linearized           !! Eq. 2.7 (default .false.)
-        real(dp), intent(in), optional :: e                   !! restitution, [0, 1]
+        real(dp), intent(in), optional :: e                   !! restitution, [0, 1]; default body%e
         real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
         real(dp), intent(in), optional :: kv                  !! a_v/a_g, vertical (default 0)
         real(dp) :: fr(size(x)), ar(size(y)), ee, tan_c
@@ -493,10 +515,12 @@ contains
         real(dp), intent(out) :: pga_g(:)                     !! overturning PGA (g), size(freq_hz)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        type(pulse_t), intent(in), optional :: template       !! shape parameters of the kind
-        real(dp), intent(in), optional :: pga_max_g           !! top of the scan (g)
+        !> shape parameters of the kind; absent: pulse_t defaults (as overturning_map)
+        type(pulse_t), intent(in), optional :: template
+        !> top of the scan (g); default 20 tan(theta_c)
+        real(dp), intent(in), optional :: pga_max_g
         integer, intent(in), optional :: n_scan               !! scan size, default 200
-        real(dp), intent(in), optional :: e                   !! restitution, [0, 1]
+        real(dp), intent(in), optional :: e                   !! restitution, [0, 1]; default body%e
         logical, intent(in), optional :: linearized           !! Eq. 2.7 (default .false.)
         real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
         real(dp) :: ee, tan_c, lo0, top, ratio, fr, lo, hi, mid

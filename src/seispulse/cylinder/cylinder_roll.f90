@@ -222,22 +222,29 @@ contains
         type(roll_run_t), intent(out) :: run                  !! summary
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: theta0              !! initial tilt (rad), [0, pi/2)
-        real(dp), intent(in), optional :: psi0                !! initial heading (rad)
-        real(dp), intent(in), optional :: spin0               !! initial spin angle (rad)
-        real(dp), intent(in), optional :: theta_rate0         !! (rad/s)
-        real(dp), intent(in), optional :: psi_rate0           !! (rad/s)
-        real(dp), intent(in), optional :: spin_rate0          !! (rad/s)
-        type(pulse_t), intent(in), optional :: pulse          !! ground acceleration (m/s^2)
+        !> initial tilt (rad), [0, pi/2); default 0 (upright)
+        real(dp), intent(in), optional :: theta0
+        real(dp), intent(in), optional :: psi0                !! initial heading (rad); default 0
+        real(dp), intent(in), optional :: spin0               !! initial spin angle (rad); default 0
+        real(dp), intent(in), optional :: theta_rate0         !! initial theta' (rad/s); default 0
+        real(dp), intent(in), optional :: psi_rate0           !! initial psi' (rad/s); default 0
+        !> initial spin rate (rad/s); default 0
+        real(dp), intent(in), optional :: spin_rate0
+        !> ground acceleration (m/s^2); absent (and no record): free rocking
+        type(pulse_t), intent(in), optional :: pulse
         real(dp), intent(in), optional :: direction           !! of the pulse (rad), default 0
-        real(dp), intent(in), optional :: accel_x(:)          !! record, x component (g_rec)
-        real(dp), intent(in), optional :: accel_y(:)          !! record, y component (g_rec)
-        real(dp), intent(in), optional :: dt                  !! record sampling step (s), > 0
+        !> record, x component (g_rec); with accel_y and dt, or absent
+        real(dp), intent(in), optional :: accel_x(:)
+        !> record, y component (g_rec); with accel_x and dt, or absent
+        real(dp), intent(in), optional :: accel_y(:)
+        !> record sampling step (s), > 0; required with a record
+        real(dp), intent(in), optional :: dt
         real(dp), intent(in), optional :: g_rec               !! unit of the record (m/s^2),
                                                               !! default body%g
-        real(dp), intent(in), optional :: e                   !! restitution, [0, 1]
-        real(dp), intent(in), optional :: t_max               !! end of the run (s), > 0
-        real(dp), intent(in), optional :: rtol                !! step tolerance (1e-10)
+        real(dp), intent(in), optional :: e                   !! restitution, [0, 1]; default body%e
+        !> end of the run (s), > 0 or +inf; default the last output time
+        real(dp), intent(in), optional :: t_max
+        real(dp), intent(in), optional :: rtol                !! step tolerance; default 1e-10
         type(roll_state_t) :: st
         type(piece_iter_t) :: it
         real(dp) :: y0(NY), beta, gu, rt, ee

@@ -23,7 +23,8 @@ module seispulse_intensity
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_fft, only: fft, next_power_of_two
     use seispulse_pieces, only: record_step_check
-    use seispulse_records, only: record_pga, ground_motion
+    use seispulse_optval, only: optval
+    use seispulse_records, only: record_pga, ground_motion, STANDARD_GRAVITY
     use seispulse_sdof_sim, only: sdof_validate, sdof_spectrum, pseudo_spectra
     implicit none
     private
@@ -207,24 +208,31 @@ contains
     !> period `period` (s) and damping ratio `damping` under the record
     !> (doc/intensity.md (I.17)), from the exact response of seispulse_sdof_sim with the
     !> true peak between samples; period 0 gives the PGA.
+    !> damping and g are optional (defaults 0.05 and STANDARD_GRAVITY, as Python's
+    !> `records.spectral_acceleration`); when one is omitted, pass sa and stat by keyword.
     subroutine spectral_acceleration(accel, dt, period, damping, g, sa, stat, errmsg)
         real(dp), intent(in) :: accel(:)                      !! ground acceleration (g)
         real(dp), intent(in) :: dt                            !! time step (s), > 0
         real(dp), intent(in) :: period                        !! natural period (s), >= 0
-        real(dp), intent(in) :: damping                       !! damping ratio, in [0, 1)
-        real(dp), intent(in) :: g                             !! gravity (m/s^2), > 0
+        !> damping ratio, in [0, 1); default 0.05
+        real(dp), intent(in), optional :: damping
+        !> gravity (m/s^2), > 0; default STANDARD_GRAVITY (9.80665 m/s^2)
+        real(dp), intent(in), optional :: g
         real(dp), intent(out) :: sa                           !! PSA (g)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         real(dp) :: sd(1, 1), sv(1, 1), sa_abs(1, 1), psv(1, 1), psa(1, 1)
+        real(dp) :: damping_in, g_in
+        damping_in = optval(damping, 0.05_dp)
+        g_in = optval(g, STANDARD_GRAVITY)
         sa = 0.0_dp
-        call record_step_check(accel, dt, g, stat, errmsg)
+        call record_step_check(accel, dt, g_in, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call sdof_validate(period, damping, stat, errmsg)
+        call sdof_validate(period, damping_in, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call sdof_spectrum(accel, dt, [period], [damping], g, sd, sv, sa_abs, stat, errmsg)
+        call sdof_spectrum(accel, dt, [period], [damping_in], g_in, sd, sv, sa_abs, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call pseudo_spectra([period], sd, g, record_pga(accel), psv, psa)
+        call pseudo_spectra([period], sd, g_in, record_pga(accel), psv, psa)
         sa = psa(1, 1)
         if (.not. ieee_is_finite(sa)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'accel, period: the ' &

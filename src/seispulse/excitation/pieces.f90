@@ -514,7 +514,8 @@ contains
     !> a exceeds thr by more than rounding (two ulps of the larger): a threshold that
     !> is only touched starts no motion. Safe for thr = +inf (no inf - inf).
     elemental logical function exceeds(a, thr)
-        real(dp), intent(in) :: a, thr
+        real(dp), intent(in) :: a    !! the value (any unit)
+        real(dp), intent(in) :: thr  !! the threshold (unit of a; +inf allowed)
         exceeds = a - thr > 2.0_dp * epsilon(a) * max(abs(a), abs(thr))
     end function exceeds
 
@@ -524,11 +525,14 @@ contains
     !> one direction. dir = +1, -1 or 0 (none on this piece); now: at the start of the
     !> piece, else where a_g crosses lev (the root the caller locates).
     pure subroutine onset_on_piece(a_start, a_end, thr_pos, thr_neg, blocked, dir, lev, now)
-        real(dp), intent(in) :: a_start, a_end, thr_pos, thr_neg
-        integer, intent(in) :: blocked
-        integer, intent(out) :: dir
-        real(dp), intent(out) :: lev
-        logical, intent(out) :: now
+        real(dp), intent(in) :: a_start  !! a_g at the start of the piece (m/s^2)
+        real(dp), intent(in) :: a_end    !! a_g at its end (m/s^2)
+        real(dp), intent(in) :: thr_pos  !! threshold of motion in +x (m/s^2), >= 0 or +inf
+        real(dp), intent(in) :: thr_neg  !! threshold of motion in -x (m/s^2), >= 0 or +inf
+        integer, intent(in) :: blocked   !! +1 or -1: that direction excluded; 0: none
+        integer, intent(out) :: dir      !! +1, -1, or 0 (no onset on this piece)
+        real(dp), intent(out) :: lev     !! the a_g level (m/s^2) whose crossing starts motion
+        logical, intent(out) :: now      !! motion starts at the start of the piece
         dir = 0
         lev = 0.0_dp
         now = .false.

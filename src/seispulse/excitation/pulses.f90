@@ -25,6 +25,7 @@ module seispulse_pulses
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error
     use seispulse_format, only: real_str
+    use seispulse_optval, only: optval
     use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, sin_pi, cos_pi, &
                                  tau_minus_sinpi, pi
     use seispulse_roots, only: scalar_function, find_root
@@ -160,10 +161,13 @@ contains
     !> Acceleration, velocity and displacement of the exponential pulse at tau = t/t_d
     !> (half cycle on [0, 1], full cycle on [0, 2]); checked array form.
     !> `beta` has the length of `tau` or length 1.
+    !> full is optional (default .false., as Python's `pulse.exp_pulse`); when omitted,
+    !> pass a, v, d and stat by keyword.
     subroutine exp_pulse(tau, beta, full, a, v, d, stat, errmsg)
         real(dp), intent(in) :: tau(:)                        !! t/t_d, finite
         real(dp), intent(in) :: beta(:)                       !! shape, size 1 or size(tau); not NaN
-        logical, intent(in) :: full                           !! full cycle (two lobes)
+        !> full cycle (two lobes); default .false.
+        logical, intent(in), optional :: full
         real(dp), intent(out) :: a(:)                         !! acceleration / A_g
         real(dp), intent(out) :: v(:)                         !! velocity / (A_g t_d)
         real(dp), intent(out) :: d(:)                         !! displacement / (A_g t_d^2)
@@ -171,6 +175,8 @@ contains
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         type(exp_consts_t) :: c
         integer :: i, n
+        logical :: full_in
+        full_in = optval(full, .false.)
         n = size(tau)
         if (size(beta) /= 1 .and. size(beta) /= n) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
@@ -191,11 +197,11 @@ contains
         if (size(beta) == 1) then
             c = exp_consts(beta(1))
             do i = 1, n
-                call exp_eval(c, tau(i), full, a(i), v(i), d(i))
+                call exp_eval(c, tau(i), full_in, a(i), v(i), d(i))
             end do
         else
             do i = 1, n
-                call exp_eval(exp_consts(beta(i)), tau(i), full, a(i), v(i), d(i))
+                call exp_eval(exp_consts(beta(i)), tau(i), full_in, a(i), v(i), d(i))
             end do
         end if
     end subroutine exp_pulse
@@ -215,21 +221,26 @@ contains
     !> vg = V_g/(A_g t_d) = 1/(1 - e^beta) + 1/beta, reached at t_d;
     !> dg = D_g/(A_g t_d^2) = vg/2 for a half cycle (the displacement at t_d; it grows
     !> without bound afterwards) and vg for a full cycle (reached at 2 t_d and kept).
+    !> full is optional (default .false., as Python's `pulse.exp_pulse_peaks`); when
+    !> omitted, pass vg, dg and stat by keyword.
     subroutine exp_pulse_peaks(beta, full, vg, dg, stat, errmsg)
-        real(dp), intent(in) :: beta                          !! shape parameter, not NaN
-        logical, intent(in) :: full                           !! full cycle
+        real(dp), intent(in) :: beta                          !! shape parameter (-), not NaN
+        !> full cycle; default .false.
+        logical, intent(in), optional :: full
         real(dp), intent(out) :: vg                           !! V_g/(A_g t_d)
         real(dp), intent(out) :: dg                           !! D_g/(A_g t_d^2)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         type(exp_consts_t) :: c
+        logical :: full_in
+        full_in = optval(full, .false.)
         vg = 0.0_dp
         dg = 0.0_dp
         call check_beta(beta, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         c = exp_consts(beta)
         vg = c%vg
-        if (full) then
+        if (full_in) then
             dg = vg
         else
             dg = 0.5_dp * vg
@@ -240,7 +251,7 @@ contains
     !> units of I/t_d, of the pulse whose lobe has area (impulse) I; equals 1/vg and
     !> is +inf for the spike, where a/vg tends to a Dirac delta at t_d/2.
     subroutine exp_pulse_impulse_amplitude(beta, amp, stat, errmsg)
-        real(dp), intent(in) :: beta                          !! shape parameter, not NaN
+        real(dp), intent(in) :: beta                          !! shape parameter (-), not NaN
         real(dp), intent(out) :: amp                          !! A_g t_d / I
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
@@ -262,7 +273,7 @@ contains
     !> level/2 (beta = 0), 0 (-inf) and 1/2 (+inf). Unchecked.
     elemental function exp_rise_time(level, beta) result(tau)
         real(dp), intent(in) :: level  !! a/A_g in (0, 1)
-        real(dp), intent(in) :: beta   !! pulse shape, not NaN
+        real(dp), intent(in) :: beta   !! pulse shape (-), not NaN
         real(dp) :: tau
         if (beta < -huge(beta)) then
             tau = 0.0_dp
@@ -280,7 +291,7 @@ contains
 
     !> The beta-dependent constants, computed once per beta.
     elemental function exp_consts(beta) result(c)
-        real(dp), intent(in) :: beta
+        real(dp), intent(in) :: beta  !! shape parameter (-), not NaN
         type(exp_consts_t) :: c
         real(dp) :: p1, p2, p3
         c%beta = beta
@@ -306,10 +317,12 @@ contains
     !> Evaluate the half or full cycle at tau (doc/pulses.md section 1 in the phi_k form).
     !> One routine, not one per phase: this is the hot loop of every pulse table.
     elemental subroutine exp_eval(c, tau, full, a, v, d)
-        type(exp_consts_t), intent(in) :: c
-        real(dp), intent(in) :: tau
-        logical, intent(in) :: full
-        real(dp), intent(out) :: a, v, d
+        type(exp_consts_t), intent(in) :: c  !! exp_consts(beta)
+        real(dp), intent(in) :: tau          !! t/t_d (dimensionless), finite
+        logical, intent(in) :: full          !! full cycle (two lobes)
+        real(dp), intent(out) :: a           !! acceleration / A_g
+        real(dp), intent(out) :: v           !! velocity / (A_g t_d)
+        real(dp), intent(out) :: d           !! displacement / (A_g t_d^2)
         real(dp) :: s, r, x, p1, p2, p3, w
         logical :: second_lobe, falling
         if (tau < 0.0_dp) then
@@ -571,7 +584,8 @@ contains
     elemental function pulse_accel(p, t, consts) result(a)
         type(pulse_t), intent(in) :: p                          !! a valid pulse
         real(dp), intent(in) :: t                               !! time (s)
-        type(exp_consts_t), intent(in), optional :: consts      !! exp_consts(p%beta)
+        !> exp_consts(p%beta), to skip recomputing it; absent: computed
+        type(exp_consts_t), intent(in), optional :: consts
         real(dp) :: a                                           !! a_g(t) (m/s^2)
         real(dp) :: v, d, te
         select case (p%kind)
@@ -674,9 +688,10 @@ contains
                                   + f%k(3)**3 * sin(f%k(3) * x + f%nu)))
     end function mp_jerk_slope
 
+    !> mp_jerk as a `scalar_function` for the root finder (units A f_p per unit x).
     function mp_jerk_eval(self, x) result(y)
-        class(mp_jerk_t), intent(inout) :: self
-        real(dp), intent(in) :: x
+        class(mp_jerk_t), intent(inout) :: self  !! wave numbers and phase
+        real(dp), intent(in) :: x                !! f_p (t - t0) (dimensionless)
         real(dp) :: y
         y = mp_jerk(self, x)
     end function mp_jerk_eval
@@ -794,11 +809,14 @@ contains
         real(dp), intent(in) :: amp   !! A_g, peak acceleration (m/s^2)
         real(dp), intent(in) :: td    !! t_d, duration of one lobe (s)
         real(dp), intent(in) :: beta  !! shape parameter
-        logical, intent(in) :: full   !! full cycle
+        !> full cycle; default .false.
+        logical, intent(in), optional :: full
         type(pulse_t) :: p
+        logical :: full_in
+        full_in = optval(full, .false.)
         p = timed_pulse(PULSE_EXPONENTIAL, amp, td)
         p%beta = beta
-        p%full = full
+        p%full = full_in
     end function exponential_pulse
 
     !> Half-sine acceleration pulse a = A sin(pi t/T) on [0, T).
@@ -841,10 +859,13 @@ contains
     pure function triangular_pulse(amp, duration, peak_frac) result(p)
         real(dp), intent(in) :: amp        !! peak acceleration (m/s^2)
         real(dp), intent(in) :: duration   !! T (s)
-        real(dp), intent(in) :: peak_frac  !! r in [0, 1]
+        !> r in [0, 1]; default 0.5
+        real(dp), intent(in), optional :: peak_frac
         type(pulse_t) :: p
+        real(dp) :: frac_in
+        frac_in = optval(peak_frac, 0.5_dp)
         p = timed_pulse(PULSE_TRIANGULAR, amp, duration)
-        p%peak_frac = peak_frac
+        p%peak_frac = frac_in
     end function triangular_pulse
 
     !> A pulse described by its kind, amplitude and duration only.
@@ -1015,7 +1036,8 @@ contains
         real(dp), intent(out) :: a                              !! acceleration (m/s^2)
         real(dp), intent(out) :: v                              !! velocity (m/s)
         real(dp), intent(out) :: d                              !! displacement (m)
-        type(exp_consts_t), intent(in), optional :: consts      !! exp_consts(p%beta)
+        !> exp_consts(p%beta), to skip recomputing it; absent: computed
+        type(exp_consts_t), intent(in), optional :: consts
         type(exp_consts_t) :: c
         if (present(consts)) then
             call pulse_point(p, consts, pulse_end_time(p), t, a, v, d)

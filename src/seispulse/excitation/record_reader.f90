@@ -95,7 +95,7 @@ contains
         integer, intent(out) :: units            !! UNITS_* of `accel`
         real(dp), intent(out) :: dt              !! time step (s)
         real(dp), intent(out) :: t0              !! time of the first sample (s)
-        character(len=:), allocatable, intent(out) :: title  !! AT2: line 2 of the header;
+        character(len=:), allocatable, intent(out) :: title  !! line 2 of the header (AT2);
                                                  !! text formats: the first comment line
                                                  !! without '#'; else ''
         integer, intent(out) :: fmt              !! the format read (RECORD_AUTO on error)
@@ -380,7 +380,7 @@ contains
     ! Formats
     ! ------------------------------------------------------------------------------
 
-    !> RECORD_AUTO: the format of the file (see the module notes). The cursor of
+    !> The format of the file for RECORD_AUTO (see the module notes). The cursor of
     !> `txt` is left where it was.
     subroutine detect_format(path, txt, fmt, stat, errmsg)
         character(len=*), intent(in) :: path

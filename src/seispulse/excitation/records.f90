@@ -1,4 +1,4 @@
-!> Accelerograms: the record (samples in g at a constant time step), reading it from a
+!> Accelerograms. The record (samples in g at a constant time step), reading it from a
 !> file, PGA scaling and ground velocity/displacement.
 !>
 !> Formats (`read_record`; the files are parsed by seispulse_record_reader, whose
@@ -49,7 +49,7 @@ module seispulse_records
                                                !! unless a time column says otherwise)
         integer :: fmt = RECORD_AUTO           !! the format actually read (never AUTO after a read)
         character(len=:), allocatable :: name  !! file name without directory and extension
-        character(len=:), allocatable :: title !! AT2: line 2 of the header; text formats: the
+        character(len=:), allocatable :: title !! line 2 of the header (AT2); text formats: the
                                                !! first comment line without '#'; else ''
     end type record_t
 

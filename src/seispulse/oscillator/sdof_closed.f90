@@ -287,7 +287,7 @@ contains
         real(dp), intent(in) :: w0                            !! W0, base acceleration (m/s^2)
         real(dp), intent(in) :: period                        !! natural period T (s), > 0
         real(dp), intent(in) :: ratio                         !! r = theta/omega, >= 0
-        real(dp), intent(in) :: damping                       !! zeta in [0, 1)
+        real(dp), intent(in) :: damping                       !! damping ratio zeta (-), in [0, 1)
         integer, intent(in) :: law                            !! HARMONIC_SINE or HARMONIC_COSINE
         logical, intent(in) :: transient                      !! from rest (else steady state)
         real(dp), intent(out) :: z(:)                         !! relative displacement (m)
@@ -448,7 +448,7 @@ contains
     subroutine impulse_max(jw, period, damping, z_max, t_max, stat, errmsg)
         real(dp), intent(in) :: jw                            !! J_W = W0 t1 (m/s)
         real(dp), intent(in) :: period                        !! natural period T (s), > 0
-        real(dp), intent(in) :: damping                       !! zeta in [0, 1)
+        real(dp), intent(in) :: damping                       !! damping ratio zeta (-), in [0, 1)
         real(dp), intent(out) :: z_max                        !! max |z| (m)
         real(dp), intent(out) :: t_max                        !! its first time (s)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
@@ -476,7 +476,7 @@ contains
         real(dp), intent(in) :: t(:)                          !! times (s), finite
         real(dp), intent(in) :: jw                            !! J_W (m/s)
         real(dp), intent(in) :: period                        !! natural period T (s), > 0
-        real(dp), intent(in) :: damping                       !! zeta in [0, 1)
+        real(dp), intent(in) :: damping                       !! damping ratio zeta (-), in [0, 1)
         real(dp), intent(out) :: z(:)                         !! relative displacement (m)
         real(dp), intent(out) :: v(:)                         !! relative velocity (m/s)
         real(dp), intent(out) :: a_abs(:)                     !! absolute acceleration (m/s^2)
@@ -514,7 +514,7 @@ contains
     subroutine sdof_pulse_response(p, period, damping, t, z, v, a_abs, stat, errmsg)
         type(pulse_t), intent(in) :: p                        !! the pulse (SI)
         real(dp), intent(in) :: period                        !! natural period T (s), > 0
-        real(dp), intent(in) :: damping                       !! zeta in [0, 1)
+        real(dp), intent(in) :: damping                       !! damping ratio zeta (-), in [0, 1)
         real(dp), intent(in) :: t(:)                          !! times (s), finite
         real(dp), intent(out) :: z(:)                         !! relative displacement (m)
         real(dp), intent(out) :: v(:)                         !! relative velocity (m/s)
@@ -548,7 +548,7 @@ contains
                                 stat, errmsg)
         type(pulse_t), intent(in) :: p                        !! the pulse (SI)
         real(dp), intent(in) :: period                        !! natural period T (s), > 0
-        real(dp), intent(in) :: damping                       !! zeta in [0, 1)
+        real(dp), intent(in) :: damping                       !! damping ratio zeta (-), in [0, 1)
         real(dp), intent(out) :: z_max                        !! max |z| (m)
         real(dp), intent(out) :: t_z                          !! time of max |z| (s)
         real(dp), intent(out) :: v_max                        !! max |z'| (m/s)
@@ -590,7 +590,7 @@ contains
                                    t_sa)
         type(pulse_t), intent(in) :: p                        !! the pulse (SI)
         real(dp), intent(in) :: periods(:)                    !! natural periods T (s), >= 0
-        real(dp), intent(in) :: damping                       !! zeta in [0, 1)
+        real(dp), intent(in) :: damping                       !! damping ratio zeta (-), in [0, 1)
         real(dp), intent(out) :: sd(:)                        !! max |z| (m)
         real(dp), intent(out) :: sv(:)                        !! max |z'| (m/s)
         real(dp), intent(out) :: sa(:)                        !! max |a_abs| (m/s^2)

@@ -42,6 +42,8 @@ module seispulse_sdof_sim
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error
     use seispulse_format, only: real_str, int_str
+    use seispulse_optval, only: optval
+    use seispulse_records, only: STANDARD_GRAVITY
     use seispulse_special, only: complex_phis, pi
     use seispulse_pieces, only: record_step_check
     !$ use omp_lib, only: omp_set_num_threads, omp_get_max_threads
@@ -100,8 +102,10 @@ contains
         real(dp), intent(in) :: damping                       !! damping ratio
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        character(len=*), intent(in), optional :: period_name   !! name in messages
-        character(len=*), intent(in), optional :: damping_name  !! name in messages
+        !> name in messages; default 'period'
+        character(len=*), intent(in), optional :: period_name
+        !> name in messages; default 'damping'
+        character(len=*), intent(in), optional :: damping_name
         character(len=:), allocatable :: pname, dname
         stat = SEISPULSE_SUCCESS
         pname = 'period'
@@ -225,12 +229,16 @@ contains
     !> Response of the oscillator to a record, at the samples: relative displacement (m),
     !> relative velocity (m/s) and absolute acceleration (g). T = 0 gives the ground
     !> motion itself (z = z' = 0, a_abs = a_g).
+    !> damping and g are optional (defaults 0.05 and STANDARD_GRAVITY, as Python's
+    !> `sdof.response`); when one is omitted, pass disp, vel, acc and stat by keyword.
     subroutine sdof_response(accel, dt, period, damping, g, disp, vel, acc, stat, errmsg)
         real(dp), intent(in) :: accel(:)                      !! ground acceleration (g), at t = (i-1) dt
         real(dp), intent(in) :: dt                            !! time step (s), > 0
         real(dp), intent(in) :: period                        !! natural period (s), >= 0
-        real(dp), intent(in) :: damping                       !! damping ratio, in [0, 1)
-        real(dp), intent(in) :: g                             !! gravity (m/s^2), > 0
+        !> damping ratio, in [0, 1); default 0.05
+        real(dp), intent(in), optional :: damping
+        !> gravity (m/s^2), > 0; default STANDARD_GRAVITY (9.80665 m/s^2)
+        real(dp), intent(in), optional :: g
         real(dp), intent(out) :: disp(:)                      !! relative displacement (m), size(accel)
         real(dp), intent(out) :: vel(:)                       !! relative velocity (m/s), size(accel)
         real(dp), intent(out) :: acc(:)                       !! absolute acceleration (g), size(accel)
@@ -239,9 +247,12 @@ contains
         type(sdof_step_t) :: st
         integer :: i, n
         real(dp) :: z, v, zn, w2, zw2
-        call record_step_check(accel, dt, g, stat, errmsg)
+        real(dp) :: damping_in, g_in
+        damping_in = optval(damping, 0.05_dp)
+        g_in = optval(g, STANDARD_GRAVITY)
+        call record_step_check(accel, dt, g_in, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call sdof_validate(period, damping, stat, errmsg)
+        call sdof_validate(period, damping_in, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         n = size(accel)
         if (size(disp) /= n .or. size(vel) /= n .or. size(acc) /= n) then
@@ -255,21 +266,21 @@ contains
             acc = accel
             return
         end if
-        st = sdof_step(period, damping, dt)
+        st = sdof_step(period, damping_in, dt)
         w2 = st%omega**2
-        zw2 = 2.0_dp * damping * st%omega
+        zw2 = 2.0_dp * damping_in * st%omega
         z = 0.0_dp
         v = 0.0_dp
         disp(1) = 0.0_dp
         vel(1) = 0.0_dp
         acc(1) = 0.0_dp
         do i = 1, n - 1
-            zn = st%e11 * z + st%e12 * v + g * (st%b1 * accel(i) + st%c1 * accel(i + 1))
-            v = st%e21 * z + st%e22 * v + g * (st%b2 * accel(i) + st%c2 * accel(i + 1))
+            zn = st%e11 * z + st%e12 * v + g_in * (st%b1 * accel(i) + st%c1 * accel(i + 1))
+            v = st%e21 * z + st%e22 * v + g_in * (st%b2 * accel(i) + st%c2 * accel(i + 1))
             z = zn
             disp(i + 1) = z
             vel(i + 1) = v
-            acc(i + 1) = -(zw2 * v + w2 * z) / g
+            acc(i + 1) = -(zw2 * v + w2 * z) / g_in
         end do
     end subroutine sdof_response
 
@@ -295,7 +306,8 @@ contains
         real(dp), intent(out) :: sa(:, :)                     !! max |a_abs| (g)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        integer, intent(in), optional :: peaks                !! SDOF_PEAKS_EXACT or _SAMPLES
+        !> SDOF_PEAKS_EXACT or _SAMPLES; default SDOF_PEAKS_EXACT
+        integer, intent(in), optional :: peaks
         integer, intent(in), optional :: threads              !! OpenMP threads (0: default)
         real(dp), intent(out), optional :: t_sd(:, :)         !! time of max |z| (s)
         real(dp), intent(out), optional :: t_sv(:, :)         !! time of max |z'| (s)

@@ -174,7 +174,7 @@ contains
     !> limits 0 (rectangle), eta/2 (triangle), 1/2 (spike). NaN when eta >= 1 (no uplift).
     subroutine uplift_time(eta, beta, tau_up, stat, errmsg)
         real(dp), intent(in) :: eta                           !! alpha/alpha_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         real(dp), intent(out) :: tau_up                       !! t_up/t_d, or NaN
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
@@ -193,7 +193,7 @@ contains
         real(dp), intent(in) :: tau                           !! t/t_d, finite
         real(dp), intent(in) :: f                             !! p t_d > 0
         real(dp), intent(in) :: eta                           !! alpha/alpha_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         real(dp), intent(out) :: psi                          !! theta/alpha
         real(dp), intent(out) :: dpsi                         !! (dtheta/dt)/(alpha p) = psi'/f
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
@@ -233,7 +233,7 @@ contains
     !> (triangle, Eq. 2.22), 0 for the spike.
     subroutine stability_wall(f, beta, eta_w, stat, errmsg)
         real(dp), intent(in) :: f                             !! p t_d > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         real(dp), intent(out) :: eta_w                        !! wall, in (0, 1)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
@@ -249,7 +249,7 @@ contains
     !> +inf when eta >= 1 or for the spike (no pulse duration overturns).
     subroutine stability_wall_inverse(eta, beta, f_w, stat, errmsg)
         real(dp), intent(in) :: eta                           !! alpha/alpha_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         real(dp), intent(out) :: f_w                          !! p t_d on the wall
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
@@ -273,7 +273,7 @@ contains
     !> eta). 0 for the spike.
     subroutine overturn_boundary(f, beta, at_end, eta_b, stat, errmsg)
         real(dp), intent(in) :: f                             !! p t_d > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         logical, intent(in) :: at_end                         !! tau_c = 1 (else tau_c = 1/2)
         real(dp), intent(out) :: eta_b                        !! boundary eta in (0, 1)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
@@ -317,7 +317,7 @@ contains
     !> Eq. 2.17a/b in closed form; otherwise a root in f. +inf when eta >= 1 or for the spike.
     subroutine overturn_boundary_inverse(eta, beta, at_end, f_b, stat, errmsg)
         real(dp), intent(in) :: eta                           !! alpha/alpha_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         logical, intent(in) :: at_end                         !! tau_c = 1 (else tau_c = 1/2)
         real(dp), intent(out) :: f_b                          !! p t_d on the boundary
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
@@ -345,7 +345,7 @@ contains
     !> rectangle (no S1: tau_m > 1 always) and the spike (no rocking).
     subroutine s1_s2_boundary(f, beta, eta_b, stat, errmsg)
         real(dp), intent(in) :: f                             !! p t_d > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         real(dp), intent(out) :: eta_b                        !! boundary eta, or NaN
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
@@ -378,7 +378,7 @@ contains
     subroutine rocking_classify(f, eta, beta, region, stat, errmsg)
         real(dp), intent(in) :: f                             !! p t_d > 0
         real(dp), intent(in) :: eta                           !! alpha/alpha_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         integer, intent(out) :: region                        !! ROCK_*
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
@@ -396,7 +396,7 @@ contains
     subroutine critical_time(f, eta, beta, tau_c, stat, errmsg)
         real(dp), intent(in) :: f                             !! p t_d > 0
         real(dp), intent(in) :: eta                           !! alpha/alpha_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         real(dp), intent(out) :: tau_c                        !! t_c/t_d, or NaN
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
@@ -415,7 +415,7 @@ contains
     subroutine time_of_max(f, eta, beta, tau_m, stat, errmsg)
         real(dp), intent(in) :: f                             !! p t_d > 0
         real(dp), intent(in) :: eta                           !! alpha/alpha_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         real(dp), intent(out) :: tau_m                        !! t_m/t_d, or NaN
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
@@ -433,7 +433,7 @@ contains
     subroutine max_rotation(f, eta, beta, psi_max, stat, errmsg)
         real(dp), intent(in) :: f                             !! p t_d > 0
         real(dp), intent(in) :: eta                           !! alpha/alpha_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         real(dp), intent(out) :: psi_max                      !! theta_max/alpha
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
@@ -446,7 +446,7 @@ contains
     subroutine rocking_extremes(f, eta, beta, region, psi_max, stat, errmsg)
         real(dp), intent(in) :: f                             !! p t_d > 0
         real(dp), intent(in) :: eta                           !! alpha/alpha_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         integer, intent(out) :: region                        !! ROCK_*
         real(dp), intent(out) :: psi_max                      !! theta_max/alpha
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
@@ -474,7 +474,7 @@ contains
     subroutine impact_time(f, eta, beta, tau_i, stat, errmsg)
         real(dp), intent(in) :: f                             !! p t_d > 0
         real(dp), intent(in) :: eta                           !! alpha/alpha_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         real(dp), intent(out) :: tau_i                        !! t_i/t_d, or NaN
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
@@ -501,7 +501,7 @@ contains
                                stat, errmsg)
         real(dp), intent(in) :: f                             !! p t_d > 0
         real(dp), intent(in) :: eta                           !! alpha/alpha_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         integer, intent(out) :: region                        !! ROCK_*
         real(dp), intent(out) :: tau_up                       !! uplift t_up/t_d (NaN: eta >= 1)
         real(dp), intent(out) :: tau_c                        !! critical time (O regions)

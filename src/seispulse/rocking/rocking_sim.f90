@@ -64,6 +64,8 @@ module seispulse_rocking_sim
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
                                 set_error
     use seispulse_format, only: real_str, int_str
+    use seispulse_optval, only: optval
+    use seispulse_records, only: STANDARD_GRAVITY
     use seispulse_roots, only: scalar_function, find_root
     use seispulse_special, only: pi
     use seispulse_ode, only: ode_system, ode_dop853_t, ode_dop853_factor
@@ -250,13 +252,18 @@ contains
     !> R = sqrt(b^2 + h^2), alpha = atan(b/h), I_o = (4/3) m R^2 so p = sqrt(3 g/(4 R)),
     !> and Housner's restitution e = max(0, 1 - 1.5 sin^2(alpha)) (doc/rocking.md section 6; 0 for
     !> squat blocks, b/h > sqrt 2; change blk%e afterwards for another value).
+    !> g is optional (default STANDARD_GRAVITY, as Python's `rocking.rectangular_block`);
+    !> when omitted, pass blk and stat by keyword.
     subroutine rectangular_block(b, h, g, blk, stat, errmsg)
         real(dp), intent(in) :: b                             !! half-width (m), > 0
         real(dp), intent(in) :: h                             !! half-height (m), > 0
-        real(dp), intent(in) :: g                             !! gravity (m/s^2), > 0
+        !> gravity (m/s^2), > 0; default STANDARD_GRAVITY (9.80665 m/s^2)
+        real(dp), intent(in), optional :: g
         type(rocking_block_t), intent(out) :: blk             !! the block
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp) :: g_in
+        g_in = optval(g, STANDARD_GRAVITY)
         stat = SEISPULSE_SUCCESS
         if (.not. finite_positive(b)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'b = '//real_str(b) &
@@ -264,14 +271,14 @@ contains
         else if (.not. finite_positive(h)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'h = '//real_str(h) &
                            //': the half-height must be a finite number > 0 (m)')
-        else if (.not. finite_positive(g)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(g) &
+        else if (.not. finite_positive(g_in)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(g_in) &
                            //': must be a finite number > 0 (m/s^2)')
         end if
         if (stat /= SEISPULSE_SUCCESS) return
         ! the symmetric body with I_o = (4/3) m R^2: one formula for p and e (and the
         ! floor e >= 0 of squat blocks, b/h > sqrt 2)
-        call symmetric_block(hypot(b, h), atan2(b, h), 4.0_dp / 3.0_dp, g, blk, stat, errmsg)
+        call symmetric_block(hypot(b, h), atan2(b, h), 4.0_dp / 3.0_dp, g_in, blk, stat, errmsg)
     end subroutine rectangular_block
 
     !> Block symmetric about the vertical through its centre of mass (doc/rocking.md section 1):
@@ -280,14 +287,19 @@ contains
     !> p = sqrt(g/(io_over_mr2 R)) and Housner's e = 1 - (2/io_over_mr2) sin^2(alpha)
     !> (angular momentum about the new corner, doc/rocking.md section 6), set to 0 where the formula
     !> is negative (squat bodies: the impact then stops the rocking).
+    !> g is optional (default STANDARD_GRAVITY, as Python's `rocking.symmetric_block`);
+    !> when omitted, pass blk and stat by keyword.
     subroutine symmetric_block(r, alpha, io_over_mr2, g, blk, stat, errmsg)
         real(dp), intent(in) :: r                             !! pivot to centre of mass (m), > 0
         real(dp), intent(in) :: alpha                         !! slenderness (rad), in (0, pi/2)
         real(dp), intent(in) :: io_over_mr2                   !! I_o/(m R^2), finite, >= 1
-        real(dp), intent(in) :: g                             !! gravity (m/s^2), > 0
+        !> gravity (m/s^2), > 0; default STANDARD_GRAVITY (9.80665 m/s^2)
+        real(dp), intent(in), optional :: g
         type(rocking_block_t), intent(out) :: blk             !! the block
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp) :: g_in
+        g_in = optval(g, STANDARD_GRAVITY)
         stat = SEISPULSE_SUCCESS
         if (.not. finite_positive(r)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'r = '//real_str(r) &
@@ -299,15 +311,15 @@ contains
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'io_over_mr2 = ' &
                            //real_str(io_over_mr2)//': I_o/(m R^2) must be a finite number' &
                            //' >= 1 (I_o = I_cm + m R^2)')
-        else if (.not. finite_positive(g)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(g) &
+        else if (.not. finite_positive(g_in)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'g = '//real_str(g_in) &
                            //': must be a finite number > 0 (m/s^2)')
         end if
         if (stat /= SEISPULSE_SUCCESS) return
         blk%alpha = alpha
-        blk%p = sqrt(g / (io_over_mr2 * r))
+        blk%p = sqrt(g_in / (io_over_mr2 * r))
         blk%e = max(0.0_dp, 1.0_dp - (2.0_dp / io_over_mr2) * sin(alpha)**2)
-        blk%g = g
+        blk%g = g_in
         blk%linearized = .false.
     end subroutine symmetric_block
 
@@ -332,12 +344,15 @@ contains
         type(rocking_run_t), intent(out) :: run               !! the result
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: t_grid(:)           !! output times (s), ascending
+        !> output times (s), ascending; absent: no history (with theta_grid, omega_grid)
+        real(dp), intent(in), optional :: t_grid(:)
         real(dp), intent(out), optional :: theta_grid(:)      !! theta at t_grid (rad)
         real(dp), intent(out), optional :: omega_grid(:)      !! theta' at t_grid (rad/s)
-        real(dp), intent(in), optional :: t_max               !! end of the run (s), > 0
-        real(dp), intent(in), optional :: theta0              !! initial theta (rad), |.| < pi/2
-        real(dp), intent(in), optional :: omega0              !! initial theta' (rad/s)
+        !> end of the run (s), > 0; absent: until rest, overturning or the step budget
+        real(dp), intent(in), optional :: t_max
+        !> initial theta (rad), |.| < pi/2; default 0 (at rest)
+        real(dp), intent(in), optional :: theta0
+        real(dp), intent(in), optional :: omega0              !! initial theta' (rad/s); default 0
         real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
         real(dp), intent(in), optional :: kv                  !! a_v/a_g (1), default 0
         type(rocking_state_t) :: st
@@ -397,14 +412,18 @@ contains
         type(rocking_run_t), intent(out) :: run               !! the result
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: t_grid(:)           !! output times (s), ascending
+        !> output times (s), ascending; absent: no history (with theta_grid, omega_grid)
+        real(dp), intent(in), optional :: t_grid(:)
         real(dp), intent(out), optional :: theta_grid(:)      !! theta at t_grid (rad)
         real(dp), intent(out), optional :: omega_grid(:)      !! theta' at t_grid (rad/s)
-        real(dp), intent(in), optional :: t_max               !! end of the run (s), > 0
-        real(dp), intent(in), optional :: theta0              !! initial theta (rad), |.| < pi/2
-        real(dp), intent(in), optional :: omega0              !! initial theta' (rad/s)
+        !> end of the run (s), > 0; absent: until rest, overturning or the step budget
+        real(dp), intent(in), optional :: t_max
+        !> initial theta (rad), |.| < pi/2; default 0 (at rest)
+        real(dp), intent(in), optional :: theta0
+        real(dp), intent(in), optional :: omega0              !! initial theta' (rad/s); default 0
         real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
-        real(dp), intent(in), optional :: accel_v(:)          !! vertical acceleration (g), finite
+        !> vertical acceleration (g), finite; absent: none
+        real(dp), intent(in), optional :: accel_v(:)
         type(rocking_state_t) :: st
         type(piece_iter_t) :: it
         real(dp) :: th0, om0
@@ -487,7 +506,8 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         logical, intent(in), optional :: linearized           !! Eq. 2.7 (default .false.)
-        type(pulse_t), intent(in), optional :: template       !! shape parameters of the kind
+        !> shape parameters of the kind; absent: pulse_t defaults
+        type(pulse_t), intent(in), optional :: template
         real(dp), intent(in), optional :: rtol                !! step tolerance (default 1e-12)
         real(dp), intent(in), optional :: kv                  !! a_v/a_g (1), default 0
         type(rocking_block_t) :: blk

@@ -124,7 +124,7 @@ contains
     elemental real(dp) function jibson_2007_ratio_m(ky, pga, m) result(d)
         real(dp), intent(in) :: ky   !! yield acceleration (g), 0 < ky < pga
         real(dp), intent(in) :: pga  !! peak ground acceleration (g)
-        real(dp), intent(in) :: m    !! moment magnitude
+        real(dp), intent(in) :: m    !! moment magnitude (-)
         d = 10.0_dp**(-2.710_dp + log10_ratio_term(ky / pga, 2.335_dp, -1.478_dp) &
                       + 0.424_dp * m)
     end function jibson_2007_ratio_m
@@ -192,7 +192,7 @@ contains
     elemental real(dp) function rathje_saygili_2009(ky, pga, m) result(d)
         real(dp), intent(in) :: ky   !! yield acceleration (g), 0 < ky < pga
         real(dp), intent(in) :: pga  !! peak ground acceleration (g)
-        real(dp), intent(in) :: m    !! moment magnitude
+        real(dp), intent(in) :: m    !! moment magnitude (-)
         d = exp(quartic(ky / pga, [4.89_dp, -4.85_dp, -19.64_dp, 42.49_dp, -29.06_dp]) &
                 + 0.72_dp * log(pga) + 0.89_dp * (m - 6.0_dp))
     end function rathje_saygili_2009
@@ -224,7 +224,7 @@ contains
         real(dp), intent(in) :: ky   !! yield coefficient (g), > 0
         real(dp), intent(in) :: ts   !! site period of the sliding mass (s), >= 0
         real(dp), intent(in) :: sa   !! Sa(1.5 Ts) (g), > 0 (PGA when Ts < 0.05 s)
-        real(dp), intent(in) :: m    !! moment magnitude
+        real(dp), intent(in) :: m    !! moment magnitude (-)
         logical, intent(in) :: slammer  !! SLAMMER's form (no nearly rigid branch)
         real(dp) :: lk, ls
         lk = log(ky)
@@ -313,7 +313,7 @@ contains
 
     !> The name of a rigid-block model code ('' for an unknown code).
     pure function empirical_model_name(model) result(name)
-        integer, intent(in) :: model
+        integer, intent(in) :: model  !! EMP_* code of a rigid-block model
         character(len=:), allocatable :: name
         if (model >= 1 .and. model <= EMP_RIGID_MODELS) then
             name = trim(model_names(model))
@@ -324,7 +324,7 @@ contains
 
     !> The code of a rigid-block model name (0 for an unknown name).
     pure integer function empirical_model_code(name) result(model)
-        character(len=*), intent(in) :: name
+        character(len=*), intent(in) :: name  !! model name as empirical_model_name gives it
         integer :: k
         model = 0
         do k = 1, EMP_RIGID_MODELS
@@ -335,7 +335,7 @@ contains
     !> The inputs besides ky a rigid-block model takes: a sum of EMP_NEED_* bits (0 for an
     !> unknown model).
     pure integer function empirical_needs(model) result(needs)
-        integer, intent(in) :: model
+        integer, intent(in) :: model  !! EMP_* code of a rigid-block model
         select case (model)
         case (EMP_JIBSON_1993, EMP_JIBSON_1998, EMP_JIBSON_2007_ARIAS)
             needs = EMP_NEED_ARIAS
@@ -420,7 +420,7 @@ contains
         real(dp), intent(in) :: pga          !! peak ground acceleration (g), > ky
         real(dp), intent(in) :: pgv          !! peak ground velocity (cm/s), > 0
         real(dp), intent(in) :: arias        !! Arias intensity (m/s), > 0
-        real(dp), intent(in) :: magnitude    !! moment magnitude, in (0, 10)
+        real(dp), intent(in) :: magnitude    !! moment magnitude (-), in (0, 10)
         real(dp), intent(out) :: disp_cm     !! median displacement (cm)
         real(dp), intent(out) :: sigma       !! standard deviation of log D
         integer, intent(out) :: log_base     !! EMP_LOG10 or EMP_LN
@@ -501,13 +501,13 @@ contains
         real(dp), intent(in) :: ky           !! yield coefficient (g), > 0
         real(dp), intent(in) :: ts           !! site period (s), >= 0
         real(dp), intent(in) :: sa           !! Sa(1.5 Ts) (g), > 0 (PGA for Ts < 0.05 s)
-        real(dp), intent(in) :: magnitude    !! moment magnitude, in (0, 10)
+        real(dp), intent(in) :: magnitude    !! moment magnitude (-), in (0, 10)
         real(dp), intent(out) :: disp_cm     !! median of the non-zero displacement (cm)
         real(dp), intent(out) :: sigma       !! standard deviation of ln D
         real(dp), intent(out) :: p_zero      !! probability of D <= 1 cm
         integer, intent(out) :: stat         !! SEISPULSE_SUCCESS or an error
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        logical, intent(in), optional :: slammer  !! SLAMMER 1.1's arithmetic
+        logical, intent(in), optional :: slammer  !! SLAMMER 1.1's arithmetic; default .false.
         logical :: sl
         disp_cm = 0.0_dp
         sigma = BT07_SIGMA
@@ -552,7 +552,7 @@ contains
                                              !! ky >= kmax)
         integer, intent(out) :: stat         !! SEISPULSE_SUCCESS or an error
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        logical, intent(in), optional :: slammer  !! SLAMMER 1.1's rules
+        logical, intent(in), optional :: slammer  !! SLAMMER 1.1's rules; default .false.
         logical :: sl
         real(dp) :: pr, r, f
         disp_cm = 0.0_dp

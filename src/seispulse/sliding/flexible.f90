@@ -110,9 +110,12 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         integer, intent(in), optional :: mode                 !! NEWMARK_DOWN (default), BOTH, ASYM
-        real(dp), intent(in), optional :: ky_up               !! upslope yield (g), NEWMARK_ASYM
-        real(dp), intent(in), optional :: ky_disp(:)          !! table: displacement (m)
-        real(dp), intent(in), optional :: ky_values(:)        !! table: yield (g)
+        !> upslope yield (g); required for NEWMARK_ASYM, unused otherwise
+        real(dp), intent(in), optional :: ky_up
+        !> yield table: displacement (m); with ky_values, or absent (ky used)
+        real(dp), intent(in), optional :: ky_disp(:)
+        !> yield table: yield (g); with ky_disp, or absent (ky used)
+        real(dp), intent(in), optional :: ky_values(:)
         real(dp), intent(out), optional :: hea(:)             !! HEA at the samples (g)
         !> modal displacement u (m) relative to the base, the sign of (F.30): a > 0 drives u < 0
         real(dp), intent(out), optional :: u_modal(:)
@@ -137,8 +140,10 @@ contains
         type(flexible_result_t), intent(out) :: res           !! the result
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: ky_disp(:)          !! table: displacement (m)
-        real(dp), intent(in), optional :: ky_values(:)        !! table: yield (g)
+        !> yield table: displacement (m); with ky_values, or absent (ky used)
+        real(dp), intent(in), optional :: ky_disp(:)
+        !> yield table: yield (g); with ky_disp, or absent (ky used)
+        real(dp), intent(in), optional :: ky_values(:)
         real(dp), intent(out), optional :: hea(:)             !! decoupled HEA (g)
         !> modal displacement u (m) relative to the base, the sign of (F.30): a > 0 drives u < 0
         real(dp), intent(out), optional :: u_modal(:)
@@ -328,7 +333,7 @@ contains
     ! The exact rule (doc/flexible.md sections 5-7, module seispulse_flexible_exact)
     ! ------------------------------------------------------------------------------
 
-    !> FLEX_EXACT: the equivalent-linear iteration on the exact modal response, then the
+    !> FLEX_EXACT. The equivalent-linear iteration on the exact modal response, then the
     !> rigid block on the exact HEA (newmark_rigid, exact rule: mode, ky_up and the table
     !> interpolated linearly) or the exact coupled analysis (coupled_exact).
     subroutine exact_run(coupled, accel, dt, tdisp, tky, mass, g, mode, ky_up, table, res, &
@@ -439,7 +444,7 @@ contains
     ! SLAMMER 1.1's arithmetic (doc/flexible.md section 4)
     ! ------------------------------------------------------------------------------
 
-    !> FLEX_SLAMMER: both analyses in SLAMMER's units. eql_stat receives the status of the
+    !> FLEX_SLAMMER. Both analyses in SLAMMER's units. eql_stat receives the status of the
     !> equivalent-linear iteration (SEISPULSE_NO_CONVERGENCE is not an error here). The
     !> histories are filled in SLAMMER's units, then converted in place.
     subroutine slammer_run(coupled, accel, dt, tdisp, tky, mass, g, res, eql_stat, stat, &

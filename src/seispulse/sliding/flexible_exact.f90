@@ -369,8 +369,10 @@ contains
         real(dp), intent(out) :: t_end                        !! end of the last slide (s)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: ky_disp(:)          !! table: displacements (m)
-        real(dp), intent(in), optional :: ky_values(:)        !! table: yields (g)
+        !> yield table: displacements (m); with ky_values, or absent (ky used)
+        real(dp), intent(in), optional :: ky_disp(:)
+        !> yield table: yields (g); with ky_disp, or absent (ky used)
+        real(dp), intent(in), optional :: ky_values(:)
         real(dp), intent(out), optional :: s_hist(:)          !! s at the samples (m)
         real(dp), intent(out), optional :: sdot_hist(:)       !! s' at the samples (m/s)
         real(dp), intent(out), optional :: u_modal(:)         !! u at the samples (m), (F.30) sign
@@ -1004,7 +1006,7 @@ contains
         real(dp), intent(in) :: c    !! damping coefficient (1/s)
         real(dp), intent(in) :: w2   !! stiffness (1/s^2)
         real(dp), intent(in) :: tau  !! step (s) >= 0
-        type(prop_t), intent(out) :: p
+        type(prop_t), intent(out) :: p  !! the propagator of the step (SI: s, 1/s)
         complex(dp) :: q, mu1, mu2, b0, e2, b1, b2, p0, ph1, ph2
         real(dp) :: al0, al1, al2, be0, be1, be2, ta(2, 2)
         integer :: k
@@ -1049,9 +1051,10 @@ contains
     ! First zero on a proven bracket
     ! ------------------------------------------------------------------------------
 
+    !> f(x), the first member of `taylor`, for the root finder.
     function zero_eval(self, x) result(y)
-        class(zero_function), intent(inout) :: self
-        real(dp), intent(in) :: x
+        class(zero_function), intent(inout) :: self  !! the function
+        real(dp), intent(in) :: x  !! the argument (unit of the function's variable)
         real(dp) :: y
         real(dp) :: f(0:2)
         call self%taylor(x, f)

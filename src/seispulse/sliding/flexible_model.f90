@@ -97,7 +97,7 @@ module seispulse_flexible_model
         !> max |u(t)| (m) of the modal response with (omega, xi); O(n).
         subroutine peak_iface(self, omega, xi, u_peak, stat, errmsg)
             import :: modal_peak_t, dp
-            class(modal_peak_t), intent(inout) :: self
+            class(modal_peak_t), intent(inout) :: self  !! the modal response's data
             real(dp), intent(in) :: omega                        !! rad/s > 0
             real(dp), intent(in) :: xi                           !! total damping (fraction)
             real(dp), intent(out) :: u_peak                      !! max |u| (m)

@@ -31,6 +31,7 @@ module seispulse_newmark
                                              ieee_positive_inf
     use seispulse_kinds, only: dp
     use seispulse_checks, only: positive
+    use seispulse_optval, only: optval
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
                                 set_error
     use seispulse_format, only: real_str, int_str, name_of, code_of
@@ -161,17 +162,25 @@ contains
     !> the horizontal (the record is that component, positive downhill): yields and
     !> along-plane factors of doc/sliding.md Eq. 1.31 and section 7 (an asymmetric block).
     !> Without along_plane the factors are 1 (the slip of the yield problem, as SLAMMER).
+    !> xi_deg and along_plane are optional (defaults as Python's `newmark.incline`);
+    !> when one is omitted, pass blk and stat by keyword.
     subroutine newmark_incline(mu, slope_deg, xi_deg, along_plane, blk, stat, errmsg)
         real(dp), intent(in) :: mu                            !! friction coefficient > 0
         real(dp), intent(in) :: slope_deg                     !! lambda in [0, 90) deg, < atan mu
-        real(dp), intent(in) :: xi_deg                        !! xi in [-90, 90] deg
-        logical, intent(in) :: along_plane                    !! apply K1, K2
+        !> xi in [-90, 90] deg; default 0 (horizontal excitation)
+        real(dp), intent(in), optional :: xi_deg
+        !> apply K1, K2; default .true.
+        logical, intent(in), optional :: along_plane
         type(newmark_block_t), intent(out) :: blk             !! mode NEWMARK_ASYM
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         real(dp) :: eta1, eta2, k1, k2
         ! with A_g = 1 g the resistances over A_g are the yields in g
-        call inclined_resistances(mu, 1.0_dp, slope_deg, xi_deg, eta1, eta2, k1, k2, &
+        real(dp) :: xi_in
+        logical :: along_in
+        xi_in = optval(xi_deg, 0.0_dp)
+        along_in = optval(along_plane, .true.)
+        call inclined_resistances(mu, 1.0_dp, slope_deg, xi_in, eta1, eta2, k1, k2, &
                                   stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         blk%mode = NEWMARK_ASYM
@@ -179,7 +188,7 @@ contains
         blk%ky_up = eta2
         blk%k_down = 1.0_dp
         blk%k_up = 1.0_dp
-        if (along_plane) then
+        if (along_in) then
             ! a direction that cannot slide (eta = +inf) has K = 0: keep 1, it is unused
             if (k1 > 0.0_dp) blk%k_down = k1
             if (k2 > 0.0_dp) blk%k_up = k2

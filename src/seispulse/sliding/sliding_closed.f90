@@ -24,6 +24,8 @@ module seispulse_sliding_closed
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error
     use seispulse_checks, only: outside
+    use seispulse_optval, only: optval
+    use seispulse_records, only: STANDARD_GRAVITY
     use seispulse_format, only: real_str
     use seispulse_special, only: expm1, log1p, pi
     use seispulse_roots, only: scalar_function, find_root, smooth_function, find_root_newton
@@ -130,17 +132,22 @@ contains
 
     !> Onset time tau_y = t_y/t_d of sliding under the exponential pulse (Eq. 1.12), and
     !> with static friction a*eta at the onset (Eq. 1.34). NaN when a*eta >= 1: no sliding.
+    !> static_factor is optional (default 1, as Python's `sliding.yield_time`); when
+    !> omitted, pass tau_y and stat by keyword.
     subroutine yield_time(eta, beta, static_factor, tau_y, stat, errmsg)
         real(dp), intent(in) :: eta                           !! a_y/A_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
-        real(dp), intent(in) :: static_factor                 !! a >= 1 (1: no static friction)
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
+        !> a >= 1 (1: no static friction); default 1.0
+        real(dp), intent(in), optional :: static_factor
         real(dp), intent(out) :: tau_y                        !! t_y/t_d in [0, 1/2], or NaN
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        real(dp) :: static_in
+        static_in = optval(static_factor, 1.0_dp)
         tau_y = ieee_value(tau_y, ieee_quiet_nan)
-        call check_half(eta, beta, static_factor, stat, errmsg)
+        call check_half(eta, beta, static_in, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (static_factor * eta < 1.0_dp) tau_y = exp_rise_time(static_factor * eta, beta)
+        if (static_in * eta < 1.0_dp) tau_y = exp_rise_time(static_in * eta, beta)
     end subroutine yield_time
 
     ! ------------------------------------------------------------------------------
@@ -251,24 +258,29 @@ contains
 
     !> Response to a half-cycle pulse (section 3; static friction: section 8).
     !> Sliding needs static_factor*eta < 1; otherwise regime = SLIDING_REGIME_NONE with zero slip.
+    !> static_factor is optional (default 1, as Python's `sliding.half_cycle`); when
+    !> omitted, pass res and stat by keyword.
     subroutine half_cycle(eta, beta, static_factor, res, stat, errmsg)
         real(dp), intent(in) :: eta                           !! kinetic a_y/A_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
-        real(dp), intent(in) :: static_factor                 !! a >= 1: onset at a*eta
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
+        !> a >= 1: onset at a*eta; default 1.0
+        real(dp), intent(in), optional :: static_factor
         type(half_cycle_t), intent(out) :: res                !! the response
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         type(exp_consts_t) :: c
-        call check_half(eta, beta, static_factor, stat, errmsg)
+        real(dp) :: static_in
+        static_in = optval(static_factor, 1.0_dp)
+        call check_half(eta, beta, static_in, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         res%tau_y = ieee_value(res%tau_y, ieee_quiet_nan)
         res%tau_m = res%tau_y
-        if (.not. (static_factor * eta < 1.0_dp)) return
+        if (.not. (static_in * eta < 1.0_dp)) return
         c = exp_consts(beta)
-        res%tau_y = exp_rise_time(static_factor * eta, beta)
+        res%tau_y = exp_rise_time(static_in * eta, beta)
         call one_slide(c, .false., res%tau_y, eta, res%tau_m, res%um, res%dugm, res%vm, &
                        res%regime, stat, errmsg)
-        if (beta > huge(beta)) res%vm = spike_vm(static_factor * eta, eta)
+        if (beta > huge(beta)) res%vm = spike_vm(static_in * eta, eta)
     end subroutine half_cycle
 
     ! ------------------------------------------------------------------------------
@@ -280,19 +292,27 @@ contains
     !> stop of section 7). eta1 resists forward (downhill) sliding, eta2 reverse sliding.
     !> Static friction (section 8) acts at the first onset, and at the reverse onset too
     !> when static_reverse.
+    !> static_factor and static_reverse are optional (defaults 1 and .false., as Python's
+    !> `sliding.full_cycle`); when one is omitted, pass res and stat by keyword.
     subroutine full_cycle(eta1, eta2, beta, static_factor, static_reverse, res, stat, errmsg)
         real(dp), intent(in) :: eta1                          !! forward a_y1/A_g > 0
         real(dp), intent(in) :: eta2                          !! reverse a_y2/A_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
-        real(dp), intent(in) :: static_factor                 !! a >= 1
-        logical, intent(in) :: static_reverse                 !! a also at the reverse onset
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
+        !> a >= 1; default 1.0
+        real(dp), intent(in), optional :: static_factor
+        !> a also at the reverse onset; default .false.
+        logical, intent(in), optional :: static_reverse
         type(full_cycle_t), intent(out) :: res                !! the response
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         type(exp_consts_t) :: c
         real(dp) :: nan, on2, tbar0, tbar_m, dug
         integer :: regime
-        call check_full(eta1, eta2, beta, static_factor, stat, errmsg)
+        real(dp) :: static_in
+        logical :: reverse_in
+        static_in = optval(static_factor, 1.0_dp)
+        reverse_in = optval(static_reverse, .false.)
+        call check_full(eta1, eta2, beta, static_in, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         nan = ieee_value(nan, ieee_quiet_nan)
         res%tau_y1 = nan
@@ -301,25 +321,25 @@ contains
         res%tau_m2 = nan
         c = exp_consts(beta)
 
-        if (.not. (static_factor * eta1 < 1.0_dp)) then
+        if (.not. (static_in * eta1 < 1.0_dp)) then
             ! no forward slide: the second lobe acts alone, as a half cycle (section 7)
-            if (.not. (static_factor * eta2 < 1.0_dp)) return
+            if (.not. (static_in * eta2 < 1.0_dp)) return
             res%mode = SLIDING_MODE_REVERSE_ONLY
-            tbar0 = exp_rise_time(static_factor * eta2, beta)
-            call reverse_slide(static_factor * eta2)
+            tbar0 = exp_rise_time(static_in * eta2, beta)
+            call reverse_slide(static_in * eta2)
             return
         end if
 
         ! forward slide: onset 1.12/1.34, stop by the corrected 1.19 on [1 - tau_y, 2 - tau_y]
-        res%tau_y1 = exp_rise_time(static_factor * eta1, beta)
+        res%tau_y1 = exp_rise_time(static_in * eta1, beta)
         call one_slide(c, .true., res%tau_y1, eta1, res%tau_m1, res%um1, dug, res%vm1, &
                        regime, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (beta > huge(beta)) res%vm1 = spike_vm(static_factor * eta1, eta1)
+        if (beta > huge(beta)) res%vm1 = spike_vm(static_in * eta1, eta1)
         res%ures = res%um1
         res%mode = SLIDING_MODE_UNILATERAL
         on2 = eta2
-        if (static_reverse) on2 = static_factor * eta2
+        if (reverse_in) on2 = static_in * eta2
         if (.not. (on2 < 1.0_dp)) return
 
         ! the second lobe exceeds on2 on (1 + tau_y(on2), 2 - tau_y(on2)) (section 7)
@@ -360,7 +380,7 @@ contains
     !> dimensionless pulse (A_g = 1, t_d = 1) instead of the closed forms.
     subroutine half_cycle_integrated(eta, beta, static_factor, res, stat, errmsg)
         real(dp), intent(in) :: eta                           !! kinetic a_y/A_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         real(dp), intent(in) :: static_factor                 !! a >= 1: onset at a*eta
         type(half_cycle_t), intent(out) :: res                !! the response
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
@@ -396,7 +416,7 @@ contains
                                      res, stat, errmsg)
         real(dp), intent(in) :: eta1                          !! forward a_y1/A_g > 0
         real(dp), intent(in) :: eta2                          !! reverse a_y2/A_g > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         real(dp), intent(in) :: static_factor                 !! a >= 1
         logical, intent(in) :: static_reverse                 !! a also at the reverse onset
         logical, intent(in) :: full                           !! full cycle
@@ -480,7 +500,7 @@ contains
     !> (reverses at once) for eta < eta_cr and sticks above (section 5), the root of
     !> tau_m1(eta) = 1 + tau_y(eta) in (0, 1). 1 for the rectangle, 0 for the spike.
     subroutine eta_critical(beta, eta_cr, stat, errmsg)
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         real(dp), intent(out) :: eta_cr                       !! critical eta
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
@@ -552,7 +572,10 @@ contains
     !> u_m = (1 - eta)/(2 eta), u_m/du_gm = (1 - eta)/(2 - eta), V_m/V_g = 1 - eta.
     elemental subroutine rectangle_half(eta, tau_m, um, ratio, vm)
         real(dp), intent(in) :: eta                 !! 0 < eta < 1
-        real(dp), intent(out) :: tau_m, um, ratio, vm
+        real(dp), intent(out) :: tau_m  !! stop t_m/t_d
+        real(dp), intent(out) :: um     !! slip u_m/(A_g t_d^2)
+        real(dp), intent(out) :: ratio  !! u_m/du_gm (dimensionless)
+        real(dp), intent(out) :: vm     !! peak sliding velocity V_m/V_g
         tau_m = 1.0_dp / eta
         um = (1.0_dp - eta) / (2.0_dp * eta)
         ratio = (1.0_dp - eta) / (2.0_dp - eta)
@@ -564,7 +587,11 @@ contains
     !> u_res = ((1 - eta)/(1 + eta))^2.
     elemental subroutine rectangle_full(eta, tau_m1, um1, tau_m2, um2, ures)
         real(dp), intent(in) :: eta                 !! 0 < eta < 1
-        real(dp), intent(out) :: tau_m1, um1, tau_m2, um2, ures
+        real(dp), intent(out) :: tau_m1  !! forward stop t_m1/t_d
+        real(dp), intent(out) :: um1     !! forward slip u_m1/(A_g t_d^2)
+        real(dp), intent(out) :: tau_m2  !! reverse stop t_m2/t_d
+        real(dp), intent(out) :: um2     !! reverse slip u_m2/(A_g t_d^2)
+        real(dp), intent(out) :: ures    !! residual slip u_res/(A_g t_d^2)
         real(dp) :: q
         q = (1.0_dp - eta) / (1.0_dp + eta)
         tau_m1 = 2.0_dp / (1.0_dp + eta)
@@ -581,8 +608,11 @@ contains
     !> eta)^3/12.
     elemental subroutine triangle_half(eta, tau_y, tau_m, um, vm, regime)
         real(dp), intent(in) :: eta                 !! 0 < eta < 1
-        real(dp), intent(out) :: tau_y, tau_m, um, vm
-        integer, intent(out) :: regime
+        real(dp), intent(out) :: tau_y  !! onset t_y/t_d
+        real(dp), intent(out) :: tau_m  !! stop t_m/t_d
+        real(dp), intent(out) :: um     !! slip u_m/(A_g t_d^2)
+        real(dp), intent(out) :: vm     !! peak sliding velocity V_m/V_g
+        integer, intent(out) :: regime  !! SLIDING_REGIME_FREE or SLIDING_REGIME_FORCED
         real(dp), parameter :: sqrt2 = sqrt(2.0_dp)
         tau_y = 0.5_dp * eta
         vm = (1.0_dp - eta)**2
@@ -615,12 +645,15 @@ contains
     !> K1,2 = cos(lambda - xi) +- mu sin(lambda - xi) (section 7): the along-plane slip is
     !> K times the slip of the dimensionless problem. eta = +inf when K <= 0 (the pulse
     !> cannot drive the block that way).
+    !> xi_deg is optional (default 0 as in Python's `sliding.inclined_resistances`);
+    !> when omitted, pass eta1, eta2, k1, k2 and stat by keyword.
     subroutine inclined_resistances(mu, ag_over_g, slope_deg, xi_deg, eta1, eta2, k1, k2, &
                                     stat, errmsg)
         real(dp), intent(in) :: mu                            !! friction coefficient > 0
         real(dp), intent(in) :: ag_over_g                     !! A_g/g > 0
         real(dp), intent(in) :: slope_deg                     !! lambda in [0, 90) deg
-        real(dp), intent(in) :: xi_deg                        !! xi in [-90, 90] deg
+        !> xi in [-90, 90] deg; default 0 (horizontal excitation)
+        real(dp), intent(in), optional :: xi_deg
         real(dp), intent(out) :: eta1                         !! downhill resistance / A_g
         real(dp), intent(out) :: eta2                         !! uphill resistance / A_g
         real(dp), intent(out) :: k1                           !! downhill along-plane factor
@@ -628,6 +661,8 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         real(dp) :: lam, dl, eta, inf
+        real(dp) :: xi_in
+        xi_in = optval(xi_deg, 0.0_dp)
         inf = ieee_value(inf, ieee_positive_inf)
         eta1 = ieee_value(eta1, ieee_quiet_nan)
         eta2 = eta1
@@ -643,9 +678,9 @@ contains
         else if (outside(slope_deg, 0.0_dp, 90.0_dp, .false., .true.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'slope_deg = ' &
                            //real_str(slope_deg)//': must be in [0, 90) degrees')
-        else if (outside(xi_deg, -90.0_dp, 90.0_dp, .false., .false.)) then
+        else if (outside(xi_in, -90.0_dp, 90.0_dp, .false., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'xi_deg = ' &
-                           //real_str(xi_deg)//': must be in [-90, 90] degrees')
+                           //real_str(xi_in)//': must be in [-90, 90] degrees')
         end if
         if (stat /= SEISPULSE_SUCCESS) return
         lam = slope_deg * (pi / 180.0_dp)
@@ -656,7 +691,7 @@ contains
                 //' any excitation (statically unstable slope)')
             return
         end if
-        dl = lam - xi_deg * (pi / 180.0_dp)
+        dl = lam - xi_in * (pi / 180.0_dp)
         eta = mu / ag_over_g
         k1 = cos(dl) + mu * sin(dl)
         k2 = cos(dl) - mu * sin(dl)
@@ -672,32 +707,50 @@ contains
     !> amplitude A_g (in g) and half-duration t_d (s) acting at angle xi to the horizontal,
     !> positive downhill: times in s, slips in m along the plane (with the factors K of
     !> section 7 when along_plane; without them, as in the chapter's example 1.9.2).
+    !> The arguments from full to g are optional with the defaults of Python's
+    !> `sliding.block`; when one is omitted, pass res and stat by keyword.
     subroutine block_response(mu, ag_over_g, td, beta, full, slope_deg, xi_deg, &
                               static_factor, static_reverse, along_plane, g, res, stat, errmsg)
         real(dp), intent(in) :: mu                            !! friction coefficient > 0
         real(dp), intent(in) :: ag_over_g                     !! A_g/g > 0
         real(dp), intent(in) :: td                            !! t_d, one lobe (s) > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
-        logical, intent(in) :: full                           !! full cycle
-        real(dp), intent(in) :: slope_deg                     !! lambda in [0, 90) deg
-        real(dp), intent(in) :: xi_deg                        !! xi in [-90, 90] deg
-        real(dp), intent(in) :: static_factor                 !! a >= 1
-        logical, intent(in) :: static_reverse                 !! a also at the reverse onset
-        logical, intent(in) :: along_plane                    !! apply K1, K2
-        real(dp), intent(in) :: g                             !! gravity (m/s^2) > 0
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
+        !> full cycle (.true.) or one lobe; default .false.
+        logical, intent(in), optional :: full
+        !> lambda in [0, 90) deg; default 0 (horizontal plane)
+        real(dp), intent(in), optional :: slope_deg
+        !> xi in [-90, 90] deg; default 0 (horizontal excitation)
+        real(dp), intent(in), optional :: xi_deg
+        !> a >= 1 (static over kinetic friction); default 1
+        real(dp), intent(in), optional :: static_factor
+        !> a also at the reverse onset; default .false.
+        logical, intent(in), optional :: static_reverse
+        !> apply K1, K2; default .true.
+        logical, intent(in), optional :: along_plane
+        !> gravity (m/s^2) > 0; default STANDARD_GRAVITY (9.80665)
+        real(dp), intent(in), optional :: g
         type(sliding_block_t), intent(out) :: res                     !! the response (SI)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         real(dp) :: eta1, eta2, k1, k2
-        call inclined_resistances(mu, ag_over_g, slope_deg, xi_deg, eta1, eta2, k1, k2, &
+        logical :: full_in, reverse_in, along_in
+        real(dp) :: slope_in, xi_in, static_in, g_in
+        full_in = optval(full, .false.)
+        slope_in = optval(slope_deg, 0.0_dp)
+        xi_in = optval(xi_deg, 0.0_dp)
+        static_in = optval(static_factor, 1.0_dp)
+        reverse_in = optval(static_reverse, .false.)
+        along_in = optval(along_plane, .true.)
+        g_in = optval(g, STANDARD_GRAVITY)
+        call inclined_resistances(mu, ag_over_g, slope_in, xi_in, eta1, eta2, k1, k2, &
                                   stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        if (.not. along_plane) then
+        if (.not. along_in) then
             k1 = 1.0_dp
             k2 = 1.0_dp
         end if
-        call block_response_eta(eta1, eta2, k1, k2, ag_over_g, td, beta, full, static_factor, &
-                                static_reverse, g, res, stat, errmsg)
+        call block_response_eta(eta1, eta2, k1, k2, ag_over_g, td, beta, full_in, static_in, &
+                                reverse_in, g_in, res, stat, errmsg)
     end subroutine block_response
 
     !> The same from the resistances eta1, eta2 (over A_g) and the along-plane factors
@@ -710,7 +763,7 @@ contains
         real(dp), intent(in) :: k2                            !! uphill along-plane factor
         real(dp), intent(in) :: ag_over_g                     !! A_g/g > 0
         real(dp), intent(in) :: td                            !! t_d, one lobe (s) > 0
-        real(dp), intent(in) :: beta                          !! pulse shape, not NaN
+        real(dp), intent(in) :: beta                          !! pulse shape (-), not NaN
         logical, intent(in) :: full                           !! full cycle
         real(dp), intent(in) :: static_factor                 !! a >= 1
         logical, intent(in) :: static_reverse                 !! a also at the reverse onset

@@ -7,6 +7,7 @@ module seispulse_sliding_norm
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error
     use seispulse_checks, only: outside
     use seispulse_format, only: real_str
+    use seispulse_optval, only: optval
     use seispulse_pulses, only: exp_consts_t, exp_consts
     implicit none
     private
@@ -120,14 +121,19 @@ contains
     !> Table 1.3: the basic lengths of Eq. 1.28 over A_g t_d^2 for the exponential pulse,
     !> from their formulas with V_g = k A_g t_d and D_g = k A_g t_d^2/n (n = 2 half cycle,
     !> 1 full cycle; Eq. 1.29). Rows in the order of 1.28a-f.
+    !> full is optional (default .false., as Python's `sliding.table_1_3`); when omitted,
+    !> pass ratios and stat by keyword.
     subroutine table_1_3(beta, full, ratios, stat, errmsg)
         real(dp), intent(in) :: beta                          !! pulse shape, finite or -inf
-        logical, intent(in) :: full                           !! full cycle
+        !> full cycle; default .false.
+        logical, intent(in), optional :: full
         real(dp), intent(out) :: ratios(NBASIC)               !! D_c/(A_g t_d^2)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         type(exp_consts_t) :: cst
         real(dp) :: n
+        logical :: full_in
+        full_in = optval(full, .false.)
         ratios = 0.0_dp
         stat = SEISPULSE_SUCCESS
         if (.not. (beta < huge(beta))) then
@@ -138,7 +144,7 @@ contains
         end if
         cst = exp_consts(beta)
         n = 2.0_dp
-        if (full) n = 1.0_dp
+        if (full_in) n = 1.0_dp
         call basic_lengths(1.0_dp, cst%vg, cst%vg / n, 1.0_dp, ratios, stat, errmsg)
     end subroutine table_1_3
 

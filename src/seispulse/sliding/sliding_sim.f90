@@ -154,7 +154,9 @@ contains
         type(stickslip_result_t), intent(out) :: res          !! slides and summary
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: t_grid(:)           !! output times, ascending
+        !> output times (units of the pulse), ascending; absent: no history (with u_grid,
+        !> w_grid)
+        real(dp), intent(in), optional :: t_grid(:)
         real(dp), intent(out), optional :: u_grid(:)          !! u at t_grid
         real(dp), intent(out), optional :: w_grid(:)          !! u' at t_grid
         type(ground_fn) :: g
@@ -193,7 +195,8 @@ contains
                                                               !! and summary
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: t_grid(:)           !! output times (s), ascending
+        !> output times (s), ascending; absent: no history (with u_grid, w_grid)
+        real(dp), intent(in), optional :: t_grid(:)
         real(dp), intent(out), optional :: u_grid(:)          !! u at t_grid (m)
         real(dp), intent(out), optional :: w_grid(:)          !! u' at t_grid (m/s)
         type(ground_fn) :: gf

@@ -140,7 +140,7 @@ contains
     !> 1/(1 + i delta), the damping factor of G* = G(1 + i delta), without overflow of
     !> delta^2 for large delta.
     elemental function inv_one_plus_i(delta) result(w)
-        real(dp), intent(in) :: delta
+        real(dp), intent(in) :: delta  !! hysteretic damping factor delta (dimensionless)
         complex(dp) :: w
         real(dp) :: r, d
         if (delta <= 1.0_dp) then

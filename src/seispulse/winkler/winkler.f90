@@ -380,7 +380,8 @@ contains
         type(rocking_body_t), intent(out) :: cyl              !! its solid cylinder
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: theta_c             !! slenderness (rad), (0, pi/2)
+        !> slenderness (rad), (0, pi/2); default the block's own
+        real(dp), intent(in), optional :: theta_c
         integer, intent(in), optional :: k_method             !! K_CONSTANT (default)/K_VARYING
         type(branch_t) :: bb
         type(rocking_body_t) :: geom
@@ -1150,10 +1151,12 @@ contains
     !> x in [1e-30, 1e30] (scale_min, scale_max), else an error "name = x: <what> must be a
     !> finite number > 0 (<unit>), in [1e-30, 1e30]".
     subroutine check_scale(x, name, what, unit, stat, errmsg)
-        real(dp), intent(in) :: x
-        character(len=*), intent(in) :: name, what, unit
-        integer, intent(out) :: stat
-        character(len=*), intent(inout), optional :: errmsg
+        real(dp), intent(in) :: x             !! the value (in `unit`)
+        character(len=*), intent(in) :: name  !! the argument's name, for the message
+        character(len=*), intent(in) :: what  !! what it is, for the message
+        character(len=*), intent(in) :: unit  !! its unit, for the message
+        integer, intent(out) :: stat          !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         stat = SEISPULSE_SUCCESS
         if (.not. in_closed(x, scale_min, scale_max)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, name//' = '//real_str(x) &

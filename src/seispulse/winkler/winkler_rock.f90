@@ -294,12 +294,18 @@ contains
         type(winkler_model_t), intent(out) :: model           !! the model
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        real(dp), intent(in), optional :: alpha               !! block half-length (m), > 0
-        integer, intent(in), optional :: k_method             !! K_CONSTANT or K_VARYING
-        real(dp), intent(in), optional :: xi                  !! damping ratio (-), >= 0
-        integer, intent(in), optional :: damping_ref          !! DAMP_ROCKING or DAMP_VERTICAL
-        real(dp), intent(in), optional :: c                   !! dashpot (N s/m^3), >= 0
-        integer, intent(in), optional :: reading              !! AXIS_LONG or AXIS_SHORT
+        !> block half-length (m), > 0; required for a block, unused for a cylinder
+        real(dp), intent(in), optional :: alpha
+        !> K_CONSTANT or K_VARYING; default K_CONSTANT
+        integer, intent(in), optional :: k_method
+        !> damping ratio (-), >= 0; absent (and no c): no dashpots
+        real(dp), intent(in), optional :: xi
+        !> DAMP_ROCKING or DAMP_VERTICAL; default DAMP_ROCKING
+        integer, intent(in), optional :: damping_ref
+        !> dashpot (N s/m^3), >= 0; absent: from xi, or 0
+        real(dp), intent(in), optional :: c
+        !> AXIS_LONG or AXIS_SHORT (varying k); default AXIS_LONG
+        integer, intent(in), optional :: reading
         type(winkler_pushover_t) :: res
         real(dp), allocatable :: th(:), curve(:, :)
         real(dp) :: w2, top
@@ -438,16 +444,22 @@ contains
         type(winkler_run_t), intent(out) :: run               !! summary
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        type(pulse_t), intent(in), optional :: pulse          !! ground acceleration (m/s^2)
-        real(dp), intent(in), optional :: accel(:)            !! record (units of g_rec)
-        real(dp), intent(in), optional :: dt                  !! record step (s), > 0
-        real(dp), intent(in), optional :: g_rec               !! unit of the record (m/s^2)
-        real(dp), intent(in), optional :: v0                  !! initial settlement (m)
-        real(dp), intent(in), optional :: theta0              !! initial tilt (rad)
-        real(dp), intent(in), optional :: v_rate0             !! (m/s)
-        real(dp), intent(in), optional :: theta_rate0         !! (rad/s)
-        real(dp), intent(in), optional :: t_max               !! end of the run (s), > 0
-        real(dp), intent(in), optional :: rtol                !! step tolerance (1e-9)
+        !> ground acceleration (m/s^2); absent (and no record): free rocking
+        type(pulse_t), intent(in), optional :: pulse
+        !> record (units of g_rec); with dt, or absent
+        real(dp), intent(in), optional :: accel(:)
+        !> record step (s), > 0; required with accel
+        real(dp), intent(in), optional :: dt
+        !> unit of the record (m/s^2); default body%g
+        real(dp), intent(in), optional :: g_rec
+        !> initial settlement (m); default the static W/(k A)
+        real(dp), intent(in), optional :: v0
+        real(dp), intent(in), optional :: theta0              !! initial tilt (rad); default 0
+        real(dp), intent(in), optional :: v_rate0             !! initial v' (m/s); default 0
+        real(dp), intent(in), optional :: theta_rate0         !! initial theta' (rad/s); default 0
+        !> end of the run (s), > 0 or +inf; default the last output time
+        real(dp), intent(in), optional :: t_max
+        real(dp), intent(in), optional :: rtol                !! step tolerance; default 1e-9
         type(wr_state_t) :: st
         type(piece_iter_t) :: it
         real(dp) :: y0(NY), rt, gu, t_exc
@@ -569,8 +581,9 @@ contains
         integer, intent(out) :: classes(:, :)                 !! size(y) x size(x)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
-        type(pulse_t), intent(in), optional :: template       !! shape parameters of the kind
-        real(dp), intent(in), optional :: rtol                !! step tolerance (1e-6)
+        !> shape parameters of the kind; absent: pulse_t defaults
+        type(pulse_t), intent(in), optional :: template
+        real(dp), intent(in), optional :: rtol                !! step tolerance; default 1e-6
         type(wr_state_t) :: st
         type(piece_iter_t) :: it
         type(pulse_t) :: pl
@@ -739,8 +752,15 @@ contains
     subroutine winkler_contact_forces(model, state, width, k_eff, n, m, u, dn, dm)
         type(winkler_model_t), intent(in) :: model  !! the model
         real(dp), intent(in) :: state(4)            !! v, theta, v', theta'
-        real(dp), intent(out) :: width, k_eff, n, m, u
-        real(dp), intent(out), optional :: dn(4), dm(4)
+        real(dp), intent(out) :: width  !! contact width b (m)
+        real(dp), intent(out) :: k_eff  !! Winkler modulus used (N/m^3)
+        real(dp), intent(out) :: n      !! normal force N (N)
+        real(dp), intent(out) :: m      !! moment M (N m)
+        real(dp), intent(out) :: u      !! spring energy U (J)
+        !> dN/d(v, theta, v', theta') (N/m, N/rad, N s/m, N s/rad)
+        real(dp), intent(out), optional :: dn(4)
+        !> dM/d(v, theta, v', theta') (N, N m/rad, N s, N m s/rad)
+        real(dp), intent(out), optional :: dm(4)
         type(wr_ode_t) :: sys
         type(contact_t) :: ct
         call load_model(sys, model)
