@@ -47,8 +47,26 @@ NOT_RUN = {
         "needs a `meson install`ed library: test/install/check_install.sh installs one and "
         "links a program through pkg-config; the program itself is compiled here against "
         "the build tree",
-    ("sh", "gfortran design_check.f90 $(pkg-config --cflags --libs seispulse) -o design_check"):
-        "as the line above: links against an installed library (check_install.sh does)",
+    ("sh", "libdir=$(pkg-config --variable=libdir seispulse)"):
+        "as the line above: the libdir of an installed library",
+    ("sh", "gfortran design_check.f90 *"):
+        "links against an installed library: check_install.sh links a program through "
+        "pkg-config, shared and static, and runs it; design_check itself is compiled here "
+        "against the build tree",
+    ("sh", "-o design_check"): "the continuation line of the gfortran commands above",
+    ("sh", "$(pkg-config --static --libs seispulse*"):
+        "the continuation line of the static link above (check_install.sh links statically)",
+    ("sh", "./design_check"): "runs the program linked above against an installed library",
+    ("sh", "LD_LIBRARY_PATH=$libdir ./design_check"):
+        "as the line above, finding the shared library through LD_LIBRARY_PATH",
+    ("sh", "make doc"): "the `doc` stage of make test runs the same (tools/make_doc.py)",
+    ("sh", "export PATH=$PWD/.venv/bin:$PATH"):
+        "changes the user's shell; the tests call .venv/bin/meson by its path",
+    ("sh", "meson configure build --prefix=$HOME/.local"):
+        "reconfigures the user's build directory: check_install.sh configures a separate "
+        "build with a temporary --prefix and installs it",
+    ("sh", "meson install -C build"):
+        "installs into the user's prefix (check_install.sh installs into a temporary one)",
     ("sh", "PYTHONPATH=build/python python3 bench/*"):
         "a benchmark: minutes per run, timing figures, and peer programs to compare with",
     ("namelist", "&run analysis = 'newmark', output = 'out/case' /"):
