@@ -34,11 +34,15 @@ module driver_rocking
     implicit none
     private
 
-    public :: run_rocking, rocking_groups
+    public :: run_rocking, rocking_groups, rocking_tables
 
     !> Groups this analysis reads (besides &run).
     character(len=8), parameter :: rocking_groups(4) = [character(len=8) :: 'block', &
         'pulse', 'rocking', 'map']
+
+    !> Tables this analysis may write (removed with the echo file after an input error).
+    character(len=15), parameter :: rocking_tables(3) = [character(len=15) :: 'rocking', &
+        'rocking_history', 'rocking_map']
 
     character(len=12), parameter :: block_keys(8) = [character(len=12) :: 'b', 'h', &
         'alpha', 'alpha_deg', 'r', 'io_over_mr2', 'e', 'model']
