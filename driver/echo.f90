@@ -16,6 +16,7 @@ module driver_echo
     use seispulse, only: dp, int_str
     use driver_namelist_scan, only: nml_group, scan_unit, lower
     use driver_input, only: find_group, given, num
+    use driver_tables, only: table_path, open_output
     implicit none
     private
 
@@ -149,15 +150,16 @@ contains
         if (to_stdout) write(output_unit, '(a)') text
         if (.not. to_file) return
         path = echo_file_path(prefix)
-        open(newunit=u, file=path, status='replace', action='write', iostat=stat, &
-             iomsg=iomsg)
-        if (stat == 0) write(u, '(a)', iostat=stat, iomsg=iomsg) &
+        ! under <path>.part until the run ends (driver_tables: commit_outputs, discard_outputs)
+        call open_output(path, u, stat, errmsg)
+        if (stat /= 0) return
+        write(u, '(a)', iostat=stat, iomsg=iomsg) &
             '! effective input of '//input//' (seispulse); re-run: seispulse '//path &
             //new_line('a')//text
         if (stat == 0) then
             close(u, iostat=stat, iomsg=iomsg)
         else
-            close(u, status='delete')
+            close(u)
         end if
         if (stat /= 0) errmsg = path//': cannot write the echo of the input: '//trim(iomsg)
     end subroutine echo_finish
@@ -382,36 +384,5 @@ contains
         has_dotdot = p == '..' .or. starts_with(p, '../') .or. index(p, '/../') > 0
         if (len(p) >= 3) has_dotdot = has_dotdot .or. p(len(p) - 2:) == '/..'
     end function has_dotdot
-
-    !> LOCAL STAND-IN for driver_tables' table_path (design section 2), until that exists:
-    !> <prefix>_<table>.<ext>, except that a `_`-word suffix of the base name of `prefix`
-    !> equal to a `_`-word prefix of `table` is written once (the longest such overlap).
-    pure function table_path(prefix, table, ext) result(path)
-        character(len=*), intent(in) :: prefix, table, ext
-        character(len=:), allocatable :: path, base
-        integer :: k, m, best
-        k = index(prefix, '/', back=.true.)
-        base = prefix(k + 1:)
-        best = 0
-        ! candidate overlaps: table words w1_..._wm equal to the last m words of base
-        do m = 1, len(table)
-            if (m < len(table)) then
-                if (table(m + 1:m + 1) /= '_') cycle
-            end if
-            if (len(base) < m) exit
-            if (base(len(base) - m + 1:) /= table(1:m)) cycle
-            if (len(base) > m) then
-                if (base(len(base) - m:len(base) - m) /= '_') cycle
-            end if
-            best = m
-        end do
-        if (best == len(table)) then
-            path = prefix//'.'//ext
-        else if (best > 0) then
-            path = prefix//table(best + 1:)//'.'//ext
-        else
-            path = prefix//'_'//table//'.'//ext
-        end if
-    end function table_path
 
 end module driver_echo

@@ -5,16 +5,23 @@ module driver_run_group
 
     public :: run_analysis, run_output, read_run, run_keys, write_run
     public :: run_verbose
+    public :: run_digits, run_csv_digits, check_run_digits
 
-    character(len=8), parameter :: run_keys(3) = [character(len=8) :: 'analysis', 'output', &
-        'verbose']
+    character(len=10), parameter :: run_keys(5) = [character(len=10) :: 'analysis', 'output', &
+        'verbose', 'digits', 'csv_digits']
 
     character(len=32) :: analysis = ''
     character(len=1024) :: output = ''
+    !> significant digits of the numbers in text tables (1..17)
+    integer :: digits = 6
+    !> significant digits in CSV tables: 0 = the shortest text that reads back to the same
+    !> double (round-trip exact), 1..17 = that many
+    integer :: csv_digits = 0
     namelist /run/ analysis, output
     !> Also echo the effective input on standard output (it always goes to its file).
     logical :: verbose = .false.
     namelist /run/ verbose
+    namelist /run/ digits, csv_digits
 
 contains
 
@@ -44,6 +51,36 @@ contains
     logical function run_verbose()
         run_verbose = verbose
     end function run_verbose
+
+    !> Significant digits of the numbers in text tables.
+    integer function run_digits()
+        run_digits = digits
+    end function run_digits
+
+    !> Significant digits in CSV tables (0: shortest round-trip text).
+    integer function run_csv_digits()
+        run_csv_digits = csv_digits
+    end function run_csv_digits
+
+    !> digits in 1..17 and csv_digits in 0..17; errmsg names the key ("digits = 0: ...").
+    subroutine check_run_digits(stat, errmsg)
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=12) :: buf
+        stat = 0
+        errmsg = ''
+        if (digits < 1 .or. digits > 17) then
+            write(buf, '(i0)') digits
+            stat = 1
+            errmsg = 'digits = '//trim(buf)//': must be 1 to 17 (significant digits in ' &
+                     //'the text tables)'
+        else if (csv_digits < 0 .or. csv_digits > 17) then
+            write(buf, '(i0)') csv_digits
+            stat = 1
+            errmsg = 'csv_digits = '//trim(buf)//': must be 0 (shortest round-trip text) ' &
+                     //'to 17'
+        end if
+    end subroutine check_run_digits
 
     !> Echo the group (for the log).
     subroutine write_run(unit)
