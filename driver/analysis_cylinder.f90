@@ -27,7 +27,7 @@ module driver_cylinder
                                              ieee_positive_inf, ieee_is_finite
     use seispulse, only: dp, pi, pulse_t, pulse_eval, pulse_kind_name, SEISPULSE_SUCCESS, &
                          real_str, int_str, rocking_block_t, rocking_run_t, rock_pulse, &
-                         rock_record, ROCK_RUN_TIME_LIMIT, in_open, positive, rocking_body_t, &
+                         ROCK_RUN_TIME_LIMIT, in_open, positive, rocking_body_t, &
                          cylinder_props, block_props, body_rocking_block, equivalent_cylinder, &
                          equivalent_block, rigid_pushover, normalized_pushover, &
                          body_overturning_map, map_difference, BODY_SOLID_CYLINDER, &
@@ -48,7 +48,7 @@ module driver_cylinder
     use driver_rocking_common, only: check_run_options, restitution_and_model, &
                                      locate_run_message, map_kind, map_template, progress_t, &
                                      axes_names, map_axes_code, map_grids, map_axes_header, &
-                                     map_table
+                                     map_table, rock_on_record, record_at
     implicit none
     private
 
@@ -967,12 +967,12 @@ contains
         character(len=:), allocatable, intent(out) :: errmsg
         type(rocking_run_t) :: run
         type(record_out_t), allocatable :: outs(:)
-        character(len=:), allocatable :: where
+        character(len=:), allocatable :: where, grid_msg
         character(len=512) :: msg, files(2), files2(2)
         character(len=1024), allocatable :: comments(:)
         character(len=256), allocatable :: labels(:), hlabels(:)
-        real(dp), allocatable :: accel(:), av(:), t(:), summary(:, :), hist(:, :), part(:, :)
-        real(dp) :: t_last, nan
+        real(dp), allocatable :: accel(:), summary(:, :), hist(:, :), part(:, :)
+        real(dp) :: nan
         integer :: nrec, ir, i, st, nfailed
         logical, allocatable :: failed(:)
 
@@ -991,34 +991,12 @@ contains
             failed(ir) = .not. outs(ir)%ok
             if (outs(ir)%ok) then
                 msg = ''
-                ! a_v = kv a_g; not allocated (kv = 0): no vertical record (not present)
-                if (allocated(av)) deallocate(av)
-                if (abs(kv) > 0.0_dp) av = kv * accel
-                call rock_record(s%blk, accel, outs(ir)%dt, s%body%g, run, st, msg, &
-                                 t_max=t_max, rtol=rtol, accel_v=av)
-                if (st == SEISPULSE_SUCCESS) then
-                    t_last = t_end
-                    if (ieee_is_nan(t_end)) then
-                        if (run%outcome == ROCK_RUN_TIME_LIMIT .and. run%t_end > 0.0_dp) then
-                            t_last = run%t_end
-                        else
-                            t_last = max(1.25_dp * run%t_end, &
-                                         outs(ir)%dt * real(size(accel) - 1, dp))
-                        end if
-                    end if
-                    call time_grid(t_last, dt, npts, t, errmsg)
-                    if (len(errmsg) > 0) then
-                        stat = 1
-                        errmsg = located(path, s%gc)//list_item('files', ir)//': '//errmsg
-                        return
-                    end if
-                    allocate(part(size(t), 4))
-                    part(:, 1) = t
-                    part(:, 2) = s%body%g * record_at(accel, outs(ir)%dt, t)
-                    call rock_record(s%blk, accel, outs(ir)%dt, s%body%g, run, st, msg, &
-                                     t_grid=t, theta_grid=part(:, 3), &
-                                     omega_grid=part(:, 4), t_max=t_max, rtol=rtol, &
-                                     accel_v=av)
+                call rock_on_record(s%blk, accel, outs(ir)%dt, s%body%g, kv, t_max, rtol, &
+                                    .true., t_end, dt, npts, run, part, st, msg, grid_msg)
+                if (len(grid_msg) > 0) then
+                    stat = 1
+                    errmsg = located(path, s%gc)//list_item('files', ir)//': '//grid_msg
+                    return
                 end if
                 if (st /= SEISPULSE_SUCCESS) then
                     failed(ir) = .true.
@@ -1082,26 +1060,6 @@ contains
                      //failed_records(outs, failed)//')'
         end if
     end subroutine do_history_records
-
-    !> The record (samples accel(i) at (i - 1) dt, linear in between, 0 after the last,
-    !> as the integrator takes it) at the times t (s); in the unit of the record.
-    pure function record_at(accel, step, t) result(a)
-        real(dp), intent(in) :: accel(:), step, t(:)
-        real(dp) :: a(size(t))
-        real(dp) :: x
-        integer :: i, k, n
-        n = size(accel)
-        do i = 1, size(t)
-            x = t(i) / step
-            k = int(x) + 1                     ! sample at or before t(i)
-            if (k >= n) then
-                a(i) = 0.0_dp
-                if (k == n .and. .not. x > real(n - 1, dp)) a(i) = accel(n)
-            else
-                a(i) = accel(k) + (accel(k + 1) - accel(k)) * (x - real(k - 1, dp))
-            end if
-        end do
-    end function record_at
 
     !> Where a library message about a run belongs: &pulse, &cylinder or &body.
     function locate_message(path, msg, s) result(full_msg)
