@@ -52,11 +52,16 @@ module driver_cylinder
     implicit none
     private
 
-    public :: run_cylinder, cylinder_groups
+    public :: run_cylinder, cylinder_groups, cylinder_tables
 
     !> Groups this analysis reads (besides &run).
     character(len=8), parameter :: cylinder_groups(6) = [character(len=8) :: 'body', &
         'cylinder', 'pulse', 'records', 'map', 'roll']
+
+    !> Tables this analysis may write (removed with the echo file after an input error).
+    character(len=21), parameter :: cylinder_tables(7) = [character(len=21) :: 'cylinder_props', &
+        'cylinder_pushover', 'cylinder', 'cylinder_history', 'cylinder_map', 'cylinder_roll', &
+        'cylinder_roll_history']
 
     character(len=16), parameter :: body_keys(12) = [character(len=16) :: 'shape', 'r', &
         'b', 'r_inner', 'h', 'mass', 'j_o', 'j_axis', 'g', 'e', 'model', 'equivalent_angle']

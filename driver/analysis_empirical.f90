@@ -33,11 +33,14 @@ module driver_empirical
     implicit none
     private
 
-    public :: run_empirical, empirical_groups
+    public :: run_empirical, empirical_groups, empirical_tables
 
     !> Groups this analysis reads (besides &run).
     character(len=9), parameter :: empirical_groups(2) = [character(len=9) :: 'records', &
         'empirical']
+
+    !> Tables this analysis may write (removed with the echo file after an input error).
+    character(len=9), parameter :: empirical_tables(1) = [character(len=9) :: 'empirical']
 
     character(len=12), parameter :: empirical_keys(11) = [character(len=12) :: 'ky', 'pga', &
         'pgv', 'arias', 'magnitude', 'ts', 'sa_15ts', 'tm', 'slammer', 'damping', 'g']

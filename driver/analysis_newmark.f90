@@ -41,11 +41,14 @@ module driver_newmark
     implicit none
     private
 
-    public :: run_newmark, newmark_groups
+    public :: run_newmark, newmark_groups, newmark_tables
 
     !> Groups this analysis reads (besides &run).
     character(len=8), parameter :: newmark_groups(3) = [character(len=8) :: 'records', &
         'newmark', 'slope']
+
+    !> Tables this analysis may write (removed with the echo file after an input error).
+    character(len=9), parameter :: newmark_tables(2) = [character(len=9) :: 'newmark', 'intensity']
 
     character(len=12), parameter :: newmark_keys(16) = [character(len=12) :: 'ky', 'mode', &
         'ky_up', 'k_down', 'k_up', 'mu', 'slope_deg', 'xi_deg', 'along_plane', 'method', 'g', &

@@ -16,10 +16,13 @@ module driver_pulse
     implicit none
     private
 
-    public :: run_pulse, pulse_groups
+    public :: run_pulse, pulse_groups, pulse_tables
 
     !> Groups this analysis reads (besides &run).
     character(len=8), parameter :: pulse_groups(2) = [character(len=8) :: 'pulse', 'time']
+
+    !> Tables this analysis may write (removed with the echo file after an input error).
+    character(len=5), parameter :: pulse_tables(1) = [character(len=5) :: 'pulse']
 
     character(len=8), parameter :: time_keys(4) = [character(len=8) :: 't_start', 't_end', &
         'dt', 'npts']

@@ -35,7 +35,7 @@ module driver_rocking
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid, &
                                   warn_unused_template, template_text, not_one
-    use driver_tables, only: write_tables, say_written, code_legend, stack
+    use driver_tables, only: write_tables, say_written, code_legend, stack, category_kind
     use driver_axis, only: axis_values
     use driver_rocking_common, only: check_run_options, restitution_and_model, &
                                      locate_run_message, map_kind, map_template, progress_t, &
@@ -43,11 +43,15 @@ module driver_rocking
     implicit none
     private
 
-    public :: run_rocking, rocking_groups
+    public :: run_rocking, rocking_groups, rocking_tables
 
     !> Groups this analysis reads (besides &run).
     character(len=8), parameter :: rocking_groups(5) = [character(len=8) :: 'block', &
         'pulse', 'records', 'rocking', 'map']
+
+    !> Tables this analysis may write (removed with the echo file after an input error).
+    character(len=15), parameter :: rocking_tables(3) = [character(len=15) :: 'rocking', &
+        'rocking_history', 'rocking_map']
 
     character(len=12), parameter :: block_keys(9) = [character(len=12) :: 'b', 'h', &
         'alpha', 'alpha_deg', 'r', 'io_over_mr2', 'e', 'model', 'g']
@@ -881,7 +885,7 @@ contains
                 errmsg, labels=hlabels)
         else
             call write_tables(prefix, 'rocking', comments, rec_names, rec_units, summary, &
-                              files, stat, errmsg, labels=labels)
+                              files, stat, errmsg, labels=labels, kinds=record_kinds())
         end if
         if (stat /= 0) then
             errmsg = path//': &run: output: '//errmsg
@@ -932,15 +936,15 @@ contains
             comments(6) = 'records (index, file, format read, npts, dt (s), PGA as read (g), ' &
                           //'scale factor; outcome):'
         else
-            comments(4) = code_legend('outcome', outcome_names)
-            comments(5) = 'pga: after scaling (g); t_overturn: last outward crossing of ' &
+            comments(4) = 'pga: after scaling (g); t_overturn: last outward crossing of ' &
                           //'|theta| = alpha before overturning (theta_max = pi/2 then); ' &
                           //'t_impact1: first impact; t_end: rest, overturned (|theta| = ' &
-                          //'pi/2) or the time limit; psi = theta/alpha; theta_abs_max: the ' &
-                          //'largest |theta|, t_abs_max: the first time it is reached'
-            comments(6) = 'NaN: no such event; status: 0 ok, 1 failed (NaN results; the ' &
-                          //'reason is below and on stderr; exit status 1); records (index, ' &
-                          //'file, format read, npts, dt (s), PGA as read (g), scale factor):'
+                          //'pi/2) or the time limit'
+            comments(5) = 'psi = theta/alpha; theta_abs_max: the largest |theta|, t_abs_max: ' &
+                          //'the first time it is reached; NaN: no such event'
+            comments(6) = 'status: 0 ok, 1 failed (NaN results; the reason is below and on ' &
+                          //'stderr; exit status 1); records (index, file, format read, npts, ' &
+                          //'dt (s), PGA as read (g), scale factor):'
         end if
         do ir = 1, nrec
             comments(nh + ir) = record_line(ir, recs(ir), outs(ir))
@@ -957,6 +961,15 @@ contains
         end do
         comments(nh + nrec + 1) = 'input: '//trim(path)
     end subroutine record_comments
+
+    !> Column kinds of the summary table on records (outcome by name, counts as integers).
+    function record_kinds() result(kinds)
+        character(len=160) :: kinds(n_rec_cols + 1)
+        kinds = ''
+        kinds(6) = category_kind(outcome_names)
+        kinds(9) = 'int'
+        kinds(n_rec_cols + 1) = 'int'
+    end function record_kinds
 
     !> Echo the effective input with &records: &records, &block (with g), &rocking.
     subroutine echo_records_mode(recs, slammer_rounding)

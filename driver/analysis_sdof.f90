@@ -35,11 +35,15 @@ module driver_sdof
     implicit none
     private
 
-    public :: run_sdof, sdof_groups
+    public :: run_sdof, sdof_groups, sdof_tables
 
     !> Groups this analysis reads (besides &run).
     character(len=12), parameter :: sdof_groups(3) = [character(len=12) :: 'records', &
         'sdof', 'sdof_history']
+
+    !> Tables this analysis may write (removed with the echo file after an input error).
+    character(len=13), parameter :: sdof_tables(3) = [character(len=13) :: 'sdof', &
+        'sdof_envelope', 'sdof_history']
 
     character(len=13), parameter :: sdof_keys(11) = [character(len=13) :: 'periods', &
         'period_range', 'period_count', 'spacing', 'damping', 'g', 'peaks', 'threads', &

@@ -18,10 +18,13 @@ module driver_sdof_beta
     implicit none
     private
 
-    public :: run_sdof_beta, sdof_beta_groups
+    public :: run_sdof_beta, sdof_beta_groups, sdof_beta_tables
 
     !> Groups this analysis reads (besides &run).
     character(len=12), parameter :: sdof_beta_groups(1) = [character(len=12) :: 'sdof_beta']
+
+    !> Tables this analysis may write (removed with the echo file after an input error).
+    character(len=9), parameter :: sdof_beta_tables(1) = [character(len=9) :: 'sdof_beta']
 
     character(len=12), parameter :: beta_keys(6) = [character(len=12) :: 'ratios', &
         'ratio_range', 'ratio_count', 'spacing', 'gamma', 'model']

@@ -21,11 +21,14 @@ module driver_sdof_shock
     implicit none
     private
 
-    public :: run_sdof_shock, sdof_shock_groups
+    public :: run_sdof_shock, sdof_shock_groups, sdof_shock_tables
 
     !> Groups this analysis reads (besides &run).
     character(len=12), parameter :: sdof_shock_groups(2) = [character(len=12) :: 'pulse', &
         'sdof_shock']
+
+    !> Tables this analysis may write (removed with the echo file after an input error).
+    character(len=10), parameter :: sdof_shock_tables(1) = [character(len=10) :: 'sdof_shock']
 
     character(len=12), parameter :: shock_keys(8) = [character(len=12) :: 'ratios', &
         'ratio_range', 'ratio_count', 'periods', 'period_range', 'period_count', 'spacing', &

@@ -25,11 +25,15 @@ module driver_sliding
     implicit none
     private
 
-    public :: run_sliding, sliding_groups
+    public :: run_sliding, sliding_groups, sliding_tables
 
     !> Groups this analysis reads (besides &run).
     character(len=8), parameter :: sliding_groups(4) = [character(len=8) :: 'pulse', &
         'block', 'method', 'history']
+
+    !> Tables this analysis may write (removed with the echo file after an input error).
+    character(len=15), parameter :: sliding_tables(2) = [character(len=15) :: 'sliding', &
+        'sliding_history']
 
     character(len=14), parameter :: block_keys(10) = [character(len=14) :: 'mu', &
         'slope_deg', 'xi_deg', 'static_factor', 'static_reverse', 'along_plane', 'eta1', &

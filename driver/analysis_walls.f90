@@ -24,11 +24,15 @@ module driver_walls
     implicit none
     private
 
-    public :: run_walls, walls_groups
+    public :: run_walls, walls_groups, walls_tables
 
     !> Groups this analysis reads (besides &run).
     character(len=8), parameter :: walls_groups(3) = [character(len=8) :: 'wall', 'backfill', &
         'seismic']
+
+    !> Tables this analysis may write (removed with the echo file after an input error).
+    character(len=14), parameter :: walls_tables(2) = [character(len=14) :: 'walls', &
+        'walls_pressure']
 
     character(len=17), parameter :: wall_keys(6) = [character(len=17) :: 'height', 'psi_deg', &
         'wall_friction_deg', 'k_rotation', 'd_theta', 'spacing']

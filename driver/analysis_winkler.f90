@@ -53,11 +53,17 @@ module driver_winkler
     implicit none
     private
 
-    public :: run_winkler, winkler_groups
+    public :: run_winkler, winkler_groups, winkler_tables
 
     !> Groups this analysis reads (besides &run).
     character(len=8), parameter :: winkler_groups(4) = [character(len=8) :: 'winkler', &
         'pulse', 'records', 'map']
+
+    !> Tables this analysis may write (removed with the echo file after an input error).
+    character(len=25), parameter :: winkler_tables(9) = [character(len=25) :: 'winkler_pushover', &
+        'winkler_pushover_summary', 'winkler_master', 'winkler_inelastic', &
+        'winkler_inelastic_summary', 'winkler_capacity', 'winkler', 'winkler_history', &
+        'winkler_map']
 
     !> Every key of &winkler, and the modes that use it (letters of mode_letters).
     character(len=17), parameter :: winkler_keys(43) = [character(len=17) :: 'what', &

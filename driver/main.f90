@@ -11,18 +11,20 @@ program seispulse_driver
     use, intrinsic :: iso_c_binding, only: c_int
     use driver_namelist_scan, only: nml_group, scan_file, lower
     use driver_input, only: find_group, check_keys, read_group, located, join, ROWS_FAILED
-    use driver_pulse, only: run_pulse, pulse_groups
-    use driver_sliding, only: run_sliding, sliding_groups
-    use driver_rocking, only: run_rocking, rocking_groups
-    use driver_newmark, only: run_newmark, newmark_groups
-    use driver_sdof, only: run_sdof, sdof_groups
-    use driver_sdof_beta, only: run_sdof_beta, sdof_beta_groups
-    use driver_sdof_shock, only: run_sdof_shock, sdof_shock_groups
-    use driver_walls, only: run_walls, walls_groups
-    use driver_cylinder, only: run_cylinder, cylinder_groups
-    use driver_winkler, only: run_winkler, winkler_groups
-    use driver_empirical, only: run_empirical, empirical_groups
-    use driver_run_group, only: run_analysis, run_output, read_run, run_keys, write_run
+    use driver_pulse, only: run_pulse, pulse_groups, pulse_tables
+    use driver_sliding, only: run_sliding, sliding_groups, sliding_tables
+    use driver_rocking, only: run_rocking, rocking_groups, rocking_tables
+    use driver_newmark, only: run_newmark, newmark_groups, newmark_tables
+    use driver_sdof, only: run_sdof, sdof_groups, sdof_tables
+    use driver_sdof_beta, only: run_sdof_beta, sdof_beta_groups, sdof_beta_tables
+    use driver_sdof_shock, only: run_sdof_shock, sdof_shock_groups, sdof_shock_tables
+    use driver_walls, only: run_walls, walls_groups, walls_tables
+    use driver_cylinder, only: run_cylinder, cylinder_groups, cylinder_tables
+    use driver_winkler, only: run_winkler, winkler_groups, winkler_tables
+    use driver_empirical, only: run_empirical, empirical_groups, empirical_tables
+    use driver_run_group, only: run_analysis, run_output, read_run, run_keys, write_run, &
+                                check_run_digits
+    use driver_tables, only: commit_outputs, discard_outputs
     implicit none
 
     interface
@@ -34,7 +36,7 @@ program seispulse_driver
     end interface
 
     !> Exit status: success; tables written but some rows failed; an input or output
-    !> error (nothing written).
+    !> error (nothing written, and the tables of an earlier run with this prefix removed).
     integer, parameter :: EXIT_OK = 0, EXIT_ROWS_FAILED = 1, EXIT_INPUT_ERROR = 2
 
     character(len=10), parameter :: analyses(11) = [character(len=10) :: 'pulse', 'sliding', &
@@ -47,6 +49,8 @@ program seispulse_driver
         'cylinder', 'roll', 'winkler', 'empirical', 'slope']
 
     character(len=:), allocatable :: path, errmsg
+    !> the tables the analysis may write (for discard_outputs); none before it is known
+    character(len=32), allocatable :: out_tables(:)
     character(len=4096) :: arg
     type(nml_group), allocatable :: groups(:)
     integer :: stat, irun, i, j
@@ -80,50 +84,52 @@ program seispulse_driver
     if (stat /= 0) call fail(errmsg)
     if (len(run_output()) == 0) call fail(located(path, groups(irun)) &
         //'output: missing (the prefix of the output files, e.g. ''out/case1'')')
+    call check_run_digits(stat, errmsg)
+    if (stat /= 0) call fail(located(path, groups(irun))//errmsg)
 
     select case (lower(run_analysis()))
     case ('pulse')
-        call start(pulse_groups)
+        call start(pulse_groups, pulse_tables)
         call run_pulse(path, groups, run_output(), stat, errmsg)
     case ('sliding')
-        call start(sliding_groups)
+        call start(sliding_groups, sliding_tables)
         call run_sliding(path, groups, run_output(), stat, errmsg)
     case ('rocking')
-        call start(rocking_groups)
+        call start(rocking_groups, rocking_tables)
         call run_rocking(path, groups, run_output(), stat, errmsg)
         ! on records: the table is written; some rows failed (each already reported)
         if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
     case ('newmark')
-        call start(newmark_groups)
+        call start(newmark_groups, newmark_tables)
         call run_newmark(path, groups, run_output(), stat, errmsg)
         ! the table is written; some rows failed (each already reported)
         if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
     case ('sdof')
-        call start(sdof_groups)
+        call start(sdof_groups, sdof_tables)
         call run_sdof(path, groups, run_output(), stat, errmsg)
         ! the tables are written; some records failed (each already reported)
         if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
     case ('sdof_beta')
-        call start(sdof_beta_groups)
+        call start(sdof_beta_groups, sdof_beta_tables)
         call run_sdof_beta(path, groups, run_output(), stat, errmsg)
     case ('sdof_shock')
-        call start(sdof_shock_groups)
+        call start(sdof_shock_groups, sdof_shock_tables)
         call run_sdof_shock(path, groups, run_output(), stat, errmsg)
     case ('walls')
-        call start(walls_groups)
+        call start(walls_groups, walls_tables)
         call run_walls(path, groups, run_output(), stat, errmsg)
     case ('cylinder')
-        call start(cylinder_groups)
+        call start(cylinder_groups, cylinder_tables)
         call run_cylinder(path, groups, run_output(), stat, errmsg)
         ! the tables are written; some records failed (each already reported)
         if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
     case ('winkler')
-        call start(winkler_groups)
+        call start(winkler_groups, winkler_tables)
         call run_winkler(path, groups, run_output(), stat, errmsg)
         ! the tables are written; some records failed (each already reported)
         if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
     case ('empirical')
-        call start(empirical_groups)
+        call start(empirical_groups, empirical_tables)
         call run_empirical(path, groups, run_output(), stat, errmsg)
         ! the table is written; some rows failed (each already reported)
         if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
@@ -139,10 +145,12 @@ program seispulse_driver
 contains
 
     !> Before an analysis: every group but &run must belong to it (allowed); then the echo
-    !> of &run.
-    subroutine start(allowed)
+    !> of &run. `tables`: the tables it may write (removed after an input error).
+    subroutine start(allowed, tables)
         character(len=*), intent(in) :: allowed(:)
+        character(len=*), intent(in) :: tables(:)
         integer :: k
+        out_tables = tables
         do k = 1, size(groups)
             if (groups(k)%name /= 'run' .and. .not. any(allowed == groups(k)%name)) &
                 call fail(located(path, groups(k))//'not a group of analysis ''' &
@@ -161,11 +169,32 @@ contains
         call finish(EXIT_INPUT_ERROR)
     end subroutine fail
 
+    !> Exit with `status`: the outputs of the run are renamed to their final names
+    !> (EXIT_OK, EXIT_ROWS_FAILED; a rename that fails makes it EXIT_INPUT_ERROR), or, for
+    !> EXIT_INPUT_ERROR, deleted together with the files of an earlier run of this
+    !> prefix.
     subroutine finish(status)
         integer, intent(in) :: status
+        integer :: st, rc
+        character(len=:), allocatable :: msg
+        rc = status
+        if (rc /= EXIT_INPUT_ERROR) then
+            call commit_outputs(st, msg)
+            if (st /= 0) then
+                write(error_unit, '(a)') 'seispulse: error: '//path//': &run: output: '//msg
+                rc = EXIT_INPUT_ERROR
+            end if
+        end if
+        if (rc == EXIT_INPUT_ERROR) then
+            if (allocated(out_tables)) then
+                call discard_outputs(run_output(), out_tables)
+            else
+                call discard_outputs('', [character(len=1) ::])
+            end if
+        end if
         flush(output_unit)
         flush(error_unit)
-        call c_exit(int(status, c_int))
+        call c_exit(int(rc, c_int))
     end subroutine finish
 
 end program seispulse_driver

@@ -4,12 +4,20 @@ module driver_run_group
     private
 
     public :: run_analysis, run_output, read_run, run_keys, write_run
+    public :: run_digits, run_csv_digits, check_run_digits
 
-    character(len=8), parameter :: run_keys(2) = [character(len=8) :: 'analysis', 'output']
+    character(len=10), parameter :: run_keys(4) = [character(len=10) :: 'analysis', 'output', &
+        'digits', 'csv_digits']
 
     character(len=32) :: analysis = ''
     character(len=1024) :: output = ''
+    !> significant digits of the numbers in text tables (1..17)
+    integer :: digits = 6
+    !> significant digits in CSV tables: 0 = the shortest text that reads back to the same
+    !> double (round-trip exact), 1..17 = that many
+    integer :: csv_digits = 0
     namelist /run/ analysis, output
+    namelist /run/ digits, csv_digits
 
 contains
 
@@ -35,6 +43,36 @@ contains
         character(len=:), allocatable :: s
         s = trim(output)
     end function run_output
+
+    !> Significant digits of the numbers in text tables.
+    integer function run_digits()
+        run_digits = digits
+    end function run_digits
+
+    !> Significant digits in CSV tables (0: shortest round-trip text).
+    integer function run_csv_digits()
+        run_csv_digits = csv_digits
+    end function run_csv_digits
+
+    !> digits in 1..17 and csv_digits in 0..17; errmsg names the key ("digits = 0: ...").
+    subroutine check_run_digits(stat, errmsg)
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=12) :: buf
+        stat = 0
+        errmsg = ''
+        if (digits < 1 .or. digits > 17) then
+            write(buf, '(i0)') digits
+            stat = 1
+            errmsg = 'digits = '//trim(buf)//': must be 1 to 17 (significant digits in ' &
+                     //'the text tables)'
+        else if (csv_digits < 0 .or. csv_digits > 17) then
+            write(buf, '(i0)') csv_digits
+            stat = 1
+            errmsg = 'csv_digits = '//trim(buf)//': must be 0 (shortest round-trip text) ' &
+                     //'to 17'
+        end if
+    end subroutine check_run_digits
 
     !> Echo the group (for the log).
     subroutine write_run(unit)
