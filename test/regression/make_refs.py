@@ -37,6 +37,10 @@ blocks need none); maps use the wall alone (the rectangle's impacts come after t
 pulse, where a stable block cannot overturn: doc/rocking.md section 3), with cells at least 1e-6
 (relative) away from it.
 
+With &records (what = 'history'): records that are rectangular pulses (equal samples,
+linear in between, 0 after the last: the pulse of duration (n - 1) dt), the same closed
+forms per record, stacked with the record's name first; polarity -1 mirrors the rows.
+
 Analysis 'cylinder' (never by running the driver): the properties of the body and of its
 equivalent body (J_G by the parallel-axis theorem, J_o, p, Housner's e, the equivalence by
 the same p and the same M_max) and the rigid pushover (F, M, M/(m g r)), written out from
@@ -533,8 +537,72 @@ def rocking_map_rows(nml):
     return rows
 
 
+def rocking_records_history_rows(nml_path, nml):
+    """The stacked history (label, t, a_g, theta, omega) of a block under &records that
+    are rectangular pulses: every sample A (g) of a record, n samples dt apart, is the
+    rectangular half-cycle pulse of amplitude A and duration (n - 1) dt (the record is
+    linear between samples and 0 after the last), so rect_psi and rect_summary give it
+    in closed form (e = 0; a stable block rests at its first impact, an overturning one
+    stays at +-pi/2 from the time it gets there). Polarity -1 mirrors theta and a_g; a
+    file that does not exist gives one row of NaN."""
+    nr, b = nml["records"], nml["block"]
+    files = _as_list(nr["files"])
+    n = len(files)
+    if any(k in nr for k in ("scale", "target_pga")) or "g" in b:
+        raise ValueError("rocking records references: records as read, g = 9.80665")
+    g = mpf(ref.G_STANDARD)
+    alpha, p, e = rocking_block(b, g)
+    grid = time_grid(nml["rocking"])
+    rows = []
+    for file, fmt, units, step, pol in zip(files, per_file(nr, "format", n, "auto"),
+                                           per_file(nr, "units", n, "auto"),
+                                           per_file(nr, "dt", n, 0.0),
+                                           per_file(nr, "polarity", n, 1)):
+        path = Path(nml_path).parent / file
+        label = path.stem
+        if not path.exists():
+            rows.append([label] + [mp.nan] * 4)
+            continue
+        acc, step = read_record(path, fmt.lower(), units.lower(), step)
+        if any(x != acc[0] for x in acc) or not acc[0] > 0:
+            raise ValueError(f"{file}: a rectangular pulse (equal samples > 0) only")
+        amp_g = acc[0]
+        td = mpf(float((len(acc) - 1) * float(step)))     # the last sample, in double
+        f, eta = p * td, alpha / amp_g
+        r = rect_summary(f, eta, mp.pi / 2 / alpha)
+        if r["region"] == 5 and e != 0:
+            raise ValueError("rocking records references: e = 0 for stable blocks")
+        t_stop = r["tau_i"] if r["region"] == 5 else r["tau_cap"]
+        for t in grid:
+            tau = mpf(t) / td
+            if abs(tau - t_stop) < mpf(10)**-6 or abs(tau - 1) < mpf(10)**-6:
+                raise ValueError(f"t = {t}: too close to an event or the end of {file}")
+            if tau < t_stop:
+                psi, dpsi = rect_psi(tau, f, eta)
+                theta, omega = psi * alpha, dpsi * alpha * p
+            elif r["region"] == 5:
+                theta, omega = mpf(0), mpf(0)          # at rest after the impact (e = 0)
+            else:
+                theta, omega = mp.pi / 2, mpf(0)       # overturned
+            a_g = amp_g * g if tau <= 1 else mpf(0)
+            rows.append([label, mpf(t), pol * a_g, pol * theta, pol * omega])
+    return rows
+
+
 def make_rocking_ref(nml_path, nml):
     what = nml.get("rocking", {}).get("what", "summary").lower()
+    if "records" in nml:
+        if what != "history":
+            raise ValueError("rocking records references: what = 'history' only")
+        with mp.workdps(40):
+            rows = rocking_records_history_rows(nml_path, nml)
+        lines = ['record (-),' + ROCKING_HISTORY_HEADER]
+        lines += [",".join([f'"{row[0]}"'] + [repr(float(x)) for x in row[1:]])
+                  for row in rows]
+        out = Path(nml_path).with_suffix(".ref")
+        out.write_text("\n".join(lines) + "\n")
+        print(f"wrote {out} ({len(lines) - 1} rows)")
+        return
     with mp.workdps(40):
         if what == "summary":
             header, rows = ROCKING_HEADER, rocking_summary_rows(nml)
