@@ -2,7 +2,7 @@
 row of each record against seispulse.rocking on the same samples (read, scaled and turned
 over as &records says), a sampled rectangular pulse against the pulse run and the closed
 forms of doc/rocking.md (written out in test_driver_rocking), the stacked history, a
-record that fails its row (exit status 1), kv, the block's g, and the input errors
+record that fails its row (status `failed`, exit status 1), kv, the block's g, and the input errors
 (exit status 2)."""
 import csv
 import math
@@ -84,7 +84,7 @@ def test_summary_matches_the_library(driver, tmp_path):
     blk = sp_rocking.rectangular_block(0.2, 0.8)
     for row, factor in zip(rows, (1.0, -1.5)):
         s = dict(zip(names, row))
-        assert s["record"] == "rec" and s["status"] == 0
+        assert s["record"] == "rec" and s["status"] == "ok"
         assert s["pga"] == pytest.approx(abs(factor) * np.max(np.abs(acc)), rel=1e-15)
         ref = sp_rocking.simulate(blk, accel=acc * factor, dt=dt, units="g")
         assert s["outcome"] == ref.outcome
@@ -153,7 +153,7 @@ def test_history_stacked_and_a_failed_record(driver, tmp_path):
     """what = 'history': the records stacked with the record's name first, each row
     seispulse.rocking's theta and omega on the grid, a_g = g x the record (linear in
     between, 0 after); a file that cannot be read gives one row of NaN, the others are
-    written and the exit status is 1 (the summary the same: a NaN row, status 1)."""
+    written and the exit status is 1 (the summary the same: a NaN row, status failed)."""
     from seispulse import rocking as sp_rocking
     dt = 0.02
     acc = record(tmp_path, dt=dt, n=100, amp=0.5)
@@ -162,7 +162,7 @@ def test_history_stacked_and_a_failed_record(driver, tmp_path):
     proc = rocking(driver, tmp_path, "b=0.15, h=0.6", recs,
                    opts="what='history', t_end=4.0, dt=0.05", status=1)
     assert "files(2) = 'gone.txt'" in proc.stderr
-    assert "1 of 3 records failed (2 'gone')" in proc.stderr
+    assert "1 of 3 records failed (2 'gone'): their rows hold NaN" in proc.stderr
     h = columns(tmp_path / "r_rocking_history.csv")
     labels = h["record"]
     assert labels[:81] == ["rec"] * 81 and labels[81] == "gone"
@@ -180,7 +180,8 @@ def test_history_stacked_and_a_failed_record(driver, tmp_path):
     assert not (tmp_path / "r_rocking.csv").exists()
     rocking(driver, tmp_path, "b=0.15, h=0.6", recs, output="s", status=1)
     s = columns(tmp_path / "s_rocking.csv")
-    assert s["record"] == ["rec", "gone", "other"] and s["status"] == [0, 1, 0]
+    assert s["record"] == ["rec", "gone", "other"]
+    assert s["status"] == ["ok", "failed", "ok"]
     assert s["outcome"][1] == "nan" and math.isnan(s["t_end"][1])
     assert s["alpha"][1] == s["alpha"][0]
 
@@ -224,7 +225,7 @@ def test_example_input(driver, source_root, tmp_path):
     s = columns(tmp_path / "out" / "records_rocking.csv")
     assert s["record"] == ["quake_a", "quake_b"]
     assert s["pga"] == pytest.approx([0.5, 0.5], rel=1e-15)
-    assert all(o in OUTCOMES for o in s["outcome"]) and s["status"] == [0, 0]
+    assert all(o in OUTCOMES for o in s["outcome"]) and s["status"] == ["ok", "ok"]
 
 
 @pytest.mark.parametrize("groups, words", [
