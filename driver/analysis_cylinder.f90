@@ -43,12 +43,12 @@ module driver_cylinder
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, &
                               record_line, failed_records
-    use driver_tables, only: write_tables, say_written, code_legend, delete_files, stack
+    use driver_tables, only: write_tables, say_written, code_legend, delete_files
     use driver_axis, only: axis_values
     use driver_rocking_common, only: check_run_options, restitution_and_model, &
                                      locate_run_message, map_kind, map_template, progress_t, &
                                      axes_names, map_axes_code, map_grids, map_axes_header, &
-                                     map_table, rock_on_record, record_at
+                                     map_table, rock_records, record_at
     implicit none
     private
 
@@ -970,61 +970,35 @@ contains
         type(setup_t), intent(in) :: s
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
-        type(rocking_run_t) :: run
+        type(rocking_run_t), allocatable :: runs(:)
         type(record_out_t), allocatable :: outs(:)
-        character(len=:), allocatable :: where, grid_msg
-        character(len=512) :: msg, files(2), files2(2)
+        character(len=:), allocatable :: grid_msg
+        character(len=512) :: files(2), files2(2)
         character(len=1024), allocatable :: comments(:)
         character(len=256), allocatable :: labels(:), hlabels(:)
-        real(dp), allocatable :: accel(:), summary(:, :), hist(:, :), part(:, :)
+        real(dp), allocatable :: summary(:, :), hist(:, :)
         real(dp) :: nan
-        integer :: nrec, ir, i, st, nfailed
+        integer :: nrec, ir, nfailed
         logical, allocatable :: failed(:)
 
         nan = ieee_value(nan, ieee_quiet_nan)
-        where = located(path, s%gr)
         call echo(s)
+        call rock_records(located(path, s%gr), 'cylinder', s%recs, s%slammer_rounding, s%blk, &
+                          s%body%g, kv, t_max, rtol, .true., t_end, dt, npts, outs, failed, &
+                          runs, hist, hlabels, grid_msg, ir)
+        if (len(grid_msg) > 0) then
+            stat = 1
+            errmsg = located(path, s%gc)//list_item('files', ir)//': '//grid_msg
+            return
+        end if
         nrec = size(s%recs)
-        allocate(outs(nrec), labels(nrec), summary(nrec, 14), failed(nrec))
-        allocate(hlabels(0), hist(0, 4))
+        allocate(labels(nrec), summary(nrec, 14))
         summary = nan
-        failed = .false.
         do ir = 1, nrec
-            call load_record(where, s%recs(ir), ir, nrec, 'cylinder', s%slammer_rounding, &
-                             outs(ir), accel)
             labels(ir) = outs(ir)%name
-            failed(ir) = .not. outs(ir)%ok
-            if (outs(ir)%ok) then
-                msg = ''
-                call rock_on_record(s%blk, accel, outs(ir)%dt, s%body%g, kv, t_max, rtol, &
-                                    .true., t_end, dt, npts, run, part, st, msg, grid_msg)
-                if (len(grid_msg) > 0) then
-                    stat = 1
-                    errmsg = located(path, s%gc)//list_item('files', ir)//': '//grid_msg
-                    return
-                end if
-                if (st /= SEISPULSE_SUCCESS) then
-                    failed(ir) = .true.
-                    ! the vertical record is kv times this one: the key at fault is kv
-                    if (index(msg, 'accel_v') == 1) msg = '&cylinder: kv = '//real_str(kv) &
-                        //': a_v = kv a_g falls below -g in this record: '//trim(msg)
-                    outs(ir)%message = trim(msg)
-                    write(error_unit, '(a)') 'seispulse: error: '//where &
-                        //list_item('files', ir)//' = '''//s%recs(ir)%file//''': '//trim(msg)
-                    if (allocated(part)) deallocate(part)
-                else
-                    summary(ir, 1) = outs(ir)%pga
-                    summary(ir, 2:14) = summary_row(s, run)
-                    hist = stack(hist, part)
-                    hlabels = [character(len=256) :: hlabels, &
-                               (labels(ir), i = 1, size(part, 1))]
-                    deallocate(part)
-                    cycle
-                end if
-            end if
-            ! a failed record: one row of NaN in each table
-            hist = stack(hist, reshape([(nan, i = 1, 4)], [1, 4]))
-            hlabels = [character(len=256) :: hlabels, labels(ir)]
+            if (failed(ir)) cycle
+            summary(ir, 1) = outs(ir)%pga
+            summary(ir, 2:14) = summary_row(s, runs(ir))
         end do
 
         allocate(comments(6 + nrec))

@@ -30,16 +30,16 @@ module driver_rocking
     use driver_input, only: find_group, located, join, read_optional, given, list_item, &
                             ROWS_FAILED
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
-                              read_records, check_records, echo_records, load_record, &
-                              record_line, failed_records, report
+                              read_records, check_records, echo_records, record_line, &
+                              failed_records
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid, &
                                   warn_unused_template, template_text, not_one
-    use driver_tables, only: write_tables, say_written, stack, category_kind, status_names
+    use driver_tables, only: write_tables, say_written, category_kind, status_names
     use driver_axis, only: axis_values
     use driver_rocking_common, only: check_run_options, restitution_and_model, &
                                      locate_run_message, map_kind, map_template, progress_t, &
-                                     map_class_names, rock_on_record
+                                     map_class_names, rock_records
     implicit none
     private
 
@@ -820,63 +820,38 @@ contains
         logical, intent(in) :: slammer_rounding, history
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
-        type(rocking_run_t) :: run
+        type(rocking_run_t), allocatable :: runs(:)
         type(record_out_t), allocatable :: outs(:)
-        character(len=:), allocatable :: where, grid_msg
-        character(len=512) :: msg, files(2)
+        character(len=:), allocatable :: grid_msg
+        character(len=512) :: files(2)
         character(len=1024), allocatable :: comments(:)
         character(len=256), allocatable :: labels(:), hlabels(:)
-        real(dp), allocatable :: accel(:), summary(:, :), hist(:, :), part(:, :)
+        real(dp), allocatable :: summary(:, :), hist(:, :)
         real(dp) :: nan
-        integer :: nrec, ir, i, st, nfailed
+        integer :: nrec, ir, nfailed
         logical, allocatable :: failed(:)
 
         nan = ieee_value(nan, ieee_quiet_nan)
-        where = located(path, grec)
         call echo_records_mode(recs, slammer_rounding)
+        call rock_records(located(path, grec), 'rocking', recs, slammer_rounding, blk, blk%g, &
+                          kv, t_max, rtol, history, t_end, dt, npts, outs, failed, runs, &
+                          hist, hlabels, grid_msg, ir)
+        if (len(grid_msg) > 0) then
+            stat = 1
+            errmsg = located(path, gr)//list_item('files', ir)//': '//grid_msg
+            return
+        end if
         nrec = size(recs)
-        allocate(outs(nrec), labels(nrec), summary(nrec, n_rec_cols), failed(nrec))
-        allocate(hlabels(0), hist(0, 4))
-        summary = nan
-        failed = .false.
+        allocate(labels(nrec), summary(nrec, n_rec_cols))
         do ir = 1, nrec
-            call load_record(where, recs(ir), ir, nrec, 'rocking', slammer_rounding, &
-                             outs(ir), accel)
             labels(ir) = outs(ir)%name
-            failed(ir) = .not. outs(ir)%ok
-            ! a failed row: the block, NaN results, status 1
-            summary(ir, 2:4) = [blk%alpha, blk%p, blk%e]
-            summary(ir, n_rec_cols) = 1.0_dp
-            if (outs(ir)%ok) then
-                msg = ''
-                call rock_on_record(blk, accel, outs(ir)%dt, blk%g, kv, t_max, rtol, &
-                                    history, t_end, dt, npts, run, part, st, msg, grid_msg)
-                if (len(grid_msg) > 0) then
-                    stat = 1
-                    errmsg = located(path, gr)//list_item('files', ir)//': '//grid_msg
-                    return
-                end if
-                if (st == SEISPULSE_SUCCESS) then
-                    summary(ir, :) = record_row(outs(ir)%pga, blk, run)
-                    if (history) then
-                        hist = stack(hist, part)
-                        hlabels = [character(len=256) :: hlabels, &
-                                   (labels(ir), i = 1, size(part, 1))]
-                    end if
-                    cycle
-                end if
-                failed(ir) = .true.
-                ! the vertical record is kv times this one: the key at fault is kv
-                if (index(msg, 'accel_v') == 1) msg = '&rocking: kv = '//real_str(kv) &
-                    //': a_v = kv a_g falls below -g in this record: '//trim(msg)
-                outs(ir)%message = trim(msg)
-                call report(where//list_item('files', ir)//' = '''//recs(ir)%file//''': ' &
-                            //trim(msg))
-            end if
-            ! a failed record: one row of NaN in the history
-            if (history) then
-                hist = stack(hist, reshape([(nan, i = 1, 4)], [1, 4]))
-                hlabels = [character(len=256) :: hlabels, labels(ir)]
+            if (failed(ir)) then
+                ! a failed row: the block, NaN results, status 1 (failed)
+                summary(ir, :) = nan
+                summary(ir, 2:4) = [blk%alpha, blk%p, blk%e]
+                summary(ir, n_rec_cols) = 1.0_dp
+            else
+                summary(ir, :) = record_row(outs(ir)%pga, blk, runs(ir))
             end if
         end do
 
