@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from test_driver_rocking import rect_closed_forms, rect_response
+from test_driver_rocking import rect_closed_forms, rect_response, run
 
 G = 9.80665
 OUTCOMES = ["rest", "no_uplift", "overturn_no_impact", "overturn_one_impact",
@@ -25,12 +25,6 @@ UNITS = ["-", "g", "rad", "rad/s", "-", "-", "s", "s", "-", "s", "rad", "rad", "
 # the columns that mean the same in the summary of a pulse
 SHARED = ["alpha", "p", "e", "t_uplift", "t_overturn", "n_impacts", "t_impact1", "theta_max",
           "theta_min", "psi_max", "psi_min", "t_end"]
-
-
-def run(driver, cwd, text, name="case.nml"):
-    (Path(cwd) / name).write_text(text)
-    return subprocess.run([driver, name], cwd=cwd, capture_output=True, text=True,
-                          timeout=300)
 
 
 def read_csv(path):
