@@ -90,7 +90,7 @@ def solid(r, h, m=1.0, g=G):
 def test_example_props(driver, source_root, tmp_path):
     """input/cylinder_props.nml: r = 1, h = 3, 45 t and the numbers of its comments."""
     run_example(driver, source_root, tmp_path, "cylinder_props.nml")
-    path = tmp_path / "out" / "cylinder_props_cylinder_props.csv"
+    path = tmp_path / "out" / "cylinder_props.csv"
     assert header(path) == (["quantity", "body", "equivalent"],
                             ["in name", "as named", "as named"])
     t = props_table(path)
@@ -117,7 +117,7 @@ def test_example_pushover(driver, source_root, tmp_path):
     """input/cylinder_pushover.nml: theta/theta_c = 0 .. 1.2 in 25 values; F, M, M/(m g r)
     and the stable flag against the formulas."""
     run_example(driver, source_root, tmp_path, "cylinder_pushover.nml")
-    path = tmp_path / "out" / "cylinder_pushover_cylinder_pushover.csv"
+    path = tmp_path / "out" / "cylinder_pushover.csv"
     assert header(path) == (["theta", "theta_ratio", "force", "moment", "m_ratio", "stable"],
                             ["rad", "-", "N", "N m", "-", "-"])
     t = read_table(path)
@@ -143,7 +143,7 @@ def test_example_history(driver, source_root, tmp_path):
     assert "cylinder: overturn_one_impact" in proc.stdout
     out = tmp_path / "out"
     s_path = out / "cylinder_history_cylinder.csv"
-    h_path = out / "cylinder_history_cylinder_history.csv"
+    h_path = out / "cylinder_history.csv"
     assert header(s_path) == (SUMMARY, SUMMARY_UNITS)
     assert header(h_path) == (["t", "a_g", "theta", "omega"], ["s", "m/s2", "rad", "rad/s"])
     s = {k: v[0] for k, v in read_table(s_path).items()}
@@ -189,7 +189,7 @@ def test_example_map(driver, source_root, tmp_path):
     """input/cylinder_map.nml: 12 x 12 cells on the dimensional axes with the block's map;
     the pulse of input/cylinder_history.nml (1 Hz, 0.8 g) is class 2 in both."""
     run_example(driver, source_root, tmp_path, "cylinder_map.nml")
-    path = tmp_path / "out" / "cylinder_map_cylinder_map.csv"
+    path = tmp_path / "out" / "cylinder_map.csv"
     assert header(path) == (["freq_hz", "pga", "freq_ratio", "amp_ratio", "class",
                              "class_block", "diff"], ["Hz", "g", "-", "-", "-", "-", "-"])
     t = read_table(path)
@@ -430,20 +430,20 @@ def test_example_roll(driver, source_root, tmp_path):
     proc = run_example(driver, source_root, tmp_path, "cylinder_roll.nml")
     assert "cylinder: overturn" in proc.stdout
     out = tmp_path / "out"
-    assert header(out / "cylinder_roll_cylinder_roll.csv") == (
+    assert header(out / "cylinder_roll.csv") == (
         ROLL_SUMMARY, ["rad", "rad/s", "-", "-", "s", "-", "-", "s", "rad", "-", "-", "s",
                        "-", "s"])
-    assert header(out / "cylinder_roll_cylinder_roll_history.csv") == (ROLL_COLUMNS,
+    assert header(out / "cylinder_roll_history.csv") == (ROLL_COLUMNS,
                                                                        ROLL_UNITS)
-    s = {k: v[0] for k, v in read_table(out / "cylinder_roll_cylinder_roll.csv").items()}
-    h = read_table(out / "cylinder_roll_cylinder_roll_history.csv")
+    s = {k: v[0] for k, v in read_table(out / "cylinder_roll.csv").items()}
+    h = read_table(out / "cylinder_roll_history.csv")
     ref = solid(1.0, 3.0)
     blk = sp_rocking.symmetric_block(ref["R"], ref["theta_c"], ref["io_over_mr2"])
     planar = sp_rocking.simulate(blk, sp_pulse.define("sine_cycle", amp=0.8, amp_unit="g",
                                                       period=1.0), t=h["t"])
     assert ROLL_OUTCOMES[int(s["outcome"])] == "overturn"
     assert "# outcome: 0 rest, 1 no_uplift, 2 overturn, 3 time_limit" in \
-        (out / "cylinder_roll_cylinder_roll.txt").read_text()
+        (out / "cylinder_roll.txt").read_text()
     assert planar.outcome == "overturn_one_impact" and s["n_impacts"] == 1
     assert s["t_impact1"] == pytest.approx(planar.t_impacts[0], rel=1e-8)
     assert s["t_end"] == pytest.approx(planar.t_end, rel=1e-8)

@@ -66,10 +66,10 @@ def test_example_pushover(driver, source_root, tmp_path):
     """input/winkler_pushover.nml: the documented numbers (peak F/W 0.245, overturning at
     0.300 rad) and the summary against theta_up = asin(2 W/(k pi r^3))/2."""
     run_example(driver, source_root, tmp_path, "winkler_pushover.nml")
-    path = tmp_path / "out" / "winkler_pushover_winkler_pushover.csv"
+    path = tmp_path / "out" / "winkler_pushover.csv"
     assert header(path) == (PUSHOVER, PUSHOVER_UNITS)
     t = read_table(path)
-    s = read_table(tmp_path / "out" / "winkler_pushover_winkler_pushover_summary.csv")
+    s = read_table(tmp_path / "out" / "winkler_pushover_summary.csv")
     w, k = 47124.0 * G, circle_k(38.5e6, 0.3, 1.0)
     assert t["theta"] == pytest.approx(np.linspace(0, 0.32, 161), abs=1e-15)
     assert s["k0"][0] == pytest.approx(k, rel=1e-14)
@@ -180,13 +180,13 @@ def test_example_block_master_capacity(driver, source_root, tmp_path):
     np.testing.assert_allclose(t["m_found"][full], 4 / 3 * 2.0 * 1e8 * np.cos(
         t["theta"][full])**2 * np.sin(t["theta"][full]), rtol=1e-13)
     run_example(driver, source_root, tmp_path, "winkler_master.nml")
-    m = read_table(tmp_path / "out" / "winkler_master_winkler_master.csv")
+    m = read_table(tmp_path / "out" / "winkler_master.csv")
     assert m["theta_ratio"] == pytest.approx(np.logspace(0, 2, 41), rel=1e-13)
     assert np.all(np.diff(m["m_ratio"]) > 0) and np.all(np.diff(m["k_ratio"]) < 0)
     assert m["m_ratio"][0] == pytest.approx(0.25, rel=1e-13)
     assert m["k_ratio"][-1] * 100 / 4 == pytest.approx(1.0, abs=0.15)
     run_example(driver, source_root, tmp_path, "winkler_capacity.nml")
-    c = read_table(tmp_path / "out" / "winkler_capacity_winkler_capacity.csv")
+    c = read_table(tmp_path / "out" / "winkler_capacity.csv")
     n_ult = (math.pi + 3) * 40e3 * math.pi * 4.0
     assert c["n_ult"][0] == pytest.approx(n_ult, rel=1e-14)
     assert c["sf"][0] == pytest.approx(n_ult / (100000.0 * G), rel=1e-14)
@@ -198,12 +198,12 @@ def test_example_inelastic(driver, source_root, tmp_path):
     foundation moment less W h sin(theta), K_R = M_found/theta; the header says the
     coefficients are user-supplied."""
     proc = run_example(driver, source_root, tmp_path, "winkler_inelastic.nml")
-    path = tmp_path / "out" / "winkler_inelastic_winkler_inelastic.csv"
+    path = tmp_path / "out" / "winkler_inelastic.csv"
     assert header(path) == (["theta", "k_r", "m_found", "m_imposed", "force", "theta_ratio",
                              "g_corr", "force_ratio"],
                             ["rad", "N m/rad", "N m", "N m", "N", "-", "-", "-"])
     t = read_table(path)
-    s = read_table(tmp_path / "out" / "winkler_inelastic_winkler_inelastic_summary.csv")
+    s = read_table(tmp_path / "out" / "winkler_inelastic_summary.csv")
     w = 100000.0 * G
     n_ult = (math.pi + 3) * 40e3 * math.pi * 4.0
     assert s["sf"][0] == pytest.approx(n_ult / w, rel=1e-14)
@@ -221,7 +221,7 @@ def test_example_history(driver, source_root, tmp_path):
     column and its unit; the outcome is printed and named in the header."""
     proc = run_example(driver, source_root, tmp_path, "winkler_history.nml")
     s = read_table(tmp_path / "out" / "winkler_history_winkler.csv")
-    path = tmp_path / "out" / "winkler_history_winkler_history.csv"
+    path = tmp_path / "out" / "winkler_history.csv"
     names, units = header(path)
     assert names[:3] == ["t", "v", "theta"] and units[:3] == ["s", "m", "rad"]
     assert len(names) == 12 and "m/s2" in units and "J" in units and "N m" in units
@@ -241,7 +241,7 @@ def test_example_history(driver, source_root, tmp_path):
 def test_example_map(driver, source_root, tmp_path):
     """input/winkler_map.nml: 4 x 4 cells with the rigid map and the difference."""
     run_example(driver, source_root, tmp_path, "winkler_map.nml")
-    path = tmp_path / "out" / "winkler_map_winkler_map.csv"
+    path = tmp_path / "out" / "winkler_map.csv"
     names, _ = header(path)
     assert names == ["freq_hz", "pga", "freq_ratio", "amp_ratio", "class", "class_rigid",
                      "diff"]
@@ -328,7 +328,7 @@ def test_history_record_that_fails(driver, source_root, tmp_path):
                       status=1)
     assert "1 of 2 records failed" in proc.stderr
     rows = (tmp_path / "w_winkler.csv").read_text().splitlines()[1:]
-    assert rows[0].split(",")[2] == "NaN" and rows[1].split(",")[2] != "NaN"
+    assert rows[0].split(",")[2] == "nan" and rows[1].split(",")[2] != "nan"
 
 
 def test_map_cells_and_rigid_comparison(driver, tmp_path):
