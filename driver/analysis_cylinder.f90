@@ -27,7 +27,7 @@ module driver_cylinder
                                              ieee_positive_inf, ieee_is_finite
     use seispulse, only: dp, pi, pulse_t, pulse_eval, pulse_kind_name, SEISPULSE_SUCCESS, &
                          real_str, int_str, rocking_block_t, rocking_run_t, rock_pulse, &
-                         rock_record, ROCK_RUN_TIME_LIMIT, in_open, positive, rocking_body_t, &
+                         ROCK_RUN_TIME_LIMIT, in_open, positive, rocking_body_t, &
                          cylinder_props, block_props, body_rocking_block, equivalent_cylinder, &
                          equivalent_block, rigid_pushover, normalized_pushover, &
                          body_overturning_map, map_difference, BODY_SOLID_CYLINDER, &
@@ -44,12 +44,12 @@ module driver_cylinder
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, &
                               record_line, failed_records
-    use driver_tables, only: write_tables, say_written, code_legend, delete_files, stack
+    use driver_tables, only: write_tables, say_written, code_legend, delete_files
     use driver_axis, only: axis_values
     use driver_rocking_common, only: check_run_options, restitution_and_model, &
                                      locate_run_message, map_kind, map_template, progress_t, &
                                      axes_names, map_axes_code, map_grids, map_axes_header, &
-                                     map_table
+                                     map_table, rock_records, record_at
     use driver_echo, only: echo_unit
     implicit none
     private
@@ -972,83 +972,35 @@ contains
         type(setup_t), intent(in) :: s
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
-        type(rocking_run_t) :: run
+        type(rocking_run_t), allocatable :: runs(:)
         type(record_out_t), allocatable :: outs(:)
-        character(len=:), allocatable :: where
-        character(len=512) :: msg, files(2), files2(2)
+        character(len=:), allocatable :: grid_msg
+        character(len=512) :: files(2), files2(2)
         character(len=1024), allocatable :: comments(:)
         character(len=256), allocatable :: labels(:), hlabels(:)
-        real(dp), allocatable :: accel(:), av(:), t(:), summary(:, :), hist(:, :), part(:, :)
-        real(dp) :: t_last, nan
-        integer :: nrec, ir, i, st, nfailed
+        real(dp), allocatable :: summary(:, :), hist(:, :)
+        real(dp) :: nan
+        integer :: nrec, ir, nfailed
         logical, allocatable :: failed(:)
 
         nan = ieee_value(nan, ieee_quiet_nan)
-        where = located(path, s%gr)
         call echo(s)
+        call rock_records(located(path, s%gr), 'cylinder', s%recs, s%slammer_rounding, s%blk, &
+                          s%body%g, kv, t_max, rtol, .true., t_end, dt, npts, outs, failed, &
+                          runs, hist, hlabels, grid_msg, ir)
+        if (len(grid_msg) > 0) then
+            stat = 1
+            errmsg = located(path, s%gc)//list_item('files', ir)//': '//grid_msg
+            return
+        end if
         nrec = size(s%recs)
-        allocate(outs(nrec), labels(nrec), summary(nrec, 14), failed(nrec))
-        allocate(hlabels(0), hist(0, 4))
+        allocate(labels(nrec), summary(nrec, 14))
         summary = nan
-        failed = .false.
         do ir = 1, nrec
-            call load_record(where, s%recs(ir), ir, nrec, 'cylinder', s%slammer_rounding, &
-                             outs(ir), accel)
             labels(ir) = outs(ir)%name
-            failed(ir) = .not. outs(ir)%ok
-            if (outs(ir)%ok) then
-                msg = ''
-                ! a_v = kv a_g; not allocated (kv = 0): no vertical record (not present)
-                if (allocated(av)) deallocate(av)
-                if (abs(kv) > 0.0_dp) av = kv * accel
-                call rock_record(s%blk, accel, outs(ir)%dt, s%body%g, run, st, msg, &
-                                 t_max=t_max, rtol=rtol, accel_v=av)
-                if (st == SEISPULSE_SUCCESS) then
-                    t_last = t_end
-                    if (ieee_is_nan(t_end)) then
-                        if (run%outcome == ROCK_RUN_TIME_LIMIT .and. run%t_end > 0.0_dp) then
-                            t_last = run%t_end
-                        else
-                            t_last = max(1.25_dp * run%t_end, &
-                                         outs(ir)%dt * real(size(accel) - 1, dp))
-                        end if
-                    end if
-                    call time_grid(t_last, dt, npts, t, errmsg)
-                    if (len(errmsg) > 0) then
-                        stat = 1
-                        errmsg = located(path, s%gc)//list_item('files', ir)//': '//errmsg
-                        return
-                    end if
-                    allocate(part(size(t), 4))
-                    part(:, 1) = t
-                    part(:, 2) = s%body%g * record_at(accel, outs(ir)%dt, t)
-                    call rock_record(s%blk, accel, outs(ir)%dt, s%body%g, run, st, msg, &
-                                     t_grid=t, theta_grid=part(:, 3), &
-                                     omega_grid=part(:, 4), t_max=t_max, rtol=rtol, &
-                                     accel_v=av)
-                end if
-                if (st /= SEISPULSE_SUCCESS) then
-                    failed(ir) = .true.
-                    ! the vertical record is kv times this one: the key at fault is kv
-                    if (index(msg, 'accel_v') == 1) msg = '&cylinder: kv = '//real_str(kv) &
-                        //': a_v = kv a_g falls below -g in this record: '//trim(msg)
-                    outs(ir)%message = trim(msg)
-                    write(error_unit, '(a)') 'seispulse: error: '//where &
-                        //list_item('files', ir)//' = '''//s%recs(ir)%file//''': '//trim(msg)
-                    if (allocated(part)) deallocate(part)
-                else
-                    summary(ir, 1) = outs(ir)%pga
-                    summary(ir, 2:14) = summary_row(s, run)
-                    hist = stack(hist, part)
-                    hlabels = [character(len=256) :: hlabels, &
-                               (labels(ir), i = 1, size(part, 1))]
-                    deallocate(part)
-                    cycle
-                end if
-            end if
-            ! a failed record: one row of NaN in each table
-            hist = stack(hist, reshape([(nan, i = 1, 4)], [1, 4]))
-            hlabels = [character(len=256) :: hlabels, labels(ir)]
+            if (failed(ir)) cycle
+            summary(ir, 1) = outs(ir)%pga
+            summary(ir, 2:14) = summary_row(s, runs(ir))
         end do
 
         allocate(comments(6 + nrec))
@@ -1089,26 +1041,6 @@ contains
                      //failed_records(outs, failed)//')'
         end if
     end subroutine do_history_records
-
-    !> The record (samples accel(i) at (i - 1) dt, linear in between, 0 after the last,
-    !> as the integrator takes it) at the times t (s); in the unit of the record.
-    pure function record_at(accel, step, t) result(a)
-        real(dp), intent(in) :: accel(:), step, t(:)
-        real(dp) :: a(size(t))
-        real(dp) :: x
-        integer :: i, k, n
-        n = size(accel)
-        do i = 1, size(t)
-            x = t(i) / step
-            k = int(x) + 1                     ! sample at or before t(i)
-            if (k >= n) then
-                a(i) = 0.0_dp
-                if (k == n .and. .not. x > real(n - 1, dp)) a(i) = accel(n)
-            else
-                a(i) = accel(k) + (accel(k + 1) - accel(k)) * (x - real(k - 1, dp))
-            end if
-        end do
-    end function record_at
 
     !> Where a library message about a run belongs: &pulse, &cylinder or &body.
     function locate_message(path, msg, s) result(full_msg)

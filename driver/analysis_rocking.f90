@@ -1,13 +1,17 @@
 !> Analysis 'rocking': a free-standing rigid block rocking on a rigid base (Housner 1963)
-!> under one pulse: the classification and extreme values of the response, its time
-!> history, or an overturning map of a pulse family.
+!> under one pulse or under accelerograms: the classification and extreme values of the
+!> response, its time history, or an overturning map of a pulse family.
 !>
-!> Groups: &block (geometry, restitution, model), &pulse (driver_pulse_group; the
-!> excitation), &rocking (what to compute, run limits, the history grid) and &map (the
-!> pulse family and the grids of an overturning map). A sampled record is a later
-!> addition: it will be a group of its own, used instead of &pulse.
-!> Tables <output>_rocking (what = 'summary'), <output>_rocking_history ('history') or
-!> <output>_rocking_map ('map'). The numbers come from seispulse_rocking_sim (the
+!> Groups: &block (geometry, restitution, model; g with records), &pulse
+!> (driver_pulse_group) or &records (driver_records: the record files and how to read and
+!> scale each one, as for 'newmark' and 'sdof'; the excitation), &rocking (what to
+!> compute, run limits, the history grid) and &map (the pulse family and the grids of an
+!> overturning map).
+!> Tables <output>_rocking (what = 'summary'; one row per record with &records),
+!> <output>_rocking_history ('history'; the records stacked, the record's name first) or
+!> <output>_rocking_map ('map'). A record that cannot be read or run fails its row (NaN,
+!> status 1), the others are written and run_rocking returns ROWS_FAILED (exit status 1).
+!> The numbers come from seispulse_rocking_sim (the
 !> integrator, any pulse) and seispulse_rocking_closed (the linearized closed forms of the
 !> half-cycle exponential pulse, shown side by side); the driver only reads, checks,
 !> converts units and writes.
@@ -23,16 +27,20 @@ module driver_rocking
                          rocking_block_validate, rock_pulse, overturning_map, ROCK_RUN_TIME_LIMIT, &
                          pi, in_open
     use driver_namelist_scan, only: nml_group, lower
-    use driver_input, only: find_group, located, join, read_optional, given
+    use driver_input, only: find_group, located, join, read_optional, given, list_item, &
+                            ROWS_FAILED
+    use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
+                              read_records, check_records, echo_records, record_line, &
+                              failed_records
     use driver_input, only: missing_group
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid, &
                                   warn_unused_template, template_text, not_one
-    use driver_tables, only: write_tables, say_written, category_kind
+    use driver_tables, only: write_tables, say_written, category_kind, status_names
     use driver_axis, only: axis_values
     use driver_rocking_common, only: check_run_options, restitution_and_model, &
                                      locate_run_message, map_kind, map_template, progress_t, &
-                                     map_class_names
+                                     map_class_names, rock_records
     use driver_echo, only: echo_unit
     implicit none
     private
@@ -40,15 +48,15 @@ module driver_rocking
     public :: run_rocking, rocking_groups, rocking_tables
 
     !> Groups this analysis reads (besides &run).
-    character(len=8), parameter :: rocking_groups(4) = [character(len=8) :: 'block', &
-        'pulse', 'rocking', 'map']
+    character(len=8), parameter :: rocking_groups(5) = [character(len=8) :: 'block', &
+        'pulse', 'records', 'rocking', 'map']
 
     !> Tables this analysis may write (removed with the echo file after an input error).
     character(len=15), parameter :: rocking_tables(3) = [character(len=15) :: 'rocking', &
         'rocking_history', 'rocking_map']
 
-    character(len=12), parameter :: block_keys(8) = [character(len=12) :: 'b', 'h', &
-        'alpha', 'alpha_deg', 'r', 'io_over_mr2', 'e', 'model']
+    character(len=12), parameter :: block_keys(9) = [character(len=12) :: 'b', 'h', &
+        'alpha', 'alpha_deg', 'r', 'io_over_mr2', 'e', 'model', 'g']
     character(len=8), parameter :: rocking_keys(7) = [character(len=8) :: 'what', 't_max', &
         'rtol', 't_end', 'npts', 'dt', 'kv']
     character(len=12), parameter :: map_keys(12) = [character(len=12) :: 'kind', 'beta', &
@@ -63,8 +71,19 @@ module driver_rocking
     !> Most values on one axis of a map (freq_ratio, amp_ratio).
     integer, parameter :: max_list = 1000
 
+    !> The summary table on records: the record's name, then these columns.
+    integer, parameter :: n_rec_cols = 17
+    character(len=13), parameter :: rec_names(n_rec_cols + 1) = [character(len=13) :: &
+        'record', 'pga', 'alpha', 'p', 'e', 'outcome', 't_uplift', 't_overturn', 'n_impacts', &
+        't_impact1', 'theta_max', 'theta_min', 'psi_max', 'psi_min', 't_end', 'theta_abs_max', &
+        't_abs_max', 'status']
+    character(len=6), parameter :: rec_units(n_rec_cols + 1) = [character(len=6) :: '-', 'g', &
+        'rad', 'rad/s', '-', '-', 's', 's', '-', 's', 'rad', 'rad', '-', '-', 's', 'rad', 's', &
+        '-']
+
     ! namelist variables (defaults are set in set_defaults)
     real(dp) :: b, h, alpha, alpha_deg, r, io_over_mr2, e
+    real(dp) :: g        !! gravity (m/s2) with &records, also the unit g of the records
     character(len=32) :: model
     character(len=32) :: what
     real(dp) :: t_max, rtol, t_end, dt
@@ -77,6 +96,7 @@ module driver_rocking
     real(dp) :: freq_ratio(max_list), freq_range(2), amp_ratio(max_list), amp_range(2)
     integer :: freq_count, amp_count
     namelist /block/ b, h, alpha, alpha_deg, r, io_over_mr2, e, model
+    ! &block is read (with g) in read_block and echoed with g in echo_records_mode
     ! &rocking is read (with kv) in read_rocking and echoed in echo_rocking
     namelist /map/ kind, beta, full, peak_frac, t0_periods, freq_ratio, freq_range, &
         freq_count, amp_ratio, amp_range, amp_count, cycles
@@ -93,6 +113,7 @@ contains
         r = nan
         io_over_mr2 = 4.0_dp / 3.0_dp
         e = nan           ! NaN: Housner's value from the geometry
+        g = 9.80665_dp    ! with &records
         model = 'nonlinear'
         what = 'summary'
         t_max = ieee_value(t_max, ieee_positive_inf)
@@ -120,6 +141,7 @@ contains
         character(len=*), intent(in) :: text
         integer, intent(out) :: ios
         character(len=*), intent(inout) :: iomsg
+        namelist /block/ b, h, alpha, alpha_deg, r, io_over_mr2, e, model, g
         if (len(text) > 0) then
             read(text, nml=block, iostat=ios, iomsg=iomsg)
         else
@@ -160,13 +182,19 @@ contains
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
         type(pulse_input_t) :: pin
-        type(nml_group) :: gb, gr, gm
+        type(nml_group) :: gb, gr, gm, grec
         type(rocking_block_t) :: blk
+        type(record_in_t), allocatable :: recs(:)
         character(len=:), allocatable :: task
         real(dp) :: g_block
+        logical :: use_records, slammer_rounding
 
         call set_defaults()
+        call records_defaults()
         call read_pulse_group(path, groups, pin, stat, errmsg)
+        if (stat /= 0) return
+        call read_optional(path, groups, 'records', records_keys, read_records, grec, stat, &
+                           errmsg)
         if (stat /= 0) return
         call read_optional(path, groups, 'block', block_keys, read_block, gb, stat, errmsg)
         if (stat /= 0) return
@@ -208,9 +236,18 @@ contains
             return
         end if
 
+        ! --- &records instead of &pulse (summary, history): records_setup
+        use_records = find_group(groups, 'records') > 0
+        call records_setup(path, groups, task, use_records, pin, grec, gb, errmsg)
+        if (len(errmsg) > 0) return
+
         ! --- the excitation, then the block (which uses its g)
         g_block = 9.80665_dp
-        if (task /= 'map') then
+        if (use_records) then
+            g_block = g
+            call check_records(path, grec, recs, slammer_rounding, errmsg)
+            if (len(errmsg) > 0) return
+        else if (task /= 'map') then
             call build_pulse(path, pin, stat, errmsg, g_used=.true.)
             if (stat /= 0) return
             stat = 1
@@ -219,6 +256,11 @@ contains
         call check_block(path, gb, g_block, task == 'map', blk, errmsg)
         if (len(errmsg) > 0) return
 
+        if (use_records) then
+            call do_records(path, prefix, grec, gr, blk, recs, slammer_rounding, &
+                            task == 'history', stat, errmsg)
+            return
+        end if
         select case (task)
         case ('summary')
             call do_summary(path, prefix, pin, gb, gr, blk, stat, errmsg)
@@ -493,15 +535,22 @@ contains
         character(len=*), intent(out) :: lines(3)
         lines(1) = 'seispulse analysis rocking: '//pulse_kind_name(pin%code)//' pulse, ' &
                    //trim(model)//' model (seispulse_rocking_sim)'
-        lines(2) = 'block: alpha = '//real_str(blk%alpha)//' rad, p = '//real_str(blk%p) &
+        call block_lines(blk, lines(2:3))
+    end subroutine block_comments
+
+    !> Header lines describing the block and its uplift (with kv).
+    subroutine block_lines(blk, lines)
+        type(rocking_block_t), intent(in) :: blk
+        character(len=*), intent(out) :: lines(2)
+        lines(1) = 'block: alpha = '//real_str(blk%alpha)//' rad, p = '//real_str(blk%p) &
                    //' rad/s, e = '//real_str(blk%e)//', g = '//real_str(blk%g)//' m/s2'
-        lines(3) = 'uplift at |a_g| > g tan(alpha) (nonlinear) or g alpha (linearized); ' &
+        lines(2) = 'uplift at |a_g| > g tan(alpha) (nonlinear) or g alpha (linearized); ' &
                    //'a_g > 0 drives theta > 0'
-        if (abs(kv) > 0.0_dp) lines(3) = 'vertical ground acceleration a_v = kv a_g, kv = ' &
+        if (abs(kv) > 0.0_dp) lines(2) = 'vertical ground acceleration a_v = kv a_g, kv = ' &
             //real_str(kv)//' (doc/rocking.md section 7): uplift at a_g > g t/(1 - kv t) or ' &
             //'a_g < -g t/(1 + kv t), t = tan(alpha) (nonlinear) or alpha (linearized); ' &
             //'a_g > 0 drives theta > 0'
-    end subroutine block_comments
+    end subroutine block_lines
 
     ! ------------------------------------------------------------------------------
     ! History
@@ -705,6 +754,218 @@ contains
                          .false., max_list, values, grid, errmsg, required=.true., &
                          count_optional=.true., hint=.false., real_numbers=.true.)
     end subroutine map_axis
+
+    ! ------------------------------------------------------------------------------
+    ! Records
+    ! ------------------------------------------------------------------------------
+
+    !> The groups that go with &records (use_records) or without it. errmsg is empty on
+    !> success.
+    subroutine records_setup(path, groups, task, use_records, pin, grec, gb, errmsg)
+        character(len=*), intent(in) :: path, task
+        type(nml_group), intent(in) :: groups(:)
+        logical, intent(in) :: use_records                !! &records is given
+        type(pulse_input_t), intent(in) :: pin
+        type(nml_group), intent(in) :: grec, gb
+        character(len=:), allocatable, intent(out) :: errmsg
+        errmsg = ''
+        if (.not. use_records) then
+            if (given(gb, 'g')) errmsg = located(path, gb)//'g: only with &records (the ' &
+                //'gravity and unit g of the records; with &pulse it is &pulse''s g)'
+            return
+        end if
+        if (task == 'map') then
+            errmsg = located(path, grec)//'not used by what = ''map'' (the pulse family ' &
+                     //'and shape of a map are in &map)'
+        else if (find_group(groups, 'pulse') > 0) then
+            errmsg = located(path, pin%group)//'not with &records (the base moves under ' &
+                     //'one pulse or under records: give one of the two groups)'
+        end if
+    end subroutine records_setup
+
+    !> Summary row of one record after the label: pga (g, after scaling), the block, the
+    !> run (outcome code, times, impacts, extremes, max |theta| and its time), status 0
+    !> (ok).
+    function record_row(pga, blk, run) result(row)
+        real(dp), intent(in) :: pga
+        type(rocking_block_t), intent(in) :: blk
+        type(rocking_run_t), intent(in) :: run
+        real(dp) :: row(n_rec_cols)
+        real(dp) :: nan
+        nan = ieee_value(nan, ieee_quiet_nan)
+        row = nan
+        row(1:5) = [pga, blk%alpha, blk%p, blk%e, real(run%outcome, dp)]
+        row(6:8) = [run%t_uplift, run%t_overturn, real(run%n_impacts, dp)]
+        if (run%n_impacts > 0) row(9) = run%t_impacts(1)
+        row(10:14) = [run%theta_max, run%theta_min, run%theta_max / blk%alpha, &
+                      run%theta_min / blk%alpha, run%t_end]
+        ! the largest |theta| and the first time it is reached (either side)
+        if (run%theta_max > -run%theta_min) then
+            row(15:16) = [run%theta_max, run%t_theta_max]
+        else if (run%theta_max < -run%theta_min) then
+            row(15:16) = [-run%theta_min, run%t_theta_min]
+        else
+            row(15:16) = [run%theta_max, min(run%t_theta_max, run%t_theta_min)]
+        end if
+        row(17) = 0.0_dp
+    end function record_row
+
+    !> 'summary' or 'history' under each record of &records: a record that cannot be
+    !> read or run gives a row of NaN (status 1) and the others go on; stat ROWS_FAILED
+    !> then (the table is written).
+    subroutine do_records(path, prefix, grec, gr, blk, recs, slammer_rounding, history, &
+                          stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(nml_group), intent(in) :: grec, gr
+        type(rocking_block_t), intent(in) :: blk
+        type(record_in_t), intent(in) :: recs(:)
+        logical, intent(in) :: slammer_rounding, history
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        type(rocking_run_t), allocatable :: runs(:)
+        type(record_out_t), allocatable :: outs(:)
+        character(len=:), allocatable :: grid_msg
+        character(len=512) :: files(2)
+        character(len=1024), allocatable :: comments(:)
+        character(len=256), allocatable :: labels(:), hlabels(:)
+        real(dp), allocatable :: summary(:, :), hist(:, :)
+        real(dp) :: nan
+        integer :: nrec, ir, nfailed
+        logical, allocatable :: failed(:)
+
+        nan = ieee_value(nan, ieee_quiet_nan)
+        call echo_records_mode(recs, slammer_rounding)
+        call rock_records(located(path, grec), 'rocking', recs, slammer_rounding, blk, blk%g, &
+                          kv, t_max, rtol, history, t_end, dt, npts, outs, failed, runs, &
+                          hist, hlabels, grid_msg, ir)
+        if (len(grid_msg) > 0) then
+            stat = 1
+            errmsg = located(path, gr)//list_item('files', ir)//': '//grid_msg
+            return
+        end if
+        nrec = size(recs)
+        allocate(labels(nrec), summary(nrec, n_rec_cols))
+        do ir = 1, nrec
+            labels(ir) = outs(ir)%name
+            if (failed(ir)) then
+                ! a failed row: the block, NaN results, status 1 (failed)
+                summary(ir, :) = nan
+                summary(ir, 2:4) = [blk%alpha, blk%p, blk%e]
+                summary(ir, n_rec_cols) = 1.0_dp
+            else
+                summary(ir, :) = record_row(outs(ir)%pga, blk, runs(ir))
+            end if
+        end do
+
+        call record_comments(path, blk, recs, outs, failed, summary, history, comments)
+        if (history) then
+            call write_tables(prefix, 'rocking_history', comments, &
+                [character(len=8) :: 'record', 't', 'a_g', 'theta', 'omega'], &
+                [character(len=8) :: '-', 's', 'm/s2', 'rad', 'rad/s'], hist, files, stat, &
+                errmsg, labels=hlabels)
+        else
+            call write_tables(prefix, 'rocking', comments, rec_names, rec_units, summary, &
+                              files, stat, errmsg, labels=labels, kinds=record_kinds())
+        end if
+        if (stat /= 0) then
+            errmsg = path//': &run: output: '//errmsg
+            return
+        end if
+        if (history) then
+            call say_written('rocking history', files)
+        else
+            call say_written('rocking table', files)
+        end if
+        stat = 0
+        nfailed = count(failed)
+        if (nfailed > 0) then
+            stat = ROWS_FAILED
+            errmsg = int_str(nfailed)//' of '//int_str(nrec)//' records failed (' &
+                     //failed_records(outs, failed)//'): their rows hold NaN'
+            if (.not. history) errmsg = errmsg//' and status failed'
+        end if
+    end subroutine do_records
+
+    !> Header lines of the tables on records: the model, the block, the columns, then
+    !> one line per record (with its outcome in a history), then the input file.
+    subroutine record_comments(path, blk, recs, outs, failed, summary, history, comments)
+        character(len=*), intent(in) :: path
+        type(rocking_block_t), intent(in) :: blk
+        type(record_in_t), intent(in) :: recs(:)
+        type(record_out_t), intent(in) :: outs(:)
+        logical, intent(in) :: failed(:)
+        real(dp), intent(in) :: summary(:, :)             !! the summary rows
+        logical, intent(in) :: history
+        character(len=1024), allocatable, intent(out) :: comments(:)
+        integer, parameter :: nh = 6
+        integer :: ir, nrec
+
+        nrec = size(recs)
+        allocate(comments(nh + nrec + 1))
+        comments(1) = 'seispulse analysis rocking: records (&records; the samples in g, ' &
+                      //'linear in between, 0 after the last), '//trim(model) &
+                      //' model (seispulse_rocking_sim)'
+        call block_lines(blk, comments(2:3))
+        if (history) then
+            comments(4) = 'rows: each record from t = 0; theta: rotation (rad; > 0 about one ' &
+                          //'corner, < 0 about the other), omega = dtheta/dt (rad/s), a_g = ' &
+                          //'g x the record (m/s2)'
+            comments(5) = 'overturned: theta = +-pi/2 and omega = 0 after t_end; NaN after a ' &
+                          //'time limit, and one row of NaN for a record that failed (exit ' &
+                          //'status 1)'
+            comments(6) = 'records (index, file, format read, npts, dt (s), PGA as read (g), ' &
+                          //'scale factor; outcome):'
+        else
+            comments(4) = 'pga: after scaling (g); t_overturn: last outward crossing of ' &
+                          //'|theta| = alpha before overturning (theta_max = pi/2 then); ' &
+                          //'t_impact1: first impact; t_end: rest, overturned (|theta| = ' &
+                          //'pi/2) or the time limit'
+            comments(5) = 'psi = theta/alpha; theta_abs_max: the largest |theta|, t_abs_max: ' &
+                          //'the first time it is reached; NaN: no such event'
+            comments(6) = 'status: ok, or failed (NaN results; the reason is below and on ' &
+                          //'stderr; exit status 1); records (index, file, format read, npts, ' &
+                          //'dt (s), PGA as read (g), scale factor):'
+        end if
+        do ir = 1, nrec
+            comments(nh + ir) = record_line(ir, recs(ir), outs(ir))
+            if (outs(ir)%ok .and. failed(ir)) then
+                comments(nh + ir) = trim(comments(nh + ir))//'; FAILED: '//outs(ir)%message
+            else if (history .and. .not. failed(ir)) then
+                comments(nh + ir) = trim(comments(nh + ir))//'; outcome: ' &
+                    //trim(outcome_names(nint(summary(ir, 5))))//', impacts: ' &
+                    //int_str(nint(summary(ir, 8)))//', theta_max = ' &
+                    //real_str(summary(ir, 10))//' rad, theta_min = ' &
+                    //real_str(summary(ir, 11))//' rad, t_end = '//real_str(summary(ir, 14)) &
+                    //' s'
+            end if
+        end do
+        comments(nh + nrec + 1) = 'input: '//trim(path)
+    end subroutine record_comments
+
+    !> Column kinds of the summary table on records (outcome and status by name, the
+    !> impacts as an integer).
+    function record_kinds() result(kinds)
+        character(len=160) :: kinds(n_rec_cols + 1)
+        kinds = ''
+        kinds(6) = category_kind(outcome_names)
+        kinds(9) = 'int'
+        kinds(n_rec_cols + 1) = category_kind(status_names)
+    end function record_kinds
+
+    !> Echo the effective input with &records: &records, &block (with g), &rocking.
+    subroutine echo_records_mode(recs, slammer_rounding)
+        type(record_in_t), intent(in) :: recs(:)
+        logical, intent(in) :: slammer_rounding
+        namelist /block/ b, h, alpha, alpha_deg, r, io_over_mr2, e, model, g
+        what = trim(lower(adjustl(what)))
+        call echo_records(recs, slammer_rounding)
+        write(echo_unit(), nml=block)
+        if (abs(kv) > 0.0_dp) then
+            call echo_rocking_kv()
+        else
+            call echo_rocking()
+        end if
+    end subroutine echo_records_mode
 
     ! ------------------------------------------------------------------------------
     ! Helpers

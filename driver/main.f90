@@ -101,6 +101,8 @@ program seispulse_driver
     case ('rocking')
         call start(rocking_groups, rocking_tables)
         call run_rocking(path, groups, run_output(), stat, errmsg)
+        ! on records: the table is written; some rows failed (each already reported)
+        if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
     case ('newmark')
         call start(newmark_groups, newmark_tables)
         call run_newmark(path, groups, run_output(), stat, errmsg)

@@ -1,21 +1,28 @@
 !> Checks and helpers shared by the analyses that run a rocking body ('rocking' and
 !> 'cylinder'): the run options t_max and rtol, the restitution and the model, where a
 !> library message belongs, the pulse family of an overturning map, and the progress
-!> lines of a long map. One code path, so that these keys mean and read the same in both.
+!> lines of a long map, and the run of a block under one record (with its history grid).
+!> One code path, so that these keys mean and read the same in both.
 module driver_rocking_common
     use, intrinsic :: iso_fortran_env, only: error_unit, int64
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan
     use seispulse, only: dp, pi, pulse_t, pulse_validate, pulse_kind_from_name, &
                          SEISPULSE_SUCCESS, PULSE_RICKER, PULSE_MP, MAP_AXES_DIMENSIONLESS, &
-                         real_str, positive, in_closed, finite_at_least
+                         real_str, positive, in_closed, finite_at_least, rocking_block_t, &
+                         rocking_run_t, rock_record, ROCK_RUN_TIME_LIMIT
     use driver_namelist_scan, only: nml_group, lower
-    use driver_input, only: located, join, given, name_index
+    use driver_input, only: located, join, given, name_index, list_item
+    use driver_records, only: record_in_t, record_out_t, load_record, report
+    use driver_tables, only: stack
     use driver_axis, only: axis_values
+    use driver_pulse_group, only: time_grid
     implicit none
     private
 
     public :: check_run_options, restitution_and_model, locate_run_message
     public :: map_kind, map_template, progress_t
     public :: axes_names, map_axes_code, map_grids, map_axes_header, map_table
+    public :: rock_on_record, rock_records, record_at
     public :: map_class_names
 
     character(len=10), parameter :: model_names(2) = [character(len=10) :: 'nonlinear', &
@@ -376,5 +383,150 @@ contains
         write(error_unit, '(a, i0, a, i0, a)') 'map: row ', n, '/', n, ' (done)'
         flush(error_unit)
     end subroutine progress_done
+
+    ! ------------------------------------------------------------------------------
+    ! A block under one record
+    ! ------------------------------------------------------------------------------
+
+    !> Rock `blk` under each record of &records (driver_records' load_record: read, turn
+    !> over, scale; accel in g, g its unit in m/s2): what happened to each (outs, failed),
+    !> its run, and with `history` the history rows of rock_on_record stacked (hlabels:
+    !> the record's name per row; one row of NaN for a record that failed). A record that
+    !> fails is reported on stderr at once ("<where>files(i) = '...': message"; a kv that
+    !> lifts the block off is named as "&<tag>: kv = ..."), and the others go on.
+    !> grid_msg /= '': the grid of the history of record ir_grid cannot be built (an
+    !> input error; the records after it are not run).
+    subroutine rock_records(where, tag, recs, slammer_rounding, blk, g, kv, t_max, rtol, &
+                            history, t_end, dt, npts, outs, failed, runs, hist, hlabels, &
+                            grid_msg, ir_grid)
+        character(len=*), intent(in) :: where             !! "file:line: &records: "
+        character(len=*), intent(in) :: tag               !! the analysis and its group
+        type(record_in_t), intent(in) :: recs(:)
+        logical, intent(in) :: slammer_rounding
+        type(rocking_block_t), intent(in) :: blk
+        real(dp), intent(in) :: g, kv, t_max, rtol        !! m/s2, -, s, -
+        logical, intent(in) :: history
+        real(dp), intent(in) :: t_end, dt                 !! history grid (s)
+        integer, intent(in) :: npts
+        type(record_out_t), allocatable, intent(out) :: outs(:)
+        logical, allocatable, intent(out) :: failed(:)
+        type(rocking_run_t), allocatable, intent(out) :: runs(:)
+        real(dp), allocatable, intent(out) :: hist(:, :)  !! (t, a_g, theta, omega)
+        character(len=256), allocatable, intent(out) :: hlabels(:)
+        character(len=:), allocatable, intent(out) :: grid_msg
+        integer, intent(out) :: ir_grid
+        real(dp), allocatable :: accel(:), part(:, :)
+        character(len=4096) :: msg
+        real(dp) :: nan
+        integer :: nrec, ir, i, st
+
+        nan = ieee_value(nan, ieee_quiet_nan)
+        nrec = size(recs)
+        allocate(outs(nrec), failed(nrec), runs(nrec), hlabels(0), hist(0, 4))
+        grid_msg = ''
+        ir_grid = 0
+        do ir = 1, nrec
+            call load_record(where, recs(ir), ir, nrec, tag, slammer_rounding, outs(ir), &
+                             accel)
+            failed(ir) = .not. outs(ir)%ok
+            if (outs(ir)%ok) then
+                msg = ''
+                call rock_on_record(blk, accel, outs(ir)%dt, g, kv, t_max, rtol, history, &
+                                    t_end, dt, npts, runs(ir), part, st, msg, grid_msg)
+                if (len(grid_msg) > 0) then
+                    ir_grid = ir
+                    return
+                end if
+                if (st == SEISPULSE_SUCCESS) then
+                    if (history) then
+                        hist = stack(hist, part)
+                        hlabels = [character(len=256) :: hlabels, &
+                                   (outs(ir)%name, i = 1, size(part, 1))]
+                    end if
+                    cycle
+                end if
+                failed(ir) = .true.
+                ! the vertical record is kv times this one: the key at fault is kv
+                if (index(msg, 'accel_v') == 1) msg = '&'//tag//': kv = '//real_str(kv) &
+                    //': a_v = kv a_g falls below -g in this record: '//trim(msg)
+                outs(ir)%message = trim(msg)
+                call report(where//list_item('files', ir)//' = '''//recs(ir)%file//''': ' &
+                            //trim(msg))
+            end if
+            ! a failed record: one row of NaN in the history
+            if (history) then
+                hist = stack(hist, reshape([(nan, i = 1, 4)], [1, 4]))
+                hlabels = [character(len=256) :: hlabels, outs(ir)%name]
+            end if
+        end do
+    end subroutine rock_records
+
+    !> Rock `blk` under one record (accel in g at (i - 1) step, linear in between, 0 after
+    !> the last; g: its unit, m/s2), with the vertical ground acceleration a_v = kv a_g
+    !> (kv = 0: none). With `history`, also the rows (t, a_g (m/s2), theta, omega) on the
+    !> grid of t_end, dt, npts (driver_pulse_group's time_grid; t_end NaN: up to 1.25 x
+    !> the end of the motion, at least the end of the record, or the time limit).
+    !> stat /= SEISPULSE_SUCCESS: the library's message in msg (the record fails);
+    !> grid_msg /= '': the grid of the history cannot be built (an input error).
+    subroutine rock_on_record(blk, accel, step, g, kv, t_max, rtol, history, t_end, dt, &
+                              npts, run, rows, stat, msg, grid_msg)
+        type(rocking_block_t), intent(in) :: blk
+        real(dp), intent(in) :: accel(:)                  !! the record (g)
+        real(dp), intent(in) :: step, g, kv               !! s, m/s2, -
+        real(dp), intent(in) :: t_max, rtol               !! run limits (s, -)
+        logical, intent(in) :: history                    !! also the history rows
+        real(dp), intent(in) :: t_end, dt                 !! history grid (s)
+        integer, intent(in) :: npts                       !! history grid points
+        type(rocking_run_t), intent(out) :: run
+        real(dp), allocatable, intent(out) :: rows(:, :)  !! (t, a_g, theta, omega)
+        integer, intent(out) :: stat
+        character(len=*), intent(inout) :: msg
+        character(len=:), allocatable, intent(out) :: grid_msg
+        real(dp), allocatable :: av(:), t(:)
+        real(dp) :: t_last
+
+        grid_msg = ''
+        ! a_v = kv a_g; not allocated (kv = 0): no vertical record (not present)
+        if (abs(kv) > 0.0_dp) av = kv * accel
+        call rock_record(blk, accel, step, g, run, stat, msg, t_max=t_max, rtol=rtol, &
+                         accel_v=av)
+        if (stat /= SEISPULSE_SUCCESS .or. .not. history) return
+        t_last = t_end
+        if (ieee_is_nan(t_end)) then
+            if (run%outcome == ROCK_RUN_TIME_LIMIT .and. run%t_end > 0.0_dp) then
+                t_last = run%t_end               ! no solution beyond it
+            else
+                t_last = max(1.25_dp * run%t_end, step * real(size(accel) - 1, dp))
+            end if
+        end if
+        call time_grid(t_last, dt, npts, t, grid_msg)
+        if (len(grid_msg) > 0) return
+        allocate(rows(size(t), 4))
+        rows(:, 1) = t
+        rows(:, 2) = g * record_at(accel, step, t)
+        call rock_record(blk, accel, step, g, run, stat, msg, t_grid=t, &
+                         theta_grid=rows(:, 3), omega_grid=rows(:, 4), t_max=t_max, &
+                         rtol=rtol, accel_v=av)
+    end subroutine rock_on_record
+
+    !> The record (samples accel(i) at (i - 1) dt, linear in between, 0 after the last,
+    !> as the integrator takes it) at the times t (s); in the unit of the record.
+    pure function record_at(accel, step, t) result(a)
+        real(dp), intent(in) :: accel(:), step, t(:)
+        real(dp) :: a(size(t))
+        real(dp) :: x
+        integer :: i, k, n
+        n = size(accel)
+        do i = 1, size(t)
+            x = t(i) / step
+            k = int(x) + 1                     ! sample at or before t(i)
+            if (k >= n) then
+                a(i) = 0.0_dp
+                if (k == n .and. .not. x > real(n - 1, dp)) a(i) = accel(n)
+            else
+                a(i) = accel(k) + (accel(k + 1) - accel(k)) * (x - real(k - 1, dp))
+            end if
+        end do
+    end function record_at
 
 end module driver_rocking_common

@@ -328,6 +328,22 @@ contains
                                  - cosh(f * (tau_m - 1.0_dp)))
             call check(error, run%theta_max, thm, rtol=1.0e-9_dp, message='Eq. 2.29')
             if (allocated(error)) return
+            call check(error, run%t_theta_max, tau_m * td, rtol=1.0e-9_dp, &
+                       message='time of theta_max, Eq. 2.25')
+            if (allocated(error)) return
+            ! the mirror image: the same extreme and time on the other side
+            call run_ok(error, blk, rectangular_pulse(-g0 * alpha / eta, td), run, &
+                        'rectangle, negative')
+            if (allocated(error)) return
+            call check(error, run%theta_min, -thm, rtol=1.0e-9_dp, message='Eq. 2.29, mirrored')
+            if (allocated(error)) return
+            call check(error, run%t_theta_min, tau_m * td, rtol=1.0e-9_dp, &
+                       message='time of theta_min, Eq. 2.25 mirrored')
+            if (allocated(error)) return
+            ! theta > 0 only after the first impact (e = 0.94: it rocks back)
+            call check(error, run%t_theta_max > tau_i * td, &
+                       'time of theta_max after the first impact, mirrored')
+            if (allocated(error)) return
             tmg(1) = tau_m * td
             call run_ok(error, blk, pl, run, 'rectangle at tau_m', tmg, thg, omg)
             if (allocated(error)) return

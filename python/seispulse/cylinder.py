@@ -228,10 +228,13 @@ def rocking_block(body, e=None, linearized=False):
 
 
 def simulate(body, pulse=None, *, accel=None, dt=None, t_max=None, t=None, e=None,
-             linearized=False, theta0=0.0, omega0=0.0, rtol=1e-12, kv=0.0, accel_v=None):
+             linearized=False, theta0=0.0, omega0=0.0, rtol=1e-12, kv=0.0, accel_v=None,
+             units=None):
     """Planar rocking of a body on a rigid base under a pulse (from
     :func:`seispulse.pulse.define`, SI) or a sampled horizontal ground acceleration accel
-    (m/s^2, as :func:`seispulse.rocking.simulate`; not g) at t = i dt (s): Housner's
+    (an array in m/s^2 unless ``units`` says otherwise, or a
+    :class:`seispulse.records.Record` in g; ``units`` as in
+    :func:`seispulse.rocking.simulate`, 'g' meaning the body's g) at t = i dt (s): Housner's
     equations with the body's J_o (through p) and restitution (e overrides it), impacts at
     theta = 0, overturning at |theta| = pi/2. t (s): output times for theta(t), omega(t);
     t_max (s), theta0 (rad), omega0 (rad/s), rtol as in rocking.simulate. Vertical ground
@@ -244,7 +247,7 @@ def simulate(body, pulse=None, *, accel=None, dt=None, t_max=None, t=None, e=Non
     block = rocking_block(body, e=e, linearized=linearized)
     return rocking.simulate(block, pulse, accel=accel, dt=dt, linearized=linearized, t=t,
                             t_max=t_max, theta0=theta0, omega0=omega0, rtol=rtol, kv=kv,
-                            accel_v=accel_v)
+                            accel_v=accel_v, units=units)
 
 
 # ------------------------------------------------------------------ overturning maps

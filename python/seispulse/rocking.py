@@ -30,6 +30,7 @@ from ._seispulse import (sp_fetch_impacts, sp_overturn_boundary, sp_overturn_bou
                          sp_uplift_time)
 from .errors import InvalidInputError
 from .pulse import STANDARD_GRAVITY, _excitation, define
+from .records import _unit_code
 
 __all__ = ["REGIONS", "Response", "Summary", "uplift_time", "response", "summary",
            "extremes", "classify", "critical_time", "time_of_max", "max_rotation", "impact_time",
@@ -245,12 +246,40 @@ def _restitution(e):
     return x
 
 
+def _is_record(x):
+    """A seispulse.records.Record (samples in g with their dt)."""
+    return hasattr(x, "accel") and hasattr(x, "dt")
+
+
+def _record_factor(block, accel, accel_v, units):
+    """(units, factor to m/s^2) of the record samples: 'm/s2' (or 'm/s^2') 1, 'cm/s2'
+    (or 'cm/s^2', 'gal') 0.01, 'g' block.g; units None: 'g' for a Record, else 'm/s2'."""
+    given_record = _is_record(accel) or _is_record(accel_v)
+    if units is None:
+        units = "g" if _is_record(accel) else "m/s2"
+    code = _unit_code(units)
+    if given_record and code != _f.UNITS_G:
+        raise InvalidInputError(f"units = {units!r}: a seispulse.records.Record holds its "
+                                "samples in g (leave units out, or give units='g')")
+    return {_f.UNITS_G: block.g, _f.UNITS_M_S2: 1.0, _f.UNITS_CM_S2: 0.01}[code]
+
+
 def simulate(block, pulse=None, *, accel=None, dt=None, linearized=False, t=None,
-             t_max=None, theta0=0.0, omega0=0.0, rtol=1e-12, kv=0.0, accel_v=None):
+             t_max=None, theta0=0.0, omega0=0.0, rtol=1e-12, kv=0.0, accel_v=None,
+             units=None):
     """Rocking of `block` (:class:`Block`) under a pulse (from
-    :func:`seispulse.pulse.define`, SI) or a sampled accelerogram (accel in m/s^2 at
-    t = i dt, linear in between, zero after), from rest (or theta0 in rad, omega0 in
-    rad/s at t = 0) until rest, overturning or t_max (s).
+    :func:`seispulse.pulse.define`, SI) or a sampled accelerogram (accel at t = i dt,
+    linear in between, zero after; an array with dt, or a
+    :class:`seispulse.records.Record`, which carries dt), from rest (or theta0 in rad,
+    omega0 in rad/s at t = 0) until rest, overturning or t_max (s).
+
+    Units of accel (and accel_v): ``units`` takes the names of
+    :mod:`seispulse.records` ('g', 'm/s2', 'cm/s2'; aliases 'm/s^2', 'cm/s^2', 'gal';
+    any case). 'g': the samples are in units of g = block.g (m/s^2: a_g = block.g *
+    accel, as the driver and the Fortran rock_record take records); 'm/s2': as they
+    are; 'cm/s2': times 0.01. Default (units=None): 'm/s2' for an array (the behaviour
+    before ``units`` existed) and 'g' for a Record (a Record is in g; other units are an
+    InvalidInputError).
 
     Sign (doc/rocking.md section 1): a positive ground acceleration drives theta > 0 (rotation about
     one base corner); Housner's and Makris' form has the opposite sign, which flipping
@@ -266,8 +295,8 @@ def simulate(block, pulse=None, *, accel=None, dt=None, linearized=False, t=None
     Vertical ground acceleration a_v (positive up; doc/rocking.md section 7): gravity
     becomes g + a_v. With a pulse, ``kv`` gives a_v = kv a_g (the same pulse scaled; uplift
     at a_g > g tan(alpha)/(1 - kv tan(alpha)) or a_g < -g tan(alpha)/(1 + kv tan(alpha)));
-    with a record, ``accel_v`` is a second record in m/s^2 like accel (same dt and length,
-    linear in between, zero after). a_v < -g anywhere is an InvalidInputError.
+    with a record, ``accel_v`` is a second record in the units of accel (same dt and
+    length, linear in between, zero after). a_v < -g anywhere is an InvalidInputError.
     """
     if not isinstance(block, Block):
         raise InvalidInputError("block: must be a seispulse.rocking.Block (rectangular_block "
@@ -281,6 +310,19 @@ def simulate(block, pulse=None, *, accel=None, dt=None, linearized=False, t=None
                                 "with a pulse give kv")
     if kv != 0.0 and pulse is None:
         raise InvalidInputError("kv: scales a pulse; with a record give accel_v")
+    if units is not None and pulse is not None:
+        raise InvalidInputError("units: the units of a record (accel); a pulse is in SI "
+                                "(seispulse.pulse.define converts amp_unit='g')")
+    if accel is not None:
+        factor = _record_factor(block, accel, accel_v, units)
+        if _is_record(accel):
+            accel, dt = _core.record_and_step(accel, dt)
+        if _is_record(accel_v):
+            accel_v = accel_v.accel
+        if factor != 1.0:
+            accel = factor * _core.as_float_array("accel", accel)
+            if accel_v is not None:
+                accel_v = factor * _core.as_float_array("accel_v", accel_v)
     kind, params, rec, step, grid = _excitation(
         pulse, accel, dt, "dt: the time step (> 0, s) of accel is required", t)
     limit = t_max is not None

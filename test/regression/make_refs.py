@@ -37,6 +37,11 @@ blocks need none); maps use the wall alone (the rectangle's impacts come after t
 pulse, where a stable block cannot overturn: doc/rocking.md section 3), with cells at least 1e-6
 (relative) away from it.
 
+With &records: records that are rectangular pulses (equal samples, linear in between,
+0 after the last: the pulse of duration (n - 1) dt), the same closed forms per record:
+the summary (one row per record, also the largest |theta| and its time) or the history
+(stacked, the record's name first); polarity -1 mirrors them.
+
 Analysis 'cylinder' (never by running the driver): the properties of the body and of its
 equivalent body (J_G by the parallel-axis theorem, J_o, p, Housner's e, the equivalence by
 the same p and the same M_max) and the rigid pushover (F, M, M/(m g r)), written out from
@@ -562,8 +567,121 @@ def rocking_map_rows(nml):
     return rows
 
 
+def rect_records(nml_path, nml):
+    """The block (alpha, p, e, g) of &block and, per file of &records, (label, polarity,
+    A (g), t_d (s), rect_summary) for records that are rectangular pulses: every sample A
+    (g) of a record, n samples dt apart, is the rectangular half-cycle pulse of amplitude
+    A and duration (n - 1) dt (the record is linear between samples and 0 after the
+    last); None for a file that does not exist."""
+    nr, b = nml["records"], nml["block"]
+    files = _as_list(nr["files"])
+    n = len(files)
+    if any(k in nr for k in ("scale", "target_pga")) or "g" in b:
+        raise ValueError("rocking records references: records as read, g = 9.80665")
+    g = mpf(ref.G_STANDARD)
+    alpha, p, e = rocking_block(b, g)
+    out = []
+    for file, fmt, units, step, pol in zip(files, per_file(nr, "format", n, "auto"),
+                                           per_file(nr, "units", n, "auto"),
+                                           per_file(nr, "dt", n, 0.0),
+                                           per_file(nr, "polarity", n, 1)):
+        path = Path(nml_path).parent / file
+        if not path.exists():
+            out.append((path.stem, pol, None, None, None))
+            continue
+        acc, step = read_record(path, fmt.lower(), units.lower(), step)
+        if any(x != acc[0] for x in acc) or not acc[0] > 0:
+            raise ValueError(f"{file}: a rectangular pulse (equal samples > 0) only")
+        td = mpf(float((len(acc) - 1) * float(step)))     # the last sample, in double
+        r = rect_summary(p * td, alpha / acc[0], mp.pi / 2 / alpha)
+        if r["region"] == 5 and e != 0:
+            raise ValueError("rocking records references: e = 0 for stable blocks")
+        out.append((path.stem, pol, acc[0], td, r))
+    return (alpha, p, e, g), out
+
+
+def rocking_records_history_rows(nml_path, nml):
+    """The stacked history (label, t, a_g, theta, omega) from rect_records, in closed
+    form (e = 0; a stable block rests at its first impact, an overturning one stays at
+    +-pi/2 from the time it gets there). Polarity -1 mirrors theta and a_g; a file that
+    does not exist gives one row of NaN."""
+    (alpha, p, e, g), recs = rect_records(nml_path, nml)
+    grid = time_grid(nml["rocking"])
+    rows = []
+    for label, pol, amp_g, td, r in recs:
+        if r is None:
+            rows.append([label] + [mp.nan] * 4)
+            continue
+        f, eta = p * td, alpha / amp_g
+        t_stop = r["tau_i"] if r["region"] == 5 else r["tau_cap"]
+        for t in grid:
+            tau = mpf(t) / td
+            if abs(tau - t_stop) < mpf(10)**-6 or abs(tau - 1) < mpf(10)**-6:
+                raise ValueError(f"t = {t}: too close to an event or the end of {label}")
+            if tau < t_stop:
+                psi, dpsi = rect_psi(tau, f, eta)
+                theta, omega = psi * alpha, dpsi * alpha * p
+            elif r["region"] == 5:
+                theta, omega = mpf(0), mpf(0)          # at rest after the impact (e = 0)
+            else:
+                theta, omega = mp.pi / 2, mpf(0)       # overturned
+            a_g = amp_g * g if tau <= 1 else mpf(0)
+            rows.append([label, mpf(t), pol * a_g, pol * theta, pol * omega])
+    return rows
+
+
+ROCKING_RECORDS_HEADER = ("record (-),pga (g),alpha (rad),p (rad/s),e (-),outcome (-),"
+                          "t_uplift (s),t_overturn (s),n_impacts (-),t_impact1 (s),"
+                          "theta_max (rad),theta_min (rad),psi_max (-),psi_min (-),t_end (s),"
+                          "theta_abs_max (rad),t_abs_max (s),status (-)")
+
+
+def rocking_records_summary_rows(nml_path, nml):
+    """One summary row per record from rect_records: a stable block (S2, e = 0) rests at
+    its first impact tau_i (2.33) with its maximum psi_max (2.29) at tau_m (2.25); an
+    overturning one (no impact) crosses alpha at tau_c and reaches pi/2 at tau_cap.
+    Polarity -1 swaps theta_max and -theta_min. Outcome and status by code (named by
+    the caller); a file that does not exist: NaN but the block, status 1."""
+    (alpha, p, e, g), recs = rect_records(nml_path, nml)
+    nan = mp.nan
+    rows = []
+    for label, pol, amp_g, td, r in recs:
+        if r is None:
+            rows.append([label, nan, alpha, p, e] + [nan] * 12 + [mpf(1)])
+            continue
+        if r["region"] == 5:
+            outcome, t_ov, n_imp, t_i1 = 0, nan, 1, r["tau_i"] * td
+            peak, t_peak, t_end = r["psi_max"] * alpha, r["tau_m"] * td, r["tau_i"] * td
+        else:
+            outcome, t_ov, n_imp, t_i1 = 2, r["tau_c"] * td, 0, nan
+            peak, t_end = mp.pi / 2, r["tau_cap"] * td
+            t_peak = t_end
+        th_max, th_min = (peak, mpf(0)) if pol > 0 else (mpf(0), -peak)
+        rows.append([label, amp_g, alpha, p, e, outcome, mpf(0), t_ov, n_imp, t_i1, th_max,
+                     th_min, th_max / alpha, th_min / alpha, t_end, peak, t_peak, mpf(0)])
+    return rows
+
+
+def ref_cell(x):
+    """A reference cell: text quoted, a number as repr(float)."""
+    return f'"{x}"' if isinstance(x, str) else repr(float(x))
+
+
 def make_rocking_ref(nml_path, nml):
     what = nml.get("rocking", {}).get("what", "summary").lower()
+    if "records" in nml:
+        with mp.workdps(40):
+            if what == "history":
+                header = "record (-)," + ROCKING_HISTORY_HEADER
+                rows = rocking_records_history_rows(nml_path, nml)
+            else:
+                header = ROCKING_RECORDS_HEADER
+                rows = named(header, rocking_records_summary_rows(nml_path, nml))
+        lines = [header] + [",".join(ref_cell(x) for x in row) for row in rows]
+        out = Path(nml_path).with_suffix(".ref")
+        out.write_text("\n".join(lines) + "\n")
+        print(f"wrote {out} ({len(lines) - 1} rows)")
+        return
     with mp.workdps(40):
         if what == "summary":
             header, rows = ROCKING_HEADER, rocking_summary_rows(nml)

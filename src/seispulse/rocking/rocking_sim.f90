@@ -113,6 +113,8 @@ module seispulse_rocking_sim
         real(dp), allocatable :: t_impacts(:)    !! impact times (s), n_impacts of them
         real(dp) :: theta_max = 0.0_dp           !! largest theta (rad)
         real(dp) :: theta_min = 0.0_dp           !! smallest theta (rad)
+        real(dp) :: t_theta_max = 0.0_dp         !! first time theta reaches theta_max (s)
+        real(dp) :: t_theta_min = 0.0_dp         !! first time theta reaches theta_min (s)
         real(dp) :: t_end = 0.0_dp               !! rest, |theta| = pi/2, or the limit (s);
                                                  !! 0 without uplift
         integer :: n_steps = 0                   !! integration steps tried (cost)
@@ -805,6 +807,8 @@ contains
         run%n_impacts = 0
         run%theta_max = 0.0_dp
         run%theta_min = 0.0_dp
+        run%t_theta_max = 0.0_dp
+        run%t_theta_min = 0.0_dp
         run%t_end = 0.0_dp
         run%n_steps = 0
     end subroutine empty_run
@@ -880,6 +884,8 @@ contains
         st%h = 0.05_dp / sim%p
         run%theta_max = max(0.0_dp, th0)
         run%theta_min = min(0.0_dp, th0)
+        run%t_theta_max = 0.0_dp
+        run%t_theta_min = 0.0_dp
         if (sim%track .and. .not. allocated(st%imp)) allocate(st%imp(16))
         ! the state before t = 0 is the initial one
         do while (st%ig <= st%ng)
@@ -1258,8 +1264,9 @@ contains
             if (sim%track) then
                 ! extremes of theta and the last outward crossing of |theta| = alpha
                 ! (not when the step ends in an impact: the block is then back at 0)
-                if (turn .and. x_turn <= x_end) call extremes(run, rs_ * u_turn)
-                call extremes(run, rs_ * u_end)
+                if (turn .and. x_turn <= x_end) call extremes(run, rs_ * u_turn, &
+                                                              t + x_turn * hh)
+                call extremes(run, rs_ * u_end, t + x_end * hh)
                 if (ev /= R_IMPACT) then
                     xr = -1.0_dp
                     if (max_turn .and. x_turn <= x_end) then
@@ -1387,11 +1394,18 @@ contains
         st%from_zero = .false.
     end subroutine set_rest
 
-    pure subroutine extremes(run, th)
+    !> A new extreme theta at time t_th (s): the first time each extreme is reached.
+    pure subroutine extremes(run, th, t_th)
         type(rocking_run_t), intent(inout) :: run
-        real(dp), intent(in) :: th
-        run%theta_max = max(run%theta_max, th)
-        run%theta_min = min(run%theta_min, th)
+        real(dp), intent(in) :: th, t_th
+        if (th > run%theta_max) then
+            run%theta_max = th
+            run%t_theta_max = t_th
+        end if
+        if (th < run%theta_min) then
+            run%theta_min = th
+            run%t_theta_min = t_th
+        end if
     end subroutine extremes
 
     subroutine push_impact(st, tt)
