@@ -1,4 +1,4 @@
-"""Helpers shared by the driver tests of the sliding and rocking analyses: read a CSV
+"""Helpers shared by the driver tests of the analyses: read a CSV
 table the driver wrote, run an example input file of input/."""
 import csv
 import subprocess
@@ -7,12 +7,15 @@ import numpy as np
 
 
 def read_table(path):
-    """{column name: array} of a CSV table of the driver (names without units)."""
+    """{column name: array} of a CSV table of the driver (names without units): a column
+    of numbers as floats, a column of double-quoted cells (labels, category names) as
+    str."""
     with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    names = [h.rsplit(" (", 1)[0] for h in rows[0]]
-    data = np.array([[float(x) for x in row] for row in rows[1:]], ndmin=2)
-    return {n: data[:, j] for j, n in enumerate(names)}
+        names = [h.rsplit(" (", 1)[0] for h in next(csv.reader(f))]
+        rows = list(csv.reader(f, quoting=csv.QUOTE_NONNUMERIC))
+    cols = [[row[j] for row in rows] for j in range(len(names))]
+    return {n: np.array(c, dtype=str if any(isinstance(x, str) for x in c) else float)
+            for n, c in zip(names, cols)}
 
 
 def run_example(driver, source_root, tmp_path, name):

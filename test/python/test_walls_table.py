@@ -125,13 +125,13 @@ def test_example_input(driver, tmp_path):
     proc = subprocess.run([driver, str(INPUT / "walls.nml")], cwd=tmp_path, capture_output=True,
                           text=True, timeout=120)
     assert proc.returncode == 0, proc.stderr
-    header, rows = read_csv(tmp_path / "out" / "walls_walls.csv")
+    header, rows = read_csv(tmp_path / "out" / "walls.csv")
     assert header == ["method (-)", "thrust (kN/m)", "z (m)", "z/H (-)", "moment (kNm/m)"]
     assert [r[0] for r in rows] == list(walls.COMPARISON_ROWS)
     # EN 1998: ag = 0.24 g, ground B type 1 (S = 1.2), r = 1: kh = 0.288, kv = 0.144
     t = walls.comparison(6.0, 20.0, 32.0, 0.288, 0.144, 0.288, nu=0.3, delta=0.1)
     np.testing.assert_allclose([r[1] for r in rows], t.thrust, rtol=1e-14)
-    header, rows = read_csv(tmp_path / "out" / "walls_walls_pressure.csv")
+    header, rows = read_csv(tmp_path / "out" / "walls_pressure.csv")
     assert header == ["depth (m)", "static (kPa)", "mo_dyn (kPa)", "ec8_rigid (kPa)", "vy (kPa)",
                       "one_term (kPa)"]
     assert len(rows) == 21
