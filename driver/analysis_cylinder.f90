@@ -48,7 +48,7 @@ module driver_cylinder
     use driver_rocking_common, only: check_run_options, restitution_and_model, &
                                      locate_run_message, map_kind, map_template, progress_t, &
                                      axes_names, map_axes_code, map_grids, map_axes_header, &
-                                     map_table
+                                     map_table, run_summary_kinds
     implicit none
     private
 
@@ -914,7 +914,7 @@ contains
         comments(6) = 'input: '//trim(path)
         call write_tables(prefix, 'cylinder', comments, summary_names(.false.), &
             summary_units(.false.), reshape(summary_row(s, run), [1, 13]), files, stat, &
-            errmsg, kinds=summary_kinds(.false.), summary=.true.)
+            errmsg, kinds=run_summary_kinds(13, 4, outcome_names, 7), summary=.true.)
         if (stat /= 0) then
             errmsg = path//': &run: output: '//errmsg
             return
@@ -965,20 +965,6 @@ contains
             units = base
         end if
     end function summary_units
-
-    !> Kinds of the summary columns: outcome by name, n_impacts an integer.
-    function summary_kinds(records) result(kinds)
-        logical, intent(in) :: records
-        character(len=:), allocatable :: kinds(:)
-        character(len=:), allocatable :: outcome
-        integer :: k0
-        outcome = category_kind(outcome_names)
-        k0 = merge(2, 0, records)          ! record, pga first
-        allocate(character(len=len(outcome)) :: kinds(k0 + 13))
-        kinds = ''
-        kinds(k0 + 4) = outcome
-        kinds(k0 + 7) = 'int'
-    end function summary_kinds
 
     !> Planar rocking under each record of &records: a summary row and the history rows
     !> of each (a record that cannot be read or run: NaN, status 1, the others go on).
@@ -1079,7 +1065,7 @@ contains
         comments(5 + nrec) = 'input: '//trim(path)
         call write_tables(prefix, 'cylinder', comments, summary_names(.true.), &
             summary_units(.true.), summary, files, stat, errmsg, labels=labels, &
-            kinds=summary_kinds(.true.))
+            kinds=run_summary_kinds(15, 6, outcome_names, 9))
         if (stat /= 0) then
             errmsg = path//': &run: output: '//errmsg
             return

@@ -49,7 +49,7 @@ module driver_winkler
     use driver_axis, only: axis_values
     use driver_rocking_common, only: check_run_options, locate_run_message, map_kind, &
                                      map_template, progress_t, axes_names, map_axes_code, &
-                                     map_grids, map_axes_header, map_table
+                                     map_grids, map_axes_header, map_table, run_summary_kinds
     implicit none
     private
 
@@ -1068,22 +1068,18 @@ contains
         end if
     end subroutine history_header
 
-    !> Kinds of the summary columns: outcome by name, n_impacts an integer.
+    !> Kinds of the summary columns (with the record and pga columns for records):
+    !> outcome by name, n_impacts an integer.
     function summary_kinds(records) result(kinds)
         logical, intent(in) :: records
         character(len=:), allocatable :: kinds(:)
         character(len=24) :: onames(0:4)
-        character(len=:), allocatable :: outcome
         integer :: j, k0
         do j = 0, 4
             onames(j) = winkler_outcome_name(j)
         end do
-        outcome = category_kind(onames)
-        k0 = merge(2, 0, records)          ! record, pga first
-        allocate(character(len=len(outcome)) :: kinds(k0 + 14))
-        kinds = ''
-        kinds(k0 + 5) = outcome
-        kinds(k0 + 8) = 'int'
+        k0 = merge(2, 0, records)
+        kinds = run_summary_kinds(k0 + 14, k0 + 5, onames, k0 + 8)
     end function summary_kinds
 
     !> Header lines shared by the tables of a history.

@@ -10,12 +10,14 @@ module driver_rocking_common
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: located, join, given, name_index
     use driver_axis, only: axis_values
+    use driver_tables, only: category_kind
     implicit none
     private
 
     public :: check_run_options, restitution_and_model, locate_run_message
     public :: map_kind, map_template, progress_t
     public :: axes_names, map_axes_code, map_grids, map_axes_header, map_table
+    public :: run_summary_kinds
 
     character(len=10), parameter :: model_names(2) = [character(len=10) :: 'nonlinear', &
         'linearized']
@@ -370,5 +372,19 @@ contains
         write(error_unit, '(a, i0, a, i0, a)') 'map: row ', n, '/', n, ' (done)'
         flush(error_unit)
     end subroutine progress_done
+
+    !> Column kinds (write_tables) of a run summary of ncol columns: column j_outcome
+    !> holds an outcome code, written by its name, column j_count a count (an integer).
+    pure function run_summary_kinds(ncol, j_outcome, outcome_names, j_count) result(kinds)
+        integer, intent(in) :: ncol, j_outcome, j_count
+        character(len=*), intent(in) :: outcome_names(0:)   !! the name of each code
+        character(len=:), allocatable :: kinds(:)
+        character(len=:), allocatable :: outcome
+        outcome = category_kind(outcome_names)
+        allocate(character(len=len(outcome)) :: kinds(ncol))
+        kinds = ''
+        kinds(j_outcome) = outcome
+        kinds(j_count) = 'int'
+    end function run_summary_kinds
 
 end module driver_rocking_common
