@@ -17,6 +17,7 @@
 !>     3-D rocking with rolling of a circular cylinder on its rim ([KM90]) under a pulse
 !>     along a direction, one or two records (x, y), or free from an initial state
 !>     (&roll).
+!> File names by table_path (out/cylinder_map + cylinder_map: out/cylinder_map.txt).
 !> The numbers come from seispulse_cylinder (properties, pushover, maps),
 !> seispulse_rocking_sim (the planar integrator) and seispulse_cylinder_roll (rolling); the
 !> driver only reads, checks, converts units and writes. Every table is computed before the

@@ -17,6 +17,7 @@
 !>     pushover on clay by the stiffness-degradation method;
 !>   * 'capacity': <output>_winkler_capacity, the bearing capacity, the factor of safety
 !>     and the moment capacities of a circular footing on clay.
+!> File names by table_path (out/winkler_map + winkler_map: out/winkler_map.txt).
 !> The numbers come from seispulse_winkler, seispulse_winkler_rock and
 !> seispulse_clay_footing; the driver only reads, checks, converts units and writes. Every
 !> table is computed before the first is written.
