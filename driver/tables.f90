@@ -10,7 +10,7 @@ module driver_tables
     use, intrinsic :: iso_fortran_env, only: output_unit, int64
     use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
-    use seispulse, only: dp, int_str, g_str, shortest_str
+    use seispulse, only: dp, int_str, g_str, format_reals, NUM_LEN
     use driver_run_group, only: run_digits, run_csv_digits
     implicit none
     private
@@ -239,7 +239,8 @@ contains
         integer, allocatable :: ncat(:)
         ! the text of each cell of the .txt (a category name longer than that is
         ! written from cat_text directly)
-        character(len=24), allocatable :: cells(:, :)
+        character(len=NUM_LEN), allocatable :: cells(:, :)
+        character(len=NUM_LEN), allocatable :: ctext(:)      ! the CSV cells of a row
         character(len=:), allocatable :: line, head, text
         logical :: as_summary
 
@@ -268,25 +269,6 @@ contains
             end do
         end if
 
-        ! the text cells, and the width of each column
-        allocate(cells(nrow, ndat))
-        allocate(width(ncol))
-        do j = 1, ncol
-            width(j) = max(len_trim(names(j)), len_trim(units(j)) + 2)
-        end do
-        if (present(labels)) then
-            do i = 1, nrow
-                width(1) = max(width(1), len_trim(labels(i)))
-            end do
-        end if
-        do j = 1, ndat
-            do i = 1, nrow
-                head = cell_text(data(i, j), j, digits)
-                cells(i, j) = head
-                width(j + j0 - 1) = max(width(j + j0 - 1), len(head))
-            end do
-        end do
-
         ut = -1
         uc = -1
         call open_output(trim(files(1)), ut, stat, errmsg)
@@ -296,34 +278,62 @@ contains
             call fail('')
             return
         end if
-        do i = 1, size(comments)
-            write(ut, '(a)', iostat=stat, iomsg=iomsg) '# '//trim(comments(i))
-            if (stat /= 0) exit
+
+        ! the width of each text column: at least its name and (unit)
+        allocate(width(ncol))
+        do j = 1, ncol
+            width(j) = max(len_trim(names(j)), len_trim(units(j)) + 2)
         end do
-        if (as_summary) then
-            call write_summary()
-        else
-            call write_text_table(cells)
+        if (present(labels)) then
+            do i = 1, nrow
+                width(1) = max(width(1), len_trim(labels(i)))
+            end do
         end if
 
-        ! CSV: header "name (unit)", then the rows
-        if (stat == 0) then
-            head = trim(names(1))//' ('//trim(units(1))//')'
-            do j = 2, ncol
-                head = head//','//trim(names(j))//' ('//trim(units(j))//')'
-            end do
-            write(uc, '(a)', iostat=stat, iomsg=iomsg) head
-        end if
+        ! CSV: header "name (unit)", then the rows; each number is converted once, for
+        ! the CSV cell and the text cell (kept for the .txt, written when the widths
+        ! are known)
+        head = trim(names(1))//' ('//trim(units(1))//')'
+        do j = 2, ncol
+            head = head//','//trim(names(j))//' ('//trim(units(j))//')'
+        end do
+        write(uc, '(a)', iostat=stat, iomsg=iomsg) head
+        allocate(cells(nrow, ndat), ctext(ndat))
         do i = 1, nrow
             if (stat /= 0) exit
+            call format_reals(data(i, :), digits, cells(i, :), csv_digits, ctext)
             pos = 0
             if (present(labels)) call put(csv_quote(labels(i)))
             do j = 1, ndat
                 if (pos > 0) call put(',')
-                call put(csv_cell(data(i, j), j))
+                select case (kind_of(j))
+                case (KIND_INT)
+                    cells(i, j) = int_text(data(i, j))
+                    call put(trim(cells(i, j)))
+                case (KIND_CAT)
+                    head = cat_text(data(i, j), j)
+                    cells(i, j) = head
+                    call put('"'//head//'"')
+                    width(j + j0 - 1) = max(width(j + j0 - 1), len(head))
+                case default
+                    call put(trim(ctext(j)))
+                end select
+                width(j + j0 - 1) = max(width(j + j0 - 1), len_trim(cells(i, j)))
             end do
             write(uc, '(a)', iostat=stat, iomsg=iomsg) text(1:pos)
         end do
+
+        do i = 1, size(comments)
+            if (stat /= 0) exit
+            write(ut, '(a)', iostat=stat, iomsg=iomsg) '# '//trim(comments(i))
+        end do
+        if (stat == 0) then
+            if (as_summary) then
+                call write_summary(cells)
+            else
+                call write_text_table(cells)
+            end if
+        end if
         if (stat /= 0) then
             call fail('cannot write '//trim(files(1))//' / '//trim(files(2)))
             return
@@ -348,39 +358,18 @@ contains
             pos = pos + len(c)
         end subroutine put
 
-        !> The text of a number in column j of the .txt.
-        function cell_text(x, j, nd) result(c)
-            real(dp), intent(in) :: x
-            integer, intent(in) :: j, nd
+        !> The text of cell (i, j) of the .txt: cells(i, j), or a category name longer
+        !> than that.
+        function cell_of(cells, i, j) result(c)
+            character(len=*), intent(in) :: cells(:, :)
+            integer, intent(in) :: i, j
             character(len=:), allocatable :: c
-            select case (kind_of(j))
-            case (KIND_INT)
-                c = int_text(x)
-            case (KIND_CAT)
-                c = cat_text(x, j)
-            case default
-                c = g_str(x, nd)
-            end select
-        end function cell_text
-
-        !> The text of a number in column j of the .csv.
-        function csv_cell(x, j) result(c)
-            real(dp), intent(in) :: x
-            integer, intent(in) :: j
-            character(len=:), allocatable :: c
-            select case (kind_of(j))
-            case (KIND_INT)
-                c = int_text(x)
-            case (KIND_CAT)
-                c = '"'//cat_text(x, j)//'"'
-            case default
-                if (csv_digits == 0) then
-                    c = shortest_str(x)
-                else
-                    c = g_str(x, csv_digits)
-                end if
-            end select
-        end function csv_cell
+            if (kind_of(j) == KIND_CAT) then
+                c = cat_text(data(i, j), j)
+            else
+                c = trim(cells(i, j))
+            end if
+        end function cell_of
 
         !> A category code as its name ('undecided' for -1, 'nan' for NaN).
         function cat_text(x, j) result(c)
@@ -422,11 +411,7 @@ contains
                 line(1:1) = ' '
                 if (present(labels)) call left(labels(i), width(1))
                 do j = 1, ndat
-                    if (kind_of(j) == KIND_CAT) then
-                        call right(cat_text(data(i, j), j), width(j + j0 - 1))
-                    else
-                        call right(cells(i, j), width(j + j0 - 1))
-                    end if
+                    call right(cell_of(cells, i, j), width(j + j0 - 1))
                 end do
                 write(ut, '(a)', iostat=stat, iomsg=iomsg) line(1:pos)
             end do
@@ -477,7 +462,8 @@ contains
         end subroutine left
 
         !> One `name  value  unit` line per column (the one row of a summary).
-        subroutine write_summary()
+        subroutine write_summary(cells)
+            character(len=*), intent(in) :: cells(:, :)
             integer :: wn, wv, k
             character(len=:), allocatable :: v
             wn = 0
@@ -487,7 +473,7 @@ contains
                 if (k < j0) then
                     wv = max(wv, len_trim(labels(1)))
                 else
-                    wv = max(wv, len(cell_text(data(1, k - j0 + 1), k - j0 + 1, digits)))
+                    wv = max(wv, len(cell_of(cells, 1, k - j0 + 1)))
                 end if
             end do
             do k = 1, ncol
@@ -495,7 +481,7 @@ contains
                 if (k < j0) then
                     v = trim(labels(1))
                 else
-                    v = cell_text(data(1, k - j0 + 1), k - j0 + 1, digits)
+                    v = cell_of(cells, 1, k - j0 + 1)
                 end if
                 write(ut, '(a)', iostat=stat, iomsg=iomsg) pad(names(k), wn)//'  ' &
                     //repeat(' ', wv - len(v))//v//'  '//trim(units(k))

@@ -3,12 +3,28 @@
 module seispulse_format
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
     use, intrinsic :: iso_fortran_env, only: int64
+    use, intrinsic :: iso_c_binding, only: c_char, c_ptr, c_double, c_null_char, c_null_ptr
     use seispulse_kinds, only: dp
     implicit none
     private
 
     public :: real_str, int_str, num_str, quote, upper, name_of, code_of
-    public :: g_str, shortest_str
+    public :: g_str, shortest_str, format_reals, NUM_LEN
+
+    !> longest text of a number from g_str, shortest_str, format_reals
+    !> ("-1.2345678901234567e-308")
+    integer, parameter :: NUM_LEN = 24
+
+    interface
+        ! C's strtod: text to double, correctly rounded (declared pure: its only side
+        ! effect, errno on overflow or underflow, is not read here)
+        pure function c_strtod(text, endptr) bind(c, name='strtod') result(x)
+            import :: c_char, c_ptr, c_double
+            character(kind=c_char), intent(in) :: text(*)
+            type(c_ptr), value, intent(in) :: endptr
+            real(c_double) :: x
+        end function c_strtod
+    end interface
 
     !> longest quoted text in a message, in bytes (longer text is cut, with '...')
     integer, parameter :: QUOTE_MAX = 40
@@ -83,48 +99,120 @@ contains
     end function num_str
 
     !> x with `digits` significant digits as C's printf("%.<digits>g") writes it: the
-    !> decimal exponent X of the rounded value gives fixed notation for -4 <= X < digits
-    !> ("0.05", "123457", "0.000123"), else E notation ("1.5e-05", "1.23457e+08");
-    !> trailing zeros and a trailing point dropped ("3", "-0"); "nan", "inf", "-inf".
+    !> decimal exponent X of the correctly rounded value gives fixed notation for
+    !> -4 <= X < digits ("0.05", "123457", "0.000123"), else E notation ("1.5e-05",
+    !> "1.23457e+08"); trailing zeros and a trailing point dropped ("3", "-0"); an exact
+    !> tie rounds to even digits, as C does ("0.12" for 0.125 and 2 digits); "nan",
+    !> "inf", "-inf". format_reals does the same for many numbers at a time.
     pure function g_str(x, digits) result(s)
         real(dp), intent(in) :: x        !! the number
         integer, intent(in) :: digits    !! significant digits, 1..17 (clamped to that)
         character(len=:), allocatable :: s
-        character(len=17) :: d
-        integer :: p, ex
-        logical :: neg, is_special
-        call special(x, s, is_special)
-        if (is_special) return
-        p = min(max(digits, 1), 17)
-        call decimal_digits(x, p, d, ex, neg)
-        if (ex >= -4 .and. ex < p) then
-            s = fixed_text(d(1:p), ex, neg, .false.)
-        else
-            s = sci_text(d(1:p), ex, neg)
-        end if
+        character(len=NUM_LEN) :: t(1)
+        call format_reals([x], min(max(digits, 1), 17), t)
+        s = trim(t(1))
     end function g_str
 
     !> The shortest decimal text that reads back to exactly x (at most 17 significant
-    !> digits), laid out as Python's repr(float): fixed notation for decimal exponents
-    !> -4..15 with at least one digit after the point ("0.1", "100.0", "-0.0",
-    !> "123456.5"), else E notation ("1e-05", "5e-324", "1.7976931348623157e+308");
-    !> "nan", "inf", "-inf". The digits: x rounded to 15, 16, then 17 significant digits,
-    !> the first that reads back to x (15 digits with trailing zeros dropped is the
-    !> shortest text whenever one of at most 15 digits exists).
-    function shortest_str(x) result(s)
+    !> digits; of the shortest, the nearest to x), laid out as Python's repr(float):
+    !> fixed notation for decimal exponents -4..15 with at least one digit after the point
+    !> ("0.1", "100.0", "-0.0", "123456.5"), else E notation ("1e-05", "5e-324",
+    !> "1.7976931348623157e+308"); "nan", "inf", "-inf". format_reals does the same for
+    !> many numbers at a time.
+    pure function shortest_str(x) result(s)
         real(dp), intent(in) :: x        !! the number
         character(len=:), allocatable :: s
-        character(len=17) :: d
-        integer :: p, ex, k
-        logical :: neg, is_special
-        call special(x, s, is_special)
-        if (is_special) return
-        do p = 15, 17
-            call decimal_digits(x, p, d, ex, neg)
-            if (p == 17) exit
-            if (reads_back(d(1:p), ex, neg, x)) exit
+        character(len=NUM_LEN) :: t(1)
+        call format_reals([x], 0, t)
+        s = trim(t(1))
+    end function shortest_str
+
+    !> The texts of x(:) as g_str (digits 1..17) or shortest_str (digits 0) writes them,
+    !> left-adjusted in texts(:) (at least NUM_LEN = 24 characters each); with digits2
+    !> and texts2, also in the second setting (one decimal conversion serves both).
+    !> Each number is converted once to 24 significant digits (one formatted write per
+    !> CHUNK numbers); that is rounded to the digits asked for (exact unless the digits
+    !> dropped read 5000..., then the number is converted again at those digits), and a
+    !> shortest text is the first of 15, 16 (also the next 16-digit value up for a
+    !> power of two) and 17 digits that reads back to x (strtod, correctly rounded).
+    !> With 15 digits, trailing zeros dropped give the shortest text whenever one of at
+    !> most 15 digits exists (a decimal of <= 15 digits survives the round trip to a
+    !> normal double; a subnormal x tries 1, 2, ... digits).
+    pure subroutine format_reals(x, digits, texts, digits2, texts2)
+        real(dp), intent(in) :: x(:)                        !! the numbers
+        integer, intent(in) :: digits                       !! 0 (shortest) or 1..17
+        character(len=*), intent(out) :: texts(:)           !! size(x) texts
+        integer, intent(in), optional :: digits2            !! a second setting ...
+        character(len=*), intent(out), optional :: texts2(:)  !! ... and its texts
+        integer, parameter :: CHUNK = 64, FW = 32
+        character(len=CHUNK * FW) :: buf
+        integer :: i0, n, k, i
+        do i0 = 1, size(x), CHUNK
+            n = min(CHUNK, size(x) - i0 + 1)
+            ! 24 significant digits: " -d.ddd...dE-eee" in FW characters per number
+            write(buf, '(64es32.23e3)') x(i0:i0 + n - 1)
+            do k = 1, n
+                i = i0 + k - 1
+                texts(i) = one_text(x(i), buf((k - 1) * FW + 1:k * FW), digits)
+                if (present(texts2)) texts2(i) = one_text(x(i), &
+                    buf((k - 1) * FW + 1:k * FW), digits2)
+            end do
         end do
-        k = p
+    end subroutine format_reals
+
+    !> The text of x from its 24-digit field f (es32.23e3): %g with p digits, or the
+    !> shortest round-trip text (p = 0).
+    pure function one_text(x, f, p) result(s)
+        real(dp), intent(in) :: x
+        character(len=32), intent(in) :: f
+        integer, intent(in) :: p
+        character(len=NUM_LEN) :: s
+        character(len=24) :: d24
+        character(len=17) :: d
+        integer :: e24, ex, q, q0, k
+        logical :: neg
+        if (.not. ieee_is_finite(x)) then
+            if (ieee_is_nan(x)) then
+                s = 'nan'
+            else if (x > 0.0_dp) then
+                s = 'inf'
+            else
+                s = '-inf'
+            end if
+            return
+        end if
+        neg = f(2:2) == '-'
+        d24 = f(3:3)//f(5:27)
+        e24 = 100 * (iachar(f(30:30)) - 48) + 10 * (iachar(f(31:31)) - 48) &
+              + iachar(f(32:32)) - 48
+        if (f(29:29) == '-') e24 = -e24
+        if (verify(d24, '0') == 0) e24 = 0
+        if (p > 0) then
+            q = min(p, 17)
+            call round_digits(x, d24, e24, q, d, ex)
+            if (ex >= -4 .and. ex < q) then
+                s = fixed_text(d(1:q), ex, neg, .false.)
+            else
+                s = sci_text(d(1:q), ex, neg)
+            end if
+            return
+        end if
+        ! a subnormal number has fewer significant bits: its shortest text may be
+        ! shorter than its 15 digits with trailing zeros dropped
+        q0 = 15
+        if (abs(x) < tiny(x)) q0 = 1
+        do q = q0, 17
+            call round_digits(x, d24, e24, q, d, ex)
+            if (q == 17) exit
+            if (reads_back(d(1:q), ex, neg, x)) exit
+            if (q == 16 .and. is_power_of_two(x)) then
+                ! the rounding interval reaches twice as far up as down: the next
+                ! 16-digit value up may read back when the nearest (below) does not
+                call next_up(d(1:q), ex)
+                if (reads_back(d(1:q), ex, neg, x)) exit
+            end if
+        end do
+        k = q
         do while (k > 1)
             if (d(k:k) /= '0') exit
             k = k - 1
@@ -134,109 +222,162 @@ contains
         else
             s = sci_text(d(1:k), ex, neg)
         end if
-    end function shortest_str
+    end function one_text
 
-    !> "nan", "inf" or "-inf" for a number that is not finite (then is_special).
-    pure subroutine special(x, s, is_special)
+    !> |x| (finite) correctly rounded to p significant digits, d(1:p) and the decimal
+    !> exponent ex (|x| = d(1).d(2:p) 10^ex; 0 for a zero), from its 24 digits d24 and
+    !> exponent e24. The dropped digits d24(p+1:) decide, unless they read 5000...: the
+    !> 24-digit value is itself rounded, so x is converted again at p digits (the
+    !> compiler's conversion rounds correctly, an exact tie to even).
+    pure subroutine round_digits(x, d24, e24, p, d, ex)
         real(dp), intent(in) :: x
-        character(len=:), allocatable, intent(inout) :: s
-        logical, intent(out) :: is_special
-        is_special = .not. ieee_is_finite(x)
-        if (.not. is_special) return
-        if (ieee_is_nan(x)) then
-            s = 'nan'
-        else if (x > 0.0_dp) then
-            s = 'inf'
-        else
-            s = '-inf'
-        end if
-    end subroutine special
-
-    !> x (finite) rounded to p significant digits (round to nearest): the digits d(1:p)
-    !> and the decimal exponent ex, x = +-d(1).d(2:p) 10^ex (0 for a zero), and the sign.
-    pure subroutine decimal_digits(x, p, d, ex, neg)
-        real(dp), intent(in) :: x
-        integer, intent(in) :: p              !! 1..17
+        character(len=24), intent(in) :: d24
+        integer, intent(in) :: e24
+        integer, intent(in) :: p                  !! 1..17
         character(len=17), intent(out) :: d
         integer, intent(out) :: ex
-        logical, intent(out) :: neg
-        character(len=12), parameter :: fmts(17) = [character(len=12) :: '(es26.0e3)', &
-            '(es26.1e3)', '(es26.2e3)', '(es26.3e3)', '(es26.4e3)', '(es26.5e3)', &
-            '(es26.6e3)', '(es26.7e3)', '(es26.8e3)', '(es26.9e3)', '(es26.10e3)', &
-            '(es26.11e3)', '(es26.12e3)', '(es26.13e3)', '(es26.14e3)', '(es26.15e3)', &
-            '(es26.16e3)']
-        character(len=26) :: buf
-        integer :: i, n, e
-        write(buf, fmts(p)) x
-        ! buf: blanks, optional '-', digit, '.', p - 1 digits, 'E', sign, 3 digits
-        e = 26 - 4
-        neg = .false.
-        d = ' '
-        n = 0
-        do i = 1, e - 1
-            select case (buf(i:i))
-            case ('-')
-                neg = .true.
-            case ('0':'9')
-                n = n + 1
-                d(n:n) = buf(i:i)
-            end select
-        end do
-        ex = 100 * (iachar(buf(e + 2:e + 2)) - 48) + 10 * (iachar(buf(e + 3:e + 3)) - 48) &
-             + iachar(buf(e + 4:e + 4)) - 48
-        if (buf(e + 1:e + 1) == '-') ex = -ex
+        character(len=12), parameter :: fmts(17) = [character(len=12) :: '(es32.0e3)', &
+            '(es32.1e3)', '(es32.2e3)', '(es32.3e3)', '(es32.4e3)', '(es32.5e3)', &
+            '(es32.6e3)', '(es32.7e3)', '(es32.8e3)', '(es32.9e3)', '(es32.10e3)', &
+            '(es32.11e3)', '(es32.12e3)', '(es32.13e3)', '(es32.14e3)', '(es32.15e3)', &
+            '(es32.16e3)']
+        character(len=32) :: f
+        integer :: i, n
+        d = d24(1:p)
+        ex = e24
+        if (d24(p + 1:p + 1) == '5' .and. verify(d24(p + 2:), '0') == 0) then
+            write(f, fmts(p)) x
+            ! f: blanks, optional '-', digit, '.', p - 1 digits, 'E', sign, 3 digits
+            n = 0
+            do i = 1, 27
+                if (f(i:i) >= '0' .and. f(i:i) <= '9') then
+                    n = n + 1
+                    d(n:n) = f(i:i)
+                end if
+            end do
+            ex = 100 * (iachar(f(30:30)) - 48) + 10 * (iachar(f(31:31)) - 48) &
+                 + iachar(f(32:32)) - 48
+            if (f(29:29) == '-') ex = -ex
+        else if (d24(p + 1:p + 1) >= '5') then
+            call next_up(d(1:p), ex)
+        end if
         if (verify(d(1:p), '0') == 0) ex = 0
-    end subroutine decimal_digits
+    end subroutine round_digits
 
-    !> Whether +-0.d 10^(ex+1) reads back (as a Fortran read does) to exactly x.
-    logical function reads_back(d, ex, neg, x)
+    !> d(1).d(2:) 10^ex plus one unit in the last digit (9.99 -> 1.00 and ex + 1).
+    pure subroutine next_up(d, ex)
+        character(len=*), intent(inout) :: d
+        integer, intent(inout) :: ex
+        integer :: k
+        do k = len(d), 1, -1
+            if (d(k:k) /= '9') then
+                d(k:k) = achar(iachar(d(k:k)) + 1)
+                return
+            end if
+            d(k:k) = '0'
+        end do
+        d(1:1) = '1'
+        ex = ex + 1
+    end subroutine next_up
+
+    !> Whether x is +-2^k (a normal number with a zero fraction): its rounding interval
+    !> is narrower below than above.
+    pure logical function is_power_of_two(x)
+        real(dp), intent(in) :: x
+        integer :: e
+        is_power_of_two = .false.
+        if (.not. abs(x) >= tiny(x)) return
+        e = exponent(x)
+        is_power_of_two = .not. abs(abs(x) - scale(0.5_dp, e)) > 0.0_dp
+    end function is_power_of_two
+
+    !> Whether +-d(1).d(2:) 10^ex reads back (C's strtod, correctly rounded) to x.
+    pure logical function reads_back(d, ex, neg, x)
         character(len=*), intent(in) :: d
         integer, intent(in) :: ex
         logical, intent(in) :: neg
         real(dp), intent(in) :: x
-        character(len=32) :: buf
+        character(len=32) :: t
         real(dp) :: y
-        integer :: ios
-        write(buf, '(a, "0.", a, "E", i0)') merge('-', ' ', neg), d, ex + 1
-        read(buf, '(f32.0)', iostat=ios) y
+        integer :: n
+        n = 0
+        if (neg) then
+            t(1:1) = '-'
+            n = 1
+        end if
+        t(n + 1:n + len(d) + 3) = d(1:1)//'.'//d(2:)//'e'//merge('-', '+', ex < 0)
+        n = n + len(d) + 3
+        call put_exponent(t, n, ex, 1)
+        t(n + 1:n + 1) = c_null_char
+        y = c_strtod(t, c_null_ptr)
         ! the same bits (a zero keeps its sign)
-        reads_back = ios == 0 .and. transfer(y, 0_int64) == transfer(x, 0_int64)
+        reads_back = transfer(y, 0_int64) == transfer(x, 0_int64)
     end function reads_back
 
-    !> Fixed notation of +-d(1).d(2:) 10^ex (-4 <= ex): trailing zeros of the fraction
-    !> dropped, then the point too unless `point_zero` (then ".0" stays, as in "100.0").
+    !> Append the digits of |ex| (< 1000), at least `least` of them ("05" for 5 and 2),
+    !> to s(1:n).
+    pure subroutine put_exponent(s, n, ex, least)
+        character(len=*), intent(inout) :: s
+        integer, intent(inout) :: n
+        integer, intent(in) :: ex, least
+        integer :: e
+        e = abs(ex)
+        if (e >= 100) then
+            s(n + 1:n + 1) = achar(48 + e / 100)
+            n = n + 1
+        end if
+        if (e >= 10 .or. least >= 2) then
+            s(n + 1:n + 1) = achar(48 + mod(e / 10, 10))
+            n = n + 1
+        end if
+        s(n + 1:n + 1) = achar(48 + mod(e, 10))
+        n = n + 1
+    end subroutine put_exponent
+
+    !> Fixed notation of +-d(1).d(2:) 10^ex (-4 <= ex <= 16): trailing zeros of the
+    !> fraction dropped, then the point too unless `point_zero` (then ".0" stays, as in
+    !> "100.0").
     pure function fixed_text(d, ex, neg, point_zero) result(s)
         character(len=*), intent(in) :: d
         integer, intent(in) :: ex
         logical, intent(in) :: neg, point_zero
-        character(len=:), allocatable :: s
-        character(len=:), allocatable :: ip, fp
-        integer :: k
+        character(len=NUM_LEN) :: s
+        integer :: n, k, nd
+        ! the significant digits without trailing zeros
+        nd = len(d)
+        do while (nd > 1)
+            if (d(nd:nd) /= '0') exit
+            nd = nd - 1
+        end do
+        s = ' '
+        n = 0
+        if (neg) then
+            s(1:1) = '-'
+            n = 1
+        end if
         if (ex >= 0) then
-            if (ex + 1 >= len(d)) then
-                ip = d//repeat('0', ex + 1 - len(d))
-                fp = ''
-            else
-                ip = d(1:ex + 1)
-                fp = d(ex + 2:)
+            ! integer part: d(1:ex+1), zero-filled; then the fraction d(ex+2:nd)
+            do k = 1, ex + 1
+                if (k <= nd) then
+                    s(n + k:n + k) = d(k:k)
+                else
+                    s(n + k:n + k) = '0'
+                end if
+            end do
+            n = n + ex + 1
+            if (nd > ex + 1) then
+                s(n + 1:n + 1 + nd - ex - 1) = '.'//d(ex + 2:nd)
+                n = n + 1 + nd - ex - 1
+            else if (point_zero) then
+                s(n + 1:n + 2) = '.0'
             end if
         else
-            ip = '0'
-            fp = repeat('0', -ex - 1)//d
+            s(n + 1:n + 2) = '0.'
+            n = n + 2
+            s(n + 1:n - ex - 1) = repeat('0', -ex - 1)
+            n = n - ex - 1
+            s(n + 1:n + nd) = d(1:nd)
         end if
-        k = len(fp)
-        do while (k > 0)
-            if (fp(k:k) /= '0') exit
-            k = k - 1
-        end do
-        if (k > 0) then
-            s = ip//'.'//fp(1:k)
-        else if (point_zero) then
-            s = ip//'.0'
-        else
-            s = ip
-        end if
-        if (neg) s = '-'//s
     end function fixed_text
 
     !> E notation of +-d(1).d(2:) 10^ex: trailing zeros dropped, at least two exponent
@@ -245,23 +386,28 @@ contains
         character(len=*), intent(in) :: d
         integer, intent(in) :: ex
         logical, intent(in) :: neg
-        character(len=:), allocatable :: s
-        character(len=8) :: eb
-        integer :: k
+        character(len=NUM_LEN) :: s
+        integer :: k, n
         k = len(d)
         do while (k > 1)
             if (d(k:k) /= '0') exit
             k = k - 1
         end do
-        if (k > 1) then
-            s = d(1:1)//'.'//d(2:k)
-        else
-            s = d(1:1)
+        s = ' '
+        n = 0
+        if (neg) then
+            s(1:1) = '-'
+            n = 1
         end if
-        write(eb, '(i2.2)') abs(ex)
-        if (abs(ex) >= 100) write(eb, '(i3)') abs(ex)
-        s = s//'e'//merge('-', '+', ex < 0)//trim(adjustl(eb))
-        if (neg) s = '-'//s
+        s(n + 1:n + 1) = d(1:1)
+        n = n + 1
+        if (k > 1) then
+            s(n + 1:n + k) = '.'//d(2:k)
+            n = n + k
+        end if
+        s(n + 1:n + 2) = 'e'//merge('-', '+', ex < 0)
+        n = n + 2
+        call put_exponent(s, n, ex, 2)
     end function sci_text
 
     !> 'text' for a message, cut to QUOTE_MAX bytes (at a UTF-8 character boundary)
