@@ -49,7 +49,7 @@ module driver_cylinder
     use driver_rocking_common, only: check_run_options, restitution_and_model, &
                                      locate_run_message, map_kind, map_template, progress_t, &
                                      axes_names, map_axes_code, map_grids, map_axes_header, &
-                                     map_table, run_summary_kinds
+                                     map_table, run_summary_kinds, map_class_names
     implicit none
     private
 
@@ -88,9 +88,6 @@ module driver_cylinder
         'time_limit']
     character(len=16), parameter :: diff_names(0:3) = [character(len=16) :: 'same', &
         'only_cylinder', 'only_block', 'other_mode']
-    !> Classes of a map cell (the codes of body_overturning_map).
-    character(len=24), parameter :: class_names(0:3) = [character(len=24) :: 'safe', &
-        'overturn_no_impact', 'overturn_one_impact', 'overturn_many_impacts']
 
     !> Most values of a list (pushover grid, map axes).
     integer, parameter :: max_list = 1000
@@ -1215,17 +1212,17 @@ contains
             call map_table(axes_code, xs, ys, s%body%p, s%body%theta_c, classes, table, &
                            classes_b, diff)
             call map_axes_header(axes_code, names, units, 'class_block')
-            kinds = [character(len=128) :: '', '', '', '', category_kind(class_names), &
-                     category_kind(class_names), category_kind(diff_names)]
+            kinds = [character(len=128) :: '', '', '', '', category_kind(map_class_names), &
+                     category_kind(map_class_names), category_kind(diff_names)]
         else
             call map_table(axes_code, xs, ys, s%body%p, s%body%theta_c, classes, table)
             call map_axes_header(axes_code, names, units)
-            kinds = [character(len=128) :: '', '', '', '', category_kind(class_names)]
+            kinds = [character(len=128) :: '', '', '', '', category_kind(map_class_names)]
         end if
         comments(1) = 'seispulse analysis cylinder: overturning map, '//pulse_kind_name(code) &
                       //' pulse family, '//trim(model)//' model (seispulse_cylinder)'
         comments(2) = body_line(s)
-        comments(3) = 'class: safe, or overturn_* by the impacts before overturning; ' &
+        comments(3) = 'class: safe, or overturns_* by the impacts before overturning; ' &
                       //'undecided: the step budget ran out'
         comments(4) = 'freq_ratio = omega_p/p = 2 pi freq_hz/p (T_p: t_d of the ' &
                       //'exponential pulse, the period of sine/cosine cycles, the length ' &

@@ -26,7 +26,7 @@ module driver_empirical
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, given, list_length, value_name, num, &
                             ROWS_FAILED
-    use driver_tables, only: write_tables, say_written
+    use driver_tables, only: write_tables, say_written, category_kind, status_names
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
                               record_line, failed_records
@@ -617,7 +617,7 @@ contains
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
         character(len=4096), allocatable :: comments(:)
-        character(len=16) :: names(NCOL + 1), col_units(NCOL + 1)
+        character(len=16) :: names(NCOL + 1), col_units(NCOL + 1), kinds(NCOL + 1)
         character(len=:), allocatable :: line
         integer :: c, nc
 
@@ -657,7 +657,7 @@ contains
                           //'per case)'
             comments(8) = 'newmark_exact, newmark_slammer: NaN (no records)'
         end if
-        comments(9) = 'status: 0 ok, 1 failed (NaN results; the reason is on stderr)'
+        comments(9) = 'status: ok, or failed (nan results; the reason is on stderr)'
         if (cfg%with_records) then
             comments(10) = 'records (index, file, format read, npts, dt (s), PGA as read ' &
                            //'(g), scale factor):'
@@ -671,8 +671,11 @@ contains
                  'p_zero', 'p_failure', 'kmax', 'newmark_exact', 'newmark_slammer', 'status']
         col_units = [character(len=16) :: '-', '-', 'g', 'g', 'cm/s', 'm/s', '-', 's', 'g', &
                      's', 'cm', '-', '-', 'cm', 'cm', '-', '-', 'g', 'cm', 'cm', '-']
+        kinds = ''
+        kinds(2) = 'int'
+        kinds(NCOL + 1) = category_kind(status_names)
         call write_tables(prefix, 'empirical', comments, names, col_units, table, files_out, &
-                          stat, errmsg, labels=labels)
+                          stat, errmsg, labels=labels, kinds=kinds)
     end subroutine write_result
 
 end module driver_empirical

@@ -29,7 +29,7 @@ module driver_newmark
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, &
                             list_length, list_item, value_name, num, name_index, ROWS_FAILED
-    use driver_tables, only: write_tables, say_written
+    use driver_tables, only: write_tables, say_written, category_kind, status_names
     use driver_slope, only: slope_keys, slope_defaults, read_slope, check_slope, echo_slope, &
                             slope_line
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
@@ -829,6 +829,9 @@ contains
         character(len=16), allocatable :: names(:), col_units(:)
         character(len=path_len), allocatable :: labels(:)
         character(len=:), allocatable :: line
+        character(len=64), allocatable :: kinds(:)
+        !> the names of the column converged: 0 no, 1 yes
+        character(len=3), parameter :: converged_names(0:1) = [character(len=3) :: 'no', 'yes']
         integer :: nblk, ir, nc, i
 
         nblk = size(cfg%blocks)
@@ -852,7 +855,7 @@ contains
         comments(5) = 'max: largest |u| over time; final: u when the block is at rest at ' &
                       //'the end (signed); ky_up = inf: no upslope sliding (mode ''down''); ' &
                       //'pga: after scaling'
-        comments(6) = 'status: 0 ok, 1 failed (NaN results; the reason is below and on ' &
+        comments(6) = 'status: ok, or failed (nan results; the reason is below and on ' &
                       //'stderr); exit status 1 when a row failed (2: an input error, no table)'
         comments(7) = 'records (index, file, format read, npts, dt (s), PGA as read (g), ' &
                       //'scale factor):'
@@ -908,11 +911,11 @@ contains
                          //'radiation) and period = 4 height / vs_final (s) of the final ' &
                          //'response, iterations (equivalent-linear; 0 for linear): the ' &
                          //'same for normal and inverse')
-                call add('converged: 1, or 0 when the equivalent-linear iteration stopped ' &
+                call add('converged: yes, or no when the equivalent-linear iteration stopped ' &
                          //'at max_iter: the results of its last iteration, a warning below ' &
                          //'and on stderr, status 0')
             end if
-            call add('status: 0 ok, 1 failed (NaN results; the reason is below and on ' &
+            call add('status: ok, or failed (nan results; the reason is below and on ' &
                      //'stderr); exit status 1 when a row failed (2: an input error, no table)')
             call add('records (index, file, format read, npts, dt (s), PGA as read (g), ' &
                      //'scale factor):')
@@ -946,9 +949,9 @@ contains
             end if
             names(k) = 'ky'
             col_units(k) = 'g'
-            names(k + 1:k + 10) = [character(len=16) :: 'ky_up', 'max_normal', 'max_normal', &
-                'final_normal', 'final_normal', 'max_inverse', 'max_inverse', &
-                'final_inverse', 'final_inverse', 'status']
+            names(k + 1:k + 10) = [character(len=16) :: 'ky_up', 'max_normal', 'max_normal_cm', &
+                'final_normal', 'final_normal_cm', 'max_inverse', 'max_inverse_cm', &
+                'final_inverse', 'final_inverse_cm', 'status']
             col_units(k + 1:k + 10) = [character(len=16) :: 'g', 'm', 'cm', 'm', 'cm', 'm', &
                 'cm', 'm', 'cm', '-']
             if (cfg%kind /= KIND_RIGID) then
@@ -957,12 +960,18 @@ contains
                 col_units(k + 10:k + 16) = [character(len=16) :: 'g', 'm/s', '-', 's', '-', &
                     '-', '-']
             end if
-            allocate(labels(size(table, 1)))
+            allocate(labels(size(table, 1)), kinds(size(names)))
             do ir = 1, size(outs)
                 labels((ir - 1) * nblk + 1:ir * nblk) = outs(ir)%name
             end do
+            kinds = ''
+            kinds(size(names)) = category_kind(status_names)
+            if (cfg%kind /= KIND_RIGID) then
+                kinds(k + 14) = 'int'                            ! iterations
+                kinds(k + 15) = category_kind(converged_names)  ! converged
+            end if
             call write_tables(prefix, 'newmark', text, names, col_units, table, files_out, &
-                              stat, errmsg, labels=labels)
+                              stat, errmsg, labels=labels, kinds=kinds)
         end subroutine write_columns
 
         subroutine add(text)

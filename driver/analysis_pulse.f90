@@ -1,7 +1,7 @@
 !> Analysis 'pulse': the time history t, a, v, d of any pulse of seispulse_pulses.
 !>
 !> Groups: &pulse (which pulse) and &time (where to sample it). Writes the table
-!> <output>_pulse.txt / .csv with columns t (s), a (m/s2), a (g), v (m/s), d (m).
+!> <output>_pulse.txt / .csv with columns t (s), a (m/s2), a_in_g (g), v (m/s), d (m).
 module driver_pulse
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
@@ -147,9 +147,9 @@ contains
         table(:, 3) = table(:, 2) / pin%g
         comments(1) = 'seispulse analysis pulse: '//pulse_kind_name(pin%code)
         comments(2) = 'input: '//trim(path)
-        comments(3) = 'a (g) uses g = '//real_str(pin%g)//' m/s2'
+        comments(3) = 'a_in_g: a in units of g = '//real_str(pin%g)//' m/s2'
         call write_tables(prefix, 'pulse', comments, &
-            [character(len=8) :: 't', 'a', 'a', 'v', 'd'], &
+            [character(len=8) :: 't', 'a', 'a_in_g', 'v', 'd'], &
             [character(len=8) :: 's', 'm/s2', 'g', 'm/s', 'm'], table, files, stat, errmsg)
         if (stat /= 0) then
             errmsg = path//': &run: output: '//errmsg

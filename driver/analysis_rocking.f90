@@ -27,10 +27,11 @@ module driver_rocking
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid, &
                                   warn_unused_template, template_text, not_one
-    use driver_tables, only: write_tables, say_written, code_legend
+    use driver_tables, only: write_tables, say_written, category_kind
     use driver_axis, only: axis_values
     use driver_rocking_common, only: check_run_options, restitution_and_model, &
-                                     locate_run_message, map_kind, map_template, progress_t
+                                     locate_run_message, map_kind, map_template, progress_t, &
+                                     map_class_names
     implicit none
     private
 
@@ -399,7 +400,7 @@ contains
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
         type(rocking_run_t) :: run
-        character(len=512) :: msg, files(2), comments(8)
+        character(len=512) :: msg, files(2), comments(7)
         real(dp) :: row(21), nan, f, eta, beta_cf, tau_up, tau_c, tau_m, psi_max, tau_i, td
         character(len=32) :: names(0:5)
         integer :: region, i, k
@@ -446,24 +447,23 @@ contains
                               psi_max, tau_i * td]
 
         call block_comments(pin, blk, comments(1:3))
-        comments(4) = code_legend('outcome', outcome_names)
-        comments(5) = 't_overturn: last outward crossing of |theta| = alpha before ' &
+        comments(4) = 't_overturn: last outward crossing of |theta| = alpha before ' &
                       //'overturning (theta_max = pi/2 then); t_impact1: first impact; ' &
                       //'t_end: rest, overturned (|theta| = pi/2) or the time limit'
-        comments(6) = 'psi = theta/alpha; NaN: no such event'
+        comments(5) = 'psi = theta/alpha; nan: no such event'
         do k = 0, 5
             names(k) = rocking_region_name(k)
         end do
-        comments(7) = code_legend('region', names)
+        comments(6) = 'region: the closed forms'' response region (nan without them)'
         if (cf) then
-            comments(8) = 'closed forms (_cf): linearized model (doc/rocking.md (2.4)-(2.35), ' &
+            comments(7) = 'closed forms (_cf): linearized model (doc/rocking.md (2.4)-(2.35), ' &
                           //'seispulse_rocking_closed), half-cycle exponential pulse, beta = ' &
                           //real_str(beta_cf)//', f = p t_d, eta = alpha/(A_g/g)'
         else
-            comments(8) = 'closed forms (_cf): NaN, they exist for the half-cycle ' &
+            comments(7) = 'closed forms (_cf): nan, they exist for the half-cycle ' &
                           //'exponential pulse (also rectangular, symmetric triangular) ' &
                           //'with amp > 0 only'
-            if (abs(kv) > 0.0_dp) comments(8) = 'closed forms (_cf): NaN, they have no ' &
+            if (abs(kv) > 0.0_dp) comments(7) = 'closed forms (_cf): nan, they have no ' &
                                                //'vertical ground acceleration (kv = 0 only)'
         end if
         call write_tables(prefix, 'rocking', comments, &
@@ -473,7 +473,9 @@ contains
              't_i_cf'], &
             [character(len=6) :: 'rad', 'rad/s', '-', '-', '-', '-', 's', 's', '-', 's', &
              'rad', 'rad', '-', '-', 's', '-', 's', 's', 's', '-', 's'], &
-            reshape(row, [1, size(row)]), files, stat, errmsg)
+            reshape(row, [1, size(row)]), files, stat, errmsg, &
+            kinds=[character(len=256) :: '', '', '', '', '', category_kind(outcome_names), &
+                   '', '', 'int', '', '', '', '', '', '', category_kind(names)], summary=.true.)
         if (stat /= 0) then
             errmsg = path//': &run: output: '//errmsg
             return
@@ -556,7 +558,7 @@ contains
                       //real_str(run%theta_min)//' rad, t_end = '//real_str(run%t_end)//' s'
         comments(5) = 'theta: rotation (rad; > 0 about one corner, < 0 about the other), ' &
                       //'omega = dtheta/dt (rad/s)'
-        comments(6) = 'overturned: theta = +-pi/2 and omega = 0 after t_end; NaN after a ' &
+        comments(6) = 'overturned: theta = +-pi/2 and omega = 0 after t_end; nan after a ' &
                       //'time limit'
         comments(7) = 'input: '//trim(path)
         call write_tables(prefix, 'rocking_history', comments, &
@@ -664,8 +666,8 @@ contains
         end do
         comments(1) = 'seispulse analysis rocking: overturning map, '//pulse_kind_name(code) &
                       //' pulse family, '//trim(model)//' model (seispulse_rocking_sim)'
-        comments(2) = 'class: 0 safe, 1 overturns without impact, 2 overturns after one ' &
-                      //'impact, 3 after more impacts, -1 undecided (step budget)'
+        comments(2) = 'class: safe, overturns without impact, after one impact, after more ' &
+                      //'impacts, or undecided (the step budget ran out)'
         comments(3) = 'freq_ratio = omega_p/p, omega_p = 2 pi/T_p (T_p: t_d of the ' &
                       //'exponential pulse, the period of sine/cosine cycles, the length ' &
                       //'of the others; Ricker: omega_p = 2 pi f_p)'
@@ -678,7 +680,8 @@ contains
         comments(7) = 'input: '//trim(path)
         call write_tables(prefix, 'rocking_map', comments, &
             [character(len=12) :: 'freq_ratio', 'amp_ratio', 'class'], &
-            [character(len=4) :: '-', '-', '-'], table, files, stat, errmsg)
+            [character(len=4) :: '-', '-', '-'], table, files, stat, errmsg, &
+            kinds=[character(len=256) :: '', '', category_kind(map_class_names)])
         if (stat /= 0) then
             errmsg = path//': &run: output: '//errmsg
             return

@@ -26,7 +26,8 @@ module driver_sdof
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, given, list_item, &
                             name_index, num, ROWS_FAILED
-    use driver_tables, only: write_tables, delete_files, say_written
+    use driver_tables, only: write_tables, delete_files, say_written, category_kind, &
+                             status_names
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
                               records_missing, record_line, failed_records
@@ -615,6 +616,7 @@ contains
         character(len=4096) :: head(4)
         character(len=8), allocatable :: names(:), col_units(:)
         character(len=label_len(outs)), allocatable :: labels(:)
+        character(len=16), allocatable :: kinds(:)
         real(dp), allocatable :: table(:, :)
         real(dp) :: nan
         integer :: np, nd, nrec, ncol, ir, j, i, row
@@ -654,7 +656,7 @@ contains
         head(3) = 'T = 0: the ground itself (SD = SV = PSV = 0, SA = PSA = the PGA after ' &
                   //'scaling)'
         if (cfg%shape) head(3) = trim(head(3))//'; PSA/PGA: the normalized spectral shape'
-        head(4) = 'status: 0 ok, 1 failed (NaN results; the reason is below and on ' &
+        head(4) = 'status: ok, or failed (nan results; the reason is below and on ' &
                   //'stderr); exit status 1 when a record failed (2: an input error, no table)'
         call record_comments(path, 'response spectra of the linear oscillator on ' &
                              //'accelerograms, one row per record, damping ratio and period', &
@@ -669,8 +671,11 @@ contains
         end if
         names(ncol + 1) = 'status'
         col_units(ncol + 1) = '-'
+        allocate(kinds(ncol + 1))
+        kinds = ''
+        kinds(ncol + 1) = category_kind(status_names)
         call write_tables(prefix, 'sdof', comments, names, col_units, table, files_out, &
-                          stat, errmsg, labels=labels)
+                          stat, errmsg, labels=labels, kinds=kinds)
     end subroutine write_spectra
 
     !> The envelope table: one row per damping and period, over the records computed.
@@ -810,7 +815,7 @@ contains
                   //'and velocity of the mass relative to the ground; a_abs = a_g + z'''': ' &
                   //'absolute acceleration of the mass; T = 0: the ground (z = z'' = 0, ' &
                   //'a_abs = a_g)'
-        head(3) = 'status: 0 ok, 1 failed (one row of NaN per damping and period; the ' &
+        head(3) = 'status: ok, or failed (one row of nan per damping and period; the ' &
                   //'reason is below and on stderr)'
         call record_comments(path, 'response histories of the linear oscillator on ' &
                              //'accelerograms, one block of rows per record, damping ratio ' &
@@ -819,7 +824,8 @@ contains
             [character(len=8) :: 'record', 'damping', 'T', 't', 'a_g', 'z', 'z''', 'a_abs', &
              'status'], &
             [character(len=8) :: '-', '-', 's', 's', 'g', 'm', 'm/s', 'g', '-'], table, &
-            files_out, stat, errmsg, labels=labels)
+            files_out, stat, errmsg, labels=labels, kinds=[character(len=16) :: '', '', '', '', &
+            '', '', '', '', category_kind(status_names)])
     end subroutine write_history
 
     !> Length of the longest record name (the label column).

@@ -21,7 +21,7 @@ module driver_sliding
                             list_item
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid
-    use driver_tables, only: write_tables, delete_files, say_written, code_legend
+    use driver_tables, only: write_tables, delete_files, say_written, category_kind
     implicit none
     private
 
@@ -223,7 +223,8 @@ contains
                  'u, u'': slip and sliding velocity of the block relative to the plane ' &
                  //'(positive forward/downhill)'], &
                 [character(len=8) :: 'case', 't', 'a_g', 'u', 'u'''], &
-                [character(len=8) :: '-', 's', 'm/s2', 'm', 'm/s'], hist, hfiles, stat, errmsg)
+                [character(len=8) :: '-', 's', 'm/s2', 'm', 'm/s'], hist, hfiles, stat, errmsg, &
+                kinds=[character(len=4) :: 'int', '', '', '', ''])
             if (stat /= 0) then
                 call delete_files(files)
                 errmsg = path//': &run: output: '//errmsg
@@ -667,8 +668,8 @@ contains
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
         real(dp), allocatable :: table(:, :)
-        character(len=512) :: comments(7)
-        character(len=:), allocatable :: legend, slips
+        character(len=512) :: comments(6)
+        character(len=:), allocatable :: slips
         character(len=32) :: names(0:5)
         integer :: i, m
 
@@ -682,7 +683,6 @@ contains
         do m = 0, 5
             names(m) = sliding_mode_name(m)
         end do
-        legend = code_legend('mode', names)
         if (input_mode == INPUT_MU .and. along_plane) then
             slips = 'slips and velocities along the plane (times the factors K of ' &
                     //'doc/sliding.md section 7)'
@@ -697,20 +697,20 @@ contains
                           //' pulse, event-driven integrator (seispulse_sliding_sim)'
         end if
         comments(2) = 'input: '//trim(path)
-        comments(3) = legend
-        comments(4) = '1 = first forward (downhill) slide, 2 = first reverse (uphill) ' &
+        comments(3) = '1 = first forward (downhill) slide, 2 = first reverse (uphill) ' &
                       //'slide; times from the start of the pulse; NaN: no such slide'
-        comments(5) = 'eta1, eta2 = a_y/A_g forward, reverse (NaN: no acceleration ' &
+        comments(4) = 'eta1, eta2 = a_y/A_g forward, reverse (NaN: no acceleration ' &
                       //'amplitude); mu = NaN: eta given directly'
-        comments(6) = slips//'; u_res: residual slip, forward positive'
-        comments(7) = 'g = '//real_str(pin%g)//' m/s2, slope_deg = '//real_str(slope_deg) &
+        comments(5) = slips//'; u_res: residual slip, forward positive'
+        comments(6) = 'g = '//real_str(pin%g)//' m/s2, slope_deg = '//real_str(slope_deg) &
                       //', xi_deg = '//real_str(xi_deg)//', static_factor = ' &
                       //real_str(static_factor)
         call write_tables(prefix, 'sliding', comments, &
             [character(len=8) :: 'case', 'mu', 'eta1', 'eta2', 'mode', 't_y1', 't_m1', 'u_m1', &
              't_y2', 't_m2', 'u_m2', 'u_res', 'v_m1', 'v_m2'], &
             [character(len=4) :: '-', '-', '-', '-', '-', 's', 's', 'm', 's', 's', 'm', 'm', &
-             'm/s', 'm/s'], table, files, stat, errmsg)
+             'm/s', 'm/s'], table, files, stat, errmsg, &
+            kinds=[character(len=256) :: 'int', '', '', '', category_kind(names)], summary=.true.)
     end subroutine write_result
 
 end module driver_sliding

@@ -12,7 +12,7 @@ module driver_intensity_table
     use seispulse, only: dp, SEISPULSE_SUCCESS, intensity_t, record_intensity, &
                          spectral_acceleration, sdof_validate
     use driver_input, only: list_length, value_name, num
-    use driver_tables, only: write_tables, say_written
+    use driver_tables, only: write_tables, say_written, category_kind, status_names
     use driver_records, only: record_in_t, record_out_t, record_line, report, path_len
     implicit none
     private
@@ -151,7 +151,7 @@ contains
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
         character(len=4096), allocatable :: comments(:)
-        character(len=24), allocatable :: names(:), col_units(:)
+        character(len=24), allocatable :: names(:), col_units(:), kinds(:)
         character(len=path_len), allocatable :: labels(:)
         character(len=512) :: files_out(2)
         character(len=:), allocatable :: line
@@ -171,8 +171,8 @@ contains
         comments(4) = 'arias = pi/(2g) int a^2 dt; cav = int |a| dt; d5_75, d5_95 from the ' &
                       //'Husid curve (NaN without energy); tm: mean period, 0.25-20 Hz'
         line = 'sa_T=...: pseudo-spectral acceleration (2 pi/T)^2 SD/g, damping ' &
-               //num(SA_DAMPING)//'; status: 0 ok, 1 failed (NaN results)'
-        if (np == 0) line = 'no sa_periods; status: 0 ok, 1 failed (NaN results)'
+               //num(SA_DAMPING)//'; status: ok, or failed (nan results)'
+        if (np == 0) line = 'no sa_periods; status: ok, or failed (nan results)'
         comments(5) = line
         comments(6) = 'records (index, file, format read, npts, dt (s), PGA as read (g), ' &
                       //'scale factor):'
@@ -197,8 +197,11 @@ contains
         do ir = 1, size(outs)
             labels(ir) = outs(ir)%name
         end do
+        allocate(kinds(n_measures + np + 2))
+        kinds = ''
+        kinds(n_measures + np + 2) = category_kind(status_names)
         call write_tables(prefix, 'intensity', comments, names, col_units, itab%table, &
-                          files_out, stat, errmsg, labels=labels)
+                          files_out, stat, errmsg, labels=labels, kinds=kinds)
         if (stat /= 0) return
         call say_written('intensity table', files_out)
     end subroutine intensity_write

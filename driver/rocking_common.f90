@@ -18,10 +18,16 @@ module driver_rocking_common
     public :: map_kind, map_template, progress_t
     public :: axes_names, map_axes_code, map_grids, map_axes_header, map_table
     public :: run_summary_kinds
+    public :: map_class_names
 
     character(len=10), parameter :: model_names(2) = [character(len=10) :: 'nonlinear', &
         'linearized']
     !> The axis systems of a map, in the order of the MAP_AXES_* codes.
+    !> The classes of an overturning map cell, by code (-1: undecided, the step budget
+    !> ran out).
+    character(len=28), parameter :: map_class_names(0:3) = [character(len=28) :: 'safe', &
+        'overturns_without_impact', 'overturns_after_one_impact', &
+        'overturns_after_more_impacts']
     character(len=13), parameter :: axes_names(2) = [character(len=13) :: 'dimensionless', &
         'dimensional']
 

@@ -17,7 +17,10 @@ module driver_tables
 
     public :: write_tables, column_len, delete_files, say_written, code_legend, stack
     public :: write_table_pair, category_kind, table_path, commit_outputs, discard_outputs
-    public :: open_output
+    public :: open_output, status_names
+
+    !> The names of a row status column: 0 ok, 1 failed (category_kind(status_names)).
+    character(len=6), parameter :: status_names(0:1) = [character(len=6) :: 'ok', 'failed']
 
     !> Width of a text column: a blank, then es24.16e3 (a negative number fills all 24).
     integer, parameter :: column_len = 25

@@ -811,8 +811,8 @@ def map_class(alpha, fr, a):
     return 1 if eta < wall else 0
 
 
-CYLINDER_MAP_CLASSES = ("safe", "overturn_no_impact", "overturn_one_impact",
-                        "overturn_many_impacts")
+CYLINDER_MAP_CLASSES = ("safe", "overturns_without_impact", "overturns_after_one_impact",
+                        "overturns_after_more_impacts")
 CYLINDER_MAP_DIFF = ("same", "only_cylinder", "only_block", "other_mode")
 
 
