@@ -38,15 +38,16 @@ module driver_tables
     integer :: npending = 0
 
     interface
-        ! C rename() and remove() (stdio): 0 on success.
+        ! C rename() (stdio): 0 on success.
         integer(c_int) function c_rename(old, new) bind(c, name='rename')
             import :: c_int, c_char
             character(kind=c_char), intent(in) :: old(*), new(*)
         end function c_rename
-        integer(c_int) function c_remove(path) bind(c, name='remove')
+        ! POSIX unlink(): a file only (never a directory)
+        integer(c_int) function c_unlink(path) bind(c, name='unlink')
             import :: c_int, c_char
             character(kind=c_char), intent(in) :: path(*)
-        end function c_remove
+        end function c_unlink
     end interface
 
 contains
@@ -150,7 +151,7 @@ contains
 
     !> Rename every <path>.part of this run to <path> (the end of a run without an input
     !> error). stat /= 0 with errmsg naming the first file that could not be renamed (the
-    !> others are still renamed).
+    !> others are still renamed, and all stay registered for discard_outputs).
     subroutine commit_outputs(stat, errmsg)
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
@@ -165,7 +166,7 @@ contains
                 stat = 1
             end if
         end do
-        npending = 0
+        if (stat == 0) npending = 0
     end subroutine commit_outputs
 
     !> After an input error: delete every <path>.part of this run, and the files an
@@ -187,11 +188,11 @@ contains
         call remove_file(table_path(prefix, 'input', 'nml'))
     end subroutine discard_outputs
 
-    !> Delete a file if it exists (no error otherwise).
+    !> Delete a file if it exists (no error otherwise; a directory stays).
     subroutine remove_file(path)
         character(len=*), intent(in) :: path
         integer(c_int) :: rc
-        rc = c_remove(path//c_null_char)
+        rc = c_unlink(path//c_null_char)
     end subroutine remove_file
 
     !> Forget a registered output and delete its .part (and the final file, if any).

@@ -1,4 +1,4 @@
-"""Helpers shared by the driver tests of the analyses: read a CSV
+"""Helpers shared by the driver tests of the sliding and rocking analyses: read a CSV
 table the driver wrote, run an example input file of input/."""
 import csv
 import subprocess
@@ -8,14 +8,20 @@ import numpy as np
 
 def read_table(path):
     """{column name: array} of a CSV table of the driver (names without units): a column
-    of numbers as floats, a column of double-quoted cells (labels, category names) as
-    str."""
+    with a quoted cell (a category such as an outcome, written as its name) is an array
+    of str, any other an array of float."""
     with open(path, newline="") as f:
-        names = [h.rsplit(" (", 1)[0] for h in next(csv.reader(f))]
+        header = next(csv.reader(f))
         rows = list(csv.reader(f, quoting=csv.QUOTE_NONNUMERIC))
-    cols = [[row[j] for row in rows] for j in range(len(names))]
-    return {n: np.array(c, dtype=str if any(isinstance(x, str) for x in c) else float)
-            for n, c in zip(names, cols)}
+    names = [h.rsplit(" (", 1)[0] for h in header]
+    table = {}
+    for j, n in enumerate(names):
+        cells = [row[j] for row in rows]
+        if any(isinstance(c, str) for c in cells):
+            table[n] = np.array([str(c) for c in cells], dtype=object)
+        else:
+            table[n] = np.array(cells, dtype=float)
+    return table
 
 
 def run_example(driver, source_root, tmp_path, name):
@@ -23,3 +29,24 @@ def run_example(driver, source_root, tmp_path, name):
                           capture_output=True, text=True, timeout=120)
     assert proc.returncode == 0, proc.stderr
     return proc
+
+
+def g_text(x, digits=6):
+    """A cell as the driver's text table writes it: a name as is, a number as C's
+    %.<digits>g (Python's % operator is C's), an integer-valued count as an integer."""
+    if isinstance(x, str):
+        return x
+    return "%.*g" % (digits, x)
+
+
+def read_summary_txt(path):
+    """{name: (value text, unit)} of a one-row summary's text table (`name  value  unit`
+    lines after the # comments)."""
+    out = {}
+    for line in open(path).read().splitlines():
+        if line.startswith("#") or not line.strip():
+            continue
+        name, rest = line.split(None, 1)
+        value, unit = rest.split(None, 1) if " " in rest.strip() else (rest.strip(), "")
+        out[name] = (value, unit.strip())
+    return out

@@ -120,10 +120,39 @@ sys.path.insert(0, str(HERE.parent / "python"))
 import pulse_reference as ref  # noqa: E402
 from mpmath import mp, mpf  # noqa: E402
 
-HEADER = "t (s),a (m/s2),a (g),v (m/s),d (m)"
+HEADER = "t (s),a (m/s2),a_in_g (g),v (m/s),d (m)"
 SLIDING_HEADER = ("case (-),mu (-),eta1 (-),eta2 (-),mode (-),t_y1 (s),t_m1 (s),u_m1 (m),"
                   "t_y2 (s),t_m2 (s),u_m2 (m),u_res (m),v_m1 (m/s),v_m2 (m/s)")
 MODES = ("no_sliding", "unilateral", "stick", "slip", "stuck", "reverse_only")
+# The names the driver writes in its category columns (code k: names[k]; -1: undecided)
+ROCK_OUTCOMES = ("rest", "no_uplift", "overturn_no_impact", "overturn_one_impact",
+                 "overturn_many_impacts", "time_limit")
+ROCK_REGIONS = ("no_rocking", "O1", "O2", "O3", "S1", "S2")
+MAP_CLASSES = ("safe", "overturns_without_impact", "overturns_after_one_impact",
+               "overturns_after_more_impacts")
+STATUS = ("ok", "failed")
+CATEGORIES = {"mode (-)": MODES, "outcome (-)": ROCK_OUTCOMES, "region (-)": ROCK_REGIONS,
+              "class (-)": MAP_CLASSES, "status (-)": STATUS, "converged (-)": ("no", "yes")}
+
+
+def named(header, rows, categories=CATEGORIES):
+    """rows with the code of each category column (by its header cell) as its name,
+    as the driver writes it: code k -> names[k], -1 -> 'undecided', NaN -> 'nan'."""
+    cols = {j: categories[h] for j, h in enumerate(header.split(",")) if h in categories}
+    out = []
+    for row in rows:
+        row = list(row)
+        for j, names in cols.items():
+            x = row[j]
+            if isinstance(x, str):
+                continue
+            if mp.isnan(x):
+                row[j] = "nan"
+            else:
+                k = int(x)
+                row[j] = "undecided" if k == -1 else names[k]
+        out.append(row)
+    return out
 
 _TOKEN = re.compile(r"""
     \s*(?:
@@ -368,8 +397,8 @@ def sliding_rows(nml):
 
 def make_sliding_ref(nml_path, nml):
     with mp.workdps(40):
-        rows = sliding_rows(nml)
-        lines = [SLIDING_HEADER] + [",".join(repr(float(x)) for x in row) for row in rows]
+        rows = named(SLIDING_HEADER, sliding_rows(nml))
+        lines = [SLIDING_HEADER] + [",".join(csv_cell(x) for x in row) for row in rows]
     out = Path(nml_path).with_suffix(".ref")
     out.write_text("\n".join(lines) + "\n")
     print(f"wrote {out} ({len(lines) - 1} rows)")
@@ -542,7 +571,8 @@ def make_rocking_ref(nml_path, nml):
             header, rows = ROCKING_HISTORY_HEADER, rocking_history_rows(nml)
         else:
             header, rows = ROCKING_MAP_HEADER, rocking_map_rows(nml)
-        lines = [header] + [",".join(repr(float(x)) for x in row) for row in rows]
+        rows = named(header, rows)
+        lines = [header] + [",".join(csv_cell(x) for x in row) for row in rows]
     out = Path(nml_path).with_suffix(".ref")
     out.write_text("\n".join(lines) + "\n")
     print(f"wrote {out} ({len(lines) - 1} rows)")
@@ -811,8 +841,6 @@ def map_class(alpha, fr, a):
     return 1 if eta < wall else 0
 
 
-CYLINDER_MAP_CLASSES = ("safe", "overturns_without_impact", "overturns_after_one_impact",
-                        "overturns_after_more_impacts")
 CYLINDER_MAP_DIFF = ("same", "only_cylinder", "only_block", "other_mode")
 
 
@@ -846,7 +874,7 @@ def cylinder_map_rows(nml, bd):
                 fr, ar = x, y
                 row = [x, y, x * bd["p"] / (2 * mp.pi), y * bd["tan_c"]]
             cls = map_class(bd["theta_c"], fr, ar)
-            row.append(CYLINDER_MAP_CLASSES[cls])
+            row.append(MAP_CLASSES[cls])
             if compare:
                 if dimensional:
                     frb, arb = 2 * mp.pi * x / eq["p"], y / eq["tan_c"]
@@ -861,7 +889,7 @@ def cylinder_map_rows(nml, bd):
                     diff = 2
                 else:
                     diff = 3
-                row += [CYLINDER_MAP_CLASSES[clb], CYLINDER_MAP_DIFF[diff]]
+                row += [MAP_CLASSES[clb], CYLINDER_MAP_DIFF[diff]]
             rows.append(row)
     header = (("freq_hz (Hz),pga (g),freq_ratio (-),amp_ratio (-)" if dimensional else
                "freq_ratio (-),amp_ratio (-),freq_hz (Hz),pga (g)") + ",class (-)"
@@ -1031,7 +1059,7 @@ def newmark_header(with_mu):
     cols += ["ky (g)", "ky_up (g)"]
     for which in ("normal", "inverse"):
         for what in ("max", "final"):
-            cols += [f"{what}_{which} (m)", f"{what}_{which} (cm)"]
+            cols += [f"{what}_{which} (m)", f"{what}_{which}_cm (cm)"]
     return ",".join(cols + ["status (-)"])
 
 
@@ -1234,6 +1262,7 @@ def make_newmark_ref(nml_path, nml):
     for suffix, table_rows in tables:
         with mp.workdps(40):
             header, rows = table_rows(nml_path, nml)
+            rows = named(header, rows)
             lines = [header] + [",".join(csv_cell(x) for x in row) for row in rows]
         out = Path(nml_path).with_suffix(suffix)
         out.write_text("\n".join(lines) + "\n")
@@ -1611,6 +1640,7 @@ def make_sdof_ref(nml_path, nml, analysis):
             header, rows = sdof_beta_rows(nml)
         else:
             header, rows = sdof_shock_rows(nml)
+        rows = named(header, rows)
         lines = [header] + [",".join(csv_cell(x) for x in row) for row in rows]
     out = Path(nml_path).with_suffix(".ref")
     out.write_text("\n".join(lines) + "\n")
@@ -2353,7 +2383,7 @@ def empirical_rows(nml_path, nml):
 
 def make_empirical_ref(nml_path, nml):
     with mp.workdps(40):
-        rows = empirical_rows(nml_path, nml)
+        rows = named(EMP_HEADER, empirical_rows(nml_path, nml))
         lines = [EMP_HEADER] + [",".join(csv_cell(x) for x in row) for row in rows]
     out = Path(nml_path).with_suffix(".ref")
     out.write_text("\n".join(lines) + "\n")
