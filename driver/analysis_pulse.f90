@@ -147,7 +147,7 @@ contains
         table(:, 3) = table(:, 2) / pin%g
         comments(1) = 'seispulse analysis pulse: '//pulse_kind_name(pin%code)
         comments(2) = 'input: '//trim(path)
-        comments(3) = 'a_in_g: a in units of g = '//real_str(pin%g)//' m/s2'
+        comments(3) = 'a_in_g = a/g, g = '//real_str(pin%g)//' m/s2'
         call write_tables(prefix, 'pulse', comments, &
             [character(len=8) :: 't', 'a', 'a_in_g', 'v', 'd'], &
             [character(len=8) :: 's', 'm/s2', 'g', 'm/s', 'm'], table, files, stat, errmsg)

@@ -398,21 +398,20 @@ contains
         end function cat_text
 
         !> The header lines and the rows of the .txt: columns right-aligned to their
-        !> width (a text column left-adjusted), one blank between columns.
+        !> width (a text column left-adjusted), each after a blank; the header lines
+        !> (names, then (units)) start with '#' in place of the first blank.
         subroutine write_text_table(cells)
             character(len=*), intent(in) :: cells(:, :)
             integer :: n
-            n = sum(width) + ncol + 1
+            n = sum(width) + ncol
             allocate(character(len=n) :: line)
             if (stat /= 0) return
-            ! names, then (units), each line starting with '#'
             call header_line(names, .false.)
             if (stat /= 0) return
             call header_line(units, .true.)
             do i = 1, nrow
                 if (stat /= 0) return
-                pos = 1
-                line(1:1) = ' '
+                pos = 0
                 if (present(labels)) call left(labels(i), width(1))
                 do j = 1, ndat
                     call right(cell_of(cells, i, j), width(j + j0 - 1))
@@ -425,8 +424,7 @@ contains
             character(len=*), intent(in) :: words(:)
             logical, intent(in) :: in_parens
             integer :: k
-            pos = 1
-            line(1:1) = '#'
+            pos = 0
             do k = 1, ncol
                 if (in_parens) then
                     head = '('//trim(words(k))//')'
@@ -439,6 +437,7 @@ contains
                     call right(head, width(k))
                 end if
             end do
+            line(1:1) = '#'
             write(ut, '(a)', iostat=stat, iomsg=iomsg) line(1:pos)
         end subroutine header_line
 

@@ -23,6 +23,7 @@ program tester
     use test_winkler_rock, only: collect_winkler_rock
     use test_records, only: collect_records
     use test_number_reader, only: collect_number_reader
+    use test_format, only: collect_format
     use test_newmark, only: collect_newmark
     use test_flexible, only: collect_flexible
     use test_flexible_exact, only: collect_flexible_exact
@@ -53,6 +54,10 @@ program tester
     if (selected('roots')) then
         call collect_roots(tests)
         call run_suite('roots', tests, output_unit, npass, nfail)
+    end if
+    if (selected('format')) then
+        call collect_format(tests)
+        call run_suite('format', tests, output_unit, npass, nfail)
     end if
     if (selected('fft')) then
         call collect_fft(tests)

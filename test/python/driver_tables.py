@@ -50,3 +50,23 @@ def read_summary_txt(path):
         value, unit = rest.split(None, 1) if " " in rest.strip() else (rest.strip(), "")
         out[name] = (value, unit.strip())
     return out
+
+
+#: The names of the driver's category columns by header cell, in code order (code k is
+#: names[k]).
+CATEGORY_NAMES = {"status (-)": ("ok", "failed"), "converged (-)": ("no", "yes")}
+
+
+def coded(header, rows, first=1):
+    """rows[:, first:] as numbers, the category cells (names, asserted to be the names
+    of their column) as their codes."""
+    out = []
+    for row in rows:
+        cells = []
+        for h, x in zip(header[first:], row[first:]):
+            if h in CATEGORY_NAMES:
+                assert x in CATEGORY_NAMES[h], (h, x)
+                x = float(CATEGORY_NAMES[h].index(x))
+            cells.append(x)
+        out.append(cells)
+    return np.array(out, dtype=float, ndmin=2)

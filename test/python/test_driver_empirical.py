@@ -25,12 +25,13 @@ def run(driver, cwd, text, name="case.nml"):
 
 
 def read_rows(path):
-    """[{column name (no unit): value}] of the driver's CSV (model names as str)."""
+    """[{column name (no unit): value}] of the driver's CSV (model names and the status,
+    "ok" or "failed", as str)."""
     with open(path, newline="") as f:
         rows = list(csv.reader(f))
     names = [h.rsplit(" (", 1)[0] for h in rows[0]]
-    return [{n: (x if j == 0 else float(x)) for j, (n, x) in enumerate(zip(names, row))}
-            for row in rows[1:]]
+    return [{n: (x if n in ("model", "status") else float(x))
+             for n, x in zip(names, row)} for row in rows[1:]]
 
 
 def api(row, slammer=False):
@@ -77,14 +78,14 @@ def check_rows_against_api(rows, slammer=False):
             assert math.isnan(row["p_zero"])
         if row["model"].startswith("rathje_antonakos"):
             assert row["kmax"] == pytest.approx(r.kmax, rel=1e-15)
-        assert row["status"] == 0.0
+        assert row["status"] == "ok"
 
 
 def test_example_input(driver, source_root, tmp_path):
     proc = subprocess.run([driver, str(source_root / "input" / "empirical.nml")],
                           cwd=tmp_path, capture_output=True, text=True, timeout=120)
     assert proc.returncode == 0, proc.stderr
-    rows = read_rows(tmp_path / "out" / "empirical_empirical.csv")
+    rows = read_rows(tmp_path / "out" / "empirical.csv")
     assert len(rows) == 3 * 14          # every model has its inputs
     check_rows_against_api(rows)
     # the numbers the input's comment states, at ky = 0.1 g
@@ -161,7 +162,7 @@ def test_models_by_inputs_and_ky_above_pga(driver, tmp_path):
                                                "saygili_rathje_2008_pga"]
     assert len(rows) == 6
     above = rows[3:]
-    assert all(r["disp"] == 0.0 and math.isnan(r["sigma"]) and r["status"] == 0.0
+    assert all(r["disp"] == 0.0 and math.isnan(r["sigma"]) and r["status"] == "ok"
                for r in above)
 
 
@@ -176,8 +177,8 @@ def test_bad_record_fails_its_rows(driver, tmp_path):
     rows = read_rows(tmp_path / "out" / "f_empirical.csv")
     good = [r for r in rows if r["case"] == 1]
     bad = [r for r in rows if r["case"] == 2]
-    assert good and all(r["status"] == 0.0 for r in good)
-    assert bad and all(r["status"] == 1.0 and math.isnan(r["disp"]) for r in bad)
+    assert good and all(r["status"] == "ok" for r in good)
+    assert bad and all(r["status"] == "failed" and math.isnan(r["disp"]) for r in bad)
     assert len(good) == len(bad)
 
 
@@ -229,7 +230,7 @@ def test_record_without_energy_gives_no_sliding(driver, tmp_path):
     assert len(zero) == len(good) == 14
     assert [r["model"] for r in zero] == [r["model"] for r in good]
     assert all(r["disp"] == 0.0 and r["d16"] == 0.0 and r["d84"] == 0.0
-               and r["p_failure"] == 0.0 and r["status"] == 0.0 for r in zero)
+               and r["p_failure"] == 0.0 and r["status"] == "ok" for r in zero)
     assert [r["p_zero"] for r in zero if r["model"] == "bray_travasarou_2007"] == [1.0]
     assert all(r["pga"] == 0.0 and r["arias"] == 0.0 and math.isnan(r["tm"]) for r in zero)
     check_rows_against_api(good)
@@ -237,7 +238,7 @@ def test_record_without_energy_gives_no_sliding(driver, tmp_path):
 
 def test_tm_nan_fails_unified_rows_and_names_the_record(driver, tmp_path):
     """A record with energy but no Fourier amplitude at 0.25-20 Hz (dt = 3 s: Tm NaN)
-    keeps its unified-model rows, failed (status 1, NaN) with a message naming tm, next to
+    keeps its unified-model rows, failed (status failed, NaN) with a message naming tm, next to
     the other models' results; the summary names that record, and only it."""
     shutil.copytree(RECORDS, tmp_path / "records")
     _write_record(tmp_path / "records" / "slow.csv", [0.0, 0.2, -0.1, 0.15, 0.0], dt=3.0)
@@ -250,7 +251,7 @@ def test_tm_nan_fails_unified_rows_and_names_the_record(driver, tmp_path):
     slow = [r for r in rows if r["case"] == 2]
     assert len(slow) == 14 and math.isnan(slow[0]["tm"]) and slow[0]["pga"] == 0.2
     ra = [r for r in slow if r["model"].startswith("rathje_antonakos_2011")]
-    assert len(ra) == 2 and all(r["status"] == 1.0 and math.isnan(r["disp"]) for r in ra)
+    assert len(ra) == 2 and all(r["status"] == "failed" and math.isnan(r["disp"]) for r in ra)
     check_rows_against_api([r for r in slow if not r["model"].startswith("rathje_antonakos")])
     assert "rathje_antonakos_2011_m, ky = 0.05: tm = NaN" in proc.stderr
     last = proc.stderr.strip().splitlines()[-1]

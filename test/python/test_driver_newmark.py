@@ -14,13 +14,14 @@ import numpy as np
 import pytest
 
 from seispulse import newmark, records
+from driver_tables import coded, g_text
 
 HERE = Path(__file__).resolve().parent
 RECORDS = HERE.parent / "regression" / "records"
 
-NUMERIC = ["pga (g)", "scale (-)", "ky (g)", "ky_up (g)", "max_normal (m)", "max_normal (cm)",
-           "final_normal (m)", "final_normal (cm)", "max_inverse (m)", "max_inverse (cm)",
-           "final_inverse (m)", "final_inverse (cm)", "status (-)"]
+NUMERIC = ["pga (g)", "scale (-)", "ky (g)", "ky_up (g)", "max_normal (m)",
+           "max_normal_cm (cm)", "final_normal (m)", "final_normal_cm (cm)", "max_inverse (m)",
+           "max_inverse_cm (cm)", "final_inverse (m)", "final_inverse_cm (cm)", "status (-)"]
 HEADER = ["record (-)"] + NUMERIC
 RESULTS = NUMERIC[4:12]
 
@@ -40,25 +41,32 @@ def with_records(tmp_path):
 
 def read_table(path):
     """(header, record names, numbers) of a CSV table of the driver; the names must be
-    quoted (QUOTE_NONNUMERIC turns every unquoted cell into a float)."""
+    quoted (QUOTE_NONNUMERIC turns every unquoted cell into a float), the status too
+    ("ok", "failed": 0, 1 in the numbers)."""
     with open(path, newline="") as f:
         header = next(csv.reader(f))
         rows = list(csv.reader(f, quoting=csv.QUOTE_NONNUMERIC))
     assert all(isinstance(r[0], str) for r in rows), "record names are quoted"
-    assert all(isinstance(x, float) for r in rows for x in r[1:])
-    return header, [r[0] for r in rows], np.array([r[1:] for r in rows], ndmin=2)
+    assert all(isinstance(x, float) for r in rows for x in r[1:-1])
+    return header, [r[0] for r in rows], coded(header, rows)
 
 
 def read_txt(path, ncol):
-    """(names, numbers) of the text table (names may hold blanks)."""
-    names, data = [], []
+    """(names, cells) of the text table (names may hold blanks)."""
+    names, cells = [], []
     for line in Path(path).read_text().splitlines():
         if line.startswith("#"):
             continue
         parts = line.rsplit(None, ncol - 1)
         names.append(parts[0].strip())
-        data.append([float(x) for x in parts[1:]])
-    return names, np.array(data, ndmin=2)
+        cells.append(parts[1:])
+    return names, cells
+
+
+def txt_of(data):
+    """The text table's cells of the numbers of read_table: 6 significant digits, the
+    status by name."""
+    return [[g_text(x) for x in row[:-1]] + [("ok", "failed")[int(row[-1])]] for row in data]
 
 
 def newmark_run(driver, tmp_path, records_group, newmark_group, output="o"):
@@ -88,7 +96,8 @@ def test_example_input_runs(driver, source_root, tmp_path):
     assert np.all(data[:4, 1] > 0) and np.all(data[4:, 1] < 0)      # polarity 1, -1
     txt_names, txt = read_txt(tmp_path / "out" / "newmark_example_newmark.txt", len(HEADER))
     assert txt_names == names
-    np.testing.assert_array_equal(txt, data)
+    assert txt == txt_of(data)
+    assert all(row[-1] == "ok" for row in txt)
     progress = [ln for ln in proc.stderr.splitlines() if ln.startswith("newmark: record ")]
     assert len(progress) == 2 and progress[0].startswith("newmark: record 1/2: quake_a")
 
@@ -242,6 +251,8 @@ def test_bad_record_fails_its_rows_only(driver, tmp_path):
     assert np.all(np.isnan(data[2:4, [0, 1] + list(range(4, 12))]))
     assert list(data[2:4, 2]) == [0.05, 0.1] and np.all(np.isinf(data[2:4, 3]))
     assert list(data[:, -1]) == [0, 0, 1, 1, 0, 0]
+    assert [ln.rsplit(",", 1)[1] for ln in (tmp_path / "mixed_newmark.csv").read_text()
+            .splitlines()[1:]] == ['"ok"', '"ok"', '"failed"', '"failed"', '"ok"', '"ok"']
     txt = (tmp_path / "mixed_newmark.txt").read_text()
     assert "FAILED" in txt and "records/bad.csv, line 4" in txt
     progress = [ln for ln in proc.stderr.splitlines() if ln.startswith("newmark: record ")]
@@ -364,7 +375,7 @@ def test_csv_quotes_odd_names(driver, tmp_path):
     assert names == [odd, odd]
     txt_names, txt = read_txt(tmp_path / "o_newmark.txt", len(HEADER))
     assert txt_names == names
-    np.testing.assert_array_equal(txt, data)
+    assert txt == txt_of(data)
     header_lines = [ln for ln in (tmp_path / "o_newmark.txt").read_text().splitlines()
                     if ln.startswith("#record") or ln.startswith("#(-)")]
     assert len(header_lines) == 2

@@ -3,9 +3,10 @@
 of `method` and `rule`, limit cases (a very stiff mass slides as the rigid block; a yield
 table of one value is that constant ky), SLAMMER 1.1's arithmetic on a real record against
 the plain-Python transcription slammer_reference.py, an unconverged equivalent-linear
-iteration (a warning, converged = 0, exit status 0), and the located one-line input
+iteration (a warning, converged = no, exit status 0), and the located one-line input
 errors (exit status 2, no output)."""
 import csv
+import re
 import shutil
 import subprocess
 from pathlib import Path
@@ -14,13 +15,14 @@ import numpy as np
 import pytest
 
 import slammer_reference as sref
+from driver_tables import coded
 
 HERE = Path(__file__).resolve().parent
 RECORDS = HERE.parent / "regression" / "records"
 
-RIGID = ["pga (g)", "scale (-)", "ky (g)", "ky_up (g)", "max_normal (m)", "max_normal (cm)",
-         "final_normal (m)", "final_normal (cm)", "max_inverse (m)", "max_inverse (cm)",
-         "final_inverse (m)", "final_inverse (cm)"]
+RIGID = ["pga (g)", "scale (-)", "ky (g)", "ky_up (g)", "max_normal (m)", "max_normal_cm (cm)",
+         "final_normal (m)", "final_normal_cm (cm)", "max_inverse (m)", "max_inverse_cm (cm)",
+         "final_inverse (m)", "final_inverse_cm (cm)"]
 FLEX = ["kmax (g)", "vs_final (m/s)", "damping_final (-)", "period (s)", "iterations (-)",
         "converged (-)"]
 HEADER = ["record (-)"] + RIGID + FLEX + ["status (-)"]
@@ -46,7 +48,8 @@ def table(tmp_path, output="o"):
     with open(tmp_path / f"{output}_newmark.csv", newline="") as f:
         header = next(csv.reader(f))
         rows = list(csv.reader(f, quoting=csv.QUOTE_NONNUMERIC))
-    return header, [r[0] for r in rows], np.array([r[1:] for r in rows], ndmin=2)
+    # status and converged are names ("ok"/"failed", "no"/"yes"): as their codes 0, 1
+    return header, [r[0] for r in rows], coded(header, rows)
 
 
 def gravity_record(path, scale=1.0):
@@ -67,6 +70,8 @@ def test_columns_and_header(driver, tmp_path):
     header, names, data = table(tmp_path)
     assert header == HEADER and names == ["quake_b"] * 2
     assert np.all(data[:, -1] == 0) and np.all(data[:, COL["converged (-)"]] == 1)
+    last = (tmp_path / "o_newmark.csv").read_text().splitlines()[-1]
+    assert re.search(r',\d+,"yes","ok"$', last), "iterations an integer, names for the codes"
     # the mass's properties do not depend on ky; period = 4 H / Vs
     for c in ("kmax (g)", "vs_final (m/s)", "damping_final (-)", "iterations (-)"):
         assert data[0, COL[c]] == data[1, COL[c]]
@@ -77,7 +82,7 @@ def test_columns_and_header(driver, tmp_path):
     # one way: max = final; cm = 100 m; more ky, less sliding
     np.testing.assert_array_equal(data[:, COL["max_normal (m)"]],
                                   data[:, COL["final_normal (m)"]])
-    np.testing.assert_allclose(data[:, COL["max_normal (cm)"]],
+    np.testing.assert_allclose(data[:, COL["max_normal_cm (cm)"]],
                                100 * data[:, COL["max_normal (m)"]], rtol=1e-15)
     assert data[0, COL["max_normal (m)"]] > data[1, COL["max_normal (m)"]] > 0
     assert np.all(np.isinf(data[:, COL["ky_up (g)"]]))
@@ -169,8 +174,8 @@ def test_slammer_rule_matches_slammer_transcription(driver, tmp_path):
         normal = ref(accel, dt, 0.1, **mass)
         inverse = ref([-a for a in accel], dt, 0.1, **mass)
         row = data[0]
-        assert row[COL["max_normal (cm)"]] == pytest.approx(normal.disp_cm, rel=1e-12)
-        assert row[COL["max_inverse (cm)"]] == pytest.approx(inverse.disp_cm, rel=1e-12)
+        assert row[COL["max_normal_cm (cm)"]] == pytest.approx(normal.disp_cm, rel=1e-12)
+        assert row[COL["max_inverse_cm (cm)"]] == pytest.approx(inverse.disp_cm, rel=1e-12)
         assert row[COL["kmax (g)"]] == pytest.approx(normal.kmax_g, rel=1e-12)
         assert row[COL["vs_final (m/s)"]] == pytest.approx(normal.vs_final_mps, rel=1e-12)
         assert row[COL["damping_final (-)"]] == pytest.approx(normal.damping_final, rel=1e-12)
@@ -236,7 +241,7 @@ def test_one_value_table_is_constant_ky(driver, tmp_path):
 
 def test_unconverged_iteration_warns_and_keeps_the_row(driver, tmp_path):
     """max_iter = 1 stops SLAMMER's iteration, which needs two passes at least: the row
-    holds the first pass's results with converged = 0, status 0, a warning on stderr
+    holds the first pass's results with converged = no, status ok, a warning on stderr
     and in the header; exit status 0. With max_iter = 100 the same case converges."""
     rec = "files='records/quake_b.csv', target_pga=0.4"
     for max_iter, out in ((1, "one"), (100, "all")):
