@@ -15,15 +15,12 @@ module driver_tables
     implicit none
     private
 
-    public :: write_tables, column_len, delete_files, say_written, code_legend, stack
+    public :: write_tables, delete_files, say_written, code_legend, stack
     public :: write_table_pair, category_kind, table_path, commit_outputs, discard_outputs
     public :: open_output, status_names
 
     !> The names of a row status column: 0 ok, 1 failed (category_kind(status_names)).
     character(len=6), parameter :: status_names(0:1) = [character(len=6) :: 'ok', 'failed']
-
-    !> Width of a text column: a blank, then es24.16e3 (a negative number fills all 24).
-    integer, parameter :: column_len = 25
 
     !> Column kinds (from the `kinds` argument of write_tables).
     integer, parameter :: KIND_REAL = 0, KIND_INT = 1, KIND_CAT = 2
@@ -412,9 +409,9 @@ contains
             do i = 1, nrow
                 if (stat /= 0) return
                 pos = 0
-                if (present(labels)) call left(labels(i), width(1))
+                if (present(labels)) call put_cell(labels(i), width(1), .true.)
                 do j = 1, ndat
-                    call right(cell_of(cells, i, j), width(j + j0 - 1))
+                    call put_cell(cell_of(cells, i, j), width(j + j0 - 1), .false.)
                 end do
                 write(ut, '(a)', iostat=stat, iomsg=iomsg) line(1:pos)
             end do
@@ -432,37 +429,30 @@ contains
                     head = trim(words(k))
                 end if
                 if (k < j0) then
-                    call left(head, width(k))
+                    call put_cell(head, width(k), .true.)
                 else
-                    call right(head, width(k))
+                    call put_cell(head, width(k), .false.)
                 end if
             end do
             line(1:1) = '#'
             write(ut, '(a)', iostat=stat, iomsg=iomsg) line(1:pos)
         end subroutine header_line
 
-        !> Append ' ' and c right-aligned in w characters to line(1:pos).
-        subroutine right(c, w)
+        !> Append ' ' and c in w characters, left-adjusted or right-aligned.
+        subroutine put_cell(c, w, left_adjusted)
             character(len=*), intent(in) :: c
             integer, intent(in) :: w
+            logical, intent(in) :: left_adjusted
             integer :: n
             n = len_trim(c)
-            line(pos + 1:pos + 1 + w - n) = ' '
-            line(pos + 2 + w - n:pos + 1 + w) = c(1:n)
+            line(pos + 1:pos + 1 + w) = ' '
+            if (left_adjusted) then
+                line(pos + 2:pos + 1 + n) = c(1:n)
+            else
+                line(pos + 2 + w - n:pos + 1 + w) = c(1:n)
+            end if
             pos = pos + 1 + w
-        end subroutine right
-
-        !> Append ' ' and c left-adjusted in w characters to line(1:pos).
-        subroutine left(c, w)
-            character(len=*), intent(in) :: c
-            integer, intent(in) :: w
-            integer :: n
-            n = len_trim(c)
-            line(pos + 1:pos + 1) = ' '
-            line(pos + 2:pos + 1 + n) = c(1:n)
-            line(pos + 2 + n:pos + 1 + w) = ' '
-            pos = pos + 1 + w
-        end subroutine left
+        end subroutine put_cell
 
         !> One `name  value  unit` line per column (the one row of a summary).
         subroutine write_summary(cells)
@@ -623,9 +613,9 @@ contains
         end do
     end subroutine delete_files
 
-    !> The two tables of one run, <prefix>_<name1> and <prefix>_<name2> (write_tables each,
-    !> with their own comments, names, units, data and optional labels, kinds, summary):
-    !> both or neither exist (the first is deleted when the second fails). Then `note` (if given) and
+    !> The two tables of one run, name1 and name2 (write_tables each, with their own
+    !> comments, names, units, data and optional labels, kinds, summary): both or neither
+    !> exist (the first is deleted when the second fails). Then `note` (if given) and
     !> "<what1> written to ...", "<what2> written to ..." on standard output. stat 0, or
     !> errmsg "<path>: &run: output: ...".
     subroutine write_table_pair(path, prefix, name1, comments1, names1, units1, data1, &

@@ -212,11 +212,7 @@ contains
                 if (reads_back(d(1:q), ex, neg, x)) exit
             end if
         end do
-        k = q
-        do while (k > 1)
-            if (d(k:k) /= '0') exit
-            k = k - 1
-        end do
+        k = significant_len(d(1:q))
         if (ex >= -4 .and. ex < 16) then
             s = fixed_text(d(1:k), ex, neg, .true.)
         else
@@ -334,6 +330,16 @@ contains
         n = n + 1
     end subroutine put_exponent
 
+    !> The digits d without trailing zeros: their number (at least 1).
+    pure integer function significant_len(d)
+        character(len=*), intent(in) :: d
+        significant_len = len(d)
+        do while (significant_len > 1)
+            if (d(significant_len:significant_len) /= '0') exit
+            significant_len = significant_len - 1
+        end do
+    end function significant_len
+
     !> Fixed notation of +-d(1).d(2:) 10^ex (-4 <= ex <= 16): trailing zeros of the
     !> fraction dropped, then the point too unless `point_zero` (then ".0" stays, as in
     !> "100.0").
@@ -343,18 +349,9 @@ contains
         logical, intent(in) :: neg, point_zero
         character(len=NUM_LEN) :: s
         integer :: n, k, nd
-        ! the significant digits without trailing zeros
-        nd = len(d)
-        do while (nd > 1)
-            if (d(nd:nd) /= '0') exit
-            nd = nd - 1
-        end do
-        s = ' '
-        n = 0
-        if (neg) then
-            s(1:1) = '-'
-            n = 1
-        end if
+        nd = significant_len(d)
+        s = merge('-', ' ', neg)
+        n = merge(1, 0, neg)
         if (ex >= 0) then
             ! integer part: d(1:ex+1), zero-filled; then the fraction d(ex+2:nd)
             do k = 1, ex + 1
@@ -388,17 +385,9 @@ contains
         logical, intent(in) :: neg
         character(len=NUM_LEN) :: s
         integer :: k, n
-        k = len(d)
-        do while (k > 1)
-            if (d(k:k) /= '0') exit
-            k = k - 1
-        end do
-        s = ' '
-        n = 0
-        if (neg) then
-            s(1:1) = '-'
-            n = 1
-        end if
+        k = significant_len(d)
+        s = merge('-', ' ', neg)
+        n = merge(1, 0, neg)
         s(n + 1:n + 1) = d(1:1)
         n = n + 1
         if (k > 1) then
