@@ -6,8 +6,7 @@
 module test_format
     use, intrinsic :: iso_fortran_env, only: int64
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, &
-                                             ieee_positive_inf, ieee_negative_inf, &
-                                             ieee_is_finite
+                                             ieee_positive_inf, ieee_negative_inf
     use seispulse_kinds, only: dp
     use seispulse_format, only: g_str, shortest_str, format_reals, NUM_LEN
     use testing, only: test_error, unit_test, new_unittest, check, same_bits
@@ -146,8 +145,8 @@ contains
                 bits = ior(ishft(int(u(1) * 2.0_dp**31, int64), 33), &
                            int(u(2) * 2.0_dp**33, int64))
                 if (u(3) < 0.5_dp) bits = ior(bits, ishft(1_int64, 32))
+                if (ibits(bits, 52, 11) == 2047) cycle      ! inf or NaN (maybe signalling)
                 x = transfer(bits, 1.0_dp)
-                if (.not. ieee_is_finite(x)) cycle
             else
                 x = (2.0_dp * u(1) - 1.0_dp) * 10.0_dp**(600.0_dp * u(2) - 300.0_dp)
             end if
@@ -158,7 +157,8 @@ contains
             nd = digit_count(trim(s))
             call check(error, nd <= 17, 'at most 17 digits: '//trim(s))
             if (allocated(error)) return
-            if (nd > 1) then
+            ! (one digit fewer of a number near the largest double may overflow)
+            if (nd > 1 .and. abs(x) < 1.0e308_dp) then
                 shorter = g_str(x, nd - 1)
                 read(shorter, *, iostat=ios) y
                 call check(error, ios /= 0 .or. .not. same_bits(x, y), 'minimal: '//trim(s) &

@@ -296,6 +296,12 @@ contains
         character(len=32) :: t
         real(dp) :: y
         integer :: n
+        character(len=17) :: padded
+        ! from the largest double plus half its spacing, 1.797693134862315807...e308, a
+        ! text reads as an overflow: not x (and strtod would raise the overflow flag)
+        reads_back = .false.
+        padded = d//repeat('0', 17 - len(d))
+        if (ex > 308 .or. (ex == 308 .and. lge(padded, '17976931348623159'))) return
         n = 0
         if (neg) then
             t(1:1) = '-'
