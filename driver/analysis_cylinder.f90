@@ -17,6 +17,7 @@
 !>     3-D rocking with rolling of a circular cylinder on its rim ([KM90]) under a pulse
 !>     along a direction, one or two records (x, y), or free from an initial state
 !>     (&roll).
+!> File names by table_path (out/cylinder_map + cylinder_map: out/cylinder_map.txt).
 !> The numbers come from seispulse_cylinder (properties, pushover, maps),
 !> seispulse_rocking_sim (the planar integrator) and seispulse_cylinder_roll (rolling); the
 !> driver only reads, checks, converts units and writes. Every table is computed before the
@@ -44,12 +45,13 @@ module driver_cylinder
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, &
                               record_line, failed_records
-    use driver_tables, only: write_tables, say_written, code_legend, delete_files
+    use driver_tables, only: write_tables, say_written, delete_files, stack, category_kind
     use driver_axis, only: axis_values
     use driver_rocking_common, only: check_run_options, restitution_and_model, &
                                      locate_run_message, map_kind, map_template, progress_t, &
                                      axes_names, map_axes_code, map_grids, map_axes_header, &
-                                     map_table, rock_records, record_at
+                                     map_table, rock_records, record_at, run_summary_kinds, &
+                                     map_class_names
     use driver_echo, only: echo_unit
     implicit none
     private
@@ -815,7 +817,8 @@ contains
         call write_tables(prefix, 'cylinder_pushover', comments, &
             [character(len=12) :: 'theta', 'theta_ratio', 'force', 'moment', 'm_ratio', &
              'stable'], &
-            [character(len=4) :: 'rad', '-', 'N', 'N m', '-', '-'], table, files, stat, errmsg)
+            [character(len=4) :: 'rad', '-', 'N', 'N m', '-', '-'], table, files, stat, errmsg, &
+            kinds=[character(len=3) :: '', '', '', '', '', 'int'])
         if (stat /= 0) then
             errmsg = path//': &run: output: '//errmsg
             return
@@ -847,7 +850,7 @@ contains
     subroutine history_comments(s, excitation, lines)
         type(setup_t), intent(in) :: s
         character(len=*), intent(in) :: excitation
-        character(len=*), intent(out) :: lines(4)
+        character(len=*), intent(out) :: lines(3)
         lines(1) = 'seispulse analysis cylinder: planar rocking on a rigid base under ' &
                    //excitation//', '//trim(model)//' model (seispulse_rocking_sim)'
         lines(2) = body_line(s)
@@ -857,7 +860,6 @@ contains
             //real_str(kv)//' (doc/rocking.md section 7): uplift at a_g > g t/(1 - kv t) or ' &
             //'a_g < -g t/(1 + kv t), t = tan(theta_c) (nonlinear) or theta_c ' &
             //'(linearized); a_g > 0 drives theta > 0'
-        lines(4) = code_legend('outcome', outcome_names)
     end subroutine history_comments
 
     !> 'history' under the pulse of &pulse: the summary and the history tables.
@@ -867,7 +869,7 @@ contains
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
         type(rocking_run_t) :: run
-        character(len=512) :: msg, files(2), files2(2), comments(8)
+        character(len=512) :: msg, files(2), files2(2), comments(6)
         real(dp), allocatable :: t(:), table(:, :), v(:), d(:)
         real(dp) :: t_last
         integer :: n, i
@@ -905,27 +907,27 @@ contains
         end if
         table(:, 1) = t
 
-        call history_comments(s, pulse_kind_name(s%pin%code)//' pulse', comments(1:4))
-        comments(5) = 't_overturn: last outward crossing of |theta| = theta_c before ' &
+        call history_comments(s, pulse_kind_name(s%pin%code)//' pulse', comments(1:3))
+        comments(4) = 't_overturn: last outward crossing of |theta| = theta_c before ' &
                       //'overturning; t_impact1: first impact; t_end: rest, overturned ' &
                       //'(|theta| = pi/2) or the time limit; 0 without uplift'
-        comments(6) = 'psi = theta/theta_c; NaN: no such event'
-        comments(7) = 'input: '//trim(path)
-        call write_tables(prefix, 'cylinder', comments(1:7), summary_names(.false.), &
+        comments(5) = 'psi = theta/theta_c; NaN: no such event'
+        comments(6) = 'input: '//trim(path)
+        call write_tables(prefix, 'cylinder', comments, summary_names(.false.), &
             summary_units(.false.), reshape(summary_row(s, run), [1, 13]), files, stat, &
-            errmsg)
+            errmsg, kinds=run_summary_kinds(13, 4, outcome_names, 7), summary=.true.)
         if (stat /= 0) then
             errmsg = path//': &run: output: '//errmsg
             return
         end if
-        comments(5) = 'outcome: '//trim(outcome_names(run%outcome))//', t_uplift = ' &
+        comments(4) = 'outcome: '//trim(outcome_names(run%outcome))//', t_uplift = ' &
                       //real_str(run%t_uplift)//' s, impacts: '//int_str(run%n_impacts) &
                       //', theta_max = '//real_str(run%theta_max)//' rad, theta_min = ' &
                       //real_str(run%theta_min)//' rad, t_end = '//real_str(run%t_end)//' s'
-        comments(6) = 'theta: rotation (rad; > 0 about one edge, < 0 about the other), ' &
+        comments(5) = 'theta: rotation (rad; > 0 about one edge, < 0 about the other), ' &
                       //'omega = dtheta/dt (rad/s); overturned: theta = +-pi/2, omega = 0 ' &
                       //'after t_end; NaN after a time limit'
-        call write_tables(prefix, 'cylinder_history', comments(1:7), &
+        call write_tables(prefix, 'cylinder_history', comments, &
             [character(len=8) :: 't', 'a_g', 'theta', 'omega'], &
             [character(len=8) :: 's', 'm/s2', 'rad', 'rad/s'], table, files2, stat, errmsg)
         if (stat /= 0) then
@@ -1003,24 +1005,25 @@ contains
             summary(ir, 2:14) = summary_row(s, runs(ir))
         end do
 
-        allocate(comments(6 + nrec))
+        allocate(comments(5 + nrec))
         call history_comments(s, 'records (&records; the samples in g, linear in between, ' &
-                              //'0 after the last)', comments(1:4))
-        comments(5) = 'pga: after scaling (g); psi = theta/theta_c; NaN: no such event, or ' &
+                              //'0 after the last)', comments(1:3))
+        comments(4) = 'pga: after scaling (g); psi = theta/theta_c; NaN: no such event, or ' &
                       //'a record that failed; t_end: rest, overturned or the time limit'
         do ir = 1, nrec
-            comments(5 + ir) = record_line(ir, s%recs(ir), outs(ir))
-            if (outs(ir)%ok .and. failed(ir)) comments(5 + ir) = trim(comments(5 + ir)) &
+            comments(4 + ir) = record_line(ir, s%recs(ir), outs(ir))
+            if (outs(ir)%ok .and. failed(ir)) comments(4 + ir) = trim(comments(4 + ir)) &
                 //'; FAILED: '//outs(ir)%message
         end do
-        comments(6 + nrec) = 'input: '//trim(path)
+        comments(5 + nrec) = 'input: '//trim(path)
         call write_tables(prefix, 'cylinder', comments, summary_names(.true.), &
-            summary_units(.true.), summary, files, stat, errmsg, labels=labels)
+            summary_units(.true.), summary, files, stat, errmsg, labels=labels, &
+            kinds=run_summary_kinds(15, 6, outcome_names, 9))
         if (stat /= 0) then
             errmsg = path//': &run: output: '//errmsg
             return
         end if
-        comments(5) = 'rows: each record from t = 0; theta (rad), omega = dtheta/dt ' &
+        comments(4) = 'rows: each record from t = 0; theta (rad), omega = dtheta/dt ' &
                       //'(rad/s), a_g = g x the record (m/s2); NaN: a record that failed'
         call write_tables(prefix, 'cylinder_history', comments, &
             [character(len=8) :: 'record', 't', 'a_g', 'theta', 'omega'], &
@@ -1066,6 +1069,7 @@ contains
         character(len=512) :: msg, files(2), comments(9)
         character(len=12), allocatable :: names(:)
         character(len=4), allocatable :: units(:)
+        character(len=128), allocatable :: kinds(:)
         real(dp), allocatable :: xs(:), ys(:), table(:, :)
         integer, allocatable :: classes(:, :), classes_b(:, :), diff(:, :)
         type(rocking_body_t) :: eq
@@ -1143,15 +1147,18 @@ contains
             call map_table(axes_code, xs, ys, s%body%p, s%body%theta_c, classes, table, &
                            classes_b, diff)
             call map_axes_header(axes_code, names, units, 'class_block')
+            kinds = [character(len=128) :: '', '', '', '', category_kind(map_class_names), &
+                     category_kind(map_class_names), category_kind(diff_names)]
         else
             call map_table(axes_code, xs, ys, s%body%p, s%body%theta_c, classes, table)
             call map_axes_header(axes_code, names, units)
+            kinds = [character(len=128) :: '', '', '', '', category_kind(map_class_names)]
         end if
         comments(1) = 'seispulse analysis cylinder: overturning map, '//pulse_kind_name(code) &
                       //' pulse family, '//trim(model)//' model (seispulse_cylinder)'
         comments(2) = body_line(s)
-        comments(3) = 'class: 0 safe, 1 overturns without impact, 2 overturns after one ' &
-                      //'impact, 3 after more impacts, -1 undecided (step budget)'
+        comments(3) = 'class: safe, or overturns_* by the impacts before overturning; ' &
+                      //'undecided: the step budget ran out'
         comments(4) = 'freq_ratio = omega_p/p = 2 pi freq_hz/p (T_p: t_d of the ' &
                       //'exponential pulse, the period of sine/cosine cycles, the length ' &
                       //'of the others; Ricker: f_p); amp_ratio = a_p/(g tan theta_c) = ' &
@@ -1165,15 +1172,15 @@ contains
             comments(7) = 'class_block: the equivalent block (same p, same M_max, alpha = ' &
                           //real_str(eq%theta_c)//' rad, Housner e = '//real_str(eq%e) &
                           //') on the same '//trim(names(1))//', '//trim(names(2))
-            comments(8) = code_legend('diff', diff_names)//', -1 undecided; grid: '//grid_x &
-                          //', '//grid
+            comments(8) = 'diff: only_cylinder, only_block: only one of the two overturns, ' &
+                          //'other_mode: both, in different classes; grid: '//grid_x//', '//grid
         else
             comments(7) = 'compare_block = .false.: no block map'
             comments(8) = 'grid: '//grid_x//', '//grid
         end if
         comments(9) = 'input: '//trim(path)
         call write_tables(prefix, 'cylinder_map', comments, names, units, table, files, &
-                          stat, errmsg)
+                          stat, errmsg, kinds=kinds)
         if (stat /= 0) then
             errmsg = path//': &run: output: '//errmsg
             return
@@ -1199,10 +1206,10 @@ contains
         type(record_out_t) :: outs(2)
         type(pulse_t), allocatable :: pl
         character(len=:), allocatable :: where, excitation
-        character(len=512) :: msg, files(2), files2(2), comments(9)
+        character(len=512) :: msg, files(2), files2(2), comments(8)
         character(len=16) :: names(3 + ROLL_NOUT)
         character(len=6) :: units(3 + ROLL_NOUT)
-        character(len=16) :: onames(0:3)
+        character(len=24) :: onames(0:3)
         real(dp), allocatable :: ax(:), ay(:), accel(:), t(:), hist(:, :), table(:, :), &
                                  v(:), d(:), a(:), rt
         real(dp) :: one_time(1), one_hist(ROLL_NOUT, 1), t_last, t_exc, rec_dt, row(nsum), nan, &
@@ -1350,22 +1357,23 @@ contains
                       //real_str(psi0)//' rad, spin0 = '//real_str(spin0)//' rad, rates ' &
                       //real_str(theta_rate0)//', '//real_str(psi_rate0)//', ' &
                       //real_str(spin_rate0)//' rad/s'
-        comments(4) = code_legend('outcome', onames)
-        comments(5) = 'theta: tilt (>= 0), psi: heading of the rocking plane (jumps by pi at ' &
+        comments(4) = 'theta: tilt (>= 0), psi: heading of the rocking plane (jumps by pi at ' &
                       //'an impact), spin: about the axis of symmetry; contact point and ' &
                       //'centre of mass in the ground frame (m), from the centre of mass at (0, 0)'
-        comments(6) = 'friction_demand = |F_t|/N (no slip needs mu >= it); energy: kinetic + ' &
+        comments(5) = 'friction_demand = |F_t|/N (no slip needs mu >= it); energy: kinetic + ' &
                       //'potential (J); n_floor: impacts counted by the floor rule; ' &
                       //'energy_drift: largest |E - E0|/(E0 - m g h) in free flight'
-        comments(7) = 'overturned: theta = pi/2 and the rates 0 after t_end (N, friction, ' &
+        comments(6) = 'overturned: theta = pi/2 and the rates 0 after t_end (N, friction, ' &
                       //'energy NaN); NaN after a time limit; t_lift_off: first N <= 0 (NaN: never)'
-        comments(8) = 'input: '//trim(path)
-        call write_tables(prefix, 'cylinder_roll', comments(1:8), &
+        comments(7) = 'input: '//trim(path)
+        call write_tables(prefix, 'cylinder_roll', comments(1:7), &
             [character(len=16) :: 'theta_c', 'p', 'e', 'outcome', 't_uplift', 'n_impacts', &
              'n_floor', 't_impact1', 'theta_max', 'theta_ratio_max', 'friction_max', &
              't_lift_off', 'energy_drift', 't_end'], &
             [character(len=6) :: 'rad', 'rad/s', '-', '-', 's', '-', '-', 's', 'rad', '-', &
-             '-', 's', '-', 's'], reshape(row, [1, nsum]), files, stat, errmsg)
+             '-', 's', '-', 's'], reshape(row, [1, nsum]), files, stat, errmsg, &
+            kinds=[character(len=64) :: '', '', '', category_kind(onames), '', 'int', 'int', &
+                   '', '', '', '', '', '', ''], summary=.true.)
         if (stat /= 0) then
             errmsg = path//': &run: output: '//errmsg
             return
@@ -1376,11 +1384,11 @@ contains
             names(3 + k) = roll_output_name(k)
             units(3 + k) = roll_units(k)
         end do
-        comments(9) = 'outcome: '//roll_outcome_name(run%outcome)//', impacts: ' &
+        comments(8) = 'outcome: '//roll_outcome_name(run%outcome)//', impacts: ' &
                       //int_str(run%n_impacts)//', theta_max = '//real_str(run%theta_max) &
                       //' rad, t_end = '//real_str(run%t_end)//' s'
-        call write_tables(prefix, 'cylinder_roll_history', [comments(1:3), comments(5:7), &
-            comments(9), comments(8)], names, units, table, files2, stat, errmsg)
+        call write_tables(prefix, 'cylinder_roll_history', [comments(1:6), comments(8), &
+            comments(7)], names, units, table, files2, stat, errmsg)
         if (stat /= 0) then
             call delete_files(files)
             errmsg = path//': &run: output: '//errmsg

@@ -3,9 +3,9 @@
 !> of application and base moments, and the pressure distributions against depth.
 !>
 !> Groups: &wall (geometry, rotational base spring, second wall), &backfill (soil) and
-!> &seismic (EN 1998 input, or kh, kv and ag S/g given directly). Writes
-!> <output>_walls (one row per method: thrust kN/m, height of application m, z/H,
-!> base moment kNm/m) and <output>_walls_pressure (depth m, pressures kPa).
+!> &seismic (EN 1998 input, or kh, kv and ag S/g given directly). Writes the tables
+!> walls (one row per method: thrust kN/m, height of application m, z/H, base moment
+!> kNm/m) and walls_pressure (depth m, pressures kPa); file names by table_path.
 !> The driver only reads, checks and writes; every number comes from
 !> seispulse_wall_table and seispulse_codes.
 module driver_walls

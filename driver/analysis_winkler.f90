@@ -17,6 +17,7 @@
 !>     pushover on clay by the stiffness-degradation method;
 !>   * 'capacity': <output>_winkler_capacity, the bearing capacity, the factor of safety
 !>     and the moment capacities of a circular footing on clay.
+!> File names by table_path (out/winkler_map + winkler_map: out/winkler_map.txt).
 !> The numbers come from seispulse_winkler, seispulse_winkler_rock and
 !> seispulse_clay_footing; the driver only reads, checks, converts units and writes. Every
 !> table is computed before the first is written.
@@ -46,11 +47,11 @@ module driver_winkler
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, &
                               record_line, failed_records
-    use driver_tables, only: write_tables, say_written, code_legend, stack, write_table_pair
+    use driver_tables, only: write_tables, say_written, stack, write_table_pair, category_kind
     use driver_axis, only: axis_values
     use driver_rocking_common, only: check_run_options, locate_run_message, map_kind, &
                                      map_template, progress_t, axes_names, map_axes_code, &
-                                     map_grids, map_axes_header, map_table
+                                     map_grids, map_axes_header, map_table, run_summary_kinds
     use driver_echo, only: echo_unit
     implicit none
     private
@@ -761,7 +762,7 @@ contains
              'theta_end', 'force_ratio_rigid'], &
             [character(len=4) :: 'N', 'N/m3', 'rad', 'rad', '-', 'rad', 'N m', 'rad', 'rad', &
              'rad', '-'], reshape(row, [1, size(row)]), 'winkler pushover summary', stat, &
-            errmsg)
+            errmsg, summary2=.true.)
     end subroutine do_pushover
 
     !> The radius or the half-width b (m).
@@ -921,7 +922,7 @@ contains
              'theta_overturn'], &
             [character(len=7) :: 'N', 'N', '-', '-', 'N m/rad', 'N m/rad', 'rad', 'N m', 'rad', &
              '-', 'rad', 'rad'], reshape(row, [1, size(row)]), 'winkler inelastic summary', &
-            stat, errmsg)
+            stat, errmsg, summary2=.true.)
     end subroutine do_inelastic
 
     !> The degradation coefficients of &winkler.
@@ -996,7 +997,7 @@ contains
              'm_ult_width', 'm_tc_norm', 'm_width_norm'], &
             [character(len=3) :: 'Pa', 'm', 'N', '-', 'N', '-', '-', 'N m', 'N m', '-', '-'], &
             reshape([su, r, s%weight, n_ult / (su * pi * r**2), n_ult, sf, chi, m_tc, m_ew, &
-                     m_tc / adsu, m_ew / adsu], [1, 11]), files, stat, errmsg)
+                     m_tc / adsu, m_ew / adsu], [1, 11]), files, stat, errmsg, summary=.true.)
         if (stat /= 0) then
             errmsg = path//': &run: output: '//errmsg
             return
@@ -1070,16 +1071,25 @@ contains
         end if
     end subroutine history_header
 
+    !> Kinds of the summary columns (with the record and pga columns for records):
+    !> outcome by name, n_impacts an integer.
+    function summary_kinds(records) result(kinds)
+        logical, intent(in) :: records
+        character(len=:), allocatable :: kinds(:)
+        character(len=24) :: onames(0:4)
+        integer :: j, k0
+        do j = 0, 4
+            onames(j) = winkler_outcome_name(j)
+        end do
+        k0 = merge(2, 0, records)
+        kinds = run_summary_kinds(k0 + 14, k0 + 5, onames, k0 + 8)
+    end function summary_kinds
+
     !> Header lines shared by the tables of a history.
     subroutine history_comments(s, excitation, lines)
         type(setup_t), intent(in) :: s
         character(len=*), intent(in) :: excitation
         character(len=*), intent(out) :: lines(5)
-        character(len=16) :: onames(0:4)
-        integer :: j
-        do j = 0, 4
-            onames(j) = winkler_outcome_name(j)
-        end do
         lines(1) = 'seispulse analysis winkler: planar rocking with settlement on ' &
                    //'tensionless Winkler springs and dashpots ([KH91], [KSR86]; ' &
                    //'seispulse_winkler_rock) under '//excitation
@@ -1091,8 +1101,7 @@ contains
             lines(3) = trim(lines(3))//' (xi = '//real_str(xi)//', damping_ref = ''' &
                        //trim(damping_ref)//''')'
         end if
-        lines(4) = code_legend('outcome', onames)//'; theta_c, theta_overturn: rigid and ' &
-                   //'static Winkler overturning angles'
+        lines(4) = 'theta_c, theta_overturn: rigid and static Winkler overturning angles'
         lines(5) = 'v: settlement of the base centre (+ down), theta > 0 lifts the s > 0 ' &
                    //'side, width: contact width, normal: N, moment: foundation moment about ' &
                    //'the base centre in the sense of theta (restoring: opposite sign to ' &
@@ -1185,7 +1194,8 @@ contains
         call write_table_pair(path, prefix, 'winkler', comments, summary_names(.false.), &
             summary_units(.false.), reshape(summary_row(s, run), [1, 14]), 'winkler summary', &
             'winkler_history', lines, names, units, table, 'winkler history', stat, errmsg, &
-            note='winkler: '//winkler_outcome_name(run%outcome))
+            note='winkler: '//winkler_outcome_name(run%outcome), &
+            kinds1=summary_kinds(.false.), summary1=.true.)
     end subroutine do_history_pulse
 
     !> Rocking under each record of &records: a summary row and the history rows of each
@@ -1281,7 +1291,8 @@ contains
         call history_header(.true., names, units)
         call write_table_pair(path, prefix, 'winkler', comments, summary_names(.true.), &
             summary_units(.true.), summary, 'winkler summary', 'winkler_history', lines, names, &
-            units, hist, 'winkler history', stat, errmsg, labels1=labels, labels2=hlabels)
+            units, hist, 'winkler history', stat, errmsg, labels1=labels, labels2=hlabels, &
+            kinds1=summary_kinds(.true.))
         if (stat /= 0) return
         nfailed = count(failed)
         if (nfailed > 0) then
@@ -1315,9 +1326,10 @@ contains
         character(len=512) :: msg, files(2), comments(9)
         character(len=12), allocatable :: names(:)
         character(len=4), allocatable :: units(:)
+        character(len=128), allocatable :: kinds(:)
         real(dp), allocatable :: xs(:), ys(:), table(:, :)
         integer, allocatable :: classes(:, :), classes_r(:, :), diff(:, :)
-        character(len=16) :: onames(0:3)
+        character(len=24) :: onames(0:3)
         type(pulse_t) :: tpl
         integer :: code, i, st, axes_code
         type(progress_t) :: progress
@@ -1378,12 +1390,17 @@ contains
         do i = 0, 3
             onames(i) = winkler_outcome_name(i)
         end do
+        ! the classes of both maps by the same names
+        kinds = [character(len=128) :: '', '', '', '', category_kind(onames)]
+        if (compare_rigid) kinds = [character(len=128) :: kinds, category_kind(onames), &
+                                    category_kind(diff_names)]
         comments(1) = 'seispulse analysis winkler: overturning map on Winkler soil, ' &
                       //pulse_kind_name(code)//' pulse family (seispulse_winkler_rock)'
         comments(2) = body_line(s)//'; rigid theta_c = '//real_str(s%body%theta_c) &
                       //' rad, p = '//real_str(s%body%p)//' rad/s'
         comments(3) = trim(soil_line(s))//', c = '//real_str(s%model%c)//' N s/m3'
-        comments(4) = code_legend('class', onames)//', -1 undecided'
+        comments(4) = 'class: safe, or overturn_* by the impacts before overturning; ' &
+                      //'undecided: the step budget ran out'
         comments(5) = 'freq_ratio = omega_p/p = 2 pi freq_hz/p (T_p: t_d of the ' &
                       //'exponential pulse, the period of sine/cosine cycles, the length ' &
                       //'of the others; Ricker: the dominant f_p); amp_ratio = a_p/(g tan ' &
@@ -1393,15 +1410,15 @@ contains
         if (compare_rigid) then
             comments(7) = 'class_rigid: the same body on a rigid base (Housner e = ' &
                           //real_str(s%body%e)//'), same cells'
-            comments(8) = code_legend('diff', diff_names)//', -1 undecided; grid: '//grid_x &
-                          //', '//grid
+            comments(8) = 'diff: only_winkler, only_rigid: only one of the two overturns, ' &
+                          //'other_mode: both, in different classes; grid: '//grid_x//', '//grid
         else
             comments(7) = 'compare_rigid = .false.: no rigid map'
             comments(8) = 'grid: '//grid_x//', '//grid
         end if
         comments(9) = 'input: '//trim(path)
         call write_tables(prefix, 'winkler_map', comments, names, units, table, files, &
-                          stat, errmsg)
+                          stat, errmsg, kinds=kinds)
         if (stat /= 0) then
             errmsg = path//': &run: output: '//errmsg
             return

@@ -16,6 +16,7 @@ module driver_rocking_common
     use driver_tables, only: stack
     use driver_axis, only: axis_values
     use driver_pulse_group, only: time_grid
+    use driver_tables, only: category_kind
     implicit none
     private
 
@@ -23,6 +24,7 @@ module driver_rocking_common
     public :: map_kind, map_template, progress_t
     public :: axes_names, map_axes_code, map_grids, map_axes_header, map_table
     public :: rock_on_record, rock_records, record_at
+    public :: run_summary_kinds
     public :: map_class_names
 
     character(len=10), parameter :: model_names(2) = [character(len=10) :: 'nonlinear', &
@@ -528,5 +530,19 @@ contains
             end if
         end do
     end function record_at
+
+    !> Column kinds (write_tables) of a run summary of ncol columns: column j_outcome
+    !> holds an outcome code, written by its name, column j_count a count (an integer).
+    pure function run_summary_kinds(ncol, j_outcome, outcome_names, j_count) result(kinds)
+        integer, intent(in) :: ncol, j_outcome, j_count
+        character(len=*), intent(in) :: outcome_names(0:)   !! the name of each code
+        character(len=:), allocatable :: kinds(:)
+        character(len=:), allocatable :: outcome
+        outcome = category_kind(outcome_names)
+        allocate(character(len=len(outcome)) :: kinds(ncol))
+        kinds = ''
+        kinds(j_outcome) = outcome
+        kinds(j_count) = 'int'
+    end function run_summary_kinds
 
 end module driver_rocking_common

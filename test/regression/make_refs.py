@@ -959,11 +959,15 @@ def map_class(alpha, fr, a):
     return 1 if eta < wall else 0
 
 
+CYLINDER_MAP_DIFF = ("same", "only_cylinder", "only_block", "other_mode")
+
+
 def cylinder_map_rows(nml, bd):
     """Overturning map of the rectangular family, linearized model, on either axis
     system: freq_ratio = 2 pi f_p/p, amp_ratio = PGA/tan(theta_c); with compare_block the
     equivalent block (same p; its own slenderness) on the same cells and the difference
-    code (0 same, 1 only the body, 2 only the block, 3 both by other classes)."""
+    (same, only the body, only the block, both by other classes). The classes and the
+    difference are written by name (text cells)."""
     m = nml["map"]
     if str(nml["body"].get("model", "nonlinear")).lower() != "linearized":
         raise ValueError("cylinder map references: model = 'linearized' only")
@@ -988,7 +992,7 @@ def cylinder_map_rows(nml, bd):
                 fr, ar = x, y
                 row = [x, y, x * bd["p"] / (2 * mp.pi), y * bd["tan_c"]]
             cls = map_class(bd["theta_c"], fr, ar)
-            row.append(mpf(cls))
+            row.append(MAP_CLASSES[cls])
             if compare:
                 if dimensional:
                     frb, arb = 2 * mp.pi * x / eq["p"], y / eq["tan_c"]
@@ -1003,7 +1007,7 @@ def cylinder_map_rows(nml, bd):
                     diff = 2
                 else:
                     diff = 3
-                row += [mpf(clb), mpf(diff)]
+                row += [MAP_CLASSES[clb], CYLINDER_MAP_DIFF[diff]]
             rows.append(row)
     header = (("freq_hz (Hz),pga (g),freq_ratio (-),amp_ratio (-)" if dimensional else
                "freq_ratio (-),amp_ratio (-),freq_hz (Hz),pga (g)") + ",class (-)"
