@@ -163,26 +163,8 @@ def statements(text):
 
 
 def split_semicolons(code):
-    parts, depth, quote, cur = [], 0, None, ""
-    for ch in code:
-        if quote:
-            cur += ch
-            if ch == quote:
-                quote = None
-            continue
-        if ch in "'\"":
-            quote = ch
-        elif ch == "(":
-            depth += 1
-        elif ch == ")":
-            depth -= 1
-        elif ch == ";" and depth == 0:
-            parts.append(cur)
-            cur = ""
-            continue
-        cur += ch
-    parts.append(cur)
-    return [p for p in parts if p.strip()]
+    """The statements of a line split at top-level semicolons (blank ones dropped)."""
+    return split_top(code, ";")
 
 
 def split_top(s, sep=","):
