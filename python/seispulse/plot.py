@@ -372,7 +372,9 @@ def pulse(p, t=None, dimensionless=False, g=STANDARD_GRAVITY, ax=None, title=Non
         The history is :func:`seispulse.pulse.exp_pulse`'s (a/A_g, v/(A_g t_d),
         d/(A_g t_d^2) against t/t_d): label the axes so.
     g : float
-        Gravity (m/s^2) of the acceleration's second axis in g.
+        Gravity (m/s^2) of the acceleration's second axis in g (a Pulse keeps its
+        acceleration in m/s^2, not the g of an ``amp_unit='g'`` definition: give that g
+        here).
     ax : sequence of three matplotlib Axes, optional
     title : str, optional
         Default: the pulse's kind.
