@@ -40,7 +40,9 @@ help:
 	@echo '  make build   configure ($(BUILDDIR)/, meson) and compile only'
 	@echo '  make doc     HTML API reference with FORD: $(BUILDDIR)/doc/api/index.html'
 	@echo '  make deps    install system packages if missing and the .venv Python tools'
-	@echo '  make clean   remove build directories (keeps .venv)'
+	@echo '  make pylink  let .venv/bin/python import seispulse from $(BUILDDIR)/python (build, run'
+	@echo '               and test do it too)'
+	@echo '  make clean   remove build directories (keeps .venv; drops the link into them)'
 	@echo 'Variables: PYTHON=$(PYTHON) (interpreter for .venv)'
 
 deps: sysdeps $(STAMP)
@@ -111,13 +113,22 @@ venv: $(STAMP)
 # `import seispulse` from .venv: a file seispulse-build.pth in its site-packages names
 # $(BUILDDIR)/python, where meson builds the package (extension and .py copies), so every
 # rebuild is importable at once, with no reinstall step. Written only when it changes.
+# The link follows the last make: `make build BUILDDIR=/tmp/x` points .venv there until a
+# make with the default BUILDDIR (make clean drops a link into a build dir it removes). A
+# seispulse pip-installed into .venv comes first on sys.path: pylink warns about it.
 PTH_LINE := $(abspath $(BUILDDIR))/python
+PTH_FILE = $$($(VENV_PY) -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])' \
+	2>/dev/null)/seispulse-build.pth
 pylink: $(STAMP)
-	@site=$$($(VENV_PY) -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])'); \
-	pth=$$site/seispulse-build.pth; \
+	@pth=$(PTH_FILE); \
 	[ "$$(cat "$$pth" 2>/dev/null)" = '$(PTH_LINE)' ] || { \
 	    echo '$(PTH_LINE)' > "$$pth"; \
-	    echo "pylink: $(VENV)/bin/python imports seispulse from $(PTH_LINE) ($$pth)"; }
+	    echo "pylink: $(VENV)/bin/python imports seispulse from $(PTH_LINE) ($$pth)"; }; \
+	origin=$$(cd / && $(VENV_PY) -c 'import importlib.util as u; \
+	    s = u.find_spec("seispulse"); print(s.origin if s else "")' 2>/dev/null); \
+	case "$$origin" in '$(PTH_LINE)'/*|"") ;; *) \
+	    echo "pylink: warning: $(VENV)/bin/python imports seispulse from $$origin, not" \
+	         "from $(PTH_LINE) (pip uninstall seispulse to use the build)" >&2;; esac
 
 # Configure once; meson regenerates by itself when meson.build files change. A new venv
 # (newer stamp) reconfigures, so -Dpython always names this venv's interpreter.
@@ -148,3 +159,6 @@ doc: $(STAMP)
 
 clean:
 	rm -rf $(BUILDDIR) build-check build-install
+	@pth=$(PTH_FILE); case "$$(cat "$$pth" 2>/dev/null)" in \
+	    '$(abspath $(BUILDDIR))/python'|'$(abspath build-check)/python'|'$(abspath build-install)/python') \
+	        rm -f "$$pth"; echo "clean: removed $$pth (it named a removed build dir)";; esac

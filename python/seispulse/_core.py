@@ -132,12 +132,13 @@ def accel_unit_code(name, units):
     library's one vocabulary (accel_unit_code), the same as the driver's: 'g', 'm/s2',
     'm/s^2', 'cm/s2', 'cm/s^2', 'gal', case and surrounding blanks ignored."""
     from ._seispulse import sp_accel_unit_code
-    if not isinstance(units, str):
-        raise InvalidInputError(f"{name} = {units!r}: must be the name of a unit (a str)")
-    code, stat, msg = sp_accel_unit_code(units if units.strip() else "?")
+    # f2py takes ASCII text only: any other value is sent as '?' (never a unit), so the
+    # library's message (with the list of the allowed names) names what was given
+    plain = isinstance(units, str) and units.isascii() and units.strip()
+    code, stat, msg = sp_accel_unit_code(units if plain else "?")
     if stat != SEISPULSE_SUCCESS:
         msg = msg.decode("ascii", "replace") if isinstance(msg, bytes) else str(msg)
-        if not units.strip():
+        if not plain:
             msg = msg.replace("'?'", repr(units), 1)
         raise_for_status(stat, f"{name} = {msg.strip()}")
     return int(code)

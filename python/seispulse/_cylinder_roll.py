@@ -131,10 +131,8 @@ def plot_roll(run, axes=None, title=None):
     """Draw a :class:`RollRun` with matplotlib (an optional dependency): theta(t),
     psi(t) and the path of the contact point on the ground (with the centre of mass).
     axes: three matplotlib axes (default: a new figure). Returns the axes."""
-    try:
-        import matplotlib.pyplot as plt
-    except ImportError as exc:  # optional
-        raise ImportError("plot_roll needs matplotlib (pip install matplotlib)") from exc
+    from .cylinder import _pyplot
+    plt = _pyplot("plot_roll")
     if not isinstance(run, RollRun):
         raise InvalidInputError("run: must be a RollRun from roll()")
     if axes is None:

@@ -66,6 +66,27 @@ subroutine sp_pulse_eval(kind, n, t, np, params, a, v, d, stat, errmsg)
     end if
 end subroutine sp_pulse_eval
 
+!> End time (s) of a pulse (pulse_end_time): the acceleration is zero for good after it;
+!> +inf for the Ricker wavelet. The parameters are checked (pulse_validate).
+subroutine sp_pulse_end_time(kind, params, t_end, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_errors, only: SEISPULSE_SUCCESS
+    use seispulse_pulses, only: pulse_t, pulse_end_time, pulse_from_params, pulse_validate, &
+                                PULSE_NPARAM
+    implicit none
+    integer, intent(in) :: kind
+    real(dp), intent(in) :: params(PULSE_NPARAM)
+    real(dp), intent(out) :: t_end
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    type(pulse_t) :: p
+    errmsg = ''
+    t_end = 0.0_dp
+    p = pulse_from_params(kind, params)
+    call pulse_validate(p, stat, errmsg)
+    if (stat == SEISPULSE_SUCCESS) t_end = pulse_end_time(p)
+end subroutine sp_pulse_end_time
+
 !> Pulse kind code from its name.
 subroutine sp_pulse_kind(name, kind, stat, errmsg)
     use seispulse_pulses, only: pulse_kind_from_name

@@ -383,10 +383,11 @@ _AXIS_LABELS = {"dimensionless": ("omega_p / p", "a_p / (g tan theta_c)"),
 
 
 def _pyplot(what):
-    try:
-        import matplotlib.pyplot as plt
-    except ImportError as exc:  # optional
-        raise ImportError(f"{what} needs matplotlib (pip install matplotlib)") from exc
+    """matplotlib.pyplot (optional): an ImportError naming matplotlib and the pip command
+    when matplotlib itself is missing (_core.optional_import); any other import failure of
+    an installed matplotlib is raised as it is."""
+    _core.optional_import("matplotlib", what)
+    import matplotlib.pyplot as plt
     return plt
 
 

@@ -60,8 +60,8 @@ problem). Pass it to :func:`rigid` as ``incline=``."""
 
 class Rigid(TableResult, namedtuple("Rigid", ["max_disp", "final_disp", "u_max", "u_min",
                                               "max_vel", "t_end", "time", "disp", "vel",
-                                              "slides", "ky", "ky_up"],
-                                    defaults=(None, None))):
+                                              "slides", "ky", "ky_up", "k_down", "k_up"],
+                                    defaults=(None, None, None, None))):
     """Result of :func:`rigid` (SI).
 
     max_disp: largest |u| over time (m); final_disp: u when the block is at rest at the
@@ -71,12 +71,15 @@ class Rigid(TableResult, namedtuple("Rigid", ["max_disp", "final_disp", "u_max",
     With ``intervals=True``: slides, a list of :class:`seispulse.sliding.Slide` (times s,
     u m, w_peak m/s), else None. For an array of ky the scalar fields are arrays.
     ky (g): the yield(s) of the run, shaped as the results (None with a yield table);
-    ky_up (g): the upslope yield(s) of mode 'asym' (None for the other modes).
-    ``print()`` shows one row per ky; :meth:`to_frame` gives that table as a pandas
-    DataFrame."""
+    ky_up (g): the upslope yield(s): ky_up of mode 'asym', ky itself for mode 'both'
+    (None for mode 'down'); k_down, k_up (-): the along-plane factors of mode 'asym',
+    shaped as the results (None when they are all 1).
+    ``print()`` shows one row per run (ky, ky_up, k_down, k_up as they vary);
+    :meth:`to_frame` gives that table as a pandas DataFrame."""
 
     __slots__ = ()
-    _COLUMNS = (("ky", "ky", "g"), ("ky_up", "ky_up", "g"), ("max_disp", "max_disp", "m"),
+    _COLUMNS = (("ky", "ky", "g"), ("ky_up", "ky_up", "g"), ("k_down", "k_down", "-"),
+                ("k_up", "k_up", "-"), ("max_disp", "max_disp", "m"),
                 ("final_disp", "final_disp", "m"), ("u_max", "u_max", "m"),
                 ("u_min", "u_min", "m"), ("max_vel", "max_vel", "m/s"),
                 ("t_end", "t_end", "s"))
@@ -198,7 +201,7 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
         return Rigid(max_disp.reshape(shape), final_disp.reshape(shape), u_max.reshape(shape),
                      u_min.reshape(shape), max_vel.reshape(shape), t_end.reshape(shape),
                      None, None, None, None, flat[0].reshape(shape),
-                     flat[1].reshape(shape) if mode == "asym" else None)
+                     *_upslope(mode, *(f.reshape(shape) for f in flat)))
     scalars = [float(arr[k]) for k in ("ky", "ky_up", "k_down", "k_up")]
     nh = rec.size if history else 1
     with _core.HELD_LOCK:
@@ -216,7 +219,18 @@ def rigid(accel, dt=None, ky=None, mode="down", ky_up=None, method="exact",
     return Rigid(float(max_disp), float(final_disp), float(u_max), float(u_min), float(max_vel),
                  float(t_end), time, disp, vel, out,
                  None if ky_table is not None else scalars[0],
-                 scalars[1] if mode == "asym" else None)
+                 *_upslope(mode, *scalars))
+
+
+def _upslope(mode, ky, ky_up, k_down, k_up):
+    """(ky_up, k_down, k_up) of a Rigid result: the upslope yield (g; ky for mode 'both',
+    None one way) and the along-plane factors (None unless mode 'asym' sets one /= 1)."""
+    if mode == "down":
+        return None, None, None
+    if mode == "both":
+        return ky, None, None
+    plain = np.all(np.asarray(k_down) == 1.0) and np.all(np.asarray(k_up) == 1.0)
+    return ky_up, None if plain else k_down, None if plain else k_up
 
 
 
@@ -265,7 +279,8 @@ With ``history=True``: time (s), hea (g; for coupled, that of the decoupled resp
 one kmax comes from), u_modal (m, the modal displacement relative to the base, with the sign of
 doc/flexible.md (F.30): a positive record acceleration drives it negative), disp s (m) and
 vel s' (m/s; both positive downslope) at the samples, else None. ky and ky_up: the yields given (g; with a table, ky is the array of
-its yields; ky_up None unless mode='asym'), for :func:`plot_flexible`."""
+its yields; ky_up: that of mode 'asym', ky for mode 'both', None for mode 'down'), for
+:func:`plot_flexible`."""
 
 def _flexible(analysis, accel, dt, ky, height, vs, vs_base, damping, soil, ref_strain_pct,
               method, g, mode, ky_up, ky_table, max_iter, history, allow_unconverged):
@@ -334,7 +349,7 @@ def _flexible(analysis, accel, dt, ky, height, vs, vs_base, damping, soil, ref_s
     return Flexible(float(max_disp), float(final_disp), float(kmax), float(vs_final),
                     float(damping_final), float(damping_radiation), float(period),
                     int(iterations), bool(converged), float(t_end), time, hea, u_modal, s_hist,
-                    sdot_hist, ky_out, ky_up)
+                    sdot_hist, ky_out, ky_out if mode == "both" else ky_up)
 
 
 _FLEXIBLE_DOC = """{summary}

@@ -33,19 +33,17 @@ import numpy as np
 
 from . import _core
 from . import _fortran_codes as _f
-from ._seispulse import sp_pulse_eval
+from ._seispulse import sp_pulse_end_time, sp_pulse_eval
 from .errors import InvalidInputError
 from .pulse import STANDARD_GRAVITY   # m/s^2: converts m/s^2 to g where a plot shows both
 
 __all__ = ["QUANTITIES", "spectra", "newmark", "rocking", "walls", "pulse", "overturning_map"]
 
-#: Ordinates of :func:`spectra`: the field of the spectrum and its label without the unit.
+#: Ordinates of :func:`spectra`: the field of the spectrum and its label without the unit
+#: (PSA in m/s^2; in g, as a record's spectrum gives it, the label adds ``/ g``).
 QUANTITIES = {"sa": "SA, max |absolute acceleration|", "psa": "PSA = (2 pi/T)^2 SD",
               "sv": "SV, max |relative velocity|", "psv": "PSV = (2 pi/T) SD",
               "sd": "SD, max |relative displacement|"}
-# Units of the spectra of a record (sdof.Spectrum) and of a pulse (sdof.PulseSpectrum).
-_RECORD_UNITS = {"sa": "g", "psa": "g", "sv": "m/s", "psv": "m/s", "sd": "m"}
-_PULSE_UNITS = {"sa": "m/s^2", "psa": "m/s^2", "sv": "m/s", "psv": "m/s", "sd": "m"}
 #: Damping ratios of :func:`spectra` when it computes the spectra.
 DEFAULT_DAMPINGS = (0.02, 0.05, 0.10)
 #: Periods (s) of :func:`spectra` when it computes the spectra.
@@ -53,7 +51,8 @@ DEFAULT_PERIODS = np.geomspace(0.02, 10.0, 150)
 
 
 def _plt(what):
-    """matplotlib.pyplot, or ImportError naming matplotlib and how to install it."""
+    """matplotlib.pyplot, or ImportError naming matplotlib and how to install it (when
+    matplotlib itself is missing)."""
     from .cylinder import _pyplot
     return _pyplot(f"seispulse.plot.{what}")
 
@@ -85,13 +84,14 @@ def _title(axes, title):
         axes[0].set_title(title)
 
 
-def _record_accel(name, record, dt, units="g"):
+def _record_accel(name, record, dt, units="g", why=""):
     """(time s, acceleration g) of a Record, or of samples in `units` (the names
-    :func:`seispulse.records.from_array` takes) at the time step dt (s)."""
+    :func:`seispulse.records.from_array` takes) at the time step dt (s); `why`: the
+    reason dt is needed, for the message."""
     from . import records
     if not isinstance(record, records.Record):
         if dt is None:
-            raise InvalidInputError(f"dt: the time step of {name} (s, > 0) is required")
+            raise InvalidInputError(f"dt: the time step of {name} (s, > 0) is required{why}")
         acc = _core.as_float_array(name, record)
         if acc.ndim != 1:
             raise InvalidInputError(f"{name}: must be a 1-d array of samples "
@@ -103,7 +103,7 @@ def _record_accel(name, record, dt, units="g"):
 # ------------------------------------------------------------------ spectra
 
 def spectra(source, dt=None, periods=None, damping=None, quantity="psa", xscale="log",
-            g=STANDARD_GRAVITY, peaks="exact", ax=None, title=None):
+            g=None, peaks=None, ax=None, title=None):
     """Response spectra for several dampings on one axes.
 
     Parameters
@@ -121,11 +121,13 @@ def spectra(source, dt=None, periods=None, damping=None, quantity="psa", xscale=
         Damping ratio(s) of the computed spectra (default 0.02, 0.05, 0.10).
     quantity : {'psa', 'sa', 'psv', 'sv', 'sd'}
         The ordinate: (pseudo-)acceleration in g (m/s^2 for a PulseSpectrum),
-        (pseudo-)velocity in m/s, displacement in m.
+        (pseudo-)velocity in m/s, displacement in m (the units the spectrum's table
+        gives).
     xscale : {'log', 'linear'}
         The period axis.
     g, peaks
-        As :func:`seispulse.sdof.spectrum` (g in m/s^2).
+        As :func:`seispulse.sdof.spectrum` (g in m/s^2; default: its defaults); only
+        for a record.
     ax : matplotlib Axes, optional
         Draw there instead of on a new figure.
     title : str, optional
@@ -144,22 +146,24 @@ def spectra(source, dt=None, periods=None, damping=None, quantity="psa", xscale=
         raise InvalidInputError("source: must be a Record, samples in g, a sdof.Spectrum or a "
                                 f"sdof.PulseSpectrum (got {type(source).__name__})")
     if computed:
-        if periods is not None or damping is not None or dt is not None:
-            raise InvalidInputError("periods, damping, dt: only for a record (the spectrum "
-                                    "given already has them)")
+        if any(v is not None for v in (periods, damping, dt, g, peaks)):
+            raise InvalidInputError("periods, damping, dt, g, peaks: only for a record (the "
+                                    "spectrum given was computed with its own)")
         spec = source
     else:
         if title is None and hasattr(source, "name"):
             title = source.name
+        options = {k: v for k, v in (("g", g), ("peaks", peaks)) if v is not None}
         spec = sdof.spectrum(source, dt, DEFAULT_PERIODS if periods is None else periods,
-                             DEFAULT_DAMPINGS if damping is None else damping, g=g, peaks=peaks)
+                             DEFAULT_DAMPINGS if damping is None else damping, **options)
     fig, (axis,) = _figure("spectra", ax, 1, height=4.2)
     per = np.atleast_1d(np.asarray(spec.periods, float))
     values = np.asarray(getattr(spec, quantity), float)
+    unit = {field: u for field, _, u in type(spec)._COLUMNS}[quantity]   # the table's
+    ylabel = QUANTITIES[quantity] + (" / g" if quantity == "psa" and unit == "g" else "")
     if isinstance(spec, sdof.PulseSpectrum):
-        units, curves, labels = _PULSE_UNITS, values.reshape(1, -1), [None]
+        curves, labels = values.reshape(1, -1), [None]
     else:
-        units = _RECORD_UNITS
         dampings = np.atleast_1d(spec.damping)
         curves = values.reshape(dampings.size, per.size)
         labels = [f"zeta = {100 * z:g} %" for z in dampings]
@@ -169,7 +173,7 @@ def spectra(source, dt=None, periods=None, damping=None, quantity="psa", xscale=
         axis.plot(per[keep][order], curve[keep][order], label=label)
     axis.set_xscale(xscale)
     axis.set_xlabel("period T (s)")
-    axis.set_ylabel(f"{QUANTITIES[quantity]} ({units[quantity]})")
+    axis.set_ylabel(f"{ylabel} ({unit})")
     axis.grid(True, which="both", linewidth=0.3)
     _legend(axis)
     _title([axis], title)
@@ -206,7 +210,9 @@ def _newmark_parts(result, record, dt):
     if record is not None:
         if dt is None and t.size > 1:
             dt = t[1] - t[0]   # the result's step
-        t_rec, acc = _record_accel("record", record, dt)
+        t_rec, acc = _record_accel("record", record, dt,
+                                   why=" (the result's history has one sample, so its step "
+                                   "cannot be taken)")
         if acc.shape != t.shape:
             raise InvalidInputError(f"record: must have the {t.size} samples of the result")
     return t, t_rec, acc
@@ -240,7 +246,10 @@ def newmark(result, record=None, ky=None, ky_up=None, dt=None, ax=None, title=No
     matplotlib.figure.Figure
         Panels, top to bottom: acceleration (g), relative velocity u' (m/s),
         sliding displacement u (m) against t (s from the first sample); positive
-        downslope.
+        downslope. When the block still slides at the last sample (the exact rule goes
+        on until it stops), the history ends there: the end of the run-out, the
+        result's final_disp at t_end (and u' = 0 there), is marked with a point and
+        joined to the last sample by a dotted straight line (not the path).
     """
     t, t_rec, acc = _newmark_parts(result, record, dt)
     hea = getattr(result, "hea", None)   # a flexible mass's
@@ -256,12 +265,33 @@ def newmark(result, record=None, ky=None, ky_up=None, dt=None, ax=None, title=No
     ax_v.axhline(0.0, color="0.8", linewidth=0.8)
     ax_v.set_ylabel("relative velocity (m/s)")
     ax_u.plot(t, result.disp, color="C1", label="sliding displacement u")
+    _run_out(ax_v, ax_u, t, result)
     ax_u.set_ylabel("sliding displacement (m)")
     ax_u.set_xlabel("time t (s)")
     if title is None and hasattr(record, "name"):
         title = record.name
     _title(axes, title)
     return fig
+
+
+def _run_out(ax_v, ax_u, t, result, legend=True):
+    """Mark the end of a slide that goes on after the last sample: (t_end, final_disp) on
+    the u panel, (t_end, 0) on the u' panel (ax_v; None: none), each joined to the last
+    sample by a dotted straight line (not the path); the u panel's label says so."""
+    disp, vel = np.asarray(result.disp, float), np.asarray(result.vel, float)
+    if t.size == 0 or (result.t_end <= t[-1] and result.final_disp == disp[-1]):
+        return
+    t_end = max(float(result.t_end), float(t[-1]))
+    ax_u.plot([t[-1], t_end], [disp[-1], result.final_disp], color="C1", linestyle=":",
+              linewidth=1.0)
+    ax_u.plot([t_end], [result.final_disp], "o", color="C1", markersize=4,
+              label=f"run-out after the record: final u = {result.final_disp:.4g} m "
+                    f"at t = {t_end:.4g} s")
+    if ax_v is not None:
+        ax_v.plot([t[-1], t_end], [vel[-1], 0.0], color="C2", linestyle=":", linewidth=1.0)
+        ax_v.plot([t_end], [0.0], "o", color="C2", markersize=4)
+    if legend:
+        _legend(ax_u, "upper left")
 
 
 def _flexible_pair(result, record=None, ax=None):
@@ -284,6 +314,7 @@ def _flexible_pair(result, record=None, ax=None):
     _accel_panel(ax_a, t_rec, acc, t, result.hea, result.ky, result.ky_up)
     ax_a.legend(loc="upper right", fontsize="small")
     ax_s.plot(t, result.disp, color="C1", label="sliding s (m)")
+    _run_out(None, ax_s, t, result, legend=False)
     ax_s.set_ylabel("sliding displacement s (m)")
     ax_s.set_xlabel("t (s)")
     ax_s.legend(loc="lower right" if ax_s is not ax_a else "upper left", fontsize="small")
@@ -297,17 +328,14 @@ def _param(params, name):
 
 
 def _pulse_end(p):
-    """The time (s) at which a pulse of define() is over."""
-    code, params = p.code, p.params
-    if code == _f.PULSE_EXPONENTIAL:
-        return _param(params, "DURATION") * (2.0 if _param(params, "FULL") else 1.0)
-    if code in (_f.PULSE_SINE_CYCLE, _f.PULSE_COSINE_CYCLE):
-        return _param(params, "DURATION") * _param(params, "CYCLES")
-    if code == _f.PULSE_RICKER:
-        return _param(params, "T0") + 1.5 / _param(params, "FREQ")
-    if code == _f.PULSE_MP:
-        return _param(params, "T0") + _param(params, "GAMMA") / (2.0 * _param(params, "FREQ"))
-    return _param(params, "DURATION")
+    """The time (s) at which a pulse of define() is over: the library's pulse_end_time;
+    for the Ricker wavelet (never exactly zero) t0 + 1.5/f, where its tail is below
+    1e-7 of the peak."""
+    t_end, stat, msg = sp_pulse_end_time(p.code, np.asarray(p.params, float))
+    _core.raise_for_status(stat, msg)
+    if p.code == _f.PULSE_RICKER:
+        return _param(p.params, "T0") + 1.5 / _param(p.params, "FREQ")
+    return float(t_end)
 
 
 def _pulse_history(p, t):
@@ -344,7 +372,9 @@ def pulse(p, t=None, dimensionless=False, g=STANDARD_GRAVITY, ax=None, title=Non
         The history is :func:`seispulse.pulse.exp_pulse`'s (a/A_g, v/(A_g t_d),
         d/(A_g t_d^2) against t/t_d): label the axes so.
     g : float
-        Gravity (m/s^2) of the acceleration's second axis in g.
+        Gravity (m/s^2) of the acceleration's second axis in g (a Pulse keeps its
+        acceleration in m/s^2, not the g of an ``amp_unit='g'`` definition: give that g
+        here).
     ax : sequence of three matplotlib Axes, optional
     title : str, optional
         Default: the pulse's kind.
@@ -420,11 +450,12 @@ def rocking(run, block=None, excitation=None, dt=None, units="m/s2", ax=None, ti
     Returns
     -------
     matplotlib.figure.Figure
-        Panels: ground acceleration a_g (g: a pulse or samples in SI units over the
-        block's g, a Record or samples in g as they are), theta (rad; theta/alpha on the right),
-        angular velocity theta' (rad/s) against t (s); impacts marked on theta; for a
-        block that overturned, a dotted line at its t_end (after it simulate reports
-        theta = +-pi/2 and theta' = 0).
+        Panels: ground acceleration a_g (g of the block: a pulse or samples in SI units
+        over the block's g, a Record or samples in standard g converted to it; samples in
+        g as they are), theta (rad; theta/alpha on the right), angular velocity theta'
+        (rad/s) against t (s); impacts marked on theta; for a block that overturned, a
+        dotted line at its t_end (after it simulate reports theta = +-pi/2 and
+        theta' = 0: the state at rest on its side, not a motion).
     """
     from . import pulse as pl
     from . import records
@@ -443,9 +474,9 @@ def rocking(run, block=None, excitation=None, dt=None, units="m/s2", ax=None, ti
             exc = (t, _pulse_history(excitation, t)[0] / g)
         else:
             t_exc, acc = _record_accel("excitation", excitation, dt, units)
-            if not isinstance(excitation, records.Record) and \
+            if isinstance(excitation, records.Record) or \
                     records._unit_code(units) != _f.UNITS_G:
-                acc = acc * (STANDARD_GRAVITY / g)   # SI samples: in units of the run's g
+                acc = acc * (STANDARD_GRAVITY / g)   # in standard g: in units of the run's g
             exc = (t_exc, acc)
     fig, axes = _figure("rocking", ax, 3 if exc is not None else 2)
     if exc is not None:
@@ -502,8 +533,8 @@ def overturning_map(classes, freq_ratio, amp_ratio, ax=None, title=None, legend=
                     fontsize="small", frameon=False)
     else:
         axis.legend(handles=handles, loc="upper right", fontsize="small", framealpha=0.9)
-    axis.set_xlabel("omega_p / p")
-    axis.set_ylabel("a_p / (g tan alpha)")
+    axis.set_xlabel("omega_p / p (-)")
+    axis.set_ylabel("a_p / (g tan alpha) (-)")
     if title:
         axis.set_title(title)
     return fig
@@ -514,9 +545,9 @@ def overturning_map(classes, freq_ratio, amp_ratio, ax=None, title=None, legend=
 #: Labels of the columns of :class:`seispulse.walls.PressureProfile` in :func:`walls`.
 _PROFILE_LABELS = (("static", "static, Coulomb K gamma z"),
                    ("mo_dynamic", "M-O increment (uniform)"),
-                   ("ec8_rigid", "EN 1998-5 rigid wall"),
-                   ("vy", "Veletsos-Younan |p|"),
-                   ("one_term", "one-term |p|"))
+                   ("ec8_rigid", "EN 1998-5 rigid wall increment"),
+                   ("vy", "Veletsos-Younan |p| increment"),
+                   ("one_term", "one-term |p| increment"))
 
 
 def walls(profile, comparison=None, ax=None, title=None):
@@ -562,14 +593,15 @@ def walls(profile, comparison=None, ax=None, title=None):
     ax_p.set_xlabel("pressure on the wall (kPa)")
     ax_p.set_ylabel("depth below the top (m)")
     ax_p.grid(True, linewidth=0.3)
-    _legend(ax_p)
+    _legend(ax_p, "lower left")
     if comparison is not None:
         from matplotlib.patches import Patch
         ax_q = axes[1]
         thrust = np.asarray(comparison.thrust, float)
         rows = np.arange(thrust.size)
         colours = ("0.55", "C0")   # totals (static, M-O total), dynamic increments
-        ax_q.barh(rows, thrust, color=[colours[0] if k < 2 else colours[1] for k in rows])
+        ax_q.barh(rows, thrust, color=[colours[0] if m in wl.TOTAL_ROWS else colours[1]
+                                       for m in comparison.method])
         for k, (q, z) in enumerate(zip(thrust, comparison.z)):
             ax_q.annotate(f" z = {z:.2f} m", (max(q, 0.0), k), va="center", fontsize="small")
         ax_q.set_yticks(rows, list(comparison.method), fontsize="small")

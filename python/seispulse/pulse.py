@@ -130,14 +130,14 @@ def exp_pulse_impulse_amplitude(beta):
 def _amplitude(amp, amp_unit, g):
     """Amplitude in m/s^2 from a value in ``amp_unit``: 'g' (times g), 'm/s2' (as is),
     'cm/s2' (/ 100), with the aliases 'm/s^2', 'cm/s^2', 'gal', any case (the library's
-    one vocabulary of acceleration units, as in the driver)."""
+    one vocabulary of acceleration units, as in the driver): amp times g times the
+    library's factor to g (accel_unit_factor)."""
+    from .records import accel_unit_factor
     code = _core.accel_unit_code("amp_unit", amp_unit)
-    if code == _fortran_codes.UNITS_G:
-        g = _core.check_positive("g", g, " (m/s^2)")
-        return _core.as_float_array("amp", amp) * g
-    if code == _fortran_codes.UNITS_CM_S2:
-        return _core.as_float_array("amp", amp) / 100.0
-    return amp
+    if code == _fortran_codes.UNITS_M_S2:
+        return amp        # as given: no rounding through g
+    g = _core.check_positive("g", g, " (m/s^2)")
+    return _core.as_float_array("amp", amp) * (g * accel_unit_factor(amp_unit, g))
 
 
 def _evaluate(kind, t, rename=None, **params):

@@ -58,9 +58,6 @@ _FORMAT_NAMES = {code: name for name, code in _FORMAT_CODES.items()}
 #: the library's one vocabulary, as in the driver and for pulses).
 UNITS = ("g", "m/s2", "cm/s2")
 
-_UNIT_TO_G = {_f.UNITS_G: 1.0, _f.UNITS_M_S2: STANDARD_GRAVITY,
-              _f.UNITS_CM_S2: 100.0 * STANDARD_GRAVITY}
-
 # sp_record_read keeps the record in Fortran until sp_record_fetch: one reader at a time.
 _READ_LOCK = threading.Lock()
 
@@ -326,12 +323,13 @@ def read(path, fmt="auto", units=None, dt=None):
 
 def from_array(accel, dt, units="g", name="record"):
     """A :class:`Record` from samples in ``units`` ('g', 'm/s2', 'cm/s2'; aliases
-    'm/s^2', 'cm/s^2', 'gal') at time step ``dt`` (s); stored in g (divided by
-    STANDARD_GRAVITY or 100 STANDARD_GRAVITY, as the reader does)."""
-    ucode = _unit_code(units)
+    'm/s^2', 'cm/s^2', 'gal') at time step ``dt`` (s); stored in g (times
+    :func:`accel_unit_factor`: divided by STANDARD_GRAVITY or 100 STANDARD_GRAVITY, as
+    the reader does)."""
+    factor = accel_unit_factor(units)
     arr = _core.as_float_array("accel", accel)
-    if ucode != _f.UNITS_G:
-        arr = arr / _UNIT_TO_G[ucode]
+    if factor != 1.0:
+        arr = arr * factor
     return Record(arr, dt, name=name)
 
 
@@ -356,8 +354,10 @@ def _sample_files():
         if os.path.isdir(folder):
             return {f[:-4]: os.path.join(folder, f) for f in sorted(os.listdir(folder))
                     if f.lower().endswith(".csv")}
-    raise _core.missing_package(_SAMPLE_PACKAGE, purpose + f": no {_SAMPLE_DIR} folder in "
-                                "the installed pyslammer; reinstall it")
+    raise ImportError(f"{purpose}: the installed {_SAMPLE_PACKAGE} "
+                      f"({', '.join(spec.submodule_search_locations)}) has no {_SAMPLE_DIR} "
+                      f"folder; reinstall it: pip install --force-reinstall {_SAMPLE_PACKAGE}",
+                      name=_SAMPLE_PACKAGE)
 
 
 def sample(name=None):

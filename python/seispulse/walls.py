@@ -31,6 +31,8 @@ COMPARISON_ROWS = ("static active (Coulomb)", "Mononobe-Okabe total, EN 1998-5 E
                    "Mononobe-Okabe dynamic increment", "Seed-Whitman increment (3/4 kh)",
                    "Wood (1973) rigid wall", "EN 1998-5 rigid wall", "Veletsos-Younan rigid wall",
                    "one-term solution")
+#: The rows of :data:`COMPARISON_ROWS` whose thrust is a total (the others: increments).
+TOTAL_ROWS = COMPARISON_ROWS[:2]
 
 
 class Comparison(TableResult, namedtuple("Comparison", ["method", "thrust", "z", "moment",
@@ -61,7 +63,8 @@ PressureProfile.__doc__ = """Pressures on the wall (kPa) against ``depth`` below
 (resultant at H/2); ``ec8_rigid`` ag S/g gamma H; ``vy`` and ``one_term`` the moduli of
 the elastic pressures. Water pressures are not included."""
 
-__all__ = (["COMPARISON_ROWS", "Comparison", "PressureProfile", "comparison", "pressure_profile"]
+__all__ = (["COMPARISON_ROWS", "TOTAL_ROWS", "Comparison", "PressureProfile", "comparison",
+            "pressure_profile"]
            + list(_walls_vy.__all__) + list(_walls_one_term.__all__))
 
 

@@ -75,6 +75,7 @@ def test_spectra_of_a_record(rec, tmp_path):
         "zeta = 2 %", "zeta = 5 %", "zeta = 10 %"]
     ref = sdof.spectrum(rec, periods=periods, damping=[0.02, 0.05, 0.1])
     order = [2, 4, 0, 3]   # T > 0 ascending: the log axis leaves T = 0 out
+    assert len(axis.get_lines()) == 3
     for k, line in enumerate(axis.get_lines()):
         np.testing.assert_array_equal(line.get_xdata(), np.array(periods)[order])
         np.testing.assert_array_equal(line.get_ydata(), ref.psa[k][order])
@@ -95,6 +96,7 @@ def test_spectra_given(rec, quantity, unit, tmp_path):
     rendered(fig, tmp_path / "s.png")
     axis = fig.axes[0]
     assert axis.get_ylabel().endswith(unit)
+    assert len(axis.get_lines()) == 2
     for k, line in enumerate(axis.get_lines()):
         np.testing.assert_array_equal(line.get_ydata(), getattr(spec, quantity)[k])
 
@@ -240,6 +242,105 @@ def test_pulse_history(tmp_path):
     assert fig.axes[0].get_title() == "Ricker"
 
 
+def test_newmark_run_out_after_the_record(tmp_path):
+    """A record that ends mid-slide: the exact rule slides on until the block stops; the
+    plot marks final_disp at t_end, both from the closed form of this record."""
+    acc = np.r_[np.zeros(5), np.full(50, 0.5)]   # g; a ramp 0 -> 0.5 g over 0.04..0.05 s
+    dt, ky = 0.01, 0.1
+    r = newmark.rigid(acc, dt=dt, ky=ky, history=True)
+    # onset where the ramp reaches ky: t0 = 0.04 + 0.01 ky/0.5; on the ramp u'' = 50 g (t - t0)
+    t0 = 0.04 + dt * ky / 0.5
+    v5, u5 = 25.0 * G * (0.05 - t0) ** 2, 50.0 * G / 6.0 * (0.05 - t0) ** 3
+    tau = 0.54 - 0.05                             # then u'' = (0.5 - ky) g to the last sample
+    v_n = v5 + (0.5 - ky) * G * tau
+    u_n = u5 + v5 * tau + 0.5 * (0.5 - ky) * G * tau ** 2
+    t_end, final = 0.54 + v_n / (ky * G), u_n + v_n ** 2 / (2.0 * ky * G)   # u'' = -ky g
+    assert (r.t_end, r.final_disp) == (pytest.approx(t_end, rel=1e-12),
+                                       pytest.approx(final, rel=1e-12))
+    assert r.disp[-1] < 0.25 * final       # the history alone shows a fifth of it
+    fig = plot.newmark(r, acc)
+    rendered(fig, tmp_path / "run_out.png")
+    ax_a, ax_v, ax_u = fig.axes
+    drawn = np.concatenate([ln.get_ydata() for ln in ax_u.get_lines()])
+    assert drawn.max() == pytest.approx(final, rel=1e-12)
+    end = [ln for ln in ax_u.get_lines() if np.size(ln.get_xdata()) == 1]
+    assert len(end) == 1
+    assert (end[0].get_xdata()[0], end[0].get_ydata()[0]) == (r.t_end, r.final_disp)
+    assert ax_u.get_xlim()[1] >= t_end
+    (text,) = [t.get_text() for t in ax_u.get_legend().get_texts()
+               if t.get_text().startswith("run-out")]
+    assert f"{final:.4g} m" in text and f"{t_end:.4g} s" in text
+    stop = [ln for ln in ax_v.get_lines() if np.size(ln.get_xdata()) == 1]
+    assert len(stop) == 1 and stop[0].get_ydata()[0] == 0.0
+    # a record that ends at rest has no run-out mark
+    quiet = newmark.rigid(np.r_[acc, np.zeros(400)], dt=dt, ky=ky, history=True)
+    assert quiet.t_end < quiet.time[-1]
+    fig = plot.newmark(quiet)
+    assert not [ln for ln in fig.axes[-1].get_lines() if np.size(ln.get_xdata()) == 1]
+
+
+def test_newmark_two_way_draws_both_yields(rec):
+    r = newmark.rigid(rec, ky=0.05, mode="both", history=True)
+    assert r.ky_up == 0.05
+    fig = plot.newmark(r, rec)
+    levels = sorted(float(ln.get_ydata()[0]) for ln in fig.axes[0].get_lines()
+                    if np.size(ln.get_ydata()) == 2 and ln.get_ydata()[0] == ln.get_ydata()[1])
+    assert levels == [-0.05, 0.05]
+    one_way = plot.newmark(newmark.rigid(rec, ky=0.05, history=True), rec)
+    levels = [float(ln.get_ydata()[0]) for ln in one_way.axes[0].get_lines()
+              if np.size(ln.get_ydata()) == 2 and ln.get_ydata()[0] == ln.get_ydata()[1]]
+    assert levels == [0.05]
+
+
+def test_psa_label_matches_its_unit(rec):
+    """(2 pi/T)^2 SD is in m/s^2: in g the label divides by g."""
+    spec = sdof.spectrum(rec, periods=[0.1, 1.0], damping=0.05)
+    ylabel = plot.spectra(spec).axes[0].get_ylabel()
+    assert ylabel == "PSA = (2 pi/T)^2 SD / g (g)"
+    np.testing.assert_allclose(spec.psa, (2 * np.pi / spec.periods) ** 2 * spec.sd / G,
+                               rtol=1e-12)
+    p = pulse.define("half_sine", amp=0.3, amp_unit="g", duration=0.5)
+    ps = sdof.pulse_spectrum(p, [0.1, 1.0], damping=0.05)
+    assert plot.spectra(ps).axes[0].get_ylabel() == "PSA = (2 pi/T)^2 SD (m/s^2)"
+    assert plot.spectra(spec, quantity="psv").axes[0].get_ylabel() == \
+        "PSV = (2 pi/T) SD (m/s)"
+
+
+def test_spectra_refuses_options_of_a_record_for_a_spectrum(rec):
+    spec = sdof.spectrum(rec, periods=[0.1, 1.0], damping=0.05)
+    for kw in ({"g": 9.81}, {"peaks": "samples"}):
+        with pytest.raises(InvalidInputError, match="^periods, damping, dt, g, peaks: only"):
+            plot.spectra(spec, **kw)
+    # for a record they reach sdof.spectrum
+    fig = plot.spectra(rec, periods=[0.5], damping=0.05, peaks="samples", quantity="sa")
+    ref = sdof.spectrum(rec, periods=[0.5], damping=0.05, peaks="samples")
+    np.testing.assert_array_equal(fig.axes[0].get_lines()[0].get_ydata(), ref.sa[0])
+
+
+def test_rocking_units_non_ascii_and_record_in_the_blocks_g(rec):
+    blk = rocking.rectangular_block(0.1, 1.0, g=9.81)
+    run = rocking.simulate(blk, accel=rec.accel * G, dt=rec.dt, t=np.linspace(0, 2, 201))
+    with pytest.raises(InvalidInputError, match=r"^units = 'm/s\u00b2': .*\(allowed: g, "):
+        plot.rocking(run, blk, rec.accel * G, dt=rec.dt, units="m/s\u00b2")
+    fig = plot.rocking(run, blk, rec)   # standard g, drawn in the block's g
+    np.testing.assert_allclose(lines_of(fig.axes[0])[0].get_ydata(), rec.accel * G / 9.81,
+                               rtol=1e-15)
+
+
+@pytest.mark.parametrize("kind, params, end", [
+    ("half_sine", dict(duration=0.5), 0.5),
+    ("sine_cycle", dict(period=0.4, cycles=3), 1.2),
+    ("exponential", dict(td=0.3, beta=2.0, full=True), 0.6),
+    ("ricker", dict(freq=2.0, t0=1.0), 1.0 + 1.5 / 2.0),
+])
+def test_pulse_default_times_end_at_the_pulse_end(kind, params, end):
+    """The default grid runs to 1.25 times the library's pulse end (the Ricker wavelet:
+    t0 + 1.5/f)."""
+    p = pulse.define(kind, amp=1.0, **params)
+    line = plot.pulse(p).axes[0].get_lines()[0]
+    assert line.get_xdata()[-1] == pytest.approx(1.25 * end, rel=1e-14)
+
+
 # ------------------------------------------------------------------ walls
 
 WALL = dict(height=6.0, gamma=20.0, phi_deg=32.0, kh=0.2, kv=0.1, alpha_s=0.24)
@@ -254,6 +355,7 @@ def test_walls(tmp_path):
     assert ax_p.get_xlabel() == "pressure on the wall (kPa)"
     assert ax_p.get_ylabel() == "depth below the top (m)"
     assert ax_p.get_ylim()[0] > ax_p.get_ylim()[1]   # depth grows downward
+    assert len(ax_p.get_lines()) == 5
     for line, field in zip(ax_p.get_lines(), ("static", "mo_dynamic", "ec8_rigid", "vy",
                                               "one_term")):
         np.testing.assert_array_equal(line.get_xdata(), getattr(prof, field))
@@ -276,9 +378,10 @@ def test_overturning_map(tmp_path):
     freq, amp = np.linspace(0.5, 6, 12), np.linspace(0.5, 4, 9)
     classes = rocking.overturning_map("sine_cycle", freq, amp, alpha=0.2)
     fig = plot.overturning_map(classes, freq, amp, title="sine cycle")
-    legends = rendered(fig, tmp_path / "map.png", units=False)
+    legends = rendered(fig, tmp_path / "map.png")
     (axis,) = fig.axes
-    assert (axis.get_xlabel(), axis.get_ylabel()) == ("omega_p / p", "a_p / (g tan alpha)")
+    assert (axis.get_xlabel(), axis.get_ylabel()) == ("omega_p / p (-)",
+                                                      "a_p / (g tan alpha) (-)")
     assert [t.get_text() for t in legends[0].get_texts()] == list(rocking.MAP_CLASSES)
     # below the cells, not over them
     renderer = fig.canvas.get_renderer()

@@ -127,7 +127,7 @@ def test_plot_needs_matplotlib_or_draws():
     import matplotlib
     matplotlib.use("Agg")
     ax = R.plot_overturning_map(np.zeros((2, 3), int), [1, 2, 3], [1, 2])
-    assert ax.get_xlabel() == "omega_p / p"
+    assert ax.get_xlabel() == "omega_p / p (-)"
 
 
 @pytest.mark.parametrize("call, pattern", [

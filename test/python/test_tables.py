@@ -143,6 +143,31 @@ def test_newmark_batch_table(quake):
     assert list(asym["ky_up"]) == [0.3, 0.3] and asym.attrs["units"]["ky_up"] == "g"
 
 
+def test_newmark_batch_table_shows_what_varies(quake):
+    """k_down (or k_up) varying between rows is a column: each row is that run alone."""
+    kd = [0.8, 1.0, 1.2]
+    r = newmark.rigid(quake, ky=0.05, mode="asym", ky_up=0.3, k_down=kd)
+    np.testing.assert_array_equal(r.k_down, kd)
+    np.testing.assert_array_equal(r.k_up, [1.0, 1.0, 1.0])
+    rows = cells(str(r))
+    assert rows[0][:8] == ["ky", "(g)", "ky_up", "(g)", "k_down", "(-)", "k_up", "(-)"]
+    for k, f in enumerate(kd):
+        one = newmark.rigid(quake, ky=0.05, mode="asym", ky_up=0.3, k_down=f)
+        assert one.k_down == (None if f == 1.0 else f)   # factors of 1 alone: no column
+        assert rows[1 + k] == [g6(x) for x in (0.05, 0.3, f, 1.0, one.max_disp, one.final_disp,
+                                               one.u_max, one.u_min, one.max_vel, one.t_end)]
+    assert len({row[4] for row in rows[1:]}) == 3      # three different max_disp
+    # factors of 1 are left out; a two-way run's upslope yield is ky
+    plain = newmark.rigid(quake, ky=[0.05, 0.1], mode="asym", ky_up=0.3)
+    assert plain.k_down is None and plain.k_up is None
+    both = newmark.rigid(quake, ky=[0.05, 0.1], mode="both")
+    np.testing.assert_array_equal(both.ky_up, [0.05, 0.1])
+    assert cells(str(both))[0][:4] == ["ky", "(g)", "ky_up", "(g)"]
+    pytest.importorskip("pandas")
+    frame = r.to_frame()
+    assert list(frame["k_down"]) == kd and frame.attrs["units"]["k_down"] == "-"
+
+
 def test_newmark_single_notes_and_table_yield(quake):
     r = newmark.rigid(quake, ky=0.1, history=True, intervals=True)
     lines = str(r).splitlines()
@@ -187,7 +212,19 @@ def test_sample_lists_the_files():
     folder = pyslammer_folder()
     names = records.sample()
     assert names == tuple(sorted(p.stem for p in folder.glob("*.csv")))
-    assert "Kocaeli_1999_ATS-090" in names and len(names) >= 10
+    assert "Kocaeli_1999_ATS-090" in names and len(names) == 18   # as the README says
+
+
+def test_sample_without_its_folder_says_so(monkeypatch):
+    pyslammer_folder()
+    monkeypatch.setattr(records, "_SAMPLE_DIR", "no_such_folder")
+    with pytest.raises(ImportError) as info:
+        records.sample()
+    msg = str(info.value)
+    assert info.value.name == "pyslammer"
+    assert "has no no_such_folder folder" in msg and \
+        "pip install --force-reinstall pyslammer" in msg
+    assert "not installed" not in msg
 
 
 @pytest.mark.parametrize("name", ["Kobe_1995_TAK-090", "Kocaeli_1999_ATS-090.csv"])

@@ -36,6 +36,25 @@ def test_python_refuses_the_same_names(bad):
             call()
 
 
+@pytest.mark.parametrize("bad", ["m/s\u00b2", "cm/s\u00b2", "\u00b5g", None, 9.81])
+def test_non_ascii_or_not_a_str_names_the_argument_and_the_list(bad, tmp_path):
+    """f2py takes ASCII only: 'm/s²' (and a value that is no str) must still give the
+    library's InvalidInputError naming the argument, the value and the allowed names."""
+    calls = {"amp_unit": (lambda: pulse.half_sine(0.5, 2.0, 1.0, amp_unit=bad),
+                          lambda: pulse.define("half_sine", amp=2.0, amp_unit=bad,
+                                               duration=1.0)),
+             "units": (lambda: records.from_array(np.zeros(3), 0.01, units=bad),
+                       lambda: records.accel_unit_factor(bad))
+             + ((lambda: records.read(tmp_path / "none.txt", units=bad),) if bad is not None
+                else ())}   # read: None is the file's own unit
+    for name, entries in calls.items():
+        for call in entries:
+            with pytest.raises(InvalidInputError) as info:
+                call()
+            msg = str(info.value)
+            assert msg.startswith(f"{name} = {bad!r}: ") and msg.endswith(ALLOWED), msg
+
+
 def run(driver, tmp_path, text):
     (tmp_path / "u.nml").write_text(text)
     return subprocess.run([driver, "u.nml"], cwd=tmp_path, capture_output=True, text=True,
