@@ -65,7 +65,8 @@ def table(path, out, name=None):
     fig.text(0.15 / width, 1 - 0.15 / height, text, family="monospace", fontsize=size,
              va="top", ha="left")
     target = out / f"{name or Path(path).stem}.png"
-    fig.savefig(target, dpi=DPI, metadata=META)
+    # a tight box: the monospace width estimate above must never cut a long line
+    fig.savefig(target, dpi=DPI, metadata=META, bbox_inches="tight", pad_inches=0.1)
     plt.close(fig)
     return target
 
