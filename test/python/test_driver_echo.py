@@ -170,3 +170,15 @@ def test_failed_run_removes_other_analyses_tables_and_echo(driver, tmp_path):
                                     "&pulse kind = 'half_sine', duration = -1 /\n")
     assert run(driver, tmp_path, "b.nml").returncode == 2
     assert sorted(p.name for p in (tmp_path / "o").iterdir()) == []
+
+
+def test_no_two_examples_share_an_output_prefix():
+    """Every input/*.nml has its own output prefix: one example never overwrites, or
+    after an error removes, another's tables or echo file."""
+    prefixes = {}
+    for nml in INPUTS:
+        m = re.search(r"^[^!]*\boutput\s*=\s*'([^']*)'", nml.read_text(), flags=re.M)
+        assert m, nml.name
+        prefixes.setdefault(m.group(1), []).append(nml.name)
+    shared = {k: v for k, v in prefixes.items() if len(v) > 1}
+    assert not shared

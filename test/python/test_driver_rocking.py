@@ -238,8 +238,8 @@ def test_example_history(driver, source_root, tmp_path):
     run_example(driver, source_root, tmp_path, "rocking_block.nml")
     s = {k: v[0] for k, v in read_table(tmp_path / "out" / "rocking_block_rocking.csv").items()}
     proc = run_example(driver, source_root, tmp_path, "rocking_history.nml")
-    assert "out/rocking_block_rocking_history.csv" in proc.stdout
-    path = tmp_path / "out" / "rocking_block_rocking_history.csv"
+    assert "out/rocking_history.csv" in proc.stdout
+    path = tmp_path / "out" / "rocking_history.csv"
     h = read_table(path)
     assert path.read_text().splitlines()[0] == "t (s),a_g (m/s2),theta (rad),omega (rad/s)"
     # the text table: the CSV's numbers to 6 significant digits
