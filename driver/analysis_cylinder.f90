@@ -51,7 +51,7 @@ module driver_cylinder
                                      locate_run_message, map_kind, map_template, progress_t, &
                                      axes_names, map_axes_code, map_grids, map_axes_header, &
                                      map_table, rock_records, record_at, run_summary_kinds, &
-                                     map_class_names
+                                     map_class_names, run_outcome_names, map_class_line
     use driver_echo, only: echo_unit
     implicit none
     private
@@ -86,9 +86,6 @@ module driver_cylinder
     !> In the order of the BODY_* codes.
     character(len=6), parameter :: shape_names(4) = [character(len=6) :: 'solid', 'hollow', &
         'custom', 'block']
-    character(len=24), parameter :: outcome_names(0:5) = [character(len=24) :: 'rest', &
-        'no_uplift', 'overturn_no_impact', 'overturn_one_impact', 'overturn_many_impacts', &
-        'time_limit']
     character(len=16), parameter :: diff_names(0:3) = [character(len=16) :: 'same', &
         'only_cylinder', 'only_block', 'other_mode']
 
@@ -915,12 +912,12 @@ contains
         comments(6) = 'input: '//trim(path)
         call write_tables(prefix, 'cylinder', comments, summary_names(.false.), &
             summary_units(.false.), reshape(summary_row(s, run), [1, 13]), files, stat, &
-            errmsg, kinds=run_summary_kinds(13, 4, outcome_names, 7), summary=.true.)
+            errmsg, kinds=run_summary_kinds(13, 4, run_outcome_names, 7), summary=.true.)
         if (stat /= 0) then
             errmsg = path//': &run: output: '//errmsg
             return
         end if
-        comments(4) = 'outcome: '//trim(outcome_names(run%outcome))//', t_uplift = ' &
+        comments(4) = 'outcome: '//trim(run_outcome_names(run%outcome))//', t_uplift = ' &
                       //real_str(run%t_uplift)//' s, impacts: '//int_str(run%n_impacts) &
                       //', theta_max = '//real_str(run%theta_max)//' rad, theta_min = ' &
                       //real_str(run%theta_min)//' rad, t_end = '//real_str(run%t_end)//' s'
@@ -935,7 +932,7 @@ contains
             errmsg = path//': &run: output: '//errmsg
             return
         end if
-        write(output_unit, '(a)') 'cylinder: '//trim(outcome_names(run%outcome))
+        write(output_unit, '(a)') 'cylinder: '//trim(run_outcome_names(run%outcome))
         call say_written('cylinder summary', files)
         call say_written('cylinder history', files2)
     end subroutine do_history_pulse
@@ -1018,7 +1015,7 @@ contains
         comments(5 + nrec) = 'input: '//trim(path)
         call write_tables(prefix, 'cylinder', comments, summary_names(.true.), &
             summary_units(.true.), summary, files, stat, errmsg, labels=labels, &
-            kinds=run_summary_kinds(15, 6, outcome_names, 9))
+            kinds=run_summary_kinds(15, 6, run_outcome_names, 9))
         if (stat /= 0) then
             errmsg = path//': &run: output: '//errmsg
             return
@@ -1157,8 +1154,7 @@ contains
         comments(1) = 'seispulse analysis cylinder: overturning map, '//pulse_kind_name(code) &
                       //' pulse family, '//trim(model)//' model (seispulse_cylinder)'
         comments(2) = body_line(s)
-        comments(3) = 'class: safe, or overturns_* by the impacts before overturning; ' &
-                      //'undecided: the step budget ran out'
+        comments(3) = map_class_line
         comments(4) = 'freq_ratio = omega_p/p = 2 pi freq_hz/p (T_p: t_d of the ' &
                       //'exponential pulse, the period of sine/cosine cycles, the length ' &
                       //'of the others; Ricker: f_p); amp_ratio = a_p/(g tan theta_c) = ' &

@@ -40,7 +40,8 @@ module driver_rocking
     use driver_axis, only: axis_values
     use driver_rocking_common, only: check_run_options, restitution_and_model, &
                                      locate_run_message, map_kind, map_template, progress_t, &
-                                     map_class_names, rock_records
+                                     map_class_names, rock_records, run_outcome_names, &
+                                     map_class_line
     use driver_echo, only: echo_unit
     implicit none
     private
@@ -64,9 +65,6 @@ module driver_rocking
         'amp_ratio', 'amp_range', 'amp_count', 'cycles']
     character(len=8), parameter :: what_names(3) = [character(len=8) :: 'summary', &
         'history', 'map']
-    character(len=24), parameter :: outcome_names(0:5) = [character(len=24) :: 'rest', &
-        'no_uplift', 'overturn_no_impact', 'overturn_one_impact', 'overturn_many_impacts', &
-        'time_limit']
 
     !> Most values on one axis of a map (freq_ratio, amp_ratio).
     integer, parameter :: max_list = 1000
@@ -518,13 +516,13 @@ contains
             [character(len=6) :: 'rad', 'rad/s', '-', '-', '-', '-', 's', 's', '-', 's', &
              'rad', 'rad', '-', '-', 's', '-', 's', 's', 's', '-', 's'], &
             reshape(row, [1, size(row)]), files, stat, errmsg, &
-            kinds=[character(len=256) :: '', '', '', '', '', category_kind(outcome_names), &
+            kinds=[character(len=256) :: '', '', '', '', '', category_kind(run_outcome_names), &
                    '', '', 'int', '', '', '', '', '', '', category_kind(names)], summary=.true.)
         if (stat /= 0) then
             errmsg = path//': &run: output: '//errmsg
             return
         end if
-        write(output_unit, '(a)') 'rocking: '//trim(outcome_names(run%outcome))
+        write(output_unit, '(a)') 'rocking: '//trim(run_outcome_names(run%outcome))
         call say_written('rocking table', files)
     end subroutine do_summary
 
@@ -603,7 +601,7 @@ contains
         table(:, 1) = t
 
         call block_comments(pin, blk, comments(1:3))
-        comments(4) = 'outcome: '//trim(outcome_names(run%outcome))//', t_uplift = ' &
+        comments(4) = 'outcome: '//trim(run_outcome_names(run%outcome))//', t_uplift = ' &
                       //real_str(run%t_uplift)//' s, impacts: '//int_str(run%n_impacts) &
                       //', theta_max = '//real_str(run%theta_max)//' rad, theta_min = ' &
                       //real_str(run%theta_min)//' rad, t_end = '//real_str(run%t_end)//' s'
@@ -619,7 +617,7 @@ contains
             errmsg = path//': &run: output: '//errmsg
             return
         end if
-        write(output_unit, '(a)') 'rocking: '//trim(outcome_names(run%outcome))
+        write(output_unit, '(a)') 'rocking: '//trim(run_outcome_names(run%outcome))
         call say_written('rocking history', files)
     end subroutine do_history
 
@@ -717,8 +715,7 @@ contains
         end do
         comments(1) = 'seispulse analysis rocking: overturning map, '//pulse_kind_name(code) &
                       //' pulse family, '//trim(model)//' model (seispulse_rocking_sim)'
-        comments(2) = 'class: safe, overturns without impact, after one impact, after more ' &
-                      //'impacts, or undecided (the step budget ran out)'
+        comments(2) = map_class_line
         comments(3) = 'freq_ratio = omega_p/p, omega_p = 2 pi/T_p (T_p: t_d of the ' &
                       //'exponential pulse, the period of sine/cosine cycles, the length ' &
                       //'of the others; Ricker: omega_p = 2 pi f_p)'
@@ -932,7 +929,7 @@ contains
                 comments(nh + ir) = trim(comments(nh + ir))//'; FAILED: '//outs(ir)%message
             else if (history .and. .not. failed(ir)) then
                 comments(nh + ir) = trim(comments(nh + ir))//'; outcome: ' &
-                    //trim(outcome_names(nint(summary(ir, 5))))//', impacts: ' &
+                    //trim(run_outcome_names(nint(summary(ir, 5))))//', impacts: ' &
                     //int_str(nint(summary(ir, 8)))//', theta_max = ' &
                     //real_str(summary(ir, 10))//' rad, theta_min = ' &
                     //real_str(summary(ir, 11))//' rad, t_end = '//real_str(summary(ir, 14)) &
@@ -947,7 +944,7 @@ contains
     function record_kinds() result(kinds)
         character(len=160) :: kinds(n_rec_cols + 1)
         kinds = ''
-        kinds(6) = category_kind(outcome_names)
+        kinds(6) = category_kind(run_outcome_names)
         kinds(9) = 'int'
         kinds(n_rec_cols + 1) = category_kind(status_names)
     end function record_kinds

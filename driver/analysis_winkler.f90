@@ -33,7 +33,7 @@ module driver_winkler
                          block_winkler_pushover, winkler_pushover_t, winkler_master_curve, &
                          WP_THETA, WP_FORCE, WP_NCOL, DAMP_ROCKING, DAMP_VERTICAL, &
                          winkler_model_t, winkler_model, winkler_run_t, winkler_rock, &
-                         winkler_overturning_map, winkler_outcome_name, winkler_output_name, &
+                         winkler_overturning_map, winkler_output_name, &
                          WR_NOUT, WR_RUN_TIME_LIMIT, clay_bearing, degradation_coeffs_t, &
                          inelastic_pushover, inelastic_pushover_t, IP_NCOL, IP_FORCE, &
                          moment_capacity_circle, CAPACITY_TC00_PEAK, CAPACITY_EFFECTIVE_WIDTH
@@ -51,7 +51,8 @@ module driver_winkler
     use driver_axis, only: axis_values
     use driver_rocking_common, only: check_run_options, locate_run_message, map_kind, &
                                      map_template, progress_t, axes_names, map_axes_code, &
-                                     map_grids, map_axes_header, map_table, run_summary_kinds
+                                     map_grids, map_axes_header, map_table, run_summary_kinds, &
+                                     map_class_names, winkler_outcome_names, map_class_line
     use driver_echo, only: echo_unit
     implicit none
     private
@@ -1076,13 +1077,9 @@ contains
     function summary_kinds(records) result(kinds)
         logical, intent(in) :: records
         character(len=:), allocatable :: kinds(:)
-        character(len=24) :: onames(0:4)
-        integer :: j, k0
-        do j = 0, 4
-            onames(j) = winkler_outcome_name(j)
-        end do
+        integer :: k0
         k0 = merge(2, 0, records)
-        kinds = run_summary_kinds(k0 + 14, k0 + 5, onames, k0 + 8)
+        kinds = run_summary_kinds(k0 + 14, k0 + 5, winkler_outcome_names, k0 + 8)
     end function summary_kinds
 
     !> Header lines shared by the tables of a history.
@@ -1187,14 +1184,14 @@ contains
         comments(6) = 'NaN: no such event; overturned or a time limit: NaN after t_end'
         comments(7) = 'input: '//trim(path)
         lines = comments
-        lines(6) = 'outcome: '//winkler_outcome_name(run%outcome)//', impacts: ' &
+        lines(6) = 'outcome: '//trim(winkler_outcome_names(run%outcome))//', impacts: ' &
                    //int_str(run%n_impacts)//', theta_max = '//real_str(run%theta_max) &
                    //' rad, t_end = '//real_str(run%t_end)//' s'
         call history_header(.false., names, units)
         call write_table_pair(path, prefix, 'winkler', comments, summary_names(.false.), &
             summary_units(.false.), reshape(summary_row(s, run), [1, 14]), 'winkler summary', &
             'winkler_history', lines, names, units, table, 'winkler history', stat, errmsg, &
-            note='winkler: '//winkler_outcome_name(run%outcome), &
+            note='winkler: '//trim(winkler_outcome_names(run%outcome)), &
             kinds1=summary_kinds(.false.), summary1=.true.)
     end subroutine do_history_pulse
 
@@ -1329,7 +1326,6 @@ contains
         character(len=128), allocatable :: kinds(:)
         real(dp), allocatable :: xs(:), ys(:), table(:, :)
         integer, allocatable :: classes(:, :), classes_r(:, :), diff(:, :)
-        character(len=24) :: onames(0:3)
         type(pulse_t) :: tpl
         integer :: code, i, st, axes_code
         type(progress_t) :: progress
@@ -1387,20 +1383,16 @@ contains
             call map_table(axes_code, xs, ys, s%body%p, s%body%theta_c, classes, table)
             call map_axes_header(axes_code, names, units)
         end if
-        do i = 0, 3
-            onames(i) = winkler_outcome_name(i)
-        end do
         ! the classes of both maps by the same names
-        kinds = [character(len=128) :: '', '', '', '', category_kind(onames)]
-        if (compare_rigid) kinds = [character(len=128) :: kinds, category_kind(onames), &
+        kinds = [character(len=128) :: '', '', '', '', category_kind(map_class_names)]
+        if (compare_rigid) kinds = [character(len=128) :: kinds, category_kind(map_class_names), &
                                     category_kind(diff_names)]
         comments(1) = 'seispulse analysis winkler: overturning map on Winkler soil, ' &
                       //pulse_kind_name(code)//' pulse family (seispulse_winkler_rock)'
         comments(2) = body_line(s)//'; rigid theta_c = '//real_str(s%body%theta_c) &
                       //' rad, p = '//real_str(s%body%p)//' rad/s'
         comments(3) = trim(soil_line(s))//', c = '//real_str(s%model%c)//' N s/m3'
-        comments(4) = 'class: safe, or overturn_* by the impacts before overturning; ' &
-                      //'undecided: the step budget ran out'
+        comments(4) = map_class_line
         comments(5) = 'freq_ratio = omega_p/p = 2 pi freq_hz/p (T_p: t_d of the ' &
                       //'exponential pulse, the period of sine/cosine cycles, the length ' &
                       //'of the others; Ricker: the dominant f_p); amp_ratio = a_p/(g tan ' &
