@@ -684,9 +684,10 @@ contains
         comments(1) = 'seispulse analysis cylinder: properties of the body and of its ' &
                       //'equivalent '//trim(merge('solid cylinder', 'block         ', &
                       s%body%shape == BODY_BLOCK))//' (seispulse_cylinder)'
-        comments(2) = 'shape: 1 solid cylinder, 2 hollow cylinder, 3 custom J_o, 4 block; ' &
-                      //'r: base radius, or the half-width b of a block; h: height of the ' &
-                      //'centre of mass'
+        comments(2) = 'shape: body '//trim(shape_names(s%body%shape))//', equivalent ' &
+                      //trim(shape_names(eq%shape))//' (the row holds the code of each: 1 ' &
+                      //'solid, 2 hollow, 3 custom, 4 block); r: base radius, or the ' &
+                      //'half-width b of a block; h: height of the centre of mass'
         comments(3) = 'equivalent: the same p and the same M_max = m g r, slenderness ' &
                       //merge('equivalent_angle (given)', 'theta_c of the body     ', &
                       given(s%gb, 'equivalent_angle'))
@@ -807,8 +808,8 @@ contains
         comments(3) = 'force: horizontal force at the centre of mass (N) that holds the ' &
                       //'body at theta, W tan(theta_c - theta); moment about the pivot ' &
                       //'(N m), W R sin(theta_c - theta)'
-        comments(4) = 'm_ratio = M/(m g r) (r: the half-width of a block); stable: 1 for ' &
-                      //'theta <= theta_c, 0 beyond (F < 0: the body falls on its own)'
+        comments(4) = 'm_ratio = M/(m g r) (r: the half-width of a block); stable: a flag, ' &
+                      //'1 (true) for theta <= theta_c, else 0 (F < 0: the body falls on its own)'
         comments(5) = 'grid: '//grid
         comments(6) = 'input: '//trim(path)
         call write_tables(prefix, 'cylinder_pushover', comments, &
@@ -965,7 +966,7 @@ contains
     end function summary_units
 
     !> Planar rocking under each record of &records: a summary row and the history rows
-    !> of each (a record that cannot be read or run: NaN, status 1, the others go on).
+    !> of each (a record that cannot be read or run: NaN, the others go on).
     subroutine do_history_records(path, prefix, s, stat, errmsg)
         character(len=*), intent(in) :: path, prefix
         type(setup_t), intent(in) :: s
@@ -1038,7 +1039,7 @@ contains
         if (nfailed > 0) then
             stat = ROWS_FAILED
             errmsg = int_str(nfailed)//' of '//int_str(nrec)//' records failed (' &
-                     //failed_records(outs, failed)//')'
+                     //failed_records(outs, failed)//'): their rows hold NaN'
         end if
     end subroutine do_history_records
 

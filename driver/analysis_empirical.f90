@@ -11,7 +11,7 @@
 !> (newmark_rigid, exact and SLAMMER's rule, the record as scaled, downslope) stands in
 !> every row next to the estimates. Table <output>_empirical. A record without energy
 !> (PGA = 0 or Arias intensity 0) gives disp 0 (no sliding) in every row. A record that
-!> cannot be read fails its rows (NaN, status 1) and the driver exits with status 1.
+!> cannot be read fails its rows (NaN, status failed) and the driver exits with status 1.
 module driver_empirical
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan

@@ -11,7 +11,7 @@
 !> converge keeps the results of its last iteration with converged = 0: a warning on
 !> stderr and in the header, not a failure.
 !> Everything is checked before any record is read. A record that cannot be read or
-!> scaled fails its rows (NaN results, status 1; the message goes to stderr and into the
+!> scaled fails its rows (NaN results, status failed; the message goes to stderr and into the
 !> table's header) and the other records are still computed; run_newmark then returns
 !> ROWS_FAILED and the driver exits with status 1 after writing the table. The
 !> numbers come from seispulse_records (reading, PGA scaling) and seispulse_newmark (the
@@ -656,7 +656,7 @@ contains
     ! ------------------------------------------------------------------------------
 
     !> Every record (read, polarity, scale), every block, normal and inverse. A record
-    !> that fails leaves NaN results and status 1 in its rows; the message goes to
+    !> that fails leaves NaN results and status failed in its rows; the message goes to
     !> stderr at once. An unconverged flexible case keeps its results (converged = 0)
     !> with a warning on stderr and a note for the header. Progress: one line per record
     !> on stderr.
@@ -915,7 +915,7 @@ contains
                          //'same for normal and inverse')
                 call add('converged: yes, or no when the equivalent-linear iteration stopped ' &
                          //'at max_iter: the results of its last iteration, a warning below ' &
-                         //'and on stderr, status 0')
+                         //'and on stderr, status ok')
             end if
             call add('status: ok, or failed (nan results; the reason is below and on ' &
                      //'stderr); exit status 1 when a row failed (2: an input error, no table)')

@@ -10,7 +10,7 @@
 !> Tables <output>_rocking (what = 'summary'; one row per record with &records),
 !> <output>_rocking_history ('history'; the records stacked, the record's name first) or
 !> <output>_rocking_map ('map'). A record that cannot be read or run fails its row (NaN,
-!> status 1), the others are written and run_rocking returns ROWS_FAILED (exit status 1).
+!> status failed), the others are written and run_rocking returns ROWS_FAILED (exit status 1).
 !> The numbers come from seispulse_rocking_sim (the
 !> integrator, any pulse) and seispulse_rocking_closed (the linearized closed forms of the
 !> half-cycle exponential pulse, shown side by side); the driver only reads, checks,
@@ -442,7 +442,7 @@ contains
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
         type(rocking_run_t) :: run
-        character(len=512) :: msg, files(2), comments(7)
+        character(len=512) :: msg, files(2), comments(8)
         real(dp) :: row(21), nan, f, eta, beta_cf, tau_up, tau_c, tau_m, psi_max, tau_i, td
         character(len=32) :: names(0:5)
         integer :: region, i, k
@@ -508,6 +508,7 @@ contains
             if (abs(kv) > 0.0_dp) comments(7) = 'closed forms (_cf): nan, they have no ' &
                                                //'vertical ground acceleration (kv = 0 only)'
         end if
+        comments(8) = 'input: '//trim(path)
         call write_tables(prefix, 'rocking', comments, &
             [character(len=12) :: 'alpha', 'p', 'e', 'f', 'eta', 'outcome', 't_uplift', &
              't_overturn', 'n_impacts', 't_impact1', 'theta_max', 'theta_min', 'psi_max', &
@@ -808,7 +809,7 @@ contains
     end function record_row
 
     !> 'summary' or 'history' under each record of &records: a record that cannot be
-    !> read or run gives a row of NaN (status 1) and the others go on; stat ROWS_FAILED
+    !> read or run gives a row of NaN (status failed) and the others go on; stat ROWS_FAILED
     !> then (the table is written).
     subroutine do_records(path, prefix, grec, gr, blk, recs, slammer_rounding, history, &
                           stat, errmsg)
@@ -845,7 +846,7 @@ contains
         do ir = 1, nrec
             labels(ir) = outs(ir)%name
             if (failed(ir)) then
-                ! a failed row: the block, NaN results, status 1 (failed)
+                ! a failed row: the block, NaN results, status failed
                 summary(ir, :) = nan
                 summary(ir, 2:4) = [blk%alpha, blk%p, blk%e]
                 summary(ir, n_rec_cols) = 1.0_dp

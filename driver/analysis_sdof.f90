@@ -10,7 +10,7 @@
 !> periods), <output>_sdof_envelope (envelope = .true.) and <output>_sdof_history
 !> (with &sdof_history). Everything is checked before any record is read, and every
 !> table is computed before the first is written. A record that cannot be read,
-!> scaled or analysed fails its rows (NaN results, status 1; the message goes to
+!> scaled or analysed fails its rows (NaN results, status failed; the message goes to
 !> stderr and into the headers) and the other records are still computed; run_sdof
 !> then returns ROWS_FAILED and the driver exits with status 1 after writing the
 !> tables. The numbers come from seispulse_records and seispulse_sdof_sim; the driver only
@@ -250,7 +250,7 @@ contains
             stat = ROWS_FAILED
             errmsg = int_str(nfailed)//' of '//int_str(size(outs))//' records failed (' &
                      //failed_records(outs, .not. outs%ok)//'): their rows hold NaN and ' &
-                     //'status 1'
+                     //'status failed'
         end if
     end subroutine run_sdof
 

@@ -1100,10 +1100,11 @@ contains
         end if
         lines(4) = 'theta_c, theta_overturn: rigid and static Winkler overturning angles'
         lines(5) = 'v: settlement of the base centre (+ down), theta > 0 lifts the s > 0 ' &
-                   //'side, width: contact width, normal: N, moment: foundation moment about ' &
-                   //'the base centre in the sense of theta (restoring: opposite sign to ' &
-                   //'theta and to the pushover''s m_found), accel: ground a_g (> 0 drives ' &
-                   //'theta > 0); energy: kinetic + potential + spring, work: input, ' &
+                   //'side, contact_width: contact width, normal_force: N, moment: foundation ' &
+                   //'moment about the base centre in the sense of theta (restoring: opposite ' &
+                   //'sign to theta and to the pushover''s m_found), ground_accel: ground a_g ' &
+                   //'(> 0 drives theta > 0); energy: kinetic + potential + spring, ' &
+                   //'input_work: input work, ' &
                    //'dissipated: contact work - spring energy; energy_error: largest ' &
                    //'relative energy balance error'
     end subroutine history_comments
@@ -1196,7 +1197,7 @@ contains
     end subroutine do_history_pulse
 
     !> Rocking under each record of &records: a summary row and the history rows of each
-    !> (a record that cannot be read or run: NaN, status 1, the others go on).
+    !> (a record that cannot be read or run: NaN, the others go on).
     subroutine do_history_records(path, prefix, s, stat, errmsg)
         character(len=*), intent(in) :: path, prefix
         type(setup_t), intent(in) :: s
@@ -1295,7 +1296,7 @@ contains
         if (nfailed > 0) then
             stat = ROWS_FAILED
             errmsg = int_str(nfailed)//' of '//int_str(nrec)//' records failed (' &
-                     //failed_records(outs, failed)//')'
+                     //failed_records(outs, failed)//'): their rows hold NaN'
         end if
     end subroutine do_history_records
 

@@ -4,7 +4,7 @@
 !> acceleration (g, 5 % damping) at the periods `sa_periods` (s) if given. The record is
 !> the one the sliding analysis uses: read, scaled, with its polarity (every measure is
 !> the same for the record turned over). Table <output>_intensity; a record that cannot
-!> be read, or whose measures fail, has NaN results and status 1. The numbers come from
+!> be read, or whose measures fail, has NaN results and status failed. The numbers come from
 !> seispulse_intensity; this module only checks, collects and writes.
 module driver_intensity_table
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
@@ -81,7 +81,7 @@ contains
         itab%periods = sa_periods(1:n)
     end subroutine intensity_check
 
-    !> Room for nrec rows, all NaN with status 1 until computed.
+    !> Room for nrec rows, all NaN with status failed until computed.
     subroutine intensity_start(itab, nrec)
         type(intensity_table_t), intent(inout) :: itab
         integer, intent(in) :: nrec
@@ -95,7 +95,7 @@ contains
     !> The row of record ir, read as accel (g) at step dt (s), with g (m/s^2); a
     !> failure goes to stderr at once (prefixed by `what`, "file:line: &records:
     !> files(2) = 'x'") and into the table's header. Rows of records not read stay NaN
-    !> with status 1.
+    !> with status failed.
     subroutine intensity_record(itab, ir, accel, dt, g, what)
         type(intensity_table_t), intent(inout) :: itab
         integer, intent(in) :: ir
@@ -128,7 +128,7 @@ contains
         itab%table(ir, size(itab%table, 2)) = 0.0_dp
     end subroutine intensity_record
 
-    !> Rows of the table that failed (status 1); 0 without the table.
+    !> Rows of the table that failed (status failed); 0 without the table.
     integer function intensity_failures(itab) result(n)
         type(intensity_table_t), intent(in) :: itab
         n = 0

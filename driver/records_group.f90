@@ -5,7 +5,7 @@
 !>
 !> A record that cannot be read or scaled is not an input error: load_record reports
 !> it on stderr at once and returns ok = .false.; the analysis fails that record's
-!> rows (NaN results, status 1) and goes on with the others.
+!> rows (NaN results, status failed) and goes on with the others.
 module driver_records
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan

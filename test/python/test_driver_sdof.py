@@ -330,7 +330,7 @@ def test_bad_record_fails_its_rows_only(driver, tmp_path):
         assert word in errors[0], errors[0]
     assert errors[1] == ("seispulse: error: case.nml:2: &records: 1 of 3 records failed "
                          "(2 'bad'): their rows "
-                         "hold NaN and status 1")
+                         "hold NaN and status failed")
     progress = [ln for ln in proc.stderr.splitlines() if ln.startswith("sdof: record ")]
     assert [p.split(":")[1] for p in progress] == [" record 1/3", " record 2/3",
                                                    " record 3/3"]
