@@ -26,7 +26,8 @@ module driver_cylinder
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan, &
                                              ieee_positive_inf, ieee_is_finite
-    use seispulse, only: dp, pi, pulse_t, pulse_eval, pulse_kind_name, SEISPULSE_SUCCESS, &
+    use seispulse, only: dp, shortest_str, pi, pulse_t, pulse_eval, pulse_kind_name, &
+                         SEISPULSE_SUCCESS, &
                          real_str, int_str, rocking_block_t, rocking_run_t, rock_pulse, &
                          ROCK_RUN_TIME_LIMIT, in_open, positive, rocking_body_t, &
                          cylinder_props, block_props, body_rocking_block, equivalent_cylinder, &
@@ -640,14 +641,14 @@ contains
     function body_line(s) result(line)
         type(setup_t), intent(in) :: s
         character(len=:), allocatable :: line
-        line = 'body: '//shape_text(s%body%shape)//', theta_c = '//real_str(s%body%theta_c) &
-               //' rad, p = '//real_str(s%body%p)//' rad/s, e = '//real_str(s%e_run)
+        line = 'body: '//shape_text(s%body%shape)//', theta_c = '//shortest_str(s%body%theta_c) &
+               //' rad, p = '//shortest_str(s%body%p)//' rad/s, e = '//shortest_str(s%e_run)
         if (s%e_given) then
-            line = line//' (given; Housner: '//real_str(s%body%e)//')'
+            line = line//' (given; Housner: '//shortest_str(s%body%e)//')'
         else
             line = line//' (Housner)'
         end if
-        line = line//', g = '//real_str(s%body%g)//' m/s2'
+        line = line//', g = '//shortest_str(s%body%g)//' m/s2'
     end function body_line
 
     ! ------------------------------------------------------------------------------
@@ -803,8 +804,8 @@ contains
         call echo(s)
         comments(1) = 'seispulse analysis cylinder: static pushover on a rigid base ' &
                       //'(seispulse_cylinder, doc/cylinder.md)'
-        comments(2) = body_line(s)//', W = '//real_str(s%body%weight)//' N, M_max = ' &
-                      //real_str(s%body%m_max)//' N m'
+        comments(2) = body_line(s)//', W = '//shortest_str(s%body%weight)//' N, M_max = ' &
+                      //shortest_str(s%body%m_max)//' N m'
         comments(3) = 'force: horizontal force at the centre of mass (N) that holds the ' &
                       //'body at theta, W tan(theta_c - theta); moment about the pivot ' &
                       //'(N m), W R sin(theta_c - theta)'
@@ -855,7 +856,7 @@ contains
         lines(3) = 'uplift at |a_g| > g tan(theta_c) (nonlinear) or g theta_c ' &
                    //'(linearized); a_g > 0 drives theta > 0'
         if (abs(kv) > 0.0_dp) lines(3) = 'vertical ground acceleration a_v = kv a_g, kv = ' &
-            //real_str(kv)//' (doc/rocking.md section 7): uplift at a_g > g t/(1 - kv t) or ' &
+            //shortest_str(kv)//' (doc/rocking.md section 7): uplift at a_g > g t/(1 - kv t) or ' &
             //'a_g < -g t/(1 + kv t), t = tan(theta_c) (nonlinear) or theta_c ' &
             //'(linearized); a_g > 0 drives theta > 0'
     end subroutine history_comments
@@ -919,9 +920,9 @@ contains
             return
         end if
         comments(4) = 'outcome: '//trim(run_outcome_names(run%outcome))//', t_uplift = ' &
-                      //real_str(run%t_uplift)//' s, impacts: '//int_str(run%n_impacts) &
-                      //', theta_max = '//real_str(run%theta_max)//' rad, theta_min = ' &
-                      //real_str(run%theta_min)//' rad, t_end = '//real_str(run%t_end)//' s'
+                      //shortest_str(run%t_uplift)//' s, impacts: '//int_str(run%n_impacts) &
+                      //', theta_max = '//shortest_str(run%theta_max)//' rad, theta_min = ' &
+                      //shortest_str(run%theta_min)//' rad, t_end = '//shortest_str(run%t_end)//' s'
         comments(5) = 'theta: rotation (rad; > 0 about one edge, < 0 about the other), ' &
                       //'omega = dtheta/dt (rad/s); overturned: theta = +-pi/2, omega = 0 ' &
                       //'after t_end; NaN after a time limit'
@@ -1164,10 +1165,10 @@ contains
                       trim(names(2))//' outer, '//trim(names(1))//' inner'
         comments(6) = template_text(tpl)
         if (abs(kv) > 0.0_dp) comments(6) = trim(comments(6))//'; vertical ground acceleration ' &
-            //'a_v = kv a_g in every cell, kv = '//real_str(kv)//' (doc/rocking.md section 7)'
+            //'a_v = kv a_g in every cell, kv = '//shortest_str(kv)//' (doc/rocking.md section 7)'
         if (compare_block) then
             comments(7) = 'class_block: the equivalent block (same p, same M_max, alpha = ' &
-                          //real_str(eq%theta_c)//' rad, Housner e = '//real_str(eq%e) &
+                          //shortest_str(eq%theta_c)//' rad, Housner e = '//shortest_str(eq%e) &
                           //') on the same '//trim(names(1))//', '//trim(names(2))
             comments(8) = 'diff: only_cylinder, only_block: only one of the two overturns, ' &
                           //'other_mode: both, in different classes; grid: '//grid_x//', '//grid
@@ -1267,7 +1268,7 @@ contains
             pl = s%pin%p
             t_exc = pulse_end(s%pin)
             excitation = pulse_kind_name(s%pin%code)//' pulse along direction = ' &
-                         //real_str(direction)//' rad from the x axis'
+                         //shortest_str(direction)//' rad from the x axis'
         else
             if (.not. (abs(theta0) > 0.0_dp .or. abs(theta_rate0) > 0.0_dp)) then
                 if (s%gl%line > 0) then
@@ -1348,12 +1349,13 @@ contains
         end do
         comments(1) = 'seispulse analysis cylinder: rocking with rolling on the base rim ' &
                       //'without slip ([KM90]; seispulse_cylinder_roll) under '//excitation
-        comments(2) = body_line(s)//', J_G = '//real_str(s%body%j_g)//' kg m2, J_axis = ' &
-                      //real_str(s%body%j_axis)//' kg m2, m = '//real_str(s%body%mass)//' kg'
-        comments(3) = 'initial state: theta0 = '//real_str(theta0)//' rad, psi0 = ' &
-                      //real_str(psi0)//' rad, spin0 = '//real_str(spin0)//' rad, rates ' &
-                      //real_str(theta_rate0)//', '//real_str(psi_rate0)//', ' &
-                      //real_str(spin_rate0)//' rad/s'
+        comments(2) = body_line(s)//', J_G = '//shortest_str(s%body%j_g)//' kg m2, J_axis = ' &
+                      //shortest_str(s%body%j_axis)//' kg m2, m = '//shortest_str(s%body%mass) &
+                          //' kg'
+        comments(3) = 'initial state: theta0 = '//shortest_str(theta0)//' rad, psi0 = ' &
+                      //shortest_str(psi0)//' rad, spin0 = '//shortest_str(spin0)//' rad, rates ' &
+                      //shortest_str(theta_rate0)//', '//shortest_str(psi_rate0)//', ' &
+                      //shortest_str(spin_rate0)//' rad/s'
         comments(4) = 'theta: tilt (>= 0), psi: heading of the rocking plane (jumps by pi at ' &
                       //'an impact), spin: about the axis of symmetry; contact point and ' &
                       //'centre of mass in the ground frame (m), from the centre of mass at (0, 0)'
@@ -1382,8 +1384,8 @@ contains
             units(3 + k) = roll_units(k)
         end do
         comments(8) = 'outcome: '//roll_outcome_name(run%outcome)//', impacts: ' &
-                      //int_str(run%n_impacts)//', theta_max = '//real_str(run%theta_max) &
-                      //' rad, t_end = '//real_str(run%t_end)//' s'
+                      //int_str(run%n_impacts)//', theta_max = '//shortest_str(run%theta_max) &
+                      //' rad, t_end = '//shortest_str(run%t_end)//' s'
         call write_tables(prefix, 'cylinder_roll_history', [comments(1:6), comments(8), &
             comments(7)], names, units, table, files2, stat, errmsg)
         if (stat /= 0) then

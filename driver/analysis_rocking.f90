@@ -19,7 +19,7 @@ module driver_rocking
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan, &
                                              ieee_positive_inf, ieee_is_finite
-    use seispulse, only: dp, pulse_t, pulse_validate, pulse_eval, pulse_kind_name, &
+    use seispulse, only: dp, shortest_str, pulse_t, pulse_validate, pulse_eval, pulse_kind_name, &
                          SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, PULSE_RECTANGULAR, &
                          PULSE_TRIANGULAR, PULSE_RICKER, real_str, &
                          int_str, rocking_summary, rocking_region_name, rocking_block_t, &
@@ -500,7 +500,7 @@ contains
         if (cf) then
             comments(7) = 'closed forms (_cf): linearized model (doc/rocking.md (2.4)-(2.35), ' &
                           //'seispulse_rocking_closed), half-cycle exponential pulse, beta = ' &
-                          //real_str(beta_cf)//', f = p t_d, eta = alpha/(A_g/g)'
+                          //shortest_str(beta_cf)//', f = p t_d, eta = alpha/(A_g/g)'
         else
             comments(7) = 'closed forms (_cf): nan, they exist for the half-cycle ' &
                           //'exponential pulse (also rectangular, symmetric triangular) ' &
@@ -541,12 +541,12 @@ contains
     subroutine block_lines(blk, lines)
         type(rocking_block_t), intent(in) :: blk
         character(len=*), intent(out) :: lines(2)
-        lines(1) = 'block: alpha = '//real_str(blk%alpha)//' rad, p = '//real_str(blk%p) &
-                   //' rad/s, e = '//real_str(blk%e)//', g = '//real_str(blk%g)//' m/s2'
+        lines(1) = 'block: alpha = '//shortest_str(blk%alpha)//' rad, p = '//shortest_str(blk%p) &
+                   //' rad/s, e = '//shortest_str(blk%e)//', g = '//shortest_str(blk%g)//' m/s2'
         lines(2) = 'uplift at |a_g| > g tan(alpha) (nonlinear) or g alpha (linearized); ' &
                    //'a_g > 0 drives theta > 0'
         if (abs(kv) > 0.0_dp) lines(2) = 'vertical ground acceleration a_v = kv a_g, kv = ' &
-            //real_str(kv)//' (doc/rocking.md section 7): uplift at a_g > g t/(1 - kv t) or ' &
+            //shortest_str(kv)//' (doc/rocking.md section 7): uplift at a_g > g t/(1 - kv t) or ' &
             //'a_g < -g t/(1 + kv t), t = tan(alpha) (nonlinear) or alpha (linearized); ' &
             //'a_g > 0 drives theta > 0'
     end subroutine block_lines
@@ -603,9 +603,9 @@ contains
 
         call block_comments(pin, blk, comments(1:3))
         comments(4) = 'outcome: '//trim(run_outcome_names(run%outcome))//', t_uplift = ' &
-                      //real_str(run%t_uplift)//' s, impacts: '//int_str(run%n_impacts) &
-                      //', theta_max = '//real_str(run%theta_max)//' rad, theta_min = ' &
-                      //real_str(run%theta_min)//' rad, t_end = '//real_str(run%t_end)//' s'
+                      //shortest_str(run%t_uplift)//' s, impacts: '//int_str(run%n_impacts) &
+                      //', theta_max = '//shortest_str(run%theta_max)//' rad, theta_min = ' &
+                      //shortest_str(run%theta_min)//' rad, t_end = '//shortest_str(run%t_end)//' s'
         comments(5) = 'theta: rotation (rad; > 0 about one corner, < 0 about the other), ' &
                       //'omega = dtheta/dt (rad/s)'
         comments(6) = 'overturned: theta = +-pi/2 and omega = 0 after t_end; nan after a ' &
@@ -722,9 +722,9 @@ contains
                       //'of the others; Ricker: omega_p = 2 pi f_p)'
         comments(4) = 'amp_ratio = a_p/(g tan alpha) (both models); rows: amp_ratio ' &
                       //'outer, freq_ratio inner'
-        comments(5) = 'block: alpha = '//real_str(blk%alpha)//' rad, e = '//real_str(blk%e)
+        comments(5) = 'block: alpha = '//shortest_str(blk%alpha)//' rad, e = '//shortest_str(blk%e)
         if (abs(kv) > 0.0_dp) comments(5) = trim(comments(5))//'; vertical ground ' &
-            //'acceleration a_v = kv a_g, kv = '//real_str(kv)//' (doc/rocking.md section 7)'
+            //'acceleration a_v = kv a_g, kv = '//shortest_str(kv)//' (doc/rocking.md section 7)'
         comments(6) = template_text(tpl)
         comments(7) = 'input: '//trim(path)
         call write_tables(prefix, 'rocking_map', comments, &
@@ -932,8 +932,9 @@ contains
                 comments(nh + ir) = trim(comments(nh + ir))//'; outcome: ' &
                     //trim(run_outcome_names(nint(summary(ir, 5))))//', impacts: ' &
                     //int_str(nint(summary(ir, 8)))//', theta_max = ' &
-                    //real_str(summary(ir, 10))//' rad, theta_min = ' &
-                    //real_str(summary(ir, 11))//' rad, t_end = '//real_str(summary(ir, 14)) &
+                    //shortest_str(summary(ir, 10))//' rad, theta_min = ' &
+                    //shortest_str(summary(ir, 11))//' rad, t_end = ' &
+                        //shortest_str(summary(ir, 14)) &
                     //' s'
             end if
         end do

@@ -25,7 +25,8 @@ module driver_winkler
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan, &
                                              ieee_positive_inf
-    use seispulse, only: dp, pi, pulse_t, pulse_kind_name, SEISPULSE_SUCCESS, real_str, &
+    use seispulse, only: dp, shortest_str, pi, pulse_t, pulse_kind_name, SEISPULSE_SUCCESS, &
+                         real_str, &
                          int_str, finite_positive, rocking_body_t, cylinder_props, block_props, &
                          body_overturning_map, map_difference, FOOTING_CIRCLE, &
                          FOOTING_RECTANGLE, K_CONSTANT, K_VARYING, AXIS_LONG, AXIS_SHORT, &
@@ -627,7 +628,7 @@ contains
                 return
             end if
             top = s%body%theta_c
-            grid = 'theta = 0 .. theta_c (rigid) = '//real_str(top)//' rad'
+            grid = 'theta = 0 .. theta_c (rigid) = '//shortest_str(top)//' rad'
             if (given(s%gw, 'theta_max')) then
                 if (.not. (finite_positive(theta_max) .and. theta_max <= 0.5_dp * pi)) then
                     errmsg = where//'theta_max = '//real_str(theta_max)//': must be in ' &
@@ -635,7 +636,7 @@ contains
                     return
                 end if
                 top = theta_max
-                grid = 'theta = 0 .. theta_max = '//real_str(top)//' rad'
+                grid = 'theta = 0 .. theta_max = '//shortest_str(top)//' rad'
             end if
             if (theta_count < 2 .or. theta_count > max_list) then
                 errmsg = where//'theta_count = '//int_str(theta_count)//': must be in 2 .. ' &
@@ -661,22 +662,23 @@ contains
         type(setup_t), intent(in) :: s
         character(len=:), allocatable :: line
         if (s%footing == FOOTING_CIRCLE) then
-            line = 'circular footing r = '//real_str(r)//' m'
+            line = 'circular footing r = '//shortest_str(r)//' m'
         else
-            line = 'rectangular footing b = '//real_str(b)//' m (rocking direction) x alpha = ' &
-                   //real_str(alpha)//' m (half-lengths)'
+            line = 'rectangular footing b = '//shortest_str(b) &
+                //' m (rocking direction) x alpha = ' &
+                   //shortest_str(alpha)//' m (half-lengths)'
         end if
-        line = line//', h = '//real_str(h)//' m, W = '//real_str(s%weight)//' N, g = ' &
-               //real_str(g)//' m/s2'
+        line = line//', h = '//shortest_str(h)//' m, W = '//shortest_str(s%weight)//' N, g = ' &
+               //shortest_str(g)//' m/s2'
     end function body_line
 
     !> Header line of the soil: k and how it was chosen.
     function soil_line(s) result(line)
         type(setup_t), intent(in) :: s
         character(len=:), allocatable :: line
-        line = 'Winkler modulus k = '//real_str(s%k)//' N/m3'
+        line = 'Winkler modulus k = '//shortest_str(s%k)//' N/m3'
         if (given(s%gw, 'g_mod')) line = line//' (K_R/I of the halfspace, G = ' &
-                                         //real_str(g_mod)//' Pa, nu = '//real_str(nu)//')'
+                                         //shortest_str(g_mod)//' Pa, nu = '//shortest_str(nu)//')'
         line = line//', k_method = '''//trim(k_method)//''''
         if (s%k_method == K_VARYING) then
             if (s%footing == FOOTING_CIRCLE) then
@@ -811,7 +813,7 @@ contains
             n = theta_ratio_count
             x = [(master_default_top * (real(i, dp) / real(n - 1, dp)), i = 0, n - 1)]
             x(n) = master_default_top
-            grid = 'theta_ratio = 0 .. '//real_str(master_default_top)//', '//int_str(n) &
+            grid = 'theta_ratio = 0 .. '//shortest_str(master_default_top)//', '//int_str(n) &
                    //' values (default)'
         end if
         n = size(x)
@@ -897,8 +899,9 @@ contains
                       //'on undrained clay, stiffness-degradation method ([AD11] chapter 3; ' &
                       //'seispulse_clay_footing, doc/winkler.md)'
         comments(2) = body_line(s)
-        comments(3) = 'clay: G = '//real_str(g_mod)//' Pa, nu = '//real_str(nu)//', S_u = ' &
-                      //real_str(su)//' Pa, N_c = '//real_str(nc)//'; '//coeffs_text(coeffs)
+        comments(3) = 'clay: G = '//shortest_str(g_mod)//' Pa, nu = '//shortest_str(nu) &
+            //', S_u = ' &
+                      //shortest_str(su)//' Pa, N_c = '//shortest_str(nc)//'; '//coeffs_text(coeffs)
         comments(4) = 'USER-SUPPLIED coefficients: the thesis''s fitted values are lost; the ' &
                       //'curve is only as good as the coefficients given'
         comments(5) = 'k_r: secant rocking stiffness K_R(theta) (N m/rad), m_found = K_R ' &
@@ -945,14 +948,15 @@ contains
         type(degradation_coeffs_t), intent(in) :: cf
         character(len=:), allocatable :: text
         integer :: i
-        text = 'k_el = '//real_str(cf%k_el)//', kr_c1 = '//real_str(cf%kr_c1)//', kr_c2 = ' &
-               //real_str(cf%kr_c2)//', a_poly ='
+        text = 'k_el = '//shortest_str(cf%k_el)//', kr_c1 = '//shortest_str(cf%kr_c1) &
+            //', kr_c2 = ' &
+               //shortest_str(cf%kr_c2)//', a_poly ='
         do i = 0, 4
-            text = text//' '//real_str(cf%a_poly(i))
+            text = text//' '//shortest_str(cf%a_poly(i))
         end do
-        text = text//', b1 = '//real_str(cf%b1)//', b2 = '//real_str(cf%b2)//', c1 = ' &
-               //real_str(cf%c1)//', c2 = '//real_str(cf%c2)//', log_base = ' &
-               //real_str(cf%log_base)
+        text = text//', b1 = '//shortest_str(cf%b1)//', b2 = '//shortest_str(cf%b2)//', c1 = ' &
+               //shortest_str(cf%c1)//', c2 = '//shortest_str(cf%c2)//', log_base = ' &
+               //shortest_str(cf%log_base)
     end function coeffs_text
 
     !> 'capacity': bearing capacity, factor of safety and moment capacities of a circular
@@ -986,8 +990,8 @@ contains
         call echo(s)
         comments(1) = 'seispulse analysis winkler: capacities of a circular footing on ' &
                       //'undrained clay (seispulse_clay_footing, doc/winkler.md)'
-        comments(2) = 'circular footing r = '//real_str(r)//' m, W = '//real_str(s%weight) &
-                      //' N, S_u = '//real_str(su)//' Pa'
+        comments(2) = 'circular footing r = '//shortest_str(r)//' m, W = '//shortest_str(s%weight) &
+                      //' N, S_u = '//shortest_str(su)//' Pa'
         comments(3) = 'n_ult = N_c S_u pi r^2 (N_c = pi + 3 by default, [SLSY04]), sf = ' &
                       //'n_ult/W, chi = 1/sf'
         comments(4) = 'm_ult_tc = 0.8 A D S_u ([TC00] peak), m_ult_width = W D (1 - chi)/2 ' &
@@ -1091,11 +1095,11 @@ contains
                    //'tensionless Winkler springs and dashpots ([KH91], [KSR86]; ' &
                    //'seispulse_winkler_rock) under '//excitation
         lines(2) = body_line(s)
-        lines(3) = soil_line(s)//', c = '//real_str(s%model%c)//' N s/m3'
+        lines(3) = soil_line(s)//', c = '//shortest_str(s%model%c)//' N s/m3'
         if (given(s%gw, 'c')) then
             lines(3) = trim(lines(3))//' (given)'
         else
-            lines(3) = trim(lines(3))//' (xi = '//real_str(xi)//', damping_ref = ''' &
+            lines(3) = trim(lines(3))//' (xi = '//shortest_str(xi)//', damping_ref = ''' &
                        //trim(damping_ref)//''')'
         end if
         lines(4) = 'theta_c, theta_overturn: rigid and static Winkler overturning angles'
@@ -1186,8 +1190,8 @@ contains
         comments(7) = 'input: '//trim(path)
         lines = comments
         lines(6) = 'outcome: '//trim(winkler_outcome_names(run%outcome))//', impacts: ' &
-                   //int_str(run%n_impacts)//', theta_max = '//real_str(run%theta_max) &
-                   //' rad, t_end = '//real_str(run%t_end)//' s'
+                   //int_str(run%n_impacts)//', theta_max = '//shortest_str(run%theta_max) &
+                   //' rad, t_end = '//shortest_str(run%t_end)//' s'
         call history_header(.false., names, units)
         call write_table_pair(path, prefix, 'winkler', comments, summary_names(.false.), &
             summary_units(.false.), reshape(summary_row(s, run), [1, 14]), 'winkler summary', &
@@ -1390,9 +1394,9 @@ contains
                                     category_kind(diff_names)]
         comments(1) = 'seispulse analysis winkler: overturning map on Winkler soil, ' &
                       //pulse_kind_name(code)//' pulse family (seispulse_winkler_rock)'
-        comments(2) = body_line(s)//'; rigid theta_c = '//real_str(s%body%theta_c) &
-                      //' rad, p = '//real_str(s%body%p)//' rad/s'
-        comments(3) = trim(soil_line(s))//', c = '//real_str(s%model%c)//' N s/m3'
+        comments(2) = body_line(s)//'; rigid theta_c = '//shortest_str(s%body%theta_c) &
+                      //' rad, p = '//shortest_str(s%body%p)//' rad/s'
+        comments(3) = trim(soil_line(s))//', c = '//shortest_str(s%model%c)//' N s/m3'
         comments(4) = map_class_line
         comments(5) = 'freq_ratio = omega_p/p = 2 pi freq_hz/p (T_p: t_d of the ' &
                       //'exponential pulse, the period of sine/cosine cycles, the length ' &
@@ -1402,7 +1406,7 @@ contains
                       trim(names(2))//' outer, '//trim(names(1))//' inner; '//template_text(tpl)
         if (compare_rigid) then
             comments(7) = 'class_rigid: the same body on a rigid base (Housner e = ' &
-                          //real_str(s%body%e)//'), same cells'
+                          //shortest_str(s%body%e)//'), same cells'
             comments(8) = 'diff: only_winkler, only_rigid: only one of the two overturns, ' &
                           //'other_mode: both, in different classes; grid: '//grid_x//', '//grid
         else

@@ -117,7 +117,7 @@ def test_echo_values_as_the_analysis_reads_them(driver, tmp_path):
                      r"'\.\./\.\./cases/records/quake_b\.csv'\n", text), text
     assert "    units = 'auto', 'g'\n" in text
     assert "    target_pga = 2*0.3\n" in text
-    assert "    ky = 0.05, 0.1, 1.0E-009\n" in text
+    assert "    ky = 0.05, 0.1, 1e-09\n" in text
     assert "mode" not in text and "g =" not in text     # defaults: not given, not echoed
     # it re-runs from its own folder to the same table
     (path.parent / "again.nml").write_text(with_output(text, "res/deep/it''s", "again"))
