@@ -15,7 +15,7 @@ module driver_tables
     implicit none
     private
 
-    public :: write_tables, delete_files, say_written, code_legend, stack
+    public :: write_tables, delete_files, say_written, stack
     public :: write_table_pair, category_kind, table_path, commit_outputs, discard_outputs
     public :: open_output, status_names
 
@@ -621,19 +621,6 @@ contains
         ! a failure shows up when the table is opened, with a better message
         call execute_command_line('mkdir -p -- '//quoted//' 2>/dev/null', exitstat=code)
     end subroutine make_parent_dir
-
-    !> "title: 0 name, 1 name, ..." of a column of codes 0, 1, ... (a header line).
-    pure function code_legend(title, names) result(text)
-        character(len=*), intent(in) :: title
-        character(len=*), intent(in) :: names(0:)       !! the name of each code
-        character(len=:), allocatable :: text
-        integer :: k
-        text = title//':'
-        do k = 0, ubound(names, 1)
-            text = text//' '//int_str(k)//' '//trim(names(k))
-            if (k < ubound(names, 1)) text = text//','
-        end do
-    end function code_legend
 
     !> "<what> written to <txt> and <csv>" on standard output.
     subroutine say_written(what, files)
