@@ -558,14 +558,12 @@ contains
         comments(1) = 'seispulse analysis walls: seismic thrust on a retaining wall, per method'
         comments(2) = 'input: '//trim(path)
         comments(3) = 'H = '//shortest_str(height)//' m, gamma = '//shortest_str(gamma) &
-            //' kN/m3, phi = ' &
-                      //shortest_str(phi_deg)//' deg, wall friction = ' &
-                          //shortest_str(wall_friction_deg) &
-                      //' deg, psi = '//shortest_str(psi_deg)//' deg, beta = ' &
-                          //shortest_str(beta_deg) &
+                      //' kN/m3, phi = '//shortest_str(phi_deg)//' deg, wall friction = ' &
+                      //shortest_str(wall_friction_deg)//' deg, psi = ' &
+                      //shortest_str(psi_deg)//' deg, beta = '//shortest_str(beta_deg) &
                       //' deg, gamma_phi = '//shortest_str(gamma_phi)//', water = '//trim(water)
         comments(4) = 'yielding rows: kh = '//shortest_str(c%kh)//', kv = ' &
-            //shortest_str(res%kv_used) &
+                      //shortest_str(res%kv_used) &
                       //' (the sign of kv with the larger total; kv > 0 upward)'
         comments(5) = 'non-yielding rows: ag S/g = '//shortest_str(c%alpha_s)//'; elastic rows: ' &
                       //'nu = '//shortest_str(c%nu)//', loss factor = '//shortest_str(c%delta) &
