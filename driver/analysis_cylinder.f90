@@ -26,7 +26,8 @@ module driver_cylinder
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan, &
                                              ieee_positive_inf, ieee_is_finite
-    use seispulse, only: dp, pi, pulse_t, pulse_eval, pulse_kind_name, SEISPULSE_SUCCESS, &
+    use seispulse, only: dp, shortest_str, pi, pulse_t, pulse_eval, pulse_kind_name, &
+                         SEISPULSE_SUCCESS, &
                          real_str, int_str, rocking_block_t, rocking_run_t, rock_pulse, &
                          ROCK_RUN_TIME_LIMIT, in_open, positive, rocking_body_t, &
                          cylinder_props, block_props, body_rocking_block, equivalent_cylinder, &
@@ -51,7 +52,7 @@ module driver_cylinder
                                      locate_run_message, map_kind, map_template, progress_t, &
                                      axes_names, map_axes_code, map_grids, map_axes_header, &
                                      map_table, rock_records, record_at, run_summary_kinds, &
-                                     map_class_names
+                                     map_class_names, run_outcome_names, map_class_line
     use driver_echo, only: echo_unit
     implicit none
     private
@@ -86,9 +87,6 @@ module driver_cylinder
     !> In the order of the BODY_* codes.
     character(len=6), parameter :: shape_names(4) = [character(len=6) :: 'solid', 'hollow', &
         'custom', 'block']
-    character(len=24), parameter :: outcome_names(0:5) = [character(len=24) :: 'rest', &
-        'no_uplift', 'overturn_no_impact', 'overturn_one_impact', 'overturn_many_impacts', &
-        'time_limit']
     character(len=16), parameter :: diff_names(0:3) = [character(len=16) :: 'same', &
         'only_cylinder', 'only_block', 'other_mode']
 
@@ -643,14 +641,14 @@ contains
     function body_line(s) result(line)
         type(setup_t), intent(in) :: s
         character(len=:), allocatable :: line
-        line = 'body: '//shape_text(s%body%shape)//', theta_c = '//real_str(s%body%theta_c) &
-               //' rad, p = '//real_str(s%body%p)//' rad/s, e = '//real_str(s%e_run)
+        line = 'body: '//shape_text(s%body%shape)//', theta_c = '//shortest_str(s%body%theta_c) &
+               //' rad, p = '//shortest_str(s%body%p)//' rad/s, e = '//shortest_str(s%e_run)
         if (s%e_given) then
-            line = line//' (given; Housner: '//real_str(s%body%e)//')'
+            line = line//' (given; Housner: '//shortest_str(s%body%e)//')'
         else
             line = line//' (Housner)'
         end if
-        line = line//', g = '//real_str(s%body%g)//' m/s2'
+        line = line//', g = '//shortest_str(s%body%g)//' m/s2'
     end function body_line
 
     ! ------------------------------------------------------------------------------
@@ -687,9 +685,10 @@ contains
         comments(1) = 'seispulse analysis cylinder: properties of the body and of its ' &
                       //'equivalent '//trim(merge('solid cylinder', 'block         ', &
                       s%body%shape == BODY_BLOCK))//' (seispulse_cylinder)'
-        comments(2) = 'shape: 1 solid cylinder, 2 hollow cylinder, 3 custom J_o, 4 block; ' &
-                      //'r: base radius, or the half-width b of a block; h: height of the ' &
-                      //'centre of mass'
+        comments(2) = 'shape: body '//trim(shape_names(s%body%shape))//', equivalent ' &
+                      //trim(shape_names(eq%shape))//' (the row holds the code of each: 1 ' &
+                      //'solid, 2 hollow, 3 custom, 4 block); r: base radius, or the ' &
+                      //'half-width b of a block; h: height of the centre of mass'
         comments(3) = 'equivalent: the same p and the same M_max = m g r, slenderness ' &
                       //merge('equivalent_angle (given)', 'theta_c of the body     ', &
                       given(s%gb, 'equivalent_angle'))
@@ -805,13 +804,13 @@ contains
         call echo(s)
         comments(1) = 'seispulse analysis cylinder: static pushover on a rigid base ' &
                       //'(seispulse_cylinder, doc/cylinder.md)'
-        comments(2) = body_line(s)//', W = '//real_str(s%body%weight)//' N, M_max = ' &
-                      //real_str(s%body%m_max)//' N m'
+        comments(2) = body_line(s)//', W = '//shortest_str(s%body%weight)//' N, M_max = ' &
+                      //shortest_str(s%body%m_max)//' N m'
         comments(3) = 'force: horizontal force at the centre of mass (N) that holds the ' &
                       //'body at theta, W tan(theta_c - theta); moment about the pivot ' &
                       //'(N m), W R sin(theta_c - theta)'
-        comments(4) = 'm_ratio = M/(m g r) (r: the half-width of a block); stable: 1 for ' &
-                      //'theta <= theta_c, 0 beyond (F < 0: the body falls on its own)'
+        comments(4) = 'm_ratio = M/(m g r) (r: the half-width of a block); stable: a flag, ' &
+                      //'1 (true) for theta <= theta_c, else 0 (F < 0: the body falls on its own)'
         comments(5) = 'grid: '//grid
         comments(6) = 'input: '//trim(path)
         call write_tables(prefix, 'cylinder_pushover', comments, &
@@ -857,7 +856,7 @@ contains
         lines(3) = 'uplift at |a_g| > g tan(theta_c) (nonlinear) or g theta_c ' &
                    //'(linearized); a_g > 0 drives theta > 0'
         if (abs(kv) > 0.0_dp) lines(3) = 'vertical ground acceleration a_v = kv a_g, kv = ' &
-            //real_str(kv)//' (doc/rocking.md section 7): uplift at a_g > g t/(1 - kv t) or ' &
+            //shortest_str(kv)//' (doc/rocking.md section 7): uplift at a_g > g t/(1 - kv t) or ' &
             //'a_g < -g t/(1 + kv t), t = tan(theta_c) (nonlinear) or theta_c ' &
             //'(linearized); a_g > 0 drives theta > 0'
     end subroutine history_comments
@@ -915,15 +914,15 @@ contains
         comments(6) = 'input: '//trim(path)
         call write_tables(prefix, 'cylinder', comments, summary_names(.false.), &
             summary_units(.false.), reshape(summary_row(s, run), [1, 13]), files, stat, &
-            errmsg, kinds=run_summary_kinds(13, 4, outcome_names, 7), summary=.true.)
+            errmsg, kinds=run_summary_kinds(13, 4, run_outcome_names, 7), summary=.true.)
         if (stat /= 0) then
             errmsg = path//': &run: output: '//errmsg
             return
         end if
-        comments(4) = 'outcome: '//trim(outcome_names(run%outcome))//', t_uplift = ' &
-                      //real_str(run%t_uplift)//' s, impacts: '//int_str(run%n_impacts) &
-                      //', theta_max = '//real_str(run%theta_max)//' rad, theta_min = ' &
-                      //real_str(run%theta_min)//' rad, t_end = '//real_str(run%t_end)//' s'
+        comments(4) = 'outcome: '//trim(run_outcome_names(run%outcome))//', t_uplift = ' &
+                      //shortest_str(run%t_uplift)//' s, impacts: '//int_str(run%n_impacts) &
+                      //', theta_max = '//shortest_str(run%theta_max)//' rad, theta_min = ' &
+                      //shortest_str(run%theta_min)//' rad, t_end = '//shortest_str(run%t_end)//' s'
         comments(5) = 'theta: rotation (rad; > 0 about one edge, < 0 about the other), ' &
                       //'omega = dtheta/dt (rad/s); overturned: theta = +-pi/2, omega = 0 ' &
                       //'after t_end; NaN after a time limit'
@@ -935,7 +934,7 @@ contains
             errmsg = path//': &run: output: '//errmsg
             return
         end if
-        write(output_unit, '(a)') 'cylinder: '//trim(outcome_names(run%outcome))
+        write(output_unit, '(a)') 'cylinder: '//trim(run_outcome_names(run%outcome))
         call say_written('cylinder summary', files)
         call say_written('cylinder history', files2)
     end subroutine do_history_pulse
@@ -968,7 +967,7 @@ contains
     end function summary_units
 
     !> Planar rocking under each record of &records: a summary row and the history rows
-    !> of each (a record that cannot be read or run: NaN, status 1, the others go on).
+    !> of each (a record that cannot be read or run: NaN, the others go on).
     subroutine do_history_records(path, prefix, s, stat, errmsg)
         character(len=*), intent(in) :: path, prefix
         type(setup_t), intent(in) :: s
@@ -1018,7 +1017,7 @@ contains
         comments(5 + nrec) = 'input: '//trim(path)
         call write_tables(prefix, 'cylinder', comments, summary_names(.true.), &
             summary_units(.true.), summary, files, stat, errmsg, labels=labels, &
-            kinds=run_summary_kinds(15, 6, outcome_names, 9))
+            kinds=run_summary_kinds(15, 6, run_outcome_names, 9))
         if (stat /= 0) then
             errmsg = path//': &run: output: '//errmsg
             return
@@ -1041,7 +1040,7 @@ contains
         if (nfailed > 0) then
             stat = ROWS_FAILED
             errmsg = int_str(nfailed)//' of '//int_str(nrec)//' records failed (' &
-                     //failed_records(outs, failed)//')'
+                     //failed_records(outs, failed)//'): their rows hold NaN'
         end if
     end subroutine do_history_records
 
@@ -1157,8 +1156,7 @@ contains
         comments(1) = 'seispulse analysis cylinder: overturning map, '//pulse_kind_name(code) &
                       //' pulse family, '//trim(model)//' model (seispulse_cylinder)'
         comments(2) = body_line(s)
-        comments(3) = 'class: safe, or overturns_* by the impacts before overturning; ' &
-                      //'undecided: the step budget ran out'
+        comments(3) = map_class_line
         comments(4) = 'freq_ratio = omega_p/p = 2 pi freq_hz/p (T_p: t_d of the ' &
                       //'exponential pulse, the period of sine/cosine cycles, the length ' &
                       //'of the others; Ricker: f_p); amp_ratio = a_p/(g tan theta_c) = ' &
@@ -1167,10 +1165,10 @@ contains
                       trim(names(2))//' outer, '//trim(names(1))//' inner'
         comments(6) = template_text(tpl)
         if (abs(kv) > 0.0_dp) comments(6) = trim(comments(6))//'; vertical ground acceleration ' &
-            //'a_v = kv a_g in every cell, kv = '//real_str(kv)//' (doc/rocking.md section 7)'
+            //'a_v = kv a_g in every cell, kv = '//shortest_str(kv)//' (doc/rocking.md section 7)'
         if (compare_block) then
             comments(7) = 'class_block: the equivalent block (same p, same M_max, alpha = ' &
-                          //real_str(eq%theta_c)//' rad, Housner e = '//real_str(eq%e) &
+                          //shortest_str(eq%theta_c)//' rad, Housner e = '//shortest_str(eq%e) &
                           //') on the same '//trim(names(1))//', '//trim(names(2))
             comments(8) = 'diff: only_cylinder, only_block: only one of the two overturns, ' &
                           //'other_mode: both, in different classes; grid: '//grid_x//', '//grid
@@ -1270,7 +1268,7 @@ contains
             pl = s%pin%p
             t_exc = pulse_end(s%pin)
             excitation = pulse_kind_name(s%pin%code)//' pulse along direction = ' &
-                         //real_str(direction)//' rad from the x axis'
+                         //shortest_str(direction)//' rad from the x axis'
         else
             if (.not. (abs(theta0) > 0.0_dp .or. abs(theta_rate0) > 0.0_dp)) then
                 if (s%gl%line > 0) then
@@ -1351,12 +1349,13 @@ contains
         end do
         comments(1) = 'seispulse analysis cylinder: rocking with rolling on the base rim ' &
                       //'without slip ([KM90]; seispulse_cylinder_roll) under '//excitation
-        comments(2) = body_line(s)//', J_G = '//real_str(s%body%j_g)//' kg m2, J_axis = ' &
-                      //real_str(s%body%j_axis)//' kg m2, m = '//real_str(s%body%mass)//' kg'
-        comments(3) = 'initial state: theta0 = '//real_str(theta0)//' rad, psi0 = ' &
-                      //real_str(psi0)//' rad, spin0 = '//real_str(spin0)//' rad, rates ' &
-                      //real_str(theta_rate0)//', '//real_str(psi_rate0)//', ' &
-                      //real_str(spin_rate0)//' rad/s'
+        comments(2) = body_line(s)//', J_G = '//shortest_str(s%body%j_g)//' kg m2, J_axis = ' &
+                      //shortest_str(s%body%j_axis)//' kg m2, m = '//shortest_str(s%body%mass) &
+                          //' kg'
+        comments(3) = 'initial state: theta0 = '//shortest_str(theta0)//' rad, psi0 = ' &
+                      //shortest_str(psi0)//' rad, spin0 = '//shortest_str(spin0)//' rad, rates ' &
+                      //shortest_str(theta_rate0)//', '//shortest_str(psi_rate0)//', ' &
+                      //shortest_str(spin_rate0)//' rad/s'
         comments(4) = 'theta: tilt (>= 0), psi: heading of the rocking plane (jumps by pi at ' &
                       //'an impact), spin: about the axis of symmetry; contact point and ' &
                       //'centre of mass in the ground frame (m), from the centre of mass at (0, 0)'
@@ -1385,8 +1384,8 @@ contains
             units(3 + k) = roll_units(k)
         end do
         comments(8) = 'outcome: '//roll_outcome_name(run%outcome)//', impacts: ' &
-                      //int_str(run%n_impacts)//', theta_max = '//real_str(run%theta_max) &
-                      //' rad, t_end = '//real_str(run%t_end)//' s'
+                      //int_str(run%n_impacts)//', theta_max = '//shortest_str(run%theta_max) &
+                      //' rad, t_end = '//shortest_str(run%t_end)//' s'
         call write_tables(prefix, 'cylinder_roll_history', [comments(1:6), comments(8), &
             comments(7)], names, units, table, files2, stat, errmsg)
         if (stat /= 0) then

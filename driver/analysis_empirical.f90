@@ -11,11 +11,12 @@
 !> (newmark_rigid, exact and SLAMMER's rule, the record as scaled, downslope) stands in
 !> every row next to the estimates. Table <output>_empirical. A record without energy
 !> (PGA = 0 or Arias intensity 0) gives disp 0 (no sliding) in every row. A record that
-!> cannot be read fails its rows (NaN, status 1) and the driver exits with status 1.
+!> cannot be read fails its rows (NaN, status failed) and the driver exits with status 1.
 module driver_empirical
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
-    use seispulse, only: dp, SEISPULSE_SUCCESS, int_str, empirical_rigid, empirical_needs, &
+    use seispulse, only: dp, shortest_str, SEISPULSE_SUCCESS, int_str, empirical_rigid, &
+                         empirical_needs, &
                          empirical_model_name, empirical_check, bray_travasarou_2007, &
                          rathje_antonakos_2011, probability_of_failure, EMP_RIGID_MODELS, &
                          EMP_LOG10, EMP_RA11_PGA_M, EMP_RA11_PGA_PGV, EMP_NEED_PGA, &
@@ -24,7 +25,7 @@ module driver_empirical
                          newmark_result_t, newmark_rigid, NEWMARK_DOWN, NEWMARK_EXACT, &
                          NEWMARK_SLAMMER, finite_positive
     use driver_namelist_scan, only: nml_group
-    use driver_input, only: find_group, located, given, list_length, value_name, num, &
+    use driver_input, only: find_group, located, given, list_length, value_name, &
                             ROWS_FAILED
     use driver_input, only: missing_group
     use driver_tables, only: write_tables, say_written, category_kind, status_names
@@ -214,12 +215,13 @@ contains
         where = located(path, ge)
         errmsg = ''
         if (.not. finite_positive(g)) then
-            errmsg = where//'g = '//num(g)//': must be a finite number > 0 (m/s2)'
+            errmsg = where//'g = '//shortest_str(g)//': must be a finite number > 0 (m/s2)'
             return
         end if
         cfg%g = g
         if (.not. (damping >= 0.0_dp .and. damping < 1.0_dp)) then
-            errmsg = where//'damping = '//num(damping)//': must be in [0, 1) (the damping ' &
+            errmsg = where//'damping = '//shortest_str(damping) &
+                //': must be in [0, 1) (the damping ' &
                      //'ratio of Sa(1.5 Ts), 0.05 in the models)'
             return
         end if
@@ -562,7 +564,7 @@ contains
         case (M_RA11_M, M_RA11_PGV)
             if (ieee_is_nan(inp(IN_TM))) then
                 ! a record whose band 0.25-20 Hz carries no energy (doc/intensity.md)
-                call report('empirical: '//model_label(m)//', ky = '//num(ky)//': tm = ' &
+                call report('empirical: '//model_label(m)//', ky = '//shortest_str(ky)//': tm = ' &
                             //'NaN: the record has no mean period (no Fourier amplitude ' &
                             //'at 0.25-20 Hz)')
                 return
@@ -580,7 +582,7 @@ contains
                                  d, s, base, st, msg)
         end select
         if (st /= SEISPULSE_SUCCESS) then
-            call report('empirical: '//model_label(m)//', ky = '//num(ky)//': '//trim(msg))
+            call report('empirical: '//model_label(m)//', ky = '//shortest_str(ky)//': '//trim(msg))
             return
         end if
         row(C_BASE) = merge(10.0_dp, exp(1.0_dp), base == EMP_LOG10)
@@ -648,9 +650,9 @@ contains
             //'energy (PGA = 0 or arias = 0): disp 0 in every row (p_zero 1)'
         if (cfg%with_records) then
             comments(7) = 'cases are the records: pga (g), pgv (cm/s), arias (m/s), tm (s) ' &
-                          //'and sa_15ts = Sa(1.5 ts) (g, damping '//num(cfg%damping) &
+                          //'and sa_15ts = Sa(1.5 ts) (g, damping '//shortest_str(cfg%damping) &
                           //'; PGA for ts < 0.05 s) are the record''s own (g = ' &
-                          //num(cfg%g)//' m/s2)'
+                          //shortest_str(cfg%g)//' m/s2)'
             comments(8) = 'newmark_exact, newmark_slammer: the rigorous rigid block on the ' &
                           //'record (cm, downslope, the record as scaled; exact solution and ' &
                           //'SLAMMER''s rule)'

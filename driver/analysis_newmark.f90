@@ -11,7 +11,7 @@
 !> converge keeps the results of its last iteration with converged = 0: a warning on
 !> stderr and in the header, not a failure.
 !> Everything is checked before any record is read. A record that cannot be read or
-!> scaled fails its rows (NaN results, status 1; the message goes to stderr and into the
+!> scaled fails its rows (NaN results, status failed; the message goes to stderr and into the
 !> table's header) and the other records are still computed; run_newmark then returns
 !> ROWS_FAILED and the driver exits with status 1 after writing the table. The
 !> numbers come from seispulse_records (reading, PGA scaling) and seispulse_newmark (the
@@ -19,7 +19,8 @@
 module driver_newmark
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
-    use seispulse, only: dp, SEISPULSE_SUCCESS, int_str, newmark_block_t, newmark_result_t, &
+    use seispulse, only: dp, shortest_str, SEISPULSE_SUCCESS, int_str, newmark_block_t, &
+                         newmark_result_t, &
                          newmark_rigid, newmark_incline, newmark_block_validate, &
                          newmark_mode_code, newmark_method_code, newmark_mode_name, &
                          newmark_method_name, NEWMARK_DOWN, NEWMARK_BOTH, NEWMARK_ASYM, positive, &
@@ -28,7 +29,7 @@ module driver_newmark
                          ky_table_validate
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: find_group, located, join, read_optional, given, &
-                            list_length, list_item, value_name, num, name_index, ROWS_FAILED
+                            list_length, list_item, value_name, name_index, ROWS_FAILED
     use driver_input, only: missing_group
     use driver_tables, only: write_tables, say_written, category_kind, status_names
     use driver_slope, only: slope_keys, slope_defaults, read_slope, check_slope, echo_slope, &
@@ -276,7 +277,7 @@ contains
             end if
         end if
         if (.not. finite_positive(g)) then
-            errmsg = where//'g = '//num(g)//': must be a finite number > 0 (m/s2)'
+            errmsg = where//'g = '//shortest_str(g)//': must be a finite number > 0 (m/s2)'
             return
         end if
         cfg%g = g
@@ -358,7 +359,8 @@ contains
                 call newmark_incline(mu(i), slope_deg, xi_deg, along_plane, cfg%blocks(i), &
                                      st, msg)
                 if (st /= SEISPULSE_SUCCESS) then
-                    errmsg = where//value_name('mu', i, n)//' = '//num(mu(i))//': '//trim(msg)
+                    errmsg = where//value_name('mu', i, n)//' = '//shortest_str(mu(i))//': ' &
+                        //trim(msg)
                     return
                 end if
             end do
@@ -409,7 +411,7 @@ contains
         do i = 1, n
             item = value_name('ky', i, n)
             if (.not. positive(ky(i))) then
-                errmsg = where//item//' = '//num(ky(i))//': must be > 0 (g; inf: no ' &
+                errmsg = where//item//' = '//shortest_str(ky(i))//': must be > 0 (g; inf: no ' &
                          //'sliding)'
                 return
             end if
@@ -419,7 +421,7 @@ contains
             if (cfg%mode == NEWMARK_ASYM) then
                 k = min(i, n_up)
                 if (.not. positive(ky_up(k))) then
-                    errmsg = where//value_name('ky_up', k, n_up)//' = '//num(ky_up(k)) &
+                    errmsg = where//value_name('ky_up', k, n_up)//' = '//shortest_str(ky_up(k)) &
                              //': must be > 0 (g; inf: no upslope sliding)'
                     return
                 end if
@@ -656,7 +658,7 @@ contains
     ! ------------------------------------------------------------------------------
 
     !> Every record (read, polarity, scale), every block, normal and inverse. A record
-    !> that fails leaves NaN results and status 1 in its rows; the message goes to
+    !> that fails leaves NaN results and status failed in its rows; the message goes to
     !> stderr at once. An unconverged flexible case keeps its results (converged = 0)
     !> with a warning on stderr and a note for the header. Progress: one line per record
     !> on stderr.
@@ -806,11 +808,11 @@ contains
         integer, intent(in) :: ib
         character(len=:), allocatable :: s
         if (cfg%with_mu) then
-            s = value_name('mu', ib, size(cfg%blocks))//' = '//num(cfg%mu(ib))
+            s = value_name('mu', ib, size(cfg%blocks))//' = '//shortest_str(cfg%mu(ib))
         else if (allocated(cfg%ky_disp)) then
             s = 'ky_table'
         else
-            s = value_name('ky', ib, size(cfg%blocks))//' = '//num(cfg%blocks(ib)%ky)
+            s = value_name('ky', ib, size(cfg%blocks))//' = '//shortest_str(cfg%blocks(ib)%ky)
         end if
     end function row_name
 
@@ -846,9 +848,9 @@ contains
                       //'accelerograms, one row per record and '//merge('mu', 'ky', cfg%with_mu)
         comments(2) = 'input: '//trim(path)
         line = 'mode = '//newmark_mode_name(cfg%mode)//', method = ' &
-               //newmark_method_name(cfg%method)//', g = '//num(cfg%g)//' m/s2'
-        if (cfg%with_mu) line = line//'; incline: slope_deg = '//num(cfg%slope_deg) &
-            //', xi_deg = '//num(cfg%xi_deg)//', along_plane = ' &
+               //newmark_method_name(cfg%method)//', g = '//shortest_str(cfg%g)//' m/s2'
+        if (cfg%with_mu) line = line//'; incline: slope_deg = '//shortest_str(cfg%slope_deg) &
+            //', xi_deg = '//shortest_str(cfg%xi_deg)//', along_plane = ' &
             //trim(merge('true ', 'false', cfg%along_plane))//' (ky, ky_up from Eq. 1.31)'
         comments(3) = line
         comments(4) = 'sign convention: positive slip = downslope, driven by positive ' &
@@ -890,12 +892,13 @@ contains
             call add('input: '//trim(path))
             call add('method = '//trim(kind_names(cfg%kind))//', rule = ' &
                      //newmark_method_name(cfg%method)//', mode = ' &
-                     //newmark_mode_name(cfg%mode)//', g = '//num(cfg%g)//' m/s2')
+                     //newmark_mode_name(cfg%mode)//', g = '//shortest_str(cfg%g)//' m/s2')
             if (flexible) call add(slope_line(cfg%mass))
             if (allocated(cfg%ky_disp)) then
                 line = 'yield table (ky_disp m: ky_table g):'
                 do i = 1, size(cfg%ky_disp)
-                    line = line//' '//num(cfg%ky_disp(i))//': '//num(cfg%ky_values(i))
+                    line = line//' '//shortest_str(cfg%ky_disp(i))//': ' &
+                        //shortest_str(cfg%ky_values(i))
                     if (i < size(cfg%ky_disp)) line = line//','
                 end do
                 call add(line//'; the column ky is ky_table(1)')
@@ -915,7 +918,7 @@ contains
                          //'same for normal and inverse')
                 call add('converged: yes, or no when the equivalent-linear iteration stopped ' &
                          //'at max_iter: the results of its last iteration, a warning below ' &
-                         //'and on stderr, status 0')
+                         //'and on stderr, status ok')
             end if
             call add('status: ok, or failed (nan results; the reason is below and on ' &
                      //'stderr); exit status 1 when a row failed (2: an input error, no table)')

@@ -6,7 +6,8 @@ module driver_pulse
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, &
                                              ieee_quiet_nan
-    use seispulse, only: dp, pulse_eval, pulse_end_time, pulse_kind_name, SEISPULSE_SUCCESS, &
+    use seispulse, only: dp, shortest_str, pulse_eval, pulse_end_time, pulse_kind_name, &
+                         SEISPULSE_SUCCESS, &
                          PULSE_RICKER, real_str
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, check_keys, read_group, located
@@ -148,7 +149,7 @@ contains
         table(:, 3) = table(:, 2) / pin%g
         comments(1) = 'seispulse analysis pulse: '//pulse_kind_name(pin%code)
         comments(2) = 'input: '//trim(path)
-        comments(3) = 'a_in_g = a/g, g = '//real_str(pin%g)//' m/s2'
+        comments(3) = 'a_in_g = a/g, g = '//shortest_str(pin%g)//' m/s2'
         call write_tables(prefix, 'pulse', comments, &
             [character(len=8) :: 't', 'a', 'a_in_g', 'v', 'd'], &
             [character(len=8) :: 's', 'm/s2', 'g', 'm/s', 'm'], table, files, stat, errmsg)

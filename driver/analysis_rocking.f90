@@ -10,7 +10,7 @@
 !> Tables <output>_rocking (what = 'summary'; one row per record with &records),
 !> <output>_rocking_history ('history'; the records stacked, the record's name first) or
 !> <output>_rocking_map ('map'). A record that cannot be read or run fails its row (NaN,
-!> status 1), the others are written and run_rocking returns ROWS_FAILED (exit status 1).
+!> status failed), the others are written and run_rocking returns ROWS_FAILED (exit status 1).
 !> The numbers come from seispulse_rocking_sim (the
 !> integrator, any pulse) and seispulse_rocking_closed (the linearized closed forms of the
 !> half-cycle exponential pulse, shown side by side); the driver only reads, checks,
@@ -19,7 +19,7 @@ module driver_rocking
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan, &
                                              ieee_positive_inf, ieee_is_finite
-    use seispulse, only: dp, pulse_t, pulse_validate, pulse_eval, pulse_kind_name, &
+    use seispulse, only: dp, shortest_str, pulse_t, pulse_validate, pulse_eval, pulse_kind_name, &
                          SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, PULSE_RECTANGULAR, &
                          PULSE_TRIANGULAR, PULSE_RICKER, real_str, &
                          int_str, rocking_summary, rocking_region_name, rocking_block_t, &
@@ -40,7 +40,8 @@ module driver_rocking
     use driver_axis, only: axis_values
     use driver_rocking_common, only: check_run_options, restitution_and_model, &
                                      locate_run_message, map_kind, map_template, progress_t, &
-                                     map_class_names, rock_records
+                                     map_class_names, rock_records, run_outcome_names, &
+                                     map_class_line
     use driver_echo, only: echo_unit
     implicit none
     private
@@ -64,9 +65,6 @@ module driver_rocking
         'amp_ratio', 'amp_range', 'amp_count', 'cycles']
     character(len=8), parameter :: what_names(3) = [character(len=8) :: 'summary', &
         'history', 'map']
-    character(len=24), parameter :: outcome_names(0:5) = [character(len=24) :: 'rest', &
-        'no_uplift', 'overturn_no_impact', 'overturn_one_impact', 'overturn_many_impacts', &
-        'time_limit']
 
     !> Most values on one axis of a map (freq_ratio, amp_ratio).
     integer, parameter :: max_list = 1000
@@ -444,7 +442,7 @@ contains
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
         type(rocking_run_t) :: run
-        character(len=512) :: msg, files(2), comments(7)
+        character(len=512) :: msg, files(2), comments(8)
         real(dp) :: row(21), nan, f, eta, beta_cf, tau_up, tau_c, tau_m, psi_max, tau_i, td
         character(len=32) :: names(0:5)
         integer :: region, i, k
@@ -502,7 +500,7 @@ contains
         if (cf) then
             comments(7) = 'closed forms (_cf): linearized model (doc/rocking.md (2.4)-(2.35), ' &
                           //'seispulse_rocking_closed), half-cycle exponential pulse, beta = ' &
-                          //real_str(beta_cf)//', f = p t_d, eta = alpha/(A_g/g)'
+                          //shortest_str(beta_cf)//', f = p t_d, eta = alpha/(A_g/g)'
         else
             comments(7) = 'closed forms (_cf): nan, they exist for the half-cycle ' &
                           //'exponential pulse (also rectangular, symmetric triangular) ' &
@@ -510,6 +508,7 @@ contains
             if (abs(kv) > 0.0_dp) comments(7) = 'closed forms (_cf): nan, they have no ' &
                                                //'vertical ground acceleration (kv = 0 only)'
         end if
+        comments(8) = 'input: '//trim(path)
         call write_tables(prefix, 'rocking', comments, &
             [character(len=12) :: 'alpha', 'p', 'e', 'f', 'eta', 'outcome', 't_uplift', &
              't_overturn', 'n_impacts', 't_impact1', 'theta_max', 'theta_min', 'psi_max', &
@@ -518,13 +517,13 @@ contains
             [character(len=6) :: 'rad', 'rad/s', '-', '-', '-', '-', 's', 's', '-', 's', &
              'rad', 'rad', '-', '-', 's', '-', 's', 's', 's', '-', 's'], &
             reshape(row, [1, size(row)]), files, stat, errmsg, &
-            kinds=[character(len=256) :: '', '', '', '', '', category_kind(outcome_names), &
+            kinds=[character(len=256) :: '', '', '', '', '', category_kind(run_outcome_names), &
                    '', '', 'int', '', '', '', '', '', '', category_kind(names)], summary=.true.)
         if (stat /= 0) then
             errmsg = path//': &run: output: '//errmsg
             return
         end if
-        write(output_unit, '(a)') 'rocking: '//trim(outcome_names(run%outcome))
+        write(output_unit, '(a)') 'rocking: '//trim(run_outcome_names(run%outcome))
         call say_written('rocking table', files)
     end subroutine do_summary
 
@@ -542,12 +541,12 @@ contains
     subroutine block_lines(blk, lines)
         type(rocking_block_t), intent(in) :: blk
         character(len=*), intent(out) :: lines(2)
-        lines(1) = 'block: alpha = '//real_str(blk%alpha)//' rad, p = '//real_str(blk%p) &
-                   //' rad/s, e = '//real_str(blk%e)//', g = '//real_str(blk%g)//' m/s2'
+        lines(1) = 'block: alpha = '//shortest_str(blk%alpha)//' rad, p = '//shortest_str(blk%p) &
+                   //' rad/s, e = '//shortest_str(blk%e)//', g = '//shortest_str(blk%g)//' m/s2'
         lines(2) = 'uplift at |a_g| > g tan(alpha) (nonlinear) or g alpha (linearized); ' &
                    //'a_g > 0 drives theta > 0'
         if (abs(kv) > 0.0_dp) lines(2) = 'vertical ground acceleration a_v = kv a_g, kv = ' &
-            //real_str(kv)//' (doc/rocking.md section 7): uplift at a_g > g t/(1 - kv t) or ' &
+            //shortest_str(kv)//' (doc/rocking.md section 7): uplift at a_g > g t/(1 - kv t) or ' &
             //'a_g < -g t/(1 + kv t), t = tan(alpha) (nonlinear) or alpha (linearized); ' &
             //'a_g > 0 drives theta > 0'
     end subroutine block_lines
@@ -603,10 +602,10 @@ contains
         table(:, 1) = t
 
         call block_comments(pin, blk, comments(1:3))
-        comments(4) = 'outcome: '//trim(outcome_names(run%outcome))//', t_uplift = ' &
-                      //real_str(run%t_uplift)//' s, impacts: '//int_str(run%n_impacts) &
-                      //', theta_max = '//real_str(run%theta_max)//' rad, theta_min = ' &
-                      //real_str(run%theta_min)//' rad, t_end = '//real_str(run%t_end)//' s'
+        comments(4) = 'outcome: '//trim(run_outcome_names(run%outcome))//', t_uplift = ' &
+                      //shortest_str(run%t_uplift)//' s, impacts: '//int_str(run%n_impacts) &
+                      //', theta_max = '//shortest_str(run%theta_max)//' rad, theta_min = ' &
+                      //shortest_str(run%theta_min)//' rad, t_end = '//shortest_str(run%t_end)//' s'
         comments(5) = 'theta: rotation (rad; > 0 about one corner, < 0 about the other), ' &
                       //'omega = dtheta/dt (rad/s)'
         comments(6) = 'overturned: theta = +-pi/2 and omega = 0 after t_end; nan after a ' &
@@ -619,7 +618,7 @@ contains
             errmsg = path//': &run: output: '//errmsg
             return
         end if
-        write(output_unit, '(a)') 'rocking: '//trim(outcome_names(run%outcome))
+        write(output_unit, '(a)') 'rocking: '//trim(run_outcome_names(run%outcome))
         call say_written('rocking history', files)
     end subroutine do_history
 
@@ -717,16 +716,15 @@ contains
         end do
         comments(1) = 'seispulse analysis rocking: overturning map, '//pulse_kind_name(code) &
                       //' pulse family, '//trim(model)//' model (seispulse_rocking_sim)'
-        comments(2) = 'class: safe, overturns without impact, after one impact, after more ' &
-                      //'impacts, or undecided (the step budget ran out)'
+        comments(2) = map_class_line
         comments(3) = 'freq_ratio = omega_p/p, omega_p = 2 pi/T_p (T_p: t_d of the ' &
                       //'exponential pulse, the period of sine/cosine cycles, the length ' &
                       //'of the others; Ricker: omega_p = 2 pi f_p)'
         comments(4) = 'amp_ratio = a_p/(g tan alpha) (both models); rows: amp_ratio ' &
                       //'outer, freq_ratio inner'
-        comments(5) = 'block: alpha = '//real_str(blk%alpha)//' rad, e = '//real_str(blk%e)
+        comments(5) = 'block: alpha = '//shortest_str(blk%alpha)//' rad, e = '//shortest_str(blk%e)
         if (abs(kv) > 0.0_dp) comments(5) = trim(comments(5))//'; vertical ground ' &
-            //'acceleration a_v = kv a_g, kv = '//real_str(kv)//' (doc/rocking.md section 7)'
+            //'acceleration a_v = kv a_g, kv = '//shortest_str(kv)//' (doc/rocking.md section 7)'
         comments(6) = template_text(tpl)
         comments(7) = 'input: '//trim(path)
         call write_tables(prefix, 'rocking_map', comments, &
@@ -811,7 +809,7 @@ contains
     end function record_row
 
     !> 'summary' or 'history' under each record of &records: a record that cannot be
-    !> read or run gives a row of NaN (status 1) and the others go on; stat ROWS_FAILED
+    !> read or run gives a row of NaN (status failed) and the others go on; stat ROWS_FAILED
     !> then (the table is written).
     subroutine do_records(path, prefix, grec, gr, blk, recs, slammer_rounding, history, &
                           stat, errmsg)
@@ -848,7 +846,7 @@ contains
         do ir = 1, nrec
             labels(ir) = outs(ir)%name
             if (failed(ir)) then
-                ! a failed row: the block, NaN results, status 1 (failed)
+                ! a failed row: the block, NaN results, status failed
                 summary(ir, :) = nan
                 summary(ir, 2:4) = [blk%alpha, blk%p, blk%e]
                 summary(ir, n_rec_cols) = 1.0_dp
@@ -932,10 +930,11 @@ contains
                 comments(nh + ir) = trim(comments(nh + ir))//'; FAILED: '//outs(ir)%message
             else if (history .and. .not. failed(ir)) then
                 comments(nh + ir) = trim(comments(nh + ir))//'; outcome: ' &
-                    //trim(outcome_names(nint(summary(ir, 5))))//', impacts: ' &
+                    //trim(run_outcome_names(nint(summary(ir, 5))))//', impacts: ' &
                     //int_str(nint(summary(ir, 8)))//', theta_max = ' &
-                    //real_str(summary(ir, 10))//' rad, theta_min = ' &
-                    //real_str(summary(ir, 11))//' rad, t_end = '//real_str(summary(ir, 14)) &
+                    //shortest_str(summary(ir, 10))//' rad, theta_min = ' &
+                    //shortest_str(summary(ir, 11))//' rad, t_end = ' &
+                        //shortest_str(summary(ir, 14)) &
                     //' s'
             end if
         end do
@@ -947,7 +946,7 @@ contains
     function record_kinds() result(kinds)
         character(len=160) :: kinds(n_rec_cols + 1)
         kinds = ''
-        kinds(6) = category_kind(outcome_names)
+        kinds(6) = category_kind(run_outcome_names)
         kinds(9) = 'int'
         kinds(n_rec_cols + 1) = category_kind(status_names)
     end function record_kinds

@@ -10,7 +10,7 @@
 !> periods), <output>_sdof_envelope (envelope = .true.) and <output>_sdof_history
 !> (with &sdof_history). Everything is checked before any record is read, and every
 !> table is computed before the first is written. A record that cannot be read,
-!> scaled or analysed fails its rows (NaN results, status 1; the message goes to
+!> scaled or analysed fails its rows (NaN results, status failed; the message goes to
 !> stderr and into the headers) and the other records are still computed; run_sdof
 !> then returns ROWS_FAILED and the driver exits with status 1 after writing the
 !> tables. The numbers come from seispulse_records and seispulse_sdof_sim; the driver only
@@ -20,12 +20,13 @@
 module driver_sdof
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-    use seispulse, only: dp, SEISPULSE_SUCCESS, outside, int_str, sdof_spectrum, pseudo_spectra, &
+    use seispulse, only: dp, shortest_str, SEISPULSE_SUCCESS, outside, int_str, sdof_spectrum, &
+                         pseudo_spectra, &
                          sdof_response, design_envelope, spectral_shape, SDOF_PEAKS_EXACT, &
                          SDOF_PEAKS_SAMPLES
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, given, list_item, &
-                            name_index, num, ROWS_FAILED
+                            name_index, ROWS_FAILED
     use driver_input, only: missing_group
     use driver_tables, only: write_tables, delete_files, say_written, category_kind, &
                              status_names
@@ -250,7 +251,7 @@ contains
             stat = ROWS_FAILED
             errmsg = int_str(nfailed)//' of '//int_str(size(outs))//' records failed (' &
                      //failed_records(outs, .not. outs%ok)//'): their rows hold NaN and ' &
-                     //'status 1'
+                     //'status failed'
         end if
     end subroutine run_sdof
 
@@ -273,7 +274,7 @@ contains
         where = located(path, gs)
         errmsg = ''
         if (outside(g, 0.0_dp, huge(g), .true., .false.)) then
-            errmsg = where//'g = '//num(g)//': must be a finite number > 0 (m/s2)'
+            errmsg = where//'g = '//shortest_str(g)//': must be a finite number > 0 (m/s2)'
             return
         end if
         cfg%g = g
@@ -328,7 +329,7 @@ contains
             return
         end if
         if (outside(plateau_below, 0.0_dp, huge(g), .false., .false.)) then
-            errmsg = where//'plateau_below = '//num(plateau_below)//': must be a finite ' &
+            errmsg = where//'plateau_below = '//shortest_str(plateau_below)//': must be a finite ' &
                      //'period >= 0 (s; 0: no plateau)'
             return
         end if
@@ -579,12 +580,12 @@ contains
             associate (o => outs(ir), r => cfg%recs(ir))
                 line = record_line(ir, r, o)
                 if (o%ok) then
-                    line = line//', PGA '//num(o%pga)
+                    line = line//', PGA '//shortest_str(o%pga)
                     if (cfg%spectra .and. cfg%shape) then
                         do j = 1, size(cfg%dampings)
-                            line = line//'; damping '//num(cfg%dampings(j))//': PSA/PGA ' &
-                                   //'peak '//num(res(ir)%peak(j))//' at T = ' &
-                                   //num(res(ir)%t_peak(j))//' s'
+                            line = line//'; damping '//shortest_str(cfg%dampings(j))//': PSA/PGA ' &
+                                   //'peak '//shortest_str(res(ir)%peak(j))//' at T = ' &
+                                   //shortest_str(res(ir)%t_peak(j))//' s'
                         end do
                     end if
                 end if
@@ -597,7 +598,7 @@ contains
     function spectra_line(cfg) result(s)
         type(config_t), intent(in) :: cfg
         character(len=:), allocatable :: s
-        s = 'periods: '//cfg%grid//'; g = '//num(cfg%g)//' m/s2; peaks = '
+        s = 'periods: '//cfg%grid//'; g = '//shortest_str(cfg%g)//' m/s2; peaks = '
         if (cfg%peaks == SDOF_PEAKS_EXACT) then
             s = s//'exact (true maxima, between samples too)'
         else
@@ -736,7 +737,7 @@ contains
         head(2) = trim(head(2))//' at each period over the '//int_str(nok)//' records ' &
                   //'computed (of '//int_str(size(outs))//'; NaN: none was)'
         if (cfg%plateau_below > 0.0_dp) then
-            head(3) = 'plateau: below T = '//num(cfg%plateau_below)//' s each curve is ' &
+            head(3) = 'plateau: below T = '//shortest_str(cfg%plateau_below)//' s each curve is ' &
                       //'held at its largest value at that or any longer period'
         else
             head(3) = 'no plateau (plateau_below = 0)'
@@ -811,7 +812,8 @@ contains
             row = row + n
         end do
 
-        head(1) = 'g = '//num(cfg%g)//' m/s2; the oscillator starts from rest; t = (i-1) dt ' &
+        head(1) = 'g = '//shortest_str(cfg%g) &
+            //' m/s2; the oscillator starts from rest; t = (i-1) dt ' &
                   //'at the samples of the record'
         head(2) = 'a_g: the ground acceleration (the record as scaled); z, z'': displacement ' &
                   //'and velocity of the mass relative to the ground; a_abs = a_g + z'''': ' &

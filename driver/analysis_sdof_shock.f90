@@ -9,10 +9,10 @@
 module driver_sdof_shock
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
-    use seispulse, only: dp, SEISPULSE_SUCCESS, pseudo_spectra, sdof_pulse_spectrum, &
+    use seispulse, only: dp, shortest_str, SEISPULSE_SUCCESS, pseudo_spectra, sdof_pulse_spectrum, &
                          pulse_peak_accel, pulse_kind_name, PULSE_RICKER, PULSE_MP
     use driver_namelist_scan, only: nml_group
-    use driver_input, only: find_group, located, read_optional, given, value_name, num
+    use driver_input, only: find_group, located, read_optional, given, value_name
     use driver_input, only: missing_group
     use driver_tables, only: write_tables, say_written
     use driver_pulse_group, only: pulse_input_t, read_pulse_group, build_pulse, &
@@ -148,10 +148,10 @@ contains
         ! --- t_d, T and t_d/T
         if (pin%code == PULSE_RICKER .or. pin%code == PULSE_MP) then
             td = 1.0_dp / pin%p%freq
-            td_text = 't_d = 1/freq = '//num(td)//' s (the pulse period)'
+            td_text = 't_d = 1/freq = '//shortest_str(td)//' s (the pulse period)'
         else
             td = pin%p%duration
-            td_text = 't_d = duration = '//num(td)//' s'
+            td_text = 't_d = duration = '//shortest_str(td)//' s'
         end if
         np = size(axis)
         inf = ieee_value(inf, ieee_positive_inf)
@@ -190,11 +190,12 @@ contains
                                          sv(i:i, 1), sa(i:i, 1), st, msg)
                 if (st /= SEISPULSE_SUCCESS) then
                     if (by_period) then
-                        errmsg = where//value_name('periods', i, np)//' = '//num(t_osc(i)) &
+                        errmsg = where//value_name('periods', i, np)//' = ' &
+                            //shortest_str(t_osc(i)) &
                                  //': '//trim(msg)
                     else
-                        errmsg = where//value_name('ratios', i, np)//' = '//num(td_t(i)) &
-                                 //' (T = t_d/ratio = '//num(t_osc(i))//' s, '//td_text &
+                        errmsg = where//value_name('ratios', i, np)//' = '//shortest_str(td_t(i)) &
+                                 //' (T = t_d/ratio = '//shortest_str(t_osc(i))//' s, '//td_text &
                                  //'): '//trim(msg)
                     end if
                     return
@@ -217,8 +218,9 @@ contains
                       //'damping ratio and period'
         comments(2) = 'input: '//trim(path)
         comments(3) = 'pulse: '//pulse_kind_name(pin%code)//', '//td_text//', peak ground ' &
-                      //'acceleration PGA = '//num(apk)//' m/s2 = '//num(pga)//' g at t = ' &
-                      //num(tpk)//' s; g = '//num(pin%g)//' m/s2'
+                      //'acceleration PGA = '//shortest_str(apk)//' m/s2 = '//shortest_str(pga) &
+                          //' g at t = ' &
+                      //shortest_str(tpk)//' s; g = '//shortest_str(pin%g)//' m/s2'
         comments(4) = 'oscillators: '//grid
         comments(5) = 'SD, SV: largest |z|, |z''| (relative to the ground); SA: largest ' &
                       //'|a_g + z''''| (absolute acceleration); over all t >= 0, the free ' &

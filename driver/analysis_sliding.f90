@@ -11,7 +11,8 @@
 module driver_sliding
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan
-    use seispulse, only: dp, pulse_eval, pulse_kind_name, SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, &
+    use seispulse, only: dp, shortest_str, pulse_eval, pulse_kind_name, SEISPULSE_SUCCESS, &
+                         PULSE_EXPONENTIAL, &
                          PULSE_MP, real_str, sliding_block_t, full_cycle_t, block_response, &
                          block_response_eta, inclined_resistances, summarize_slides, &
                          sliding_mode_name, friction_t, stickslip_result_t, stickslip_pulse, &
@@ -704,9 +705,9 @@ contains
         comments(4) = 'eta1, eta2 = a_y/A_g forward, reverse (NaN: no acceleration ' &
                       //'amplitude); mu = NaN: eta given directly'
         comments(5) = slips//'; u_res: residual slip, forward positive'
-        comments(6) = 'g = '//real_str(pin%g)//' m/s2, slope_deg = '//real_str(slope_deg) &
-                      //', xi_deg = '//real_str(xi_deg)//', static_factor = ' &
-                      //real_str(static_factor)
+        comments(6) = 'g = '//shortest_str(pin%g)//' m/s2, slope_deg = '//shortest_str(slope_deg) &
+                      //', xi_deg = '//shortest_str(xi_deg)//', static_factor = ' &
+                      //shortest_str(static_factor)
         call write_tables(prefix, 'sliding', comments, &
             [character(len=8) :: 'case', 'mu', 'eta1', 'eta2', 'mode', 't_y1', 't_m1', 'u_m1', &
              't_y2', 't_m2', 'u_m2', 'u_res', 'v_m1', 'v_m2'], &

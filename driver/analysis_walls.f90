@@ -11,7 +11,7 @@
 module driver_walls
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
-    use seispulse, only: dp, SEISPULSE_SUCCESS, real_str, int_str, STANDARD_GRAVITY, &
+    use seispulse, only: dp, shortest_str, SEISPULSE_SUCCESS, real_str, int_str, STANDARD_GRAVITY, &
                          ec8_ground_parameters, ec8_r_factor, ec8_seismic_coefficients, &
                          ec8_vertical_ratio, WATER_DRY, WATER_IMPERVIOUS, WATER_PERMEABLE, &
                          EC8_WALL_GRAVITY_300, EC8_WALL_GRAVITY_200, EC8_WALL_RESTRAINED, pi, &
@@ -557,17 +557,19 @@ contains
         end do
         comments(1) = 'seispulse analysis walls: seismic thrust on a retaining wall, per method'
         comments(2) = 'input: '//trim(path)
-        comments(3) = 'H = '//real_str(height)//' m, gamma = '//real_str(gamma)//' kN/m3, phi = ' &
-                      //real_str(phi_deg)//' deg, wall friction = '//real_str(wall_friction_deg) &
-                      //' deg, psi = '//real_str(psi_deg)//' deg, beta = '//real_str(beta_deg) &
-                      //' deg, gamma_phi = '//real_str(gamma_phi)//', water = '//trim(water)
-        comments(4) = 'yielding rows: kh = '//real_str(c%kh)//', kv = '//real_str(res%kv_used) &
+        comments(3) = 'H = '//shortest_str(height)//' m, gamma = '//shortest_str(gamma) &
+                      //' kN/m3, phi = '//shortest_str(phi_deg)//' deg, wall friction = ' &
+                      //shortest_str(wall_friction_deg)//' deg, psi = ' &
+                      //shortest_str(psi_deg)//' deg, beta = '//shortest_str(beta_deg) &
+                      //' deg, gamma_phi = '//shortest_str(gamma_phi)//', water = '//trim(water)
+        comments(4) = 'yielding rows: kh = '//shortest_str(c%kh)//', kv = ' &
+                      //shortest_str(res%kv_used) &
                       //' (the sign of kv with the larger total; kv > 0 upward)'
-        comments(5) = 'non-yielding rows: ag S/g = '//real_str(c%alpha_s)//'; elastic rows: ' &
-                      //'nu = '//real_str(c%nu)//', loss factor = '//real_str(c%delta) &
-                      //', omega/omega_ref = '//real_str(c%omega_ratio)//', n = ' &
-                      //real_str(c%n)//', d_theta = '//real_str(c%d_theta)//', L/H = ' &
-                      //real_str(c%l_over_h)
+        comments(5) = 'non-yielding rows: ag S/g = '//shortest_str(c%alpha_s)//'; elastic rows: ' &
+                      //'nu = '//shortest_str(c%nu)//', loss factor = '//shortest_str(c%delta) &
+                      //', omega/omega_ref = '//shortest_str(c%omega_ratio)//', n = ' &
+                      //shortest_str(c%n)//', d_theta = '//shortest_str(c%d_theta)//', L/H = ' &
+                      //shortest_str(c%l_over_h)
         comments(6) = 'thrust: total (static + dynamic) for the static and M-O total rows, the ' &
                       //'dynamic increment for the others; z: height of the resultant above ' &
                       //'the base'

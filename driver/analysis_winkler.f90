@@ -25,7 +25,8 @@ module driver_winkler
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan, &
                                              ieee_positive_inf
-    use seispulse, only: dp, pi, pulse_t, pulse_kind_name, SEISPULSE_SUCCESS, real_str, &
+    use seispulse, only: dp, shortest_str, pi, pulse_t, pulse_kind_name, SEISPULSE_SUCCESS, &
+                         real_str, &
                          int_str, finite_positive, rocking_body_t, cylinder_props, block_props, &
                          body_overturning_map, map_difference, FOOTING_CIRCLE, &
                          FOOTING_RECTANGLE, K_CONSTANT, K_VARYING, AXIS_LONG, AXIS_SHORT, &
@@ -33,7 +34,7 @@ module driver_winkler
                          block_winkler_pushover, winkler_pushover_t, winkler_master_curve, &
                          WP_THETA, WP_FORCE, WP_NCOL, DAMP_ROCKING, DAMP_VERTICAL, &
                          winkler_model_t, winkler_model, winkler_run_t, winkler_rock, &
-                         winkler_overturning_map, winkler_outcome_name, winkler_output_name, &
+                         winkler_overturning_map, winkler_output_name, &
                          WR_NOUT, WR_RUN_TIME_LIMIT, clay_bearing, degradation_coeffs_t, &
                          inelastic_pushover, inelastic_pushover_t, IP_NCOL, IP_FORCE, &
                          moment_capacity_circle, CAPACITY_TC00_PEAK, CAPACITY_EFFECTIVE_WIDTH
@@ -51,7 +52,8 @@ module driver_winkler
     use driver_axis, only: axis_values
     use driver_rocking_common, only: check_run_options, locate_run_message, map_kind, &
                                      map_template, progress_t, axes_names, map_axes_code, &
-                                     map_grids, map_axes_header, map_table, run_summary_kinds
+                                     map_grids, map_axes_header, map_table, run_summary_kinds, &
+                                     map_class_names, winkler_outcome_names, map_class_line
     use driver_echo, only: echo_unit
     implicit none
     private
@@ -626,7 +628,7 @@ contains
                 return
             end if
             top = s%body%theta_c
-            grid = 'theta = 0 .. theta_c (rigid) = '//real_str(top)//' rad'
+            grid = 'theta = 0 .. theta_c (rigid) = '//shortest_str(top)//' rad'
             if (given(s%gw, 'theta_max')) then
                 if (.not. (finite_positive(theta_max) .and. theta_max <= 0.5_dp * pi)) then
                     errmsg = where//'theta_max = '//real_str(theta_max)//': must be in ' &
@@ -634,7 +636,7 @@ contains
                     return
                 end if
                 top = theta_max
-                grid = 'theta = 0 .. theta_max = '//real_str(top)//' rad'
+                grid = 'theta = 0 .. theta_max = '//shortest_str(top)//' rad'
             end if
             if (theta_count < 2 .or. theta_count > max_list) then
                 errmsg = where//'theta_count = '//int_str(theta_count)//': must be in 2 .. ' &
@@ -660,22 +662,23 @@ contains
         type(setup_t), intent(in) :: s
         character(len=:), allocatable :: line
         if (s%footing == FOOTING_CIRCLE) then
-            line = 'circular footing r = '//real_str(r)//' m'
+            line = 'circular footing r = '//shortest_str(r)//' m'
         else
-            line = 'rectangular footing b = '//real_str(b)//' m (rocking direction) x alpha = ' &
-                   //real_str(alpha)//' m (half-lengths)'
+            line = 'rectangular footing b = '//shortest_str(b) &
+                //' m (rocking direction) x alpha = ' &
+                   //shortest_str(alpha)//' m (half-lengths)'
         end if
-        line = line//', h = '//real_str(h)//' m, W = '//real_str(s%weight)//' N, g = ' &
-               //real_str(g)//' m/s2'
+        line = line//', h = '//shortest_str(h)//' m, W = '//shortest_str(s%weight)//' N, g = ' &
+               //shortest_str(g)//' m/s2'
     end function body_line
 
     !> Header line of the soil: k and how it was chosen.
     function soil_line(s) result(line)
         type(setup_t), intent(in) :: s
         character(len=:), allocatable :: line
-        line = 'Winkler modulus k = '//real_str(s%k)//' N/m3'
+        line = 'Winkler modulus k = '//shortest_str(s%k)//' N/m3'
         if (given(s%gw, 'g_mod')) line = line//' (K_R/I of the halfspace, G = ' &
-                                         //real_str(g_mod)//' Pa, nu = '//real_str(nu)//')'
+                                         //shortest_str(g_mod)//' Pa, nu = '//shortest_str(nu)//')'
         line = line//', k_method = '''//trim(k_method)//''''
         if (s%k_method == K_VARYING) then
             if (s%footing == FOOTING_CIRCLE) then
@@ -810,7 +813,7 @@ contains
             n = theta_ratio_count
             x = [(master_default_top * (real(i, dp) / real(n - 1, dp)), i = 0, n - 1)]
             x(n) = master_default_top
-            grid = 'theta_ratio = 0 .. '//real_str(master_default_top)//', '//int_str(n) &
+            grid = 'theta_ratio = 0 .. '//shortest_str(master_default_top)//', '//int_str(n) &
                    //' values (default)'
         end if
         n = size(x)
@@ -896,8 +899,9 @@ contains
                       //'on undrained clay, stiffness-degradation method ([AD11] chapter 3; ' &
                       //'seispulse_clay_footing, doc/winkler.md)'
         comments(2) = body_line(s)
-        comments(3) = 'clay: G = '//real_str(g_mod)//' Pa, nu = '//real_str(nu)//', S_u = ' &
-                      //real_str(su)//' Pa, N_c = '//real_str(nc)//'; '//coeffs_text(coeffs)
+        comments(3) = 'clay: G = '//shortest_str(g_mod)//' Pa, nu = '//shortest_str(nu) &
+            //', S_u = ' &
+                      //shortest_str(su)//' Pa, N_c = '//shortest_str(nc)//'; '//coeffs_text(coeffs)
         comments(4) = 'USER-SUPPLIED coefficients: the thesis''s fitted values are lost; the ' &
                       //'curve is only as good as the coefficients given'
         comments(5) = 'k_r: secant rocking stiffness K_R(theta) (N m/rad), m_found = K_R ' &
@@ -944,14 +948,15 @@ contains
         type(degradation_coeffs_t), intent(in) :: cf
         character(len=:), allocatable :: text
         integer :: i
-        text = 'k_el = '//real_str(cf%k_el)//', kr_c1 = '//real_str(cf%kr_c1)//', kr_c2 = ' &
-               //real_str(cf%kr_c2)//', a_poly ='
+        text = 'k_el = '//shortest_str(cf%k_el)//', kr_c1 = '//shortest_str(cf%kr_c1) &
+            //', kr_c2 = ' &
+               //shortest_str(cf%kr_c2)//', a_poly ='
         do i = 0, 4
-            text = text//' '//real_str(cf%a_poly(i))
+            text = text//' '//shortest_str(cf%a_poly(i))
         end do
-        text = text//', b1 = '//real_str(cf%b1)//', b2 = '//real_str(cf%b2)//', c1 = ' &
-               //real_str(cf%c1)//', c2 = '//real_str(cf%c2)//', log_base = ' &
-               //real_str(cf%log_base)
+        text = text//', b1 = '//shortest_str(cf%b1)//', b2 = '//shortest_str(cf%b2)//', c1 = ' &
+               //shortest_str(cf%c1)//', c2 = '//shortest_str(cf%c2)//', log_base = ' &
+               //shortest_str(cf%log_base)
     end function coeffs_text
 
     !> 'capacity': bearing capacity, factor of safety and moment capacities of a circular
@@ -985,8 +990,8 @@ contains
         call echo(s)
         comments(1) = 'seispulse analysis winkler: capacities of a circular footing on ' &
                       //'undrained clay (seispulse_clay_footing, doc/winkler.md)'
-        comments(2) = 'circular footing r = '//real_str(r)//' m, W = '//real_str(s%weight) &
-                      //' N, S_u = '//real_str(su)//' Pa'
+        comments(2) = 'circular footing r = '//shortest_str(r)//' m, W = '//shortest_str(s%weight) &
+                      //' N, S_u = '//shortest_str(su)//' Pa'
         comments(3) = 'n_ult = N_c S_u pi r^2 (N_c = pi + 3 by default, [SLSY04]), sf = ' &
                       //'n_ult/W, chi = 1/sf'
         comments(4) = 'm_ult_tc = 0.8 A D S_u ([TC00] peak), m_ult_width = W D (1 - chi)/2 ' &
@@ -1076,13 +1081,9 @@ contains
     function summary_kinds(records) result(kinds)
         logical, intent(in) :: records
         character(len=:), allocatable :: kinds(:)
-        character(len=24) :: onames(0:4)
-        integer :: j, k0
-        do j = 0, 4
-            onames(j) = winkler_outcome_name(j)
-        end do
+        integer :: k0
         k0 = merge(2, 0, records)
-        kinds = run_summary_kinds(k0 + 14, k0 + 5, onames, k0 + 8)
+        kinds = run_summary_kinds(k0 + 14, k0 + 5, winkler_outcome_names, k0 + 8)
     end function summary_kinds
 
     !> Header lines shared by the tables of a history.
@@ -1094,19 +1095,20 @@ contains
                    //'tensionless Winkler springs and dashpots ([KH91], [KSR86]; ' &
                    //'seispulse_winkler_rock) under '//excitation
         lines(2) = body_line(s)
-        lines(3) = soil_line(s)//', c = '//real_str(s%model%c)//' N s/m3'
+        lines(3) = soil_line(s)//', c = '//shortest_str(s%model%c)//' N s/m3'
         if (given(s%gw, 'c')) then
             lines(3) = trim(lines(3))//' (given)'
         else
-            lines(3) = trim(lines(3))//' (xi = '//real_str(xi)//', damping_ref = ''' &
+            lines(3) = trim(lines(3))//' (xi = '//shortest_str(xi)//', damping_ref = ''' &
                        //trim(damping_ref)//''')'
         end if
         lines(4) = 'theta_c, theta_overturn: rigid and static Winkler overturning angles'
         lines(5) = 'v: settlement of the base centre (+ down), theta > 0 lifts the s > 0 ' &
-                   //'side, width: contact width, normal: N, moment: foundation moment about ' &
-                   //'the base centre in the sense of theta (restoring: opposite sign to ' &
-                   //'theta and to the pushover''s m_found), accel: ground a_g (> 0 drives ' &
-                   //'theta > 0); energy: kinetic + potential + spring, work: input, ' &
+                   //'side, contact_width: contact width, normal_force: N, moment: foundation ' &
+                   //'moment about the base centre in the sense of theta (restoring: opposite ' &
+                   //'sign to theta and to the pushover''s m_found), ground_accel: ground a_g ' &
+                   //'(> 0 drives theta > 0); energy: kinetic + potential + spring, ' &
+                   //'input_work: input work, ' &
                    //'dissipated: contact work - spring energy; energy_error: largest ' &
                    //'relative energy balance error'
     end subroutine history_comments
@@ -1187,19 +1189,19 @@ contains
         comments(6) = 'NaN: no such event; overturned or a time limit: NaN after t_end'
         comments(7) = 'input: '//trim(path)
         lines = comments
-        lines(6) = 'outcome: '//winkler_outcome_name(run%outcome)//', impacts: ' &
-                   //int_str(run%n_impacts)//', theta_max = '//real_str(run%theta_max) &
-                   //' rad, t_end = '//real_str(run%t_end)//' s'
+        lines(6) = 'outcome: '//trim(winkler_outcome_names(run%outcome))//', impacts: ' &
+                   //int_str(run%n_impacts)//', theta_max = '//shortest_str(run%theta_max) &
+                   //' rad, t_end = '//shortest_str(run%t_end)//' s'
         call history_header(.false., names, units)
         call write_table_pair(path, prefix, 'winkler', comments, summary_names(.false.), &
             summary_units(.false.), reshape(summary_row(s, run), [1, 14]), 'winkler summary', &
             'winkler_history', lines, names, units, table, 'winkler history', stat, errmsg, &
-            note='winkler: '//winkler_outcome_name(run%outcome), &
+            note='winkler: '//trim(winkler_outcome_names(run%outcome)), &
             kinds1=summary_kinds(.false.), summary1=.true.)
     end subroutine do_history_pulse
 
     !> Rocking under each record of &records: a summary row and the history rows of each
-    !> (a record that cannot be read or run: NaN, status 1, the others go on).
+    !> (a record that cannot be read or run: NaN, the others go on).
     subroutine do_history_records(path, prefix, s, stat, errmsg)
         character(len=*), intent(in) :: path, prefix
         type(setup_t), intent(in) :: s
@@ -1298,7 +1300,7 @@ contains
         if (nfailed > 0) then
             stat = ROWS_FAILED
             errmsg = int_str(nfailed)//' of '//int_str(nrec)//' records failed (' &
-                     //failed_records(outs, failed)//')'
+                     //failed_records(outs, failed)//'): their rows hold NaN'
         end if
     end subroutine do_history_records
 
@@ -1329,7 +1331,6 @@ contains
         character(len=128), allocatable :: kinds(:)
         real(dp), allocatable :: xs(:), ys(:), table(:, :)
         integer, allocatable :: classes(:, :), classes_r(:, :), diff(:, :)
-        character(len=24) :: onames(0:3)
         type(pulse_t) :: tpl
         integer :: code, i, st, axes_code
         type(progress_t) :: progress
@@ -1387,20 +1388,16 @@ contains
             call map_table(axes_code, xs, ys, s%body%p, s%body%theta_c, classes, table)
             call map_axes_header(axes_code, names, units)
         end if
-        do i = 0, 3
-            onames(i) = winkler_outcome_name(i)
-        end do
         ! the classes of both maps by the same names
-        kinds = [character(len=128) :: '', '', '', '', category_kind(onames)]
-        if (compare_rigid) kinds = [character(len=128) :: kinds, category_kind(onames), &
+        kinds = [character(len=128) :: '', '', '', '', category_kind(map_class_names)]
+        if (compare_rigid) kinds = [character(len=128) :: kinds, category_kind(map_class_names), &
                                     category_kind(diff_names)]
         comments(1) = 'seispulse analysis winkler: overturning map on Winkler soil, ' &
                       //pulse_kind_name(code)//' pulse family (seispulse_winkler_rock)'
-        comments(2) = body_line(s)//'; rigid theta_c = '//real_str(s%body%theta_c) &
-                      //' rad, p = '//real_str(s%body%p)//' rad/s'
-        comments(3) = trim(soil_line(s))//', c = '//real_str(s%model%c)//' N s/m3'
-        comments(4) = 'class: safe, or overturn_* by the impacts before overturning; ' &
-                      //'undecided: the step budget ran out'
+        comments(2) = body_line(s)//'; rigid theta_c = '//shortest_str(s%body%theta_c) &
+                      //' rad, p = '//shortest_str(s%body%p)//' rad/s'
+        comments(3) = trim(soil_line(s))//', c = '//shortest_str(s%model%c)//' N s/m3'
+        comments(4) = map_class_line
         comments(5) = 'freq_ratio = omega_p/p = 2 pi freq_hz/p (T_p: t_d of the ' &
                       //'exponential pulse, the period of sine/cosine cycles, the length ' &
                       //'of the others; Ricker: the dominant f_p); amp_ratio = a_p/(g tan ' &
@@ -1409,7 +1406,7 @@ contains
                       trim(names(2))//' outer, '//trim(names(1))//' inner; '//template_text(tpl)
         if (compare_rigid) then
             comments(7) = 'class_rigid: the same body on a rigid base (Housner e = ' &
-                          //real_str(s%body%e)//'), same cells'
+                          //shortest_str(s%body%e)//'), same cells'
             comments(8) = 'diff: only_winkler, only_rigid: only one of the two overturns, ' &
                           //'other_mode: both, in different classes; grid: '//grid_x//', '//grid
         else

@@ -3,9 +3,9 @@
 !> an axis is given and checked the same way in every analysis.
 module driver_axis
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-    use seispulse, only: dp, outside, real_str, int_str
+    use seispulse, only: dp, shortest_str, outside, real_str, int_str
     use driver_namelist_scan, only: nml_group
-    use driver_input, only: join, given, list_length, list_item, name_index, value_name, num
+    use driver_input, only: join, given, list_length, list_item, name_index, value_name
     implicit none
     private
 
@@ -91,7 +91,7 @@ contains
                     if (plain) then
                         errmsg = list_item(lname, i)//' = '//real_str(list(i))
                     else
-                        errmsg = value_name(lname, i, n)//' = '//num(list(i))
+                        errmsg = value_name(lname, i, n)//' = '//shortest_str(list(i))
                     end if
                     errmsg = errmsg//': must be a finite number '//trim(bound)
                     return
@@ -155,7 +155,8 @@ contains
             end do
             values(1) = a
             values(count) = b
-            grid = rname//' = '//num(a)//', '//num(b)//', '//cname//' = '//int_str(count) &
+            grid = rname//' = '//shortest_str(a)//', '//shortest_str(b)//', '//cname//' = ' &
+                //int_str(count) &
                    //', spacing = '''//trim(spacing_names(code))//''''
         end if
 
@@ -168,7 +169,7 @@ contains
             if (plain) then
                 s = real_str(x)
             else
-                s = num(x)
+                s = shortest_str(x)
             end if
         end function number
 

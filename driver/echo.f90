@@ -13,9 +13,9 @@
 module driver_echo
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
-    use seispulse, only: dp, int_str
+    use seispulse, only: dp, shortest_str, int_str
     use driver_namelist_scan, only: nml_group, scan_unit, lower
-    use driver_input, only: find_group, given, num
+    use driver_input, only: find_group, given
     use driver_tables, only: table_path, open_output
     implicit none
     private
@@ -289,7 +289,7 @@ contains
                     if (unset) then
                         v = 'nan'
                     else
-                        v = num(x)
+                        v = shortest_str(x)
                     end if
                 end if
             end if

@@ -3,13 +3,13 @@
 !> read in those messages.
 module driver_input
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
-    use seispulse, only: dp, real_str, int_str
+    use seispulse, only: dp, shortest_str, real_str, int_str
     use driver_namelist_scan, only: nml_group, lower
     implicit none
     private
 
     public :: group_reader, find_group, check_keys, read_group, located, join
-    public :: read_optional, given, list_length, list_item, value_name, name_index, num
+    public :: read_optional, given, list_length, list_item, value_name, name_index
     public :: ROWS_FAILED, set_run_line, missing_group, located_key
 
     !> stat of an analysis that wrote its tables but failed some rows (a record that could
@@ -224,45 +224,6 @@ contains
             end if
         end do
     end function name_index
-
-    !> The shortest decimal that reads back as x: plain for 1e-4 <= |x| < 1e7
-    !> ("0.01", "9.80665"), else with an exponent ("1.5E-007").
-    function num(x) result(s)
-        real(dp), intent(in) :: x
-        character(len=:), allocatable :: s
-        character(len=40) :: buf, fm
-        real(dp) :: y
-        integer :: d, e, k
-        if (.not. ieee_is_finite(x)) then
-            s = real_str(x)
-            return
-        else if (.not. abs(x) > 0.0_dp) then
-            s = '0.0'
-            return
-        end if
-        do d = 2, 17
-            write(fm, '(a, i0, a)') '(es30.', d - 1, 'e3)'
-            write(buf, fm) x
-            read(buf, *) y
-            if (.not. abs(y - x) > 0.0_dp) exit
-        end do
-        k = scan(buf, 'E')
-        read(buf(k + 1:), *) e
-        s = trim(adjustl(buf))
-        if (e >= -4 .and. e < 7) then
-            write(fm, '(a, i0, a)') '(f0.', max(min(d, 17) - 1 - e, 1), ')'
-            write(buf, fm) x
-            s = trim(adjustl(buf))
-            if (s(1:1) == '.') s = '0'//s
-            if (s(1:2) == '-.') s = '-0'//s(2:)
-            ! "0.010" -> "0.01", "2.0" stays
-            k = len(s)
-            do while (s(k:k) == '0' .and. s(k - 1:k - 1) /= '.')
-                k = k - 1
-            end do
-            s = s(1:k)
-        end if
-    end function num
 
     !> "file:line: &group: " prefix of a message.
     function located(path, group) result(prefix)

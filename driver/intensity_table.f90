@@ -4,14 +4,15 @@
 !> acceleration (g, 5 % damping) at the periods `sa_periods` (s) if given. The record is
 !> the one the sliding analysis uses: read, scaled, with its polarity (every measure is
 !> the same for the record turned over). Table <output>_intensity; a record that cannot
-!> be read, or whose measures fail, has NaN results and status 1. The numbers come from
+!> be read, or whose measures fail, has NaN results and status failed. The numbers come from
 !> seispulse_intensity; this module only checks, collects and writes.
 module driver_intensity_table
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
     use, intrinsic :: iso_fortran_env, only: output_unit
-    use seispulse, only: dp, int_str, SEISPULSE_SUCCESS, intensity_t, record_intensity, &
+    use seispulse, only: dp, shortest_str, int_str, SEISPULSE_SUCCESS, intensity_t, &
+                         record_intensity, &
                          spectral_acceleration, sdof_validate
-    use driver_input, only: list_length, value_name, num, list_item
+    use driver_input, only: list_length, value_name, list_item
     use driver_tables, only: write_tables, say_written, category_kind, status_names
     use driver_records, only: record_in_t, record_out_t, record_line, report, path_len
     use driver_echo, only: echo_unit
@@ -71,7 +72,7 @@ contains
             ! any order; a period twice would give two columns of one name
             do j = 1, i - 1
                 if (.not. abs(sa_periods(i) - sa_periods(j)) > 0.0_dp) then
-                    errmsg = where//list_item('sa_periods', i)//' = '//num(sa_periods(i)) &
+                    errmsg = where//list_item('sa_periods', i)//' = '//shortest_str(sa_periods(i)) &
                              //': given twice (sa_periods('//int_str(j)//'); the table has ' &
                              //'one column per period)'
                     return
@@ -81,7 +82,7 @@ contains
         itab%periods = sa_periods(1:n)
     end subroutine intensity_check
 
-    !> Room for nrec rows, all NaN with status 1 until computed.
+    !> Room for nrec rows, all NaN with status failed until computed.
     subroutine intensity_start(itab, nrec)
         type(intensity_table_t), intent(inout) :: itab
         integer, intent(in) :: nrec
@@ -95,7 +96,7 @@ contains
     !> The row of record ir, read as accel (g) at step dt (s), with g (m/s^2); a
     !> failure goes to stderr at once (prefixed by `what`, "file:line: &records:
     !> files(2) = 'x'") and into the table's header. Rows of records not read stay NaN
-    !> with status 1.
+    !> with status failed.
     subroutine intensity_record(itab, ir, accel, dt, g, what)
         type(intensity_table_t), intent(inout) :: itab
         integer, intent(in) :: ir
@@ -128,7 +129,7 @@ contains
         itab%table(ir, size(itab%table, 2)) = 0.0_dp
     end subroutine intensity_record
 
-    !> Rows of the table that failed (status 1); 0 without the table.
+    !> Rows of the table that failed (status failed); 0 without the table.
     integer function intensity_failures(itab) result(n)
         type(intensity_table_t), intent(in) :: itab
         n = 0
@@ -176,12 +177,13 @@ contains
                       //'(doc/intensity.md), one row per record'
         comments(2) = 'input: '//trim(path)
         comments(3) = 'the record as analysed (read, scaled, polarity), linear between ' &
-                      //'samples; g = '//num(g)//' m/s2; pgv, pgd from rest at the first ' &
+                      //'samples; g = '//shortest_str(g) &
+                          //' m/s2; pgv, pgd from rest at the first ' &
                       //'sample, true peaks'
         comments(4) = 'arias = pi/(2g) int a^2 dt; cav = int |a| dt; d5_75, d5_95 from the ' &
                       //'Husid curve (NaN without energy); tm: mean period, 0.25-20 Hz'
         line = 'sa_T=...: pseudo-spectral acceleration (2 pi/T)^2 SD/g, damping ' &
-               //num(SA_DAMPING)//'; status: ok, or failed (nan results)'
+               //shortest_str(SA_DAMPING)//'; status: ok, or failed (nan results)'
         if (np == 0) line = 'no sa_periods; status: ok, or failed (nan results)'
         comments(5) = line
         comments(6) = 'records (index, file, format read, npts, dt (s), PGA as read (g), ' &
@@ -198,7 +200,7 @@ contains
         col_units(1:n_measures + 1) = [character(len=24) :: '-', 'g', 'm/s', 'm', 'm/s', &
             'm/s', 's', 's', 's']
         do k = 1, np
-            names(n_measures + 1 + k) = 'sa_T='//num(itab%periods(k))
+            names(n_measures + 1 + k) = 'sa_T='//shortest_str(itab%periods(k))
             col_units(n_measures + 1 + k) = 'g'
         end do
         names(n_measures + np + 2) = 'status'

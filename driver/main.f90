@@ -51,8 +51,12 @@ program seispulse_driver
         'cylinder', 'roll', 'winkler', 'empirical', 'slope']
 
     character(len=:), allocatable :: path, errmsg
-    !> the tables the analysis may write (for discard_outputs); none before it is known
-    character(len=32), allocatable :: out_tables(:)
+    !> the tables any analysis may write: after an input error, those of the prefix are
+    !> removed whatever the analysis (a stale table of another analysis must not remain
+    !> next to a missing echo file)
+    character(len=32), parameter :: all_tables(*) = [character(len=32) :: pulse_tables, &
+        sliding_tables, rocking_tables, newmark_tables, sdof_tables, sdof_beta_tables, &
+        sdof_shock_tables, walls_tables, cylinder_tables, winkler_tables, empirical_tables]
     character(len=4096) :: arg
     type(nml_group), allocatable :: groups(:)
     integer :: stat, irun, i, j
@@ -93,47 +97,47 @@ program seispulse_driver
 
     select case (lower(run_analysis()))
     case ('pulse')
-        call start(pulse_groups, pulse_tables)
+        call start(pulse_groups)
         call run_pulse(path, groups, run_output(), stat, errmsg)
     case ('sliding')
-        call start(sliding_groups, sliding_tables)
+        call start(sliding_groups)
         call run_sliding(path, groups, run_output(), stat, errmsg)
     case ('rocking')
-        call start(rocking_groups, rocking_tables)
+        call start(rocking_groups)
         call run_rocking(path, groups, run_output(), stat, errmsg)
         ! on records: the table is written; some rows failed (each already reported)
         if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
     case ('newmark')
-        call start(newmark_groups, newmark_tables)
+        call start(newmark_groups)
         call run_newmark(path, groups, run_output(), stat, errmsg)
         ! the table is written; some rows failed (each already reported)
         if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
     case ('sdof')
-        call start(sdof_groups, sdof_tables)
+        call start(sdof_groups)
         call run_sdof(path, groups, run_output(), stat, errmsg)
         ! the tables are written; some records failed (each already reported)
         if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
     case ('sdof_beta')
-        call start(sdof_beta_groups, sdof_beta_tables)
+        call start(sdof_beta_groups)
         call run_sdof_beta(path, groups, run_output(), stat, errmsg)
     case ('sdof_shock')
-        call start(sdof_shock_groups, sdof_shock_tables)
+        call start(sdof_shock_groups)
         call run_sdof_shock(path, groups, run_output(), stat, errmsg)
     case ('walls')
-        call start(walls_groups, walls_tables)
+        call start(walls_groups)
         call run_walls(path, groups, run_output(), stat, errmsg)
     case ('cylinder')
-        call start(cylinder_groups, cylinder_tables)
+        call start(cylinder_groups)
         call run_cylinder(path, groups, run_output(), stat, errmsg)
         ! the tables are written; some records failed (each already reported)
         if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
     case ('winkler')
-        call start(winkler_groups, winkler_tables)
+        call start(winkler_groups)
         call run_winkler(path, groups, run_output(), stat, errmsg)
         ! the tables are written; some records failed (each already reported)
         if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
     case ('empirical')
-        call start(empirical_groups, empirical_tables)
+        call start(empirical_groups)
         call run_empirical(path, groups, run_output(), stat, errmsg)
         ! the table is written; some rows failed (each already reported)
         if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
@@ -150,12 +154,10 @@ program seispulse_driver
 contains
 
     !> Before an analysis: every group but &run must belong to it (allowed); then the echo
-    !> of &run. `tables`: the tables it may write (removed after an input error).
-    subroutine start(allowed, tables)
+    !> of &run.
+    subroutine start(allowed)
         character(len=*), intent(in) :: allowed(:)
-        character(len=*), intent(in) :: tables(:)
         integer :: k
-        out_tables = tables
         do k = 1, size(groups)
             if (groups(k)%name /= 'run' .and. .not. any(allowed == groups(k)%name)) &
                 call fail(located(path, groups(k))//'not a group of analysis ''' &
@@ -237,10 +239,11 @@ contains
             end if
         end if
         if (rc == EXIT_INPUT_ERROR) then
-            if (allocated(out_tables)) then
-                call discard_outputs(run_output(), out_tables)
+            ! the input itself (an edited echo file under its own prefix) always stays
+            if (allocated(path)) then
+                call discard_outputs(run_output(), all_tables, keep=path)
             else
-                call discard_outputs('', [character(len=1) ::])
+                call discard_outputs('', all_tables)
             end if
         end if
         flush(output_unit)

@@ -7,7 +7,8 @@
 module driver_pulse_group
     use, intrinsic :: iso_fortran_env, only: error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan
-    use seispulse, only: dp, pulse_t, pulse_validate, pulse_kind_from_name, pulse_kind_name, &
+    use seispulse, only: dp, shortest_str, pulse_t, pulse_validate, pulse_kind_from_name, &
+                         pulse_kind_name, &
                          SEISPULSE_SUCCESS, PULSE_EXPONENTIAL, PULSE_TRIANGULAR, PULSE_RICKER, &
                          PULSE_MP, PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE, finite_positive, &
                          pulse_end_time, real_str, accel_unit_code, UNITS_G, UNITS_M_S2, &
@@ -336,15 +337,15 @@ contains
         character(len=:), allocatable :: text
         select case (tpl%kind)
         case (PULSE_EXPONENTIAL)
-            text = 'pulse shape: beta = '//real_str(tpl%beta)//', full = ' &
+            text = 'pulse shape: beta = '//shortest_str(tpl%beta)//', full = ' &
                    //trim(merge('.true. ', '.false.', tpl%full))
         case (PULSE_TRIANGULAR)
-            text = 'pulse shape: peak_frac = '//real_str(tpl%peak_frac)
+            text = 'pulse shape: peak_frac = '//shortest_str(tpl%peak_frac)
         case (PULSE_RICKER)
-            text = 'pulse shape: t0 f_p = '//real_str(tpl%t0)
+            text = 'pulse shape: t0 f_p = '//shortest_str(tpl%t0)
         case (PULSE_SINE_CYCLE, PULSE_COSINE_CYCLE)
             text = 'pulse shape: '//pulse_kind_name(tpl%kind)
-            if (not_one(tpl%cycles)) text = text//', cycles = '//real_str(tpl%cycles)
+            if (not_one(tpl%cycles)) text = text//', cycles = '//shortest_str(tpl%cycles)
         case default
             text = 'pulse shape: '//pulse_kind_name(tpl%kind)
         end select

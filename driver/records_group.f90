@@ -5,17 +5,18 @@
 !>
 !> A record that cannot be read or scaled is not an input error: load_record reports
 !> it on stderr at once and returns ok = .false.; the analysis fails that record's
-!> rows (NaN results, status 1) and goes on with the others.
+!> rows (NaN results, status failed) and goes on with the others.
 module driver_records
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
-    use seispulse, only: dp, SEISPULSE_SUCCESS, int_str, record_t, read_record, record_pga, &
+    use seispulse, only: dp, shortest_str, SEISPULSE_SUCCESS, int_str, record_t, read_record, &
+                         record_pga, &
                          pga_scale_factor, record_format_name, record_units_name, RECORD_AUTO, &
                          RECORD_COLUMN, UNITS_G, UNITS_M_S2, UNITS_CM_S2, finite_at_least, &
                          finite_positive, accel_unit_code
     use driver_namelist_scan, only: nml_group, lower
     use driver_input, only: located, join, given, list_length, list_item, name_index, &
-                            value_name, num
+                            value_name
     use driver_echo, only: echo_unit, echo_path
     implicit none
     private
@@ -201,7 +202,7 @@ contains
                     k = min(i, n_dt)
                     x = dt(k)
                     if (.not. finite_at_least(x, 0.0_dp)) then
-                        errmsg = where//value_name('dt', k, n_dt)//' = '//num(x) &
+                        errmsg = where//value_name('dt', k, n_dt)//' = '//shortest_str(x) &
                                  //': must be a finite time step >= 0 (s; 0: from the file)'
                         return
                     end if
@@ -217,7 +218,7 @@ contains
                     k = min(i, n_scale)
                     x = scale(k)
                     if (.not. finite_positive(x)) then
-                        errmsg = where//value_name('scale', k, n_scale)//' = '//num(x) &
+                        errmsg = where//value_name('scale', k, n_scale)//' = '//shortest_str(x) &
                                  //': must be a finite factor > 0 (polarity = -1 turns the ' &
                                  //'record over)'
                         return
@@ -229,7 +230,7 @@ contains
                     x = target_pga(k)
                     if (.not. finite_at_least(x, 0.0_dp)) then
                         errmsg = where//value_name('target_pga', k, n_target)//' = ' &
-                                 //num(x)//': must be a finite PGA > 0 (g; 0: use scale)'
+                                 //shortest_str(x)//': must be a finite PGA > 0 (g; 0: use scale)'
                         return
                     end if
                     r%target = x
@@ -388,7 +389,7 @@ contains
                 call pga_scale_factor(rec%pga, r%target, slammer_rounding, factor, &
                                       st, msg)
                 if (st /= SEISPULSE_SUCCESS) msg = r%path//': cannot scale to ' &
-                    //'target_pga = '//num(r%target)//' g: '//trim(msg)
+                    //'target_pga = '//shortest_str(r%target)//' g: '//trim(msg)
             end if
         end if
         if (st == SEISPULSE_SUCCESS) then
@@ -396,7 +397,7 @@ contains
             accel = rec%accel * o%factor
             if (.not. all(ieee_is_finite(accel))) then
                 st = 1
-                msg = r%path//': scale = '//num(factor)//': the scaled record ' &
+                msg = r%path//': scale = '//shortest_str(factor)//': the scaled record ' &
                       //'overflows'
             end if
         end if
@@ -404,7 +405,7 @@ contains
             o%ok = .true.
             o%pga = record_pga(accel)
             call progress(tag, ir, nrec, o%name//' (npts '//int_str(o%npts)//', dt ' &
-                          //num(o%dt)//' s, PGA '//short(o%pga_read)//' g' &
+                          //shortest_str(o%dt)//' s, PGA '//short(o%pga_read)//' g' &
                           //scaled_text(o)//')')
         else
             o%ok = .false.
@@ -429,8 +430,9 @@ contains
         line = 'record '//int_str(ir)//': '//r%file//': '
         if (o%ok) then
             line = line//'format '//record_format_name(o%fmt)//', npts '//int_str(o%npts) &
-                   //', dt '//num(o%dt)//', PGA '//num(o%pga_read)//', scale factor ' &
-                   //num(o%factor)
+                   //', dt '//shortest_str(o%dt)//', PGA '//shortest_str(o%pga_read) &
+                       //', scale factor ' &
+                   //shortest_str(o%factor)
         else
             line = line//'FAILED: '//o%message
         end if
@@ -560,11 +562,11 @@ contains
         character(len=:), allocatable :: s
         real(dp) :: p
         if (.not. (ieee_is_finite(x) .and. abs(x) > 0.0_dp)) then
-            s = num(x)
+            s = shortest_str(x)
             return
         end if
         p = 10.0_dp**(3 - floor(log10(abs(x))))
-        s = num(anint(x * p) / p)
+        s = shortest_str(anint(x * p) / p)
     end function short
 
 end module driver_records

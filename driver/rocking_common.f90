@@ -25,16 +25,30 @@ module driver_rocking_common
     public :: axes_names, map_axes_code, map_grids, map_axes_header, map_table
     public :: rock_on_record, rock_records, record_at
     public :: run_summary_kinds
-    public :: map_class_names
+    public :: map_class_names, run_outcome_names, winkler_outcome_names, map_class_line
 
     character(len=10), parameter :: model_names(2) = [character(len=10) :: 'nonlinear', &
         'linearized']
     !> The axis systems of a map, in the order of the MAP_AXES_* codes.
+    !> One vocabulary for the overturning events of every driver table (maps and run
+    !> summaries of rocking, cylinder and winkler): the library's rocking outcome names.
     !> The classes of an overturning map cell, by code (-1: undecided, the step budget
-    !> ran out).
-    character(len=28), parameter :: map_class_names(0:3) = [character(len=28) :: 'safe', &
-        'overturns_without_impact', 'overturns_after_one_impact', &
-        'overturns_after_more_impacts']
+    !> ran out). `safe` (does not overturn) has no single run outcome: a run that does
+    !> not overturn ends in rest or no_uplift (rocking, cylinder) or safe (winkler).
+    character(len=21), parameter :: map_class_names(0:3) = [character(len=21) :: 'safe', &
+        'overturn_no_impact', 'overturn_one_impact', 'overturn_many_impacts']
+    !> The outcome of a rocking or cylinder run, by code (ROCK_* outcome codes).
+    character(len=21), parameter :: run_outcome_names(0:5) = [character(len=21) :: 'rest', &
+        'no_uplift', map_class_names(1:3), 'time_limit']
+    !> The outcome of a winkler run, by code (WR_RUN_*: safe, the three overturns, then
+    !> time_limit).
+    character(len=21), parameter :: winkler_outcome_names(0:4) = [character(len=21) :: &
+        map_class_names(0:3), 'time_limit']
+    !> The header line of a map table naming its classes.
+    character(len=*), parameter :: map_class_line = 'class: safe (does not overturn), ' &
+        //'overturn_no_impact, overturn_one_impact, overturn_many_impacts (overturns after ' &
+        //'no, one, more impacts: the run outcomes of the same names), undecided (the step ' &
+        //'budget ran out)'
     character(len=13), parameter :: axes_names(2) = [character(len=13) :: 'dimensionless', &
         'dimensional']
 

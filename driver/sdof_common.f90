@@ -1,9 +1,9 @@
 !> What the analyses of the linear oscillator ('sdof', 'sdof_beta', 'sdof_shock') share:
 !> the limits of their lists and the checks of a list of values (damping ratios, gamma).
 module driver_sdof_common
-    use seispulse, only: dp, outside
+    use seispulse, only: dp, shortest_str, outside
     use driver_namelist_scan, only: nml_group
-    use driver_input, only: given, list_length, value_name, num
+    use driver_input, only: given, list_length, value_name
     implicit none
     private
 
@@ -49,7 +49,7 @@ contains
         if (len(errmsg) > 0) return
         do i = 1, n
             if (outside(list(i), lo, hi, .false., open_hi)) then
-                errmsg = value_name(key, i, n)//' = '//num(list(i))//': must be '//rule
+                errmsg = value_name(key, i, n)//' = '//shortest_str(list(i))//': must be '//rule
                 return
             end if
         end do

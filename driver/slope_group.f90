@@ -5,12 +5,12 @@
 module driver_slope
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-    use seispulse, only: dp, SEISPULSE_SUCCESS, int_str, flexible_mass_t, &
+    use seispulse, only: dp, shortest_str, SEISPULSE_SUCCESS, int_str, flexible_mass_t, &
                          flexible_mass_validate, flexible_soil_name, flexible_soil_code, &
                          SOIL_LINEAR, SOIL_EQUIVALENT_LINEAR
     use driver_namelist_scan, only: nml_group
     use driver_namelist_scan, only: lower
-    use driver_input, only: located, given, num
+    use driver_input, only: located, given
     use driver_echo, only: echo_unit
     implicit none
     private
@@ -130,11 +130,12 @@ contains
     function slope_line(mass) result(line)
         type(flexible_mass_t), intent(in) :: mass
         character(len=:), allocatable :: line
-        line = 'sliding mass: height = '//num(mass%height)//' m, vs = '//num(mass%vs) &
-               //' m/s, vs_base = '//num(mass%vs_base)//' m/s, damping = ' &
-               //num(mass%damping)//', soil = '//flexible_soil_name(mass%soil)
+        line = 'sliding mass: height = '//shortest_str(mass%height)//' m, vs = ' &
+            //shortest_str(mass%vs) &
+               //' m/s, vs_base = '//shortest_str(mass%vs_base)//' m/s, damping = ' &
+               //shortest_str(mass%damping)//', soil = '//flexible_soil_name(mass%soil)
         if (mass%soil == SOIL_EQUIVALENT_LINEAR) line = line//', ref_strain_pct = ' &
-            //num(mass%ref_strain_pct)//' %, max_iter = '//int_str(mass%max_iter)
+            //shortest_str(mass%ref_strain_pct)//' %, max_iter = '//int_str(mass%max_iter)
     end function slope_line
 
 end module driver_slope

@@ -8,14 +8,14 @@
 !> table_path is the one place that builds an output file name.
 module driver_tables
     use, intrinsic :: iso_fortran_env, only: output_unit, int64
-    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_associated
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
     use seispulse, only: dp, int_str, g_str, format_reals, NUM_LEN
     use driver_run_group, only: run_digits, run_csv_digits
     implicit none
     private
 
-    public :: write_tables, delete_files, say_written, code_legend, stack
+    public :: write_tables, delete_files, say_written, stack
     public :: write_table_pair, category_kind, table_path, commit_outputs, discard_outputs
     public :: open_output, status_names
 
@@ -45,6 +45,13 @@ module driver_tables
             import :: c_int, c_char
             character(kind=c_char), intent(in) :: path(*)
         end function c_unlink
+        ! POSIX realpath(): the canonical absolute path into `resolved` (PATH_MAX bytes);
+        ! a null pointer when the file does not exist.
+        type(c_ptr) function c_realpath(path, resolved) bind(c, name='realpath')
+            import :: c_ptr, c_char
+            character(kind=c_char), intent(in) :: path(*)
+            character(kind=c_char), intent(out) :: resolved(*)
+        end function c_realpath
     end interface
 
 contains
@@ -169,21 +176,53 @@ contains
     !> After an input error: delete every <path>.part of this run, and the files an
     !> earlier run may have written under `prefix` (the .txt and .csv of each of
     !> `tables`, and the echo file, table 'input', .nml), so no stale result remains.
-    subroutine discard_outputs(prefix, tables)
+    !> The file `keep` (the input being read, e.g. an edited echo file) is never deleted,
+    !> whatever name it is reached by (canonical paths are compared).
+    subroutine discard_outputs(prefix, tables, keep)
         character(len=*), intent(in) :: prefix      !! output prefix ('' : none known)
-        character(len=*), intent(in) :: tables(:)   !! table names of the analysis
+        character(len=*), intent(in) :: tables(:)   !! table names (of every analysis)
+        character(len=*), intent(in), optional :: keep  !! a path never to delete
+        character(len=:), allocatable :: kept
         integer :: i
         do i = 1, npending
             call remove_file(pending(i)%s//'.part')
         end do
         npending = 0
         if (len_trim(prefix) == 0) return
+        kept = ''
+        if (present(keep)) kept = canonical_path(keep)
         do i = 1, size(tables)
-            call remove_file(table_path(prefix, tables(i), 'txt'))
-            call remove_file(table_path(prefix, tables(i), 'csv'))
+            call remove_stale(table_path(prefix, tables(i), 'txt'))
+            call remove_stale(table_path(prefix, tables(i), 'csv'))
         end do
-        call remove_file(table_path(prefix, 'input', 'nml'))
+        call remove_stale(table_path(prefix, 'input', 'nml'))
+    contains
+        subroutine remove_stale(file)
+            character(len=*), intent(in) :: file
+            character(len=:), allocatable :: canon
+            canon = canonical_path(file)
+            if (len(canon) == 0) return   ! no such file
+            if (canon == kept) return
+            call remove_file(file)
+        end subroutine remove_stale
     end subroutine discard_outputs
+
+    !> The canonical absolute path of an existing file (symbolic links, '.' and '..'
+    !> resolved); '' when it does not exist or cannot be resolved.
+    function canonical_path(path) result(canon)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: canon
+        character(kind=c_char, len=4097) :: buf
+        integer :: k
+        buf = ''
+        if (.not. c_associated(c_realpath(trim(path)//c_null_char, buf))) then
+            canon = ''
+            return
+        end if
+        k = index(buf, c_null_char)
+        if (k == 0) k = len(buf) + 1
+        canon = buf(1:k - 1)
+    end function canonical_path
 
     !> Delete a file if it exists (no error otherwise; a directory stays).
     subroutine remove_file(path)
@@ -582,19 +621,6 @@ contains
         ! a failure shows up when the table is opened, with a better message
         call execute_command_line('mkdir -p -- '//quoted//' 2>/dev/null', exitstat=code)
     end subroutine make_parent_dir
-
-    !> "title: 0 name, 1 name, ..." of a column of codes 0, 1, ... (a header line).
-    pure function code_legend(title, names) result(text)
-        character(len=*), intent(in) :: title
-        character(len=*), intent(in) :: names(0:)       !! the name of each code
-        character(len=:), allocatable :: text
-        integer :: k
-        text = title//':'
-        do k = 0, ubound(names, 1)
-            text = text//' '//int_str(k)//' '//trim(names(k))
-            if (k < ubound(names, 1)) text = text//','
-        end do
-    end function code_legend
 
     !> "<what> written to <txt> and <csv>" on standard output.
     subroutine say_written(what, files)

@@ -117,7 +117,7 @@ def test_echo_values_as_the_analysis_reads_them(driver, tmp_path):
                      r"'\.\./\.\./cases/records/quake_b\.csv'\n", text), text
     assert "    units = 'auto', 'g'\n" in text
     assert "    target_pga = 2*0.3\n" in text
-    assert "    ky = 0.05, 0.1, 1.0E-009\n" in text
+    assert "    ky = 0.05, 0.1, 1e-09\n" in text
     assert "mode" not in text and "g =" not in text     # defaults: not given, not echoed
     # it re-runs from its own folder to the same table
     (path.parent / "again.nml").write_text(with_output(text, "res/deep/it''s", "again"))
@@ -133,3 +133,52 @@ def test_no_echo_file_on_an_input_error(driver, tmp_path):
     assert proc.returncode == 2
     assert not (tmp_path / "p_input.nml").exists()
     assert "effective input written" not in proc.stdout
+
+
+def test_failed_edited_echo_file_survives(driver, tmp_path):
+    """An echo file edited to hold an input error and re-run under its own prefix (the
+    file names its own path as the echo) fails with exit 2, and the file is still there,
+    whether reached by its own name or through a symbolic link."""
+    (tmp_path / "a.nml").write_text("&run analysis = 'pulse', output = 'e/ex' /\n"
+                                    "&pulse kind = 'half_sine', duration = 1 /\n")
+    proc = run(driver, tmp_path, "a.nml")
+    assert proc.returncode == 0, proc.stderr
+    echo = tmp_path / "e" / "ex_input.nml"
+    text = echo.read_text()
+    bad = re.sub(r"duration = [^,\n/]*", "duration = -1", text)
+    assert bad != text
+    echo.write_text(bad)
+    proc = run(driver, tmp_path, "e/ex_input.nml")
+    assert proc.returncode == 2
+    assert echo.read_text() == bad
+    assert not (tmp_path / "e" / "ex_pulse.txt").exists()   # the stale table is gone
+    (tmp_path / "link.nml").symlink_to(echo)
+    proc = run(driver, tmp_path, "./link.nml")
+    assert proc.returncode == 2
+    assert echo.read_text() == bad
+
+
+def test_failed_run_removes_other_analyses_tables_and_echo(driver, tmp_path):
+    """A failed run of one analysis removes every stale table of its prefix, those of
+    another analysis too, with the echo file: no table stays without its echo."""
+    (tmp_path / "a.nml").write_text("&run analysis = 'pulse', output = 'o/blk' /\n"
+                                    "&pulse kind = 'half_sine', duration = 1 /\n")
+    assert run(driver, tmp_path, "a.nml").returncode == 0
+    assert (tmp_path / "o" / "blk_pulse.csv").exists()
+    assert (tmp_path / "o" / "blk_input.nml").exists()
+    (tmp_path / "b.nml").write_text("&run analysis = 'sliding', output = 'o/blk' /\n"
+                                    "&pulse kind = 'half_sine', duration = -1 /\n")
+    assert run(driver, tmp_path, "b.nml").returncode == 2
+    assert sorted(p.name for p in (tmp_path / "o").iterdir()) == []
+
+
+def test_no_two_examples_share_an_output_prefix():
+    """Every input/*.nml has its own output prefix: one example never overwrites, or
+    after an error removes, another's tables or echo file."""
+    prefixes = {}
+    for nml in INPUTS:
+        m = re.search(r"^[^!]*\boutput\s*=\s*'([^']*)'", nml.read_text(), flags=re.M)
+        assert m, nml.name
+        prefixes.setdefault(m.group(1), []).append(nml.name)
+    shared = {k: v for k, v in prefixes.items() if len(v) > 1}
+    assert not shared

@@ -24,7 +24,7 @@ PUSHOVER_UNITS = ["rad", "m", "m", "m2", "m", "N/m3", "N m", "N m", "N", "-", "N
 SUMMARY = ["k", "c", "theta_c", "theta_overturn", "outcome", "t_uplift", "t_lift_off",
            "n_impacts", "t_impact1", "t_overturn", "theta_max", "normal_max", "energy_error",
            "t_end"]
-OUTCOMES = ["safe", "overturn_no_impact", "overturn_one_impact", "overturn_impacts",
+OUTCOMES = ["safe", "overturn_no_impact", "overturn_one_impact", "overturn_many_impacts",
             "time_limit"]
 DIFFS = ["same", "only_winkler", "only_rigid", "other_mode"]
 # a soft soil keeps the dynamic runs short: r = 1, h = 3, 47 t on G = 2 MPa

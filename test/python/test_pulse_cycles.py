@@ -149,7 +149,9 @@ def test_driver_map_cycles(driver, tmp_path):
         classes = [row[2] for row in list(csv.reader(f))[1:]]     # names
     ref = R.overturning_map("sine_cycle", [2.0, 4.0, 7.0], [1.5, 3.0, 6.0], alpha=0.25,
                             e=0.9, cycles=2)
-    names = [n.replace(" ", "_") for n in R.MAP_CLASSES]
+    # the driver names the classes of R.MAP_CLASSES by the run outcomes' words
+    names = ["safe", "overturn_no_impact", "overturn_one_impact", "overturn_many_impacts"]
+    assert len(names) == len(R.MAP_CLASSES)
     assert classes == [names[c] for c in np.ravel(ref)]
     assert "cycles = 2" in (tmp_path / "m_rocking_map.txt").read_text()
     proc = _run(driver, tmp_path, text.format(0))

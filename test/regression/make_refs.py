@@ -133,8 +133,8 @@ MODES = ("no_sliding", "unilateral", "stick", "slip", "stuck", "reverse_only")
 ROCK_OUTCOMES = ("rest", "no_uplift", "overturn_no_impact", "overturn_one_impact",
                  "overturn_many_impacts", "time_limit")
 ROCK_REGIONS = ("no_rocking", "O1", "O2", "O3", "S1", "S2")
-MAP_CLASSES = ("safe", "overturns_without_impact", "overturns_after_one_impact",
-               "overturns_after_more_impacts")
+MAP_CLASSES = ("safe", "overturn_no_impact", "overturn_one_impact",
+               "overturn_many_impacts")
 STATUS = ("ok", "failed")
 CATEGORIES = {"mode (-)": MODES, "outcome (-)": ROCK_OUTCOMES, "region (-)": ROCK_REGIONS,
               "class (-)": MAP_CLASSES, "status (-)": STATUS, "converged (-)": ("no", "yes")}
