@@ -142,8 +142,8 @@ contains
         real(dp), intent(in) :: x(:)                        !! the numbers
         integer, intent(in) :: digits                       !! 0 (shortest) or 1..17
         character(len=*), intent(out) :: texts(:)           !! size(x) texts
-        integer, intent(in), optional :: digits2            !! a second setting ...
-        character(len=*), intent(out), optional :: texts2(:)  !! ... and its texts
+        integer, intent(in), optional :: digits2   !! a second setting, 0 or 1..17 (absent: none)
+        character(len=*), intent(out), optional :: texts2(:)  !! its texts (with digits2 only)
         integer, parameter :: CHUNK = 64, FW = 32
         character(len=CHUNK * FW) :: buf
         integer :: i0, n, k, i
@@ -154,7 +154,7 @@ contains
             do k = 1, n
                 i = i0 + k - 1
                 texts(i) = one_text(x(i), buf((k - 1) * FW + 1:k * FW), digits)
-                if (present(texts2)) texts2(i) = one_text(x(i), &
+                if (present(texts2) .and. present(digits2)) texts2(i) = one_text(x(i), &
                     buf((k - 1) * FW + 1:k * FW), digits2)
             end do
         end do
