@@ -32,7 +32,7 @@ DAMPING_REFS = {"rocking": _f.DAMP_ROCKING, "vertical": _f.DAMP_VERTICAL}
 OUTCOMES = _core.by_code({_f.WR_RUN_SAFE: "safe",
                           _f.WR_RUN_OVERTURN_NO_IMPACT: "overturn_no_impact",
                           _f.WR_RUN_OVERTURN_ONE_IMPACT: "overturn_one_impact",
-                          _f.WR_RUN_OVERTURN_IMPACTS: "overturn_impacts",
+                          _f.WR_RUN_OVERTURN_IMPACTS: "overturn_many_impacts",
                           _f.WR_RUN_TIME_LIMIT: "time_limit"})
 
 #: The histories of a run, in the order of the Fortran columns WR_OUT_*.

@@ -34,7 +34,7 @@ import winkler_reference as wr  # noqa: E402
 
 G = 9.80665
 E_SOIL, NU, XI = 100e6, 0.3, 0.003
-CODES = {"safe": 0, "overturn_no_impact": 1, "overturn_one_impact": 2, "overturn_impacts": 3,
+CODES = {"safe": 0, "overturn_no_impact": 1, "overturn_one_impact": 2, "overturn_many_impacts": 3,
          "time_limit": 4}
 RTOL = 1e-10
 

@@ -706,7 +706,7 @@ contains
         case (WR_RUN_OVERTURN_ONE_IMPACT)
             name = 'overturn_one_impact'
         case (WR_RUN_OVERTURN_IMPACTS)
-            name = 'overturn_impacts'
+            name = 'overturn_many_impacts'
         case (WR_RUN_TIME_LIMIT)
             name = 'time_limit'
         case default
