@@ -40,6 +40,7 @@ module driver_cylinder
     use driver_input, only: find_group, located, join, read_optional, given, list_item, &
                             name_index, ROWS_FAILED
     use driver_input, only: missing_group
+    use driver_input, only: output_located
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid, &
                                   warn_unused_template, template_text
@@ -702,7 +703,7 @@ contains
             [character(len=8) :: 'in name', 'as named', 'as named'], table, files, stat, &
             errmsg, labels=labels)
         if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         call say_written('cylinder properties', files)
@@ -819,7 +820,7 @@ contains
             [character(len=4) :: 'rad', '-', 'N', 'N m', '-', '-'], table, files, stat, errmsg, &
             kinds=[character(len=3) :: '', '', '', '', '', 'int'])
         if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         call say_written('cylinder pushover', files)
@@ -916,7 +917,7 @@ contains
             summary_units(.false.), reshape(summary_row(s, run), [1, 13]), files, stat, &
             errmsg, kinds=run_summary_kinds(13, 4, run_outcome_names, 7), summary=.true.)
         if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         comments(4) = 'outcome: '//trim(run_outcome_names(run%outcome))//', t_uplift = ' &
@@ -931,7 +932,7 @@ contains
             [character(len=8) :: 's', 'm/s2', 'rad', 'rad/s'], table, files2, stat, errmsg)
         if (stat /= 0) then
             call delete_files(files)
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         write(output_unit, '(a)') 'cylinder: '//trim(run_outcome_names(run%outcome))
@@ -1019,7 +1020,7 @@ contains
             summary_units(.true.), summary, files, stat, errmsg, labels=labels, &
             kinds=run_summary_kinds(15, 6, run_outcome_names, 9))
         if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         comments(4) = 'rows: each record from t = 0; theta (rad), omega = dtheta/dt ' &
@@ -1030,7 +1031,7 @@ contains
             errmsg, labels=hlabels)
         if (stat /= 0) then
             call delete_files(files)
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         call say_written('cylinder summary', files)
@@ -1180,7 +1181,7 @@ contains
         call write_tables(prefix, 'cylinder_map', comments, names, units, table, files, &
                           stat, errmsg, kinds=kinds)
         if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         call say_written('cylinder map', files)
@@ -1374,7 +1375,7 @@ contains
             kinds=[character(len=64) :: '', '', '', category_kind(onames), '', 'int', 'int', &
                    '', '', '', '', '', '', ''], summary=.true.)
         if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         names(1:3) = [character(len=16) :: 't', 'a_x', 'a_y']
@@ -1390,7 +1391,7 @@ contains
             comments(7)], names, units, table, files2, stat, errmsg)
         if (stat /= 0) then
             call delete_files(files)
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         write(output_unit, '(a)') 'cylinder: '//roll_outcome_name(run%outcome)

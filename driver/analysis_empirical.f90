@@ -28,6 +28,7 @@ module driver_empirical
     use driver_input, only: find_group, located, given, list_length, value_name, &
                             ROWS_FAILED
     use driver_input, only: missing_group
+    use driver_input, only: output_located
     use driver_tables, only: write_tables, say_written, category_kind, status_names
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
@@ -167,7 +168,7 @@ contains
         call write_result(path, prefix, cfg, outs, table, labels, files_out, stat, errmsg)
         if (stat /= 0) then
             stat = 1
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         call say_written('empirical table', files_out)

@@ -31,6 +31,7 @@ module driver_newmark
     use driver_input, only: find_group, located, join, read_optional, given, &
                             list_length, list_item, value_name, name_index, ROWS_FAILED
     use driver_input, only: missing_group
+    use driver_input, only: output_located
     use driver_tables, only: write_tables, say_written, category_kind, status_names
     use driver_slope, only: slope_keys, slope_defaults, read_slope, check_slope, echo_slope, &
                             slope_line
@@ -199,14 +200,14 @@ contains
         call write_result(path, prefix, cfg, outs, notes, table, files_out, stat, errmsg)
         if (stat /= 0) then
             stat = 1
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         call say_written('newmark table', files_out)
         call intensity_write(path, prefix, cfg%g, cfg%recs, outs, itab, stat, errmsg)
         if (stat /= 0) then
             stat = 1
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         stat = 0

@@ -11,6 +11,7 @@ module driver_pulse
                          PULSE_RICKER, real_str
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, check_keys, read_group, located
+    use driver_input, only: output_located
     use driver_pulse_group, only: pulse_input_t, read_pulse_group, build_pulse, &
                                   write_pulse_group
     use driver_tables, only: write_tables, say_written
@@ -154,7 +155,7 @@ contains
             [character(len=8) :: 't', 'a', 'a_in_g', 'v', 'd'], &
             [character(len=8) :: 's', 'm/s2', 'g', 'm/s', 'm'], table, files, stat, errmsg)
         if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         call say_written('pulse table', files)

@@ -33,6 +33,7 @@ module driver_rocking
                               read_records, check_records, echo_records, record_line, &
                               failed_records
     use driver_input, only: missing_group
+    use driver_input, only: output_located
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid, &
                                   warn_unused_template, template_text, not_one
@@ -520,7 +521,7 @@ contains
             kinds=[character(len=256) :: '', '', '', '', '', category_kind(run_outcome_names), &
                    '', '', 'int', '', '', '', '', '', '', category_kind(names)], summary=.true.)
         if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         write(output_unit, '(a)') 'rocking: '//trim(run_outcome_names(run%outcome))
@@ -615,7 +616,7 @@ contains
             [character(len=8) :: 't', 'a_g', 'theta', 'omega'], &
             [character(len=8) :: 's', 'm/s2', 'rad', 'rad/s'], table, files, stat, errmsg)
         if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         write(output_unit, '(a)') 'rocking: '//trim(run_outcome_names(run%outcome))
@@ -732,7 +733,7 @@ contains
             [character(len=4) :: '-', '-', '-'], table, files, stat, errmsg, &
             kinds=[character(len=256) :: '', '', category_kind(map_class_names)])
         if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         call say_written('rocking map', files)
@@ -866,7 +867,7 @@ contains
                               files, stat, errmsg, labels=labels, kinds=record_kinds())
         end if
         if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         if (history) then

@@ -28,6 +28,7 @@ module driver_sdof
     use driver_input, only: find_group, located, join, read_optional, given, list_item, &
                             name_index, ROWS_FAILED
     use driver_input, only: missing_group
+    use driver_input, only: output_located
     use driver_tables, only: write_tables, delete_files, say_written, category_kind, &
                              status_names
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
@@ -220,7 +221,7 @@ contains
             call write_spectra(path, prefix, cfg, outs, res, files_s, stat, errmsg)
             if (stat /= 0) then
                 stat = 1
-                errmsg = path//': &run: output: '//errmsg
+                errmsg = output_located(path)//errmsg
                 return
             end if
         end if
@@ -229,7 +230,7 @@ contains
             if (stat /= 0) then
                 if (cfg%spectra) call delete_files(files_s)
                 stat = 1
-                errmsg = path//': &run: output: '//errmsg
+                errmsg = output_located(path)//errmsg
                 return
             end if
         end if
@@ -239,7 +240,7 @@ contains
                 if (cfg%spectra) call delete_files(files_s)
                 if (cfg%envelope) call delete_files(files_e)
                 stat = 1
-                errmsg = path//': &run: output: '//errmsg
+                errmsg = output_located(path)//errmsg
                 return
             end if
         end if

@@ -13,6 +13,7 @@ module driver_sdof_beta
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, name_index
     use driver_input, only: missing_group
+    use driver_input, only: output_located
     use driver_tables, only: write_tables, say_written
     use driver_sdof_common, only: max_periods, max_dampings, check_list
     use driver_axis, only: axis_values
@@ -163,7 +164,7 @@ contains
             [character(len=11) :: 'gamma', 'theta/omega', 'beta', 'beta_cos'], &
             [character(len=11) :: '-', '-', '-', '-'], table, files, stat, errmsg)
         if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         call say_written('sdof_beta table', files)

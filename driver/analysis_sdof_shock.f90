@@ -14,6 +14,7 @@ module driver_sdof_shock
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, read_optional, given, value_name
     use driver_input, only: missing_group
+    use driver_input, only: output_located
     use driver_tables, only: write_tables, say_written
     use driver_pulse_group, only: pulse_input_t, read_pulse_group, build_pulse, &
                                   write_pulse_group
@@ -235,7 +236,7 @@ contains
             [character(len=8) :: '-', '-', 's', 'm', 'm/s', 'g', 'm/s', 'g', '-', '-'], table, &
             files, stat, errmsg)
         if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         call say_written('sdof_shock table', files)

@@ -21,6 +21,7 @@ module driver_sliding
     use driver_input, only: find_group, located, join, read_optional, given, list_length, &
                             list_item
     use driver_input, only: missing_group
+    use driver_input, only: output_located
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid
     use driver_tables, only: write_tables, delete_files, say_written, category_kind
@@ -216,7 +217,7 @@ contains
         ! --- write
         call write_result(path, prefix, pin, closed, input_mode, cases, files, stat, errmsg)
         if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         if (with_history) then
@@ -230,7 +231,7 @@ contains
                 kinds=[character(len=4) :: 'int', '', '', '', ''])
             if (stat /= 0) then
                 call delete_files(files)
-                errmsg = path//': &run: output: '//errmsg
+                errmsg = output_located(path)//errmsg
                 return
             end if
         end if

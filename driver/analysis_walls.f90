@@ -21,6 +21,7 @@ module driver_walls
     use driver_namelist_scan, only: nml_group
     use driver_input, only: find_group, located, join, read_optional, given, name_index
     use driver_input, only: missing_group, located_key
+    use driver_input, only: output_located
     use driver_tables, only: write_tables, delete_files
     use driver_echo, only: echo_unit
     implicit none
@@ -212,7 +213,7 @@ contains
         ! --- write
         call write_result(path, prefix, c, res, files, files2, stat, errmsg)
         if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         write(output_unit, '(a)') 'walls tables written to '//trim(files(1))//', ' &

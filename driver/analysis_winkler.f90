@@ -42,6 +42,7 @@ module driver_winkler
     use driver_input, only: find_group, located, join, read_optional, given, list_item, &
                             name_index, ROWS_FAILED
     use driver_input, only: missing_group
+    use driver_input, only: output_located
     use driver_pulse_group, only: pulse_input_t, pulse_keys, read_pulse_group, build_pulse, &
                                   write_pulse_group, pulse_end, check_time_grid, time_grid, &
                                   warn_unused_template, template_text
@@ -837,7 +838,7 @@ contains
             [character(len=12) :: 'theta_ratio', 'k_ratio', 'm_ratio', 'b_ratio', 'a_ratio'], &
             [character(len=1) :: '-', '-', '-', '-', '-'], table, files, stat, errmsg)
         if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         call say_written('winkler master curve', files)
@@ -1004,7 +1005,7 @@ contains
             reshape([su, r, s%weight, n_ult / (su * pi * r**2), n_ult, sf, chi, m_tc, m_ew, &
                      m_tc / adsu, m_ew / adsu], [1, 11]), files, stat, errmsg, summary=.true.)
         if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         call say_written('winkler capacity', files)
@@ -1417,7 +1418,7 @@ contains
         call write_tables(prefix, 'winkler_map', comments, names, units, table, files, &
                           stat, errmsg, kinds=kinds)
         if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         call say_written('winkler map', files)

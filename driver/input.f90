@@ -10,7 +10,7 @@ module driver_input
 
     public :: group_reader, find_group, check_keys, read_group, located, join
     public :: read_optional, given, list_length, list_item, value_name, name_index
-    public :: ROWS_FAILED, set_run_line, missing_group, located_key
+    public :: ROWS_FAILED, set_run_line, missing_group, located_key, output_located
 
     !> stat of an analysis that wrote its tables but failed some rows (a record that could
     !> not be read or analysed): the driver exits with status 1.
@@ -33,7 +33,7 @@ module driver_input
 
 contains
 
-    !> Remember the line of &run (for missing_group).
+    !> Remember the line of &run (for missing_group and output_located).
     subroutine set_run_line(line)
         integer, intent(in) :: line
         run_line = line
@@ -45,6 +45,14 @@ contains
         character(len=:), allocatable :: text
         text = path//':'//int_str(run_line)//': &'//name//': missing group'
     end function missing_group
+
+    !> "file:line: &run: output: ", the start of a message about the output files (the
+    !> line that of &run, whose `output` names them).
+    function output_located(path) result(text)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: text
+        text = path//':'//int_str(run_line)//': &run: output: '
+    end function output_located
 
     !> Index of group `name` in `groups`, 0 if absent.
     pure integer function find_group(groups, name)

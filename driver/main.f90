@@ -12,6 +12,7 @@ program seispulse_driver
     use driver_namelist_scan, only: nml_group, scan_file, lower
     use driver_input, only: find_group, check_keys, read_group, located, join, ROWS_FAILED, &
                             set_run_line
+    use driver_input, only: output_located
     use driver_pulse, only: run_pulse, pulse_groups, pulse_tables
     use driver_sliding, only: run_sliding, sliding_groups, sliding_tables
     use driver_rocking, only: run_rocking, rocking_groups, rocking_tables
@@ -181,35 +182,20 @@ contains
         call finish(EXIT_INPUT_ERROR)
     end subroutine fail
 
-    !> The message in the form "file:line: &group: ...": a message "file: &group: ..." gets
-    !> the line of that group (of &run if the group is missing); the summary of failed
-    !> rows (`rows`) the place of &records (else of the analysis' group, else &run).
+    !> The summary of failed rows (`rows`) placed at &records (else at the analysis'
+    !> group, else at &run): "file:line: &group: message"; any other message as it is
+    !> (every other message is built with its place: located, output_located).
     function with_line(message, rows) result(text)
         character(len=*), intent(in) :: message
         logical, intent(in) :: rows
-        character(len=:), allocatable :: text, name
-        character(len=16) :: num
-        integer :: k, ig
+        character(len=:), allocatable :: text
+        integer :: ig
         text = message
-        if (.not. allocated(groups)) return
-        if (rows) then
-            ig = find_group(groups, 'records')
-            if (ig == 0) ig = find_group(groups, lower(run_analysis()))
-            if (ig == 0) ig = find_group(groups, 'run')
-            if (ig > 0) text = located(path, groups(ig))//message
-            return
-        end if
-        if (len(message) < len(path) + 3) return
-        if (message(1:len(path) + 3) /= path//': &') return
-        name = message(len(path) + 4:)
-        k = index(name, ':')
-        if (k == 0) return
-        name = name(1:k - 1)
-        ig = find_group(groups, name)
+        if (.not. (rows .and. allocated(groups))) return
+        ig = find_group(groups, 'records')
+        if (ig == 0) ig = find_group(groups, lower(run_analysis()))
         if (ig == 0) ig = find_group(groups, 'run')
-        if (ig == 0) return
-        write(num, '(i0)') groups(ig)%line
-        text = path//':'//trim(num)//message(len(path) + 1:)
+        if (ig > 0) text = located(path, groups(ig))//message
     end function with_line
 
     !> The echo of the effective input: the file (and standard output with verbose).
@@ -234,7 +220,7 @@ contains
             call commit_outputs(st, msg)
             if (st /= 0) then
                 write(error_unit, '(a)') 'seispulse: error: ' &
-                    //with_line(path//': &run: output: '//msg, .false.)
+                    //output_located(path)//msg
                 rc = EXIT_INPUT_ERROR
             end if
         end if

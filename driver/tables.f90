@@ -12,6 +12,7 @@ module driver_tables
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
     use seispulse, only: dp, int_str, g_str, format_reals, NUM_LEN
     use driver_run_group, only: run_digits, run_csv_digits
+    use driver_input, only: output_located
     implicit none
     private
 
@@ -643,7 +644,7 @@ contains
     !> comments, names, units, data and optional labels, kinds, summary): both or neither
     !> exist (the first is deleted when the second fails). Then `note` (if given) and
     !> "<what1> written to ...", "<what2> written to ..." on standard output. stat 0, or
-    !> errmsg "<path>: &run: output: ...".
+    !> errmsg "<path>:<line>: &run: output: ...".
     subroutine write_table_pair(path, prefix, name1, comments1, names1, units1, data1, &
                                 what1, name2, comments2, names2, units2, data2, what2, &
                                 stat, errmsg, labels1, labels2, note, kinds1, kinds2, &
@@ -666,14 +667,14 @@ contains
         call write_tables(prefix, name1, comments1, names1, units1, data1, files1, stat, &
                           errmsg, labels=labels1, kinds=kinds1, summary=summary1)
         if (stat /= 0) then
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         call write_tables(prefix, name2, comments2, names2, units2, data2, files2, stat, &
                           errmsg, labels=labels2, kinds=kinds2, summary=summary2)
         if (stat /= 0) then
             call delete_files(files1)
-            errmsg = path//': &run: output: '//errmsg
+            errmsg = output_located(path)//errmsg
             return
         end if
         if (present(note)) write(output_unit, '(a)') note

@@ -142,7 +142,9 @@ def test_failure_after_writing_leaves_no_part(driver, tmp_path):
     proc = run(driver, tmp_path, SLIDING.format(out="o", run="", etas="0.3")
                + "&history npts = 11 /\n")
     assert proc.returncode == 2
-    assert "&run: output" in proc.stderr
+    # at the line of &run (its `output` names the files)
+    line = 1 + SLIDING.split("&run")[0].count("\n")
+    assert f"case.nml:{line}: &run: output: " in proc.stderr, proc.stderr
     assert sorted(p.name for p in tmp_path.iterdir()) == ["case.nml", "o_sliding_history.csv"]
 
 
