@@ -246,6 +246,8 @@ contains
         if (allocated(error)) return
         call check(error, k1, j1, rtol=0.0_dp, message='k1 omitted vs explicit')
         if (allocated(error)) return
+        call check(error, k2, j2, rtol=0.0_dp, message='k2 omitted vs explicit')
+        if (allocated(error)) return
         call newmark_incline(0.45_dp, 12.0_dp, blk=n1, stat=stat)
         call check(error, stat, SEISPULSE_SUCCESS)
         if (allocated(error)) return
