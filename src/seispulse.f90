@@ -166,7 +166,8 @@ module seispulse
                                EC8_WALL_GRAVITY_200, EC8_WALL_RESTRAINED, WATER_DRY, &
                                WATER_IMPERVIOUS, WATER_PERMEABLE, EC8_SPECTRUM_TYPE_1, &
                                EC8_SPECTRUM_TYPE_2, EC8_GROUND_A, EC8_GROUND_B, EC8_GROUND_C, &
-                               EC8_GROUND_D, EC8_GROUND_E
+                               EC8_GROUND_D, EC8_GROUND_E, EC8_ANNEX_RECOMMENDED, EC8_ANNEX_GR, &
+                               ec8_reference_pga
     use seispulse_wall_table, only: wall_case_t, wall_case_default, wall_comparison, &
                                     wall_pressure_profile, wall_row_label, WALL_ROWS, &
                                     WALL_PROFILE_COLUMNS

@@ -8,8 +8,8 @@
 !> three water cases from hand formulas; Westergaard's resultant 7/12 kh gamma_w H^2 at
 !> 0.4 H by Gauss quadrature of the returned pressures; the rigid-wall rules; the EN 1998-1
 !> tables transcribed here, each spectral branch at and between the corner periods,
-!> continuity at TB, TC, TD, eta, the design floor; bad input (messages name the
-!> parameter).
+!> continuity at TB, TC, TD, eta, the design floor; the Greek National Annex zones
+!> Z1..Z3 = 0.16/0.24/0.36 g [PRDA24]; bad input (messages name the parameter).
 module test_codes
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, &
                                              ieee_is_nan
@@ -23,7 +23,8 @@ module test_codes
                                EC8_WALL_GRAVITY_200, EC8_WALL_RESTRAINED, WATER_DRY, &
                                WATER_IMPERVIOUS, WATER_PERMEABLE, EC8_SPECTRUM_TYPE_1, &
                                EC8_SPECTRUM_TYPE_2, EC8_GROUND_A, EC8_GROUND_B, EC8_GROUND_C, &
-                               EC8_GROUND_D, EC8_GROUND_E
+                               EC8_GROUND_D, EC8_GROUND_E, EC8_ANNEX_RECOMMENDED, EC8_ANNEX_GR, &
+                               ec8_reference_pga
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
     private
@@ -66,7 +67,9 @@ contains
                               test_elastic_spectrum), &
                  new_unittest('design spectrum: branches, plateau 2.5/q, floor beta ag', &
                               test_design_spectrum), &
-                 new_unittest('spectra: bad input', test_spectra_bad)]
+                 new_unittest('spectra: bad input', test_spectra_bad), &
+                 new_unittest('Greek NA zones Z1..Z3 = 0.16/0.24/0.36 g; no zones otherwise', &
+                              test_reference_pga)]
     end subroutine collect_codes
 
     ! ------------------------------------------------------------------ helpers
@@ -974,5 +977,53 @@ contains
         call ec8_design_spectrum([0.1_dp, 0.2_dp], 1.0_dp, 1, 9, 2.0_dp, 0.2_dp, out, stat, msg)
         call check_message(error, stat, SEISPULSE_INVALID_INPUT, msg, 'ground = 9')
     end subroutine test_spectra_bad
+
+    subroutine test_reference_pga(error)
+        type(test_error), allocatable, intent(out) :: error
+        ! published zone values of the 2003 map adopted by the Greek NA [PRDA24], g
+        real(dp), parameter :: published(3) = [0.16_dp, 0.24_dp, 0.36_dp]
+        real(dp) :: agr, se(3), ex(3)
+        integer :: stat, zone
+        character(len=256) :: msg
+        call check(error, EC8_ANNEX_RECOMMENDED == 0 .and. EC8_ANNEX_GR == 1, 'annex codes')
+        if (allocated(error)) return
+        do zone = 1, 3
+            call ec8_reference_pga(EC8_ANNEX_GR, zone, agr, stat, msg)
+            call check(error, stat, SEISPULSE_SUCCESS, trim(msg))
+            if (allocated(error)) return
+            call check(error, agr, published(zone), rtol=0.0_dp, message='a_gR of zone')
+            if (allocated(error)) return
+        end do
+        ! a zone's spectrum is the spectrum of ag = gamma_I a_gR: Z2, gamma_I = 1.2, ground B
+        ! Type 1 (S = 1.2, TB = 0.15, TC = 0.5): plateau 2.5 ag S, ag S at T = 0
+        call ec8_reference_pga(EC8_ANNEX_GR, 2, agr, stat, msg)
+        call ec8_elastic_spectrum([0.0_dp, 0.3_dp, 1.0_dp], 1.2_dp*agr, EC8_SPECTRUM_TYPE_1, &
+                                  EC8_GROUND_B, 5.0_dp, se, stat, msg)
+        ex = 1.2_dp*0.24_dp*1.2_dp*[1.0_dp, 2.5_dp, 2.5_dp*0.5_dp]
+        call check(error, se, ex, rtol=1.0e-14_dp, message='Se of Z2, gamma_I = 1.2, ground B')
+        if (allocated(error)) return
+        ! refusals: NaN, message naming the parameter and the allowed values
+        call ec8_reference_pga(EC8_ANNEX_GR, 4, agr, stat, msg)
+        call check_message(error, stat, SEISPULSE_INVALID_INPUT, msg, 'zone = 4: must be 1, 2 or 3')
+        if (allocated(error)) return
+        call check(error, ieee_is_nan(agr), 'a_gR = NaN on error')
+        if (allocated(error)) return
+        call ec8_reference_pga(EC8_ANNEX_GR, 0, agr, stat, msg)
+        call check_message(error, stat, SEISPULSE_INVALID_INPUT, msg, 'zone = 0')
+        if (allocated(error)) return
+        call ec8_reference_pga(EC8_ANNEX_RECOMMENDED, 1, agr, stat, msg)
+        call check_message(error, stat, SEISPULSE_INVALID_INPUT, msg, 'annex = 0')
+        if (allocated(error)) return
+        call check(error, index(msg, 'give ag') > 0, 'recommended: "give ag" in '//trim(msg))
+        if (allocated(error)) return
+        call check(error, ieee_is_nan(agr), 'a_gR = NaN for the recommended values')
+        if (allocated(error)) return
+        call ec8_reference_pga(7, 1, agr, stat, msg)
+        call check_message(error, stat, SEISPULSE_INVALID_INPUT, msg, 'annex = 7: must be 1')
+        if (allocated(error)) return
+        ! without errmsg
+        call ec8_reference_pga(EC8_ANNEX_GR, 5, agr, stat)
+        call check(error, stat, SEISPULSE_INVALID_INPUT, 'stat without errmsg')
+    end subroutine test_reference_pga
 
 end module test_codes

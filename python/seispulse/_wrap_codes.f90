@@ -201,3 +201,16 @@ subroutine sp_ec8_design_spectrum(n, periods, ag, spectrum_type, ground, q, beta
     errmsg = ''
     call ec8_design_spectrum(periods, ag, spectrum_type, ground, q, beta, sd, stat, errmsg)
 end subroutine sp_ec8_design_spectrum
+
+!> a_gR (g) of a seismic zone of a National Annex; annex as EC8_ANNEX_*.
+subroutine sp_ec8_reference_pga(annex, zone, agr, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_codes, only: ec8_reference_pga
+    implicit none
+    integer, intent(in) :: annex, zone
+    real(dp), intent(out) :: agr
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    errmsg = ''
+    call ec8_reference_pga(annex, zone, agr, stat, errmsg)
+end subroutine sp_ec8_reference_pga

@@ -79,11 +79,12 @@ module seispulse_codes
     public :: mononobe_okabe, ec8_thrust_t, ec8_thrust, westergaard_pressure
     public :: ec8_rigid_thrust, seed_whitman_increment, wood_thrust
     public :: ec8_ground_parameters, ec8_damping_correction, ec8_check_damping, &
-              ec8_elastic_spectrum, ec8_design_spectrum
+              ec8_elastic_spectrum, ec8_design_spectrum, ec8_reference_pga
     public :: EC8_WALL_GRAVITY_300, EC8_WALL_GRAVITY_200, EC8_WALL_RESTRAINED
     public :: WATER_DRY, WATER_IMPERVIOUS, WATER_PERMEABLE
     public :: EC8_SPECTRUM_TYPE_1, EC8_SPECTRUM_TYPE_2
     public :: EC8_GROUND_A, EC8_GROUND_B, EC8_GROUND_C, EC8_GROUND_D, EC8_GROUND_E
+    public :: EC8_ANNEX_RECOMMENDED, EC8_ANNEX_GR
 
     !> EN 1998-5 Table 7.1, wall types and their r.
     integer, parameter :: EC8_WALL_GRAVITY_300 = 1 !! free gravity wall, dr <= 300 alpha S mm: 2
@@ -103,6 +104,10 @@ module seispulse_codes
     !> EN 1998-1 Table 3.1 ground types A..E.
     integer, parameter :: EC8_GROUND_A = 1, EC8_GROUND_B = 2, EC8_GROUND_C = 3, &
                           EC8_GROUND_D = 4, EC8_GROUND_E = 5
+    !> National Annexes to EN 1998-1 (doc/codes.md section 1): EN's recommended values
+    !> (no seismic zones: the user gives ag) or the Greek National Annex (zones Z1..Z3).
+    integer, parameter :: EC8_ANNEX_RECOMMENDED = 0
+    integer, parameter :: EC8_ANNEX_GR = 1
 
     real(dp), parameter :: deg = pi/180.0_dp  !! radians per degree
     real(dp), parameter :: big = huge(1.0_dp)
@@ -713,6 +718,44 @@ contains
     end subroutine simple_thrust
 
     ! ------------------------------------------------------------- EN 1998-1 spectra
+
+    !> Reference peak ground acceleration a_gR on type A ground of a seismic zone of a
+    !> National Annex to EN 1998-1 (doc/codes.md section 1). EC8_ANNEX_GR: zones 1, 2, 3
+    !> (Z1, Z2, Z3) -> 0.16, 0.24, 0.36 g, the 2003 zonation map that the Greek National
+    !> Annex adopted [PRDA24]. Only the zones are taken from the annex: the spectra keep
+    !> EN's recommended S, TB, TC, TD, beta and eta. EC8_ANNEX_RECOMMENDED has no zones
+    !> (EN leaves the map to the annexes) and is refused: give ag directly. The design
+    !> ground acceleration is ag = gamma_I a_gR (EN 1998-1 3.2.1(3), not verified).
+    !> agr is NaN on error.
+    pure subroutine ec8_reference_pga(annex, zone, agr, stat, errmsg)
+        integer, intent(in) :: annex          !! EC8_ANNEX_GR (EC8_ANNEX_RECOMMENDED is refused)
+        integer, intent(in) :: zone           !! seismic zone, 1..3 for EC8_ANNEX_GR (Z1..Z3)
+        real(dp), intent(out) :: agr          !! reference PGA a_gR on type A ground, g
+        integer, intent(out) :: stat          !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
+        character(len=*), intent(inout), optional :: errmsg  !! message naming the parameter
+        !> Greek National Annex zones Z1, Z2, Z3, g [PRDA24]
+        real(dp), parameter :: gr_agr(3) = [0.16_dp, 0.24_dp, 0.36_dp]
+        agr = ieee_value(1.0_dp, ieee_quiet_nan)
+        stat = SEISPULSE_SUCCESS
+        select case (annex)
+        case (EC8_ANNEX_GR)
+            if (zone < 1 .or. zone > size(gr_agr)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'zone = '// &
+                               int_str(zone)//': must be 1, 2 or 3 (Greek National Annex '// &
+                               'zones Z1, Z2, Z3: 0.16, 0.24, 0.36 g)')
+                return
+            end if
+            agr = gr_agr(zone)
+        case (EC8_ANNEX_RECOMMENDED)
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'annex = '//int_str(annex)// &
+                           ': the recommended values of EN 1998-1 have no seismic zones; '// &
+                           'give ag, or annex = 1 (Greek National Annex)')
+        case default
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'annex = '//int_str(annex)// &
+                           ': must be 1 (Greek National Annex; 0, EN recommended, has no '// &
+                           'zones: give ag)')
+        end select
+    end subroutine ec8_reference_pga
 
     !> S, TB, TC, TD of EN 1998-1 Table 3.2 (Type 1) or 3.3 (Type 2), recommended values
     !> (a National Annex may give others).
