@@ -11,7 +11,8 @@
 * Seed & Whitman (1970) and Wood (1973) as quoted by UFC 3-220-20 (:func:`seed_whitman`,
   :func:`wood`).
 * EN 1998-1 §3.2.2.2 and §3.2.2.5: ground parameters (Tables 3.2, 3.3), damping
-  correction, elastic and design spectra.
+  correction, elastic and design spectra; the seismic zones of the Greek National Annex
+  (:func:`reference_pga`, ``zone=`` of the spectra).
 
 Units: SI (unit weights kN/m^3, lengths m, thrusts kN/m, moments kNm/m), angles in
 DEGREES (theta is returned in radians), alpha = ag/g dimensionless, spectra in the units
@@ -38,7 +39,8 @@ kv = -0.12 (theta = 0.2110933 rad, K = 0.4856177, K_pd = 2.600) is reproduced (f
 xc project's test, which cites eurocodeapplied.com).
 
 Table values (S, TB, TC, TD, avg/ag, beta = 0.2, r) are EN's RECOMMENDED values; a
-National Annex may change them. gamma_phi = 1.25 is recalled as EN 1998-5's recommended
+National Annex may change them; of the Greek National Annex only the seismic zones are
+implemented (:func:`reference_pga`). gamma_phi = 1.25 is recalled as EN 1998-5's recommended
 value (its NOTE was not verified); the default here is 1.0.
 
 [TEXT ERROR?] The passive coefficient E.4 (delta = 0) as transcribed has the numerator
@@ -63,7 +65,7 @@ from . import _core
 from . import _fortran_codes as _f
 from ._seispulse import (sp_ec8_damping_correction, sp_ec8_design_spectrum,
                          sp_ec8_elastic_spectrum, sp_ec8_ground_parameters, sp_ec8_r_factor,
-                         sp_ec8_rigid_thrust, sp_ec8_seismic_coefficients, sp_ec8_thrust,
+                         sp_ec8_reference_pga, sp_ec8_rigid_thrust, sp_ec8_seismic_coefficients, sp_ec8_thrust,
                          sp_ec8_vertical_ratio, sp_mononobe_okabe, sp_seed_whitman_increment,
                          sp_westergaard_pressure, sp_wood_thrust)
 from .errors import STATUS_ERRORS, InvalidInputError, NoSolutionError
@@ -72,7 +74,8 @@ __all__ = ["WALL_TYPES", "WATER_CASES", "GROUND_TYPES", "MononobeOkabe", "Seismi
            "EarthThrust", "WallThrust", "GroundParameters", "mononobe_okabe",
            "seismic_coefficients", "r_factor", "vertical_ratio", "earth_thrust",
            "westergaard_pressure", "rigid_wall_thrust", "seed_whitman", "wood",
-           "ground_parameters", "damping_correction", "elastic_spectrum", "design_spectrum"]
+           "ground_parameters", "damping_correction", "elastic_spectrum", "design_spectrum",
+           "NATIONAL_ANNEXES", "GR_ZONES", "reference_pga"]
 
 #: EN 1998-5 Table 7.1 wall types: r = 2 (free gravity wall, displacement up to
 #: 300 alpha S mm), 1.5 (up to 200 alpha S mm), 1 (flexural RC walls, anchored or braced
@@ -89,6 +92,13 @@ WATER_CASES = tuple(_WATER_CODES)
 _GROUND_CODES = {"A": _f.EC8_GROUND_A, "B": _f.EC8_GROUND_B, "C": _f.EC8_GROUND_C,
                  "D": _f.EC8_GROUND_D, "E": _f.EC8_GROUND_E}
 GROUND_TYPES = tuple(_GROUND_CODES)
+#: National Annexes to EN 1998-1 whose seismic zones are implemented: the Greek one.
+_ANNEX_CODES = {"GR": _f.EC8_ANNEX_GR}
+NATIONAL_ANNEXES = tuple(_ANNEX_CODES)
+#: Reference peak ground acceleration a_gR on type A ground (g) of the seismic zones of
+#: the Greek National Annex to EN 1998-1: the 2003 zonation map, Z1 0.16, Z2 0.24,
+#: Z3 0.36 (doc/codes.md section 1). Read from the Fortran layer (ec8_reference_pga).
+GR_ZONES = {f"Z{z}": float(sp_ec8_reference_pga(_f.EC8_ANNEX_GR, z)[0]) for z in (1, 2, 3)}
 
 MononobeOkabe = namedtuple("MononobeOkabe", ["k", "theta"])
 MononobeOkabe.__doc__ = """Mononobe-Okabe coefficient K (dimensionless; the thrust is
@@ -385,59 +395,149 @@ def _periods(periods):
     return arr.shape, np.ascontiguousarray(arr.reshape(-1))
 
 
-def elastic_spectrum(periods, ag, spectrum_type=1, ground="A", xi_percent=5.0):
+def _annex(value):
+    """The Fortran code of a National Annex name ('GR', any case); None means 'GR'."""
+    if value is None:
+        return _f.EC8_ANNEX_GR
+    if not isinstance(value, str) or value.strip().upper() not in _ANNEX_CODES:
+        raise InvalidInputError(
+            f"national_annex = {value!r}: unknown National Annex (allowed: "
+            f"{', '.join(map(repr, NATIONAL_ANNEXES))}; EN's recommended values have no "
+            "seismic zones: give ag instead of zone)")
+    return _ANNEX_CODES[value.strip().upper()]
+
+
+def _zone(value):
+    """Zone number 1..3 of 'Z1'..'Z3' (any case) or of the integers 1..3."""
+    if isinstance(value, str) and value.strip().upper() in GR_ZONES:
+        return int(value.strip()[1:])
+    if isinstance(value, numbers.Integral) and not isinstance(value, (bool, np.bool_)) \
+            and int(value) in (1, 2, 3):
+        return int(value)
+    raise InvalidInputError(f"zone = {value!r}: unknown seismic zone of the Greek National "
+                            "Annex (allowed: 'Z1', 'Z2', 'Z3' or 1, 2, 3)")
+
+
+def reference_pga(zone, national_annex="GR"):
+    """Reference peak ground acceleration a_gR on type A ground (g) of a seismic zone.
+
+    Parameters
+    ----------
+    zone : {'Z1', 'Z2', 'Z3'} or {1, 2, 3}
+        Seismic zone of the National Annex.
+    national_annex : {'GR'} or None
+        'GR' (also None): the Greek National Annex to EN 1998-1, which adopted the 2003
+        zonation map [PRDA24]: Z1 0.16 g, Z2 0.24 g, Z3 0.36 g (:data:`GR_ZONES`).
+
+    Returns
+    -------
+    float
+        a_gR in g. The design ground acceleration is ag = gamma_I a_gR (importance factor
+        gamma_I): ``importance=`` of :func:`elastic_spectrum` and :func:`design_spectrum`.
+    """
+    code = _annex(national_annex)
+    agr, stat, msg = sp_ec8_reference_pga(code, _zone(zone))
+    _core.raise_for_status(stat, msg)
+    return float(agr)
+
+
+def _design_ag(ag, zone, national_annex, importance):
+    """ag of a spectrum: the given ag, or importance x a_gR of the zone (g)."""
+    gamma_i = _core.check_positive("importance", importance)
+    if zone is None:
+        if national_annex is not None:
+            _annex(national_annex)
+        if ag is None:
+            raise InvalidInputError("ag: give the design ground acceleration ag, or a seismic "
+                                    "zone (zone='Z1', 'Z2' or 'Z3' of the Greek National "
+                                    "Annex)")
+        if gamma_i != 1.0:
+            raise InvalidInputError(
+                f"importance = {gamma_i!r}: ag is already the design ground acceleration "
+                "gamma_I a_gR; importance applies to the a_gR of a zone only (give zone=, or "
+                "multiply ag yourself)")
+        return _scalar("ag", ag)
+    if ag is not None:
+        raise InvalidInputError("ag and zone: give one of them (a zone gives "
+                                "ag = importance x a_gR)")
+    return gamma_i*reference_pga(zone, national_annex)
+
+
+def elastic_spectrum(periods, ag=None, spectrum_type=1, ground="A", xi_percent=5.0, *,
+                     zone=None, national_annex=None, importance=1.0):
     """Horizontal elastic response spectrum Se(T), EN 1998-1 §3.2.2.2 (3.2)-(3.5).
 
     Parameters
     ----------
     periods : float or array
         T (s, >= 0). EN states the forms up to 4 s; (3.5) is applied beyond.
-    ag : float
-        Design ground acceleration on type A ground (>= 0); Se has its units.
+    ag : float or None
+        Design ground acceleration on type A ground, ag = gamma_I a_gR (>= 0); Se has its
+        units. None: give ``zone``.
     spectrum_type : {1, 2}
         Type 1 (Ms > 5.5) or Type 2.
     ground : {'A', 'B', 'C', 'D', 'E'}
         Ground type (Table 3.1); S, TB, TC, TD from :func:`ground_parameters`.
     xi_percent : float
         Viscous damping (percent, >= 0); eta of :func:`damping_correction`.
+    zone : {'Z1', 'Z2', 'Z3'} or {1, 2, 3} or None, keyword-only
+        Seismic zone of the National Annex, instead of ``ag``: ag = importance x a_gR in g
+        (:func:`reference_pga`; Greek NA Z1 0.16, Z2 0.24, Z3 0.36 g). Giving both ``ag``
+        and ``zone`` is an error.
+    national_annex : {'GR'} or None, keyword-only
+        The National Annex of ``zone``; None means 'GR' (the only one with zones here).
+        Only its zones are used: the Greek NA's other nationally determined parameters
+        (S, TB, TC, TD, beta, the importance factors of its importance classes) were not
+        verified here; S, TB, TC, TD and beta stay EN's recommended values and gamma_I is
+        the ``importance`` given.
+    importance : float, keyword-only
+        Importance factor gamma_I (> 0) multiplying the a_gR of ``zone``. With ``ag`` it
+        must stay 1: ``ag`` is already gamma_I a_gR.
 
     Returns
     -------
     float or array
-        Se, shaped like ``periods``: ag S [1 + T/TB (2.5 eta - 1)] up to TB, 2.5 eta ag S
-        up to TC, times TC/T up to TD, times TC TD / T^2 beyond.
+        Se, shaped like ``periods`` (units of ``ag``; g with ``zone``): ag S [1 + T/TB
+        (2.5 eta - 1)] up to TB, 2.5 eta ag S up to TC, times TC/T up to TD, times
+        TC TD / T^2 beyond.
     """
+    a = _design_ag(ag, zone, national_annex, importance)
     shape, t = _periods(periods)
     xi = _scalar("xi_percent", xi_percent)
-    se, stat, msg = sp_ec8_elastic_spectrum(t, _scalar("ag", ag), _spectrum_type(spectrum_type),
+    se, stat, msg = sp_ec8_elastic_spectrum(t, a, _spectrum_type(spectrum_type),
                                             _ground(ground), xi)
     _core.raise_for_status(stat, msg, indexed=_INDEXED)
     return float(se[0]) if shape == () else se.reshape(shape)
 
 
-def design_spectrum(periods, ag, spectrum_type=1, ground="A", q=1.5, beta=0.2):
+def design_spectrum(periods, ag=None, spectrum_type=1, ground="A", q=1.5, beta=0.2, *,
+                    zone=None, national_annex=None, importance=1.0):
     """Design spectrum Sd(T) for elastic analysis, EN 1998-1 §3.2.2.5 (3.13)-(3.16).
 
     Parameters
     ----------
     periods : float or array
         T (s, >= 0).
-    ag : float
-        Design ground acceleration on type A ground (>= 0); Sd has its units.
+    ag : float or None
+        Design ground acceleration on type A ground, ag = gamma_I a_gR (>= 0); Sd has its
+        units. None: give ``zone``.
     spectrum_type, ground
         As in :func:`elastic_spectrum`.
     q : float
         Behaviour factor (>= 1; the 2/3 ag S at T = 0 presumes q >= 1.5).
     beta : float
         Lower-bound factor (>= 0; 0.2 recommended, an NDP): Sd >= beta ag for T >= TC.
+    zone, national_annex, importance : keyword-only
+        As in :func:`elastic_spectrum` (instead of ``ag``: ag = importance x a_gR in g).
 
     Returns
     -------
     float or array
-        Sd, shaped like ``periods``.
+        Sd, shaped like ``periods`` (units of ``ag``; g with ``zone``).
     """
+    a = _design_ag(ag, zone, national_annex, importance)
     shape, t = _periods(periods)
-    sd, stat, msg = sp_ec8_design_spectrum(t, _scalar("ag", ag), _spectrum_type(spectrum_type),
+    sd, stat, msg = sp_ec8_design_spectrum(t, a, _spectrum_type(spectrum_type),
                                            _ground(ground), _scalar("q", q),
                                            _scalar("beta", beta))
     _core.raise_for_status(stat, msg, indexed=_INDEXED)

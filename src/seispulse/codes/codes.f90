@@ -9,7 +9,8 @@
 !> TCVN 9386:2012 for EN 1998-1, UFC 3-220-20 for the Westergaard, Seed-Whitman and Wood
 !> terms). Equation numbers that rest on recollection only are marked "(not verified)".
 !> Table values are the RECOMMENDED values of EN; a National Annex may change them
-!> (S, TB, TC, TD, beta, gamma_phi, r). EAK 2000 is not implemented (its primary text
+!> (S, TB, TC, TD, beta, gamma_phi, r); of the Greek National Annex only the seismic
+!> zones are implemented (ec8_reference_pga). EAK 2000 is not implemented (its primary text
 !> could not be read).
 !>
 !> Conventions. Angles in DEGREES at the interface (theta is returned in radians); SI:
