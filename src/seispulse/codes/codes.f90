@@ -9,8 +9,8 @@
 !> TCVN 9386:2012 for EN 1998-1, UFC 3-220-20 for the Westergaard, Seed-Whitman and Wood
 !> terms). Equation numbers that rest on recollection only are marked "(not verified)".
 !> Table values are the RECOMMENDED values of EN; a National Annex may change them
-!> (S, TB, TC, TD, beta, gamma_phi, r). EAK 2000 is not implemented (its primary text
-!> could not be read).
+!> (S, TB, TC, TD, beta, gamma_phi, r). The EAK 2000 spectra are in seispulse_eak2000
+!> (doc/eak2000.md); EAK 2000 has no wall rules here (its clause could not be found).
 !>
 !> Conventions. Angles in DEGREES at the interface (theta is returned in radians); SI:
 !> unit weights kN/m3, lengths m, thrusts kN/m, moments kNm/m; alpha = ag/g.
