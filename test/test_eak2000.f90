@@ -398,89 +398,109 @@ contains
                    message='eta_min default')
     end subroutine test_defaults
 
-    subroutine test_bad_input(error)
-        type(test_error), allocatable, intent(out) :: error
-        real(dp) :: out(2), out3(3), inf
+    !> The design spectrum at periods [t1, t2] with these arguments (the others valid)
+    !> must fail with a message starting with `prefix`, its output zeroed.
+    subroutine bad_design(error, prefix, t1, t2, alpha, ground, importance, q, theta, &
+                          xi_percent, eta_min, lower_bound)
+        type(test_error), allocatable, intent(inout) :: error
+        character(len=*), intent(in) :: prefix
+        real(dp), intent(in) :: t1, t2, alpha, importance, q, theta, xi_percent, eta_min, &
+                                lower_bound
+        integer, intent(in) :: ground
+        real(dp) :: out(2)
         integer :: stat
         character(len=200) :: msg
-        inf = ieee_value(1.0_dp, ieee_positive_inf)
-        msg = ''
         out = 1.0_dp
-        call eak2000_design_spectrum([0.1_dp, 0.2_dp], 0.24_dp, EAK_GROUND_B, q=0.99_dp, &
-                                     phi_d=out, stat=stat, errmsg=msg)
-        call check_invalid(error, stat, msg, 'q = 0.99')
+        msg = ''
+        call eak2000_design_spectrum([t1, t2], alpha, ground, importance, q, theta, xi_percent, &
+                                     eta_min, lower_bound, out, stat, msg)
+        call check_invalid(error, stat, msg, prefix)
         if (allocated(error)) return
-        call check(error, all(abs(out) <= 0.0_dp), 'output zeroed on error')
+        call check(error, all(abs(out) <= 0.0_dp), 'output zeroed on error ('//prefix//')')
+    end subroutine bad_design
+
+    !> As bad_design, for the elastic spectrum.
+    subroutine bad_elastic(error, prefix, t2, ground, xi_percent, exponent)
+        type(test_error), allocatable, intent(inout) :: error
+        character(len=*), intent(in) :: prefix
+        real(dp), intent(in) :: t2, xi_percent, exponent
+        integer, intent(in) :: ground
+        real(dp) :: out(2)
+        integer :: stat
+        character(len=200) :: msg
+        msg = ''
+        call eak2000_elastic_spectrum([0.1_dp, t2], 0.24_dp, ground, 1.0_dp, xi_percent, 0.0_dp, &
+                                      exponent, out, stat, msg)
+        call check_invalid(error, stat, msg, prefix)
+    end subroutine bad_elastic
+
+    subroutine test_bad_input(error)
+        type(test_error), allocatable, intent(out) :: error
+        real(dp) :: out(2), out3(3)
+        integer, parameter :: b = EAK_GROUND_B
+        integer :: stat
+        character(len=200) :: msg
+        !                            t1      t2      alpha    ground importance q    theta
+        !                            xi      eta_min lower_bound
+        call bad_design(error, 'q = 0.99', 0.1_dp, 0.2_dp, 0.24_dp, b, 1.0_dp, 0.99_dp, 1.0_dp, &
+                        5.0_dp, 0.0_dp, 0.0_dp)
         if (allocated(error)) return
-        call eak2000_design_spectrum([0.1_dp, 0.2_dp], 0.24_dp, EAK_GROUND_B, q=nan(), &
-                                     phi_d=out, stat=stat, errmsg=msg)
-        call check_invalid(error, stat, msg, 'q = NaN')
+        call bad_design(error, 'q = NaN', 0.1_dp, 0.2_dp, 0.24_dp, b, 1.0_dp, nan(), 1.0_dp, &
+                        5.0_dp, 0.0_dp, 0.0_dp)
         if (allocated(error)) return
-        call eak2000_design_spectrum([0.1_dp, 0.2_dp], 0.24_dp, EAK_GROUND_B, theta=0.0_dp, &
-                                     phi_d=out, stat=stat, errmsg=msg)
-        call check_invalid(error, stat, msg, 'theta = 0')
+        call bad_design(error, 'theta = 0.0: the foundation factor must lie in (0, 1]', 0.1_dp, &
+                        0.2_dp, 0.24_dp, b, 1.0_dp, 1.0_dp, 0.0_dp, 5.0_dp, 0.0_dp, 0.0_dp)
         if (allocated(error)) return
-        call check(error, index(msg, '(0, 1]') > 0, 'theta range in "'//trim(msg)//'"')
+        call bad_design(error, 'theta = 1.01', 0.1_dp, 0.2_dp, 0.24_dp, b, 1.0_dp, 1.0_dp, &
+                        1.01_dp, 5.0_dp, 0.0_dp, 0.0_dp)
         if (allocated(error)) return
-        call eak2000_design_spectrum([0.1_dp, 0.2_dp], 0.24_dp, EAK_GROUND_B, theta=1.01_dp, &
-                                     phi_d=out, stat=stat, errmsg=msg)
-        call check_invalid(error, stat, msg, 'theta = 1.01')
+        call bad_design(error, 'alpha = -0.01', 0.1_dp, 0.2_dp, -0.01_dp, b, 1.0_dp, 1.0_dp, &
+                        1.0_dp, 5.0_dp, 0.0_dp, 0.0_dp)
         if (allocated(error)) return
-        call eak2000_design_spectrum([0.1_dp, 0.2_dp], -0.01_dp, EAK_GROUND_B, phi_d=out, &
-                                     stat=stat, errmsg=msg)
-        call check_invalid(error, stat, msg, 'alpha = -0.01')
+        call bad_design(error, 'alpha = NaN', 0.1_dp, 0.2_dp, nan(), b, 1.0_dp, 1.0_dp, 1.0_dp, &
+                        5.0_dp, 0.0_dp, 0.0_dp)
         if (allocated(error)) return
-        call eak2000_design_spectrum([0.1_dp, 0.2_dp], nan(), EAK_GROUND_B, phi_d=out, &
-                                     stat=stat, errmsg=msg)
-        call check_invalid(error, stat, msg, 'alpha = NaN')
+        call bad_design(error, 'periods(2) = -0.2', 0.1_dp, -0.2_dp, 0.24_dp, b, 1.0_dp, 1.0_dp, &
+                        1.0_dp, 5.0_dp, 0.0_dp, 0.0_dp)
         if (allocated(error)) return
-        call eak2000_design_spectrum([0.1_dp, -0.2_dp], 0.24_dp, EAK_GROUND_B, phi_d=out, &
-                                     stat=stat, errmsg=msg)
-        call check_invalid(error, stat, msg, 'periods(2) = -0.2')
+        call bad_design(error, 'periods(1) = NaN', nan(), 0.2_dp, 0.24_dp, b, 1.0_dp, 1.0_dp, &
+                        1.0_dp, 5.0_dp, 0.0_dp, 0.0_dp)
         if (allocated(error)) return
-        call eak2000_design_spectrum([nan(), 0.2_dp], 0.24_dp, EAK_GROUND_B, phi_d=out, &
-                                     stat=stat, errmsg=msg)
-        call check_invalid(error, stat, msg, 'periods(1) = NaN')
+        call bad_design(error, 'ground = 5 (X): ground category X calls for', 0.1_dp, 0.2_dp, &
+                        0.24_dp, EAK_GROUND_X, 1.0_dp, 1.0_dp, 1.0_dp, 5.0_dp, 0.0_dp, 0.0_dp)
         if (allocated(error)) return
-        call eak2000_elastic_spectrum([0.1_dp, inf], 0.24_dp, EAK_GROUND_B, phi_e=out, &
-                                      stat=stat, errmsg=msg)
-        call check_invalid(error, stat, msg, 'periods(2) = ')
+        call bad_design(error, 'importance = 0', 0.1_dp, 0.2_dp, 0.24_dp, b, 0.0_dp, 1.0_dp, &
+                        1.0_dp, 5.0_dp, 0.0_dp, 0.0_dp)
         if (allocated(error)) return
-        call eak2000_design_spectrum([0.1_dp, 0.2_dp], 0.24_dp, EAK_GROUND_X, phi_d=out, &
-                                     stat=stat, errmsg=msg)
-        call check_invalid(error, stat, msg, 'ground = 5 (X): ground category X calls for')
+        call bad_design(error, 'xi_percent = -1', 0.1_dp, 0.2_dp, 0.24_dp, b, 1.0_dp, 1.0_dp, &
+                        1.0_dp, -1.0_dp, 0.0_dp, 0.0_dp)
         if (allocated(error)) return
-        call eak2000_elastic_spectrum([0.1_dp, 0.2_dp], 0.24_dp, 6, phi_e=out, stat=stat, &
-                                      errmsg=msg)
-        call check_invalid(error, stat, msg, 'ground = 6')
+        call bad_design(error, 'eta_min = 1.5', 0.1_dp, 0.2_dp, 0.24_dp, b, 1.0_dp, 1.0_dp, &
+                        1.0_dp, 5.0_dp, 1.5_dp, 0.0_dp)
         if (allocated(error)) return
-        call eak2000_design_spectrum([0.1_dp, 0.2_dp], 0.24_dp, EAK_GROUND_B, phi_d=out3, &
-                                     stat=stat, errmsg=msg)
+        call bad_design(error, 'lower_bound = -0.1', 0.1_dp, 0.2_dp, 0.24_dp, b, 1.0_dp, 1.0_dp, &
+                        1.0_dp, 5.0_dp, 0.0_dp, -0.1_dp)
+        if (allocated(error)) return
+        call bad_elastic(error, 'periods(2) = ', ieee_value(1.0_dp, ieee_positive_inf), b, &
+                         5.0_dp, 2.0_dp/3.0_dp)
+        if (allocated(error)) return
+        call bad_elastic(error, 'ground = 6: must be 1..4', 0.2_dp, 6, 5.0_dp, 2.0_dp/3.0_dp)
+        if (allocated(error)) return
+        call bad_elastic(error, 'xi_percent = -1', 0.2_dp, b, -1.0_dp, 2.0_dp/3.0_dp)
+        if (allocated(error)) return
+        call bad_elastic(error, 'exponent = 0', 0.2_dp, b, 5.0_dp, 0.0_dp)
+        if (allocated(error)) return
+        msg = ''
+        call eak2000_design_spectrum([0.1_dp, 0.2_dp], 0.24_dp, b, phi_d=out3, stat=stat, &
+                                     errmsg=msg)
         call check_invalid(error, stat, msg, 'phi_d: must have the size of periods (2)')
         if (allocated(error)) return
-        call eak2000_elastic_spectrum([0.1_dp, 0.2_dp], 0.24_dp, EAK_GROUND_B, phi_e=out3, &
-                                      stat=stat, errmsg=msg)
+        call eak2000_elastic_spectrum([0.1_dp, 0.2_dp], 0.24_dp, b, phi_e=out3, stat=stat, &
+                                      errmsg=msg)
         call check_invalid(error, stat, msg, 'phi_e: must have the size of periods (2)')
         if (allocated(error)) return
-        call eak2000_design_spectrum([0.1_dp, 0.2_dp], 0.24_dp, EAK_GROUND_B, importance=0.0_dp, &
-                                     phi_d=out, stat=stat, errmsg=msg)
-        call check_invalid(error, stat, msg, 'importance = 0')
-        if (allocated(error)) return
-        call eak2000_elastic_spectrum([0.1_dp, 0.2_dp], 0.24_dp, EAK_GROUND_B, xi_percent=-1.0_dp, &
-                                      phi_e=out, stat=stat, errmsg=msg)
-        call check_invalid(error, stat, msg, 'xi_percent = -1')
-        if (allocated(error)) return
-        call eak2000_design_spectrum([0.1_dp, 0.2_dp], 0.24_dp, EAK_GROUND_B, eta_min=1.5_dp, &
-                                     phi_d=out, stat=stat, errmsg=msg)
-        call check_invalid(error, stat, msg, 'eta_min = 1.5')
-        if (allocated(error)) return
-        call eak2000_design_spectrum([0.1_dp, 0.2_dp], 0.24_dp, EAK_GROUND_B, &
-                                     lower_bound=-0.1_dp, phi_d=out, stat=stat, errmsg=msg)
-        call check_invalid(error, stat, msg, 'lower_bound = -0.1')
-        if (allocated(error)) return
-        call eak2000_elastic_spectrum([0.1_dp, 0.2_dp], 0.24_dp, EAK_GROUND_B, exponent=0.0_dp, &
-                                      phi_e=out, stat=stat, errmsg=msg)
-        call check_invalid(error, stat, msg, 'exponent = 0')
+        call eak2000_elastic_spectrum([0.1_dp, 0.2_dp], 0.24_dp, b, phi_e=out, stat=stat)
+        call check(error, stat, SEISPULSE_SUCCESS, 'valid elastic call')
         if (allocated(error)) return
         call eak2000_check_damping(nan(), stat=stat, errmsg=msg)
         call check_invalid(error, stat, msg, 'xi_percent = NaN')

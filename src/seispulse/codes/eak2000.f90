@@ -100,31 +100,34 @@ contains
         real(dp), intent(out) :: alpha             !! A/g (dimensionless); 0 on error
         integer, intent(out) :: stat  !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
         character(len=*), intent(inout), optional :: errmsg  !! message naming the parameter
-        integer :: map_in
+        integer :: map_in, n
+        real(dp) :: table(size(zones_2000))
+        character(len=:), allocatable :: names
         map_in = optval(zone_map, EAK_MAP_2003)
         alpha = 0.0_dp
         stat = SEISPULSE_SUCCESS
+        table = 0.0_dp
         select case (map_in)
         case (EAK_MAP_2003)
-            if (zone < 1 .or. zone > size(zones_2003)) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'zone = '// &
-                               int_str(zone)//': must be 1..3 (Z1, Z2, Z3 of the 2003 map)')
-            else
-                alpha = zones_2003(zone)
-            end if
+            n = size(zones_2003)
+            table(1:n) = zones_2003
+            names = 'Z1, Z2, Z3 of the 2003 map'
         case (EAK_MAP_2000)
-            if (zone < 1 .or. zone > size(zones_2000)) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'zone = '// &
-                               int_str(zone)//': must be 1..4 (I, II, III, IV of the '// &
-                               'original 2000 map)')
-            else
-                alpha = zones_2000(zone)
-            end if
+            n = size(zones_2000)
+            table(1:n) = zones_2000
+            names = 'I, II, III, IV of the original 2000 map'
         case default
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'zone_map = '// &
                            int_str(map_in)//': must be 1 (EAK_MAP_2003, the 2003 map) or 2 '// &
                            '(EAK_MAP_2000, the original 2000 map)')
+            return
         end select
+        if (zone < 1 .or. zone > n) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'zone = '//int_str(zone)// &
+                           ': must be 1..'//int_str(n)//' ('//names//')')
+        else
+            alpha = table(zone)
+        end if
     end subroutine eak2000_zone_acceleration
 
     !> Importance factor gamma_I of category 1..4 (Sigma1..Sigma4, EAK 2000 §2.3.4;
