@@ -167,6 +167,8 @@ module seispulse
                                WATER_IMPERVIOUS, WATER_PERMEABLE, EC8_SPECTRUM_TYPE_1, &
                                EC8_SPECTRUM_TYPE_2, EC8_GROUND_A, EC8_GROUND_B, EC8_GROUND_C, &
                                EC8_GROUND_D, EC8_GROUND_E
+    use seispulse_record_suite, only: SUITE_FIT_LINEAR, SUITE_FIT_LOG, suite_rtol, suite_check_t, &
+                                      suite_check_periods, ec8_suite_check
     use seispulse_wall_table, only: wall_case_t, wall_case_default, wall_comparison, &
                                     wall_pressure_profile, wall_row_label, WALL_ROWS, &
                                     WALL_PROFILE_COLUMNS
