@@ -210,6 +210,9 @@ def _records(records, dt, names):
         else:
             acc, step = item, dt
             name = getattr(item, "name", None) or f"record {k}"
+            if dt is None and not hasattr(item, "dt"):
+                raise InvalidInputError(f"dt: {what} is an array of samples; its time step "
+                                        "(s, > 0) is required (or give (accel_g, dt) pairs)")
         try:
             acc, step = _core.record_and_step(acc, step)
         except InvalidInputError as exc:
@@ -252,7 +255,8 @@ def _target_values(target, periods):
     bad = np.flatnonzero(~np.isfinite(values) | (values <= 0.0))
     if bad.size:
         k = bad[0]
-        raise InvalidInputError(f"target: its value at T = {at[k]!r} s is {values[k]!r}: the "
+        raise InvalidInputError(f"target: its value at T = {float(at[k])!r} s is "
+                                f"{float(values[k])!r}: the "
                                 "target spectrum (g) must be finite and > 0 at T = 0 and on "
                                 "[0.2 T1, 2 T1]")
     return float(values[0]), np.ascontiguousarray(values[1:])
@@ -331,17 +335,21 @@ def check_record_suite(records, t1, target, *, dt=None, n_points=50, extra_perio
     psa = np.empty((len(recs), n))
     pga = np.empty(len(recs))
     for k, (name, acc, step) in enumerate(recs):
-        spec = sdof.spectrum(acc, step, periods=with_zero, damping=SUITE_DAMPING, g=g,
-                             peaks="exact")
+        try:
+            spec = sdof.spectrum(acc, step, periods=with_zero, damping=SUITE_DAMPING, g=g,
+                                 peaks="exact")
+        except InvalidInputError as exc:
+            raise InvalidInputError(f"records[{k}] ({name!r}): {exc}") from None
         pga[k] = spec.psa[0]
         psa[k] = spec.psa[1:]
         if not pga[k] > 0.0:
-            raise InvalidInputError(f"records[{k}] ({name!r}): its PGA is {pga[k]!r} g; a "
+            raise InvalidInputError(f"records[{k}] ({name!r}): its PGA is {float(pga[k])!r} g; a "
                                     "record with zero PGA cannot be scaled")
         bad = np.flatnonzero(~(psa[k] > 0.0))
         if bad.size:
             raise InvalidInputError(f"records[{k}] ({name!r}): its 5 % PSA at T = "
-                                    f"{periods[bad[0]]!r} s is {psa[k, bad[0]]!r} g; a record "
+                                    f"{float(periods[bad[0]])!r} s is "
+                                    f"{float(psa[k, bad[0]])!r} g; a record "
                                     "with zero PSA cannot be scaled")
 
     values, flags, own_scale, mean, ratio, own_mean, stat, msg = sp_ec8_suite_check(
