@@ -286,9 +286,10 @@ def check_record_suite(records, t1, target, *, dt=None, n_points=50, extra_perio
         Log-spaced periods from 0.2 T1 to 2 T1, both included (default 50; >= 2). The
         grid also holds T1, the target's corner periods and ``extra_periods`` that fall
         inside the range. The rule (c) is checked at the grid's periods only: between
-        them the ratio can dip below its least value on the grid (50 points: about 2 %
-        apart, dense enough for the code spectrum's smooth branches; the corners are on
-        the grid when the target gives them).
+        them the ratio can dip below its least value on the grid (50 points: 4.8 %
+        apart, 10^(1/49); a record's spectrum can have narrow peaks and troughs
+        between them: raise n_points to look closer; the corners are on the grid when
+        the target gives them).
     extra_periods : array_like, optional
         Further periods (s, finite) to check; those outside [0.2 T1, 2 T1] are left out.
     fit : {'linear', 'log'}
