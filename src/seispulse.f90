@@ -168,6 +168,12 @@ module seispulse
                                EC8_SPECTRUM_TYPE_2, EC8_GROUND_A, EC8_GROUND_B, EC8_GROUND_C, &
                                EC8_GROUND_D, EC8_GROUND_E, EC8_ANNEX_RECOMMENDED, EC8_ANNEX_GR, &
                                ec8_reference_pga
+    use seispulse_eak2000, only: eak2000_ground_parameters, eak2000_zone_acceleration, &
+                                 eak2000_importance_factor, eak2000_damping_correction, &
+                                 eak2000_check_damping, eak2000_design_spectrum, &
+                                 eak2000_elastic_spectrum, EAK_GROUND_A, EAK_GROUND_B, &
+                                 EAK_GROUND_C, EAK_GROUND_D, EAK_GROUND_X, EAK_MAP_2003, &
+                                 EAK_MAP_2000, EAK_BETA0
     use seispulse_wall_table, only: wall_case_t, wall_case_default, wall_comparison, &
                                     wall_pressure_profile, wall_row_label, WALL_ROWS, &
                                     WALL_PROFILE_COLUMNS

@@ -52,8 +52,18 @@ For a backfill steeper than phi_d - theta, EN prints E.3; no soil wedge is in
 equilibrium there, so :func:`mononobe_okabe` raises :class:`seispulse.NoSolutionError`
 unless ``beyond_limit="en1998"`` asks for EN's number.
 
-EAK 2000 (the Greek seismic code) is NOT implemented: its primary text could not be
-read, and its retaining-wall clause could not be located.
+EAK 2000 (the Greek seismic code, with the zones of its 2003 amendment): the design
+spectrum Phi_d (K.1)-(K.3) and an elastic spectrum Phi_e (:func:`eak2000_spectrum`), and
+its parameters (:func:`eak2000_parameters`, :data:`EAK_ZONES_2003`, :data:`EAK_ZONES_2000`,
+:data:`EAK_GROUNDS`, :data:`EAK_IMPORTANCE`); doc/eak2000.md. Its primary text could not
+be read: the formulas and the values of beta0, T1/T2, gamma_I and eta are SECONDARY (two
+implementations by one author group, which agree), the 2003 zones 0.16/0.24/0.36 g are
+from press reports and [PRDA24]. UNVERIFIED, and therefore parameters with stated
+defaults: the lower limit of eta (``eta_min``, default none), the rules for the foundation
+factor theta (default 1), a lower bound of Phi_d (``lower_bound``, default none), the
+long-period exponent of Phi_e (``elastic_exponent``, default 2/3); ground X is refused.
+There are still no EAK wall rules: its retaining-wall clause could not be found (give kh,
+kv directly, e.g. from EN 1998-5, with the driver's ``code = 'direct'``).
 """
 
 import numbers
@@ -69,6 +79,10 @@ from ._seispulse import (sp_ec8_damping_correction, sp_ec8_design_spectrum,
                          sp_ec8_vertical_ratio, sp_mononobe_okabe, sp_seed_whitman_increment,
                          sp_westergaard_pressure, sp_wood_thrust)
 from .errors import STATUS_ERRORS, InvalidInputError, NoSolutionError
+from ._eak2000 import (EAK_GROUNDS, EAK_IMPORTANCE, EAK_ZONES_2000,  # noqa: F401
+                       EAK_ZONES_2003, EakParameters, eak2000_parameters,
+                       eak2000_spectrum)
+from . import _eak2000
 
 __all__ = ["WALL_TYPES", "WATER_CASES", "GROUND_TYPES", "MononobeOkabe", "SeismicCoefficients",
            "EarthThrust", "WallThrust", "GroundParameters", "mononobe_okabe",
@@ -76,6 +90,7 @@ __all__ = ["WALL_TYPES", "WATER_CASES", "GROUND_TYPES", "MononobeOkabe", "Seismi
            "westergaard_pressure", "rigid_wall_thrust", "seed_whitman", "wood",
            "ground_parameters", "damping_correction", "elastic_spectrum", "design_spectrum",
            "NATIONAL_ANNEXES", "GR_ZONES", "reference_pga"]
+__all__ += _eak2000.__all__
 
 #: EN 1998-5 Table 7.1 wall types: r = 2 (free gravity wall, displacement up to
 #: 300 alpha S mm), 1.5 (up to 200 alpha S mm), 1 (flexural RC walls, anchored or braced

@@ -69,7 +69,7 @@ module seispulse_codes
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_NO_SOLUTION, &
                                 set_error
-    use seispulse_checks, only: outside
+    use seispulse_checks, only: outside, check_spectrum_periods
     use seispulse_optval, only: optval
     use seispulse_format, only: real_str, int_str
     use seispulse_special, only: pi
@@ -932,7 +932,6 @@ contains
         character(len=*), intent(in) :: outname
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
-        integer :: i
         call check_type_ground(spectrum_type, ground, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         if (outside(ag, 0.0_dp, big, .false., .false.)) then
@@ -940,19 +939,7 @@ contains
                            ': the design ground acceleration must be finite and >= 0')
             return
         end if
-        if (nout /= size(periods)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, outname// &
-                           ': must have the size of periods ('//int_str(size(periods))//')')
-            return
-        end if
-        do i = 1, size(periods)
-            if (outside(periods(i), 0.0_dp, big, .false., .false.)) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'periods('//int_str(i)// &
-                               ') = '//real_str(periods(i))//': the period (s) must be '// &
-                               'finite and >= 0')
-                return
-            end if
-        end do
+        call check_spectrum_periods(periods, nout, outname, stat, errmsg)
     end subroutine spectrum_check
 
 end module seispulse_codes

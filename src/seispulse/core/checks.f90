@@ -5,12 +5,13 @@ module seispulse_checks
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error
-    use seispulse_format, only: real_str
+    use seispulse_format, only: real_str, int_str
     implicit none
     private
 
     public :: outside, finite_positive, finite_at_least, positive, in_open, in_closed, &
-              check_finite_times, check_ascending_times, check_output_grid, check_history_sizes
+              check_finite_times, check_ascending_times, check_output_grid, check_history_sizes, &
+              check_spectrum_periods
 
 contains
 
@@ -150,6 +151,32 @@ contains
             call check_ascending_times(t_grid, 't_grid', stat, errmsg)
         end if
     end subroutine check_output_grid
+
+    !> Periods of a response spectrum and its output: `nout` (the size of the output array
+    !> named `outname`) equal to size(periods), every period finite and >= 0 (s). The
+    !> messages name the output or periods(i).
+    pure subroutine check_spectrum_periods(periods, nout, outname, stat, errmsg)
+        real(dp), intent(in) :: periods(:)                    !! periods T, s
+        integer, intent(in) :: nout                           !! size of the output array
+        character(len=*), intent(in) :: outname               !! its name in messages
+        integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
+        character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        integer :: i
+        stat = SEISPULSE_SUCCESS
+        if (nout /= size(periods)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, outname// &
+                           ': must have the size of periods ('//int_str(size(periods))//')')
+            return
+        end if
+        do i = 1, size(periods)
+            if (outside(periods(i), 0.0_dp, huge(1.0_dp), .false., .false.)) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'periods('//int_str(i)// &
+                               ') = '//real_str(periods(i))//': the period (s) must be '// &
+                               'finite and >= 0')
+                return
+            end if
+        end do
+    end subroutine check_spectrum_periods
 
     !> Optional histories at the samples of a record of n samples: each one present has n
     !> elements, else a message naming it ('<name>: must have the size of accel').

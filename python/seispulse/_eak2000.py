@@ -1,0 +1,247 @@
+"""EAK 2000, the Greek seismic code with its 2003 amendment of the zones: design and
+elastic spectra (Fortran module ``seispulse_eak2000``; doc/eak2000.md). Users reach these
+names as ``seispulse.codes.<name>``.
+
+Provenance: the primary text of EAK 2000 could not be read. The formulas and the values
+of beta0, T1/T2, gamma_I and eta are SECONDARY (two implementations by one author group,
+which agree); the 2003 zones are from press reports and [PRDA24]. UNVERIFIED items are
+parameters with documented defaults: ``eta_min`` (EAK's lower limit of eta; default
+none), ``theta`` (its rules; default 1), ``lower_bound`` (a floor of Phi_d; default none),
+``elastic_exponent`` (the long-period exponent of Phi_e; default 2/3), ground X (refused).
+"""
+
+import math
+import numbers
+from collections import namedtuple
+
+import numpy as np
+
+from . import _core
+from . import _fortran_codes as _f
+from ._seispulse import (sp_eak2000_beta0, sp_eak2000_damping_correction,
+                         sp_eak2000_design_spectrum, sp_eak2000_elastic_spectrum,
+                         sp_eak2000_ground_parameters, sp_eak2000_importance_factor,
+                         sp_eak2000_zone_acceleration)
+from .errors import InvalidInputError
+
+__all__ = ["EAK_ZONES_2003", "EAK_ZONES_2000", "EAK_GROUNDS", "EAK_IMPORTANCE",
+           "EakParameters", "eak2000_spectrum", "eak2000_parameters"]
+
+#: alpha = A/g of the zones of the 2003 amendment (in force from 1 January 2004; SECONDARY:
+#: press reports and [PRDA24]). The default map.
+EAK_ZONES_2003 = {"Z1": 0.16, "Z2": 0.24, "Z3": 0.36}
+#: alpha = A/g of the zones of the original EAK 2000 map (SECONDARY), replaced in 2003.
+EAK_ZONES_2000 = {"I": 0.12, "II": 0.16, "III": 0.24, "IV": 0.36}
+#: Soil categories with values (SECONDARY); X (site-specific study) is refused.
+EAK_GROUNDS = ("A", "B", "C", "D")
+#: gamma_I of the importance categories Sigma1..Sigma4 (SECONDARY).
+EAK_IMPORTANCE = {"I": 0.85, "II": 1.0, "III": 1.15, "IV": 1.30}
+
+_MAPS = {"2003": (_f.EAK_MAP_2003, EAK_ZONES_2003), "2000": (_f.EAK_MAP_2000, EAK_ZONES_2000)}
+_GROUND_CODES = {"A": _f.EAK_GROUND_A, "B": _f.EAK_GROUND_B, "C": _f.EAK_GROUND_C,
+                 "D": _f.EAK_GROUND_D}
+_CATEGORY_ALIASES = {"Σ1": "I", "Σ2": "II", "Σ3": "III", "Σ4": "IV"}
+_KINDS = ("design", "elastic")
+_DESIGN_EXPONENT = 2.0 / 3.0
+
+EakParameters = namedtuple("EakParameters", ["alpha", "gamma_i", "eta", "t1", "t2", "beta0"])
+EakParameters.__doc__ = """Parameters of an EAK 2000 spectrum: alpha = A/g (zone or given),
+gamma_i (importance factor), eta (damping correction, with eta_min applied), t1 and t2
+(corner periods, s) and beta0 = 2.5 (all SECONDARY; see :func:`eak2000_spectrum`)."""
+
+
+def _zone_map(zone_map):
+    key = str(zone_map) if isinstance(zone_map, numbers.Integral) \
+        and not isinstance(zone_map, (bool, np.bool_)) else zone_map
+    if not isinstance(key, str) or key.strip() not in _MAPS:
+        raise InvalidInputError(f"zone_map = {zone_map!r}: unknown map (allowed: '2003', the "
+                                "2003 amendment (default), '2000', the original map)")
+    return _MAPS[key.strip()]
+
+
+def _alpha(zone, zone_map, alpha):
+    """A/g from `alpha` (given: overrides the zone) or from the zone of the map."""
+    code, zones = _zone_map(zone_map)
+    if alpha is not None:
+        value = _core.as_scalar("alpha", alpha)
+        if not math.isfinite(value) or value < 0.0:
+            raise InvalidInputError(f"alpha = {value!r}: the ground acceleration A/g must be "
+                                    "finite and >= 0")
+        return value
+    names = tuple(zones)
+    if isinstance(zone, numbers.Integral) and not isinstance(zone, (bool, np.bool_)) \
+            and 1 <= int(zone) <= len(names):
+        number = int(zone)
+    elif isinstance(zone, str) and zone.strip().upper() in names:
+        number = names.index(zone.strip().upper()) + 1
+    else:
+        other = "'I'..'IV' are the 2000 map's" if code == _f.EAK_MAP_2003 \
+            else "'Z1'..'Z3' are the 2003 map's"
+        raise InvalidInputError(
+            f"zone = {zone!r}: unknown zone of the {'2003' if code == _f.EAK_MAP_2003 else '2000'}"
+            f" map (allowed: {', '.join(map(repr, names))} or 1..{len(names)}; {other}; "
+            "or give alpha)")
+    value, stat, msg = sp_eak2000_zone_acceleration(number, code)
+    _core.raise_for_status(stat, msg)
+    return float(value)
+
+
+def _ground(ground):
+    key = ground.strip().upper() if isinstance(ground, str) else None
+    if key == "X":
+        raise InvalidInputError("ground = 'X': ground category X calls for a site-specific "
+                                "study (unverified); give ground A-D")
+    if key not in _GROUND_CODES:
+        raise InvalidInputError(f"ground = {ground!r}: unknown soil category (allowed: 'A', "
+                                "'B', 'C', 'D', EAK 2000 §2.3.6)")
+    return _GROUND_CODES[key]
+
+
+def _importance(importance):
+    """gamma_I from a number or a category name 'I'..'IV' / 'Σ1'..'Σ4'."""
+    if isinstance(importance, str):
+        key = importance.strip().upper()
+        key = _CATEGORY_ALIASES.get(key, key)
+        if key not in EAK_IMPORTANCE:
+            raise InvalidInputError(f"importance = {importance!r}: unknown category (allowed: "
+                                    "'I', 'II', 'III', 'IV' (also 'Σ1'..'Σ4'), or gamma_I > 0)")
+        number = tuple(EAK_IMPORTANCE).index(key) + 1
+        gamma_i, stat, msg = sp_eak2000_importance_factor(number)
+        _core.raise_for_status(stat, msg)
+        return float(gamma_i)
+    if isinstance(importance, (bool, np.bool_)):
+        raise InvalidInputError(f"importance = {importance!r}: must be gamma_I (> 0) or a "
+                                "category 'I'..'IV'")
+    value = _core.as_scalar("importance", importance)
+    if not math.isfinite(value) or value <= 0.0:
+        raise InvalidInputError(f"importance = {value!r}: the importance factor gamma_I must "
+                                "be finite and > 0 (categories 'I'..'IV': 0.85, 1.0, 1.15, 1.3)")
+    return value
+
+
+def _xi_percent(damping):
+    value = _core.as_scalar("damping", damping)
+    if not math.isfinite(value) or not 0.0 <= value < 1.0:
+        raise InvalidInputError(f"damping = {value!r}: the damping RATIO must lie in [0, 1) "
+                                "(0.05 for 5 %)")
+    return 100.0 * value
+
+
+def _eta_min(eta_min):
+    value = _core.as_scalar("eta_min", eta_min)
+    if not math.isfinite(value) or not 0.0 <= value <= 1.0:
+        raise InvalidInputError(f"eta_min = {value!r}: the lower limit of eta must lie in "
+                                "[0, 1] (0 = none; EAK's own limit is unverified)")
+    return value
+
+
+def eak2000_parameters(zone="Z2", ground="B", importance=1.0, damping=0.05, *, alpha=None,
+                       zone_map="2003", eta_min=0.0):
+    """Parameters of an EAK 2000 spectrum (SECONDARY values; doc/eak2000.md).
+
+    Arguments as in :func:`eak2000_spectrum`. Returns :class:`EakParameters` (alpha,
+    gamma_i, eta, t1 (s), t2 (s), beta0).
+    """
+    a = _alpha(zone, zone_map, alpha)
+    code = _ground(ground)
+    gamma_i = _importance(importance)
+    xi = _xi_percent(damping)
+    floor = _eta_min(eta_min)
+    t1, t2, stat, msg = sp_eak2000_ground_parameters(code)
+    _core.raise_for_status(stat, msg)
+    eta, stat, msg = sp_eak2000_damping_correction(np.array([xi]), floor)
+    _core.raise_for_status(stat, msg)
+    return EakParameters(a, gamma_i, float(eta[0]), float(t1), float(t2),
+                         float(sp_eak2000_beta0()))
+
+
+def eak2000_spectrum(periods, zone="Z2", ground="B", importance=1.0, q=1.0, theta=1.0,
+                     damping=0.05, *, alpha=None, zone_map="2003", kind="design", eta_min=0.0,
+                     lower_bound=0.0, elastic_exponent=2.0 / 3.0):
+    """Horizontal spectrum of EAK 2000 (§2.3.1) with the 2003 zones, in g.
+
+    The formulas and values are SECONDARY (two implementations by one author group, press
+    reports and [PRDA24] for the zones; the code's text itself could not be read); the
+    items marked UNVERIFIED below are parameters with stated defaults. See doc/eak2000.md.
+
+    Design spectrum (``kind='design'``), A = alpha g, eta = max(sqrt(7 / (2 + xi)),
+    eta_min) with xi in percent, beta0 = 2.5:
+
+    * T <= T1: gamma_I A [1 + T/T1 (eta theta beta0 / q - 1)] (K.1)
+    * T1 < T <= T2: gamma_I A eta theta beta0 / q (K.2)
+    * T > T2: gamma_I A eta theta beta0 / q (T2/T)^(2/3) (K.3)
+    * and >= lower_bound gamma_I A (K.5).
+
+    Elastic spectrum (``kind='elastic'``): the same with q = theta = 1, no floor and the
+    exponent ``elastic_exponent`` beyond T2 (K.6).
+
+    Parameters
+    ----------
+    periods : float or array
+        T (s, >= 0).
+    zone : str or int
+        Seismic zone: 'Z1', 'Z2', 'Z3' (0.16, 0.24, 0.36) for ``zone_map='2003'``, 'I'..'IV'
+        (0.12, 0.16, 0.24, 0.36) for ``zone_map='2000'``; or the zone number. Ignored when
+        ``alpha`` is given.
+    ground : {'A', 'B', 'C', 'D'}
+        Soil category (T1/T2 = 0.10/0.40, 0.15/0.60, 0.20/0.80, 0.20/1.20 s). 'X' (a
+        site-specific study, unverified) is refused.
+    importance : float or str
+        gamma_I (> 0), or a category 'I'..'IV' (also 'Σ1'..'Σ4'): 0.85, 1.0, 1.15, 1.30.
+    q : float
+        Behaviour factor (>= 1; design only).
+    theta : float
+        Foundation factor in (0, 1] (design only; its rules are UNVERIFIED: one secondary
+        source offers 0.8-1.0).
+    damping : float
+        Viscous damping RATIO in [0, 1) (0.05 = 5 %, eta = 1).
+    alpha : float or None
+        A/g (>= 0); overrides ``zone``.
+    zone_map : {'2003', '2000'}
+        The 2003 amendment's map (default) or the original 2000 map.
+    kind : {'design', 'elastic'}
+        Phi_d or Phi_e. With 'elastic', ``q``, ``theta`` must stay 1 and ``lower_bound``
+        0; with 'design', ``elastic_exponent`` must stay 2/3.
+    eta_min : float
+        Lower limit of eta in [0, 1]; default 0 = none, as both secondary sources (EAK's
+        own limit is UNVERIFIED; 0.7 is ENV 1998's with this form).
+    lower_bound : float
+        Floor factor of Phi_d (>= 0): Phi_d >= lower_bound gamma_I A; default 0 = none (a
+        floor of 0.25 is recalled but UNVERIFIED).
+    elastic_exponent : float
+        Exponent of (T2/T) in Phi_e beyond T2 (> 0); default 2/3 (= Phi_d with q = theta =
+        1), 1 in one secondary implementation (UNVERIFIED).
+
+    Returns
+    -------
+    float or array
+        The spectral acceleration in g, shaped like ``periods``.
+    """
+    mode = _core.check_choice("kind", kind, _KINDS)
+    a = _alpha(zone, zone_map, alpha)
+    code = _ground(ground)
+    gamma_i = _importance(importance)
+    xi = _xi_percent(damping)
+    floor = _eta_min(eta_min)
+    qq, th = _core.as_scalar("q", q), _core.as_scalar("theta", theta)
+    lb = _core.as_scalar("lower_bound", lower_bound)
+    expo = _core.as_scalar("elastic_exponent", elastic_exponent)
+    arr = _core.as_float_array("periods", periods)
+    shape, flat = arr.shape, np.ascontiguousarray(arr.reshape(-1))
+    if mode == "elastic":
+        for name, value, default in (("q", qq, 1.0), ("theta", th, 1.0),
+                                     ("lower_bound", lb, 0.0)):
+            if value != default:
+                raise InvalidInputError(f"{name} = {value!r}: kind = 'elastic' takes no "
+                                        f"{name} (must stay {default:g}); use kind = 'design'")
+        out, stat, msg = sp_eak2000_elastic_spectrum(flat, a, code, gamma_i, xi, floor, expo)
+        _core.raise_for_status(stat, msg, rename={"exponent": "elastic_exponent"},
+                               indexed=("periods",))
+    else:
+        if expo != _DESIGN_EXPONENT:
+            raise InvalidInputError(f"elastic_exponent = {expo!r}: applies to kind = 'elastic' "
+                                    "only (Phi_d falls off as (T2/T)^(2/3))")
+        out, stat, msg = sp_eak2000_design_spectrum(flat, a, code, gamma_i, qq, th, xi, floor,
+                                                    lb)
+        _core.raise_for_status(stat, msg, indexed=("periods",))
+    return float(out[0]) if shape == () else out.reshape(shape)
