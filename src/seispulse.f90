@@ -174,6 +174,8 @@ module seispulse
                                  eak2000_elastic_spectrum, EAK_GROUND_A, EAK_GROUND_B, &
                                  EAK_GROUND_C, EAK_GROUND_D, EAK_GROUND_X, EAK_MAP_2003, &
                                  EAK_MAP_2000, EAK_BETA0
+    use seispulse_record_suite, only: SUITE_FIT_LINEAR, SUITE_FIT_LOG, suite_rtol, suite_check_t, &
+                                      suite_check_periods, ec8_suite_check
     use seispulse_wall_table, only: wall_case_t, wall_case_default, wall_comparison, &
                                     wall_pressure_profile, wall_row_label, WALL_ROWS, &
                                     WALL_PROFILE_COLUMNS

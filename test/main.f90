@@ -32,6 +32,7 @@ program tester
     use test_walls_vy, only: collect_walls_vy
     use test_walls_one_term, only: collect_walls_one_term
     use test_codes, only: collect_codes
+    use test_record_suite, only: collect_record_suite
     use test_empirical, only: collect_empirical
     use test_optional_args, only: collect_optional_args
     implicit none
@@ -159,6 +160,10 @@ program tester
     if (selected('codes')) then
         call collect_codes(tests)
         call run_suite('codes', tests, output_unit, npass, nfail)
+    end if
+    if (selected('record_suite')) then
+        call collect_record_suite(tests)
+        call run_suite('record_suite', tests, output_unit, npass, nfail)
     end if
     if (selected('empirical')) then
         call collect_empirical(tests)
