@@ -36,7 +36,8 @@ module driver_spectra
                              status_names
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
-                              records_missing, record_line, failed_records, resolve
+                              records_missing, record_line, failed_records, resolve, &
+                              count_strings
     use driver_sdof_common, only: max_periods
     use driver_axis, only: axis_values
     use driver_echo, only: echo_unit, echo_path
@@ -84,23 +85,27 @@ module driver_spectra
 
     !> Most codes in `codes` (each once: 3), with room to find one given twice.
     integer, parameter :: max_codes = 10
+    !> The largest double (no upper bound).
+    real(dp), parameter :: big = huge(1.0_dp)
     !> Damping ratio of the spectra of the records and of the target (the check, 5 %).
     real(dp), parameter :: check_damping = 0.05_dp
 
-    ! namelist variables (defaults are set in set_defaults; local namelists read them in
-    ! the readers, since &ec8 and &eak share key names)
-    real(dp) :: s_periods(max_periods), s_period_range(2)
-    integer :: s_period_count
-    character(len=32) :: s_spacing, s_codes(max_codes), s_kind
+    ! namelist variables (defaults are set in set_defaults); &ec8 and &eak share key
+    ! names: local namelists in their readers read them into c_*, k_*
+    real(dp) :: periods(max_periods), period_range(2)
+    integer :: period_count
+    character(len=32) :: spacing, codes(max_codes), kind
+    namelist /spectra/ periods, period_range, period_count, spacing, codes, kind
     real(dp) :: c_ag, c_importance, c_damping, c_q, c_beta
     character(len=32) :: c_zone, c_annex, c_ground
     real(dp) :: k_alpha, k_importance, k_q, k_theta, k_damping, k_eta_min, k_lower_bound, &
                 k_exponent
     character(len=32) :: k_zone, k_zone_map, k_ground, k_class
-    real(dp) :: u_t1
-    integer :: u_n_points, u_min_records
-    character(len=32) :: u_target, u_fit
-    character(len=1024) :: u_records_from
+    real(dp) :: t1
+    integer :: n_points, min_records
+    character(len=32) :: target, fit
+    character(len=1024) :: records_from
+    namelist /suite/ t1, target, n_points, fit, min_records, records_from
 
     !> EN 1998-1 parameters (&ec8).
     type :: ec8_t
@@ -171,12 +176,12 @@ contains
         real(dp) :: nan
         nan = ieee_value(nan, ieee_quiet_nan)
         call records_defaults()
-        s_periods = nan
-        s_period_range = nan
-        s_period_count = 0
-        s_spacing = 'linear'
-        s_codes = ''
-        s_kind = 'both'
+        periods = nan
+        period_range = nan
+        period_count = 0
+        spacing = 'linear'
+        codes = ''
+        kind = 'both'
         c_ag = nan
         c_zone = ''
         c_annex = ''
@@ -197,12 +202,12 @@ contains
         k_eta_min = 0.0_dp
         k_lower_bound = 0.0_dp
         k_exponent = 2.0_dp / 3.0_dp
-        u_t1 = nan
-        u_target = 'EC8_1'
-        u_n_points = 50
-        u_fit = 'linear'
-        u_min_records = 3
-        u_records_from = ''
+        t1 = nan
+        target = 'EC8_1'
+        n_points = 50
+        fit = 'linear'
+        min_records = 3
+        records_from = ''
     end subroutine set_defaults
 
     subroutine read_spectra(unit, text, ios, iomsg)
@@ -210,28 +215,11 @@ contains
         character(len=*), intent(in) :: text
         integer, intent(out) :: ios
         character(len=*), intent(inout) :: iomsg
-        real(dp) :: periods(max_periods), period_range(2)
-        integer :: period_count
-        character(len=32) :: spacing, codes(max_codes), kind
-        namelist /spectra/ periods, period_range, period_count, spacing, codes, kind
-        periods = s_periods
-        period_range = s_period_range
-        period_count = s_period_count
-        spacing = s_spacing
-        codes = s_codes
-        kind = s_kind
         if (len(text) > 0) then
             read(text, nml=spectra, iostat=ios, iomsg=iomsg)
         else
             read(unit, nml=spectra, iostat=ios, iomsg=iomsg)
         end if
-        if (ios /= 0) return
-        s_periods = periods
-        s_period_range = period_range
-        s_period_count = period_count
-        s_spacing = spacing
-        s_codes = codes
-        s_kind = kind
     end subroutine read_spectra
 
     subroutine read_ec8(unit, text, ios, iomsg)
@@ -313,29 +301,11 @@ contains
         character(len=*), intent(in) :: text
         integer, intent(out) :: ios
         character(len=*), intent(inout) :: iomsg
-        real(dp) :: t1
-        integer :: n_points, min_records
-        character(len=32) :: target, fit
-        character(len=1024) :: records_from
-        namelist /suite/ t1, target, n_points, fit, min_records, records_from
-        t1 = u_t1
-        target = u_target
-        n_points = u_n_points
-        fit = u_fit
-        min_records = u_min_records
-        records_from = u_records_from
         if (len(text) > 0) then
             read(text, nml=suite, iostat=ios, iomsg=iomsg)
         else
             read(unit, nml=suite, iostat=ios, iomsg=iomsg)
         end if
-        if (ios /= 0) return
-        u_t1 = t1
-        u_target = target
-        u_n_points = n_points
-        u_fit = fit
-        u_min_records = min_records
-        u_records_from = records_from
     end subroutine read_suite
 
     !> Read and check the groups, compute every table, write them; print where they
@@ -516,35 +486,29 @@ contains
             cfg%grid = ''
             return
         end if
-        call axis_values(gs, 'periods', 'period', s_periods, s_period_range, s_period_count, &
-                         s_spacing, .false., .false., max_periods, cfg%periods, cfg%grid, &
+        call axis_values(gs, 'periods', 'period', periods, period_range, period_count, &
+                         spacing, .false., .false., max_periods, cfg%periods, cfg%grid, &
                          errmsg, required=.true.)
         if (len(errmsg) > 0) then
             errmsg = where//errmsg
             return
         end if
         if (given(gs, 'codes')) then
-            n = 0
-            do i = size(s_codes), 1, -1
-                if (len_trim(s_codes(i)) > 0) then
-                    n = i
-                    exit
-                end if
-            end do
-            if (n == 0) then
-                errmsg = where//'codes: empty (give some of '//upper_list(code_names)//')'
+            call count_strings(codes, 'codes', n, errmsg)
+            if (len(errmsg) > 0) then
+                errmsg = where//errmsg//' (give some of '//upper_list(code_names)//')'
                 return
             end if
             do i = 1, n
-                code = name_index(s_codes(i), code_names)
+                code = name_index(codes(i), code_names)
                 if (code == 0) then
-                    errmsg = where//list_item('codes', i)//' = '''//trim(s_codes(i)) &
+                    errmsg = where//list_item('codes', i)//' = '''//trim(codes(i)) &
                              //''': unknown code (allowed: '//upper_list(code_names)//')'
                     return
                 end if
                 do j = 1, size(cfg%codes)
                     if (cfg%codes(j) == code) then
-                        errmsg = where//list_item('codes', i)//' = '''//trim(s_codes(i)) &
+                        errmsg = where//list_item('codes', i)//' = '''//trim(codes(i)) &
                                  //''': given twice'
                         return
                     end if
@@ -554,9 +518,9 @@ contains
         else
             cfg%codes = [CODE_EC8_1, CODE_EC8_2, CODE_EAK]
         end if
-        cfg%kind = name_index(s_kind, kind_names)
+        cfg%kind = name_index(kind, kind_names)
         if (cfg%kind == 0) then
-            errmsg = where//'kind = '''//trim(s_kind)//''': unknown kind (allowed: ' &
+            errmsg = where//'kind = '''//trim(kind)//''': unknown kind (allowed: ' &
                      //join(kind_names)//')'
             return
         end if
@@ -621,11 +585,8 @@ contains
                 errmsg = where//'importance: only with zone (ag is already gamma_I a_gR)'
                 return
             end if
-            if (outside(c_ag, 0.0_dp, huge(1.0_dp), .false., .false.)) then
-                errmsg = where//'ag = '//shortest_str(c_ag)//': must be a finite ' &
-                         //'acceleration >= 0 (g)'
-                return
-            end if
+            if (.not. in_range(where, 'ag', c_ag, 0.0_dp, big, .false., errmsg, &
+                'must be a finite acceleration >= 0 (g)')) return
             p%ag = c_ag
         end if
         p%ground = name_index(c_ground, ec8_grounds)
@@ -634,23 +595,14 @@ contains
                      //'(allowed: A, B, C, D, E of EN 1998-1 Table 3.1)'
             return
         end if
-        if (outside(c_damping, 0.0_dp, huge(1.0_dp), .false., .false.)) then
-            errmsg = where//'damping = '//shortest_str(c_damping)//': must be a finite ' &
-                     //'damping ratio >= 0 (0.05: eta = 1)'
-            return
-        end if
+        if (.not. in_range(where, 'damping', c_damping, 0.0_dp, big, .false., errmsg, &
+            'must be a finite damping ratio >= 0 (0.05: eta = 1)')) return
         p%damping = c_damping
-        if (outside(c_q, 1.0_dp, huge(1.0_dp), .false., .false.)) then
-            errmsg = where//'q = '//shortest_str(c_q)//': the behaviour factor must be ' &
-                     //'finite and >= 1'
-            return
-        end if
+        if (.not. in_range(where, 'q', c_q, 1.0_dp, big, .false., errmsg, &
+            'the behaviour factor must be finite and >= 1')) return
         p%q = c_q
-        if (outside(c_beta, 0.0_dp, huge(1.0_dp), .false., .false.)) then
-            errmsg = where//'beta = '//shortest_str(c_beta)//': the lower-bound factor must ' &
-                     //'be finite and >= 0 (0.2 recommended)'
-            return
-        end if
+        if (.not. in_range(where, 'beta', c_beta, 0.0_dp, big, .false., errmsg, &
+            'the lower-bound factor must be finite and >= 0 (0.2 recommended)')) return
         p%beta = c_beta
     end subroutine check_ec8
 
@@ -685,11 +637,8 @@ contains
                 errmsg = where//'zone_map: only with zone (alpha is given directly)'
                 return
             end if
-            if (outside(k_alpha, 0.0_dp, huge(1.0_dp), .false., .false.)) then
-                errmsg = where//'alpha = '//shortest_str(k_alpha)//': must be a finite A/g ' &
-                         //'>= 0'
-                return
-            end if
+            if (.not. in_range(where, 'alpha', k_alpha, 0.0_dp, big, .false., errmsg, &
+                'must be a finite A/g >= 0')) return
             p%alpha = k_alpha
         else
             if (.not. given(gk, 'zone')) k_zone = merge('Z2 ', 'II ', p%zone_map == EAK_MAP_2003)
@@ -755,41 +704,23 @@ contains
             end if
             p%importance = k_importance
         end if
-        if (outside(k_q, 1.0_dp, huge(1.0_dp), .false., .false.)) then
-            errmsg = where//'q = '//shortest_str(k_q)//': the behaviour factor must be ' &
-                     //'finite and >= 1'
-            return
-        end if
+        if (.not. in_range(where, 'q', k_q, 1.0_dp, big, .false., errmsg, &
+            'the behaviour factor must be finite and >= 1')) return
         p%q = k_q
-        if (outside(k_theta, 0.0_dp, 1.0_dp, .true., .false.)) then
-            errmsg = where//'theta = '//shortest_str(k_theta)//': must be in (0, 1] (the ' &
-                     //'foundation factor; its rules are unverified)'
-            return
-        end if
+        if (.not. in_range(where, 'theta', k_theta, 0.0_dp, 1.0_dp, .true., errmsg, &
+            'must be in (0, 1] (the foundation factor; its rules are unverified)')) return
         p%theta = k_theta
-        if (outside(k_damping, 0.0_dp, huge(1.0_dp), .false., .false.)) then
-            errmsg = where//'damping = '//shortest_str(k_damping)//': must be a finite ' &
-                     //'damping ratio >= 0 (0.05: eta = 1)'
-            return
-        end if
+        if (.not. in_range(where, 'damping', k_damping, 0.0_dp, big, .false., errmsg, &
+            'must be a finite damping ratio >= 0 (0.05: eta = 1)')) return
         p%damping = k_damping
-        if (outside(k_eta_min, 0.0_dp, huge(1.0_dp), .false., .false.)) then
-            errmsg = where//'eta_min = '//shortest_str(k_eta_min)//': must be finite and ' &
-                     //'>= 0 (0: no floor on eta)'
-            return
-        end if
+        if (.not. in_range(where, 'eta_min', k_eta_min, 0.0_dp, 1.0_dp, .false., errmsg, &
+            'must be in [0, 1] (the floor of eta, unverified; 0: none)')) return
         p%eta_min = k_eta_min
-        if (outside(k_lower_bound, 0.0_dp, huge(1.0_dp), .false., .false.)) then
-            errmsg = where//'lower_bound = '//shortest_str(k_lower_bound)//': must be ' &
-                     //'finite and >= 0 (0: none)'
-            return
-        end if
+        if (.not. in_range(where, 'lower_bound', k_lower_bound, 0.0_dp, big, .false., errmsg, &
+            'must be finite and >= 0 (0: none)')) return
         p%lower_bound = k_lower_bound
-        if (outside(k_exponent, 0.0_dp, huge(1.0_dp), .true., .false.)) then
-            errmsg = where//'elastic_exponent = '//shortest_str(k_exponent)//': must be ' &
-                     //'finite and > 0 (2/3 as the design spectrum; 1 in one implementation)'
-            return
-        end if
+        if (.not. in_range(where, 'elastic_exponent', k_exponent, 0.0_dp, big, .true., errmsg, &
+            'must be finite and > 0 (2/3 as the design spectrum; 1 in one implementation)')) return
         p%exponent = k_exponent
     end subroutine check_eak
 
@@ -810,59 +741,57 @@ contains
                      //'the check covers 0.2 T1 .. 2 T1)'
             return
         end if
-        if (outside(u_t1, 0.0_dp, huge(1.0_dp), .true., .false.)) then
-            errmsg = where//'t1 = '//shortest_str(u_t1)//': must be a finite period > 0 (s)'
-            return
-        end if
-        cfg%t1 = u_t1
-        cfg%target = name_index(u_target, code_names)
+        if (.not. in_range(where, 't1', t1, 0.0_dp, big, .true., errmsg, &
+            'must be a finite period > 0 (s)')) return
+        cfg%t1 = t1
+        cfg%target = name_index(target, code_names)
         if (cfg%target == 0) then
-            errmsg = where//'target = '''//trim(u_target)//''': unknown target (allowed: ' &
+            errmsg = where//'target = '''//trim(target)//''': unknown target (allowed: ' &
                      //upper_list(code_names)//', each code''s elastic spectrum)'
             return
         end if
-        if (u_n_points < 2 .or. u_n_points > max_periods) then
-            errmsg = where//'n_points = '//int_str(u_n_points)//': must be in 2 .. ' &
+        if (n_points < 2 .or. n_points > max_periods) then
+            errmsg = where//'n_points = '//int_str(n_points)//': must be in 2 .. ' &
                      //int_str(max_periods)//' (log-spaced periods of the check)'
             return
         end if
-        cfg%n_points = u_n_points
-        cfg%fit = name_index(u_fit, fit_names)
+        cfg%n_points = n_points
+        cfg%fit = name_index(fit, fit_names)
         if (cfg%fit == 0) then
-            errmsg = where//'fit = '''//trim(u_fit)//''': unknown fit (allowed: ' &
+            errmsg = where//'fit = '''//trim(fit)//''': unknown fit (allowed: ' &
                      //join(fit_names)//')'
             return
         end if
         cfg%fit = merge(SUITE_FIT_LINEAR, SUITE_FIT_LOG, cfg%fit == 1)
-        if (u_min_records < 1) then
-            errmsg = where//'min_records = '//int_str(u_min_records)//': must be >= 1 ' &
+        if (min_records < 1) then
+            errmsg = where//'min_records = '//int_str(min_records)//': must be >= 1 ' &
                      //'(EN 1998-1 3.2.3.1.2(4): at least 3)'
             return
         end if
-        cfg%min_records = u_min_records
+        cfg%min_records = min_records
 
         ! --- the records: here, or in the input named by records_from
         cfg%records_from = ''
         if (given(gu, 'records_from')) then
-            if (len_trim(u_records_from) == 0) then
+            if (len_trim(records_from) == 0) then
                 errmsg = where//'records_from: empty (give the input file whose &records ' &
                          //'to use, relative to this file)'
                 return
             end if
             if (gr%line > 0) then
                 errmsg = located(path, gr)//'not with &suite records_from (the records come ' &
-                         //'from '''//trim(u_records_from)//'''; give one of them)'
+                         //'from '''//trim(records_from)//'''; give one of them)'
                 return
             end if
-            cfg%records_from = resolve(path, trim(adjustl(u_records_from)))
+            cfg%records_from = resolve(path, trim(adjustl(records_from)))
             call scan_file(cfg%records_from, other, st, msg)
             if (st /= 0) then
-                errmsg = where//'records_from = '''//trim(u_records_from)//''': '//msg
+                errmsg = where//'records_from = '''//trim(records_from)//''': '//msg
                 return
             end if
             ig = find_group(other, 'records')
             if (ig == 0) then
-                errmsg = where//'records_from = '''//trim(u_records_from)//''': it has no ' &
+                errmsg = where//'records_from = '''//trim(records_from)//''': it has no ' &
                          //'&records group'
                 return
             end if
@@ -1229,9 +1158,9 @@ contains
                 if (p%zone > 0) then
                     s = 'EN 1998-1: ag = gamma_I a_gR = '//shortest_str(p%importance)//' x ' &
                         //shortest_str(p%agr)//' = '//shortest_str(p%ag)//' g (zone ' &
-                        //trim(upper(ec8_zones(p%zone)))//' of the Greek National Annex, the 2003 ' &
-                        //'map [PRDA24]; every other NDP the recommended value: the Greek ' &
-                        //'NA''s other NDPs were not verified here)'
+                        //trim(upper(ec8_zones(p%zone)))//' of the Greek National Annex, ' &
+                        //'the 2003 map [PRDA24]; every other NDP the recommended value: the ' &
+                        //'Greek NA''s other NDPs were not verified here)'
                 else
                     s = 'EN 1998-1: ag = '//shortest_str(p%ag)//' g (given; recommended NDPs)'
                 end if
@@ -1513,6 +1442,17 @@ contains
     ! ------------------------------------------------------------------------------
     ! Helpers
     ! ------------------------------------------------------------------------------
+
+    !> Whether x is finite and in [lo, hi] (lo excluded with open_lo); else errmsg =
+    !> where//"name = x: rule" (false).
+    logical function in_range(where, name, x, lo, hi, open_lo, errmsg, rule)
+        character(len=*), intent(in) :: where, name, rule
+        real(dp), intent(in) :: x, lo, hi
+        logical, intent(in) :: open_lo
+        character(len=:), allocatable, intent(inout) :: errmsg
+        in_range = .not. outside(x, lo, hi, open_lo, .false.)
+        if (.not. in_range) errmsg = where//name//' = '//shortest_str(x)//': '//rule
+    end function in_range
 
     !> 1 for .true., 0 for .false. (a category code).
     elemental real(dp) function flag(x)

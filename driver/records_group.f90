@@ -23,7 +23,8 @@ module driver_records
 
     public :: records_keys, record_in_t, record_out_t, records_defaults, read_records
     public :: check_records, echo_records, load_record, progress, report
-    public :: path_len, short, records_missing, record_line, failed_records, resolve
+    public :: path_len, short, records_missing, record_line, failed_records, resolve, &
+              count_strings
 
     character(len=12), parameter :: records_keys(8) = [character(len=12) :: 'files', &
         'format', 'units', 'dt', 'scale', 'target_pga', 'pga_rounding', 'polarity']
