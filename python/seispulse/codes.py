@@ -501,6 +501,7 @@ def elastic_spectrum(periods, ag=None, spectrum_type=1, ground="A", xi_percent=5
         and ``zone`` is an error.
     national_annex : {'GR'} or None, keyword-only
         The National Annex of ``zone``; None means 'GR' (the only one with zones here).
+        With ``ag`` it is only checked.
         Only its zones are used: the Greek NA's other nationally determined parameters
         (S, TB, TC, TD, beta, the importance factors of its importance classes) were not
         verified here; S, TB, TC, TD and beta stay EN's recommended values and gamma_I is
