@@ -482,10 +482,10 @@ contains
             c%alpha_s = kh                 ! r = 1 unless ag S/g is given
             if (given(gs, 'alpha_s')) c%alpha_s = alpha_s
         case (3)
-            errmsg = located(path, gs)//'code = ''EAK'': not available: the EAK 2000 values ' &
-                     //'(zones, soil categories, retaining-wall clause) could not be checked ' &
-                     //'against the published code (see README); use code = ''direct'' with ' &
-                     //'kh, kv and alpha_s from the code, or code = ''EC8'''
+            errmsg = located(path, gs)//'code = ''EAK'': not available: the retaining-wall ' &
+                     //'clause of EAK 2000 could not be found (its spectra are available, see ' &
+                     //'README); use code = ''direct'' with kh, kv (and alpha_s), or ' &
+                     //'code = ''EC8'''
             return
         case default
             errmsg = located(path, gs)//'code = '''//trim(code)//''': unknown code (allowed: ' &
@@ -576,7 +576,8 @@ contains
                       //'the base'
         comments(7) = 'Veletsos-Younan and one-term: |Q| gamma (ag S/g) H^2 at h = |M|/|Q| ' &
                       //'(dry backfill, harmonic ground motion)'
-        comments(8) = 'EAK 2000: not included (its values could not be verified; see README)'
+        comments(8) = 'EAK 2000: no wall rows (its retaining-wall clause could not be found; ' &
+                      //'see README)'
         call write_tables(prefix, 'walls', comments, &
             [character(len=8) :: 'method', 'thrust', 'z', 'z/H', 'moment'], &
             [character(len=8) :: '-', 'kN/m', 'm', '-', 'kNm/m'], table, files, stat, errmsg, &

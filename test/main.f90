@@ -33,6 +33,7 @@ program tester
     use test_walls_one_term, only: collect_walls_one_term
     use test_codes, only: collect_codes
     use test_record_suite, only: collect_record_suite
+    use test_eak2000, only: collect_eak2000
     use test_empirical, only: collect_empirical
     use test_optional_args, only: collect_optional_args
     implicit none
@@ -164,6 +165,10 @@ program tester
     if (selected('record_suite')) then
         call collect_record_suite(tests)
         call run_suite('record_suite', tests, output_unit, npass, nfail)
+    end if
+    if (selected('eak2000')) then
+        call collect_eak2000(tests)
+        call run_suite('eak2000', tests, output_unit, npass, nfail)
     end if
     if (selected('empirical')) then
         call collect_empirical(tests)

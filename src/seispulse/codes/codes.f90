@@ -10,8 +10,8 @@
 !> terms). Equation numbers that rest on recollection only are marked "(not verified)".
 !> Table values are the RECOMMENDED values of EN; a National Annex may change them
 !> (S, TB, TC, TD, beta, gamma_phi, r); of the Greek National Annex only the seismic
-!> zones are implemented (ec8_reference_pga). EAK 2000 is not implemented (its primary text
-!> could not be read).
+!> zones are implemented (ec8_reference_pga). The EAK 2000 spectra are in seispulse_eak2000
+!> (doc/eak2000.md); EAK 2000 has no wall rules here (its clause could not be found).
 !>
 !> Conventions. Angles in DEGREES at the interface (theta is returned in radians); SI:
 !> unit weights kN/m3, lengths m, thrusts kN/m, moments kNm/m; alpha = ag/g.

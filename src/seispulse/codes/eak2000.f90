@@ -23,7 +23,7 @@ module seispulse_eak2000
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error
     use seispulse_checks, only: outside, check_spectrum_periods
     use seispulse_optval, only: optval
-    use seispulse_format, only: real_str, int_str
+    use seispulse_format, only: num_str, int_str
     implicit none
     private
 
@@ -100,31 +100,34 @@ contains
         real(dp), intent(out) :: alpha             !! A/g (dimensionless); 0 on error
         integer, intent(out) :: stat  !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
         character(len=*), intent(inout), optional :: errmsg  !! message naming the parameter
-        integer :: map_in
+        integer :: map_in, n
+        real(dp) :: table(size(zones_2000))
+        character(len=:), allocatable :: names
         map_in = optval(zone_map, EAK_MAP_2003)
         alpha = 0.0_dp
         stat = SEISPULSE_SUCCESS
+        table = 0.0_dp
         select case (map_in)
         case (EAK_MAP_2003)
-            if (zone < 1 .or. zone > size(zones_2003)) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'zone = '// &
-                               int_str(zone)//': must be 1..3 (Z1, Z2, Z3 of the 2003 map)')
-            else
-                alpha = zones_2003(zone)
-            end if
+            n = size(zones_2003)
+            table(1:n) = zones_2003
+            names = 'Z1, Z2, Z3 of the 2003 map'
         case (EAK_MAP_2000)
-            if (zone < 1 .or. zone > size(zones_2000)) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'zone = '// &
-                               int_str(zone)//': must be 1..4 (I, II, III, IV of the '// &
-                               'original 2000 map)')
-            else
-                alpha = zones_2000(zone)
-            end if
+            n = size(zones_2000)
+            table(1:n) = zones_2000
+            names = 'I, II, III, IV of the original 2000 map'
         case default
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'zone_map = '// &
                            int_str(map_in)//': must be 1 (EAK_MAP_2003, the 2003 map) or 2 '// &
                            '(EAK_MAP_2000, the original 2000 map)')
+            return
         end select
+        if (zone < 1 .or. zone > n) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'zone = '//int_str(zone)// &
+                           ': must be 1..'//int_str(n)//' ('//names//')')
+        else
+            alpha = table(zone)
+        end if
     end subroutine eak2000_zone_acceleration
 
     !> Importance factor gamma_I of category 1..4 (Sigma1..Sigma4, EAK 2000 §2.3.4;
@@ -176,11 +179,11 @@ contains
         stat = SEISPULSE_SUCCESS
         if (outside(xi_percent, 0.0_dp, big, .false., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'xi_percent = '// &
-                           real_str(xi_percent)//': the damping ratio (percent) must be '// &
+                           num_str(xi_percent)//': the damping ratio (percent) must be '// &
                            'finite and >= 0')
         else if (outside(floor, 0.0_dp, 1.0_dp, .false., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'eta_min = '// &
-                           real_str(floor)//': the lower limit of eta must lie in [0, 1] '// &
+                           num_str(floor)//': the lower limit of eta must lie in [0, 1] '// &
                            '(0 = none; EAK''s own limit is unverified)')
         end if
     end subroutine eak2000_check_damping
@@ -270,7 +273,7 @@ contains
         call check_ground(ground, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         if (outside(alpha, 0.0_dp, big, .false., .false.)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'alpha = '//real_str(alpha)// &
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'alpha = '//num_str(alpha)// &
                            ': the ground acceleration A/g must be finite and >= 0')
             return
         end if
@@ -278,21 +281,21 @@ contains
         if (stat /= SEISPULSE_SUCCESS) return
         if (outside(gamma_i, 0.0_dp, big, .true., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'importance = '// &
-                           real_str(gamma_i)//': the importance factor gamma_I must be '// &
+                           num_str(gamma_i)//': the importance factor gamma_I must be '// &
                            'finite and > 0 (categories: 0.85, 1.00, 1.15, 1.30)')
         else if (outside(q, 1.0_dp, big, .false., .false.)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'q = '//real_str(q)// &
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'q = '//num_str(q)// &
                            ': the behaviour factor must be finite and >= 1')
         else if (outside(theta, 0.0_dp, 1.0_dp, .true., .false.)) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'theta = '//real_str(theta)// &
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'theta = '//num_str(theta)// &
                            ': the foundation factor must lie in (0, 1]')
         else if (outside(lower_bound, 0.0_dp, big, .false., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'lower_bound = '// &
-                           real_str(lower_bound)//': the floor factor must be finite and >= 0 '// &
+                           num_str(lower_bound)//': the floor factor must be finite and >= 0 '// &
                            '(0 = none)')
         else if (outside(expo, 0.0_dp, big, .true., .false.)) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'exponent = '// &
-                           real_str(expo)//': the long-period exponent must be finite and > 0')
+                           num_str(expo)//': the long-period exponent must be finite and > 0')
         else
             call eak2000_check_damping(xi_percent, eta_min, stat, errmsg)
         end if
