@@ -92,7 +92,8 @@ contains
         nan = ieee_value(1.0_dp, ieee_quiet_nan)
         msg = ''
         call suite_check_periods(0.0_dp, 5, [real(dp) ::], p, n, stat, msg)
-        call check_refused(error, stat, msg, 't1 = 0.0: the fundamental period T1 (s) must be finite and > 0')
+        call check_refused(error, stat, msg, &
+                           't1 = 0.0: the fundamental period T1 (s) must be finite and > 0')
         if (allocated(error)) return
         call suite_check_periods(nan, 5, [real(dp) ::], p, n, stat, msg)
         call check_refused(error, stat, msg, 't1 = NaN')
@@ -293,7 +294,8 @@ contains
         msg = ''
         call ec8_suite_check(grid, rec, peak, tgt, 0.5_dp, 0.0_dp, SUITE_FIT_LINEAR, c, s, m, &
                              stat, msg)
-        call check_refused(error, stat, msg, 't1 = 0.0: the fundamental period T1 (s) must be finite and > 0')
+        call check_refused(error, stat, msg, &
+                           't1 = 0.0: the fundamental period T1 (s) must be finite and > 0')
         if (allocated(error)) return
         call ec8_suite_check(grid, rec, peak, tgt, 0.5_dp, nan, SUITE_FIT_LINEAR, c, s, m, &
                              stat, msg)

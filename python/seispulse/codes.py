@@ -13,6 +13,9 @@
 * EN 1998-1 §3.2.2.2 and §3.2.2.5: ground parameters (Tables 3.2, 3.3), damping
   correction, elastic and design spectra; the seismic zones of the Greek National Annex
   (:func:`reference_pga`, ``zone=`` of the spectra).
+* EN 1998-1 3.2.3.1.2(4): a suite of records against the elastic spectrum
+  (:func:`check_record_suite`, :class:`SuiteCheck`, :func:`elastic_target`;
+  doc/record-suites.md).
 
 Units: SI (unit weights kN/m^3, lengths m, thrusts kN/m, moments kNm/m), angles in
 DEGREES (theta is returned in radians), alpha = ag/g dimensionless, spectra in the units
@@ -559,3 +562,8 @@ def design_spectrum(periods, ag=None, spectrum_type=1, ground="A", q=1.5, beta=0
     _core.raise_for_status(stat, msg, indexed=_INDEXED)
     return float(sd[0]) if shape == () else sd.reshape(shape)
 
+
+# EN 1998-1 3.2.3.1.2(4): record suites against the code spectrum (doc/record-suites.md)
+from . import _record_suite  # noqa: E402
+from ._record_suite import *  # noqa: E402,F401,F403
+__all__ += _record_suite.__all__

@@ -27,6 +27,9 @@ panels ``ax=`` takes a sequence of as many axes.
   pulse of :func:`seispulse.pulse.define` or a :class:`~seispulse.pulse.PulseHistory`.
 * :func:`overturning_map`: a map of :func:`seispulse.rocking.overturning_map`, the
   legend of the classes under the axes.
+* :func:`record_suite`: a record-suite check of :func:`seispulse.codes.check_record_suite`:
+  each record's 5 % PSA, their mean, the target and 90 % of it over [0.2 T1, 2 T1] (g)
+  against the period (s).
 """
 
 import numpy as np
@@ -37,7 +40,8 @@ from ._seispulse import sp_pulse_end_time, sp_pulse_eval
 from .errors import InvalidInputError
 from .pulse import STANDARD_GRAVITY   # m/s^2: converts m/s^2 to g where a plot shows both
 
-__all__ = ["QUANTITIES", "spectra", "newmark", "rocking", "walls", "pulse", "overturning_map"]
+__all__ = ["QUANTITIES", "spectra", "newmark", "rocking", "walls", "pulse", "overturning_map",
+           "record_suite"]
 
 #: Ordinates of :func:`spectra`: the field of the spectrum and its label without the unit
 #: (PSA in m/s^2; in g, as a record's spectrum gives it, the label adds ``/ g``).
@@ -617,4 +621,59 @@ def walls(profile, comparison=None, ax=None, title=None):
         fig.suptitle(title)
     else:
         _title(axes, title)
+    return fig
+
+
+# ------------------------------------------------------------------ record suites
+
+def record_suite(check, ax=None, title=None):
+    """A record-suite check (EN 1998-1 3.2.3.1.2(4)) on one axes.
+
+    Parameters
+    ----------
+    check : seispulse.codes.SuiteCheck
+        From :func:`seispulse.codes.check_record_suite`.
+    ax : matplotlib Axes, optional
+        Draw there instead of on a new figure.
+    title : str, optional
+        Default: the verdict, e.g. ``EN 1998-1 3.2.3.1.2(4): passed (3 records)``.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        On the check grid (log period axis, s): each record's 5 % PSA (thin grey lines),
+        their mean (bold), the target and 0.9 x target (g); the range [0.2 T1, 2 T1]
+        shaded, T1 and the period of the least mean/target marked.
+    """
+    from .codes import SuiteCheck
+    if not isinstance(check, SuiteCheck):
+        raise InvalidInputError("check: must be the result of "
+                                "seispulse.codes.check_record_suite")
+    fig, (axis,) = _figure("record_suite", ax, 1, height=4.6)
+    per = np.asarray(check.periods, float)
+    target = np.asarray(check.target, float)
+    for k, row in enumerate(np.asarray(check.psa, float)):
+        axis.plot(per, row, color="0.6", linewidth=0.7,
+                  label="records, 5 % PSA" if k == 0 else None)
+    axis.plot(per, np.asarray(check.mean, float), color="C0", linewidth=2.4,
+              label=f"mean of {len(check.names)} records")
+    axis.plot(per, target, color="k", linewidth=1.4, label="target (elastic spectrum)")
+    axis.plot(per, 0.9 * target, color="k", linewidth=1.2, linestyle="--",
+              label="0.9 x target")
+    axis.axvspan(check.t_range[0], check.t_range[1], color="C1", alpha=0.08,
+                 label="0.2 T1 .. 2 T1")
+    axis.axvline(check.t1, color="C1", linewidth=1.0, label=f"T1 = {check.t1:g} s")
+    axis.axvline(check.t_min_ratio, color="C3", linewidth=0.8, linestyle=":",
+                 label=f"least mean/target = {check.min_ratio:.3g}")
+    axis.set_xscale("log")
+    axis.set_xlim(check.t_range[0] / 1.25, check.t_range[1] * 1.25)   # the band's edges show
+    axis.set_xlabel("period T (s)")
+    axis.set_ylabel("PSA, 5 % damping (g)")
+    axis.set_ylim(bottom=0.0)
+    axis.grid(True, which="both", linewidth=0.3)
+    _legend(axis)
+    if title is None:
+        title = (f"EN 1998-1 3.2.3.1.2(4): {'passed' if check.passed else 'failed'} "
+                 f"({len(check.names)} records)")
+    _title([axis], title)
     return fig

@@ -476,3 +476,41 @@ def test_screenshot_script(source_root, tmp_path):
         assert struct.unpack(">II", data[16:24]) == (width, height)
         assert name in out
     assert (tmp_path / "table.png").read_bytes()[:8] == PNG
+
+
+# ------------------------------------------------------------------ record suites
+
+def test_record_suite(tmp_path):
+    """The check of codes.check_record_suite: every record's PSA, the mean, the target and
+    0.9 x target drawn at the check's own numbers, the band [0.2 T1, 2 T1] shaded, T1
+    marked, log period axis, units on the axes, the legend inside."""
+    from seispulse import codes
+    t = np.arange(0.0, 6.0, 0.01)
+    tri = np.interp(t, [0.0, 0.25, 0.5], [0.0, 1.0, 0.0], right=0.0)
+    suite = [(a * tri, 0.01) for a in (0.2, 0.3, 0.4)]
+    check = codes.check_record_suite(suite, 0.4, codes.elastic_target(0.3, ground="B"))
+    fig = plot.record_suite(check)
+    legends = rendered(fig, tmp_path / "suite.png")
+    (axis,) = fig.axes
+    assert axis.get_xscale() == "log" and axis.get_xlabel() == "period T (s)"
+    assert axis.get_ylabel() == "PSA, 5 % damping (g)"
+    assert axis.get_title() == "EN 1998-1 3.2.3.1.2(4): failed (3 records)"
+    lines = lines_of(axis)
+    assert len(lines) == 3 + 3     # records, mean, target, 0.9 target
+    for line, row in zip(lines[:3], check.psa):
+        np.testing.assert_array_equal(line.get_xdata(), check.periods)
+        np.testing.assert_array_equal(line.get_ydata(), row)
+    np.testing.assert_array_equal(lines[3].get_ydata(), check.mean)
+    np.testing.assert_array_equal(lines[4].get_ydata(), check.target)
+    np.testing.assert_array_equal(lines[5].get_ydata(), 0.9 * check.target)
+    labels = [t.get_text() for t in legends[0].get_texts()]
+    assert labels[:4] == ["records, 5 % PSA", "mean of 3 records", "target (elastic spectrum)",
+                          "0.9 x target"]
+    assert "T1 = 0.4 s" in labels and "0.2 T1 .. 2 T1" in labels
+    (band,) = axis.patches
+    x = band.get_patch_transform().transform(band.get_path().vertices)[:, 0]   # data x
+    assert min(x) == pytest.approx(0.08, rel=1e-15) and max(x) == pytest.approx(0.8, rel=1e-15)
+    with pytest.raises(InvalidInputError, match="^check: must be the result of"):
+        plot.record_suite(check._asdict())
+    fig, ax = plt.subplots()
+    assert plot.record_suite(check, ax=ax, title="mine") is fig and ax.get_title() == "mine"
