@@ -1,7 +1,7 @@
 !> The &records group, shared by the analyses that run on accelerogram files
-!> ('newmark', 'sdof'): its keys, defaults, reading, checks and echo, and reading one
-!> record (format, units, time step, polarity, scale or target PGA). One code path, so
-!> that a record means the same in every analysis.
+!> ('newmark', 'sdof', 'spectra', ...): its keys, defaults, reading, checks and echo, and
+!> reading one record (format, units, time step, polarity, scale or target PGA). One code
+!> path, so that a record means the same in every analysis.
 !>
 !> A record that cannot be read or scaled is not an input error: load_record reports
 !> it on stderr at once and returns ok = .false.; the analysis fails that record's
