@@ -567,7 +567,7 @@ contains
             msg = ''
             call ec8_reference_pga(EC8_ANNEX_GR, p%zone, p%agr, st, msg)
             if (st /= SEISPULSE_SUCCESS) then
-                errmsg = where//'zone = '''//trim(c_zone)//''': '//trim(msg)
+                errmsg = where//'zone = '''//trim(c_zone)//''': '//reason(msg)
                 return
             end if
             p%ag = p%importance * p%agr
@@ -661,7 +661,7 @@ contains
             msg = ''
             call eak2000_zone_acceleration(p%zone, p%zone_map, p%alpha, st, msg)
             if (st /= SEISPULSE_SUCCESS) then
-                errmsg = where//'zone = '''//trim(k_zone)//''': '//trim(msg)
+                errmsg = where//'zone = '''//trim(k_zone)//''': '//reason(msg)
                 return
             end if
         end if
@@ -675,7 +675,7 @@ contains
         msg = ''
         call eak2000_ground_parameters(p%ground, t_1, t_2, st, msg)
         if (st /= SEISPULSE_SUCCESS) then
-            errmsg = where//'ground = '''//trim(k_ground)//''': '//trim(msg)
+            errmsg = where//'ground = '''//trim(k_ground)//''': '//reason(msg)
             return
         end if
         if (given(gk, 'importance') .and. given(gk, 'importance_class')) then
@@ -693,7 +693,7 @@ contains
             msg = ''
             call eak2000_importance_factor(p%importance_class, p%importance, st, msg)
             if (st /= SEISPULSE_SUCCESS) then
-                errmsg = where//'importance_class = '''//trim(k_class)//''': '//trim(msg)
+                errmsg = where//'importance_class = '''//trim(k_class)//''': '//reason(msg)
                 return
             end if
         else
@@ -1453,6 +1453,16 @@ contains
         in_range = .not. outside(x, lo, hi, open_lo, .false.)
         if (.not. in_range) errmsg = where//name//' = '//shortest_str(x)//': '//rule
     end function in_range
+
+    !> The reason of a library message "name = value: reason" (the driver names the key
+    !> and the value as the input wrote them).
+    function reason(msg) result(s)
+        character(len=*), intent(in) :: msg
+        character(len=:), allocatable :: s
+        integer :: k
+        k = index(msg, ': ')
+        s = trim(msg(k + 2:))
+    end function reason
 
     !> 1 for .true., 0 for .false. (a category code).
     elemental real(dp) function flag(x)

@@ -291,6 +291,23 @@ def test_records_from_reads_the_other_input(driver, tmp_path):
     assert (tmp_path / "again_suite.csv").read_text() == (tmp_path / "from_suite.csv").read_text()
 
 
+def test_records_from_error_is_placed_in_the_other_input(driver, tmp_path):
+    """A bad &records of the input named by records_from: the error names that file, the
+    line of its &records and the key (exit status 2, nothing written)."""
+    with_records(tmp_path)
+    (tmp_path / "other.nml").write_text("&run analysis='newmark', output='n' /\n\n"
+                                        "&records files = 'records/quake_a.AT2', "
+                                        "units = 'furlongs' /\n")
+    proc = run(driver, tmp_path, RUN + "&suite t1 = 0.4, records_from = 'other.nml' /\n"
+               + EC8)
+    assert proc.returncode == 2, proc.stderr
+    errors = [ln for ln in proc.stderr.splitlines() if ln.startswith("seispulse: error:")]
+    assert len(errors) == 1 and errors[0].startswith(
+        "seispulse: error: other.nml:3: &records: units = "), proc.stderr
+    assert sorted(p.name for p in tmp_path.iterdir() if p.is_file()) == ["case.nml",
+                                                                          "other.nml"]
+
+
 def test_a_record_that_cannot_be_read(driver, tmp_path):
     """A missing record fails its rows (status failed, NaN) and the run exits 1; the check
     is made on the records read when at least min_records remain, else the summary holds
@@ -353,7 +370,7 @@ ERRORS = {
     "unknown_eak_ground": ("&spectra periods = 0.1, codes = 'EAK' /\n&eak ground = 'E' /\n",
                            "eak", "ground = 'E': unknown ground category"),
     "eak_ground_x": ("&spectra periods = 0.1, codes = 'EAK' /\n&eak ground = 'X' /\n",
-                     "eak", "ground = 'X': "),
+                     "eak", "ground = 'X': ground category X calls for a site-specific study"),
     "unknown_annex": (SPEC + "&ec8 zone = 'Z1', national_annex = 'IT' /\n", "ec8",
                       "national_annex = 'IT': unknown national annex"),
     "unknown_fit": (RECS + "&suite t1 = 0.5, fit = 'cubic' /\n" + EC8, "suite",
