@@ -82,8 +82,10 @@ contains
         integer, intent(out) :: n             !! number of periods used
         integer, intent(out) :: stat          !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
         character(len=*), intent(inout), optional :: errmsg  !! message naming the parameter
-        real(dp) :: t_low, t_high, t
-        integer :: i, j, m
+        real(dp) :: t_low, t_high, last, next, t
+        real(dp) :: ext(size(extra))
+        integer :: i, j, k, n_ext
+        logical :: found
         periods = 0.0_dp
         n = 0
         call check_t1(t1, stat, errmsg)
@@ -108,38 +110,58 @@ contains
         end do
         t_low = low_factor*t1
         t_high = high_factor*t1
-        ! T_i = 0.2 T1 10^((i - 1)/(n_points - 1)): the ratio of the ends is exactly 10
-        periods(1) = t_low
-        do i = 2, n_points - 1
-            periods(i) = t_low*10.0_dp**(real(i - 1, dp)/real(n_points - 1, dp))
-        end do
-        periods(n_points) = t_high
-        m = n_points
-        do i = 1, size(extra)
-            if (extra(i) >= t_low .and. extra(i) <= t_high) then
-                m = m + 1
-                periods(m) = extra(i)
-            end if
-        end do
-        ! insertion sort (the grid is short), then drop exact duplicates
-        do i = 2, m
-            t = periods(i)
-            j = i - 1
-            do while (j >= 1)
-                if (periods(j) <= t) exit
-                periods(j + 1) = periods(j)
-                j = j - 1
+        ! the extras inside [t_low, t_high], ascending and without repeats: each step takes
+        ! the least value above the last one taken (at most size(extra) steps)
+        n_ext = 0
+        last = -huge(1.0_dp)
+        do k = 1, size(extra)
+            found = .false.
+            next = huge(1.0_dp)
+            do i = 1, size(extra)
+                if (extra(i) > last .and. extra(i) <= next .and. extra(i) >= t_low &
+                    .and. extra(i) <= t_high) then
+                    next = extra(i)
+                    found = .true.
+                end if
             end do
-            periods(j + 1) = t
+            if (.not. found) exit
+            n_ext = n_ext + 1
+            ext(n_ext) = next
+            last = next
         end do
-        n = 1
-        do i = 2, m
-            if (periods(i) > periods(n)) then
+        ! merged with T_i = 0.2 T1 10^((i - 1)/(n_points - 1)), i = 1 .. n_points, both ends
+        ! exact (doc/record-suites.md section 2); a value equal to the last one is dropped
+        i = 1
+        j = 1
+        do while (i <= n_points .or. j <= n_ext)
+            if (i == 1) then
+                t = t_low
+            else if (i < n_points) then
+                t = t_low*10.0_dp**(real(i - 1, dp)/real(n_points - 1, dp))
+            else
+                t = t_high
+            end if
+            if (i > n_points) then
+                next = ext(j)
+                j = j + 1
+            else if (j > n_ext) then
+                next = t
+                i = i + 1
+            else if (ext(j) < t) then
+                next = ext(j)
+                j = j + 1
+            else
+                next = t
+                i = i + 1
+            end if
+            if (n == 0) then
+                n = 1
+                periods(1) = next
+            else if (next > periods(n)) then
                 n = n + 1
-                periods(n) = periods(i)
+                periods(n) = next
             end if
         end do
-        periods(n + 1:) = 0.0_dp
     end subroutine suite_check_periods
 
     !> EN 1998-1 3.2.3.1.2(4) for a suite of n_rec records on the check grid (doc/record-suites.md).
