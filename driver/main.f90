@@ -3,9 +3,9 @@
 !> Reads &run (analysis, output) and the groups of that analysis, echoes the
 !> effective input, writes the tables and says where they went. Any problem is one
 !> line on stderr naming file, line, group, key and problem, and exit status 2.
-!> Analyses 'newmark', 'sdof', 'cylinder', 'winkler' (a history on records) and 'empirical'
-!> (on records) go on past a record that cannot be read: its rows fail, the tables are
-!> written with all rows, and the exit status is 1.
+!> Analyses 'newmark', 'sdof', 'cylinder', 'winkler' (a history on records), 'empirical'
+!> (on records) and 'spectra' (the record-suite check) go on past a record that cannot be
+!> read: its rows fail, the tables are written with all rows, and the exit status is 1.
 program seispulse_driver
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     use, intrinsic :: iso_c_binding, only: c_int
@@ -24,6 +24,7 @@ program seispulse_driver
     use driver_cylinder, only: run_cylinder, cylinder_groups, cylinder_tables
     use driver_winkler, only: run_winkler, winkler_groups, winkler_tables
     use driver_empirical, only: run_empirical, empirical_groups, empirical_tables
+    use driver_spectra, only: run_spectra, spectra_groups, spectra_tables
     use driver_run_group, only: run_analysis, run_output, read_run, run_keys, write_run, &
                                 run_verbose, check_run_digits
     use driver_echo, only: echo_unit, echo_start, echo_finish, echo_file_path
@@ -42,14 +43,14 @@ program seispulse_driver
     !> error (nothing written, and the tables of an earlier run with this prefix removed).
     integer, parameter :: EXIT_OK = 0, EXIT_ROWS_FAILED = 1, EXIT_INPUT_ERROR = 2
 
-    character(len=10), parameter :: analyses(11) = [character(len=10) :: 'pulse', 'sliding', &
+    character(len=10), parameter :: analyses(12) = [character(len=10) :: 'pulse', 'sliding', &
         'rocking', 'newmark', 'sdof', 'sdof_beta', 'sdof_shock', 'walls', 'cylinder', 'winkler', &
-        'empirical']
+        'empirical', 'spectra']
     !> Every group of any analysis (besides run), for the first check.
-    character(len=12), parameter :: all_groups(22) = [character(len=12) :: 'pulse', 'time', &
+    character(len=12), parameter :: all_groups(26) = [character(len=12) :: 'pulse', 'time', &
         'block', 'method', 'history', 'rocking', 'map', 'records', 'newmark', 'sdof', &
         'sdof_history', 'sdof_beta', 'sdof_shock', 'wall', 'backfill', 'seismic', 'body', &
-        'cylinder', 'roll', 'winkler', 'empirical', 'slope']
+        'cylinder', 'roll', 'winkler', 'empirical', 'slope', 'spectra', 'ec8', 'eak', 'suite']
 
     character(len=:), allocatable :: path, errmsg
     !> the tables any analysis may write: after an input error, those of the prefix are
@@ -57,7 +58,8 @@ program seispulse_driver
     !> next to a missing echo file)
     character(len=32), parameter :: all_tables(*) = [character(len=32) :: pulse_tables, &
         sliding_tables, rocking_tables, newmark_tables, sdof_tables, sdof_beta_tables, &
-        sdof_shock_tables, walls_tables, cylinder_tables, winkler_tables, empirical_tables]
+        sdof_shock_tables, walls_tables, cylinder_tables, winkler_tables, empirical_tables, &
+        spectra_tables]
     character(len=4096) :: arg
     type(nml_group), allocatable :: groups(:)
     integer :: stat, irun, i, j
@@ -142,6 +144,11 @@ program seispulse_driver
         call run_empirical(path, groups, run_output(), stat, errmsg)
         ! the table is written; some rows failed (each already reported)
         if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
+    case ('spectra')
+        call start(spectra_groups)
+        call run_spectra(path, groups, run_output(), stat, errmsg)
+        ! the tables are written; some records failed (each already reported)
+        if (stat == ROWS_FAILED) call fail(errmsg, EXIT_ROWS_FAILED)
     case ('')
         call fail(located(path, groups(irun))//'analysis: missing (allowed: '//join(analyses)//')')
     case default
@@ -182,8 +189,9 @@ contains
         call finish(EXIT_INPUT_ERROR)
     end subroutine fail
 
-    !> The summary of failed rows (`rows`) placed at &records (else at the analysis'
-    !> group, else at &run): "file:line: &group: message"; any other message as it is
+    !> The summary of failed rows (`rows`) placed at &records (else at &suite, whose
+    !> records_from names them, else at the analysis' group, else at &run):
+    !> "file:line: &group: message"; any other message as it is
     !> (every other message is built with its place: located, output_located).
     function with_line(message, rows) result(text)
         character(len=*), intent(in) :: message
@@ -193,6 +201,7 @@ contains
         text = message
         if (.not. (rows .and. allocated(groups))) return
         ig = find_group(groups, 'records')
+        if (ig == 0) ig = find_group(groups, 'suite')
         if (ig == 0) ig = find_group(groups, lower(run_analysis()))
         if (ig == 0) ig = find_group(groups, 'run')
         if (ig > 0) text = located(path, groups(ig))//message

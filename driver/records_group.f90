@@ -1,7 +1,7 @@
 !> The &records group, shared by the analyses that run on accelerogram files
-!> ('newmark', 'sdof'): its keys, defaults, reading, checks and echo, and reading one
-!> record (format, units, time step, polarity, scale or target PGA). One code path, so
-!> that a record means the same in every analysis.
+!> ('newmark', 'sdof', 'spectra', ...): its keys, defaults, reading, checks and echo, and
+!> reading one record (format, units, time step, polarity, scale or target PGA). One code
+!> path, so that a record means the same in every analysis.
 !>
 !> A record that cannot be read or scaled is not an input error: load_record reports
 !> it on stderr at once and returns ok = .false.; the analysis fails that record's
@@ -23,7 +23,8 @@ module driver_records
 
     public :: records_keys, record_in_t, record_out_t, records_defaults, read_records
     public :: check_records, echo_records, load_record, progress, report
-    public :: path_len, short, records_missing, record_line, failed_records
+    public :: path_len, short, records_missing, record_line, failed_records, resolve, &
+              count_strings
 
     character(len=12), parameter :: records_keys(8) = [character(len=12) :: 'files', &
         'format', 'units', 'dt', 'scale', 'target_pga', 'pga_rounding', 'polarity']

@@ -8,7 +8,8 @@ module seispulse
                                 SEISPULSE_INTERNAL, SEISPULSE_IO, SEISPULSE_NO_SOLUTION, status_name
     use seispulse_checks, only: outside, finite_positive, finite_at_least, positive, in_open, &
                                 in_closed
-    use seispulse_format, only: real_str, int_str, g_str, shortest_str, format_reals, NUM_LEN
+    use seispulse_format, only: real_str, int_str, g_str, shortest_str, format_reals, NUM_LEN, &
+                                upper
     use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi2, phi3, sin_pi, &
                                  cos_pi, complex_phis, phi1, phi1_taylor, phi1_from_exp, &
                                  log1p_over_x, sinh_minus_x, x_minus_asinh, x_minus_sin, pi

@@ -32,8 +32,8 @@ program tester
     use test_walls_vy, only: collect_walls_vy
     use test_walls_one_term, only: collect_walls_one_term
     use test_codes, only: collect_codes
-    use test_eak2000, only: collect_eak2000
     use test_record_suite, only: collect_record_suite
+    use test_eak2000, only: collect_eak2000
     use test_empirical, only: collect_empirical
     use test_optional_args, only: collect_optional_args
     implicit none
@@ -162,13 +162,13 @@ program tester
         call collect_codes(tests)
         call run_suite('codes', tests, output_unit, npass, nfail)
     end if
-    if (selected('eak2000')) then
-        call collect_eak2000(tests)
-        call run_suite('eak2000', tests, output_unit, npass, nfail)
-    end if
     if (selected('record_suite')) then
         call collect_record_suite(tests)
         call run_suite('record_suite', tests, output_unit, npass, nfail)
+    end if
+    if (selected('eak2000')) then
+        call collect_eak2000(tests)
+        call run_suite('eak2000', tests, output_unit, npass, nfail)
     end if
     if (selected('empirical')) then
         call collect_empirical(tests)

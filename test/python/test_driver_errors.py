@@ -59,6 +59,9 @@ CASES = {
                 "winkler", "b"),
     "empirical": ("&run analysis='empirical', output='o' /\n&empirical ky=-0.1 /\n",
                   "empirical", "ky"),
+    "spectra": ("&run analysis='spectra', output='o' /\n"
+                "&records files='records/quake_a.AT2', 'records/quake_b.csv' /\n"
+                "&suite t1=-1, min_records=2 /\n&ec8 ag=0.2 /\n", "suite", "t1"),
     "run_key": ("&run analysis='pulse', output='o', foo=1 /\n", "run", "foo"),
     "bad_value": ("&run analysis='pulse', output='o' /\n&pulse kind='half_sine', amp='x' /\n",
                   "pulse", "amp"),

@@ -101,6 +101,14 @@ times by the real root in the step of the cubic cumulative integral (polyroots);
 DFT summed directly at k/(N dt), N the power of two >= max(n, 1/(0.05 dt)); Sa from the
 oscillator pieces of analysis 'sdof' below (true peaks, damping 0.05), (2 pi/T)^2 SD/g.
 
+Analysis 'spectra' (never by running the driver): the EN 1998-1 elastic and design
+spectra (3.2)-(3.6), (3.13)-(3.16) with Tables 3.2 and 3.3 and the Greek National Annex
+zones, and EAK 2000 (K.1)-(K.6), written out here in mpmath; with &suite the check of
+EN 1998-1 3.2.3.1.2(4): the grid in double as the driver builds it, the 5 % PSA of each
+record from the oscillator pieces of analysis 'sdof' (true peaks), the mean, (M.1) and
+(M.2)/(M.3): <case>.ref (the mean table; the spectra table when &spectra is given, then
+the mean in <case>.mean.ref) and <case>.summary.ref (the one-row summary).
+
 Analysis 'newmark' with method 'decoupled' or 'coupled' (a flexible sliding mass, &slope;
 doc/flexible.md), per ky (or yield table) and polarity:
   * rule 'slammer': SLAMMER 1.1's Decoupled and Coupled as transcribed in plain Python by
@@ -2251,6 +2259,186 @@ def make_winkler_ref(nml_path, nml):
     print(f"wrote {out} ({len(lines) - 1} rows)")
 
 
+# ---------------------------------------------------------------------------
+# Analysis 'spectra' (never by running the driver): the code spectra written out here
+# in mpmath from EN 1998-1 3.2.2.2 (3.2)-(3.6) and 3.2.2.5 (3.13)-(3.16) with Tables 3.2
+# and 3.3 (recommended values) and the zones of the Greek National Annex, and from
+# EAK 2000 (K.1)-(K.6) as doc/eak2000.md gives them (secondary sources); and the
+# record-suite check of EN 1998-1 3.2.3.1.2(4) (doc/record-suites.md (M.1), (M.2)) on
+# the 5 % PSA of the records from the oscillator pieces of analysis 'sdof' above.
+# ---------------------------------------------------------------------------
+
+# EN 1998-1 Table 3.2 (type 1) and 3.3 (type 2): S, TB, TC, TD (s)
+EC8_TABLE = {1: dict(a=("1.0", "0.15", "0.4", "2.0"), b=("1.2", "0.15", "0.5", "2.0"),
+                     c=("1.15", "0.2", "0.6", "2.0"), d=("1.35", "0.2", "0.8", "2.0"),
+                     e=("1.4", "0.15", "0.5", "2.0")),
+             2: dict(a=("1.0", "0.05", "0.25", "1.2"), b=("1.35", "0.05", "0.25", "1.2"),
+                     c=("1.5", "0.1", "0.25", "1.2"), d=("1.8", "0.1", "0.3", "1.2"),
+                     e=("1.6", "0.05", "0.25", "1.2"))}
+GR_ZONES = {"z1": "0.16", "z2": "0.24", "z3": "0.36"}
+EAK_T = {"a": ("0.10", "0.40"), "b": ("0.15", "0.60"), "c": ("0.20", "0.80"),
+         "d": ("0.20", "1.20")}
+EAK_ZONES = {"2003": {"z1": "0.16", "z2": "0.24", "z3": "0.36"},
+             "2000": {"i": "0.12", "ii": "0.16", "iii": "0.24", "iv": "0.36"}}
+EAK_CLASSES = {"i": "0.85", "ii": "1.00", "iii": "1.15", "iv": "1.30"}
+
+
+def dec(x):
+    """A number of the input as the decimal it was written as."""
+    return mpf(repr(float(x)) if isinstance(x, float) else str(x))
+
+
+def ec8_params(c):
+    """(ag, ground, xi percent, q, beta) of &ec8."""
+    if "zone" in c:
+        ag = dec(c.get("importance", 1.0)) * mpf(GR_ZONES[c["zone"].lower()])
+    else:
+        ag = dec(c["ag"])
+    return (ag, c.get("ground", "A").lower(), 100 * dec(c.get("damping", 0.05)),
+            dec(c.get("q", 1.5)), dec(c.get("beta", 0.2)))
+
+
+def ec8_value(t, stype, c, elastic, xi=None):
+    ag, ground, xi_in, q, beta = ec8_params(c)
+    s, tb, tc, td = (mpf(x) for x in EC8_TABLE[stype][ground])
+    t = mpf(t)
+    if elastic:
+        eta = max(mp.sqrt(10 / (5 + (xi_in if xi is None else xi))), mpf("0.55"))  # (3.6)
+        top = ag * s * eta * mpf("2.5")
+        if t <= tb:
+            return ag * s * (1 + t / tb * (eta * mpf("2.5") - 1))                    # (3.2)
+        return top if t <= tc else top * tc / t if t <= td else top * tc * td / t**2
+    top = ag * s * mpf("2.5") / q
+    if t <= tb:
+        return ag * s * (mpf(2) / 3 + t / tb * (mpf("2.5") / q - mpf(2) / 3))          # (3.13)
+    if t <= tc:
+        return top
+    return max(top * tc / t if t <= td else top * tc * td / t**2, beta * ag)
+
+
+def eak_value(t, k, elastic, xi=None):
+    """Phi_e or Phi_d of &eak (g)."""
+    if "alpha" in k:
+        a = dec(k["alpha"])
+    else:
+        zmap = str(k.get("zone_map", "2003"))
+        a = mpf(EAK_ZONES[zmap][str(k.get("zone", "Z2" if zmap == "2003" else "II")).lower()])
+    gi = mpf(EAK_CLASSES[k["importance_class"].lower()]) if "importance_class" in k \
+        else dec(k.get("importance", 1.0))
+    t1, t2 = (mpf(x) for x in EAK_T[k.get("ground", "B").lower()])
+    xi = 100 * dec(k.get("damping", 0.05)) if xi is None else xi
+    eta = max(mp.sqrt(7 / (2 + xi)), dec(k.get("eta_min", 0.0)))                      # (K.4)
+    if elastic:                                                                          # (K.6)
+        q, theta, floor = mpf(1), mpf(1), mpf(0)
+        expo = dec(k["elastic_exponent"]) if "elastic_exponent" in k else mpf(2) / 3
+    else:
+        q, theta = dec(k.get("q", 1.0)), dec(k.get("theta", 1.0))
+        floor, expo = dec(k.get("lower_bound", 0.0)), mpf(2) / 3
+    aa = gi * a
+    t = mpf(t)
+    if t <= t1:
+        v = aa * (1 + t / t1 * (eta * theta * mpf("2.5") / q - 1))                       # (K.1)
+    elif t <= t2:
+        v = aa * eta * theta * mpf("2.5") / q                                            # (K.2)
+    else:
+        v = aa * eta * theta * mpf("2.5") / q * (t2 / t)**expo                          # (K.3)
+    return max(v, floor * aa)                                                            # (K.5)
+
+
+def code_value(code, t, nml, elastic, xi=None):
+    if code == "eak":
+        return eak_value(t, nml["eak"], elastic, xi)
+    return ec8_value(t, int(code[-1]), nml["ec8"], elastic, xi)
+
+
+def spectra_rows(nml):
+    sp = nml["spectra"]
+    periods = axis_grid(sp, "periods", "period")
+    names = [c.lower() for c in _as_list(sp.get("codes", ["EC8_1", "EC8_2", "EAK"]))]
+    kinds = {"elastic": ("elastic",), "design": ("design",),
+             "both": ("elastic", "design")}[sp.get("kind", "both").lower()]
+    cols = [(c, k) for c in names for k in kinds]
+    header = "period (s)," + ",".join(f"{c}_{k} (g)" for c, k in cols)
+    rows = [[mpf(t)] + [code_value(c, t, nml, k == "elastic") for c, k in cols]
+            for t in periods]
+    return header, rows
+
+
+def suite_tables(nml_path, nml):
+    """(mean table header, rows), (summary header, row) of the check."""
+    su = nml["suite"]
+    t1 = float(su["t1"])
+    n = int(su.get("n_points", 50))
+    target = su.get("target", "EC8_1").lower()
+    lo, hi = 0.2 * t1, 2.0 * t1
+    grid = [lo] + [lo * 10.0 ** ((i - 1) / (n - 1)) for i in range(2, n)] + [hi]
+    if target == "eak":
+        corners = [float(x) for x in EAK_T[nml["eak"].get("ground", "B").lower()]]
+    else:
+        ground = nml["ec8"].get("ground", "A").lower()
+        corners = [float(x) for x in EC8_TABLE[int(target[-1])][ground][1:]]
+    extra = [t1] + corners + (axis_grid(nml["spectra"], "periods", "period")
+                              if "spectra" in nml else [])
+    grid = sorted(set(grid + [x for x in extra if lo <= x <= hi]))
+    five = mpf(5)
+    tgt = [code_value(target, t, nml, True, five) for t in grid]
+    tgt0 = code_value(target, 0.0, nml, True, five)
+    psa, pga = [], []
+    for name, acc, dt, p in sdof_records(nml_path, nml["records"]):
+        row = []
+        for t in grid:
+            (sd, _, _), _ = sdof_record_response(acc, dt, t, mpf("0.05"), G_STANDARD, True)
+            row.append((2 * mp.pi / mpf(t))**2 * sd / G_STANDARD)
+        psa.append(row)
+        pga.append(p)
+    nr = len(psa)
+    mean = [sum(r[i] for r in psa) / nr for i in range(len(grid))]
+    ratio = [m / x for m, x in zip(mean, tgt)]
+    pga_mean = sum(pga) / nr
+    common = max([tgt0 / pga_mean] + [mpf("0.9") * x / m for m, x in zip(mean, tgt)])   # (M.1)
+    if su.get("fit", "linear").lower() == "linear":
+        own = [sum(a * x for a, x in zip(r, tgt)) / sum(a * a for a in r) for r in psa]  # (M.2)
+    else:
+        own = [mp.exp(sum(mp.log(x) - mp.log(a) for a, x in zip(r, tgt)) / len(grid))
+               for r in psa]                                                            # (M.3)
+    own_mean = [sum(s * r[i] for s, r in zip(own, psa)) / nr for i in range(len(grid))]
+    header = ("period (s),target (g),target_90 (g),mean (g),ratio (-),mean_common (g),"
+              "mean_own (g)")
+    rows = [[mpf(t), x, mpf("0.9") * x, m, m / x, common * m, o]
+            for t, x, m, o in zip(grid, tgt, mean, own_mean)]
+    imin = min(range(len(grid)), key=lambda i: ratio[i])
+    own_ratio = [o / x for o, x in zip(own_mean, tgt)]
+    own_pga = sum(s * p for s, p in zip(own, pga)) / nr / tgt0
+    word = lambda ok: "pass" if ok else "fail"
+    pga_ok, spec_ok = pga_mean >= tgt0, min(ratio) >= mpf("0.9")
+    own_ok = nr >= 3 and own_pga >= 1 and min(own_ratio) >= mpf("0.9")
+    summary = ("n_records (-),t1 (s),t_low (s),t_high (s),pga_mean (g),pga_target (g),"
+               "pga_ratio (-),pga_check (-),min_ratio (-),t_min_ratio (s),"
+               "spectrum_check (-),count_check (-),mean_allowed (-),check (-),"
+               "common_scale (-),own_pga_ratio (-),own_min_ratio (-),own_check (-),status (-)")
+    srow = [mpf(nr), mpf(t1), mpf(lo), mpf(hi), pga_mean, tgt0, pga_mean / tgt0,
+            word(pga_ok), min(ratio), mpf(grid[imin]), word(spec_ok), word(nr >= 3),
+            "yes" if nr >= 7 else "no", word(nr >= 3 and pga_ok and spec_ok), common,
+            own_pga, min(own_ratio), word(own_ok), "ok"]
+    return (header, rows), (summary, [srow])
+
+
+def make_spectra_ref(nml_path, nml):
+    tables = []
+    with mp.workdps(40):
+        if "spectra" in nml:
+            tables.append((".ref", spectra_rows(nml)))
+        if "suite" in nml:
+            mean, summary = suite_tables(nml_path, nml)
+            tables += [(".ref" if "spectra" not in nml else ".mean.ref", mean),
+                       (".summary.ref", summary)]
+        for suffix, (header, rows) in tables:
+            lines = [header] + [",".join(csv_cell(x) for x in row) for row in rows]
+            out = Path(nml_path).with_suffix(suffix)
+            out.write_text("\n".join(lines) + "\n")
+            print(f"wrote {out} ({len(lines) - 1} rows)")
+
+
 def make_ref(nml_path):
     nml = parse_namelist(Path(nml_path).read_text())
     analysis = nml.get("run", {}).get("analysis", "pulse").lower()
@@ -2277,6 +2465,9 @@ def make_ref(nml_path):
         return
     if analysis == "empirical":
         make_empirical_ref(nml_path, nml)
+        return
+    if analysis == "spectra":
+        make_spectra_ref(nml_path, nml)
         return
     func, g = pulse_function(nml["pulse"])
     lines = [HEADER]

@@ -1,0 +1,1512 @@
+!> Analysis 'spectra': code spectra side by side (EN 1998-1 types 1 and 2, with a_g given
+!> or from a zone of the Greek National Annex; EAK 2000), and the check of a suite of
+!> records against a code's elastic spectrum (EN 1998-1 3.2.3.1.2(4), doc/record-suites.md).
+!>
+!> Groups: &spectra (the period grid, as in &sdof, the codes and the kind of spectrum),
+!> &ec8 and &eak (the parameters of each code, needed only when `codes` or the target
+!> names them), &records (the shared group, driver_records) and &suite (the check: T1,
+!> the target, the grid, the fit; `records_from` reads the &records group of another
+!> input file). Tables <output>_spectra (with &spectra), and with &suite:
+!> <output>_suite (one-row summary), <output>_suite_records, <output>_suite_mean,
+!> <output>_suite_spectra. Everything is checked before any record is read; records are
+!> read one at a time and only their 5 % PSA on the check grid is kept. A record that
+!> cannot be read or analysed fails its rows (status failed; reported on stderr) and the
+!> check is made on the others if at least min_records remain (else the summary holds
+!> NaN, status failed); run_spectra then returns ROWS_FAILED (exit status 1). The numbers
+!> come from seispulse_codes, seispulse_eak2000, seispulse_record_suite and
+!> seispulse_sdof_sim; the driver only reads, checks and writes.
+module driver_spectra
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+    use seispulse, only: dp, shortest_str, SEISPULSE_SUCCESS, int_str, outside, upper, &
+                         STANDARD_GRAVITY, sdof_spectrum, pseudo_spectra, SDOF_PEAKS_EXACT, &
+                         ec8_elastic_spectrum, ec8_design_spectrum, ec8_ground_parameters, &
+                         ec8_damping_correction, EC8_SPECTRUM_TYPE_1, EC8_SPECTRUM_TYPE_2, &
+                         ec8_reference_pga, EC8_ANNEX_GR, &
+                         eak2000_ground_parameters, eak2000_zone_acceleration, &
+                         eak2000_importance_factor, eak2000_damping_correction, &
+                         eak2000_design_spectrum, eak2000_elastic_spectrum, EAK_GROUND_A, &
+                         EAK_GROUND_X, EAK_MAP_2003, EAK_MAP_2000, EAK_BETA0, &
+                         suite_check_t, suite_check_periods, ec8_suite_check, &
+                         SUITE_FIT_LINEAR, SUITE_FIT_LOG
+    use driver_namelist_scan, only: nml_group, scan_file
+    use driver_input, only: find_group, check_keys, read_group, located, join, &
+                            read_optional, given, list_item, name_index, ROWS_FAILED, &
+                            missing_group, output_located
+    use driver_tables, only: write_tables, delete_files, say_written, category_kind, &
+                             status_names
+    use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
+                              read_records, check_records, echo_records, load_record, report, &
+                              records_missing, record_line, failed_records, resolve, &
+                              count_strings
+    use driver_sdof_common, only: max_periods
+    use driver_axis, only: axis_values
+    use driver_echo, only: echo_unit, echo_path
+    implicit none
+    private
+
+    public :: run_spectra, spectra_groups, spectra_tables
+
+    !> Groups this analysis reads (besides &run).
+    character(len=8), parameter :: spectra_groups(5) = [character(len=8) :: 'spectra', 'ec8', &
+        'eak', 'records', 'suite']
+
+    !> Tables this analysis may write (removed with the echo file after an input error).
+    character(len=13), parameter :: spectra_tables(5) = [character(len=13) :: 'spectra', &
+        'suite', 'suite_records', 'suite_mean', 'suite_spectra']
+
+    character(len=12), parameter :: spectra_keys(6) = [character(len=12) :: 'periods', &
+        'period_range', 'period_count', 'spacing', 'codes', 'kind']
+    character(len=14), parameter :: ec8_keys(8) = [character(len=14) :: 'ag', 'zone', &
+        'national_annex', 'importance', 'ground', 'damping', 'q', 'beta']
+    character(len=16), parameter :: eak_keys(12) = [character(len=16) :: 'zone', 'alpha', &
+        'zone_map', 'ground', 'importance', 'importance_class', 'q', 'theta', 'damping', &
+        'eta_min', 'lower_bound', 'elastic_exponent']
+    character(len=12), parameter :: suite_keys(6) = [character(len=12) :: 't1', 'target', &
+        'n_points', 'fit', 'min_records', 'records_from']
+
+    !> The codes (names as written, lower case), their column stems and titles.
+    integer, parameter :: CODE_EC8_1 = 1, CODE_EC8_2 = 2, CODE_EAK = 3
+    character(len=5), parameter :: code_names(3) = [character(len=5) :: 'ec8_1', 'ec8_2', 'eak']
+    character(len=7), parameter :: kind_names(3) = [character(len=7) :: 'elastic', 'design', &
+        'both']
+    character(len=6), parameter :: fit_names(2) = [character(len=6) :: 'linear', 'log']
+    character(len=1), parameter :: ec8_grounds(5) = ['a', 'b', 'c', 'd', 'e']
+    !> EAK ground names: A..D, and X (refused by the library with its reason).
+    character(len=1), parameter :: eak_grounds(5) = ['a', 'b', 'c', 'd', 'x']
+    character(len=2), parameter :: ec8_zones(3) = [character(len=2) :: 'z1', 'z2', 'z3']
+    character(len=3), parameter :: eak_zones_2000(4) = [character(len=3) :: 'i', 'ii', 'iii', &
+        'iv']
+    character(len=4), parameter :: map_names(2) = [character(len=4) :: '2003', '2000']
+    character(len=3), parameter :: class_names(4) = [character(len=3) :: 'i', 'ii', 'iii', 'iv']
+    character(len=2), parameter :: annex_names(1) = [character(len=2) :: 'gr']
+    !> Names of the pass/fail and no/yes category columns.
+    character(len=4), parameter :: check_names(0:1) = [character(len=4) :: 'fail', 'pass']
+    character(len=3), parameter :: yes_names(0:1) = [character(len=3) :: 'no', 'yes']
+
+    !> Most codes in `codes` (each once: 3), with room to find one given twice.
+    integer, parameter :: max_codes = 10
+    !> The largest double (no upper bound).
+    real(dp), parameter :: big = huge(1.0_dp)
+    !> Damping ratio of the spectra of the records and of the target (the check, 5 %).
+    real(dp), parameter :: check_damping = 0.05_dp
+
+    ! namelist variables (defaults are set in set_defaults); &ec8 and &eak share key
+    ! names: local namelists in their readers read them into c_*, k_*
+    real(dp) :: periods(max_periods), period_range(2)
+    integer :: period_count
+    character(len=32) :: spacing, codes(max_codes), kind
+    namelist /spectra/ periods, period_range, period_count, spacing, codes, kind
+    real(dp) :: c_ag, c_importance, c_damping, c_q, c_beta
+    character(len=32) :: c_zone, c_annex, c_ground
+    real(dp) :: k_alpha, k_importance, k_q, k_theta, k_damping, k_eta_min, k_lower_bound, &
+                k_exponent
+    character(len=32) :: k_zone, k_zone_map, k_ground, k_class
+    real(dp) :: t1
+    integer :: n_points, min_records
+    character(len=32) :: target, fit
+    character(len=1024) :: records_from
+    namelist /suite/ t1, target, n_points, fit, min_records, records_from
+
+    !> EN 1998-1 parameters (&ec8).
+    type :: ec8_t
+        real(dp) :: ag = 0.0_dp             !! design ground acceleration gamma_I a_gR (g)
+        integer :: zone = 0                 !! Greek NA zone 1..3, 0: ag given
+        real(dp) :: agr = 0.0_dp            !! a_gR of the zone (g)
+        real(dp) :: importance = 1.0_dp     !! gamma_I (with a zone)
+        integer :: ground = 1               !! EC8_GROUND_A .. E
+        real(dp) :: damping = 0.05_dp       !! ratio (elastic spectra)
+        real(dp) :: q = 1.5_dp, beta = 0.2_dp
+    end type ec8_t
+
+    !> EAK 2000 parameters (&eak).
+    type :: eak_t
+        real(dp) :: alpha = 0.0_dp          !! A/g
+        integer :: zone = 0                 !! zone of zone_map, 0: alpha given
+        integer :: zone_map = EAK_MAP_2003
+        integer :: ground = 2               !! EAK_GROUND_A .. D
+        real(dp) :: importance = 1.0_dp     !! gamma_I
+        integer :: importance_class = 0     !! 1..4 when given as a category
+        real(dp) :: q = 1.0_dp, theta = 1.0_dp, damping = 0.05_dp, eta_min = 0.0_dp, &
+                    lower_bound = 0.0_dp, exponent = 2.0_dp / 3.0_dp
+    end type eak_t
+
+    !> The validated input.
+    type :: config_t
+        logical :: table = .false.                  !! &spectra given: the spectra table
+        real(dp), allocatable :: periods(:)         !! its periods (s)
+        character(len=:), allocatable :: grid       !! how they were given
+        integer, allocatable :: codes(:)            !! CODE_* in the order given
+        integer :: kind = 3                         !! 1 elastic, 2 design, 3 both
+        logical :: use_ec8 = .false., use_eak = .false.
+        type(ec8_t) :: ec8
+        type(eak_t) :: eak
+        logical :: suite = .false.                  !! &suite given: the check
+        real(dp) :: t1 = 0.0_dp                     !! s
+        integer :: target = CODE_EC8_1
+        integer :: n_points = 50
+        integer :: fit = SUITE_FIT_LINEAR
+        integer :: min_records = 3
+        character(len=:), allocatable :: records_from   !! the other input, as opened ('' none)
+        character(len=:), allocatable :: rec_path   !! the file that holds &records
+        type(nml_group) :: gr                       !! that &records group
+        type(record_in_t), allocatable :: recs(:)
+        logical :: slammer_rounding = .false.
+    end type config_t
+
+    !> The check's results.
+    type :: suite_res_t
+        real(dp), allocatable :: grid(:)            !! check periods (s)
+        real(dp), allocatable :: target(:)          !! target elastic 5 % spectrum there (g)
+        real(dp) :: target_pga = 0.0_dp             !! the target at T = 0 (g)
+        real(dp), allocatable :: psa(:, :)          !! (period, record) 5 % PSA (g)
+        real(dp), allocatable :: pga(:)             !! per record (g)
+        real(dp), allocatable :: own_scale(:)       !! per record
+        real(dp), allocatable :: mean(:)            !! mean PSA of the records read (g)
+        real(dp), allocatable :: ratio(:)           !! mean/target (-)
+        real(dp), allocatable :: own_mean(:)        !! mean PSA of the records, own scales (g)
+        integer :: i_t1 = 0                         !! index of T1 in grid
+        logical :: done = .false.                   !! the check was made
+        character(len=:), allocatable :: why        !! why not
+        type(suite_check_t) :: check
+    end type suite_res_t
+
+contains
+
+    subroutine set_defaults()
+        real(dp) :: nan
+        nan = ieee_value(nan, ieee_quiet_nan)
+        call records_defaults()
+        periods = nan
+        period_range = nan
+        period_count = 0
+        spacing = 'linear'
+        codes = ''
+        kind = 'both'
+        c_ag = nan
+        c_zone = ''
+        c_annex = ''
+        c_importance = 1.0_dp
+        c_ground = 'A'
+        c_damping = 0.05_dp
+        c_q = 1.5_dp
+        c_beta = 0.2_dp
+        k_zone = ''
+        k_alpha = nan
+        k_zone_map = '2003'
+        k_ground = 'B'
+        k_importance = 1.0_dp
+        k_class = ''
+        k_q = 1.0_dp
+        k_theta = 1.0_dp
+        k_damping = 0.05_dp
+        k_eta_min = 0.0_dp
+        k_lower_bound = 0.0_dp
+        k_exponent = 2.0_dp / 3.0_dp
+        t1 = nan
+        target = 'EC8_1'
+        n_points = 50
+        fit = 'linear'
+        min_records = 3
+        records_from = ''
+    end subroutine set_defaults
+
+    subroutine read_spectra(unit, text, ios, iomsg)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: text
+        integer, intent(out) :: ios
+        character(len=*), intent(inout) :: iomsg
+        if (len(text) > 0) then
+            read(text, nml=spectra, iostat=ios, iomsg=iomsg)
+        else
+            read(unit, nml=spectra, iostat=ios, iomsg=iomsg)
+        end if
+    end subroutine read_spectra
+
+    subroutine read_ec8(unit, text, ios, iomsg)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: text
+        integer, intent(out) :: ios
+        character(len=*), intent(inout) :: iomsg
+        real(dp) :: ag, importance, damping, q, beta
+        character(len=32) :: zone, national_annex, ground
+        namelist /ec8/ ag, zone, national_annex, importance, ground, damping, q, beta
+        ag = c_ag
+        zone = c_zone
+        national_annex = c_annex
+        importance = c_importance
+        ground = c_ground
+        damping = c_damping
+        q = c_q
+        beta = c_beta
+        if (len(text) > 0) then
+            read(text, nml=ec8, iostat=ios, iomsg=iomsg)
+        else
+            read(unit, nml=ec8, iostat=ios, iomsg=iomsg)
+        end if
+        if (ios /= 0) return
+        c_ag = ag
+        c_zone = zone
+        c_annex = national_annex
+        c_importance = importance
+        c_ground = ground
+        c_damping = damping
+        c_q = q
+        c_beta = beta
+    end subroutine read_ec8
+
+    subroutine read_eak(unit, text, ios, iomsg)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: text
+        integer, intent(out) :: ios
+        character(len=*), intent(inout) :: iomsg
+        real(dp) :: alpha, importance, q, theta, damping, eta_min, lower_bound, &
+                    elastic_exponent
+        character(len=32) :: zone, zone_map, ground, importance_class
+        namelist /eak/ zone, alpha, zone_map, ground, importance, importance_class, q, theta, &
+            damping, eta_min, lower_bound, elastic_exponent
+        zone = k_zone
+        alpha = k_alpha
+        zone_map = k_zone_map
+        ground = k_ground
+        importance = k_importance
+        importance_class = k_class
+        q = k_q
+        theta = k_theta
+        damping = k_damping
+        eta_min = k_eta_min
+        lower_bound = k_lower_bound
+        elastic_exponent = k_exponent
+        if (len(text) > 0) then
+            read(text, nml=eak, iostat=ios, iomsg=iomsg)
+        else
+            read(unit, nml=eak, iostat=ios, iomsg=iomsg)
+        end if
+        if (ios /= 0) return
+        k_zone = zone
+        k_alpha = alpha
+        k_zone_map = zone_map
+        k_ground = ground
+        k_importance = importance
+        k_class = importance_class
+        k_q = q
+        k_theta = theta
+        k_damping = damping
+        k_eta_min = eta_min
+        k_lower_bound = lower_bound
+        k_exponent = elastic_exponent
+    end subroutine read_eak
+
+    subroutine read_suite(unit, text, ios, iomsg)
+        integer, intent(in) :: unit
+        character(len=*), intent(in) :: text
+        integer, intent(out) :: ios
+        character(len=*), intent(inout) :: iomsg
+        if (len(text) > 0) then
+            read(text, nml=suite, iostat=ios, iomsg=iomsg)
+        else
+            read(unit, nml=suite, iostat=ios, iomsg=iomsg)
+        end if
+    end subroutine read_suite
+
+    !> Read and check the groups, compute every table, write them; print where they
+    !> went. stat: 0, ROWS_FAILED (tables written, errmsg says which records failed), or
+    !> > 0 for an input or output error (nothing written).
+    subroutine run_spectra(path, groups, prefix, stat, errmsg)
+        character(len=*), intent(in) :: path              !! input file (for messages)
+        type(nml_group), intent(in) :: groups(:)          !! scanned groups
+        character(len=*), intent(in) :: prefix            !! output prefix
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        type(nml_group) :: gs, gc, gk, gu, gr
+        type(config_t) :: cfg
+        type(record_out_t), allocatable :: outs(:)
+        type(suite_res_t) :: res
+        real(dp), allocatable :: table(:, :)
+        character(len=512) :: files(2, 5)
+        integer :: nfailed, k, nwritten
+        logical :: have(5)
+
+        call set_defaults()
+        call read_optional(path, groups, 'spectra', spectra_keys, read_spectra, gs, stat, &
+                           errmsg)
+        if (stat /= 0) return
+        call read_optional(path, groups, 'ec8', ec8_keys, read_ec8, gc, stat, errmsg)
+        if (stat /= 0) return
+        call read_optional(path, groups, 'eak', eak_keys, read_eak, gk, stat, errmsg)
+        if (stat /= 0) return
+        call read_optional(path, groups, 'suite', suite_keys, read_suite, gu, stat, errmsg)
+        if (stat /= 0) return
+        call read_optional(path, groups, 'records', records_keys, read_records, gr, stat, &
+                           errmsg)
+        if (stat /= 0) return
+        stat = 1
+        cfg%table = find_group(groups, 'spectra') > 0
+        cfg%suite = find_group(groups, 'suite') > 0
+        if (.not. (cfg%table .or. cfg%suite)) then
+            errmsg = missing_group(path, 'spectra')//' (it gives the periods and the codes ' &
+                     //'of the spectra; or &suite with &records for the check of a suite ' &
+                     //'of records)'
+            return
+        end if
+        if (find_group(groups, 'records') > 0 .and. .not. cfg%suite) then
+            errmsg = located(path, gr)//'only with &suite (the check of the records ' &
+                     //'against a code spectrum: give &suite t1 = ...)'
+            return
+        end if
+
+        call check_spectra(path, gs, cfg, errmsg)
+        if (len(errmsg) > 0) return
+        if (cfg%suite) then
+            call check_suite(path, gu, gr, cfg, errmsg)
+            if (len(errmsg) > 0) return
+        end if
+        cfg%use_ec8 = any(cfg%codes == CODE_EC8_1 .or. cfg%codes == CODE_EC8_2)
+        cfg%use_eak = any(cfg%codes == CODE_EAK)
+        if (cfg%suite) then
+            cfg%use_ec8 = cfg%use_ec8 .or. cfg%target /= CODE_EAK
+            cfg%use_eak = cfg%use_eak .or. cfg%target == CODE_EAK
+        end if
+        if (cfg%use_ec8) then
+            if (find_group(groups, 'ec8') == 0) then
+                errmsg = missing_group(path, 'ec8')//' (the EN 1998-1 spectra need it: ag = ' &
+                         //'the design ground acceleration (g), or zone = ''Z1''..''Z3'', ' &
+                         //'and ground)'
+                return
+            end if
+            call check_ec8(path, gc, cfg%ec8, errmsg)
+            if (len(errmsg) > 0) return
+        else if (find_group(groups, 'ec8') > 0) then
+            errmsg = located(path, gc)//'not used (codes names no EN 1998-1 spectrum, and ' &
+                     //'no &suite target is one)'
+            return
+        end if
+        if (cfg%use_eak) then
+            if (find_group(groups, 'eak') == 0) then
+                errmsg = missing_group(path, 'eak')//' (the EAK 2000 spectra need it: zone ' &
+                         //'or alpha, ground, ...)'
+                return
+            end if
+            call check_eak(path, gk, cfg%eak, errmsg)
+            if (len(errmsg) > 0) return
+        else if (find_group(groups, 'eak') > 0) then
+            errmsg = located(path, gk)//'not used (codes names no EAK spectrum, and the ' &
+                     //'&suite target is not EAK)'
+            return
+        end if
+
+        ! --- the code spectra (every one is computed before anything is written; a
+        ! library refusal is an input error placed at the code's group)
+        if (cfg%table) then
+            call spectra_table(path, gc, gk, cfg, table, errmsg)
+            if (len(errmsg) > 0) return
+        end if
+        if (cfg%suite) then
+            call suite_grid(path, gc, gk, gu, cfg, res, errmsg)
+            if (len(errmsg) > 0) return
+        end if
+
+        ! --- echo the effective input
+        if (cfg%table) call echo_spectra(cfg)
+        if (find_group(groups, 'ec8') > 0) call echo_ec8(cfg%ec8)
+        if (find_group(groups, 'eak') > 0) call echo_eak(cfg%eak)
+        if (cfg%suite) then
+            call echo_suite(cfg)
+            if (len(cfg%records_from) == 0) call echo_records(cfg%recs, cfg%slammer_rounding)
+        end if
+
+        ! --- the records, one at a time, and the check
+        nfailed = 0
+        if (cfg%suite) then
+            call compute_suite(cfg, outs, res)
+            nfailed = count(.not. outs%ok)
+        end if
+
+        ! --- write
+        have = [cfg%table, cfg%suite, cfg%suite, cfg%suite, cfg%suite]
+        nwritten = 0
+        do k = 1, 5
+            if (.not. have(k)) cycle
+            select case (k)
+            case (1)
+                call write_spectra(path, prefix, cfg, table, files(:, k), stat, errmsg)
+            case (2)
+                call write_summary(path, prefix, cfg, outs, res, files(:, k), stat, errmsg)
+            case (3)
+                call write_records(path, prefix, cfg, outs, res, files(:, k), stat, errmsg)
+            case (4)
+                call write_mean(path, prefix, cfg, outs, res, files(:, k), stat, errmsg)
+            case (5)
+                call write_long(path, prefix, cfg, outs, res, files(:, k), stat, errmsg)
+            end select
+            if (stat /= 0) then
+                do nwritten = 1, k - 1
+                    if (have(nwritten)) call delete_files(files(:, nwritten))
+                end do
+                stat = 1
+                errmsg = output_located(path)//errmsg
+                return
+            end if
+        end do
+        if (cfg%table) call say_written('code spectra', files(:, 1))
+        if (cfg%suite) then
+            call say_written('record-suite check', files(:, 2))
+            call say_written('suite records', files(:, 3))
+            call say_written('suite mean spectrum', files(:, 4))
+            call say_written('suite spectra', files(:, 5))
+        end if
+        stat = 0
+        if (nfailed > 0) then
+            stat = ROWS_FAILED
+            errmsg = int_str(nfailed)//' of '//int_str(size(outs))//' records failed (' &
+                     //failed_records(outs, .not. outs%ok)//'): their rows hold NaN and ' &
+                     //'status failed'
+            if (.not. res%done) errmsg = errmsg//'; '//res%why
+        end if
+    end subroutine run_spectra
+
+    ! ------------------------------------------------------------------------------
+    ! Checks
+    ! ------------------------------------------------------------------------------
+
+    !> &spectra: the periods, the codes and the kind (defaults without the group: no
+    !> table; codes and kind then unused).
+    subroutine check_spectra(path, gs, cfg, errmsg)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gs
+        type(config_t), intent(inout) :: cfg
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=:), allocatable :: where
+        integer :: i, j, n, code
+
+        where = located(path, gs)
+        errmsg = ''
+        allocate(cfg%codes(0))
+        if (.not. cfg%table) then
+            allocate(cfg%periods(0))
+            cfg%grid = ''
+            return
+        end if
+        call axis_values(gs, 'periods', 'period', periods, period_range, period_count, &
+                         spacing, .false., .false., max_periods, cfg%periods, cfg%grid, &
+                         errmsg, required=.true.)
+        if (len(errmsg) > 0) then
+            errmsg = where//errmsg
+            return
+        end if
+        if (given(gs, 'codes')) then
+            call count_strings(codes, 'codes', n, errmsg)
+            if (len(errmsg) > 0) then
+                errmsg = where//errmsg//' (give some of '//upper_list(code_names)//')'
+                return
+            end if
+            do i = 1, n
+                code = name_index(codes(i), code_names)
+                if (code == 0) then
+                    errmsg = where//list_item('codes', i)//' = '''//trim(codes(i)) &
+                             //''': unknown code (allowed: '//upper_list(code_names)//')'
+                    return
+                end if
+                do j = 1, size(cfg%codes)
+                    if (cfg%codes(j) == code) then
+                        errmsg = where//list_item('codes', i)//' = '''//trim(codes(i)) &
+                                 //''': given twice'
+                        return
+                    end if
+                end do
+                cfg%codes = [cfg%codes, code]
+            end do
+        else
+            cfg%codes = [CODE_EC8_1, CODE_EC8_2, CODE_EAK]
+        end if
+        cfg%kind = name_index(kind, kind_names)
+        if (cfg%kind == 0) then
+            errmsg = where//'kind = '''//trim(kind)//''': unknown kind (allowed: ' &
+                     //join(kind_names)//')'
+            return
+        end if
+    end subroutine check_spectra
+
+    !> &ec8: ag or a zone of the Greek NA, the ground, damping, q, beta.
+    subroutine check_ec8(path, gc, p, errmsg)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gc
+        type(ec8_t), intent(inout) :: p
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=:), allocatable :: where
+        character(len=512) :: msg
+        integer :: st
+
+        where = located(path, gc)
+        errmsg = ''
+        if (given(gc, 'ag') .and. given(gc, 'zone')) then
+            errmsg = where//'ag, zone: give only one of them (ag: the design ground ' &
+                     //'acceleration in g; zone: ''Z1''..''Z3'' of the Greek National Annex, ' &
+                     //'a_gR times importance)'
+            return
+        end if
+        if (given(gc, 'zone')) then
+            p%zone = name_index(c_zone, ec8_zones)
+            if (p%zone == 0) then
+                errmsg = where//'zone = '''//trim(c_zone)//''': unknown zone (allowed: Z1, ' &
+                         //'Z2, Z3 of the Greek National Annex)'
+                return
+            end if
+            if (given(gc, 'national_annex')) then
+                if (name_index(c_annex, annex_names) == 0) then
+                    errmsg = where//'national_annex = '''//trim(c_annex)//''': unknown ' &
+                             //'national annex (allowed: GR, the only one with zones here)'
+                    return
+                end if
+            end if
+            if (.not. (c_importance > 0.0_dp .and. c_importance <= huge(1.0_dp))) then
+                errmsg = where//'importance = '//shortest_str(c_importance)//': must be a ' &
+                         //'finite factor gamma_I > 0'
+                return
+            end if
+            p%importance = c_importance
+            msg = ''
+            call ec8_reference_pga(EC8_ANNEX_GR, p%zone, p%agr, st, msg)
+            if (st /= SEISPULSE_SUCCESS) then
+                errmsg = where//'zone = '''//trim(c_zone)//''': '//reason(msg)
+                return
+            end if
+            p%ag = p%importance * p%agr
+        else
+            if (.not. given(gc, 'ag')) then
+                errmsg = where//'ag: missing (give ag = the design ground acceleration on ' &
+                         //'ground A (g), or zone = ''Z1''..''Z3'' of the Greek National Annex)'
+                return
+            end if
+            if (given(gc, 'national_annex')) then
+                errmsg = where//'national_annex: only with zone (ag is given directly)'
+                return
+            end if
+            if (given(gc, 'importance')) then
+                errmsg = where//'importance: only with zone (ag is already gamma_I a_gR)'
+                return
+            end if
+            if (.not. in_range(where, 'ag', c_ag, 0.0_dp, big, .false., errmsg, &
+                'must be a finite acceleration >= 0 (g)')) return
+            p%ag = c_ag
+        end if
+        p%ground = name_index(c_ground, ec8_grounds)
+        if (p%ground == 0) then
+            errmsg = where//'ground = '''//trim(c_ground)//''': unknown ground type ' &
+                     //'(allowed: A, B, C, D, E of EN 1998-1 Table 3.1)'
+            return
+        end if
+        if (.not. in_range(where, 'damping', c_damping, 0.0_dp, big, .false., errmsg, &
+            'must be a finite damping ratio >= 0 (0.05: eta = 1)')) return
+        p%damping = c_damping
+        if (.not. in_range(where, 'q', c_q, 1.0_dp, big, .false., errmsg, &
+            'the behaviour factor must be finite and >= 1')) return
+        p%q = c_q
+        if (.not. in_range(where, 'beta', c_beta, 0.0_dp, big, .false., errmsg, &
+            'the lower-bound factor must be finite and >= 0 (0.2 recommended)')) return
+        p%beta = c_beta
+    end subroutine check_ec8
+
+    !> &eak: zone (of zone_map) or alpha, ground, importance or its class, q, theta,
+    !> damping, and the unverified parameters.
+    subroutine check_eak(path, gk, p, errmsg)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gk
+        type(eak_t), intent(inout) :: p
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=:), allocatable :: where
+        character(len=512) :: msg
+        real(dp) :: t_1, t_2
+        integer :: st, code
+
+        where = located(path, gk)
+        errmsg = ''
+        code = name_index(k_zone_map, map_names)
+        if (code == 0) then
+            errmsg = where//'zone_map = '''//trim(k_zone_map)//''': unknown zone map ' &
+                     //'(allowed: 2003, 2000)'
+            return
+        end if
+        p%zone_map = merge(EAK_MAP_2003, EAK_MAP_2000, code == 1)
+        if (given(gk, 'zone') .and. given(gk, 'alpha')) then
+            errmsg = where//'zone, alpha: give only one of them (zone: a seismic zone; ' &
+                     //'alpha: A/g directly)'
+            return
+        end if
+        if (given(gk, 'alpha')) then
+            if (given(gk, 'zone_map')) then
+                errmsg = where//'zone_map: only with zone (alpha is given directly)'
+                return
+            end if
+            if (.not. in_range(where, 'alpha', k_alpha, 0.0_dp, big, .false., errmsg, &
+                'must be a finite A/g >= 0')) return
+            p%alpha = k_alpha
+        else
+            if (.not. given(gk, 'zone')) k_zone = merge('Z2 ', 'II ', p%zone_map == EAK_MAP_2003)
+            if (p%zone_map == EAK_MAP_2003) then
+                p%zone = name_index(k_zone, ec8_zones)
+                if (p%zone == 0) then
+                    errmsg = where//'zone = '''//trim(k_zone)//''': unknown zone of the 2003 ' &
+                             //'map (allowed: Z1, Z2, Z3; or zone_map = ''2000'' with I, II, ' &
+                             //'III, IV)'
+                    return
+                end if
+            else
+                p%zone = name_index(k_zone, eak_zones_2000)
+                if (p%zone == 0) then
+                    errmsg = where//'zone = '''//trim(k_zone)//''': unknown zone of the 2000 ' &
+                             //'map (allowed: I, II, III, IV)'
+                    return
+                end if
+            end if
+            msg = ''
+            call eak2000_zone_acceleration(p%zone, p%zone_map, p%alpha, st, msg)
+            if (st /= SEISPULSE_SUCCESS) then
+                errmsg = where//'zone = '''//trim(k_zone)//''': '//reason(msg)
+                return
+            end if
+        end if
+        p%ground = name_index(k_ground, eak_grounds)
+        if (p%ground == 0) then
+            errmsg = where//'ground = '''//trim(k_ground)//''': unknown ground category ' &
+                     //'(allowed: A, B, C, D)'
+            return
+        end if
+        p%ground = EAK_GROUND_A + p%ground - 1
+        msg = ''
+        call eak2000_ground_parameters(p%ground, t_1, t_2, st, msg)
+        if (st /= SEISPULSE_SUCCESS) then
+            errmsg = where//'ground = '''//trim(k_ground)//''': '//reason(msg)
+            return
+        end if
+        if (given(gk, 'importance') .and. given(gk, 'importance_class')) then
+            errmsg = where//'importance, importance_class: give only one of them (a factor ' &
+                     //'gamma_I, or a class I..IV)'
+            return
+        end if
+        if (given(gk, 'importance_class')) then
+            p%importance_class = name_index(k_class, class_names)
+            if (p%importance_class == 0) then
+                errmsg = where//'importance_class = '''//trim(k_class)//''': unknown ' &
+                         //'importance class (allowed: I, II, III, IV)'
+                return
+            end if
+            msg = ''
+            call eak2000_importance_factor(p%importance_class, p%importance, st, msg)
+            if (st /= SEISPULSE_SUCCESS) then
+                errmsg = where//'importance_class = '''//trim(k_class)//''': '//reason(msg)
+                return
+            end if
+        else
+            if (.not. (k_importance > 0.0_dp .and. k_importance <= huge(1.0_dp))) then
+                errmsg = where//'importance = '//shortest_str(k_importance)//': must be a ' &
+                         //'finite factor gamma_I > 0'
+                return
+            end if
+            p%importance = k_importance
+        end if
+        if (.not. in_range(where, 'q', k_q, 1.0_dp, big, .false., errmsg, &
+            'the behaviour factor must be finite and >= 1')) return
+        p%q = k_q
+        if (.not. in_range(where, 'theta', k_theta, 0.0_dp, 1.0_dp, .true., errmsg, &
+            'must be in (0, 1] (the foundation factor; its rules are unverified)')) return
+        p%theta = k_theta
+        if (.not. in_range(where, 'damping', k_damping, 0.0_dp, big, .false., errmsg, &
+            'must be a finite damping ratio >= 0 (0.05: eta = 1)')) return
+        p%damping = k_damping
+        if (.not. in_range(where, 'eta_min', k_eta_min, 0.0_dp, 1.0_dp, .false., errmsg, &
+            'must be in [0, 1] (the floor of eta, unverified; 0: none)')) return
+        p%eta_min = k_eta_min
+        if (.not. in_range(where, 'lower_bound', k_lower_bound, 0.0_dp, big, .false., errmsg, &
+            'must be finite and >= 0 (0: none)')) return
+        p%lower_bound = k_lower_bound
+        if (.not. in_range(where, 'elastic_exponent', k_exponent, 0.0_dp, big, .true., errmsg, &
+            'must be finite and > 0 (2/3 as the design spectrum; 1 in one implementation)')) return
+        p%exponent = k_exponent
+    end subroutine check_eak
+
+    !> &suite and the records (&records here, or that of records_from).
+    subroutine check_suite(path, gu, gr, cfg, errmsg)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gu, gr
+        type(config_t), intent(inout) :: cfg
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=:), allocatable :: where, msg
+        type(nml_group), allocatable :: other(:)
+        integer :: st, ig
+
+        where = located(path, gu)
+        errmsg = ''
+        if (.not. given(gu, 't1')) then
+            errmsg = where//'t1: missing (the fundamental period T1 of the structure, s: ' &
+                     //'the check covers 0.2 T1 .. 2 T1)'
+            return
+        end if
+        if (.not. in_range(where, 't1', t1, 0.0_dp, big, .true., errmsg, &
+            'must be a finite period > 0 (s)')) return
+        cfg%t1 = t1
+        cfg%target = name_index(target, code_names)
+        if (cfg%target == 0) then
+            errmsg = where//'target = '''//trim(target)//''': unknown target (allowed: ' &
+                     //upper_list(code_names)//', each code''s elastic spectrum)'
+            return
+        end if
+        if (n_points < 2 .or. n_points > max_periods) then
+            errmsg = where//'n_points = '//int_str(n_points)//': must be in 2 .. ' &
+                     //int_str(max_periods)//' (log-spaced periods of the check)'
+            return
+        end if
+        cfg%n_points = n_points
+        cfg%fit = name_index(fit, fit_names)
+        if (cfg%fit == 0) then
+            errmsg = where//'fit = '''//trim(fit)//''': unknown fit (allowed: ' &
+                     //join(fit_names)//')'
+            return
+        end if
+        cfg%fit = merge(SUITE_FIT_LINEAR, SUITE_FIT_LOG, cfg%fit == 1)
+        if (min_records < 1) then
+            errmsg = where//'min_records = '//int_str(min_records)//': must be >= 1 ' &
+                     //'(EN 1998-1 3.2.3.1.2(4): at least 3)'
+            return
+        end if
+        cfg%min_records = min_records
+
+        ! --- the records: here, or in the input named by records_from
+        cfg%records_from = ''
+        if (given(gu, 'records_from')) then
+            if (len_trim(records_from) == 0) then
+                errmsg = where//'records_from: empty (give the input file whose &records ' &
+                         //'to use, relative to this file)'
+                return
+            end if
+            if (gr%line > 0) then
+                errmsg = located(path, gr)//'not with &suite records_from (the records come ' &
+                         //'from '''//trim(records_from)//'''; give one of them)'
+                return
+            end if
+            cfg%records_from = resolve(path, trim(adjustl(records_from)))
+            call scan_file(cfg%records_from, other, st, msg)
+            if (st /= 0) then
+                errmsg = where//'records_from = '''//trim(records_from)//''': '//msg
+                return
+            end if
+            ig = find_group(other, 'records')
+            if (ig == 0) then
+                errmsg = where//'records_from = '''//trim(records_from)//''': it has no ' &
+                         //'&records group'
+                return
+            end if
+            cfg%gr = other(ig)
+            cfg%rec_path = cfg%records_from
+            call check_keys(cfg%rec_path, cfg%gr, records_keys, st, msg)
+            if (st == 0) call read_group(cfg%rec_path, cfg%gr, read_records, st, msg)
+            if (st /= 0) then
+                errmsg = msg
+                return
+            end if
+        else
+            if (gr%line == 0) then
+                errmsg = missing_group(path, 'records')//records_missing//' (or &suite ' &
+                         //'records_from = ''other.nml'')'
+                return
+            end if
+            cfg%gr = gr
+            cfg%rec_path = path
+        end if
+        call check_records(cfg%rec_path, cfg%gr, cfg%recs, cfg%slammer_rounding, errmsg)
+        if (len(errmsg) > 0) return
+        if (size(cfg%recs) < cfg%min_records) then
+            errmsg = located(cfg%rec_path, cfg%gr)//'files: '//int_str(size(cfg%recs)) &
+                     //' records, fewer than &suite min_records = '//int_str(cfg%min_records) &
+                     //' (EN 1998-1 3.2.3.1.2(4): at least 3)'
+            return
+        end if
+    end subroutine check_suite
+
+    ! ------------------------------------------------------------------------------
+    ! The code spectra
+    ! ------------------------------------------------------------------------------
+
+    !> Spectrum of `code` at `periods` (g): elastic (with `damping`, a ratio) or design.
+    !> stat /= 0 with the library's message.
+    subroutine code_spectrum(cfg, code, elastic, damping, periods, values, stat, msg)
+        type(config_t), intent(in) :: cfg
+        integer, intent(in) :: code
+        logical, intent(in) :: elastic
+        real(dp), intent(in) :: damping
+        real(dp), intent(in) :: periods(:)
+        real(dp), intent(out) :: values(:)
+        integer, intent(out) :: stat
+        character(len=*), intent(inout) :: msg
+        integer :: stype
+        if (code == CODE_EAK) then
+            associate (p => cfg%eak)
+                if (elastic) then
+                    call eak2000_elastic_spectrum(periods, p%alpha, p%ground, p%importance, &
+                        100.0_dp * damping, p%eta_min, p%exponent, values, stat, msg)
+                else
+                    call eak2000_design_spectrum(periods, p%alpha, p%ground, p%importance, &
+                        p%q, p%theta, 100.0_dp * damping, p%eta_min, p%lower_bound, values, &
+                        stat, msg)
+                end if
+            end associate
+        else
+            stype = merge(EC8_SPECTRUM_TYPE_1, EC8_SPECTRUM_TYPE_2, code == CODE_EC8_1)
+            associate (p => cfg%ec8)
+                if (elastic) then
+                    call ec8_elastic_spectrum(periods, p%ag, stype, p%ground, &
+                        100.0_dp * damping, values, stat, msg)
+                else
+                    call ec8_design_spectrum(periods, p%ag, stype, p%ground, p%q, p%beta, &
+                        values, stat, msg)
+                end if
+            end associate
+        end if
+    end subroutine code_spectrum
+
+    !> The spectra table: period, then one column per code and kind.
+    subroutine spectra_table(path, gc, gk, cfg, table, errmsg)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gc, gk
+        type(config_t), intent(in) :: cfg
+        real(dp), allocatable, intent(out) :: table(:, :)
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=512) :: msg
+        integer :: i, j, col, st
+        logical :: elastic
+
+        errmsg = ''
+        allocate(table(size(cfg%periods), 1 + size(cfg%codes) * merge(2, 1, cfg%kind == 3)))
+        table(:, 1) = cfg%periods
+        col = 1
+        do i = 1, size(cfg%codes)
+            do j = 1, 2
+                if (cfg%kind /= 3 .and. cfg%kind /= j) cycle
+                elastic = j == 1
+                col = col + 1
+                msg = ''
+                if (cfg%codes(i) == CODE_EAK) then
+                    call code_spectrum(cfg, cfg%codes(i), elastic, cfg%eak%damping, &
+                                       cfg%periods, table(:, col), st, msg)
+                    if (st /= SEISPULSE_SUCCESS) errmsg = located(path, gk)//trim(msg)
+                else
+                    call code_spectrum(cfg, cfg%codes(i), elastic, cfg%ec8%damping, &
+                                       cfg%periods, table(:, col), st, msg)
+                    if (st /= SEISPULSE_SUCCESS) errmsg = located(path, gc)//trim(msg)
+                end if
+                if (st /= SEISPULSE_SUCCESS) return
+            end do
+        end do
+    end subroutine spectra_table
+
+    !> The check grid, the target there and at T = 0.
+    subroutine suite_grid(path, gc, gk, gu, cfg, res, errmsg)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gc, gk, gu
+        type(config_t), intent(in) :: cfg
+        type(suite_res_t), intent(out) :: res
+        character(len=:), allocatable, intent(out) :: errmsg
+        real(dp), allocatable :: extra(:), grid(:)
+        real(dp) :: s, tb, tc, td, zero(1), at_zero(1)
+        character(len=512) :: msg
+        integer :: st, n
+
+        errmsg = ''
+        msg = ''
+        ! the corner periods of the target, T1 itself and the periods of &spectra
+        if (cfg%target == CODE_EAK) then
+            call eak2000_ground_parameters(cfg%eak%ground, tb, tc, st, msg)
+            extra = [cfg%t1, tb, tc]
+        else
+            call ec8_ground_parameters(merge(EC8_SPECTRUM_TYPE_1, EC8_SPECTRUM_TYPE_2, &
+                cfg%target == CODE_EC8_1), cfg%ec8%ground, s, tb, tc, td, st, msg)
+            extra = [cfg%t1, tb, tc, td]
+        end if
+        if (st == SEISPULSE_SUCCESS) then
+            extra = [extra, cfg%periods]
+            allocate(grid(cfg%n_points + size(extra)))
+            call suite_check_periods(cfg%t1, cfg%n_points, extra, grid, n, st, msg)
+        end if
+        if (st /= SEISPULSE_SUCCESS) then
+            errmsg = located(path, gu)//trim(msg)
+            return
+        end if
+        res%grid = grid(1:n)
+        ! T1 is on the grid (an extra period): the one closest to it
+        res%i_t1 = minloc(abs(res%grid - cfg%t1), 1)
+        allocate(res%target(n))
+        zero = 0.0_dp
+        call code_spectrum(cfg, cfg%target, .true., check_damping, res%grid, res%target, st, msg)
+        if (st == SEISPULSE_SUCCESS) call code_spectrum(cfg, cfg%target, .true., &
+            check_damping, zero, at_zero, st, msg)
+        if (st /= SEISPULSE_SUCCESS) then
+            if (cfg%target == CODE_EAK) then
+                errmsg = located(path, gk)//trim(msg)
+            else
+                errmsg = located(path, gc)//trim(msg)
+            end if
+            return
+        end if
+        res%target_pga = at_zero(1)
+    end subroutine suite_grid
+
+    ! ------------------------------------------------------------------------------
+    ! The records and the check
+    ! ------------------------------------------------------------------------------
+
+    !> Every record (read, polarity, scale), its 5 % PSA on the check grid (exact
+    !> peaks), then the check on the records read. A record that fails keeps o%ok =
+    !> .false. and its message (reported on stderr at once).
+    subroutine compute_suite(cfg, outs, res)
+        type(config_t), intent(in) :: cfg
+        type(record_out_t), allocatable, intent(out) :: outs(:)
+        type(suite_res_t), intent(inout) :: res
+        real(dp), allocatable :: accel(:), sd(:, :), sv(:, :), sa(:, :), psv(:, :), &
+                                 psa_ok(:, :)
+        character(len=:), allocatable :: where
+        character(len=4096) :: msg
+        integer :: nrec, ir, st, np, nok, k, i
+
+        where = located(cfg%rec_path, cfg%gr)
+        nrec = size(cfg%recs)
+        np = size(res%grid)
+        allocate(outs(nrec))
+        allocate(res%psa(np, nrec), res%pga(nrec), res%own_scale(nrec), res%mean(np), &
+                 res%ratio(np), res%own_mean(np))
+        allocate(sd(np, 1), sv(np, 1), sa(np, 1), psv(np, 1))
+        res%psa = ieee_value(1.0_dp, ieee_quiet_nan)
+        res%pga = ieee_value(1.0_dp, ieee_quiet_nan)
+        res%own_scale = ieee_value(1.0_dp, ieee_quiet_nan)
+        res%mean = ieee_value(1.0_dp, ieee_quiet_nan)
+        res%ratio = res%mean
+        res%own_mean = res%mean
+        do ir = 1, nrec
+            associate (r => cfg%recs(ir), o => outs(ir))
+                call load_record(where, r, ir, nrec, 'spectra', cfg%slammer_rounding, o, accel)
+                if (.not. o%ok) cycle
+                msg = ''
+                call sdof_spectrum(accel, o%dt, res%grid, [check_damping], STANDARD_GRAVITY, &
+                                   sd, sv, sa, st, msg, peaks=SDOF_PEAKS_EXACT)
+                if (st == SEISPULSE_SUCCESS) then
+                    call pseudo_spectra(res%grid, sd, STANDARD_GRAVITY, o%pga, psv, &
+                                        res%psa(:, ir:ir))
+                    res%pga(ir) = o%pga
+                    do i = 1, np
+                        if (.not. res%psa(i, ir) > 0.0_dp) then
+                            st = 1
+                            msg = 'PSA = 0 at T = '//shortest_str(res%grid(i))//' s: a ' &
+                                  //'record without spectral acceleration cannot be scaled'
+                            exit
+                        end if
+                    end do
+                end if
+                if (st /= SEISPULSE_SUCCESS) then
+                    o%ok = .false.
+                    o%message = trim(msg)
+                    res%psa(:, ir) = ieee_value(1.0_dp, ieee_quiet_nan)
+                    res%pga(ir) = ieee_value(1.0_dp, ieee_quiet_nan)
+                    call report(where//list_item('files', ir)//' = '''//r%file//''': ' &
+                                //o%message)
+                end if
+            end associate
+        end do
+
+        ! --- the check on the records read
+        nok = count(outs%ok)
+        res%done = .false.
+        if (nok < cfg%min_records) then
+            res%why = 'the check needs at least min_records = '//int_str(cfg%min_records) &
+                      //' records and only '//int_str(nok)//' were read: the summary holds ' &
+                      //'NaN'
+            return
+        end if
+        allocate(psa_ok(np, nok))
+        k = 0
+        do ir = 1, nrec
+            if (.not. outs(ir)%ok) cycle
+            k = k + 1
+            psa_ok(:, k) = res%psa(:, ir)
+        end do
+        block
+            real(dp) :: own(nok)
+            msg = ''
+            call ec8_suite_check(res%grid, psa_ok, pack(res%pga, outs%ok), res%target, &
+                                 res%target_pga, cfg%t1, cfg%fit, res%check, own, res%mean, &
+                                 st, msg, min_records=cfg%min_records, ratio=res%ratio, &
+                                 own_mean=res%own_mean)
+            if (st /= SEISPULSE_SUCCESS) then
+                res%why = 'the check failed: '//trim(msg)
+                res%mean = ieee_value(1.0_dp, ieee_quiet_nan)
+                res%ratio = res%mean
+                res%own_mean = res%mean
+                return
+            end if
+            res%own_scale = unpack(own, outs%ok, res%own_scale)
+        end block
+        res%done = .true.
+    end subroutine compute_suite
+
+    ! ------------------------------------------------------------------------------
+    ! Echo
+    ! ------------------------------------------------------------------------------
+
+    !> &spectra with the values in use; the periods as a list.
+    subroutine echo_spectra(cfg)
+        type(config_t), intent(in) :: cfg
+        real(dp) :: periods(size(cfg%periods))
+        character(len=5) :: codes(size(cfg%codes))
+        character(len=7) :: kind
+        integer :: i
+        namelist /spectra/ periods, codes, kind
+        periods = cfg%periods
+        do i = 1, size(cfg%codes)
+            codes(i) = trim(upper(code_names(cfg%codes(i))))
+        end do
+        kind = kind_names(cfg%kind)
+        write(echo_unit(), nml=spectra)
+    end subroutine echo_spectra
+
+    !> &ec8 with the values in use (only the keys the input gave are kept).
+    subroutine echo_ec8(p)
+        type(ec8_t), intent(in) :: p
+        real(dp) :: ag, importance, damping, q, beta
+        character(len=2) :: zone, national_annex
+        character(len=1) :: ground
+        namelist /ec8/ ag, zone, national_annex, importance, ground, damping, q, beta
+        ag = p%ag
+        zone = ''
+        if (p%zone > 0) zone = trim(upper(ec8_zones(p%zone)))
+        national_annex = 'GR'
+        importance = p%importance
+        ground = trim(upper(ec8_grounds(p%ground)))
+        damping = p%damping
+        q = p%q
+        beta = p%beta
+        write(echo_unit(), nml=ec8)
+    end subroutine echo_ec8
+
+    !> &eak with the values in use (only the keys the input gave are kept).
+    subroutine echo_eak(p)
+        type(eak_t), intent(in) :: p
+        real(dp) :: alpha, importance, q, theta, damping, eta_min, lower_bound, &
+                    elastic_exponent
+        character(len=3) :: zone, importance_class
+        character(len=4) :: zone_map
+        character(len=1) :: ground
+        namelist /eak/ zone, alpha, zone_map, ground, importance, importance_class, q, theta, &
+            damping, eta_min, lower_bound, elastic_exponent
+        zone = ''
+        if (p%zone > 0) zone = trim(zone_name(p))
+        alpha = p%alpha
+        zone_map = map_names(merge(1, 2, p%zone_map == EAK_MAP_2003))
+        ground = trim(upper(eak_grounds(p%ground - EAK_GROUND_A + 1)))
+        importance = p%importance
+        importance_class = ''
+        if (p%importance_class > 0) importance_class = trim(upper(class_names(p%importance_class)))
+        q = p%q
+        theta = p%theta
+        damping = p%damping
+        eta_min = p%eta_min
+        lower_bound = p%lower_bound
+        elastic_exponent = p%exponent
+        write(echo_unit(), nml=eak)
+    end subroutine echo_eak
+
+    !> &suite with the values in use; records_from relative to the echo file.
+    subroutine echo_suite(cfg)
+        type(config_t), intent(in) :: cfg
+        call echo_n(max(1, len(echo_path(cfg%records_from))))
+    contains
+        subroutine echo_n(flen)
+            integer, intent(in) :: flen
+            real(dp) :: t1
+            integer :: n_points, min_records
+            character(len=5) :: target
+            character(len=6) :: fit
+            character(len=flen) :: records_from
+            namelist /suite/ t1, target, n_points, fit, min_records, records_from
+            t1 = cfg%t1
+            target = trim(upper(code_names(cfg%target)))
+            n_points = cfg%n_points
+            fit = fit_names(merge(1, 2, cfg%fit == SUITE_FIT_LINEAR))
+            min_records = cfg%min_records
+            records_from = echo_path(cfg%records_from)
+            write(echo_unit(), nml=suite)
+        end subroutine echo_n
+    end subroutine echo_suite
+
+    ! ------------------------------------------------------------------------------
+    ! Output
+    ! ------------------------------------------------------------------------------
+
+    !> The header lines that give the parameters of the codes in use.
+    function code_lines(cfg) result(lines)
+        type(config_t), intent(in) :: cfg
+        character(len=4096), allocatable :: lines(:)
+        character(len=:), allocatable :: s
+        real(dp) :: sf, tb, tc, td, t_1, t_2
+        character(len=512) :: msg
+        integer :: st, k
+        logical :: used(3), design
+        ! the codes of the table and the target; design spectra only in the table
+        do k = 1, 3
+            used(k) = any(cfg%codes == k) .or. (cfg%suite .and. cfg%target == k)
+        end do
+        design = cfg%table .and. cfg%kind /= 1
+        allocate(lines(0))
+        if (cfg%use_ec8) then
+            associate (p => cfg%ec8)
+                if (p%zone > 0) then
+                    s = 'EN 1998-1: ag = gamma_I a_gR = '//shortest_str(p%importance)//' x ' &
+                        //shortest_str(p%agr)//' = '//shortest_str(p%ag)//' g (zone ' &
+                        //trim(upper(ec8_zones(p%zone)))//' of the Greek National Annex, ' &
+                        //'the 2003 map [PRDA24]; every other NDP the recommended value: the ' &
+                        //'Greek NA''s other NDPs were not verified here)'
+                else
+                    s = 'EN 1998-1: ag = '//shortest_str(p%ag)//' g (given; recommended NDPs)'
+                end if
+                s = s//'; ground '//trim(upper(ec8_grounds(p%ground)))
+                lines = [character(len=4096) :: lines, s]
+                do k = 1, 2
+                    if (.not. used(k)) cycle
+                    msg = ''
+                    call ec8_ground_parameters(k, p%ground, sf, tb, tc, td, st, msg)
+                    lines = [character(len=4096) :: lines, 'EC8_'//int_str(k)//' (type ' &
+                        //int_str(k)//'): S = '//shortest_str(sf)//', TB = '//shortest_str(tb) &
+                        //' s, TC = '//shortest_str(tc)//' s, TD = '//shortest_str(td) &
+                        //' s (EN 1998-1 Table 3.'//int_str(k + 1)//')']
+                end do
+                s = 'EN 1998-1 elastic Se (3.2)-(3.5): damping '//shortest_str(p%damping) &
+                    //' (eta = '//shortest_str(ec8_damping_correction(100.0_dp * p%damping)) &
+                    //')'
+                if (cfg%suite) s = s//'; the target of the check: damping 0.05 (eta = 1)'
+                if (design) s = s//'; design Sd (3.13)-(3.16): q = '//shortest_str(p%q) &
+                    //', beta = '//shortest_str(p%beta)
+                lines = [character(len=4096) :: lines, s]
+            end associate
+        end if
+        if (cfg%use_eak) then
+            associate (p => cfg%eak)
+                msg = ''
+                call eak2000_ground_parameters(p%ground, t_1, t_2, st, msg)
+                if (p%zone > 0) then
+                    s = 'EAK 2000: A/g = '//shortest_str(p%alpha)//' (zone '//zone_name(p) &
+                        //' of the '//map_names(merge(1, 2, p%zone_map == EAK_MAP_2003)) &
+                        //' map)'
+                else
+                    s = 'EAK 2000: A/g = '//shortest_str(p%alpha)//' (given)'
+                end if
+                s = s//'; ground '//trim(upper(eak_grounds(p%ground - EAK_GROUND_A + 1))) &
+                    //' (T1 = '//shortest_str(t_1)//' s, T2 = '//shortest_str(t_2) &
+                    //' s); gamma_I = '//shortest_str(p%importance)
+                if (p%importance_class > 0) s = s//' (class ' &
+                    //trim(upper(class_names(p%importance_class)))//')'
+                s = s//'; beta0 = '//shortest_str(EAK_BETA0)//'; elastic Phi_e: damping ' &
+                    //shortest_str(p%damping)//' (eta = '//shortest_str( &
+                    eak2000_damping_correction(100.0_dp * p%damping, p%eta_min))//'), ' &
+                    //'long-period exponent '//shortest_str(p%exponent)
+                if (cfg%suite .and. cfg%target == CODE_EAK) s = s//'; the target of the ' &
+                    //'check: Phi_e at damping 0.05 (eta = 1)'
+                if (design) s = s//'; design Phi_d (K.1)-(K.3): q = '//shortest_str(p%q) &
+                    //', theta = '//shortest_str(p%theta)//', eta as Phi_e'
+                lines = [character(len=4096) :: lines, s]
+                lines = [character(len=4096) :: lines, 'EAK 2000 values from secondary ' &
+                    //'sources; unverified: the rules for theta (here ' &
+                    //shortest_str(p%theta)//'), eta_min = '//shortest_str(p%eta_min) &
+                    //' (0: no floor on eta), lower_bound = '//shortest_str(p%lower_bound) &
+                    //' (Phi_d >= lower_bound gamma_I A; 0: none, 0.25 is a recollection), ' &
+                    //'the elastic long-period exponent '//shortest_str(p%exponent) &
+                    //' (2/3 as Phi_d; 1 in one implementation), ground X (refused)']
+            end associate
+        end if
+    end function code_lines
+
+    !> The code spectra table.
+    subroutine write_spectra(path, prefix, cfg, table, files_out, stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(config_t), intent(in) :: cfg
+        real(dp), intent(in) :: table(:, :)
+        character(len=*), intent(out) :: files_out(2)
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=4096), allocatable :: comments(:)
+        character(len=16), allocatable :: names(:), col_units(:)
+        integer :: i, j, col
+
+        allocate(names(size(table, 2)), col_units(size(table, 2)))
+        names(1) = 'period'
+        col_units = 'g'
+        col_units(1) = 's'
+        col = 1
+        do i = 1, size(cfg%codes)
+            do j = 1, 2
+                if (cfg%kind /= 3 .and. cfg%kind /= j) cycle
+                col = col + 1
+                names(col) = trim(code_names(cfg%codes(i)))//'_'//trim(kind_names(j))
+            end do
+        end do
+        comments = [character(len=4096) :: 'seispulse analysis spectra: code spectra side ' &
+            //'by side, one row per period (horizontal, in g)', 'input: '//trim(path), &
+            'periods: '//cfg%grid, code_lines(cfg)]
+        call write_tables(prefix, 'spectra', comments, names, col_units, table, files_out, &
+                          stat, errmsg)
+    end subroutine write_spectra
+
+    !> The first header lines of the suite tables: what, the input, the target, the rule,
+    !> the records.
+    function suite_comments(path, what, cfg, outs, res) result(comments)
+        character(len=*), intent(in) :: path, what
+        type(config_t), intent(in) :: cfg
+        type(record_out_t), intent(in) :: outs(:)
+        type(suite_res_t), intent(in) :: res
+        character(len=4096), allocatable :: comments(:)
+        character(len=:), allocatable :: line
+        integer :: ir
+        comments = [character(len=4096) :: 'seispulse analysis spectra: '//what, &
+            'input: '//trim(path), &
+            'target: the '//trim(upper(code_names(cfg%target)))//' elastic spectrum at 5 % ' &
+            //'damping; at T = 0 (a_g S): '//shortest_str(res%target_pga)//' g', &
+            code_lines(cfg), &
+            'EN 1998-1 3.2.3.1.2(4): (a) at least 3 records; (b) mean PGA >= the target ' &
+            //'at T = 0; (c) mean 5 % PSA >= 0.9 target over [0.2 T1, 2 T1] = [' &
+            //shortest_str(0.2_dp * cfg%t1)//', '//shortest_str(2.0_dp * cfg%t1) &
+            //'] s (T1 = '//shortest_str(cfg%t1)//' s); 4.3.3.4.3(3): with 7 or more ' &
+            //'records the mean response may be used', &
+            'check grid: '//int_str(size(res%grid))//' periods, '//int_str(cfg%n_points) &
+            //' log-spaced from 0.2 T1 to 2 T1 with T1, the target''s corner periods and ' &
+            //'the &spectra periods inside; PSA: 5 % damping, exact peaks over the record, ' &
+            //'g = '//shortest_str(STANDARD_GRAVITY)//' m/s2', &
+            'common_scale: the smallest factor on every record making (b) and (c) hold ' &
+            //'(M.1); own_scale: each record''s own factor, '// &
+            fit_text(cfg%fit) &
+            //' over the grid; own_*: the suite with each record scaled by its own factor']
+        if (.not. res%done) comments = [character(len=4096) :: comments, 'NO CHECK: '//res%why]
+        if (len(cfg%records_from) > 0) comments = [character(len=4096) :: comments, &
+            'records from &records of '//cfg%records_from]
+        comments = [character(len=4096) :: comments, 'records (index, file, format read, ' &
+            //'npts, dt (s), PGA as read (g), scale factor):']
+        do ir = 1, size(outs)
+            line = record_line(ir, cfg%recs(ir), outs(ir))
+            comments = [character(len=4096) :: comments, line]
+        end do
+    end function suite_comments
+
+    !> The one-row summary of the check.
+    subroutine write_summary(path, prefix, cfg, outs, res, files_out, stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(config_t), intent(in) :: cfg
+        type(record_out_t), intent(in) :: outs(:)
+        type(suite_res_t), intent(in) :: res
+        character(len=*), intent(out) :: files_out(2)
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        real(dp) :: row(1, 19), nan
+        character(len=16) :: kinds(19)
+
+        nan = ieee_value(nan, ieee_quiet_nan)
+        row = nan
+        row(1, 1) = real(count(outs%ok), dp)
+        row(1, 2:4) = [cfg%t1, 0.2_dp * cfg%t1, 2.0_dp * cfg%t1]
+        row(1, 6) = res%target_pga
+        row(1, 19) = 1.0_dp
+        if (res%done) then
+            associate (c => res%check)
+                row(1, 1:4) = [real(c%n_records, dp), c%t1, c%t_low, c%t_high]
+                row(1, 5:18) = [c%pga_mean, c%pga_target, c%pga_ratio, flag(c%pga_ok), &
+                    c%min_ratio, c%t_min_ratio, flag(c%spectrum_ok), flag(c%count_ok), &
+                    flag(c%mean_allowed), flag(c%passed), c%common_scale, c%own_pga_ratio, &
+                    c%own_min_ratio, flag(c%own_passed)]
+            end associate
+            row(1, 19) = 0.0_dp
+        end if
+        kinds = ''
+        kinds(1) = 'int'
+        kinds([8, 11, 12, 14, 18]) = category_kind(check_names)
+        kinds(13) = category_kind(yes_names)
+        kinds(19) = category_kind(status_names)
+        call write_tables(prefix, 'suite', suite_comments(path, 'the check of a suite of ' &
+            //'records against a code''s elastic spectrum (EN 1998-1 3.2.3.1.2(4))', cfg, &
+            outs, res), &
+            [character(len=14) :: 'n_records', 't1', 't_low', 't_high', 'pga_mean', &
+             'pga_target', 'pga_ratio', 'pga_check', 'min_ratio', 't_min_ratio', &
+             'spectrum_check', 'count_check', 'mean_allowed', 'check', 'common_scale', &
+             'own_pga_ratio', 'own_min_ratio', 'own_check', 'status'], &
+            [character(len=2) :: '-', 's', 's', 's', 'g', 'g', '-', '-', '-', 's', '-', '-', &
+             '-', '-', '-', '-', '-', '-', '-'], row, files_out, stat, errmsg, kinds=kinds, &
+            summary=.true.)
+    end subroutine write_summary
+
+    !> One row per record: PGA, own scale factor, PSA at T1, status.
+    subroutine write_records(path, prefix, cfg, outs, res, files_out, stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(config_t), intent(in) :: cfg
+        type(record_out_t), intent(in) :: outs(:)
+        type(suite_res_t), intent(in) :: res
+        character(len=*), intent(out) :: files_out(2)
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        real(dp), allocatable :: table(:, :)
+        character(len=label_len(outs)), allocatable :: labels(:)
+        integer :: ir, n
+
+        n = size(outs)
+        allocate(table(n, 4), labels(n))
+        do ir = 1, n
+            labels(ir) = outs(ir)%name
+            table(ir, :) = [res%pga(ir), res%own_scale(ir), res%psa(res%i_t1, ir), &
+                            merge(0.0_dp, 1.0_dp, outs(ir)%ok)]
+        end do
+        call write_tables(prefix, 'suite_records', [character(len=4096) :: &
+            suite_comments(path, 'the records of the check, one row per record', cfg, outs, &
+            res), 'pga: after scaling; own_scale: the record''s own factor (NaN without a ' &
+            //'check); psa_t1: 5 % PSA at T1; status: ok, or failed (nan; the reason ' &
+            //'above and on stderr; exit status 1)'], &
+            [character(len=9) :: 'name', 'pga', 'own_scale', 'psa_t1', 'status'], &
+            [character(len=1) :: '-', 'g', '-', 'g', '-'], table, files_out, stat, errmsg, &
+            labels=labels, kinds=[character(len=16) :: '', '', '', '', &
+            category_kind(status_names)])
+    end subroutine write_records
+
+    !> On the check grid: the target, 0.9 target, the mean of the suite, their ratio, the
+    !> mean scaled by common_scale and the mean of the records scaled by their own factors.
+    subroutine write_mean(path, prefix, cfg, outs, res, files_out, stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(config_t), intent(in) :: cfg
+        type(record_out_t), intent(in) :: outs(:)
+        type(suite_res_t), intent(in) :: res
+        character(len=*), intent(out) :: files_out(2)
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        real(dp), allocatable :: table(:, :)
+        real(dp) :: nan
+        integer :: np
+
+        nan = ieee_value(nan, ieee_quiet_nan)
+        np = size(res%grid)
+        allocate(table(np, 7))
+        table = nan
+        table(:, 1) = res%grid
+        table(:, 2) = res%target
+        table(:, 3) = 0.9_dp * res%target
+        if (res%done) then
+            table(:, 4) = res%mean
+            table(:, 5) = res%ratio
+            table(:, 6) = res%check%common_scale * res%mean
+            table(:, 7) = res%own_mean
+        end if
+        call write_tables(prefix, 'suite_mean', [character(len=4096) :: &
+            suite_comments(path, 'the mean spectrum of the suite against the target, one ' &
+            //'row per period of the check grid', cfg, outs, res), 'target_90 = 0.9 target; ' &
+            //'mean: the mean 5 % PSA of the records read; ratio = mean/target; ' &
+            //'mean_common = common_scale x mean; mean_own: the mean of the records each ' &
+            //'scaled by its own_scale'], &
+            [character(len=11) :: 'period', 'target', 'target_90', 'mean', 'ratio', &
+             'mean_common', 'mean_own'], &
+            [character(len=1) :: 's', 'g', 'g', 'g', '-', 'g', 'g'], table, files_out, stat, &
+            errmsg)
+    end subroutine write_mean
+
+    !> Long format: one row per record and period of the check grid.
+    subroutine write_long(path, prefix, cfg, outs, res, files_out, stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(config_t), intent(in) :: cfg
+        type(record_out_t), intent(in) :: outs(:)
+        type(suite_res_t), intent(in) :: res
+        character(len=*), intent(out) :: files_out(2)
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        real(dp), allocatable :: table(:, :)
+        character(len=label_len(outs)), allocatable :: labels(:)
+        integer :: np, ir, r1, r2
+
+        np = size(res%grid)
+        allocate(table(np * size(outs), 4), labels(np * size(outs)))
+        do ir = 1, size(outs)
+            r1 = (ir - 1) * np + 1
+            r2 = ir * np
+            labels(r1:r2) = outs(ir)%name
+            table(r1:r2, 1) = res%grid
+            table(r1:r2, 2) = res%psa(:, ir)
+            table(r1:r2, 3) = res%own_scale(ir) * res%psa(:, ir)
+            table(r1:r2, 4) = merge(0.0_dp, 1.0_dp, outs(ir)%ok)
+        end do
+        call write_tables(prefix, 'suite_spectra', [character(len=4096) :: &
+            suite_comments(path, 'the 5 % PSA of each record on the check grid, one row per ' &
+            //'record and period', cfg, outs, res), 'psa: as the record was scaled by ' &
+            //'&records; psa_own = own_scale x psa'], &
+            [character(len=7) :: 'name', 'period', 'psa', 'psa_own', 'status'], &
+            [character(len=1) :: '-', 's', 'g', 'g', '-'], table, files_out, stat, errmsg, &
+            labels=labels, kinds=[character(len=16) :: '', '', '', '', &
+            category_kind(status_names)])
+    end subroutine write_long
+
+    ! ------------------------------------------------------------------------------
+    ! Helpers
+    ! ------------------------------------------------------------------------------
+
+    !> Whether x is finite and in [lo, hi] (lo excluded with open_lo); else errmsg =
+    !> where//"name = x: rule" (false).
+    logical function in_range(where, name, x, lo, hi, open_lo, errmsg, rule)
+        character(len=*), intent(in) :: where, name, rule
+        real(dp), intent(in) :: x, lo, hi
+        logical, intent(in) :: open_lo
+        character(len=:), allocatable, intent(inout) :: errmsg
+        in_range = .not. outside(x, lo, hi, open_lo, .false.)
+        if (.not. in_range) errmsg = where//name//' = '//shortest_str(x)//': '//rule
+    end function in_range
+
+    !> The reason of a library message "name = value: reason" (the driver names the key
+    !> and the value as the input wrote them).
+    function reason(msg) result(s)
+        character(len=*), intent(in) :: msg
+        character(len=:), allocatable :: s
+        integer :: k
+        k = index(msg, ': ')
+        s = trim(msg(k + 2:))
+    end function reason
+
+    !> 1 for .true., 0 for .false. (a category code).
+    elemental real(dp) function flag(x)
+        logical, intent(in) :: x
+        flag = merge(1.0_dp, 0.0_dp, x)
+    end function flag
+
+    !> "A, B, C" of names in upper case.
+    pure function upper_list(names) result(s)
+        character(len=*), intent(in) :: names(:)
+        character(len=:), allocatable :: s
+        s = trim(upper(join(names)))
+    end function upper_list
+
+    !> The formula of the own scale factors.
+    function fit_text(fit) result(s)
+        integer, intent(in) :: fit
+        character(len=:), allocatable :: s
+        if (fit == SUITE_FIT_LINEAR) then
+            s = 'sum(psa target)/sum(psa^2) (M.2)'
+        else
+            s = 'exp(mean(ln target - ln psa)) (M.3)'
+        end if
+    end function fit_text
+
+    !> The zone's name in its map (Z1.., I..).
+    function zone_name(p) result(s)
+        type(eak_t), intent(in) :: p
+        character(len=:), allocatable :: s
+        if (p%zone_map == EAK_MAP_2003) then
+            s = trim(upper(ec8_zones(p%zone)))
+        else
+            s = trim(upper(eak_zones_2000(p%zone)))
+        end if
+    end function zone_name
+
+    !> Length of the longest record name (the label column).
+    pure integer function label_len(outs)
+        type(record_out_t), intent(in) :: outs(:)
+        integer :: i
+        label_len = 4
+        do i = 1, size(outs)
+            label_len = max(label_len, len(outs(i)%name))
+        end do
+    end function label_len
+
+end module driver_spectra
