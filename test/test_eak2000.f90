@@ -189,6 +189,8 @@ contains
                 if (allocated(error)) return
             end do
             call eak2000_elastic_spectrum(t, 0.24_dp, g, exponent=1.0_dp, phi_e=e, stat=stat)
+            call check(error, stat, SEISPULSE_SUCCESS, 'Phi_e at the corners')
+            if (allocated(error)) return
             do i = 1, 2
                 call check(error, e(3*i - 2), e(3*i - 1), rtol=1.0e-14_dp, message='Phi_e left')
                 if (allocated(error)) return
@@ -283,6 +285,8 @@ contains
 
     subroutine test_lower_bound(error)
         type(test_error), allocatable, intent(out) :: error
+        !> the crossing periods quoted in doc/eak2000.md section 5, soils A and B (s)
+        real(dp), parameter :: tc_doc(2) = [1.9318_dp, 2.8977_dp]
         real(dp) :: phi(7), phi0(7), tc, t(2), pb(2)
         integer :: stat, g, i
         do g = 1, 4
@@ -313,7 +317,11 @@ contains
             t = [tc*(1.0_dp - 1.0e-9_dp), tc*(1.0_dp + 1.0e-9_dp)]
             call eak2000_design_spectrum(t, 0.24_dp, g, q=3.5_dp, lower_bound=0.25_dp, &
                                          phi_d=pb, stat=stat)
+            call check(error, stat, SEISPULSE_SUCCESS)
+            if (allocated(error)) return
             call eak2000_design_spectrum(t, 0.24_dp, g, q=3.5_dp, phi_d=phi(1:2), stat=stat)
+            call check(error, stat, SEISPULSE_SUCCESS)
+            if (allocated(error)) return
             call check(error, pb(1) > 0.06_dp .and. abs(pb(1) - phi(1)) <= 0.0_dp, &
                        'just before the crossing: not floored')
             if (allocated(error)) return
@@ -321,8 +329,20 @@ contains
                        'just after the crossing: floored')
             if (allocated(error)) return
         end do
-        call check(error, abs(t2_ref(1)*(2.5_dp/3.5_dp/0.25_dp)**1.5_dp - 1.9318_dp) < 1.0e-4_dp, &
-                   'crossing of soil A at 1.93 s')
+        ! the crossings quoted in doc/eak2000.md section 5 (1.9318 s for A, 2.8977 s for B)
+        ! bracketed by the library: plateau branch just below, floor just above
+        do g = 1, 2
+            tc = tc_doc(g)
+            call eak2000_design_spectrum([tc - 1.0e-4_dp, tc + 1.0e-4_dp], 0.24_dp, g, &
+                                         q=3.5_dp, lower_bound=0.25_dp, phi_d=pb, stat=stat)
+            call check(error, stat, SEISPULSE_SUCCESS)
+            if (allocated(error)) return
+            call check(error, pb(1) > 0.06_dp, 'below the quoted crossing: (K.3) governs')
+            if (allocated(error)) return
+            call check(error, pb(2), 0.06_dp, rtol=0.0_dp, &
+                       message='above the quoted crossing: the floor governs')
+            if (allocated(error)) return
+        end do
     end subroutine test_lower_bound
 
     subroutine test_tables(error)
@@ -480,6 +500,13 @@ contains
         if (allocated(error)) return
         call bad_design(error, 'lower_bound = -0.1', 0.1_dp, 0.2_dp, 0.24_dp, b, 1.0_dp, 1.0_dp, &
                         1.0_dp, 5.0_dp, 0.0_dp, -0.1_dp)
+        if (allocated(error)) return
+        ! overflow is refused, not NaN/Inf with success: gamma_I A, and the floor
+        call bad_design(error, 'alpha = ', 0.1_dp, 0.2_dp, 10.0_dp, b, huge(1.0_dp), 1.0_dp, &
+                        1.0_dp, 5.0_dp, 0.0_dp, 0.0_dp)
+        if (allocated(error)) return
+        call bad_design(error, 'alpha = ', 0.1_dp, 0.2_dp, 1.0e300_dp, b, 1.0_dp, 1.0_dp, &
+                        1.0_dp, 5.0_dp, 0.0_dp, 1.0e10_dp)
         if (allocated(error)) return
         call bad_elastic(error, 'periods(2) = ', ieee_value(1.0_dp, ieee_positive_inf), b, &
                          5.0_dp, 2.0_dp/3.0_dp)

@@ -47,6 +47,30 @@ def as_scalar(name, value):
     return float(arr.reshape(-1)[0])
 
 
+def _is_bool(value):
+    if isinstance(value, (bool, np.bool_)):
+        return True
+    try:
+        return np.asarray(value).dtype.kind == "b"
+    except Exception:  # ragged lists and the like: as_float_array names them
+        return False
+
+
+def as_number(name, value):
+    """As :func:`as_scalar`, refusing bools (True is not the number 1 here)."""
+    if _is_bool(value):
+        raise InvalidInputError(f"{name} = {value!r}: must be a real number, not a bool")
+    return as_scalar(name, value)
+
+
+def as_number_array(name, value):
+    """As :func:`as_float_array`, refusing bools and arrays of them."""
+    if _is_bool(value):
+        raise InvalidInputError(f"{name}: must be a real number or an array of them, not "
+                                "bools")
+    return as_float_array(name, value)
+
+
 def names(table, codes, shape):
     """Integer codes from the Fortran layer as their names: a str for a 0-d result,
     else an array of the given shape."""

@@ -19,8 +19,11 @@
 
 Units: SI (unit weights kN/m^3, lengths m, thrusts kN/m, moments kNm/m), angles in
 DEGREES (theta is returned in radians), alpha = ag/g dimensionless, spectra in the units
-of ``ag``. ``kv`` is signed: kv > 0 is an upward inertia force, the effective gravity is
-g (1 - kv) and tan(theta) = kh / (1 - kv); check both signs of EN's kv.
+of ``ag``. Damping: the EC8 functions take ``xi_percent`` in PERCENT (5 = 5 %; a value in
+(0, 1) draws a UserWarning), the ``eak2000_*`` functions take ``damping`` as a RATIO
+(0.05 = 5 %). Bools are refused where numbers are expected. ``kv`` is signed: kv > 0 is
+an upward inertia force, the effective gravity is g (1 - kv) and tan(theta) = kh /
+(1 - kv); check both signs of EN's kv.
 
 Geometry: ``psi_deg`` is the inclination of the back face to the horizontal (90 =
 vertical; psi < 90 sets the top of the back face back from the heel, away from the
@@ -43,8 +46,11 @@ xc project's test, which cites eurocodeapplied.com).
 
 Table values (S, TB, TC, TD, avg/ag, beta = 0.2, r) are EN's RECOMMENDED values; a
 National Annex may change them; of the Greek National Annex only the seismic zones are
-implemented (:func:`reference_pga`). gamma_phi = 1.25 is recalled as EN 1998-5's recommended
-value (its NOTE was not verified); the default here is 1.0.
+implemented (:func:`reference_pga`): [PRDA24] states that the Greek NA adopted the 2003
+zonation map, three zones spanning 0.16-0.36 g; the middle value 0.24 g and the names
+Z1-Z3 are from press reports of the 2003 amendment (SECONDARY). gamma_phi = 1.25 is
+recalled as EN 1998-5's recommended value (its NOTE was not verified); the default here
+is 1.0.
 
 [TEXT ERROR?] The passive coefficient E.4 (delta = 0) as transcribed has the numerator
 sin^2(psi + phi_d - theta); a brute-force planar-wedge search gives sin^2(psi + theta -
@@ -59,17 +65,22 @@ EAK 2000 (the Greek seismic code, with the zones of its 2003 amendment): the des
 spectrum Phi_d (K.1)-(K.3) and an elastic spectrum Phi_e (:func:`eak2000_spectrum`), and
 its parameters (:func:`eak2000_parameters`, :data:`EAK_ZONES_2003`, :data:`EAK_ZONES_2000`,
 :data:`EAK_GROUNDS`, :data:`EAK_IMPORTANCE`); doc/eak2000.md. Its primary text could not
-be read: the formulas and the values of beta0, T1/T2, gamma_I and eta are SECONDARY (two
-implementations by one author group, which agree), the 2003 zones 0.16/0.24/0.36 g are
-from press reports and [PRDA24]. UNVERIFIED, and therefore parameters with stated
-defaults: the lower limit of eta (``eta_min``, default none), the rules for the foundation
-factor theta (default 1), a lower bound of Phi_d (``lower_bound``, default none), the
-long-period exponent of Phi_e (``elastic_exponent``, default 2/3); ground X is refused.
+be read: the formulas of Phi_d and the values of beta0, T1/T2, gamma_I and eta are
+SECONDARY (two implementations by one author group, which agree on them); for the 2003
+zones [PRDA24] gives three zones spanning 0.16-0.36 g, the middle value 0.24 g and the
+names Z1-Z3 are from press reports. Phi_e as a whole is UNVERIFIED (one implementation
+only; EAK may not define a separate elastic spectrum). UNVERIFIED, and therefore
+parameters with stated defaults: the lower limit of eta (``eta_min``, default none), the
+rules for the foundation factor theta (default 1), a lower bound of Phi_d
+(``lower_bound``, default none), the long-period exponent of Phi_e (``elastic_exponent``,
+default 2/3); ground X is refused. Defaults of :func:`eak2000_spectrum`: zone 'Z2',
+ground 'B', q = 1 (elastic-level ordinates); ``alpha`` with another zone is refused.
 There are still no EAK wall rules: its retaining-wall clause could not be found (give kh,
 kv directly, e.g. from EN 1998-5, with the driver's ``code = 'direct'``).
 """
 
 import numbers
+import warnings
 from collections import namedtuple
 
 import numpy as np
@@ -78,7 +89,8 @@ from . import _core
 from . import _fortran_codes as _f
 from ._seispulse import (sp_ec8_damping_correction, sp_ec8_design_spectrum,
                          sp_ec8_elastic_spectrum, sp_ec8_ground_parameters, sp_ec8_r_factor,
-                         sp_ec8_reference_pga, sp_ec8_rigid_thrust, sp_ec8_seismic_coefficients, sp_ec8_thrust,
+                         sp_ec8_reference_pga, sp_ec8_rigid_thrust, sp_ec8_seismic_coefficients,
+                         sp_ec8_thrust,
                          sp_ec8_vertical_ratio, sp_mononobe_okabe, sp_seed_whitman_increment,
                          sp_westergaard_pressure, sp_wood_thrust)
 from .errors import STATUS_ERRORS, InvalidInputError, NoSolutionError
@@ -115,7 +127,9 @@ _ANNEX_CODES = {"GR": _f.EC8_ANNEX_GR}
 NATIONAL_ANNEXES = tuple(_ANNEX_CODES)
 #: Reference peak ground acceleration a_gR on type A ground (g) of the seismic zones of
 #: the Greek National Annex to EN 1998-1: the 2003 zonation map, Z1 0.16, Z2 0.24,
-#: Z3 0.36 (doc/codes.md section 1). Read from the Fortran layer (ec8_reference_pga).
+#: Z3 0.36 ([PRDA24]: three zones spanning 0.16-0.36 g; 0.24 and the names Z1-Z3 from
+#: press reports, SECONDARY; doc/codes.md section 1). Read from the Fortran layer
+#: (ec8_reference_pga).
 GR_ZONES = {f"Z{z}": float(sp_ec8_reference_pga(_f.EC8_ANNEX_GR, z)[0]) for z in (1, 2, 3)}
 
 MononobeOkabe = namedtuple("MononobeOkabe", ["k", "theta"])
@@ -149,7 +163,16 @@ Table 3.2 (Type 1) or 3.3 (Type 2), recommended values."""
 
 
 def _scalar(name, value):
-    return _core.as_scalar(name, value)
+    return _core.as_number(name, value)
+
+
+def _warn_ratio(values):
+    """UserWarning when an xi_percent lies in (0, 1): probably a ratio given as percent."""
+    small = values[(values > 0.0) & (values < 1.0)]
+    if small.size:
+        x = float(small[0])
+        warnings.warn(f"xi_percent = {x!r}: xi_percent is in percent; {x:g} means {x:g} %, "
+                      f"did you mean {100.0 * x:g}?", UserWarning, stacklevel=3)
 
 
 def _spectrum_type(value):
@@ -400,16 +423,19 @@ def ground_parameters(spectrum_type, ground):
 
 
 def damping_correction(xi_percent):
-    """eta = sqrt(10 / (5 + xi)) >= 0.55 (EN 1998-1 (3.6)), xi in percent (>= 0): 1 at
-    5 %, the floor 0.55 from xi = 28.06 %. Float or array like ``xi_percent``."""
-    arr = _core.as_float_array("xi_percent", xi_percent)
+    """eta = sqrt(10 / (5 + xi)) >= 0.55 (EN 1998-1 (3.6)), xi in PERCENT (>= 0; 5 = 5 %,
+    not the ratio 0.05 that :func:`eak2000_spectrum` takes as ``damping``): 1 at 5 %, the
+    floor 0.55 from xi = 28.06 %. A value in (0, 1) draws a UserWarning (probably a
+    ratio). Float or array like ``xi_percent``."""
+    arr = _core.as_number_array("xi_percent", xi_percent)
+    _warn_ratio(arr.reshape(-1))
     eta, stat, msg = sp_ec8_damping_correction(np.ascontiguousarray(arr.reshape(-1)))
     _core.raise_for_status(stat, msg, indexed=_INDEXED)
     return float(eta[0]) if arr.shape == () else eta.reshape(arr.shape)
 
 
 def _periods(periods):
-    arr = _core.as_float_array("periods", periods)
+    arr = _core.as_number_array("periods", periods)
     return arr.shape, np.ascontiguousarray(arr.reshape(-1))
 
 
@@ -445,7 +471,9 @@ def reference_pga(zone, national_annex="GR"):
         Seismic zone of the National Annex.
     national_annex : {'GR'} or None
         'GR' (also None): the Greek National Annex to EN 1998-1, which adopted the 2003
-        zonation map [PRDA24]: Z1 0.16 g, Z2 0.24 g, Z3 0.36 g (:data:`GR_ZONES`).
+        zonation map: Z1 0.16 g, Z2 0.24 g, Z3 0.36 g (:data:`GR_ZONES`). [PRDA24] states
+        the adoption and three zones spanning 0.16-0.36 g; the middle value 0.24 g and the
+        names Z1-Z3 are from press reports of the 2003 amendment (SECONDARY).
 
     Returns
     -------
@@ -461,6 +489,8 @@ def reference_pga(zone, national_annex="GR"):
 
 def _design_ag(ag, zone, national_annex, importance):
     """ag of a spectrum: the given ag, or importance x a_gR of the zone (g)."""
+    if isinstance(importance, (bool, np.bool_)):
+        _scalar("importance", importance)        # refuses bools, naming importance
     gamma_i = _core.check_positive("importance", importance)
     if zone is None:
         if national_annex is not None:
@@ -497,10 +527,13 @@ def elastic_spectrum(periods, ag=None, spectrum_type=1, ground="A", xi_percent=5
     ground : {'A', 'B', 'C', 'D', 'E'}
         Ground type (Table 3.1); S, TB, TC, TD from :func:`ground_parameters`.
     xi_percent : float
-        Viscous damping (percent, >= 0); eta of :func:`damping_correction`.
+        Viscous damping in PERCENT (>= 0; 5 = 5 %, not the ratio 0.05 that
+        :func:`eak2000_spectrum` takes as ``damping``); eta of :func:`damping_correction`.
+        A value in (0, 1) draws a UserWarning ("did you mean 5?").
     zone : {'Z1', 'Z2', 'Z3'} or {1, 2, 3} or None, keyword-only
         Seismic zone of the National Annex, instead of ``ag``: ag = importance x a_gR in g
-        (:func:`reference_pga`; Greek NA Z1 0.16, Z2 0.24, Z3 0.36 g). Giving both ``ag``
+        (:func:`reference_pga`; Greek NA Z1 0.16, Z2 0.24, Z3 0.36 g: [PRDA24] gives
+        0.16-0.36 g, the value 0.24 and the names from press reports). Giving both ``ag``
         and ``zone`` is an error.
     national_annex : {'GR'} or None, keyword-only
         The National Annex of ``zone``; None means 'GR' (the only one with zones here).
@@ -523,6 +556,7 @@ def elastic_spectrum(periods, ag=None, spectrum_type=1, ground="A", xi_percent=5
     a = _design_ag(ag, zone, national_annex, importance)
     shape, t = _periods(periods)
     xi = _scalar("xi_percent", xi_percent)
+    _warn_ratio(np.array([xi]))
     se, stat, msg = sp_ec8_elastic_spectrum(t, a, _spectrum_type(spectrum_type),
                                             _ground(ground), xi)
     _core.raise_for_status(stat, msg, indexed=_INDEXED)

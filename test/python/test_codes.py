@@ -19,6 +19,7 @@ against computations that do not use the library:
 * bad input (messages name the parameter).
 """
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -457,6 +458,37 @@ def test_design_floor_and_damping():
     assert C.elastic_spectrum(0.3, 1.0, 1, "A", 10.0) == pytest.approx(
         2.5 * math.sqrt(2 / 3), rel=1e-15)
     assert C.elastic_spectrum(0.3, 1.0, 1, "a") == 2.5
+
+
+def test_xi_percent_looking_like_a_ratio_warns():
+    """xi_percent is in percent: 0 < xi < 1 (e.g. 0.05 meant as 5 %) draws a UserWarning
+    naming the value; 0, 1 and 5 do not. The value is still used as given: eta(0.05 %) =
+    sqrt(10/5.05) (3.6), so Se(0.3 s) = 0.24 1.2 2.5 eta on ground B, Type 1."""
+    msg = r"^xi_percent = 0.05: xi_percent is in percent; 0.05 means 0.05 %, did you mean 5\?"
+    with pytest.warns(UserWarning, match=msg):
+        se = C.elastic_spectrum(0.3, 0.24, 1, "B", 0.05)
+    assert se == pytest.approx(0.24 * 1.2 * 2.5 * math.sqrt(10 / 5.05), rel=1e-14)
+    with pytest.warns(UserWarning, match=r"^xi_percent = 0.5: .*did you mean 50\?"):
+        eta = C.damping_correction([5.0, 0.5])
+    assert eta[1] == pytest.approx(math.sqrt(10 / 5.5), rel=1e-15)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        C.elastic_spectrum(0.3, 0.24, 1, "B", 5.0)
+        C.elastic_spectrum(0.3, 0.24, 1, "B", 0.0)
+        C.damping_correction([0.0, 1.0, 5.0])
+
+
+@pytest.mark.parametrize("call,start", [
+    (lambda: C.elastic_spectrum(0.1, True), "ag = True: must be a real number, not a bool"),
+    (lambda: C.elastic_spectrum(0.1, 1.0, xi_percent=True), "xi_percent = True"),
+    (lambda: C.design_spectrum(0.1, 1.0, q=True), "q = True"),
+    (lambda: C.design_spectrum(0.1, zone="Z2", importance=True), "importance = True"),
+    (lambda: C.elastic_spectrum([True, False], 1.0), "periods: .*not bools"),
+    (lambda: C.damping_correction(np.array([True])), "xi_percent: .*not bools"),
+])
+def test_spectra_refuse_bools(call, start):
+    with pytest.raises(InvalidInputError, match="^" + start):
+        call()
 
 
 @pytest.mark.parametrize("call,start", [

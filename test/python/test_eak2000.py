@@ -107,7 +107,26 @@ def test_parameters():
     p = codes.eak2000_parameters(zone="IV", ground="D", importance="III", damping=0.1,
                                  zone_map="2000")
     assert (p.alpha, p.gamma_i, p.t1, p.t2, p.beta0) == (0.36, 1.15, 0.20, 1.20, 2.5)
-    assert codes.eak2000_parameters(alpha=0.3, zone="nonsense").alpha == 0.3
+    # alpha with the default zone 'Z2' (indistinguishable from no zone): alpha is used
+    assert codes.eak2000_parameters(alpha=0.3).alpha == 0.3
+    assert codes.eak2000_parameters(alpha=0.3, zone="Z2").alpha == 0.3
+    assert codes.eak2000_parameters(alpha=0.3, zone_map="2000").alpha == 0.3
+
+
+@pytest.mark.parametrize("fun", [codes.eak2000_spectrum, codes.eak2000_parameters])
+def test_zone_and_alpha_not_both(fun):
+    """alpha with a zone other than the default is refused; an invalid zone is refused as
+    such even with alpha."""
+    args = (0.3,) if fun is codes.eak2000_spectrum else ()
+    for zone, zone_map in (("Z3", "2003"), ("Z1", "2003"), (2, "2003"), ("IV", "2000")):
+        with pytest.raises(InvalidInputError,
+                           match=rf"^zone = {zone!r} and alpha = 0.3: give zone or alpha, "
+                                 r"not both"):
+            fun(*args, zone=zone, zone_map=zone_map, alpha=0.3)
+    with pytest.raises(InvalidInputError, match=r"^zone = 'nonsense': unknown zone"):
+        fun(*args, zone="nonsense", alpha=0.3)
+    with pytest.raises(InvalidInputError, match=r"^zone = 'IV': unknown zone of the 2003 map"):
+        fun(*args, zone="IV", alpha=0.3)
 
 
 def test_zone_maps():
@@ -157,10 +176,15 @@ def test_lower_bound():
     assert a[0] > 0.06 and a[1] == pytest.approx(0.06) and a[2] == pytest.approx(0.06)
     b = codes.eak2000_spectrum([2.0, 3.0], ground="B", q=3.5, lower_bound=0.25)
     assert b[0] > 0.06 and b[1] == pytest.approx(0.06)
-    # the crossing period T2 (plateau / floor)^(3/2): 1.93 s (A), 2.90 s (B)
-    for ground, tc_expected in (("A", 1.9318), ("B", 2.8977)):
+    # the crossings quoted in doc/eak2000.md section 5 (1.9318 s for A, 2.8977 s for B),
+    # bracketed by the library: (K.3) governs 1e-4 s below, the floor 1e-4 s above
+    for ground, tc_doc in (("A", 1.9318), ("B", 2.8977)):
+        v = codes.eak2000_spectrum([tc_doc - 1e-4, tc_doc + 1e-4], ground=ground, q=3.5,
+                                   lower_bound=0.25)
+        assert v[0] > 0.06 and v[1] == 0.06
+    # and at T2 (plateau / floor)^(3/2) computed here, to 1e-9
+    for ground in ("A", "B"):
         tc = CORNERS[ground][1] * (2.5 / 3.5 / 0.25) ** 1.5
-        assert tc == pytest.approx(tc_expected, abs=1e-4)
         v = codes.eak2000_spectrum([tc * (1 - 1e-9), tc * (1 + 1e-9)], ground=ground, q=3.5,
                                    lower_bound=0.25)
         assert v[0] > 0.06 and v[1] == pytest.approx(0.06, rel=1e-15)
@@ -194,16 +218,50 @@ def test_lower_bound():
     (dict(kind="elastic", lower_bound=0.25), r"^lower_bound = 0.25: kind = 'elastic'"),
     (dict(kind="elastic", elastic_exponent=0.0), r"^elastic_exponent = 0.*> 0"),
     (dict(elastic_exponent=1.0), r"^elastic_exponent = 1.0: applies to kind = 'elastic'"),
+    (dict(elastic_exponent=2 / 3 + 1e-9), r"^elastic_exponent = 0.66.*kind = 'elastic'"),
+    (dict(zone="Z3", alpha=0.2), r"^zone = 'Z3' and alpha = 0.2: give zone or alpha"),
+    (dict(q=True), r"^q = True: must be a real number, not a bool"),
+    (dict(theta=True), r"^theta = True"),
+    (dict(alpha=True), r"^alpha = True"),
+    (dict(damping=False), r"^damping = False"),
+    (dict(lower_bound=True), r"^lower_bound = True"),
+    (dict(eta_min=np.bool_(False)), r"^eta_min = "),
+    (dict(kind="elastic", elastic_exponent=True), r"^elastic_exponent = True"),
+    (dict(alpha=10.0, importance=1e308), r"^alpha = 10.*the spectrum overflows"),
+    (dict(alpha=1e308), r"^alpha = .*the spectrum overflows"),
+    (dict(alpha=1e300, lower_bound=1e10), r"^alpha = .*the spectrum overflows"),
 ])
 def test_bad_input(kwargs, pattern):
     with pytest.raises(InvalidInputError, match=pattern):
         codes.eak2000_spectrum([0.1, 0.5], **kwargs)
 
 
+def test_edge_cases():
+    """damping 0 (eta = sqrt(7/2), no cap), alpha 0 (zeros, also with a floor), a huge
+    period (tiny but finite and positive), an exponent within 1e-12 of 2/3 for Phi_d."""
+    eta0 = math.sqrt(3.5)
+    assert codes.eak2000_parameters(damping=0.0).eta == pytest.approx(eta0, rel=1e-15)
+    got = codes.eak2000_spectrum([0.0, 0.3, 2.0], damping=0.0)
+    np.testing.assert_allclose(got, phi_ref([0.0, 0.3, 2.0], 0.24, "B", xi=0.0), rtol=2e-15)
+    assert got[1] == pytest.approx(0.24 * eta0 * 2.5, rel=1e-15)
+    for kind, kw in (("design", dict(q=3.0, lower_bound=0.25)), ("elastic", {})):
+        z = codes.eak2000_spectrum([0.0, 0.3, 5.0], alpha=0.0, kind=kind, **kw)
+        assert np.array_equal(z, [0.0, 0.0, 0.0])
+    big = codes.eak2000_spectrum(1e300, q=3.5)
+    assert big == pytest.approx(0.24 * 2.5 / 3.5 * (0.6 / 1e300) ** (2 / 3), rel=1e-13)
+    assert math.isfinite(big) and big > 0.0
+    t = [0.1, 0.5, 3.0]
+    assert np.array_equal(codes.eak2000_spectrum(t, elastic_exponent=1 - 1 / 3),
+                          codes.eak2000_spectrum(t))
+    np.testing.assert_allclose(codes.eak2000_spectrum(t, kind="elastic", elastic_exponent=0.3),
+                               phi_ref(t, 0.24, "B", p=0.3), rtol=2e-15)
+
+
 @pytest.mark.parametrize("periods,pattern", [
     ([0.1, -0.5], r"^periods\[1\] = -0.5: the period \(s\) must be finite and >= 0"),
     ([math.nan], r"^periods\[0\] = NaN"),
     (["a"], r"^periods: must be a real number"),
+    ([True, False], r"^periods: .*not bools"),
 ])
 def test_bad_periods(periods, pattern):
     with pytest.raises(InvalidInputError, match=pattern):

@@ -722,21 +722,24 @@ contains
 
     !> Reference peak ground acceleration a_gR on type A ground of a seismic zone of a
     !> National Annex to EN 1998-1 (doc/codes.md section 1). EC8_ANNEX_GR: zones 1, 2, 3
-    !> (Z1, Z2, Z3) -> 0.16, 0.24, 0.36 g, the 2003 zonation map that the Greek National
-    !> Annex adopted [PRDA24]. Only the zones are taken from the annex: the spectra keep
+    !> (Z1, Z2, Z3) -> 0.16, 0.24, 0.36 g. [PRDA24] states that the Greek National Annex
+    !> adopted the 2003 zonation map, three zones spanning 0.16-0.36 g; the middle value
+    !> 0.24 g and the names Z1-Z3 are from press reports of the 2003 amendment (SECONDARY,
+    !> doc/eak2000.md section 3). Only the zones are taken from the annex: the spectra keep
     !> EN's recommended S, TB, TC, TD, beta and eta. EC8_ANNEX_RECOMMENDED has no zones
     !> (EN leaves the map to the annexes) and is refused: give ag directly. The design
     !> ground acceleration is ag = gamma_I a_gR (EN 1998-1 3.2.1(3), not verified).
-    !> agr is NaN on error.
+    !> agr is 0 on error (as the outputs of the spectra and ec8_ground_parameters).
     pure subroutine ec8_reference_pga(annex, zone, agr, stat, errmsg)
         integer, intent(in) :: annex          !! EC8_ANNEX_GR (EC8_ANNEX_RECOMMENDED is refused)
         integer, intent(in) :: zone           !! seismic zone, 1..3 for EC8_ANNEX_GR (Z1..Z3)
         real(dp), intent(out) :: agr          !! reference PGA a_gR on type A ground, g
         integer, intent(out) :: stat          !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
         character(len=*), intent(inout), optional :: errmsg  !! message naming the parameter
-        !> Greek National Annex zones Z1, Z2, Z3, g [PRDA24]
+        !> Greek National Annex zones Z1, Z2, Z3, g ([PRDA24]: 0.16-0.36 g; 0.24 g and
+        !> the names from press reports, SECONDARY)
         real(dp), parameter :: gr_agr(3) = [0.16_dp, 0.24_dp, 0.36_dp]
-        agr = ieee_value(1.0_dp, ieee_quiet_nan)
+        agr = 0.0_dp
         stat = SEISPULSE_SUCCESS
         select case (annex)
         case (EC8_ANNEX_GR)

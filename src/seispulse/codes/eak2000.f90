@@ -7,12 +7,15 @@
 !> only the table of contents of its English translation (clause numbers §2.3.1-§2.3.7).
 !> The formulas (K.1)-(K.3) and the values of beta0, T1, T2, gamma_I and eta are
 !> SECONDARY: they are those of two implementations written by one author group (so not
-!> independent of each other), which agree. The 2003 zones (0.16/0.24/0.36 g) are from
-!> press reports and one peer-reviewed article [PRDA24]; the original four-zone map from
-!> one of those implementations and the press. UNVERIFIED items are parameters with
-!> documented defaults: the lower limit of eta (eta_min, default none), the rules for the
-!> foundation factor theta (default 1), the lower bound of Phi_d (lower_bound, default
-!> none), the long-period exponent of Phi_e (default 2/3 = Phi_d's), and ground X (refused).
+!> independent of each other), which agree on them. The 2003 zones: [PRDA24] states that
+!> the 2003 map has three zones spanning 0.16-0.36 g; the middle value 0.24 g and the names
+!> Z1-Z3 are from press reports of the 2003 amendment (SECONDARY). The original four-zone
+!> map is from one of those implementations and the press. The elastic spectrum Phi_e as a
+!> whole is UNVERIFIED (one implementation only; EAK may not define a separate elastic
+!> spectrum). UNVERIFIED items are parameters with documented defaults: the lower limit of
+!> eta (eta_min, default none), the rules for the foundation factor theta (default 1), the
+!> lower bound of Phi_d (lower_bound, default none), the long-period exponent of Phi_e
+!> (default 2/3 = Phi_d's), and ground X (refused).
 !> EAK 2000's retaining-wall clause was not found: no wall rule of EAK is implemented.
 !>
 !> Units: periods T1, T2, T in s; alpha = A/g dimensionless; the spectra in g (units of
@@ -33,13 +36,15 @@ module seispulse_eak2000
     public :: EAK_GROUND_A, EAK_GROUND_B, EAK_GROUND_C, EAK_GROUND_D, EAK_GROUND_X
     public :: EAK_MAP_2003, EAK_MAP_2000, EAK_BETA0
 
-    !> EAK 2000 §2.3.6 soil categories A, B, C, D (called A, B, Gamma, Delta in Greek) and X.
+    !> EAK 2000 §2.3.6 soil categories A, B, C, D and X (Latin letters; the Greek letters of
+    !> the code's text are unverified).
     !> X is refused (it calls for a site-specific study: unverified).
     integer, parameter :: EAK_GROUND_A = 1, EAK_GROUND_B = 2, EAK_GROUND_C = 3, &
                           EAK_GROUND_D = 4, EAK_GROUND_X = 5
     !> The zone map (§2.3.3): the 2003 amendment (in force from 1 January 2004), zones
     !> 1..3 = Z1/Z2/Z3 = 0.16/0.24/0.36 g; the original EAK 2000 map, zones 1..4 =
-    !> I/II/III/IV = 0.12/0.16/0.24/0.36 g. Both SECONDARY (doc/eak2000.md section 3).
+    !> I/II/III/IV = 0.12/0.16/0.24/0.36 g (I..IV are seispulse's labels). Both SECONDARY
+    !> (doc/eak2000.md section 3).
     integer, parameter :: EAK_MAP_2003 = 1, EAK_MAP_2000 = 2
     !> Spectral amplification beta0 (SECONDARY: both implementations).
     real(dp), parameter :: EAK_BETA0 = 2.5_dp
@@ -149,10 +154,11 @@ contains
     end subroutine eak2000_importance_factor
 
     !> Damping correction eta = max(sqrt(7/(2 + xi)), eta_min), xi in percent (K.4)
-    !> (SECONDARY; eta(5 %) = 1). eta_min is optional, default 0 (no limit, as in both
-    !> secondary sources); the lower limit of EAK itself is UNVERIFIED (0.7 is the
-    !> historical limit of ENV 1998 with this form). NaN for xi < 0 or NaN, or eta_min
-    !> outside [0, 1] (eak2000_check_damping says why).
+    !> (SECONDARY; eta(5 %) = 1). eta_min is optional, default 0 (none). Neither secondary
+    !> implementation applies a limit; one implementation's docstring states eta >= 0.55
+    !> without applying it; 0.7 is recalled as ENV 1998's limit for this form. All
+    !> UNVERIFIED. NaN for xi < 0 or NaN, or eta_min outside [0, 1] (eak2000_check_damping
+    !> says why).
     elemental real(dp) function eak2000_damping_correction(xi_percent, eta_min) result(eta)
         real(dp), intent(in) :: xi_percent         !! viscous damping ratio, percent, >= 0
         real(dp), intent(in), optional :: eta_min  !! lower limit of eta, in [0, 1]; default 0
@@ -195,9 +201,11 @@ contains
     !>   T > T2:       gamma_I A eta theta beta0/q (T2/T)^(2/3)            (K.3)
     !> and Phi_d >= lower_bound gamma_I A (K.5) when lower_bound > 0 (a floor of 0.25 is
     !> recalled but UNVERIFIED; default 0 = none, as both secondary sources). Phi_d(0) =
-    !> gamma_I A; for q > eta theta beta0 (K.1) slopes down to the plateau. The optional
-    !> arguments take the defaults of Python's `codes.eak2000_spectrum`; when one is
-    !> omitted, pass phi_d and stat by keyword.
+    !> gamma_I A (for lower_bound <= 1); for q > eta theta beta0 (K.1) slopes down to the
+    !> plateau. Inputs whose gamma_I A, plateau or floor overflow are refused (stat
+    !> SEISPULSE_INVALID_INPUT), never a NaN or Inf with success; on error phi_d = 0. The
+    !> optional arguments take the defaults of Python's `codes.eak2000_spectrum`; when one
+    !> is omitted, pass phi_d and stat by keyword.
     pure subroutine eak2000_design_spectrum(periods, alpha, ground, importance, q, theta, &
                                             xi_percent, eta_min, lower_bound, phi_d, stat, &
                                             errmsg)
@@ -209,14 +217,14 @@ contains
         !> behaviour factor q, finite, >= 1; default 1
         real(dp), intent(in), optional :: q
         !> foundation factor theta, in (0, 1]; default 1 (its rules are UNVERIFIED; the
-        !> secondary source offers 0.8-1.0)
+        !> secondary source offers 0.8-1.0; values below 0.8 have no source at all)
         real(dp), intent(in), optional :: theta
         !> viscous damping, percent, >= 0; default 5 (eta = 1)
         real(dp), intent(in), optional :: xi_percent
         !> lower limit of eta, in [0, 1]; default 0 (none; EAK's own limit UNVERIFIED)
         real(dp), intent(in), optional :: eta_min
         !> floor factor of Phi_d (times gamma_I A), finite, >= 0; default 0 (none;
-        !> EAK's floor is UNVERIFIED)
+        !> EAK's floor is UNVERIFIED; a factor above 1 lifts Phi_d(0) above gamma_I A)
         real(dp), intent(in), optional :: lower_bound
         real(dp), intent(out) :: phi_d(:)   !! Phi_d(T), g (size of periods)
         integer, intent(out) :: stat        !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
@@ -229,9 +237,11 @@ contains
 
     !> Elastic spectrum Phi_e(T) (doc/eak2000.md section 2): (K.1)-(K.3) with q = theta = 1,
     !> no floor, and the long-period branch gamma_I A eta beta0 (T2/T)^exponent (K.6).
-    !> UNVERIFIED: whether EAK 2000 defines an elastic spectrum beyond Phi_d with q = theta
-    !> = 1, and its exponent; the default 2/3 makes Phi_e that Phi_d, exponent = 1 is what
-    !> one secondary implementation uses. The optional arguments take the defaults of
+    !> Phi_e as a whole is UNVERIFIED: it is in one secondary implementation only, and
+    !> whether EAK 2000 defines an elastic spectrum beyond Phi_d with q = theta = 1 (and its
+    !> exponent) is unknown; the default 2/3 makes Phi_e that Phi_d, exponent = 1 is what
+    !> one secondary implementation uses. Overflow is refused as in
+    !> eak2000_design_spectrum; on error phi_e = 0. The optional arguments take the defaults of
     !> Python's `codes.eak2000_spectrum(kind='elastic')`; when one is omitted, pass phi_e
     !> and stat by keyword.
     pure subroutine eak2000_elastic_spectrum(periods, alpha, ground, importance, xi_percent, &
@@ -257,7 +267,8 @@ contains
     end subroutine eak2000_elastic_spectrum
 
     !> Both spectra: checks, then (K.1)-(K.3) with the long-period exponent `expo` and the
-    !> floor lower_bound gamma_I A (K.5). On error out = 0.
+    !> floor lower_bound gamma_I A (K.5). Refuses gamma_I A, the plateau or the floor that
+    !> overflow (not finite). On error out = 0.
     pure subroutine eak_spectrum(periods, alpha, ground, gamma_i, q, theta, xi_percent, eta_min, &
                                  lower_bound, expo, outname, out, stat, errmsg)
         real(dp), intent(in) :: periods(:), alpha
@@ -267,7 +278,7 @@ contains
         real(dp), intent(out) :: out(:)
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
-        real(dp) :: t1, t2, eta, a, plateau, floor, t
+        real(dp) :: t1, t2, eta, a, plateau, floor, t, peak
         integer :: i
         out = 0.0_dp
         call check_ground(ground, stat, errmsg)
@@ -303,9 +314,22 @@ contains
         t1 = tab_t1(ground)
         t2 = tab_t2(ground)
         eta = eak2000_damping_correction(xi_percent, eta_min)
+        ! gamma_I A max(1, eta theta beta0/q, lower_bound) bounds every ordinate: tested in
+        ! logarithms (no overflow), a margin of 1e-6 below the largest double
+        peak = max(1.0_dp, eta*theta*EAK_BETA0/q, lower_bound)
+        if (alpha > 0.0_dp) then
+            if (log(gamma_i) + log(alpha) + log(peak) > log(big) - 1.0e-6_dp) then
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'alpha = '// &
+                               num_str(alpha)//', importance = '//num_str(gamma_i)// &
+                               ': the spectrum overflows (gamma_I A, gamma_I A eta theta '// &
+                               'beta0/q and lower_bound gamma_I A must be finite)')
+                return
+            end if
+        end if
         a = gamma_i*alpha
         plateau = a*eta*theta*EAK_BETA0/q
-        floor = lower_bound*a
+        floor = 0.0_dp
+        if (lower_bound > 0.0_dp) floor = lower_bound*a
         do i = 1, size(periods)
             t = periods(i)
             if (t <= t1) then
