@@ -8,13 +8,15 @@
 !> the target, the grid, the fit; `records_from` reads the &records group of another
 !> input file). Tables <output>_spectra (with &spectra), and with &suite:
 !> <output>_suite (one-row summary), <output>_suite_records, <output>_suite_mean,
-!> <output>_suite_spectra. Everything is checked before any record is read; records are
-!> read one at a time and only their 5 % PSA on the check grid is kept. A record that
-!> cannot be read or analysed fails its rows (status failed; reported on stderr) and the
-!> check is made on the others if at least min_records remain (else the summary holds
-!> NaN, status failed); run_spectra then returns ROWS_FAILED (exit status 1). The numbers
-!> come from seispulse_codes, seispulse_eak2000, seispulse_record_suite and
-!> seispulse_sdof_sim; the driver only reads, checks and writes.
+!> <output>_suite_spectra. Everything is checked before any record is read (also that no
+!> two tables get one file name); records are read one at a time and only their 5 % PSA
+!> on the check grid is kept. A record that cannot be read or analysed fails its rows
+!> (status failed; reported on stderr) and fails the check (check fail, status failed:
+!> the suite checked is not the one listed); the figures are those of the others if at
+!> least min_records remain (else NaN); run_spectra then returns ROWS_FAILED (exit
+!> status 1). The numbers come from seispulse_codes, seispulse_eak2000,
+!> seispulse_record_suite and seispulse_sdof_sim; the driver only reads, checks and
+!> writes.
 module driver_spectra
     use, intrinsic :: iso_fortran_env, only: error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan

@@ -520,8 +520,8 @@ def test_suite_header_notes(driver, tmp_path):
     factors on top of &records; warnings (stderr and header) for 2 T1 beyond 4 s and
     beyond the longest record, and for &spectra periods beyond 4 s."""
     with_records(tmp_path)
-    proc = run(driver, tmp_path, RUN + RECS
-               + "&suite t1 = 0.4, target = 'EAK' /\n&eak zone = 'Z3', importance_class = 'III' /\n")
+    proc = run(driver, tmp_path, RUN + RECS + "&suite t1 = 0.4, target = 'EAK' /\n"
+               "&eak zone = 'Z3', importance_class = 'III' /\n")
     assert proc.returncode == 0, proc.stderr
     head = (tmp_path / "o_suite.txt").read_text()
     assert "at T = 0 (gamma_I A): 0.414 g" in head and "a_g S" not in head
