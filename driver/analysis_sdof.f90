@@ -33,7 +33,7 @@ module driver_sdof
                              status_names
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
-                              records_missing, record_line, failed_records
+                              records_missing, record_line, failed_records, label_len
     use driver_sdof_common, only: max_periods, max_dampings, check_dampings
     use driver_axis, only: axis_values
     use driver_echo, only: echo_unit
@@ -832,15 +832,5 @@ contains
             files_out, stat, errmsg, labels=labels, kinds=[character(len=16) :: '', '', '', '', &
             '', '', '', '', category_kind(status_names)])
     end subroutine write_history
-
-    !> Length of the longest record name (the label column).
-    pure integer function label_len(outs)
-        type(record_out_t), intent(in) :: outs(:)
-        integer :: i
-        label_len = 1
-        do i = 1, size(outs)
-            label_len = max(label_len, len(outs(i)%name))
-        end do
-    end function label_len
 
 end module driver_sdof

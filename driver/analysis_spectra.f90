@@ -8,16 +8,19 @@
 !> the target, the grid, the fit; `records_from` reads the &records group of another
 !> input file). Tables <output>_spectra (with &spectra), and with &suite:
 !> <output>_suite (one-row summary), <output>_suite_records, <output>_suite_mean,
-!> <output>_suite_spectra. Everything is checked before any record is read; records are
-!> read one at a time and only their 5 % PSA on the check grid is kept. A record that
-!> cannot be read or analysed fails its rows (status failed; reported on stderr) and the
-!> check is made on the others if at least min_records remain (else the summary holds
-!> NaN, status failed); run_spectra then returns ROWS_FAILED (exit status 1). The numbers
-!> come from seispulse_codes, seispulse_eak2000, seispulse_record_suite and
-!> seispulse_sdof_sim; the driver only reads, checks and writes.
+!> <output>_suite_spectra. Everything is checked before any record is read (also that no
+!> two tables get one file name); records are read one at a time and only their 5 % PSA
+!> on the check grid is kept. A record that cannot be read or analysed fails its rows
+!> (status failed; reported on stderr) and fails the check (check fail, status failed:
+!> the suite checked is not the one listed); the figures are those of the others if at
+!> least min_records remain (else NaN); run_spectra then returns ROWS_FAILED (exit
+!> status 1). The numbers come from seispulse_codes, seispulse_eak2000,
+!> seispulse_record_suite and seispulse_sdof_sim; the driver only reads, checks and
+!> writes.
 module driver_spectra
+    use, intrinsic :: iso_fortran_env, only: error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-    use seispulse, only: dp, shortest_str, SEISPULSE_SUCCESS, int_str, outside, upper, &
+    use seispulse, only: dp, shortest_str, g_str, SEISPULSE_SUCCESS, int_str, outside, upper, &
                          STANDARD_GRAVITY, sdof_spectrum, pseudo_spectra, SDOF_PEAKS_EXACT, &
                          ec8_elastic_spectrum, ec8_design_spectrum, ec8_ground_parameters, &
                          ec8_damping_correction, EC8_SPECTRUM_TYPE_1, EC8_SPECTRUM_TYPE_2, &
@@ -25,7 +28,7 @@ module driver_spectra
                          eak2000_ground_parameters, eak2000_zone_acceleration, &
                          eak2000_importance_factor, eak2000_damping_correction, &
                          eak2000_design_spectrum, eak2000_elastic_spectrum, EAK_GROUND_A, &
-                         EAK_GROUND_X, EAK_MAP_2003, EAK_MAP_2000, EAK_BETA0, &
+                         EAK_MAP_2003, EAK_MAP_2000, EAK_BETA0, &
                          suite_check_t, suite_check_periods, ec8_suite_check, &
                          SUITE_FIT_LINEAR, SUITE_FIT_LOG
     use driver_namelist_scan, only: nml_group, scan_file
@@ -33,11 +36,11 @@ module driver_spectra
                             read_optional, given, list_item, name_index, ROWS_FAILED, &
                             missing_group, output_located
     use driver_tables, only: write_tables, delete_files, say_written, category_kind, &
-                             status_names
+                             status_names, table_path
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
                               records_missing, record_line, failed_records, resolve, &
-                              count_strings
+                              count_strings, label_len
     use driver_sdof_common, only: max_periods
     use driver_axis, only: axis_values
     use driver_echo, only: echo_unit, echo_path
@@ -69,6 +72,8 @@ module driver_spectra
     character(len=5), parameter :: code_names(3) = [character(len=5) :: 'ec8_1', 'ec8_2', 'eak']
     character(len=7), parameter :: kind_names(3) = [character(len=7) :: 'elastic', 'design', &
         'both']
+    character(len=5), parameter :: code_names_upper(3) = [character(len=5) :: 'EC8_1', &
+        'EC8_2', 'EAK']
     character(len=6), parameter :: fit_names(2) = [character(len=6) :: 'linear', 'log']
     character(len=1), parameter :: ec8_grounds(5) = ['a', 'b', 'c', 'd', 'e']
     !> EAK ground names: A..D, and X (refused by the library with its reason).
@@ -82,11 +87,18 @@ module driver_spectra
     !> Names of the pass/fail and no/yes category columns.
     character(len=4), parameter :: check_names(0:1) = [character(len=4) :: 'fail', 'pass']
     character(len=3), parameter :: yes_names(0:1) = [character(len=3) :: 'no', 'yes']
+    !> The rule that sets common_scale: (b) the PGA, (c) the spectrum.
+    character(len=8), parameter :: rule_names(0:1) = [character(len=8) :: 'pga', 'spectrum']
 
     !> Most codes in `codes` (each once: 3), with room to find one given twice.
     integer, parameter :: max_codes = 10
     !> The largest double (no upper bound).
     real(dp), parameter :: big = huge(1.0_dp)
+    !> The rule of a damping ratio (&ec8, &eak; as &sdof's).
+    character(len=*), parameter :: damping_rule = 'must be a damping ratio in [0, 1) ' &
+        //'(a ratio: 0.05 = 5 %)'
+    !> Longest period (s) at which EN 1998-1 states the elastic spectrum.
+    real(dp), parameter :: en_max_period = 4.0_dp
     !> Damping ratio of the spectra of the records and of the target (the check, 5 %).
     real(dp), parameter :: check_damping = 0.05_dp
 
@@ -309,8 +321,8 @@ contains
     end subroutine read_suite
 
     !> Read and check the groups, compute every table, write them; print where they
-    !> went. stat: 0, ROWS_FAILED (tables written, errmsg says which records failed), or
-    !> > 0 for an input or output error (nothing written).
+    !> went. stat: 0, ROWS_FAILED (tables written, errmsg says which records failed or
+    !> why no check was made), or > 0 for an input or output error (nothing written).
     subroutine run_spectra(path, groups, prefix, stat, errmsg)
         character(len=*), intent(in) :: path              !! input file (for messages)
         type(nml_group), intent(in) :: groups(:)          !! scanned groups
@@ -322,9 +334,72 @@ contains
         type(record_out_t), allocatable :: outs(:)
         type(suite_res_t) :: res
         real(dp), allocatable :: table(:, :)
-        character(len=512) :: files(2, 5)
-        integer :: nfailed, k, nwritten
-        logical :: have(5)
+        character(len=4096), allocatable :: table_notes(:), suite_notes(:)
+        integer :: nfailed
+
+        call check_input(path, groups, prefix, gs, gc, gk, gu, gr, cfg, stat, errmsg)
+        if (stat /= 0) return
+        stat = 1
+
+        ! --- the code spectra (every one is computed before anything is written; a
+        ! library refusal is an input error placed at the code's group)
+        if (cfg%table) then
+            call spectra_table(path, gc, gk, cfg, table, errmsg)
+            if (len(errmsg) > 0) return
+        end if
+        if (cfg%suite) then
+            call suite_grid(path, gc, gk, gu, cfg, res, errmsg)
+            if (len(errmsg) > 0) return
+        end if
+
+        ! --- echo the effective input
+        if (cfg%table) call echo_spectra(cfg)
+        if (find_group(groups, 'ec8') > 0) call echo_ec8(cfg%ec8)
+        if (find_group(groups, 'eak') > 0) call echo_eak(cfg%eak)
+        if (cfg%suite) then
+            call echo_suite(cfg)
+            if (len(cfg%records_from) == 0) call echo_records(cfg%recs, cfg%slammer_rounding)
+        end if
+
+        call range_notes(path, gs, gu, cfg, table_notes, suite_notes)
+
+        ! --- the records, one at a time, and the check
+        nfailed = 0
+        if (cfg%suite) then
+            call compute_suite(cfg, outs, res)
+            nfailed = count(.not. outs%ok)
+            call duration_note(path, gu, cfg, outs, suite_notes)
+        end if
+
+        ! --- write
+        call write_all(path, prefix, cfg, table, outs, res, table_notes, suite_notes, stat, &
+                       errmsg)
+        if (stat /= 0) return
+        if (cfg%suite) then
+            if (nfailed > 0) then
+                stat = ROWS_FAILED
+                errmsg = int_str(nfailed)//' of '//int_str(size(outs))//' records failed (' &
+                         //failed_records(outs, .not. outs%ok)//'): their rows hold NaN and ' &
+                         //'status failed; the check fails (the suite checked is not the one ' &
+                         //'listed)'
+                if (.not. res%done) errmsg = errmsg//'; '//res%why
+            else if (.not. res%done) then
+                ! a safety net: every refusal of the check is caught as an input error
+                stat = ROWS_FAILED
+                errmsg = 'no check: '//res%why
+            end if
+        end if
+    end subroutine run_spectra
+
+    !> Read the groups and check them, and the rules across groups and the output names:
+    !> stat 1 with errmsg on an input error (before any record is read).
+    subroutine check_input(path, groups, prefix, gs, gc, gk, gu, gr, cfg, stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(nml_group), intent(in) :: groups(:)
+        type(nml_group), intent(out) :: gs, gc, gk, gu, gr
+        type(config_t), intent(inout) :: cfg
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
 
         call set_defaults()
         call read_optional(path, groups, 'spectra', spectra_keys, read_spectra, gs, stat, &
@@ -373,7 +448,7 @@ contains
                          //'and ground)'
                 return
             end if
-            call check_ec8(path, gc, cfg%ec8, errmsg)
+            call check_ec8(path, gc, cfg%suite .and. cfg%target /= CODE_EAK, cfg%ec8, errmsg)
             if (len(errmsg) > 0) return
         else if (find_group(groups, 'ec8') > 0) then
             errmsg = located(path, gc)//'not used (codes names no EN 1998-1 spectrum, and ' &
@@ -386,67 +461,130 @@ contains
                          //'or alpha, ground, ...)'
                 return
             end if
-            call check_eak(path, gk, cfg%eak, errmsg)
+            call check_eak(path, gk, cfg%suite .and. cfg%target == CODE_EAK, cfg%eak, errmsg)
             if (len(errmsg) > 0) return
         else if (find_group(groups, 'eak') > 0) then
             errmsg = located(path, gk)//'not used (codes names no EAK spectrum, and the ' &
                      //'&suite target is not EAK)'
             return
         end if
+        call check_table_names(path, prefix, cfg, errmsg)
+        if (len(errmsg) > 0) return
+        stat = 0
+    end subroutine check_input
 
-        ! --- the code spectra (every one is computed before anything is written; a
-        ! library refusal is an input error placed at the code's group)
-        if (cfg%table) then
-            call spectra_table(path, gc, gk, cfg, table, errmsg)
-            if (len(errmsg) > 0) return
-        end if
-        if (cfg%suite) then
-            call suite_grid(path, gc, gk, gu, cfg, res, errmsg)
-            if (len(errmsg) > 0) return
-        end if
-
-        ! --- echo the effective input
-        if (cfg%table) call echo_spectra(cfg)
-        if (find_group(groups, 'ec8') > 0) call echo_ec8(cfg%ec8)
-        if (find_group(groups, 'eak') > 0) call echo_eak(cfg%eak)
-        if (cfg%suite) then
-            call echo_suite(cfg)
-            if (len(cfg%records_from) == 0) call echo_records(cfg%recs, cfg%slammer_rounding)
-        end if
-
-        ! --- the records, one at a time, and the check
-        nfailed = 0
-        if (cfg%suite) then
-            call compute_suite(cfg, outs, res)
-            nfailed = count(.not. outs%ok)
-        end if
-
-        ! --- write
-        have = [cfg%table, cfg%suite, cfg%suite, cfg%suite, cfg%suite]
-        nwritten = 0
-        do k = 1, 5
-            if (.not. have(k)) cycle
-            select case (k)
-            case (1)
-                call write_spectra(path, prefix, cfg, table, files(:, k), stat, errmsg)
-            case (2)
-                call write_summary(path, prefix, cfg, outs, res, files(:, k), stat, errmsg)
-            case (3)
-                call write_records(path, prefix, cfg, outs, res, files(:, k), stat, errmsg)
-            case (4)
-                call write_mean(path, prefix, cfg, outs, res, files(:, k), stat, errmsg)
-            case (5)
-                call write_long(path, prefix, cfg, outs, res, files(:, k), stat, errmsg)
-            end select
-            if (stat /= 0) then
-                do nwritten = 1, k - 1
-                    if (have(nwritten)) call delete_files(files(:, nwritten))
-                end do
-                stat = 1
-                errmsg = output_located(path)//errmsg
+    !> Two tables of this run must not have the same file name (the code spectra and the
+    !> records' spectra under an output prefix ending in '_suite'): an input error before
+    !> any record is read.
+    subroutine check_table_names(path, prefix, cfg, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(config_t), intent(in) :: cfg
+        character(len=:), allocatable, intent(out) :: errmsg
+        logical :: have(size(spectra_tables))
+        integer :: i, j
+        errmsg = ''
+        have = cfg%suite
+        have(1) = cfg%table
+        do i = 1, size(spectra_tables)
+            do j = i + 1, size(spectra_tables)
+                if (.not. (have(i) .and. have(j))) cycle
+                if (table_path(prefix, spectra_tables(i), 'csv') /= &
+                    table_path(prefix, spectra_tables(j), 'csv')) cycle
+                errmsg = output_located(path)//'the tables '''//trim(spectra_tables(i)) &
+                         //''' and '''//trim(spectra_tables(j))//''' would both be ' &
+                         //table_path(prefix, spectra_tables(i), 'csv')//' (&spectra and ' &
+                         //'&suite under an output prefix ending in ''_suite''): choose ' &
+                         //'another output prefix'
                 return
-            end if
+            end do
         end do
+    end subroutine check_table_names
+
+    !> Warnings on the periods (stderr and header notes) known before any record is
+    !> read: &spectra periods beyond 4 s (EN 1998-1 states the spectra up to 4 s) in
+    !> table_notes, the check reaching beyond 4 s in suite_notes.
+    subroutine range_notes(path, gs, gu, cfg, table_notes, suite_notes)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gs, gu
+        type(config_t), intent(in) :: cfg
+        character(len=4096), allocatable, intent(out) :: table_notes(:), suite_notes(:)
+        allocate(table_notes(0), suite_notes(0))
+        if (cfg%table) then
+            if (any(cfg%periods > en_max_period)) call add_warning(located(path, gs), &
+                'periods up to '//g6(maxval(cfg%periods))//' s: EN 1998-1 states the ' &
+                //'spectra up to '//g6(en_max_period)//' s; beyond, the forms (3.5)/(3.16) ' &
+                //'and (K.3) are extended', table_notes)
+        end if
+        if (cfg%suite .and. 2.0_dp * cfg%t1 > en_max_period) call add_warning( &
+            located(path, gu), 't1 = '//g6(cfg%t1)//': the check reaches 2 T1 = ' &
+            //g6(2.0_dp * cfg%t1)//' s, beyond the '//g6(en_max_period)//' s up to which ' &
+            //'EN 1998-1 states the spectrum', suite_notes)
+    end subroutine range_notes
+
+    !> A warning (stderr and header note) when 2 T1 exceeds the duration of the longest
+    !> record read.
+    subroutine duration_note(path, gu, cfg, outs, notes)
+        character(len=*), intent(in) :: path
+        type(nml_group), intent(in) :: gu
+        type(config_t), intent(in) :: cfg
+        type(record_out_t), intent(in) :: outs(:)
+        character(len=4096), allocatable, intent(inout) :: notes(:)
+        real(dp) :: longest
+        integer :: ir
+        if (.not. any(outs%ok)) return
+        longest = 0.0_dp
+        do ir = 1, size(outs)
+            if (outs(ir)%ok) longest = max(longest, (outs(ir)%npts - 1) * outs(ir)%dt)
+        end do
+        if (2.0_dp * cfg%t1 > longest) call add_warning(located(path, gu), 't1 = ' &
+            //g6(cfg%t1)//': 2 T1 = '//g6(2.0_dp * cfg%t1)//' s exceeds the duration of ' &
+            //'the longest record read ('//g6(longest)//' s)', notes)
+    end subroutine duration_note
+
+    !> "warning: <where><text>" on stderr and "WARNING: <text>" appended to notes.
+    subroutine add_warning(where, text, notes)
+        character(len=*), intent(in) :: where, text
+        character(len=4096), allocatable, intent(inout) :: notes(:)
+        write(error_unit, '(a)') 'warning: '//where//text
+        notes = [character(len=4096) :: notes, 'WARNING: '//text]
+    end subroutine add_warning
+
+    !> Write every table of the run and say where they went (on an error none is left:
+    !> stat 1 and errmsg placed at &run output).
+    subroutine write_all(path, prefix, cfg, table, outs, res, table_notes, suite_notes, &
+                         stat, errmsg)
+        character(len=*), intent(in) :: path, prefix
+        type(config_t), intent(in) :: cfg
+        real(dp), allocatable, intent(in) :: table(:, :)
+        type(record_out_t), allocatable, intent(in) :: outs(:)
+        type(suite_res_t), intent(in) :: res
+        character(len=*), intent(in) :: table_notes(:), suite_notes(:)   !! header notes
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=512) :: files(2, 5)
+        character(len=4096), allocatable :: head(:)
+        integer :: k
+
+        files = ''
+        stat = 0
+        if (cfg%table) call write_spectra(path, prefix, cfg, table, table_notes, files(:, 1), &
+                                          stat, errmsg)
+        if (cfg%suite .and. stat == 0) then
+            head = [character(len=4096) :: suite_comments(path, cfg, outs, res), suite_notes]
+            call write_summary(prefix, cfg, outs, res, head, files(:, 2), stat, errmsg)
+            if (stat == 0) call write_records(prefix, outs, res, head, files(:, 3), stat, &
+                                              errmsg)
+            if (stat == 0) call write_mean(prefix, res, head, files(:, 4), stat, errmsg)
+            if (stat == 0) call write_long(prefix, outs, res, head, files(:, 5), stat, errmsg)
+        end if
+        if (stat /= 0) then
+            do k = 1, size(files, 2)
+                if (len_trim(files(1, k)) > 0) call delete_files(files(:, k))
+            end do
+            stat = 1
+            errmsg = output_located(path)//errmsg
+            return
+        end if
         if (cfg%table) call say_written('code spectra', files(:, 1))
         if (cfg%suite) then
             call say_written('record-suite check', files(:, 2))
@@ -454,15 +592,7 @@ contains
             call say_written('suite mean spectrum', files(:, 4))
             call say_written('suite spectra', files(:, 5))
         end if
-        stat = 0
-        if (nfailed > 0) then
-            stat = ROWS_FAILED
-            errmsg = int_str(nfailed)//' of '//int_str(size(outs))//' records failed (' &
-                     //failed_records(outs, .not. outs%ok)//'): their rows hold NaN and ' &
-                     //'status failed'
-            if (.not. res%done) errmsg = errmsg//'; '//res%why
-        end if
-    end subroutine run_spectra
+    end subroutine write_all
 
     ! ------------------------------------------------------------------------------
     ! Checks
@@ -527,9 +657,10 @@ contains
     end subroutine check_spectra
 
     !> &ec8: ag or a zone of the Greek NA, the ground, damping, q, beta.
-    subroutine check_ec8(path, gc, p, errmsg)
+    subroutine check_ec8(path, gc, target, p, errmsg)
         character(len=*), intent(in) :: path
         type(nml_group), intent(in) :: gc
+        logical, intent(in) :: target       !! the &suite target is an EN 1998-1 spectrum
         type(ec8_t), intent(inout) :: p
         character(len=:), allocatable, intent(out) :: errmsg
         character(len=:), allocatable :: where
@@ -587,6 +718,11 @@ contains
             end if
             if (.not. in_range(where, 'ag', c_ag, 0.0_dp, big, .false., errmsg, &
                 'must be a finite acceleration >= 0 (g)')) return
+            if (target .and. .not. c_ag > 0.0_dp) then
+                errmsg = where//'ag = '//shortest_str(c_ag)//': must be > 0 with &suite (the ' &
+                         //'check needs a target spectrum that is not zero)'
+                return
+            end if
             p%ag = c_ag
         end if
         p%ground = name_index(c_ground, ec8_grounds)
@@ -595,8 +731,8 @@ contains
                      //'(allowed: A, B, C, D, E of EN 1998-1 Table 3.1)'
             return
         end if
-        if (.not. in_range(where, 'damping', c_damping, 0.0_dp, big, .false., errmsg, &
-            'must be a finite damping ratio >= 0 (0.05: eta = 1)')) return
+        if (.not. in_range(where, 'damping', c_damping, 0.0_dp, 1.0_dp, .false., errmsg, &
+            damping_rule, open_hi=.true.)) return
         p%damping = c_damping
         if (.not. in_range(where, 'q', c_q, 1.0_dp, big, .false., errmsg, &
             'the behaviour factor must be finite and >= 1')) return
@@ -608,9 +744,10 @@ contains
 
     !> &eak: zone (of zone_map) or alpha, ground, importance or its class, q, theta,
     !> damping, and the unverified parameters.
-    subroutine check_eak(path, gk, p, errmsg)
+    subroutine check_eak(path, gk, target, p, errmsg)
         character(len=*), intent(in) :: path
         type(nml_group), intent(in) :: gk
+        logical, intent(in) :: target       !! the &suite target is EAK's spectrum
         type(eak_t), intent(inout) :: p
         character(len=:), allocatable, intent(out) :: errmsg
         character(len=:), allocatable :: where
@@ -639,6 +776,12 @@ contains
             end if
             if (.not. in_range(where, 'alpha', k_alpha, 0.0_dp, big, .false., errmsg, &
                 'must be a finite A/g >= 0')) return
+            if (target .and. .not. k_alpha > 0.0_dp) then
+                errmsg = where//'alpha = '//shortest_str(k_alpha)//': must be > 0 with &suite ' &
+                         //'target = ''EAK'' (the check needs a target spectrum that is not ' &
+                         //'zero)'
+                return
+            end if
             p%alpha = k_alpha
         else
             if (.not. given(gk, 'zone')) k_zone = merge('Z2 ', 'II ', p%zone_map == EAK_MAP_2003)
@@ -669,6 +812,11 @@ contains
         if (p%ground == 0) then
             errmsg = where//'ground = '''//trim(k_ground)//''': unknown ground category ' &
                      //'(allowed: A, B, C, D)'
+            return
+        end if
+        if (eak_grounds(p%ground) == 'x') then
+            errmsg = where//'ground = '''//trim(k_ground)//''': ground category X calls for ' &
+                     //'a site-specific study (unverified); give ground A, B, C or D'
             return
         end if
         p%ground = EAK_GROUND_A + p%ground - 1
@@ -710,8 +858,8 @@ contains
         if (.not. in_range(where, 'theta', k_theta, 0.0_dp, 1.0_dp, .true., errmsg, &
             'must be in (0, 1] (the foundation factor; its rules are unverified)')) return
         p%theta = k_theta
-        if (.not. in_range(where, 'damping', k_damping, 0.0_dp, big, .false., errmsg, &
-            'must be a finite damping ratio >= 0 (0.05: eta = 1)')) return
+        if (.not. in_range(where, 'damping', k_damping, 0.0_dp, 1.0_dp, .false., errmsg, &
+            damping_rule, open_hi=.true.)) return
         p%damping = k_damping
         if (.not. in_range(where, 'eta_min', k_eta_min, 0.0_dp, 1.0_dp, .false., errmsg, &
             'must be in [0, 1] (the floor of eta, unverified; 0: none)')) return
@@ -805,8 +953,8 @@ contains
             end if
         else
             if (gr%line == 0) then
-                errmsg = missing_group(path, 'records')//records_missing//' (or &suite ' &
-                         //'records_from = ''other.nml'')'
+                errmsg = missing_group(path, 'records')//records_missing(:len(records_missing) &
+                         - 1)//'; or &suite records_from = ''other.nml'')'
                 return
             end if
             cfg%gr = gr
@@ -850,7 +998,7 @@ contains
                 end if
             end associate
         else
-            stype = merge(EC8_SPECTRUM_TYPE_1, EC8_SPECTRUM_TYPE_2, code == CODE_EC8_1)
+            stype = ec8_type(code)
             associate (p => cfg%ec8)
                 if (elastic) then
                     call ec8_elastic_spectrum(periods, p%ag, stype, p%ground, &
@@ -1138,7 +1286,8 @@ contains
     ! Output
     ! ------------------------------------------------------------------------------
 
-    !> The header lines that give the parameters of the codes in use.
+    !> The header lines that give the parameters of the codes in use (numbers to 6
+    !> significant digits; the echo file has them in full).
     function code_lines(cfg) result(lines)
         type(config_t), intent(in) :: cfg
         character(len=4096), allocatable :: lines(:)
@@ -1156,31 +1305,31 @@ contains
         if (cfg%use_ec8) then
             associate (p => cfg%ec8)
                 if (p%zone > 0) then
-                    s = 'EN 1998-1: ag = gamma_I a_gR = '//shortest_str(p%importance)//' x ' &
-                        //shortest_str(p%agr)//' = '//shortest_str(p%ag)//' g (zone ' &
+                    s = 'EN 1998-1: ag = gamma_I a_gR = '//g6(p%importance)//' x ' &
+                        //g6(p%agr)//' = '//g6(p%ag)//' g (zone ' &
                         //trim(upper(ec8_zones(p%zone)))//' of the Greek National Annex, ' &
-                        //'the 2003 map [PRDA24]; every other NDP the recommended value: the ' &
-                        //'Greek NA''s other NDPs were not verified here)'
+                        //'the 2003 map [PRDA24], doc/codes.md section 1; every other NDP ' &
+                        //'the recommended value: the Greek NA''s other NDPs were not ' &
+                        //'verified here)'
                 else
-                    s = 'EN 1998-1: ag = '//shortest_str(p%ag)//' g (given; recommended NDPs)'
+                    s = 'EN 1998-1: ag = '//g6(p%ag)//' g (given; recommended NDPs)'
                 end if
                 s = s//'; ground '//trim(upper(ec8_grounds(p%ground)))
                 lines = [character(len=4096) :: lines, s]
-                do k = 1, 2
+                do k = CODE_EC8_1, CODE_EC8_2
                     if (.not. used(k)) cycle
                     msg = ''
-                    call ec8_ground_parameters(k, p%ground, sf, tb, tc, td, st, msg)
-                    lines = [character(len=4096) :: lines, 'EC8_'//int_str(k)//' (type ' &
-                        //int_str(k)//'): S = '//shortest_str(sf)//', TB = '//shortest_str(tb) &
-                        //' s, TC = '//shortest_str(tc)//' s, TD = '//shortest_str(td) &
-                        //' s (EN 1998-1 Table 3.'//int_str(k + 1)//')']
+                    call ec8_ground_parameters(ec8_type(k), p%ground, sf, tb, tc, td, st, msg)
+                    lines = [character(len=4096) :: lines, trim(upper(code_names(k))) &
+                        //' (type '//int_str(ec8_type(k))//'): S = '//g6(sf)//', TB = ' &
+                        //g6(tb)//' s, TC = '//g6(tc)//' s, TD = '//g6(td) &
+                        //' s (EN 1998-1 Table 3.'//int_str(ec8_type(k) + 1)//')']
                 end do
-                s = 'EN 1998-1 elastic Se (3.2)-(3.5): damping '//shortest_str(p%damping) &
-                    //' (eta = '//shortest_str(ec8_damping_correction(100.0_dp * p%damping)) &
-                    //')'
+                s = 'EN 1998-1 elastic Se (3.2)-(3.5): damping ratio '//g6(p%damping) &
+                    //' (eta = '//g6(ec8_damping_correction(100.0_dp * p%damping))//')'
                 if (cfg%suite) s = s//'; the target of the check: damping 0.05 (eta = 1)'
-                if (design) s = s//'; design Sd (3.13)-(3.16): q = '//shortest_str(p%q) &
-                    //', beta = '//shortest_str(p%beta)
+                if (design) s = s//'; design Sd (3.13)-(3.16): q = '//g6(p%q) &
+                    //', beta = '//g6(p%beta)
                 lines = [character(len=4096) :: lines, s]
             end associate
         end if
@@ -1189,190 +1338,227 @@ contains
                 msg = ''
                 call eak2000_ground_parameters(p%ground, t_1, t_2, st, msg)
                 if (p%zone > 0) then
-                    s = 'EAK 2000: A/g = '//shortest_str(p%alpha)//' (zone '//zone_name(p) &
+                    s = 'EAK 2000: A/g = '//g6(p%alpha)//' (zone '//zone_name(p) &
                         //' of the '//map_names(merge(1, 2, p%zone_map == EAK_MAP_2003)) &
                         //' map)'
                 else
-                    s = 'EAK 2000: A/g = '//shortest_str(p%alpha)//' (given)'
+                    s = 'EAK 2000: A/g = '//g6(p%alpha)//' (given)'
                 end if
                 s = s//'; ground '//trim(upper(eak_grounds(p%ground - EAK_GROUND_A + 1))) &
-                    //' (T1 = '//shortest_str(t_1)//' s, T2 = '//shortest_str(t_2) &
-                    //' s); gamma_I = '//shortest_str(p%importance)
+                    //' (EAK corner periods T1/T2 = '//g6(t_1)//'/'//g6(t_2) &
+                    //' s); gamma_I = '//g6(p%importance)
                 if (p%importance_class > 0) s = s//' (class ' &
                     //trim(upper(class_names(p%importance_class)))//')'
-                s = s//'; beta0 = '//shortest_str(EAK_BETA0)//'; elastic Phi_e: damping ' &
-                    //shortest_str(p%damping)//' (eta = '//shortest_str( &
+                s = s//'; beta0 = '//g6(EAK_BETA0)//'; elastic Phi_e: damping ratio ' &
+                    //g6(p%damping)//' (eta = '//g6( &
                     eak2000_damping_correction(100.0_dp * p%damping, p%eta_min))//'), ' &
-                    //'long-period exponent '//shortest_str(p%exponent)
+                    //'long-period exponent '//exponent_text(p%exponent)
                 if (cfg%suite .and. cfg%target == CODE_EAK) s = s//'; the target of the ' &
                     //'check: Phi_e at damping 0.05 (eta = 1)'
-                if (design) s = s//'; design Phi_d (K.1)-(K.3): q = '//shortest_str(p%q) &
-                    //', theta = '//shortest_str(p%theta)//', eta as Phi_e'
+                if (design) s = s//'; design Phi_d (K.1)-(K.3): q = '//g6(p%q) &
+                    //', theta = '//g6(p%theta)//', eta as Phi_e'
                 lines = [character(len=4096) :: lines, s]
                 lines = [character(len=4096) :: lines, 'EAK 2000 values from secondary ' &
                     //'sources; unverified: the rules for theta (here ' &
-                    //shortest_str(p%theta)//'), eta_min = '//shortest_str(p%eta_min) &
-                    //' (0: no floor on eta), lower_bound = '//shortest_str(p%lower_bound) &
+                    //g6(p%theta)//'), eta_min = '//g6(p%eta_min) &
+                    //' (0: no floor on eta), lower_bound = '//g6(p%lower_bound) &
                     //' (Phi_d >= lower_bound gamma_I A; 0: none, 0.25 is a recollection), ' &
-                    //'the elastic long-period exponent '//shortest_str(p%exponent) &
-                    //' (2/3 as Phi_d; 1 in one implementation), ground X (refused)']
+                    //'the elastic long-period exponent '//exponent_text(p%exponent) &
+                    //' (2/3 as Phi_d; 1 in one implementation), ground X (refused); ' &
+                    //'doc/eak2000.md']
             end associate
         end if
     end function code_lines
 
-    !> The code spectra table.
-    subroutine write_spectra(path, prefix, cfg, table, files_out, stat, errmsg)
+    !> The code spectra table: its column names built next to the values' order of
+    !> spectra_table (code by code, elastic then design).
+    subroutine write_spectra(path, prefix, cfg, table, notes, files_out, stat, errmsg)
         character(len=*), intent(in) :: path, prefix
         type(config_t), intent(in) :: cfg
         real(dp), intent(in) :: table(:, :)
+        character(len=*), intent(in) :: notes(:)
         character(len=*), intent(out) :: files_out(2)
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
         character(len=4096), allocatable :: comments(:)
-        character(len=16), allocatable :: names(:), col_units(:)
-        integer :: i, j, col
+        character(len=16), allocatable :: col_units(:)
 
-        allocate(names(size(table, 2)), col_units(size(table, 2)))
-        names(1) = 'period'
+        allocate(col_units(size(table, 2)))
         col_units = 'g'
         col_units(1) = 's'
-        col = 1
-        do i = 1, size(cfg%codes)
-            do j = 1, 2
-                if (cfg%kind /= 3 .and. cfg%kind /= j) cycle
-                col = col + 1
-                names(col) = trim(code_names(cfg%codes(i)))//'_'//trim(kind_names(j))
-            end do
-        end do
         comments = [character(len=4096) :: 'seispulse analysis spectra: code spectra side ' &
             //'by side, one row per period (horizontal, in g)', 'input: '//trim(path), &
-            'periods: '//cfg%grid, code_lines(cfg)]
-        call write_tables(prefix, 'spectra', comments, names, col_units, table, files_out, &
-                          stat, errmsg)
+            'periods: '//cfg%grid, code_lines(cfg), notes]
+        call write_tables(prefix, 'spectra', comments, spectra_columns(cfg), col_units, &
+                          table, files_out, stat, errmsg)
     end subroutine write_spectra
 
-    !> The first header lines of the suite tables: what, the input, the target, the rule,
-    !> the records.
-    function suite_comments(path, what, cfg, outs, res) result(comments)
-        character(len=*), intent(in) :: path, what
+    !> The header lines of the suite tables: what, the input, the target, the rule, the
+    !> records (computed once for the four tables; each adds its first line).
+    function suite_comments(path, cfg, outs, res) result(comments)
+        character(len=*), intent(in) :: path
         type(config_t), intent(in) :: cfg
         type(record_out_t), intent(in) :: outs(:)
         type(suite_res_t), intent(in) :: res
         character(len=4096), allocatable :: comments(:)
-        character(len=:), allocatable :: line
-        integer :: ir
-        comments = [character(len=4096) :: 'seispulse analysis spectra: '//what, &
-            'input: '//trim(path), &
+        character(len=:), allocatable :: line, t0
+        integer :: ir, nfailed
+
+        t0 = merge('a_g S     ', 'gamma_I A ', cfg%target /= CODE_EAK)
+        nfailed = count(.not. outs%ok)
+        comments = [character(len=4096) :: 'input: '//trim(path), &
             'target: the '//trim(upper(code_names(cfg%target)))//' elastic spectrum at 5 % ' &
-            //'damping; at T = 0 (a_g S): '//shortest_str(res%target_pga)//' g', &
+            //'damping; at T = 0 ('//trim(t0)//'): '//g6(res%target_pga)//' g', &
             code_lines(cfg), &
             'EN 1998-1 3.2.3.1.2(4): (a) at least 3 records; (b) mean PGA >= the target ' &
-            //'at T = 0; (c) mean 5 % PSA >= 0.9 target over [0.2 T1, 2 T1] = [' &
-            //shortest_str(0.2_dp * cfg%t1)//', '//shortest_str(2.0_dp * cfg%t1) &
-            //'] s (T1 = '//shortest_str(cfg%t1)//' s); 4.3.3.4.3(3): with 7 or more ' &
-            //'records the mean response may be used', &
+            //'at T = 0 ('//trim(t0)//'); (c) mean 5 % PSA >= 0.9 target over [0.2 T1, ' &
+            //'2 T1] = ['//g6(0.2_dp * cfg%t1)//', '//g6(2.0_dp * cfg%t1) &
+            //'] s (structure period T1 = '//g6(cfg%t1)//' s, &suite); 4.3.3.4.3(3): with ' &
+            //'7 or more records the mean response may be used (mean_allowed), otherwise ' &
+            //'the most unfavourable response', &
             'check grid: '//int_str(size(res%grid))//' periods, '//int_str(cfg%n_points) &
             //' log-spaced from 0.2 T1 to 2 T1 with T1, the target''s corner periods and ' &
             //'the &spectra periods inside; PSA: 5 % damping, exact peaks over the record, ' &
             //'g = '//shortest_str(STANDARD_GRAVITY)//' m/s2', &
             'common_scale: the smallest factor on every record making (b) and (c) hold ' &
-            //'(M.1); own_scale: each record''s own factor, '// &
-            fit_text(cfg%fit) &
-            //' over the grid; own_*: the suite with each record scaled by its own factor']
+            //'(M.1, doc/record-suites.md; common_rule: the rule that sets it, pga (b) or ' &
+            //'spectrum (c)); own_scale: each record''s own factor, '//fit_text(cfg%fit) &
+            //' over the grid; own_*: the suite with each record scaled by its own factor', &
+            'common_scale and own_scale apply on top of the &records scaling (scale or ' &
+            //'target_pga, and polarity): the factor on the file as read is scale x ' &
+            //'common_scale (common_total) or scale x own_scale (own_total), per record ' &
+            //'in the records table']
+        if (nfailed > 0) comments = [character(len=4096) :: comments, 'CHECK FAILS: made ' &
+            //'on '//int_str(size(outs) - nfailed)//' of '//int_str(size(outs)) &
+            //' records listed (failed: '//failed_records(outs, .not. outs%ok)//'): the ' &
+            //'suite checked is not the one listed']
         if (.not. res%done) comments = [character(len=4096) :: comments, 'NO CHECK: '//res%why]
         if (len(cfg%records_from) > 0) comments = [character(len=4096) :: comments, &
             'records from &records of '//cfg%records_from]
         comments = [character(len=4096) :: comments, 'records (index, file, format read, ' &
-            //'npts, dt (s), PGA as read (g), scale factor):']
+            //'npts, dt (s), PGA as read (g), scale factor with the polarity):']
         do ir = 1, size(outs)
-            line = record_line(ir, cfg%recs(ir), outs(ir))
+            if (outs(ir)%ok) then
+                line = record_line(ir, cfg%recs(ir), outs(ir))
+            else
+                line = 'record '//int_str(ir)//': '//cfg%recs(ir)%file//': FAILED: ' &
+                       //without_path(outs(ir)%message, cfg%recs(ir)%path)
+            end if
             comments = [character(len=4096) :: comments, line]
         end do
     end function suite_comments
 
-    !> The one-row summary of the check.
-    subroutine write_summary(path, prefix, cfg, outs, res, files_out, stat, errmsg)
-        character(len=*), intent(in) :: path, prefix
+    !> The one-row summary of the check. With a record that failed the check fails
+    !> (check and own_check fail, status failed): the suite checked is not the one listed.
+    subroutine write_summary(prefix, cfg, outs, res, head, files_out, stat, errmsg)
+        character(len=*), intent(in) :: prefix
         type(config_t), intent(in) :: cfg
         type(record_out_t), intent(in) :: outs(:)
         type(suite_res_t), intent(in) :: res
+        character(len=*), intent(in) :: head(:)
         character(len=*), intent(out) :: files_out(2)
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
-        real(dp) :: row(1, 19), nan
-        character(len=16) :: kinds(19)
+        integer, parameter :: nc = 26
+        real(dp) :: row(1, nc), nan
+        character(len=40) :: kinds(nc)
+        logical :: all_read
 
         nan = ieee_value(nan, ieee_quiet_nan)
+        all_read = all(outs%ok)
         row = nan
-        row(1, 1) = real(count(outs%ok), dp)
-        row(1, 2:4) = [cfg%t1, 0.2_dp * cfg%t1, 2.0_dp * cfg%t1]
-        row(1, 6) = res%target_pga
-        row(1, 19) = 1.0_dp
+        row(1, 1:5) = [real(size(outs), dp), real(count(.not. outs%ok), dp), &
+                       real(count(outs%ok), dp), real(cfg%target - 1, dp), &
+                       real(cfg%fit - SUITE_FIT_LINEAR, dp)]
+        row(1, 6:9) = [cfg%t1, 0.2_dp * cfg%t1, 2.0_dp * cfg%t1, real(size(res%grid), dp)]
+        row(1, 11) = res%target_pga
+        row(1, nc) = 1.0_dp
         if (res%done) then
             associate (c => res%check)
-                row(1, 1:4) = [real(c%n_records, dp), c%t1, c%t_low, c%t_high]
-                row(1, 5:18) = [c%pga_mean, c%pga_target, c%pga_ratio, flag(c%pga_ok), &
+                row(1, 3) = real(c%n_records, dp)
+                row(1, 6:8) = [c%t1, c%t_low, c%t_high]
+                row(1, 10:25) = [c%pga_mean, c%pga_target, c%pga_ratio, flag(c%pga_ok), &
                     c%min_ratio, c%t_min_ratio, flag(c%spectrum_ok), flag(c%count_ok), &
-                    flag(c%mean_allowed), flag(c%passed), c%common_scale, c%own_pga_ratio, &
-                    c%own_min_ratio, flag(c%own_passed)]
+                    flag(c%mean_allowed), flag(c%passed .and. all_read), c%common_scale, &
+                    merge(0.0_dp, 1.0_dp, c%pga_target / c%pga_mean >= 0.9_dp / c%min_ratio), &
+                    c%own_pga_ratio, c%own_min_ratio, c%own_t_min_ratio, &
+                    flag(c%own_passed .and. all_read)]
             end associate
-            row(1, 19) = 0.0_dp
+            row(1, nc) = merge(0.0_dp, 1.0_dp, all_read)
         end if
         kinds = ''
-        kinds(1) = 'int'
-        kinds([8, 11, 12, 14, 18]) = category_kind(check_names)
-        kinds(13) = category_kind(yes_names)
-        kinds(19) = category_kind(status_names)
-        call write_tables(prefix, 'suite', suite_comments(path, 'the check of a suite of ' &
-            //'records against a code''s elastic spectrum (EN 1998-1 3.2.3.1.2(4))', cfg, &
-            outs, res), &
-            [character(len=14) :: 'n_records', 't1', 't_low', 't_high', 'pga_mean', &
-             'pga_target', 'pga_ratio', 'pga_check', 'min_ratio', 't_min_ratio', &
-             'spectrum_check', 'count_check', 'mean_allowed', 'check', 'common_scale', &
-             'own_pga_ratio', 'own_min_ratio', 'own_check', 'status'], &
-            [character(len=2) :: '-', 's', 's', 's', 'g', 'g', '-', '-', '-', 's', '-', '-', &
-             '-', '-', '-', '-', '-', '-', '-'], row, files_out, stat, errmsg, kinds=kinds, &
-            summary=.true.)
+        kinds([1, 2, 3, 9]) = 'int'
+        kinds(4) = category_kind(code_names_upper)
+        kinds(5) = category_kind(fit_names)
+        kinds([13, 16, 17, 19, 25]) = category_kind(check_names)
+        kinds(18) = category_kind(yes_names)
+        kinds(21) = category_kind(rule_names)
+        kinds(nc) = category_kind(status_names)
+        call write_tables(prefix, 'suite', [character(len=4096) :: 'seispulse analysis ' &
+            //'spectra: the check of a suite of records against a code''s elastic spectrum ' &
+            //'(EN 1998-1 3.2.3.1.2(4))', head, 'n_listed: records listed; n_failed: ' &
+            //'records that could not be read (then check and own_check fail, status ' &
+            //'failed); n_records: records checked; n_periods: the check grid; ' &
+            //'common_rule: pga (b) or spectrum (c) sets common_scale; own_t_min_ratio: ' &
+            //'the period of own_min_ratio (s)'], &
+            [character(len=15) :: 'n_listed', 'n_failed', 'n_records', 'target', 'fit', &
+             't1', 't_low', 't_high', 'n_periods', 'pga_mean', 'pga_target', 'pga_ratio', &
+             'pga_check', 'min_ratio', 't_min_ratio', 'spectrum_check', 'count_check', &
+             'mean_allowed', 'check', 'common_scale', 'common_rule', 'own_pga_ratio', &
+             'own_min_ratio', 'own_t_min_ratio', 'own_check', 'status'], &
+            [character(len=2) :: '-', '-', '-', '-', '-', 's', 's', 's', '-', 'g', 'g', '-', &
+             '-', '-', 's', '-', '-', '-', '-', '-', '-', '-', '-', 's', '-', '-'], &
+            row, files_out, stat, errmsg, kinds=kinds, summary=.true.)
     end subroutine write_summary
 
-    !> One row per record: PGA, own scale factor, PSA at T1, status.
-    subroutine write_records(path, prefix, cfg, outs, res, files_out, stat, errmsg)
-        character(len=*), intent(in) :: path, prefix
-        type(config_t), intent(in) :: cfg
+    !> One row per record: its index, the &records factor, PGA, own scale factor, the
+    !> total factors on the file as read, PSA at T1, status.
+    subroutine write_records(prefix, outs, res, head, files_out, stat, errmsg)
+        character(len=*), intent(in) :: prefix
         type(record_out_t), intent(in) :: outs(:)
         type(suite_res_t), intent(in) :: res
+        character(len=*), intent(in) :: head(:)
         character(len=*), intent(out) :: files_out(2)
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
         real(dp), allocatable :: table(:, :)
         character(len=label_len(outs)), allocatable :: labels(:)
+        real(dp) :: nan, common
         integer :: ir, n
 
+        nan = ieee_value(nan, ieee_quiet_nan)
+        common = nan
+        if (res%done) common = res%check%common_scale
         n = size(outs)
-        allocate(table(n, 4), labels(n))
+        allocate(table(n, 8), labels(n))
         do ir = 1, n
             labels(ir) = outs(ir)%name
-            table(ir, :) = [res%pga(ir), res%own_scale(ir), res%psa(res%i_t1, ir), &
-                            merge(0.0_dp, 1.0_dp, outs(ir)%ok)]
+            table(ir, :) = [real(ir, dp), merge(outs(ir)%factor, nan, outs(ir)%ok), &
+                            res%pga(ir), res%own_scale(ir), &
+                            outs(ir)%factor * res%own_scale(ir), outs(ir)%factor * common, &
+                            res%psa(res%i_t1, ir), merge(0.0_dp, 1.0_dp, outs(ir)%ok)]
+            if (.not. outs(ir)%ok) table(ir, 5:6) = nan
         end do
         call write_tables(prefix, 'suite_records', [character(len=4096) :: &
-            suite_comments(path, 'the records of the check, one row per record', cfg, outs, &
-            res), 'pga: after scaling; own_scale: the record''s own factor (NaN without a ' &
-            //'check); psa_t1: 5 % PSA at T1; status: ok, or failed (nan; the reason ' &
-            //'above and on stderr; exit status 1)'], &
-            [character(len=9) :: 'name', 'pga', 'own_scale', 'psa_t1', 'status'], &
-            [character(len=1) :: '-', 'g', '-', 'g', '-'], table, files_out, stat, errmsg, &
-            labels=labels, kinds=[character(len=16) :: '', '', '', '', &
-            category_kind(status_names)])
+            'seispulse analysis spectra: the records of the check, one row per record', &
+            head, 'index: the record''s place in &records files; scale: the &records factor ' &
+            //'with the polarity; pga: after scaling; own_scale: the record''s own factor ' &
+            //'(NaN without a check); own_total = scale x own_scale and common_total = ' &
+            //'scale x common_scale: the factors on the file as read; psa_t1: 5 % PSA at ' &
+            //'T1; status: ok, or failed (nan; the reason above and on stderr; exit status 1)'], &
+            [character(len=12) :: 'name', 'index', 'scale', 'pga', 'own_scale', 'own_total', &
+             'common_total', 'psa_t1', 'status'], &
+            [character(len=1) :: '-', '-', '-', 'g', '-', '-', '-', 'g', '-'], table, &
+            files_out, stat, errmsg, labels=labels, kinds=[character(len=16) :: '', 'int', &
+            '', '', '', '', '', '', category_kind(status_names)])
     end subroutine write_records
 
     !> On the check grid: the target, 0.9 target, the mean of the suite, their ratio, the
     !> mean scaled by common_scale and the mean of the records scaled by their own factors.
-    subroutine write_mean(path, prefix, cfg, outs, res, files_out, stat, errmsg)
-        character(len=*), intent(in) :: path, prefix
-        type(config_t), intent(in) :: cfg
-        type(record_out_t), intent(in) :: outs(:)
+    subroutine write_mean(prefix, res, head, files_out, stat, errmsg)
+        character(len=*), intent(in) :: prefix
         type(suite_res_t), intent(in) :: res
+        character(len=*), intent(in) :: head(:)
         character(len=*), intent(out) :: files_out(2)
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
@@ -1394,8 +1580,8 @@ contains
             table(:, 7) = res%own_mean
         end if
         call write_tables(prefix, 'suite_mean', [character(len=4096) :: &
-            suite_comments(path, 'the mean spectrum of the suite against the target, one ' &
-            //'row per period of the check grid', cfg, outs, res), 'target_90 = 0.9 target; ' &
+            'seispulse analysis spectra: the mean spectrum of the suite against the target, ' &
+            //'one row per period of the check grid', head, 'target_90 = 0.9 target; ' &
             //'mean: the mean 5 % PSA of the records read; ratio = mean/target; ' &
             //'mean_common = common_scale x mean; mean_own: the mean of the records each ' &
             //'scaled by its own_scale'], &
@@ -1406,11 +1592,11 @@ contains
     end subroutine write_mean
 
     !> Long format: one row per record and period of the check grid.
-    subroutine write_long(path, prefix, cfg, outs, res, files_out, stat, errmsg)
-        character(len=*), intent(in) :: path, prefix
-        type(config_t), intent(in) :: cfg
+    subroutine write_long(prefix, outs, res, head, files_out, stat, errmsg)
+        character(len=*), intent(in) :: prefix
         type(record_out_t), intent(in) :: outs(:)
         type(suite_res_t), intent(in) :: res
+        character(len=*), intent(in) :: head(:)
         character(len=*), intent(out) :: files_out(2)
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
@@ -1419,23 +1605,25 @@ contains
         integer :: np, ir, r1, r2
 
         np = size(res%grid)
-        allocate(table(np * size(outs), 4), labels(np * size(outs)))
+        allocate(table(np * size(outs), 5), labels(np * size(outs)))
         do ir = 1, size(outs)
             r1 = (ir - 1) * np + 1
             r2 = ir * np
             labels(r1:r2) = outs(ir)%name
-            table(r1:r2, 1) = res%grid
-            table(r1:r2, 2) = res%psa(:, ir)
-            table(r1:r2, 3) = res%own_scale(ir) * res%psa(:, ir)
-            table(r1:r2, 4) = merge(0.0_dp, 1.0_dp, outs(ir)%ok)
+            table(r1:r2, 1) = real(ir, dp)
+            table(r1:r2, 2) = res%grid
+            table(r1:r2, 3) = res%psa(:, ir)
+            table(r1:r2, 4) = res%own_scale(ir) * res%psa(:, ir)
+            table(r1:r2, 5) = merge(0.0_dp, 1.0_dp, outs(ir)%ok)
         end do
         call write_tables(prefix, 'suite_spectra', [character(len=4096) :: &
-            suite_comments(path, 'the 5 % PSA of each record on the check grid, one row per ' &
-            //'record and period', cfg, outs, res), 'psa: as the record was scaled by ' &
-            //'&records; psa_own = own_scale x psa'], &
-            [character(len=7) :: 'name', 'period', 'psa', 'psa_own', 'status'], &
-            [character(len=1) :: '-', 's', 'g', 'g', '-'], table, files_out, stat, errmsg, &
-            labels=labels, kinds=[character(len=16) :: '', '', '', '', &
+            'seispulse analysis spectra: the 5 % PSA of each record on the check grid, one ' &
+            //'row per record and period', head, 'index: the record''s place in &records ' &
+            //'files (names can repeat); psa: as the record was scaled by &records; ' &
+            //'psa_own = own_scale x psa'], &
+            [character(len=7) :: 'name', 'index', 'period', 'psa', 'psa_own', 'status'], &
+            [character(len=1) :: '-', '-', 's', 'g', 'g', '-'], table, files_out, stat, &
+            errmsg, labels=labels, kinds=[character(len=16) :: '', 'int', '', '', '', &
             category_kind(status_names)])
     end subroutine write_long
 
@@ -1443,14 +1631,18 @@ contains
     ! Helpers
     ! ------------------------------------------------------------------------------
 
-    !> Whether x is finite and in [lo, hi] (lo excluded with open_lo); else errmsg =
-    !> where//"name = x: rule" (false).
-    logical function in_range(where, name, x, lo, hi, open_lo, errmsg, rule)
+    !> Whether x is finite and in [lo, hi] (lo excluded with open_lo, hi with open_hi);
+    !> else errmsg = where//"name = x: rule" (false).
+    logical function in_range(where, name, x, lo, hi, open_lo, errmsg, rule, open_hi)
         character(len=*), intent(in) :: where, name, rule
         real(dp), intent(in) :: x, lo, hi
         logical, intent(in) :: open_lo
         character(len=:), allocatable, intent(inout) :: errmsg
-        in_range = .not. outside(x, lo, hi, open_lo, .false.)
+        logical, intent(in), optional :: open_hi
+        logical :: hi_open
+        hi_open = .false.
+        if (present(open_hi)) hi_open = open_hi
+        in_range = .not. outside(x, lo, hi, open_lo, hi_open)
         if (.not. in_range) errmsg = where//name//' = '//shortest_str(x)//': '//rule
     end function in_range
 
@@ -1461,8 +1653,67 @@ contains
         character(len=:), allocatable :: s
         integer :: k
         k = index(msg, ': ')
-        s = trim(msg(k + 2:))
+        if (k == 0) then
+            s = trim(msg)
+        else
+            s = trim(msg(k + 2:))
+        end if
     end function reason
+
+    !> The message of a record that failed without its path in front (the table's header
+    !> line names the file already).
+    function without_path(msg, path) result(s)
+        character(len=*), intent(in) :: msg, path
+        character(len=:), allocatable :: s
+        integer :: k
+        s = msg
+        if (len(s) > len(path) + 2) then
+            if (s(1:len(path) + 2) == path//': ') s = s(len(path) + 3:)
+        end if
+        ! the compiler's "Cannot open file '<path>': " in the system message
+        k = index(s, 'Cannot open file '''//path//''': ')
+        if (k > 0) s = s(:k - 1)//s(k + len(path) + 21:)
+    end function without_path
+
+    !> x to 6 significant digits (the header notes; the tables hold every digit).
+    function g6(x) result(s)
+        real(dp), intent(in) :: x
+        character(len=:), allocatable :: s
+        s = g_str(x, 6)
+    end function g6
+
+    !> The EAK long-period exponent: '2/3' for the default, else to 6 digits.
+    function exponent_text(x) result(s)
+        real(dp), intent(in) :: x
+        character(len=:), allocatable :: s
+        if (.not. (abs(x - 2.0_dp / 3.0_dp) > 0.0_dp)) then
+            s = '2/3'
+        else
+            s = g6(x)
+        end if
+    end function exponent_text
+
+    !> The EN 1998-1 spectrum type of an EC8 code (CODE_EC8_1, CODE_EC8_2).
+    pure integer function ec8_type(code)
+        integer, intent(in) :: code
+        ec8_type = merge(EC8_SPECTRUM_TYPE_1, EC8_SPECTRUM_TYPE_2, code == CODE_EC8_1)
+    end function ec8_type
+
+    !> The column names of the spectra table: period, then per code elastic and/or
+    !> design, in the order spectra_table computes them.
+    function spectra_columns(cfg) result(names)
+        type(config_t), intent(in) :: cfg
+        character(len=16), allocatable :: names(:)
+        integer :: i, j
+        names = [character(len=16) :: 'period']
+        do i = 1, size(cfg%codes)
+            do j = 1, 2
+                if (cfg%kind /= 3 .and. cfg%kind /= j) cycle
+                names = [character(len=16) :: names, trim(code_names(cfg%codes(i)))//'_' &
+                         //trim(kind_names(j))]
+            end do
+        end do
+    end function spectra_columns
 
     !> 1 for .true., 0 for .false. (a category code).
     elemental real(dp) function flag(x)
@@ -1498,15 +1749,5 @@ contains
             s = trim(upper(eak_zones_2000(p%zone)))
         end if
     end function zone_name
-
-    !> Length of the longest record name (the label column).
-    pure integer function label_len(outs)
-        type(record_out_t), intent(in) :: outs(:)
-        integer :: i
-        label_len = 4
-        do i = 1, size(outs)
-            label_len = max(label_len, len(outs(i)%name))
-        end do
-    end function label_len
 
 end module driver_spectra

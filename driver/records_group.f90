@@ -24,7 +24,7 @@ module driver_records
     public :: records_keys, record_in_t, record_out_t, records_defaults, read_records
     public :: check_records, echo_records, load_record, progress, report
     public :: path_len, short, records_missing, record_line, failed_records, resolve, &
-              count_strings
+              count_strings, label_len
 
     character(len=12), parameter :: records_keys(8) = [character(len=12) :: 'files', &
         'format', 'units', 'dt', 'scale', 'target_pga', 'pga_rounding', 'polarity']
@@ -438,6 +438,16 @@ contains
             line = line//'FAILED: '//o%message
         end if
     end function record_line
+
+    !> Length of the longest record name (the label column of a table; at least 1).
+    pure integer function label_len(outs)
+        type(record_out_t), intent(in) :: outs(:)
+        integer :: i
+        label_len = 1
+        do i = 1, size(outs)
+            label_len = max(label_len, len(outs(i)%name))
+        end do
+    end function label_len
 
     !> "2 'name', 5 'other'" of the records with failed(ir), at most max_named of them
     !> (then ", ...").

@@ -55,7 +55,7 @@ def test_example_spectra_equal_python(driver, tmp_path):
     proc = subprocess.run([driver, str(INPUT / "spectra.nml")], cwd=tmp_path,
                           capture_output=True, text=True, timeout=120)
     assert proc.returncode == 0, proc.stderr
-    t = read_table(tmp_path / "out" / "spectra.csv")
+    t = read_table(tmp_path / "out" / "code_spectra.csv")
     assert list(t) == ["period", "ec8_1_elastic", "ec8_1_design", "ec8_2_elastic",
                        "ec8_2_design", "eak_elastic", "eak_design"]
     T = t["period"]
@@ -71,7 +71,7 @@ def test_example_spectra_equal_python(driver, tmp_path):
                                                   q=1.5, theta=1.0, kind="design"))
     # a closed form: the plateau of type 1, ground B (S = 1.2): 2.5 x 0.24 x 1.2 g
     assert t["ec8_1_elastic"][T == 0.3][0] == pytest.approx(0.72, rel=1e-15)
-    head = (tmp_path / "out" / "spectra.txt").read_text()
+    head = (tmp_path / "out" / "code_spectra.txt").read_text()
     assert "EAK 2000 values from secondary sources; unverified:" in head
     assert "zone Z2 of the Greek National Annex" in head
 
@@ -199,6 +199,9 @@ def test_suite_tables_against_numpy(driver, tmp_path, name):
 
     r = read_table(tmp_path / "s_suite_records.csv")
     assert list(r["name"]) == ["quake_a", "quake_b", "quake_d"]
+    assert list(r["index"]) == [1, 2, 3] and list(r["scale"]) == [1.0, 1.0, 1.0]
+    assert r["own_total"] == pytest.approx(ref["own"], **rel)
+    assert r["common_total"] == pytest.approx([ref["common"]] * 3, **rel)
     assert r["pga"] == pytest.approx(ref["pga"], **rel)
     assert r["own_scale"] == pytest.approx(ref["own"], **rel)
     assert r["psa_t1"] == pytest.approx(ref["psa"][:, list(ref["grid"]).index(t1)], **rel)
@@ -209,6 +212,7 @@ def test_suite_tables_against_numpy(driver, tmp_path, name):
     assert s["psa"] == pytest.approx(ref["psa"].ravel(), **rel)
     assert s["psa_own"] == pytest.approx((ref["own"][:, None] * ref["psa"]).ravel(), **rel)
     assert list(s["name"]) == [x for x in ("quake_a", "quake_b", "quake_d") for _ in range(n)]
+    assert list(s["index"]) == [k for k in (1, 2, 3) for _ in range(n)]
 
     u = read_table(tmp_path / "s_suite.csv")
     assert u["n_records"][0] == 3 and u["t1"][0] == t1
@@ -219,6 +223,13 @@ def test_suite_tables_against_numpy(driver, tmp_path, name):
     assert u["common_scale"][0] == pytest.approx(ref["common"], **rel)
     assert u["own_pga_ratio"][0] == pytest.approx(ref["own_pga_ratio"], **rel)
     assert u["own_min_ratio"][0] == pytest.approx(ref["own_min_ratio"], **rel)
+    own_ratio = ref["own_mean"] / ref["target"]
+    assert u["own_t_min_ratio"][0] == ref["grid"][own_ratio.argmin()]
+    assert u["target"][0] == {"ec8_1_linear": "EC8_1", "ec8_2_log": "EC8_2", "eak": "EAK"}[name]
+    assert u["fit"][0] == fit and u["n_periods"][0] == n
+    assert u["n_listed"][0] == 3 and u["n_failed"][0] == 0
+    by_pga = ref["target_pga"] / ref["pga"].mean() >= (0.9 * ref["target"] / ref["mean"]).max()
+    assert u["common_rule"][0] == ("pga" if by_pga else "spectrum")
     pga_ok = ref["pga"].mean() >= ref["target_pga"]
     spec_ok = ref["min_ratio"] >= 0.9
     assert u["pga_check"][0] == ("pass" if pga_ok else "fail")
@@ -324,13 +335,24 @@ def test_a_record_that_cannot_be_read(driver, tmp_path):
     assert list(r["status"]) == ["ok", "ok", "ok", "failed"]
     assert np.isnan(r["pga"][3]) and np.isnan(r["own_scale"][3])
     u = read_table(tmp_path / "f_suite.csv")
-    assert u["n_records"][0] == 3 and u["status"][0] == "ok"
-    # the same check as the three records alone
+    # the suite checked is not the one listed: the check fails, status failed
+    assert u["n_records"][0] == 3 and u["status"][0] == "failed"
+    assert u["n_listed"][0] == 4 and u["n_failed"][0] == 1
+    assert u["check"][0] == "fail" and u["own_check"][0] == "fail"
+    head = (tmp_path / "f_suite.txt").read_text()
+    assert "CHECK FAILS: made on 3 of 4 records listed (failed: 4 'missing')" in head
+    # the path of the missing file once in its header line
+    line = [ln for ln in head.splitlines() if ln.startswith("# record 4:")][0]
+    assert line.count("records/missing.AT2") == 1, line
+    # the figures of the records read: as the three records alone
     files3 = ", ".join(f"'{f}'" for f in SUITE_FILES)
     assert run(driver, tmp_path, f"&run analysis='spectra', output='g' /\n"
                f"&records files = {files3} /\n" + group).returncode == 0
     g = read_table(tmp_path / "g_suite.csv")
-    assert all(list(u[k]) == list(g[k]) for k in g)
+    assert g["check"][0] == "pass"          # the three records alone pass
+    assert g["status"][0] == "ok" and g["n_failed"][0] == 0 and g["n_listed"][0] == 3
+    same = [k for k in g if k not in ("n_listed", "n_failed", "check", "own_check", "status")]
+    assert all(list(u[k]) == list(g[k]) for k in same)
 
     proc = run(driver, tmp_path, f"&run analysis='spectra', output='h' /\n"
                f"&records files = {files} /\n"
@@ -419,7 +441,138 @@ ERRORS = {
                     "spectra", "damping: unknown key"),
     "n_points": (RECS + "&suite t1 = 0.5, n_points = 1 /\n" + EC8, "suite",
                  "n_points = 1: must be in 2 .. 1000"),
+    # a target of zero: refused before any record is read
+    "ag_zero_suite": (RECS + "&suite t1 = 0.5 /\n&ec8 ag = 0 /\n", "ec8",
+                      "ag = 0.0: must be > 0 with &suite"),
+    "alpha_zero_suite": (RECS + "&suite t1 = 0.5, target = 'EAK' /\n&eak alpha = 0 /\n",
+                         "eak", "alpha = 0.0: must be > 0 with &suite target = 'EAK'"),
+    # a damping ratio in [0, 1), as &sdof: 5 (meant as 5 %) is refused
+    "ec8_damping_percent": (SPEC + "&ec8 ag = 0.2, damping = 5 /\n", "ec8",
+                            "damping = 5.0: must be a damping ratio in [0, 1) (a ratio: "
+                            "0.05 = 5 %)"),
+    "eak_damping_one": ("&spectra periods = 0.1, codes = 'EAK' /\n&eak damping = 1.0 /\n",
+                        "eak", "damping = 1.0: must be a damping ratio in [0, 1)"),
 }
+
+
+def test_input_error_messages_read_well(driver, tmp_path):
+    """EAK ground X without the library's numeric codes; a missing &records group in one
+    pair of parentheses."""
+    proc = run(driver, tmp_path, RUN + ERRORS["eak_ground_x"][0])
+    assert proc.returncode == 2 and "(1..4)" not in proc.stderr, proc.stderr
+    assert "give ground A, B, C or D" in proc.stderr, proc.stderr
+    proc = run(driver, tmp_path, RUN + ERRORS["suite_without_records"][0])
+    assert proc.returncode == 2 and ") (" not in proc.stderr, proc.stderr
+    assert "; or &suite records_from = 'other.nml')" in proc.stderr, proc.stderr
+
+
+def test_zero_ag_without_suite_is_allowed(driver, tmp_path):
+    """ag = 0 is refused only as the target of the check: the code spectra are zero."""
+    proc = run(driver, tmp_path, RUN + SPEC + "&ec8 ag = 0 /\n")
+    assert proc.returncode == 0, proc.stderr
+    t = read_table(tmp_path / "o_spectra.csv")
+    assert (t["ec8_1_elastic"] == 0.0).all() and (t["ec8_1_design"] == 0.0).all()
+
+
+def test_suite_prefix_collision_before_records(driver, tmp_path):
+    """&spectra and &suite under a prefix ending in '_suite': the code spectra and the
+    records' spectra would have one name; an input error before any record is read."""
+    with_records(tmp_path)
+    text = ("&run analysis='spectra', output='x_suite' /\n" + RECS + SPEC
+            + "&suite t1 = 0.5 /\n" + EC8)
+    proc = run(driver, tmp_path, text)
+    assert proc.returncode == 2, proc.stderr
+    assert "record 1/" not in proc.stderr, proc.stderr          # nothing was read
+    errors = [ln for ln in proc.stderr.splitlines() if ln.startswith("seispulse: error:")]
+    assert errors == ["seispulse: error: case.nml:1: &run: output: the tables 'spectra' and "
+                      "'suite_spectra' would both be x_suite_spectra.csv (&spectra and &suite "
+                      "under an output prefix ending in '_suite'): choose another output "
+                      "prefix"], proc.stderr
+    # another prefix: both tables
+    proc = run(driver, tmp_path, text.replace("x_suite", "x"))
+    assert proc.returncode == 0, proc.stderr
+    assert (tmp_path / "x_spectra.csv").exists() and (tmp_path / "x_suite_spectra.csv").exists()
+
+
+def test_examples_outputs_do_not_overlap(driver, tmp_path):
+    """The suite example checks four distinct records with min_records = 3; an input
+    error in a copy of the spectra example (which removes that example's outputs)
+    leaves the suite example's tables."""
+    proc = subprocess.run([driver, str(INPUT / "spectra_suite.nml")], cwd=tmp_path,
+                          capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    u = read_table(tmp_path / "out" / "record_suite.csv")
+    assert u["n_listed"][0] == 4 and u["n_records"][0] == 4 and u["count_check"][0] == "pass"
+    r = read_table(tmp_path / "out" / "record_suite_records.csv")
+    assert list(r["name"]) == ["quake_a", "quake_b", "quake_c", "quake_d"]
+    text = (INPUT / "spectra.nml").read_text().replace("kind = 'both'", "kind = 'bth'")
+    assert "kind = 'bth'" in text
+    proc = run(driver, tmp_path, text)
+    assert proc.returncode == 2, proc.stderr
+    outs = sorted(p.name for p in (tmp_path / "out").iterdir())
+    for t in ("", "_records", "_mean", "_spectra"):
+        assert f"record_suite{t}.csv" in outs and f"record_suite{t}.txt" in outs, outs
+
+
+def test_suite_header_notes(driver, tmp_path):
+    """EAK target: the value at T = 0 is gamma_I A (not a_g S); EAK's corner periods are
+    not called the structure's T1; numbers to 6 digits, the exponent 2/3; the scale
+    factors on top of &records; warnings (stderr and header) for 2 T1 beyond 4 s and
+    beyond the longest record, and for &spectra periods beyond 4 s."""
+    with_records(tmp_path)
+    proc = run(driver, tmp_path, RUN + RECS + "&suite t1 = 0.4, target = 'EAK' /\n"
+               "&eak zone = 'Z3', importance_class = 'III' /\n")
+    assert proc.returncode == 0, proc.stderr
+    head = (tmp_path / "o_suite.txt").read_text()
+    assert "at T = 0 (gamma_I A): 0.414 g" in head and "a_g S" not in head
+    assert "EAK corner periods T1/T2 = 0.15/0.6 s" in head
+    assert "structure period T1 = 0.4 s" in head
+    assert "[0.08, 0.8] s" in head and "0.08000000000000002" not in head
+    assert "long-period exponent 2/3" in head and "0.6666" not in head
+    assert "common_scale and own_scale apply on top of the &records scaling" in head
+    assert "otherwise the most unfavourable response" in head
+    assert "WARNING" not in head and "warning" not in proc.stderr
+    # an EC8 target says a_g S
+    proc = run(driver, tmp_path, RUN + RECS + "&suite t1 = 0.4 /\n" + EC8)
+    assert "at T = 0 (a_g S): 0.24 g" in (tmp_path / "o_suite.txt").read_text()
+    # the records last 2.39, 3.98 and 2.49 s; 2 T1 = 5 s exceeds both 4 s and them
+    proc = run(driver, tmp_path, RUN + RECS + "&suite t1 = 2.5 /\n" + EC8
+               + "&spectra periods = 0.5, 4.5, codes = 'EC8_1' /\n")
+    assert proc.returncode == 0, proc.stderr
+    warnings = [ln for ln in proc.stderr.splitlines() if ln.startswith("warning:")]
+    assert len(warnings) == 3, proc.stderr
+    assert warnings[0].startswith("warning: case.nml:5: &spectra: periods up to 4.5 s")
+    assert warnings[1].startswith("warning: case.nml:3: &suite: t1 = 2.5: the check "
+                                  "reaches 2 T1 = 5 s")
+    assert warnings[2] == ("warning: case.nml:3: &suite: t1 = 2.5: 2 T1 = 5 s exceeds the "
+                           "duration of the longest record read (3.98 s)")
+    head = (tmp_path / "o_suite.txt").read_text()
+    assert "# WARNING: t1 = 2.5: 2 T1 = 5 s exceeds the duration" in head
+    assert "# WARNING: periods up to 4.5 s" in (tmp_path / "o_spectra.txt").read_text()
+
+
+def test_total_scale_factors(driver, tmp_path):
+    """scale and polarity of &records: the records table gives the factor with the
+    polarity and the totals on the file as read; scaling each file by common_total makes
+    common_scale 1."""
+    with_records(tmp_path)
+    files = ", ".join(f"'{f}'" for f in SUITE_FILES)
+    group = "&suite t1 = 0.5, n_points = 12 /\n" + EC8
+    proc = run(driver, tmp_path, "&run analysis='spectra', output='a' /\n"
+               f"&records files = {files}, scale = 2.0, 0.5, 0.25, polarity = 1, -1, 1 /\n"
+               + group)
+    assert proc.returncode == 0, proc.stderr
+    r = read_table(tmp_path / "a_suite_records.csv")
+    c = read_table(tmp_path / "a_suite.csv")["common_scale"][0]
+    assert list(r["scale"]) == [2.0, -0.5, 0.25]
+    assert list(r["own_total"]) == list(r["scale"] * r["own_scale"])
+    assert list(r["common_total"]) == list(r["scale"] * c)
+    totals = ", ".join(repr(abs(float(x))) for x in r["common_total"])
+    proc = run(driver, tmp_path, "&run analysis='spectra', output='b' /\n"
+               f"&records files = {files}, scale = {totals}, polarity = 1, -1, 1 /\n" + group)
+    assert proc.returncode == 0, proc.stderr
+    assert read_table(tmp_path / "b_suite.csv")["common_scale"][0] == pytest.approx(1.0,
+                                                                                   rel=1e-12)
 
 
 @pytest.mark.parametrize("name", sorted(ERRORS))

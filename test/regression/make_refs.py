@@ -2412,14 +2412,20 @@ def suite_tables(nml_path, nml):
     word = lambda ok: "pass" if ok else "fail"
     pga_ok, spec_ok = pga_mean >= tgt0, min(ratio) >= mpf("0.9")
     own_ok = nr >= 3 and own_pga >= 1 and min(own_ratio) >= mpf("0.9")
-    summary = ("n_records (-),t1 (s),t_low (s),t_high (s),pga_mean (g),pga_target (g),"
+    iown = min(range(len(grid)), key=lambda i: own_ratio[i])
+    # the rule that sets common_scale: (b) the PGA when its factor is the larger
+    rule = "pga" if tgt0 / pga_mean >= mpf("0.9") / min(ratio) else "spectrum"
+    summary = ("n_listed (-),n_failed (-),n_records (-),target (-),fit (-),t1 (s),"
+               "t_low (s),t_high (s),n_periods (-),pga_mean (g),pga_target (g),"
                "pga_ratio (-),pga_check (-),min_ratio (-),t_min_ratio (s),"
                "spectrum_check (-),count_check (-),mean_allowed (-),check (-),"
-               "common_scale (-),own_pga_ratio (-),own_min_ratio (-),own_check (-),status (-)")
-    srow = [mpf(nr), mpf(t1), mpf(lo), mpf(hi), pga_mean, tgt0, pga_mean / tgt0,
+               "common_scale (-),common_rule (-),own_pga_ratio (-),own_min_ratio (-),"
+               "own_t_min_ratio (s),own_check (-),status (-)")
+    srow = [mpf(nr), mpf(0), mpf(nr), target.upper(), su.get("fit", "linear").lower(),
+            mpf(t1), mpf(lo), mpf(hi), mpf(len(grid)), pga_mean, tgt0, pga_mean / tgt0,
             word(pga_ok), min(ratio), mpf(grid[imin]), word(spec_ok), word(nr >= 3),
-            "yes" if nr >= 7 else "no", word(nr >= 3 and pga_ok and spec_ok), common,
-            own_pga, min(own_ratio), word(own_ok), "ok"]
+            "yes" if nr >= 7 else "no", word(nr >= 3 and pga_ok and spec_ok), common, rule,
+            own_pga, min(own_ratio), mpf(grid[iown]), word(own_ok), "ok"]
     return (header, rows), (summary, [srow])
 
 
