@@ -490,8 +490,8 @@ contains
         if (allocated(error)) return
         call check(error, m(at), sum(psa(at, :))/3.0_dp, rtol=1.0e-15_dp, message='mean there')
         if (allocated(error)) return
-        call check(error, all(per(2:n) > per(1:n - 1)) .and. n >= 8 .and. n <= 9, &
-                   'grid ascending, 6 + T1 + 1 or 2 refined')
+        call check(error, all(per(2:n) > per(1:n - 1)) .and. n >= 9 .and. n <= 10, &
+                   'grid ascending, 6 + T1 + TC + 1 or 2 refined')
         if (allocated(error)) return
         call check(error, c%own_min_ratio <= c%grid_own_min_ratio, 'own refined')
         if (allocated(error)) return
