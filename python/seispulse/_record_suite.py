@@ -5,8 +5,9 @@ reach these names as ``seispulse.codes.<name>``.
 The rules: (a) at least 3 records; (b) the mean PGA of the records (their zero-period
 spectral acceleration) not below a_g S, the elastic spectrum at T = 0; (c) over
 [0.2 T1, 2 T1] no value of the mean 5 %-damped elastic spectrum (PSA) of the suite below
-90 % of the code's elastic spectrum. With at least 7 records the mean response may be
-used (EN 1998-1 4.3.3.4.3(3)); else the most unfavourable one.
+90 % of the code's elastic spectrum, checked on a grid and refined between its periods.
+With at least 7 records the mean response should be used (EN 1998-1 4.3.3.4.3(3)); else
+the most unfavourable one.
 """
 
 import math

@@ -1,12 +1,13 @@
 !> EN 1998-1 3.2.3.1.2(4) check of a suite of recorded accelerograms (admitted by
-!> 3.2.3.1.3(2)) against the code's elastic spectrum (doc/record-suites.md).
+!> 3.2.3.1.3; its paragraph not verified) against the code's elastic spectrum
+!> (doc/record-suites.md).
 !>
 !> The rules: (a) at least 3 records; (b) the mean of the records' zero-period spectral
 !> accelerations (their PGA) is not below a_g S, the elastic spectrum at T = 0; (c) over
 !> [0.2 T1, 2 T1] (T1: the structure's fundamental period) no value of the mean 5 %-damped
 !> elastic spectrum of the suite lies below 90 % of the code's elastic spectrum.
-!> EN 1998-1 4.3.3.4.3(3): with at least 7 records the mean response may be used (else the
-!> most unfavourable one), reported as `mean_allowed`.
+!> EN 1998-1 4.3.3.4.3(3): with at least 7 records the mean response should be used (else
+!> the most unfavourable one), reported as `mean_allowed`.
 !>
 !> This module works on arrays only: the caller gives the check grid (`suite_check_periods`),
 !> each record's 5 % pseudo-spectral acceleration (PSA) and PGA there (seispulse_sdof_sim's
