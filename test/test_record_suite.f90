@@ -512,27 +512,14 @@ contains
         accel(201:300) = 0.0_dp
         target = suite_target_t(code=SUITE_TARGET_EC8, ag=0.3_dp, ground=EC8_GROUND_B)
         msg = ''
-        call ec8_suite_check_records(accel, [1, 101, 201], [100, 100, 100], [0.01_dp, 0.01_dp, &
-                                     0.01_dp], target, 0.5_dp, SUITE_FIT_LINEAR, c, per, n, &
-                                     psa, pga, tv, m, r, om, own, stat, msg, n_points=10, &
-                                     bad_record=bad)
-        call check_refused(error, stat, msg, 'record 3: its PGA is 0.0 g')
+        call refused_record([1, 101, 201], [100, 100, 100], [0.01_dp, 0.01_dp, 0.01_dp], &
+                            'record 3: its PGA is 0.0 g', 3)
         if (allocated(error)) return
-        call check(error, bad, 3, 'bad_record')
+        call refused_record([1, 101, 251], [100, 100, 100], [0.01_dp, 0.01_dp, 0.01_dp], &
+                            'record 3: first = 251, npts = 100', 3)
         if (allocated(error)) return
-        call ec8_suite_check_records(accel, [1, 101, 251], [100, 100, 100], [0.01_dp, 0.01_dp, &
-                                     0.01_dp], target, 0.5_dp, SUITE_FIT_LINEAR, c, per, n, &
-                                     psa, pga, tv, m, r, om, own, stat, msg, n_points=10, &
-                                     bad_record=bad)
-        call check_refused(error, stat, msg, 'record 3: first = 251, npts = 100')
-        if (allocated(error)) return
-        call ec8_suite_check_records(accel, [1, 101, 151], [100, 100, 50], [0.01_dp, 0.0_dp, &
-                                     0.01_dp], target, 0.5_dp, SUITE_FIT_LINEAR, c, per, n, &
-                                     psa, pga, tv, m, r, om, own, stat, msg, n_points=10, &
-                                     bad_record=bad)
-        call check_refused(error, stat, msg, 'record 2: dt')
-        if (allocated(error)) return
-        call check(error, bad, 2, 'bad_record dt')
+        call refused_record([1, 101, 151], [100, 100, 50], [0.01_dp, 0.0_dp, 0.01_dp], &
+                            'record 2: dt', 2)
         if (allocated(error)) return
         call ec8_suite_check_records(accel, [1, 101], [100, 100], [0.01_dp, 0.01_dp], target, &
                                      0.5_dp, SUITE_FIT_LINEAR, c, per, n, psa(:, 1:2), pga(1:2), &
@@ -551,6 +538,22 @@ contains
         call check_refused(error, stat, msg, 'ag = 0.0')
         if (allocated(error)) return
         call check(error, SUITE_RULE_PGA /= SUITE_RULE_SPECTRUM, 'rule codes differ')
+
+    contains
+
+        !> The check of three records (first, npts, dt) is refused with `part` in the
+        !> message, and bad_record names record `which`.
+        subroutine refused_record(first, npts, dt, part, which)
+            integer, intent(in) :: first(3), npts(3), which
+            real(dp), intent(in) :: dt(3)
+            character(len=*), intent(in) :: part
+            call ec8_suite_check_records(accel, first, npts, dt, target, 0.5_dp, &
+                                         SUITE_FIT_LINEAR, c, per, n, psa, pga, tv, m, r, om, &
+                                         own, stat, msg, n_points=10, bad_record=bad)
+            call check_refused(error, stat, msg, part)
+            if (allocated(error)) return
+            call check(error, bad, which, 'bad_record')
+        end subroutine refused_record
     end subroutine test_records_bad
 
 end module test_record_suite

@@ -390,30 +390,42 @@ contains
         values = 0.0_dp
         select case (target%code)
         case (SUITE_TARGET_EC8)
-            if (.not. finite_positive(target%ag)) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ag = '// &
-                               real_str(target%ag)//': the design ground acceleration of '// &
-                               'the target (g) must be finite and > 0')
-                return
-            end if
+            call positive_target('ag', target%ag, 'the design ground acceleration of the '// &
+                                 'target (g)', stat, errmsg)
+            if (stat /= SEISPULSE_SUCCESS) return
             call ec8_elastic_spectrum(periods, target%ag, target%spectrum_type, target%ground, &
                                       100.0_dp*suite_damping, values, stat, errmsg)
         case (SUITE_TARGET_EAK)
-            if (.not. finite_positive(target%alpha)) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'alpha = '// &
-                               real_str(target%alpha)//': the ground acceleration A/g of '// &
-                               'the target must be finite and > 0')
-                return
-            end if
+            call positive_target('alpha', target%alpha, 'the ground acceleration A/g of the '// &
+                                 'target', stat, errmsg)
+            if (stat /= SEISPULSE_SUCCESS) return
             call eak2000_elastic_spectrum(periods, target%alpha, target%ground, &
                                           target%importance, 100.0_dp*suite_damping, &
                                           target%eta_min, target%exponent, values, stat, errmsg)
         case default
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'code = '// &
-                           int_str(target%code)//': must be SUITE_TARGET_EC8 (1) or '// &
-                           'SUITE_TARGET_EAK (2)')
+            call refuse_code(target%code, stat, errmsg)
         end select
     end subroutine suite_target_values
+
+    !> The refusal of an unknown target code.
+    pure subroutine refuse_code(code, stat, errmsg)
+        integer, intent(in) :: code
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'code = '//int_str(code)// &
+                       ': must be SUITE_TARGET_EC8 (1) or SUITE_TARGET_EAK (2)')
+    end subroutine refuse_code
+
+    !> The target's acceleration `name` = x must be finite and > 0 (what: its meaning).
+    pure subroutine positive_target(name, x, what, stat, errmsg)
+        character(len=*), intent(in) :: name, what
+        real(dp), intent(in) :: x
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        stat = SEISPULSE_SUCCESS
+        if (.not. finite_positive(x)) call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
+            name//' = '//real_str(x)//': '//what//' must be finite and > 0')
+    end subroutine positive_target
 
     !> The target at T = 0, the PGA target of rule (b), g: a_g S (EN 1998-1) or
     !> gamma_I A (EAK 2000).
@@ -458,9 +470,7 @@ contains
                 corners(1:2) = [tb, tc]
             end if
         case default
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'code = '// &
-                           int_str(target%code)//': must be SUITE_TARGET_EC8 (1) or '// &
-                           'SUITE_TARGET_EAK (2)')
+            call refuse_code(target%code, stat, errmsg)
         end select
     end subroutine suite_target_corners
 
@@ -520,7 +530,8 @@ contains
                                              !! the error of a spectrum
         character(len=*), intent(inout), optional :: errmsg  !! message naming the parameter
         integer, intent(in), optional :: n_points  !! log-spaced grid periods, >= 2; default 400
-        real(dp), intent(in), optional :: extra(:) !! further periods, s (inside the range kept)
+        !> further periods, s (those inside the range kept); default none
+        real(dp), intent(in), optional :: extra(:)
         integer, intent(in), optional :: min_records  !! fewer are refused; default 3
         integer, intent(out), optional :: bad_record  !! the record a refusal concerns, or 0
         !> the refinement margin (relative, >= 0); default max(suite_refine_margin,
@@ -573,22 +584,13 @@ contains
                            ' periods (suite_records_room) and psa one column per record')
             return
         end if
-        if (n_min < 1) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'min_records = '// &
-                           int_str(n_min)//': must be >= 1')
-            return
-        end if
         if (.not. (band >= 0.0_dp .and. ieee_is_finite(band))) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'margin = '// &
                            real_str(band)//': the refinement margin must be finite and >= 0')
             return
         end if
-        if (n_rec < n_min) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'records: '//int_str(n_rec)// &
-                           ' given; the suite needs at least '//int_str(n_min)// &
-                           ' (EN 1998-1 3.2.3.1.2(4)a: at least 3)')
-            return
-        end if
+        call check_count(n_rec, n_min, 'records: '//int_str(n_rec)//' given;', stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         do k = 1, n_rec
             if (first(k) < 1 .or. npts(k) < 1 .or. first(k) > size(accel) - npts(k) + 1) then
                 bad = k
@@ -865,6 +867,24 @@ contains
         end if
     end subroutine check_t1
 
+    !> min_records >= 1 and n_rec >= min_records (rule (a) or the caller's own least count);
+    !> head names the count in the message.
+    pure subroutine check_count(n_rec, min_records, head, stat, errmsg)
+        integer, intent(in) :: n_rec, min_records
+        character(len=*), intent(in) :: head
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        stat = SEISPULSE_SUCCESS
+        if (min_records < 1) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'min_records = '// &
+                           int_str(min_records)//': must be >= 1')
+        else if (n_rec < min_records) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, head//' the suite needs '// &
+                           'at least '//int_str(min_records)//' (EN 1998-1 3.2.3.1.2(4)a: '// &
+                           'at least 3)')
+        end if
+    end subroutine check_count
+
     !> Every input of ec8_suite_check: T1, fit, counts, sizes, the grid, positive spectra.
     pure subroutine check_inputs(periods, psa, pga, target, target_pga, t1, fit, n_scale, &
                                  n_mean, min_records, stat, errmsg)
@@ -883,17 +903,8 @@ contains
                            ': must be SUITE_FIT_LINEAR (1) or SUITE_FIT_LOG (2)')
             return
         end if
-        if (min_records < 1) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'min_records = '// &
-                           int_str(min_records)//': must be >= 1')
-            return
-        end if
-        if (n_rec < min_records) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'n = '//int_str(n_rec)// &
-                           ' records: the suite needs at least '//int_str(min_records)// &
-                           ' (EN 1998-1 3.2.3.1.2(4)a: at least 3)')
-            return
-        end if
+        call check_count(n_rec, min_records, 'n = '//int_str(n_rec)//' records:', stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         if (n < 1) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
                            'periods: the check grid is empty')
