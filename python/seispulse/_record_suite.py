@@ -33,10 +33,11 @@ _FIT_CODES = {"linear": _f.SUITE_FIT_LINEAR, "log": _f.SUITE_FIT_LOG}
 SUITE_FITS = tuple(_FIT_CODES)
 #: Damping ratio of the records' spectra: the code's elastic spectrum is 5 %-damped.
 SUITE_DAMPING = 0.05
-#: Grid intervals whose smaller end ratio lies within this fraction of the least ratio on
-#: the grid are searched for the least ratio between grid periods (with the intervals next
-#: to every local minimum of the grid; doc/record-suites.md section 3).
-SUITE_REFINE_MARGIN = 0.05
+#: Grid intervals whose smaller end ratio lies within a margin of the least ratio on the
+#: grid are searched for the least ratio between grid periods (with the intervals next to
+#: the grid's local minima within twice the margin); the margin is one grid spacing,
+#: 10^(1/(n_points - 1)) - 1, at least this value (doc/record-suites.md section 2).
+SUITE_REFINE_MARGIN = 0.005
 _RULES = {_f.SUITE_RULE_PGA: "pga", _f.SUITE_RULE_SPECTRUM: "spectrum"}
 #: PGA (g) above which a record given in g probably was in m/s2 or cm/s2 (a warning).
 _PLAUSIBLE_PGA = 5.0
@@ -357,11 +358,12 @@ def check_record_suite(records, t1, target, *, dt=None, units="g", n_points=400,
         Log-spaced periods from 0.2 T1 to 2 T1, both included (default 400; >= 2). The
         grid also holds T1, the target's corner periods and ``extra_periods`` inside the
         range. Rule (c) is then searched between grid periods (Brent) on every interval
-        whose smaller end ratio lies within 5 % (:data:`SUITE_REFINE_MARGIN`) of the least
-        grid ratio and next to every local minimum of the grid; the refined least ratio
-        gives min_ratio, common_scale and the verdict, and its period joins ``periods``.
-        A trough narrower than the grid spacing whose grid neighbours both lie more than
-        5 % above the least grid ratio, away from a grid local minimum, can be missed.
+        whose smaller end ratio lies within one grid spacing (0.58 % at 400 points, at
+        least 0.5 %, :data:`SUITE_REFINE_MARGIN`) of the least grid ratio, and next to
+        the grid's local minima within twice that; the refined least ratio gives
+        min_ratio, common_scale and the verdict, and its period joins ``periods``. A
+        trough narrower than the grid spacing whose grid neighbours both lie above the
+        margin, away from such a local minimum, can be missed (doc/record-suites.md).
     extra_periods : array_like, optional
         Further periods (s, finite) to check; those outside [0.2 T1, 2 T1] are left out.
     fit : {'linear', 'log'}
