@@ -21,7 +21,7 @@ module driver_spectra
     use, intrinsic :: iso_fortran_env, only: error_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
     use seispulse, only: dp, shortest_str, g_str, SEISPULSE_SUCCESS, int_str, outside, upper, &
-                         STANDARD_GRAVITY, sdof_spectrum, pseudo_spectra, SDOF_PEAKS_EXACT, &
+                         STANDARD_GRAVITY, &
                          ec8_elastic_spectrum, ec8_design_spectrum, ec8_ground_parameters, &
                          ec8_damping_correction, EC8_SPECTRUM_TYPE_1, EC8_SPECTRUM_TYPE_2, &
                          ec8_reference_pga, EC8_ANNEX_GR, &
@@ -29,8 +29,10 @@ module driver_spectra
                          eak2000_importance_factor, eak2000_damping_correction, &
                          eak2000_design_spectrum, eak2000_elastic_spectrum, EAK_GROUND_A, &
                          EAK_MAP_2003, EAK_MAP_2000, EAK_BETA0, &
-                         suite_check_t, suite_check_periods, ec8_suite_check, &
-                         SUITE_FIT_LINEAR, SUITE_FIT_LOG
+                         suite_check_t, suite_check_periods, SUITE_FIT_LINEAR, SUITE_FIT_LOG, &
+                         suite_target_t, suite_target_pga, suite_target_values, &
+                         suite_target_corners, ec8_suite_check_records, suite_records_room, &
+                         SUITE_TARGET_EC8, SUITE_TARGET_EAK
     use driver_namelist_scan, only: nml_group, scan_file
     use driver_input, only: find_group, check_keys, read_group, located, join, &
                             read_optional, given, list_item, name_index, ROWS_FAILED, &
@@ -155,7 +157,7 @@ module driver_spectra
         logical :: suite = .false.                  !! &suite given: the check
         real(dp) :: t1 = 0.0_dp                     !! s
         integer :: target = CODE_EC8_1
-        integer :: n_points = 50
+        integer :: n_points = 400
         integer :: fit = SUITE_FIT_LINEAR
         integer :: min_records = 3
         character(len=:), allocatable :: records_from   !! the other input, as opened ('' none)
@@ -180,6 +182,7 @@ module driver_spectra
         logical :: done = .false.                   !! the check was made
         character(len=:), allocatable :: why        !! why not
         type(suite_check_t) :: check
+        type(suite_target_t) :: tgt                 !! the target as the library takes it
     end type suite_res_t
 
 contains
@@ -216,7 +219,7 @@ contains
         k_exponent = 2.0_dp / 3.0_dp
         t1 = nan
         target = 'EC8_1'
-        n_points = 50
+        n_points = 400
         fit = 'linear'
         min_records = 3
         records_from = ''
@@ -348,7 +351,7 @@ contains
             if (len(errmsg) > 0) return
         end if
         if (cfg%suite) then
-            call suite_grid(path, gc, gk, gu, cfg, res, errmsg)
+            call suite_target(path, gc, gk, cfg, res, errmsg)
             if (len(errmsg) > 0) return
         end if
 
@@ -1046,151 +1049,149 @@ contains
         end do
     end subroutine spectra_table
 
-    !> The check grid, the target there and at T = 0.
-    subroutine suite_grid(path, gc, gk, gu, cfg, res, errmsg)
+    !> The target of the check (the library's suite_target_t) and its value at T = 0,
+    !> checked before any record is read (a refusal is placed at &ec8 or &eak).
+    subroutine suite_target(path, gc, gk, cfg, res, errmsg)
         character(len=*), intent(in) :: path
-        type(nml_group), intent(in) :: gc, gk, gu
+        type(nml_group), intent(in) :: gc, gk
         type(config_t), intent(in) :: cfg
         type(suite_res_t), intent(out) :: res
         character(len=:), allocatable, intent(out) :: errmsg
-        real(dp), allocatable :: extra(:), grid(:)
-        real(dp) :: s, tb, tc, td, zero(1), at_zero(1)
         character(len=512) :: msg
-        integer :: st, n
+        integer :: st
 
         errmsg = ''
         msg = ''
-        ! the corner periods of the target, T1 itself and the periods of &spectra
         if (cfg%target == CODE_EAK) then
-            call eak2000_ground_parameters(cfg%eak%ground, tb, tc, st, msg)
-            extra = [cfg%t1, tb, tc]
+            res%tgt = suite_target_t(code=SUITE_TARGET_EAK, alpha=cfg%eak%alpha, &
+                                     ground=cfg%eak%ground, importance=cfg%eak%importance, &
+                                     eta_min=cfg%eak%eta_min, exponent=cfg%eak%exponent)
         else
-            call ec8_ground_parameters(merge(EC8_SPECTRUM_TYPE_1, EC8_SPECTRUM_TYPE_2, &
-                cfg%target == CODE_EC8_1), cfg%ec8%ground, s, tb, tc, td, st, msg)
-            extra = [cfg%t1, tb, tc, td]
+            res%tgt = suite_target_t(code=SUITE_TARGET_EC8, spectrum_type=ec8_type(cfg%target), &
+                                     ag=cfg%ec8%ag, &
+                                     ground=cfg%ec8%ground)
         end if
-        if (st == SEISPULSE_SUCCESS) then
-            extra = [extra, cfg%periods]
-            allocate(grid(cfg%n_points + size(extra)))
-            call suite_check_periods(cfg%t1, cfg%n_points, extra, grid, n, st, msg)
-        end if
-        if (st /= SEISPULSE_SUCCESS) then
-            errmsg = located(path, gu)//trim(msg)
-            return
-        end if
-        res%grid = grid(1:n)
-        ! T1 is on the grid (an extra period): the one closest to it
-        res%i_t1 = minloc(abs(res%grid - cfg%t1), 1)
-        allocate(res%target(n))
-        zero = 0.0_dp
-        call code_spectrum(cfg, cfg%target, .true., check_damping, res%grid, res%target, st, msg)
-        if (st == SEISPULSE_SUCCESS) call code_spectrum(cfg, cfg%target, .true., &
-            check_damping, zero, at_zero, st, msg)
+        call suite_target_pga(res%tgt, res%target_pga, st, msg)
         if (st /= SEISPULSE_SUCCESS) then
             if (cfg%target == CODE_EAK) then
                 errmsg = located(path, gk)//trim(msg)
             else
                 errmsg = located(path, gc)//trim(msg)
             end if
-            return
         end if
-        res%target_pga = at_zero(1)
-    end subroutine suite_grid
+    end subroutine suite_target
+
+    !> Without a check: the check grid (suite_check_periods with T1 and the target's
+    !> corners) and the target there, for the tables of NaN.
+    subroutine plain_grid(cfg, res)
+        type(config_t), intent(in) :: cfg
+        type(suite_res_t), intent(inout) :: res
+        real(dp) :: corners(3), grid(cfg%n_points + 4)
+        integer :: nc, n, st
+        call suite_target_corners(res%tgt, corners, nc, st)
+        call suite_check_periods(cfg%t1, cfg%n_points, [cfg%t1, corners(1:nc)], grid, n, st)
+        res%grid = grid(1:n)
+        allocate(res%target(n))
+        call suite_target_values(res%tgt, res%grid, res%target, st)
+    end subroutine plain_grid
 
     ! ------------------------------------------------------------------------------
     ! The records and the check
     ! ------------------------------------------------------------------------------
 
-    !> Every record (read, polarity, scale), its 5 % PSA on the check grid (exact
-    !> peaks), then the check on the records read. A record that fails keeps o%ok =
-    !> .false. and its message (reported on stderr at once).
+    !> Every record (read, polarity, scale), then the check on the records read
+    !> (ec8_suite_check_records: the grid, each record's 5 % PSA with exact peaks, the rules
+    !> with the least ratios refined between grid periods). A record that fails to read, or
+    !> that the check refuses (bad_record: zero PGA or PSA), keeps o%ok = .false. and its
+    !> message (reported on stderr at once); the check is then made on the others.
     subroutine compute_suite(cfg, outs, res)
         type(config_t), intent(in) :: cfg
         type(record_out_t), allocatable, intent(out) :: outs(:)
         type(suite_res_t), intent(inout) :: res
-        real(dp), allocatable :: accel(:), sd(:, :), sv(:, :), sa(:, :), psv(:, :), &
-                                 psa_ok(:, :)
+        real(dp), allocatable :: accel(:), joined(:), dts(:), per(:), psa(:, :), tv(:), &
+                                 m(:), rt(:), om(:), own(:), pga(:)
+        integer, allocatable :: first(:), npts(:), idx(:)
         character(len=:), allocatable :: where
         character(len=4096) :: msg
-        integer :: nrec, ir, st, np, nok, k, i
+        integer :: nrec, ir, st, nok, room, n, bad
 
         where = located(cfg%rec_path, cfg%gr)
         nrec = size(cfg%recs)
-        np = size(res%grid)
-        allocate(outs(nrec))
-        allocate(res%psa(np, nrec), res%pga(nrec), res%own_scale(nrec), res%mean(np), &
-                 res%ratio(np), res%own_mean(np))
-        allocate(sd(np, 1), sv(np, 1), sa(np, 1), psv(np, 1))
+        allocate(outs(nrec), first(nrec), npts(nrec), dts(nrec), joined(0))
+        first = 1
+        npts = 1
+        dts = 1.0_dp
+        do ir = 1, nrec
+            associate (r => cfg%recs(ir), o => outs(ir))
+                call load_record(where, r, ir, nrec, 'spectra', cfg%slammer_rounding, o, accel)
+                if (.not. o%ok) cycle
+                first(ir) = size(joined) + 1
+                npts(ir) = size(accel)
+                dts(ir) = o%dt
+                joined = [joined, accel]
+            end associate
+        end do
+
+        ! --- the check on the records read (again without a record the check refuses)
+        res%done = .false.
+        room = suite_records_room(cfg%n_points, 0)
+        do
+            nok = count(outs%ok)
+            if (nok < cfg%min_records) then
+                res%why = 'the check needs at least min_records = '//int_str(cfg%min_records) &
+                          //' records and only '//int_str(nok)//' were read: the summary ' &
+                          //'holds NaN'
+                exit
+            end if
+            idx = pack([(ir, ir = 1, nrec)], outs%ok)
+            if (allocated(psa)) deallocate(per, psa, tv, m, rt, om, own, pga)
+            allocate(per(room), psa(room, nok), tv(room), m(room), rt(room), om(room), &
+                     own(nok), pga(nok))
+            msg = ''
+            call ec8_suite_check_records(joined, first(idx), npts(idx), dts(idx), res%tgt, &
+                                         cfg%t1, cfg%fit, res%check, per, n, psa, pga, tv, m, &
+                                         rt, om, own, st, msg, n_points=cfg%n_points, &
+                                         min_records=cfg%min_records, bad_record=bad)
+            if (st == SEISPULSE_SUCCESS) then
+                res%done = .true.
+                exit
+            end if
+            if (bad == 0) then
+                res%why = 'the check failed: '//trim(msg)
+                exit
+            end if
+            associate (o => outs(idx(bad)))
+                o%ok = .false.
+                o%message = reason(msg)
+                call report(where//list_item('files', idx(bad))//' = ''' &
+                            //cfg%recs(idx(bad))%file//''': '//o%message)
+            end associate
+        end do
+
+        if (.not. res%done) then
+            call plain_grid(cfg, res)
+            n = size(res%grid)
+        else
+            res%grid = per(1:n)
+            res%target = tv(1:n)
+        end if
+        allocate(res%psa(n, nrec), res%pga(nrec), res%own_scale(nrec), res%mean(n), &
+                 res%ratio(n), res%own_mean(n))
         res%psa = ieee_value(1.0_dp, ieee_quiet_nan)
         res%pga = ieee_value(1.0_dp, ieee_quiet_nan)
         res%own_scale = ieee_value(1.0_dp, ieee_quiet_nan)
         res%mean = ieee_value(1.0_dp, ieee_quiet_nan)
         res%ratio = res%mean
         res%own_mean = res%mean
-        do ir = 1, nrec
-            associate (r => cfg%recs(ir), o => outs(ir))
-                call load_record(where, r, ir, nrec, 'spectra', cfg%slammer_rounding, o, accel)
-                if (.not. o%ok) cycle
-                msg = ''
-                call sdof_spectrum(accel, o%dt, res%grid, [check_damping], STANDARD_GRAVITY, &
-                                   sd, sv, sa, st, msg, peaks=SDOF_PEAKS_EXACT)
-                if (st == SEISPULSE_SUCCESS) then
-                    call pseudo_spectra(res%grid, sd, STANDARD_GRAVITY, o%pga, psv, &
-                                        res%psa(:, ir:ir))
-                    res%pga(ir) = o%pga
-                    do i = 1, np
-                        if (.not. res%psa(i, ir) > 0.0_dp) then
-                            st = 1
-                            msg = 'PSA = 0 at T = '//shortest_str(res%grid(i))//' s: a ' &
-                                  //'record without spectral acceleration cannot be scaled'
-                            exit
-                        end if
-                    end do
-                end if
-                if (st /= SEISPULSE_SUCCESS) then
-                    o%ok = .false.
-                    o%message = trim(msg)
-                    res%psa(:, ir) = ieee_value(1.0_dp, ieee_quiet_nan)
-                    res%pga(ir) = ieee_value(1.0_dp, ieee_quiet_nan)
-                    call report(where//list_item('files', ir)//' = '''//r%file//''': ' &
-                                //o%message)
-                end if
-            end associate
-        end do
-
-        ! --- the check on the records read
-        nok = count(outs%ok)
-        res%done = .false.
-        if (nok < cfg%min_records) then
-            res%why = 'the check needs at least min_records = '//int_str(cfg%min_records) &
-                      //' records and only '//int_str(nok)//' were read: the summary holds ' &
-                      //'NaN'
-            return
-        end if
-        allocate(psa_ok(np, nok))
-        k = 0
-        do ir = 1, nrec
-            if (.not. outs(ir)%ok) cycle
-            k = k + 1
-            psa_ok(:, k) = res%psa(:, ir)
-        end do
-        block
-            real(dp) :: own(nok)
-            msg = ''
-            call ec8_suite_check(res%grid, psa_ok, pack(res%pga, outs%ok), res%target, &
-                                 res%target_pga, cfg%t1, cfg%fit, res%check, own, res%mean, &
-                                 st, msg, min_records=cfg%min_records, ratio=res%ratio, &
-                                 own_mean=res%own_mean)
-            if (st /= SEISPULSE_SUCCESS) then
-                res%why = 'the check failed: '//trim(msg)
-                res%mean = ieee_value(1.0_dp, ieee_quiet_nan)
-                res%ratio = res%mean
-                res%own_mean = res%mean
-                return
-            end if
-            res%own_scale = unpack(own, outs%ok, res%own_scale)
-        end block
-        res%done = .true.
+        ! T1 is on the grid (an extra period): the one closest to it
+        res%i_t1 = minloc(abs(res%grid - cfg%t1), 1)
+        if (.not. res%done) return
+        res%psa(:, idx) = psa(1:n, :)
+        res%pga(idx) = pga
+        res%own_scale(idx) = own
+        res%mean = m(1:n)
+        res%ratio = rt(1:n)
+        res%own_mean = om(1:n)
     end subroutine compute_suite
 
     ! ------------------------------------------------------------------------------
@@ -1418,7 +1419,8 @@ contains
             //'the most unfavourable response', &
             'check grid: '//int_str(size(res%grid))//' periods, '//int_str(cfg%n_points) &
             //' log-spaced from 0.2 T1 to 2 T1 with T1, the target''s corner periods and ' &
-            //'the &spectra periods inside; PSA: 5 % damping, exact peaks over the record, ' &
+            //'the least ratios refined between them (doc/record-suites.md section 3); PSA: ' &
+            //'5 % damping, exact peaks over the record, ' &
             //'g = '//shortest_str(STANDARD_GRAVITY)//' m/s2', &
             'common_scale: the smallest factor on every record making (b) and (c) hold ' &
             //'(M.1, doc/record-suites.md; common_rule: the rule that sets it, pga (b) or ' &

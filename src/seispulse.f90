@@ -176,7 +176,12 @@ module seispulse
                                  EAK_GROUND_C, EAK_GROUND_D, EAK_GROUND_X, EAK_MAP_2003, &
                                  EAK_MAP_2000, EAK_BETA0
     use seispulse_record_suite, only: SUITE_FIT_LINEAR, SUITE_FIT_LOG, suite_rtol, suite_check_t, &
-                                      suite_check_periods, ec8_suite_check
+                                      suite_check_periods, ec8_suite_check, SUITE_TARGET_EC8, &
+                                      SUITE_TARGET_EAK, SUITE_RULE_PGA, SUITE_RULE_SPECTRUM, &
+                                      suite_target_t, suite_target_values, suite_target_pga, &
+                                      suite_target_corners, suite_refine_margin, &
+                                      suite_refine_spacings, &
+                                      suite_records_room, ec8_suite_check_records
     use seispulse_wall_table, only: wall_case_t, wall_case_default, wall_comparison, &
                                     wall_pressure_profile, wall_row_label, WALL_ROWS, &
                                     WALL_PROFILE_COLUMNS

@@ -2,13 +2,26 @@
 !> check grid (ends exact, 10^(k/4) between them, extras kept or dropped, duplicates
 !> removed), the mean, the ratios, the least ratio and its period, (M.1)-(M.3) written out
 !> as numbers here, the boundary 0.9 x target, scaling laws, the record counts of rules (a)
-!> and 4.3.3.4.3(3), and bad input (messages name the parameter and the record).
+!> and 4.3.3.4.3(3), and bad input (messages name the parameter and the record). The check
+!> from the records (ec8_suite_check_records): the target spectra against the code
+!> routines, and a narrow trough between the periods of a coarse grid that the refinement
+!> finds as a brute-force scan of 20000 periods does.
 module test_record_suite
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT
     use seispulse_record_suite, only: SUITE_FIT_LINEAR, SUITE_FIT_LOG, suite_check_t, &
-                                      suite_check_periods, ec8_suite_check
+                                      suite_check_periods, ec8_suite_check, suite_target_t, &
+                                      SUITE_TARGET_EC8, SUITE_TARGET_EAK, suite_target_values, &
+                                      suite_target_pga, suite_target_corners, &
+                                      ec8_suite_check_records, suite_records_room, &
+                                      SUITE_RULE_PGA, SUITE_RULE_SPECTRUM
+    use seispulse_codes, only: ec8_elastic_spectrum, EC8_SPECTRUM_TYPE_2, EC8_GROUND_B, &
+                               EC8_GROUND_C
+    use seispulse_eak2000, only: eak2000_elastic_spectrum, EAK_GROUND_B
+    use seispulse_sdof_sim, only: sdof_spectrum, pseudo_spectra
+    use seispulse_records, only: STANDARD_GRAVITY
+    use seispulse_special, only: pi
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
     private
@@ -37,7 +50,12 @@ contains
                  new_unittest('scaling: c x records -> common_scale/c; c x target -> 1/c', &
                               test_scaling), &
                  new_unittest('counts: n = 2 refused, min_records, 6 and 7 records', test_counts), &
-                 new_unittest('bad input: t1, fit, sizes, grid, target, PGA, zero PSA', test_bad)]
+                 new_unittest('bad input: t1, fit, sizes, grid, target, PGA, zero PSA', test_bad), &
+                 new_unittest('target: EC8 and EAK spectra, T = 0, corners, refusals', &
+                              test_target), &
+                 new_unittest('records: a trough between grid periods = 20000-period scan', &
+                              test_trough), &
+                 new_unittest('records: refusals name the record', test_records_bad)]
     end subroutine collect_record_suite
 
     !> errmsg must contain `part` and stat must be SEISPULSE_INVALID_INPUT.
@@ -346,5 +364,196 @@ contains
                              stat, msg)
         call check_refused(error, stat, msg, 'psa(3, 3) = NaN')
     end subroutine test_bad
+
+    subroutine test_target(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(suite_target_t) :: t
+        real(dp) :: per(5), v(5), ref(5), pga, c(3)
+        integer :: stat, n
+        character(len=256) :: msg
+        per = [0.0_dp, 0.1_dp, 0.4_dp, 1.3_dp, 3.0_dp]
+        t = suite_target_t(code=SUITE_TARGET_EC8, spectrum_type=EC8_SPECTRUM_TYPE_2, ag=0.24_dp, &
+                           ground=EC8_GROUND_C)
+        call suite_target_values(t, per, v, stat, msg)
+        call ec8_elastic_spectrum(per, 0.24_dp, EC8_SPECTRUM_TYPE_2, EC8_GROUND_C, 5.0_dp, ref, &
+                                  stat, msg)
+        call check(error, v, ref, rtol=0.0_dp, message='EC8 type 2 C')
+        if (allocated(error)) return
+        ! a_g S: type 2, ground C: S = 1.5 (EN 1998-1 Table 3.3)
+        call suite_target_pga(t, pga, stat, msg)
+        call check(error, pga, 0.24_dp*1.5_dp, rtol=1.0e-15_dp, message='a_g S')
+        if (allocated(error)) return
+        call suite_target_corners(t, c, n, stat, msg)
+        call check(error, n == 3 .and. stat == SEISPULSE_SUCCESS, 'three corners')
+        if (allocated(error)) return
+        call check(error, c, [0.1_dp, 0.25_dp, 1.2_dp], rtol=0.0_dp, message='TB TC TD type 2 C')
+        if (allocated(error)) return
+        t = suite_target_t(code=SUITE_TARGET_EAK, alpha=0.24_dp, ground=EAK_GROUND_B, &
+                           importance=1.15_dp, exponent=1.0_dp)
+        call suite_target_values(t, per, v, stat, msg)
+        call eak2000_elastic_spectrum(per, 0.24_dp, EAK_GROUND_B, 1.15_dp, 5.0_dp, 0.0_dp, &
+                                      1.0_dp, ref, stat, msg)
+        call check(error, v, ref, rtol=0.0_dp, message='EAK B')
+        if (allocated(error)) return
+        call suite_target_pga(t, pga, stat, msg)
+        call check(error, pga, 1.15_dp*0.24_dp, rtol=1.0e-15_dp, message='gamma_I A')
+        if (allocated(error)) return
+        call suite_target_corners(t, c, n, stat, msg)
+        call check(error, n == 2 .and. c(3) <= 0.0_dp, 'two corners')
+        if (allocated(error)) return
+        call check(error, c(1:2), [0.15_dp, 0.6_dp], rtol=0.0_dp, message='EAK T1 T2 ground B')
+        if (allocated(error)) return
+        msg = ''
+        t = suite_target_t(code=SUITE_TARGET_EC8, ag=0.0_dp)
+        call suite_target_pga(t, pga, stat, msg)
+        call check_refused(error, stat, msg, 'ag = 0.0: the design ground acceleration')
+        if (allocated(error)) return
+        t = suite_target_t(code=SUITE_TARGET_EAK, alpha=0.2_dp, ground=5)
+        call suite_target_pga(t, pga, stat, msg)
+        call check_refused(error, stat, msg, 'ground category X')
+        if (allocated(error)) return
+        t = suite_target_t(code=3)
+        call suite_target_pga(t, pga, stat, msg)
+        call check_refused(error, stat, msg, 'code = 3')
+    end subroutine test_target
+
+    !> Three windowed sines (periods 0.25, 0.6, 1.5 s): the mean/target ratio has a trough
+    !> near 0.395 s; a 6-point grid over [0.2, 2] s misses it by 23 %. The refined least
+    !> ratio equals the least of 20000 log-spaced periods to 1e-6, and its period is on the
+    !> returned grid with that ratio.
+    subroutine test_trough(error)
+        type(test_error), allocatable, intent(out) :: error
+        integer, parameter :: ns = 4801, nscan = 20000
+        real(dp), parameter :: step = 0.005_dp
+        real(dp), parameter :: tp(3) = [0.25_dp, 0.6_dp, 1.5_dp], amp(3) = [0.3_dp, 0.25_dp, &
+                                                                               0.2_dp]
+        real(dp) :: accel(3*ns), t, env, scan_t(nscan), tgt(nscan), mean(nscan)
+        real(dp), allocatable :: sd(:, :), sv(:, :), sa(:, :), psv(:, :), ps(:, :)
+        real(dp) :: per(suite_records_room(6, 0)), psa(suite_records_room(6, 0), 3), pga(3)
+        real(dp) :: tv(suite_records_room(6, 0)), m(suite_records_room(6, 0)), &
+                    r(suite_records_room(6, 0)), om(suite_records_room(6, 0)), own(3), best
+        type(suite_target_t) :: target
+        type(suite_check_t) :: c
+        integer :: k, i, stat, n, at
+        character(len=256) :: msg
+        do k = 1, 3
+            do i = 1, ns
+                t = (i - 1)*step
+                env = sin(pi*min(t/(8.0_dp*tp(k)), 1.0_dp))**2
+                accel((k - 1)*ns + i) = amp(k)*sin(2.0_dp*pi*t/tp(k))*env
+                if (t > 8.0_dp*tp(k)) accel((k - 1)*ns + i) = 0.0_dp
+            end do
+        end do
+        target = suite_target_t(code=SUITE_TARGET_EC8, ag=0.3_dp, ground=EC8_GROUND_B)
+        call ec8_suite_check_records(accel, [1, ns + 1, 2*ns + 1], [ns, ns, ns], &
+                                     [step, step, step], target, 1.0_dp, SUITE_FIT_LINEAR, c, &
+                                     per, n, psa, pga, tv, m, r, om, own, stat, msg, n_points=6)
+        call check(error, stat, SEISPULSE_SUCCESS, trim(msg))
+        if (allocated(error)) return
+        ! the brute-force scan
+        do i = 1, nscan
+            scan_t(i) = 0.2_dp*10.0_dp**(real(i - 1, dp)/real(nscan - 1, dp))
+        end do
+        allocate(sd(nscan, 1), sv(nscan, 1), sa(nscan, 1), psv(nscan, 1), ps(nscan, 1))
+        mean = 0.0_dp
+        do k = 1, 3
+            call sdof_spectrum(accel((k - 1)*ns + 1:k*ns), step, scan_t, [0.05_dp], &
+                               STANDARD_GRAVITY, sd, sv, sa, stat, msg)
+            call pseudo_spectra(scan_t, sd, STANDARD_GRAVITY, 0.0_dp, psv, ps)
+            mean = mean + ps(:, 1)/3.0_dp
+        end do
+        call ec8_elastic_spectrum(scan_t, 0.3_dp, ground=EC8_GROUND_B, se=tgt, stat=stat)
+        at = minloc(mean/tgt, 1)
+        best = mean(at)/tgt(at)
+        call check(error, c%min_ratio, best, rtol=1.0e-6_dp, message='refined = scan')
+        if (allocated(error)) return
+        call check(error, c%t_min_ratio, scan_t(at), rtol=1.0e-3_dp, message='its period')
+        if (allocated(error)) return
+        call check(error, c%grid_min_ratio > 1.1_dp*best, 'the grid alone misses it')
+        if (allocated(error)) return
+        call check(error, c%n_searched > 0 .and. .not. c%spectrum_ok .and. .not. c%passed, &
+                   'searched; fails (c)')
+        if (allocated(error)) return
+        ! (M.1) from the refined least ratio: rule (c) sets it
+        call check(error, c%common_scale, max(c%pga_target/c%pga_mean, 0.9_dp/best), &
+                   rtol=1.0e-6_dp, message='common_scale')
+        if (allocated(error)) return
+        call check(error, c%scale_rule, SUITE_RULE_SPECTRUM)
+        if (allocated(error)) return
+        ! the refined period is on the returned grid with the least ratio
+        at = minloc(abs(per(1:n) - c%t_min_ratio), 1)
+        call check(error, per(at), c%t_min_ratio, rtol=0.0_dp, message='on the grid')
+        if (allocated(error)) return
+        call check(error, r(at), c%min_ratio, rtol=0.0_dp, message='ratio there')
+        if (allocated(error)) return
+        call check(error, minval(r(1:n)), c%min_ratio, rtol=0.0_dp, message='least of table')
+        if (allocated(error)) return
+        call check(error, m(at), sum(psa(at, :))/3.0_dp, rtol=1.0e-15_dp, message='mean there')
+        if (allocated(error)) return
+        call check(error, all(per(2:n) > per(1:n - 1)) .and. n >= 9 .and. n <= 10, &
+                   'grid ascending, 6 + T1 + TC + 1 or 2 refined')
+        if (allocated(error)) return
+        call check(error, c%own_min_ratio <= c%grid_own_min_ratio, 'own refined')
+        if (allocated(error)) return
+        call check(error, pga, amp*maxval(abs(accel(1:ns)))/amp(1), rtol=1.0e-2_dp, &
+                   message='pga')
+    end subroutine test_trough
+
+    subroutine test_records_bad(error)
+        type(test_error), allocatable, intent(out) :: error
+        real(dp) :: accel(300), per(16), psa(16, 3), pga(3), tv(16), m(16), r(16), om(16), own(3)
+        type(suite_target_t) :: target
+        type(suite_check_t) :: c
+        integer :: stat, n, i, bad
+        character(len=256) :: msg
+        do i = 1, 300
+            accel(i) = sin(real(i, dp)*0.3_dp)
+        end do
+        accel(201:300) = 0.0_dp
+        target = suite_target_t(code=SUITE_TARGET_EC8, ag=0.3_dp, ground=EC8_GROUND_B)
+        msg = ''
+        call refused_record([1, 101, 201], [100, 100, 100], [0.01_dp, 0.01_dp, 0.01_dp], &
+                            'record 3: its PGA is 0.0 g', 3)
+        if (allocated(error)) return
+        call refused_record([1, 101, 251], [100, 100, 100], [0.01_dp, 0.01_dp, 0.01_dp], &
+                            'record 3: first = 251, npts = 100', 3)
+        if (allocated(error)) return
+        call refused_record([1, 101, 151], [100, 100, 50], [0.01_dp, 0.0_dp, 0.01_dp], &
+                            'record 2: dt', 2)
+        if (allocated(error)) return
+        call ec8_suite_check_records(accel, [1, 101], [100, 100], [0.01_dp, 0.01_dp], target, &
+                                     0.5_dp, SUITE_FIT_LINEAR, c, per, n, psa(:, 1:2), pga(1:2), &
+                                     tv, m, r, om, own(1:2), stat, msg, n_points=10)
+        call check_refused(error, stat, msg, 'records: 2 given; the suite needs at least 3')
+        if (allocated(error)) return
+        call ec8_suite_check_records(accel, [1, 101, 151], [100, 100, 50], [0.01_dp, 0.01_dp, &
+                                     0.01_dp], target, 0.5_dp, SUITE_FIT_LINEAR, c, per(1:10), &
+                                     n, psa, pga, tv, m, r, om, own, stat, msg, n_points=10)
+        call check_refused(error, stat, msg, 'need room for 16 periods')
+        if (allocated(error)) return
+        target%ag = 0.0_dp
+        call ec8_suite_check_records(accel, [1, 101, 151], [100, 100, 50], [0.01_dp, 0.01_dp, &
+                                     0.01_dp], target, 0.5_dp, SUITE_FIT_LINEAR, c, per, n, &
+                                     psa, pga, tv, m, r, om, own, stat, msg, n_points=10)
+        call check_refused(error, stat, msg, 'ag = 0.0')
+        if (allocated(error)) return
+        call check(error, SUITE_RULE_PGA /= SUITE_RULE_SPECTRUM, 'rule codes differ')
+
+    contains
+
+        !> The check of three records (first, npts, dt) is refused with `part` in the
+        !> message, and bad_record names record `which`.
+        subroutine refused_record(first, npts, dt, part, which)
+            integer, intent(in) :: first(3), npts(3), which
+            real(dp), intent(in) :: dt(3)
+            character(len=*), intent(in) :: part
+            call ec8_suite_check_records(accel, first, npts, dt, target, 0.5_dp, &
+                                         SUITE_FIT_LINEAR, c, per, n, psa, pga, tv, m, r, om, &
+                                         own, stat, msg, n_points=10, bad_record=bad)
+            call check_refused(error, stat, msg, part)
+            if (allocated(error)) return
+            call check(error, bad, which, 'bad_record')
+        end subroutine refused_record
+    end subroutine test_records_bad
 
 end module test_record_suite

@@ -46,3 +46,51 @@ subroutine sp_ec8_suite_check(np, nr, periods, psa, pga, target, target_pga, t1,
     flags = merge(1, 0, [c%pga_ok, c%spectrum_ok, c%count_ok, c%mean_allowed, c%passed, &
                          c%own_passed])
 end subroutine sp_ec8_suite_check
+
+!> The check from the records (ec8_suite_check_records): accel (g) the nr records
+!> concatenated, first/npts/dt per record; the target: code 1 EC8 (spectrum_type, ag (g),
+!> ground) or 2 EAK (alpha, ground, importance, eta_min, exponent). nmax = n_points + ne + 6
+!> (suite_records_room); margin < 0: the default. periods(1:n) the grid with the refined minima; values as in
+!> sp_ec8_suite_check, then grid_min_ratio, grid_own_min_ratio; flags as there; ints =
+!> [scale_rule, n_searched, bad_record].
+subroutine sp_ec8_suite_check_records(na, nr, ne, accel, first, npts, dt, code, spectrum_type, &
+                                      ag, ground, alpha, importance, eta_min, exponent, t1, fit, &
+                                      n_points, extra, min_records, margin, nmax, periods, n, psa, pga, &
+                                      target_psa, mean, ratio, own_mean, own_scale, values, &
+                                      flags, ints, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_record_suite, only: ec8_suite_check_records, suite_check_t, suite_target_t
+    implicit none
+    !f2py intent(hide) :: na, nr, ne
+    integer, intent(in) :: na, nr, ne, code, spectrum_type, ground, fit, n_points, min_records
+    integer, intent(in) :: nmax, first(nr), npts(nr)
+    real(dp), intent(in) :: accel(na), dt(nr), ag, alpha, importance, eta_min, exponent, t1
+    real(dp), intent(in) :: extra(ne), margin
+    real(dp), intent(out) :: periods(nmax), psa(nmax, nr), pga(nr), target_psa(nmax)
+    real(dp), intent(out) :: mean(nmax), ratio(nmax), own_mean(nmax), own_scale(nr), values(14)
+    integer, intent(out) :: n, flags(6), ints(3)
+    integer, intent(out) :: stat
+    character(len=512), intent(out) :: errmsg
+    type(suite_check_t) :: c
+    type(suite_target_t) :: tg
+    errmsg = ''
+    tg = suite_target_t(code=code, spectrum_type=spectrum_type, ag=ag, ground=ground, &
+                        alpha=alpha, importance=importance, eta_min=eta_min, exponent=exponent)
+    if (margin < 0.0_dp) then
+        call ec8_suite_check_records(accel, first, npts, dt, tg, t1, fit, c, periods, n, psa, &
+                                     pga, target_psa, mean, ratio, own_mean, own_scale, stat, &
+                                     errmsg, n_points=n_points, extra=extra, &
+                                     min_records=min_records, bad_record=ints(3))
+    else
+        call ec8_suite_check_records(accel, first, npts, dt, tg, t1, fit, c, periods, n, psa, &
+                                     pga, target_psa, mean, ratio, own_mean, own_scale, stat, &
+                                     errmsg, n_points=n_points, extra=extra, &
+                                     min_records=min_records, bad_record=ints(3), margin=margin)
+    end if
+    values = [c%t1, c%t_low, c%t_high, c%pga_mean, c%pga_target, c%pga_ratio, c%min_ratio, &
+              c%t_min_ratio, c%common_scale, c%own_pga_ratio, c%own_min_ratio, &
+              c%own_t_min_ratio, c%grid_min_ratio, c%grid_own_min_ratio]
+    flags = merge(1, 0, [c%pga_ok, c%spectrum_ok, c%count_ok, c%mean_allowed, c%passed, &
+                         c%own_passed])
+    ints(1:2) = [c%scale_rule, c%n_searched]
+end subroutine sp_ec8_suite_check_records

@@ -626,7 +626,7 @@ def walls(profile, comparison=None, ax=None, title=None):
 
 # ------------------------------------------------------------------ record suites
 
-def record_suite(check, ax=None, title=None):
+def record_suite(check, ax=None, title=None, scaled=None):
     """A record-suite check (EN 1998-1 3.2.3.1.2(4)) on one axes.
 
     Parameters
@@ -637,18 +637,26 @@ def record_suite(check, ax=None, title=None):
         Draw there instead of on a new figure.
     title : str, optional
         Default: the verdict, e.g. ``EN 1998-1 3.2.3.1.2(4): passed (3 records)``.
+    scaled : {None, 'common', 'own'}
+        Also draw the mean of the suite scaled by ``common_scale`` ('common') or of the
+        records each scaled by its ``own_scale`` ('own').
 
     Returns
     -------
     matplotlib.figure.Figure
-        On the check grid (log period axis, s): each record's 5 % PSA (thin grey lines),
-        their mean (bold), the target and 0.9 x target (g); the range [0.2 T1, 2 T1]
-        shaded, T1 and the period of the least mean/target marked.
+        On the checked periods, the period axis (log, s) set to [0.2 T1, 2 T1]: each
+        record's 5 % PSA (thin grey lines), their mean (bold), the target and 0.9 x target
+        (g); T1 and the period of the least mean/target marked (its value to 4 decimals and
+        the verdict of rule (c)); rule (b) as a line of text (mean PGA against the target
+        at T = 0).
     """
     from .codes import SuiteCheck
     if not isinstance(check, SuiteCheck):
         raise InvalidInputError("check: must be the result of "
                                 "seispulse.codes.check_record_suite")
+    if scaled not in (None, "common", "own"):
+        raise InvalidInputError(f"scaled = {scaled!r}: must be None, 'common' or 'own'")
+    import matplotlib.ticker as mticker
     fig, (axis,) = _figure("record_suite", ax, 1, height=4.6)
     per = np.asarray(check.periods, float)
     target = np.asarray(check.target, float)
@@ -660,13 +668,26 @@ def record_suite(check, ax=None, title=None):
     axis.plot(per, target, color="k", linewidth=1.4, label="target (elastic spectrum)")
     axis.plot(per, 0.9 * target, color="k", linewidth=1.2, linestyle="--",
               label="0.9 x target")
+    if scaled == "common":
+        axis.plot(per, check.common_scale * np.asarray(check.mean, float), color="C2",
+                  linewidth=1.6, label=f"mean x common_scale {check.common_scale:.4f}")
+    elif scaled == "own":
+        axis.plot(per, np.asarray(check.own_mean, float), color="C2", linewidth=1.6,
+                  label="mean of records x own_scale")
     axis.axvspan(check.t_range[0], check.t_range[1], color="C1", alpha=0.08,
                  label="0.2 T1 .. 2 T1")
     axis.axvline(check.t1, color="C1", linewidth=1.0, label=f"T1 = {check.t1:g} s")
     axis.axvline(check.t_min_ratio, color="C3", linewidth=0.8, linestyle=":",
-                 label=f"least mean/target = {check.min_ratio:.3g}")
+                 label=f"least mean/target = {check.min_ratio:.4f} "
+                       f"({'pass' if check.spectrum_ok else 'fail'}, >= 0.9)")
+    at_zero = "gamma_I A" if str(check.target_label).startswith("EAK") else "a_g S"
+    axis.text(0.99, 0.02, f"rule (b): mean PGA {check.pga_mean:.4g} g vs {at_zero} "
+              f"{check.pga_target:.4g} g ({'pass' if check.pga_ok else 'fail'})",
+              transform=axis.transAxes, ha="right", va="bottom", fontsize="small")
     axis.set_xscale("log")
-    axis.set_xlim(check.t_range[0] / 1.25, check.t_range[1] * 1.25)   # the band's edges show
+    axis.set_xlim(check.t_range[0], check.t_range[1])   # the checked periods only
+    axis.xaxis.set_major_formatter(mticker.ScalarFormatter())
+    axis.xaxis.set_minor_formatter(mticker.NullFormatter())
     axis.set_xlabel("period T (s)")
     axis.set_ylabel("PSA, 5 % damping (g)")
     axis.set_ylim(bottom=0.0)

@@ -157,24 +157,26 @@ def suite_reference(files, t1, target, fit, n_points, extra):
 
 
 SUITE_CASES = {
-    # name: (target, &suite and code groups, target callable, corner periods)
+    # name: (target, &suite and code groups, target callable, fit, n_points, corner
+    # periods, Python's target)
     "ec8_1_linear": ("&suite t1 = 0.5, n_points = 30 /\n&ec8 zone = 'Z2', ground = 'B' /\n",
                      lambda T: codes.elastic_spectrum(T, zone="Z2", ground="B"), "linear",
-                     30, [0.15, 0.5, 2.0]),
+                     30, [0.15, 0.5, 2.0], codes.elastic_target(zone="Z2", ground="B")),
     "ec8_2_log": ("&suite t1 = 0.3, target = 'EC8_2', fit = 'log', n_points = 12 /\n"
                   "&ec8 ag = 0.2, ground = 'C' /\n",
                   lambda T: codes.elastic_spectrum(T, 0.2, 2, "C"), "log", 12,
-                  [0.1, 0.25, 1.2]),
+                  [0.1, 0.25, 1.2], codes.elastic_target(0.2, 2, "C")),
     "eak": ("&suite t1 = 0.45, target = 'EAK', n_points = 20 /\n"
             "&eak zone = 'Z3', ground = 'A', importance_class = 'III' /\n",
             lambda T: codes.eak2000_spectrum(T, zone="Z3", ground="A", importance="III",
-                                             kind="elastic"), "linear", 20, [0.1, 0.4]),
+                                             kind="elastic"), "linear", 20, [0.1, 0.4],
+            codes.eak2000_target("Z3", "A", "III")),
 }
 
 
 @pytest.mark.parametrize("name", sorted(SUITE_CASES))
 def test_suite_tables_against_numpy(driver, tmp_path, name):
-    group, target, fit, n_points, corners = SUITE_CASES[name]
+    group, target, fit, n_points, corners, py_target = SUITE_CASES[name]
     t1 = float(re.search(r"t1 = ([0-9.]+)", group).group(1))
     with_records(tmp_path)
     files = ", ".join(f"'{f}'" for f in SUITE_FILES)
@@ -185,17 +187,23 @@ def test_suite_tables_against_numpy(driver, tmp_path, name):
                           [t1] + corners)
     rel = dict(rel=1e-13, abs=0.0)
 
+    # the tables hold the check grid (only &suite: T1, the target's corners) and the
+    # refined least ratios between grid periods (1 or 2 more periods, or none)
     m = read_table(tmp_path / "s_suite_mean.csv")
     assert list(m) == ["period", "target", "target_90", "mean", "ratio", "mean_common",
                        "mean_own"]
-    assert m["period"] == pytest.approx(ref["grid"], rel=1e-14)
+    on = np.array([np.min(np.abs(ref["grid"] / p - 1)) < 1e-14 for p in m["period"]])
+    assert on.sum() == ref["grid"].size and len(m["period"]) - on.sum() in (0, 1, 2)
+    assert m["period"][on] == pytest.approx(ref["grid"], rel=1e-14)
     assert t1 in m["period"]
     exact(m["target"], target(m["period"]))
-    assert m["target_90"] == pytest.approx(0.9 * ref["target"], **rel)
-    assert m["mean"] == pytest.approx(ref["mean"], **rel)
-    assert m["ratio"] == pytest.approx(ref["ratio"], **rel)
-    assert m["mean_common"] == pytest.approx(ref["common"] * ref["mean"], **rel)
-    assert m["mean_own"] == pytest.approx(ref["own_mean"], **rel)
+    assert m["target_90"][on] == pytest.approx(0.9 * ref["target"], **rel)
+    assert m["mean"][on] == pytest.approx(ref["mean"], **rel)
+    assert m["ratio"][on] == pytest.approx(ref["ratio"], **rel)
+    u = read_table(tmp_path / "s_suite.csv")
+    common = u["common_scale"][0]
+    assert m["mean_common"] == pytest.approx(common * m["mean"], **rel)
+    assert m["mean_own"][on] == pytest.approx(ref["own_mean"], **rel)
 
     r = read_table(tmp_path / "s_suite_records.csv")
     assert list(r["name"]) == ["quake_a", "quake_b", "quake_d"]
@@ -208,30 +216,35 @@ def test_suite_tables_against_numpy(driver, tmp_path, name):
     assert list(r["status"]) == ["ok"] * 3
 
     s = read_table(tmp_path / "s_suite_spectra.csv")
-    n = ref["grid"].size
-    assert s["psa"] == pytest.approx(ref["psa"].ravel(), **rel)
-    assert s["psa_own"] == pytest.approx((ref["own"][:, None] * ref["psa"]).ravel(), **rel)
+    n = len(m["period"])
+    on_long = np.tile(on, 3)
+    assert s["psa"][on_long] == pytest.approx(ref["psa"].ravel(), **rel)
+    assert s["psa_own"][on_long] == pytest.approx((ref["own"][:, None] * ref["psa"]).ravel(),
+                                                  **rel)
     assert list(s["name"]) == [x for x in ("quake_a", "quake_b", "quake_d") for _ in range(n)]
     assert list(s["index"]) == [k for k in (1, 2, 3) for _ in range(n)]
 
-    u = read_table(tmp_path / "s_suite.csv")
     assert u["n_records"][0] == 3 and u["t1"][0] == t1
     assert u["pga_mean"][0] == pytest.approx(ref["pga"].mean(), **rel)
     assert u["pga_target"][0] == ref["target_pga"]
-    assert u["min_ratio"][0] == pytest.approx(ref["min_ratio"], **rel)
-    assert u["t_min_ratio"][0] == ref["t_min"]
-    assert u["common_scale"][0] == pytest.approx(ref["common"], **rel)
+    # the least ratios: refined, never above the grid's; on the tables' periods
+    assert u["min_ratio"][0] <= ref["min_ratio"] * (1 + 1e-14)
+    assert u["min_ratio"][0] == np.min(m["ratio"])
+    assert u["t_min_ratio"][0] == m["period"][np.argmin(m["ratio"])]
+    assert common == pytest.approx(max(ref["target_pga"] / ref["pga"].mean(),
+                                       0.9 / u["min_ratio"][0]), **rel)
     assert u["own_pga_ratio"][0] == pytest.approx(ref["own_pga_ratio"], **rel)
-    assert u["own_min_ratio"][0] == pytest.approx(ref["own_min_ratio"], **rel)
-    own_ratio = ref["own_mean"] / ref["target"]
-    assert u["own_t_min_ratio"][0] == ref["grid"][own_ratio.argmin()]
+    assert u["own_min_ratio"][0] <= ref["own_min_ratio"] * (1 + 1e-14)
+    own_ratio = m["mean_own"] / m["target"]
+    assert u["own_min_ratio"][0] == np.min(own_ratio)
+    assert u["own_t_min_ratio"][0] == m["period"][np.argmin(own_ratio)]
     assert u["target"][0] == {"ec8_1_linear": "EC8_1", "ec8_2_log": "EC8_2", "eak": "EAK"}[name]
     assert u["fit"][0] == fit and u["n_periods"][0] == n
     assert u["n_listed"][0] == 3 and u["n_failed"][0] == 0
-    by_pga = ref["target_pga"] / ref["pga"].mean() >= (0.9 * ref["target"] / ref["mean"]).max()
+    by_pga = ref["target_pga"] / ref["pga"].mean() >= 0.9 / u["min_ratio"][0]
     assert u["common_rule"][0] == ("pga" if by_pga else "spectrum")
     pga_ok = ref["pga"].mean() >= ref["target_pga"]
-    spec_ok = ref["min_ratio"] >= 0.9
+    spec_ok = u["min_ratio"][0] >= 0.9
     assert u["pga_check"][0] == ("pass" if pga_ok else "fail")
     assert u["spectrum_check"][0] == ("pass" if spec_ok else "fail")
     assert u["count_check"][0] == "pass" and u["mean_allowed"][0] == "no"
@@ -241,15 +254,17 @@ def test_suite_tables_against_numpy(driver, tmp_path, name):
     txt = read_summary_txt(tmp_path / "s_suite.txt")
     assert txt["check"][0] == u["check"][0] and txt["t1"] == ("%.6g" % t1, "s")
 
-    if hasattr(codes, "check_record_suite"):
-        recs = [records.read(tmp_path / f) for f in SUITE_FILES]
-        chk = codes.check_record_suite(recs, t1, target, n_points=n_points, fit=fit,
-                                       extra_periods=[t1] + corners)
-        assert np.asarray(chk.periods) == pytest.approx(m["period"], rel=1e-15)
-        assert np.asarray(chk.mean) == pytest.approx(m["mean"], rel=1e-14)
-        assert chk.common_scale == pytest.approx(u["common_scale"][0], rel=1e-14)
-        assert np.asarray(chk.own_scale) == pytest.approx(r["own_scale"], rel=1e-14)
-        assert chk.passed == (u["check"][0] == "pass")
+    # Python's check_record_suite: the same library routine, the same numbers
+    recs = [records.read(tmp_path / f) for f in SUITE_FILES]
+    chk = codes.check_record_suite(recs, t1, py_target, n_points=n_points, fit=fit)
+    assert np.asarray(chk.periods) == pytest.approx(m["period"], rel=1e-15)
+    assert np.asarray(chk.mean) == pytest.approx(m["mean"], rel=1e-14)
+    assert chk.min_ratio == pytest.approx(u["min_ratio"][0], rel=1e-14)
+    assert chk.t_min_ratio == pytest.approx(u["t_min_ratio"][0], rel=1e-15)
+    assert chk.own_min_ratio == pytest.approx(u["own_min_ratio"][0], rel=1e-14)
+    assert chk.common_scale == pytest.approx(u["common_scale"][0], rel=1e-14)
+    assert np.asarray(chk.own_scale) == pytest.approx(r["own_scale"], rel=1e-14)
+    assert chk.passed == (u["check"][0] == "pass")
 
 
 def test_scaled_by_common_scale_passes(driver, tmp_path):
@@ -594,3 +609,21 @@ def test_input_errors(driver, tmp_path, name):
     assert m["rest"].startswith(rest), errors[0]
     left = sorted(p.name for p in tmp_path.iterdir() if p.is_file())
     assert left == ["case.nml"], left
+
+
+def test_suite_does_not_depend_on_the_spectra_table(driver, tmp_path):
+    """The check grid comes from &suite alone (T1, n_points, the target's corners): adding
+    a &spectra table of code spectra leaves every suite table as it was."""
+    with_records(tmp_path)
+    files = ", ".join(f"'{f}'" for f in SUITE_FILES)
+    group = "&suite t1 = 0.5, n_points = 20 /\n&ec8 ag = 0.24, ground = 'B' /\n"
+    head = "&run analysis='spectra', output='{}' /\n&records files = " + files + " /\n"
+    assert run(driver, tmp_path, head.format("a") + group).returncode == 0
+    proc = run(driver, tmp_path, head.format("b") + group
+               + "&spectra period_range = 0, 4, period_count = 81, codes = 'EC8_1' /\n")
+    assert proc.returncode == 0, proc.stderr
+    for table in ("suite", "suite_records", "suite_mean", "suite_spectra"):
+        a = read_table(tmp_path / f"a_{table}.csv")
+        b = read_table(tmp_path / f"b_{table}.csv")
+        for k in a:
+            assert list(a[k]) == list(b[k]), (table, k)

@@ -488,7 +488,8 @@ def test_record_suite(tmp_path):
     t = np.arange(0.0, 6.0, 0.01)
     tri = np.interp(t, [0.0, 0.25, 0.5], [0.0, 1.0, 0.0], right=0.0)
     suite = [(a * tri, 0.01) for a in (0.2, 0.3, 0.4)]
-    check = codes.check_record_suite(suite, 0.4, codes.elastic_target(0.3, ground="B"))
+    check = codes.check_record_suite(suite, 0.4, codes.elastic_target(0.3, ground="B"),
+                                     n_points=40)
     fig = plot.record_suite(check)
     legends = rendered(fig, tmp_path / "suite.png")
     (axis,) = fig.axes
@@ -510,6 +511,18 @@ def test_record_suite(tmp_path):
     (band,) = axis.patches
     x = band.get_patch_transform().transform(band.get_path().vertices)[:, 0]   # data x
     assert min(x) == pytest.approx(0.08, rel=1e-15) and max(x) == pytest.approx(0.8, rel=1e-15)
+    assert f"least mean/target = {check.min_ratio:.4f} (fail, >= 0.9)" in labels
+    assert axis.get_xlim() == pytest.approx((0.08, 0.8), rel=1e-12)
+    (text,) = axis.texts
+    assert text.get_text() == (f"rule (b): mean PGA {check.pga_mean:.4g} g vs a_g S 0.36 g "
+                               "(fail)")
+    fig = plot.record_suite(check, scaled="common")
+    extra = lines_of(fig.axes[0])[6]
+    np.testing.assert_allclose(extra.get_ydata(), check.common_scale * check.mean, rtol=1e-15)
+    fig = plot.record_suite(check, scaled="own")
+    np.testing.assert_array_equal(lines_of(fig.axes[0])[6].get_ydata(), check.own_mean)
+    with pytest.raises(InvalidInputError, match="^scaled = 'x': must be None"):
+        plot.record_suite(check, scaled="x")
     with pytest.raises(InvalidInputError, match="^check: must be the result of"):
         plot.record_suite(check._asdict())
     fig, ax = plt.subplots()
