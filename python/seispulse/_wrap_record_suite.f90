@@ -2,62 +2,19 @@
 !> plain external subroutines, explicit-shape arrays, int flags, `stat` + `errmsg` out, no
 !> numerics. The result type is flattened into `values` (reals) and `flags` (0/1).
 
-!> The check grid: periods(1:n) (s), n_points log-spaced in [0.2 T1, 2 T1] plus the extras
-!> inside it; nmax = n_points + size(extra) (given by the caller, >= 0).
-subroutine sp_suite_check_periods(ne, t1, n_points, extra, nmax, periods, n, stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_record_suite, only: suite_check_periods
-    implicit none
-    !f2py intent(hide) :: ne
-    integer, intent(in) :: ne, n_points, nmax
-    real(dp), intent(in) :: t1, extra(ne)
-    real(dp), intent(out) :: periods(nmax)
-    integer, intent(out) :: n
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    errmsg = ''
-    call suite_check_periods(t1, n_points, extra, periods, n, stat, errmsg)
-end subroutine sp_suite_check_periods
-
-!> The check of np periods x nr records; fit 1 linear (M.2), 2 log (M.3).
-!> values = [t1, t_low, t_high, pga_mean, pga_target, pga_ratio, min_ratio, t_min_ratio,
-!> common_scale, own_pga_ratio, own_min_ratio, own_t_min_ratio];
-!> flags = [pga_ok, spectrum_ok, count_ok, mean_allowed, passed, own_passed] (1 = true).
-subroutine sp_ec8_suite_check(np, nr, periods, psa, pga, target, target_pga, t1, fit, &
-                              min_records, values, flags, own_scale, mean, ratio, own_mean, &
-                              stat, errmsg)
-    use seispulse_kinds, only: dp
-    use seispulse_record_suite, only: ec8_suite_check, suite_check_t
-    implicit none
-    !f2py intent(hide) :: np, nr
-    integer, intent(in) :: np, nr, fit, min_records
-    real(dp), intent(in) :: periods(np), psa(np, nr), pga(nr), target(np), target_pga, t1
-    real(dp), intent(out) :: values(12), own_scale(nr), mean(np), ratio(np), own_mean(np)
-    integer, intent(out) :: flags(6)
-    integer, intent(out) :: stat
-    character(len=256), intent(out) :: errmsg
-    type(suite_check_t) :: c
-    errmsg = ''
-    call ec8_suite_check(periods, psa, pga, target, target_pga, t1, fit, c, own_scale, mean, &
-                         stat, errmsg, min_records=min_records, ratio=ratio, own_mean=own_mean)
-    values = [c%t1, c%t_low, c%t_high, c%pga_mean, c%pga_target, c%pga_ratio, c%min_ratio, &
-              c%t_min_ratio, c%common_scale, c%own_pga_ratio, c%own_min_ratio, &
-              c%own_t_min_ratio]
-    flags = merge(1, 0, [c%pga_ok, c%spectrum_ok, c%count_ok, c%mean_allowed, c%passed, &
-                         c%own_passed])
-end subroutine sp_ec8_suite_check
-
 !> The check from the records (ec8_suite_check_records): accel (g) the nr records
 !> concatenated, first/npts/dt per record; the target: code 1 EC8 (spectrum_type, ag (g),
 !> ground) or 2 EAK (alpha, ground, importance, eta_min, exponent). nmax = n_points + ne + 6
-!> (suite_records_room); margin < 0: the default. periods(1:n) the grid with the refined minima; values as in
-!> sp_ec8_suite_check, then grid_min_ratio, grid_own_min_ratio; flags as there; ints =
-!> [scale_rule, n_searched, bad_record].
+!> (suite_records_room); margin < 0: the default. periods(1:n) the grid with the refined
+!> minima; values = [t1, t_low, t_high, pga_mean, pga_target, pga_ratio, min_ratio,
+!> t_min_ratio, common_scale, own_pga_ratio, own_min_ratio, own_t_min_ratio, grid_min_ratio,
+!> grid_own_min_ratio]; flags = [pga_ok, spectrum_ok, count_ok, mean_allowed, passed,
+!> own_passed] (1 = true); ints = [scale_rule, n_searched, bad_record].
 subroutine sp_ec8_suite_check_records(na, nr, ne, accel, first, npts, dt, code, spectrum_type, &
                                       ag, ground, alpha, importance, eta_min, exponent, t1, fit, &
-                                      n_points, extra, min_records, margin, nmax, periods, n, psa, pga, &
-                                      target_psa, mean, ratio, own_mean, own_scale, values, &
-                                      flags, ints, stat, errmsg)
+                                      n_points, extra, min_records, margin, nmax, periods, n, &
+                                      psa, pga, target_psa, mean, ratio, own_mean, own_scale, &
+                                      values, flags, ints, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_record_suite, only: ec8_suite_check_records, suite_check_t, suite_target_t
     implicit none

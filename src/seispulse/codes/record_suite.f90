@@ -44,7 +44,8 @@ module seispulse_record_suite
     public :: suite_check_periods, ec8_suite_check
     public :: SUITE_TARGET_EC8, SUITE_TARGET_EAK, SUITE_RULE_PGA, SUITE_RULE_SPECTRUM
     public :: suite_target_t, suite_target_values, suite_target_pga, suite_target_corners
-    public :: suite_refine_margin, suite_refine_spacings, suite_records_room, ec8_suite_check_records
+    public :: suite_refine_margin, suite_refine_spacings, suite_records_room
+    public :: ec8_suite_check_records
 
     !> Per-record scale factor fitted to the target over the check grid: least squares on
     !> the ordinates (M.2) or on their logarithms (M.3).
