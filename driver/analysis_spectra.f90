@@ -1415,7 +1415,7 @@ contains
             //'at T = 0 ('//trim(t0)//'); (c) mean 5 % PSA >= 0.9 target over [0.2 T1, ' &
             //'2 T1] = ['//g6(0.2_dp * cfg%t1)//', '//g6(2.0_dp * cfg%t1) &
             //'] s (structure period T1 = '//g6(cfg%t1)//' s, &suite); 4.3.3.4.3(3): with ' &
-            //'7 or more records the mean response may be used (mean_allowed), otherwise ' &
+            //'7 or more records the mean response should be used (mean_allowed), otherwise ' &
             //'the most unfavourable response', &
             'check grid: '//int_str(size(res%grid))//' periods, '//int_str(cfg%n_points) &
             //' log-spaced from 0.2 T1 to 2 T1 with T1, the target''s corner periods and ' &
