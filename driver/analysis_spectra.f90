@@ -32,7 +32,8 @@ module driver_spectra
                          suite_check_t, suite_check_periods, SUITE_FIT_LINEAR, SUITE_FIT_LOG, &
                          suite_target_t, suite_target_pga, suite_target_values, &
                          suite_target_corners, ec8_suite_check_records, suite_records_room, &
-                         SUITE_TARGET_EC8, SUITE_TARGET_EAK
+                         SUITE_TARGET_EC8, SUITE_TARGET_EAK, SUITE_RULE_PGA, &
+                         SUITE_SPECTRUM_FRACTION, suite_records_grid
     use driver_namelist_scan, only: nml_group, scan_file
     use driver_input, only: find_group, check_keys, read_group, located, join, &
                             read_optional, given, list_item, name_index, ROWS_FAILED, &
@@ -1081,15 +1082,14 @@ contains
         end if
     end subroutine suite_target
 
-    !> Without a check: the check grid (suite_check_periods with T1 and the target's
-    !> corners) and the target there, for the tables of NaN.
+    !> Without a check: the check grid (suite_records_grid, as ec8_suite_check_records)
+    !> and the target there, for the tables of NaN.
     subroutine plain_grid(cfg, res)
         type(config_t), intent(in) :: cfg
         type(suite_res_t), intent(inout) :: res
-        real(dp) :: corners(3), grid(cfg%n_points + 4)
-        integer :: nc, n, st
-        call suite_target_corners(res%tgt, corners, nc, st)
-        call suite_check_periods(cfg%t1, cfg%n_points, [cfg%t1, corners(1:nc)], grid, n, st)
+        real(dp) :: grid(suite_records_room(cfg%n_points, 0))
+        integer :: n, st
+        call suite_records_grid(res%tgt, cfg%t1, cfg%n_points, [real(dp) ::], grid, n, st)
         res%grid = grid(1:n)
         allocate(res%target(n))
         call suite_target_values(res%tgt, res%grid, res%target, st)
@@ -1419,7 +1419,7 @@ contains
             //'the most unfavourable response', &
             'check grid: '//int_str(size(res%grid))//' periods, '//int_str(cfg%n_points) &
             //' log-spaced from 0.2 T1 to 2 T1 with T1, the target''s corner periods and ' &
-            //'the least ratios refined between them (doc/record-suites.md section 3); PSA: ' &
+            //'the least ratios refined between them (doc/record-suites.md section 2); PSA: ' &
             //'5 % damping, exact peaks over the record, ' &
             //'g = '//shortest_str(STANDARD_GRAVITY)//' m/s2', &
             'common_scale: the smallest factor on every record making (b) and (c) hold ' &
@@ -1482,7 +1482,7 @@ contains
                 row(1, 10:25) = [c%pga_mean, c%pga_target, c%pga_ratio, flag(c%pga_ok), &
                     c%min_ratio, c%t_min_ratio, flag(c%spectrum_ok), flag(c%count_ok), &
                     flag(c%mean_allowed), flag(c%passed .and. all_read), c%common_scale, &
-                    merge(0.0_dp, 1.0_dp, c%pga_target / c%pga_mean >= 0.9_dp / c%min_ratio), &
+                    merge(0.0_dp, 1.0_dp, c%scale_rule == SUITE_RULE_PGA), &
                     c%own_pga_ratio, c%own_min_ratio, c%own_t_min_ratio, &
                     flag(c%own_passed .and. all_read)]
             end associate
@@ -1574,7 +1574,7 @@ contains
         table = nan
         table(:, 1) = res%grid
         table(:, 2) = res%target
-        table(:, 3) = 0.9_dp * res%target
+        table(:, 3) = SUITE_SPECTRUM_FRACTION * res%target
         if (res%done) then
             table(:, 4) = res%mean
             table(:, 5) = res%ratio

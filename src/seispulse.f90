@@ -174,14 +174,15 @@ module seispulse
                                  eak2000_check_damping, eak2000_design_spectrum, &
                                  eak2000_elastic_spectrum, EAK_GROUND_A, EAK_GROUND_B, &
                                  EAK_GROUND_C, EAK_GROUND_D, EAK_GROUND_X, EAK_MAP_2003, &
-                                 EAK_MAP_2000, EAK_BETA0
+                                 EAK_MAP_2000, EAK_BETA0, EAK_ZONES_2003
     use seispulse_record_suite, only: SUITE_FIT_LINEAR, SUITE_FIT_LOG, suite_rtol, suite_check_t, &
                                       suite_check_periods, ec8_suite_check, SUITE_TARGET_EC8, &
                                       SUITE_TARGET_EAK, SUITE_RULE_PGA, SUITE_RULE_SPECTRUM, &
                                       suite_target_t, suite_target_values, suite_target_pga, &
                                       suite_target_corners, suite_refine_margin, &
                                       suite_refine_spacings, &
-                                      suite_records_room, ec8_suite_check_records
+                                      suite_records_room, ec8_suite_check_records, &
+                                      suite_records_grid, SUITE_SPECTRUM_FRACTION
     use seispulse_wall_table, only: wall_case_t, wall_case_default, wall_comparison, &
                                     wall_pressure_profile, wall_row_label, WALL_ROWS, &
                                     WALL_PROFILE_COLUMNS

@@ -34,17 +34,35 @@ from .errors import InvalidInputError
 __all__ = ["EAK_ZONES_2003", "EAK_ZONES_2000", "EAK_GROUNDS", "EAK_IMPORTANCE",
            "EakParameters", "eak2000_spectrum", "eak2000_parameters"]
 
+
+
+def _library_table(routine, names, *args):
+    """{name: the library's value of entry 1..len(names)} (routine(k, *args) -> value, stat,
+    msg)."""
+    table = {}
+    for k, name in enumerate(names, start=1):
+        value, stat, msg = routine(k, *args)
+        _core.raise_for_status(stat, msg)
+        table[name] = float(value)
+    return table
+
+
 #: alpha = A/g of the zones of the 2003 amendment (in force from 1 January 2004; SECONDARY:
 #: [PRDA24] gives three zones spanning 0.16-0.36 g, the value 0.24 and the names Z1-Z3
-#: are from press reports). The default map.
-EAK_ZONES_2003 = {"Z1": 0.16, "Z2": 0.24, "Z3": 0.36}
-#: alpha = A/g of the zones of the original EAK 2000 map (SECONDARY), replaced in 2003.
-#: The labels I..IV are seispulse's own (the source implementation calls 0.12 g "Z1").
-EAK_ZONES_2000 = {"I": 0.12, "II": 0.16, "III": 0.24, "IV": 0.36}
+#: are from press reports): Z1 0.16, Z2 0.24, Z3 0.36 (read from the library). The default
+#: map.
+EAK_ZONES_2003 = _library_table(sp_eak2000_zone_acceleration, ("Z1", "Z2", "Z3"),
+                                _f.EAK_MAP_2003)
+#: alpha = A/g of the zones of the original EAK 2000 map (SECONDARY), replaced in 2003:
+#: I 0.12, II 0.16, III 0.24, IV 0.36 (read from the library). The labels I..IV are
+#: seispulse's own (the source implementation calls 0.12 g "Z1").
+EAK_ZONES_2000 = _library_table(sp_eak2000_zone_acceleration, ("I", "II", "III", "IV"),
+                                _f.EAK_MAP_2000)
 #: Soil categories with values (SECONDARY); X (site-specific study) is refused.
 EAK_GROUNDS = ("A", "B", "C", "D")
-#: gamma_I of the importance categories Sigma1..Sigma4 (SECONDARY).
-EAK_IMPORTANCE = {"I": 0.85, "II": 1.0, "III": 1.15, "IV": 1.30}
+#: gamma_I of the importance categories Sigma1..Sigma4 (SECONDARY): I 0.85, II 1.00,
+#: III 1.15, IV 1.30 (read from the library).
+EAK_IMPORTANCE = _library_table(sp_eak2000_importance_factor, ("I", "II", "III", "IV"))
 
 _MAPS = {"2003": (_f.EAK_MAP_2003, EAK_ZONES_2003), "2000": (_f.EAK_MAP_2000, EAK_ZONES_2000)}
 _GROUND_CODES = {"A": _f.EAK_GROUND_A, "B": _f.EAK_GROUND_B, "C": _f.EAK_GROUND_C,
@@ -112,9 +130,10 @@ def _zone_number(zone, code, zones):
 
 def _ground(ground):
     key = ground.strip().upper() if isinstance(ground, str) else None
-    if key == "X":
-        raise InvalidInputError("ground = 'X': ground category X calls for a site-specific "
-                                "study (unverified); give ground A-D")
+    if key == "X":    # the library refuses X with its reason
+        _, _, stat, msg = sp_eak2000_ground_parameters(_f.EAK_GROUND_X)
+        _core.raise_for_status(stat, msg, rename={f"ground = {_f.EAK_GROUND_X} (X)":
+                                                  f"ground = {ground!r}"})
     if key not in _GROUND_CODES:
         raise InvalidInputError(f"ground = {ground!r}: unknown soil category (allowed: 'A', "
                                 "'B', 'C', 'D', EAK 2000 §2.3.6)")

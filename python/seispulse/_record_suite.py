@@ -20,11 +20,13 @@ import numpy as np
 
 from . import _core
 from . import _fortran_codes as _f
-from ._seispulse import sp_ec8_suite_check_records
+from ._seispulse import (sp_ec8_suite_check_records, sp_suite_records_room,
+                         sp_suite_spectrum_fraction)
 from ._table import TableResult, format_number, format_table
 from .errors import InvalidInputError
 
-__all__ = ["SUITE_FITS", "SUITE_DAMPING", "SUITE_REFINE_MARGIN", "SuiteCheck", "SpectrumTarget",
+__all__ = ["SUITE_FITS", "SUITE_DAMPING", "SUITE_REFINE_MARGIN", "SUITE_SPECTRUM_FRACTION",
+           "SuiteCheck", "SpectrumTarget",
            "check_record_suite", "elastic_target", "eak2000_target"]
 
 #: Per-record scale factors fitted to the target over the check grid: least squares on
@@ -38,6 +40,9 @@ SUITE_DAMPING = 0.05
 #: the grid's local minima within twice the margin); the margin is one grid spacing,
 #: 10^(1/(n_points - 1)) - 1, at least this value (doc/record-suites.md section 2).
 SUITE_REFINE_MARGIN = 0.005
+#: Rule (c): the mean spectrum of the suite must not lie below this fraction of the
+#: target (EN 1998-1 3.2.3.1.2(4)c: 90 %; the library's SUITE_SPECTRUM_FRACTION) (-).
+SUITE_SPECTRUM_FRACTION = float(sp_suite_spectrum_fraction())
 _RULES = {_f.SUITE_RULE_PGA: "pga", _f.SUITE_RULE_SPECTRUM: "spectrum"}
 #: PGA (g) above which a record given in g probably was in m/s2 or cm/s2 (a warning).
 _PLAUSIBLE_PGA = 5.0
@@ -90,7 +95,7 @@ class SuiteCheck(TableResult, namedtuple("SuiteCheck", _FIELDS)):
     def _table_columns(self):
         cols = [("period", "s", np.asarray(self.periods)),
                 ("target", "g", np.asarray(self.target)),
-                ("target_90", "g", 0.9 * np.asarray(self.target)),
+                ("target_90", "g", SUITE_SPECTRUM_FRACTION * np.asarray(self.target)),
                 ("mean", "g", np.asarray(self.mean)),
                 ("ratio", "-", np.asarray(self.ratio)),
                 ("mean_common", "g", self.common_scale * np.asarray(self.mean)),
@@ -118,7 +123,8 @@ class SuiteCheck(TableResult, namedtuple("SuiteCheck", _FIELDS)):
             ("pga_mean", self.pga_mean, "g", "mean PGA of the records"),
             ("pga_target", self.pga_target, "g", f"{at_zero}, the target at T = 0"),
             ("pga_ratio", self.pga_ratio, "-", "rule (b): >= 1 " + yes(self.pga_ok)),
-            ("min_ratio", self.min_ratio, "-", "rule (c): mean/target >= 0.9 "
+            ("min_ratio", self.min_ratio, "-",
+             f"rule (c): mean/target >= {SUITE_SPECTRUM_FRACTION:g} "
              + yes(self.spectrum_ok)),
             ("t_min_ratio", self.t_min_ratio, "s", "where min_ratio is"),
             ("grid_min_ratio", self.grid_min_ratio, "-", "least on the grid periods alone"),
@@ -196,20 +202,15 @@ def _positive_acceleration(name, value):
     return value
 
 
-def elastic_target(ag=None, spectrum_type=1, ground="A", xi_percent=5.0, *, zone=None,
-                   national_annex=None, importance=1.0):
+def elastic_target(ag=None, spectrum_type=1, ground="A", *, zone=None, national_annex=None,
+                   importance=1.0):
     """The EN 1998-1 elastic spectrum (3.2)-(3.5) at 5 % damping as the target of
     :func:`check_record_suite`: the arguments of :func:`seispulse.codes.elastic_spectrum`
-    without the periods (e.g. ``elastic_target(0.24, ground='B')`` or
+    without the periods and the damping (e.g. ``elastic_target(0.24, ground='B')`` or
     ``elastic_target(zone='Z2', ground='C', importance=1.2)``); ag (g) must be > 0. Its
     corner periods TB, TC, TD join the check grid; its value at T = 0, a_g S, is the PGA
-    target. ``xi_percent`` must stay 5 (the records' PSA is 5 %-damped). Returns
-    :class:`SpectrumTarget`."""
+    target. Returns :class:`SpectrumTarget`."""
     from . import codes
-    xi = _core.as_scalar("xi_percent", xi_percent)
-    if xi != 5.0:
-        raise InvalidInputError(f"xi_percent = {xi_percent!r}: the record-suite check compares "
-                                "5 % spectra (EN 1998-1 3.2.3.1.2(4)); leave it at 5")
     a = _positive_acceleration("ag", codes._design_ag(ag, zone, national_annex, importance))
     stype = codes._spectrum_type(spectrum_type)
     gcode = codes._ground(ground)
@@ -241,7 +242,7 @@ def eak2000_target(zone="Z2", ground="B", importance=1.0, *, alpha=None, zone_ma
     gcode = _eak2000._ground(ground)
     gamma_i = _eak2000._importance(importance)
     floor = _eak2000._eta_min(eta_min)
-    expo = _core.as_scalar("elastic_exponent", elastic_exponent)
+    expo = _core.as_number("elastic_exponent", elastic_exponent)
     par = codes.eak2000_parameters(ground=ground, alpha=a, eta_min=floor)
 
     def spectrum(periods):
@@ -403,7 +404,7 @@ def check_record_suite(records, t1, target, *, dt=None, units="g", n_points=400,
     accel = np.ascontiguousarray(np.concatenate([r[1] for r in recs]))
     steps = np.array([r[2] for r in recs], dtype=np.float64)
     a = target._args
-    nmax = n_points + extra.size + 6
+    nmax = int(sp_suite_records_room(n_points, extra.size))
     (periods, n, psa, pga, target_psa, mean, ratio, own_mean, own_scale, values, flags, ints,
      stat, msg) = sp_ec8_suite_check_records(
         accel, first, lengths, steps, a["code"], a.get("spectrum_type", 1), a.get("ag", 0.0),
@@ -421,10 +422,6 @@ def check_record_suite(records, t1, target, *, dt=None, units="g", n_points=400,
     v = dict(zip(_VALUE_FIELDS, map(float, values)))
     f = dict(zip(_FLAG_FIELDS, (bool(x) for x in flags)))
     n = int(n)
-    added = {t for t, r, r_grid in ((v["t_min_ratio"], v["min_ratio"], v["grid_min_ratio"]),
-                                    (v["own_t_min_ratio"], v["own_min_ratio"],
-                                     v["grid_own_min_ratio"])) if r < r_grid}
-    grid_n = n - len(added)
     return SuiteCheck(
         t1=v["t1"], t_range=(v["t_low"], v["t_high"]), periods=periods[:n].copy(),
         target=target_psa[:n].copy(), mean=mean[:n].copy(), ratio=ratio[:n].copy(),
@@ -438,4 +435,4 @@ def check_record_suite(records, t1, target, *, dt=None, units="g", n_points=400,
         own_passed=f["own_passed"], own_mean=own_mean[:n].copy(), fit=fit,
         target_label=target.label, scale_rule=_RULES.get(int(ints[0]), "?"),
         grid_min_ratio=v["grid_min_ratio"], grid_own_min_ratio=v["grid_own_min_ratio"],
-        n_grid=grid_n, n_searched=int(ints[1]))
+        n_grid=int(ints[3]), n_searched=int(ints[1]))

@@ -4,12 +4,12 @@
 
 !> The check from the records (ec8_suite_check_records): accel (g) the nr records
 !> concatenated, first/npts/dt per record; the target: code 1 EC8 (spectrum_type, ag (g),
-!> ground) or 2 EAK (alpha, ground, importance, eta_min, exponent). nmax = n_points + ne + 6
-!> (suite_records_room); margin < 0: the default. periods(1:n) the grid with the refined
+!> ground) or 2 EAK (alpha, ground, importance, eta_min, exponent). nmax from
+!> sp_suite_records_room; margin < 0: the default. periods(1:n) the grid with the refined
 !> minima; values = [t1, t_low, t_high, pga_mean, pga_target, pga_ratio, min_ratio,
 !> t_min_ratio, common_scale, own_pga_ratio, own_min_ratio, own_t_min_ratio, grid_min_ratio,
 !> grid_own_min_ratio]; flags = [pga_ok, spectrum_ok, count_ok, mean_allowed, passed,
-!> own_passed] (1 = true); ints = [scale_rule, n_searched, bad_record].
+!> own_passed] (1 = true); ints = [scale_rule, n_searched, bad_record, n_grid].
 subroutine sp_ec8_suite_check_records(na, nr, ne, accel, first, npts, dt, code, spectrum_type, &
                                       ag, ground, alpha, importance, eta_min, exponent, t1, fit, &
                                       n_points, extra, min_records, margin, nmax, periods, n, &
@@ -25,7 +25,7 @@ subroutine sp_ec8_suite_check_records(na, nr, ne, accel, first, npts, dt, code, 
     real(dp), intent(in) :: extra(ne), margin
     real(dp), intent(out) :: periods(nmax), psa(nmax, nr), pga(nr), target_psa(nmax)
     real(dp), intent(out) :: mean(nmax), ratio(nmax), own_mean(nmax), own_scale(nr), values(14)
-    integer, intent(out) :: n, flags(6), ints(3)
+    integer, intent(out) :: n, flags(6), ints(4)
     integer, intent(out) :: stat
     character(len=512), intent(out) :: errmsg
     type(suite_check_t) :: c
@@ -50,4 +50,24 @@ subroutine sp_ec8_suite_check_records(na, nr, ne, accel, first, npts, dt, code, 
     flags = merge(1, 0, [c%pga_ok, c%spectrum_ok, c%count_ok, c%mean_allowed, c%passed, &
                          c%own_passed])
     ints(1:2) = [c%scale_rule, c%n_searched]
+    ints(4) = c%n_grid
 end subroutine sp_ec8_suite_check_records
+
+!> Room (nmax) of the period arrays of sp_ec8_suite_check_records for n_points and ne extra
+!> periods (suite_records_room).
+subroutine sp_suite_records_room(n_points, ne, room)
+    use seispulse_record_suite, only: suite_records_room
+    implicit none
+    integer, intent(in) :: n_points, ne
+    integer, intent(out) :: room
+    room = suite_records_room(n_points, ne)
+end subroutine sp_suite_records_room
+
+!> The fraction of the target that rule (c) asks of the mean spectrum (-).
+subroutine sp_suite_spectrum_fraction(fraction)
+    use seispulse_kinds, only: dp
+    use seispulse_record_suite, only: SUITE_SPECTRUM_FRACTION
+    implicit none
+    real(dp), intent(out) :: fraction
+    fraction = SUITE_SPECTRUM_FRACTION
+end subroutine sp_suite_spectrum_fraction

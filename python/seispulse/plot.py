@@ -650,7 +650,7 @@ def record_suite(check, ax=None, title=None, scaled=None):
         the verdict of rule (c)); rule (b) as a line of text (mean PGA against the target
         at T = 0).
     """
-    from .codes import SuiteCheck
+    from .codes import SUITE_SPECTRUM_FRACTION, SuiteCheck
     if not isinstance(check, SuiteCheck):
         raise InvalidInputError("check: must be the result of "
                                 "seispulse.codes.check_record_suite")
@@ -666,8 +666,9 @@ def record_suite(check, ax=None, title=None, scaled=None):
     axis.plot(per, np.asarray(check.mean, float), color="C0", linewidth=2.4,
               label=f"mean of {len(check.names)} records")
     axis.plot(per, target, color="k", linewidth=1.4, label="target (elastic spectrum)")
-    axis.plot(per, 0.9 * target, color="k", linewidth=1.2, linestyle="--",
-              label="0.9 x target")
+    frac = SUITE_SPECTRUM_FRACTION
+    axis.plot(per, frac * target, color="k", linewidth=1.2, linestyle="--",
+              label=f"{frac:g} x target")
     if scaled == "common":
         axis.plot(per, check.common_scale * np.asarray(check.mean, float), color="C2",
                   linewidth=1.6, label=f"mean x common_scale {check.common_scale:.4f}")
@@ -679,7 +680,7 @@ def record_suite(check, ax=None, title=None, scaled=None):
     axis.axvline(check.t1, color="C1", linewidth=1.0, label=f"T1 = {check.t1:g} s")
     axis.axvline(check.t_min_ratio, color="C3", linewidth=0.8, linestyle=":",
                  label=f"least mean/target = {check.min_ratio:.4f} "
-                       f"({'pass' if check.spectrum_ok else 'fail'}, >= 0.9)")
+                       f"({'pass' if check.spectrum_ok else 'fail'}, >= {frac:g})")
     at_zero = "gamma_I A" if str(check.target_label).startswith("EAK") else "a_g S"
     axis.text(0.99, 0.02, f"rule (b): mean PGA {check.pga_mean:.4g} g vs {at_zero} "
               f"{check.pga_target:.4g} g ({'pass' if check.pga_ok else 'fail'})",

@@ -73,6 +73,7 @@ module seispulse_codes
     use seispulse_optval, only: optval
     use seispulse_format, only: real_str, int_str
     use seispulse_special, only: pi
+    use seispulse_eak2000, only: EAK_ZONES_2003
     implicit none
     private
 
@@ -736,9 +737,9 @@ contains
         real(dp), intent(out) :: agr          !! reference PGA a_gR on type A ground, g
         integer, intent(out) :: stat          !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
         character(len=*), intent(inout), optional :: errmsg  !! message naming the parameter
-        !> Greek National Annex zones Z1, Z2, Z3, g ([PRDA24]: 0.16-0.36 g; 0.24 g and
-        !> the names from press reports, SECONDARY)
-        real(dp), parameter :: gr_agr(3) = [0.16_dp, 0.24_dp, 0.36_dp]
+        !> Greek National Annex zones Z1, Z2, Z3, g: the 2003 map of EAK 2000 ([PRDA24]:
+        !> 0.16-0.36 g; 0.24 g and the names from press reports, SECONDARY)
+        real(dp), parameter :: gr_agr(3) = EAK_ZONES_2003
         agr = 0.0_dp
         stat = SEISPULSE_SUCCESS
         select case (annex)

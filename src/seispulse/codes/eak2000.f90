@@ -34,7 +34,7 @@ module seispulse_eak2000
               eak2000_damping_correction, eak2000_check_damping, eak2000_design_spectrum, &
               eak2000_elastic_spectrum
     public :: EAK_GROUND_A, EAK_GROUND_B, EAK_GROUND_C, EAK_GROUND_D, EAK_GROUND_X
-    public :: EAK_MAP_2003, EAK_MAP_2000, EAK_BETA0
+    public :: EAK_MAP_2003, EAK_MAP_2000, EAK_BETA0, EAK_ZONES_2003
 
     !> EAK 2000 §2.3.6 soil categories A, B, C, D and X (Latin letters; the Greek letters of
     !> the code's text are unverified).
@@ -53,8 +53,9 @@ module seispulse_eak2000
     !> T1, T2 (s) of soil categories A..D (SECONDARY), doc/eak2000.md section 4.
     real(dp), parameter :: tab_t1(4) = [0.10_dp, 0.15_dp, 0.20_dp, 0.20_dp]
     real(dp), parameter :: tab_t2(4) = [0.40_dp, 0.60_dp, 0.80_dp, 1.20_dp]
-    !> alpha = A/g of the zones of each map (SECONDARY), doc/eak2000.md section 3.
-    real(dp), parameter :: zones_2003(3) = [0.16_dp, 0.24_dp, 0.36_dp]
+    !> alpha = A/g of the zones of each map (SECONDARY), doc/eak2000.md section 3. The 2003
+    !> map is also the Greek National Annex's zonation (seispulse_codes' ec8_reference_pga).
+    real(dp), parameter :: EAK_ZONES_2003(3) = [0.16_dp, 0.24_dp, 0.36_dp]
     real(dp), parameter :: zones_2000(4) = [0.12_dp, 0.16_dp, 0.24_dp, 0.36_dp]
     !> gamma_I of the importance categories Sigma1..Sigma4 (SECONDARY).
     real(dp), parameter :: tab_gamma_i(4) = [0.85_dp, 1.00_dp, 1.15_dp, 1.30_dp]
@@ -87,7 +88,7 @@ contains
         if (ground == EAK_GROUND_X) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ground = '//int_str(ground)// &
                            ' (X): ground category X calls for a site-specific study '// &
-                           '(unverified); give ground A-D (1..4)')
+                           '(unverified); give ground A-D')
         else if (ground < EAK_GROUND_A .or. ground > EAK_GROUND_D) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ground = '//int_str(ground)// &
                            ': must be 1..4 (EAK 2000 soil categories A..D)')
@@ -114,8 +115,8 @@ contains
         table = 0.0_dp
         select case (map_in)
         case (EAK_MAP_2003)
-            n = size(zones_2003)
-            table(1:n) = zones_2003
+            n = size(EAK_ZONES_2003)
+            table(1:n) = EAK_ZONES_2003
             names = 'Z1, Z2, Z3 of the 2003 map'
         case (EAK_MAP_2000)
             n = size(zones_2000)

@@ -9,11 +9,11 @@
 !> EN 1998-1 4.3.3.4.3(3): with at least 7 records the mean response should be used (else
 !> the most unfavourable one), reported as `mean_allowed`.
 !>
-!> This module works on arrays only: the caller gives the check grid (`suite_check_periods`),
-!> each record's 5 % pseudo-spectral acceleration (PSA) and PGA there (seispulse_sdof_sim's
-!> sdof_spectrum with exact peaks) and the target spectrum. Besides the check it gives the
-!> smallest common scale factor that makes the suite pass (M.1) and one scale factor per
-!> record fitted to the target over the grid, linear (M.2) or in log space (M.3).
+!> `ec8_suite_check` works on arrays: the caller gives the check grid
+!> (`suite_check_periods`), each record's 5 % pseudo-spectral acceleration (PSA) and PGA
+!> there and the target spectrum. Besides the check it gives the smallest common scale
+!> factor that makes the suite pass (M.1) and one scale factor per record fitted to the
+!> target over the grid, linear (M.2) or in log space (M.3).
 !>
 !> Comparisons are made up to rounding: a value passes when it is not below its limit by
 !> more than `suite_rtol` (relative), so that a suite scaled by `common_scale` passes.
@@ -22,7 +22,7 @@
 !> spectrum the library evaluates at any period (`suite_target_t`: the EN 1998-1 or the
 !> EAK 2000 elastic 5 % spectrum), the records' 5 % PSA is computed here, and rule (c)
 !> is checked between the grid periods too: the least ratios of the grid are refined by
-!> Brent's minimisation (doc/record-suites.md section 3).
+!> Brent's minimisation (doc/record-suites.md section 2).
 module seispulse_record_suite
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
     use seispulse_kinds, only: dp
@@ -45,7 +45,7 @@ module seispulse_record_suite
     public :: SUITE_TARGET_EC8, SUITE_TARGET_EAK, SUITE_RULE_PGA, SUITE_RULE_SPECTRUM
     public :: suite_target_t, suite_target_values, suite_target_pga, suite_target_corners
     public :: suite_refine_margin, suite_refine_spacings, suite_records_room
-    public :: ec8_suite_check_records
+    public :: ec8_suite_check_records, suite_records_grid, SUITE_SPECTRUM_FRACTION
 
     !> Per-record scale factor fitted to the target over the check grid: least squares on
     !> the ordinates (M.2) or on their logarithms (M.3).
@@ -59,7 +59,10 @@ module seispulse_record_suite
     !> The rules of EN 1998-1: at least 3 records (3.2.3.1.2(4)a), the mean response with 7
     !> (4.3.3.4.3(3)), PGA and 90 % of the spectrum over [0.2 T1, 2 T1].
     integer, parameter :: code_min_records = 3, mean_records = 7
-    real(dp), parameter :: spectrum_fraction = 0.9_dp, low_factor = 0.2_dp, high_factor = 2.0_dp
+    real(dp), parameter :: low_factor = 0.2_dp, high_factor = 2.0_dp
+    !> Rule (c): the mean spectrum of the suite is not below this fraction of the target
+    !> (EN 1998-1 3.2.3.1.2(4)c: 90 %) (-).
+    real(dp), parameter :: SUITE_SPECTRUM_FRACTION = 0.9_dp
 
     !> The target spectrum of ec8_suite_check_records: EN 1998-1 (3.2)-(3.5) or EAK 2000
     !> (K.1)-(K.3) with q = theta = 1 (the elastic spectrum), both at 5 % damping.
@@ -73,7 +76,7 @@ module seispulse_record_suite
     !> intervals next to every local minimum of the grid within twice the margin. The
     !> margin is suite_refine_spacings times the grid's relative spacing
     !> 10^(1/(n_points - 1)) - 1, at least suite_refine_margin (doc/record-suites.md
-    !> section 3: 0.58 % at 400 points, 4.8 % at 50; the misses measured on the grid alone
+    !> section 2: 0.58 % at 400 points, 4.8 % at 50; the misses measured on the grid alone
     !> were at most 0.7 spacings).
     real(dp), parameter :: suite_refine_margin = 0.005_dp
     real(dp), parameter :: suite_refine_spacings = 1.0_dp
@@ -138,6 +141,9 @@ module seispulse_record_suite
         real(dp) :: grid_min_ratio = 0.0_dp
         real(dp) :: grid_own_min_ratio = 0.0_dp
         integer :: n_searched = 0             !! grid intervals searched by the refinement
+        !> periods of the check grid, without the refined minima that
+        !> ec8_suite_check_records adds to its returned grid
+        integer :: n_grid = 0
     end type suite_check_t
 
 contains
@@ -290,6 +296,7 @@ contains
         end if
 
         check%n_records = n_rec
+        check%n_grid = n
         check%t1 = t1
         check%t_low = low_factor*t1
         check%t_high = high_factor*t1
@@ -312,8 +319,8 @@ contains
         need = target_pga/check%pga_mean
         check%scale_rule = SUITE_RULE_PGA
         do i = 1, n
-            if (spectrum_fraction*target(i)/mean(i) > need) check%scale_rule = SUITE_RULE_SPECTRUM
-            need = max(need, spectrum_fraction*target(i)/mean(i))
+            if (SUITE_SPECTRUM_FRACTION*target(i)/mean(i) > need) check%scale_rule = SUITE_RULE_SPECTRUM
+            need = max(need, SUITE_SPECTRUM_FRACTION*target(i)/mean(i))
         end do
         check%common_scale = need
 
@@ -363,7 +370,7 @@ contains
             at = 1
             m_ratio = m(1)/target(1)
             do j = 1, n
-                m_ok = m_ok .and. m(j) >= spectrum_fraction*target(j)*(1.0_dp - suite_rtol) ! (c)
+                m_ok = m_ok .and. m(j) >= SUITE_SPECTRUM_FRACTION*target(j)*(1.0_dp - suite_rtol) ! (c)
                 r = m(j)/target(j)
                 if (r < m_ratio) then
                     m_ratio = r
@@ -483,12 +490,35 @@ contains
         room = max(n_points, 0) + max(n_extra, 0) + own_extras + refined_room
     end function suite_records_room
 
+    !> The check grid of ec8_suite_check_records: suite_check_periods(t1, n_points,
+    !> [extra, T1, the target's corners]) (doc/record-suites.md section 2); periods(:) needs
+    !> room for n_points + size(extra) + 4 (suite_records_room is enough); periods(n+1:) = 0.
+    pure subroutine suite_records_grid(target, t1, n_points, extra, periods, n, stat, errmsg)
+        type(suite_target_t), intent(in) :: target  !! the code spectrum (its corners)
+        real(dp), intent(in) :: t1           !! fundamental period T1, s, finite, > 0
+        integer, intent(in) :: n_points      !! log-spaced periods, >= 2
+        real(dp), intent(in) :: extra(:)     !! further periods, s, finite (outside dropped)
+        real(dp), intent(out) :: periods(:)  !! the grid, s, ascending in periods(1:n)
+        integer, intent(out) :: n            !! number of periods used
+        integer, intent(out) :: stat         !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
+        character(len=*), intent(inout), optional :: errmsg  !! message naming the parameter
+        real(dp) :: corners(3)
+        integer :: nc
+        periods = 0.0_dp
+        n = 0
+        call suite_target_corners(target, corners, nc, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        call suite_check_periods(t1, n_points, [extra, t1, corners(1:nc)], periods, n, stat, &
+                                 errmsg)
+    end subroutine suite_records_grid
+
     ! ------------------------------------------------------------------------------
     ! The check from the records
     ! ------------------------------------------------------------------------------
 
-    !> EN 1998-1 3.2.3.1.2(4) for records given as samples (doc/record-suites.md section 3).
-    !> The check grid is suite_check_periods(t1, n_points, [extra, T1, the target's corners]);
+    !> EN 1998-1 3.2.3.1.2(4) for records given as samples (doc/record-suites.md section 2).
+    !> The check grid is suite_records_grid(target, t1, n_points, extra): suite_check_periods
+    !> with [extra, T1, the target's corners];
     !> each record's 5 % PSA there (sdof_spectrum, exact peaks, and pseudo_spectra) and PGA
     !> (max |accel|); ec8_suite_check on the grid. Then rule (c) between the grid periods:
     !> for the suite and for the suite scaled by own_scale, every grid interval whose smaller
@@ -539,9 +569,9 @@ contains
         !> suite_refine_spacings x the grid's relative spacing)
         real(dp), intent(in), optional :: margin
         real(dp), allocatable :: ext(:), grid(:), spec(:, :), tgt(:), m0(:), r0(:), om0(:)
-        real(dp) :: corners(3), target_pga, row(size(pga)), t_best(2), r_best(2), tgt1(1), add(2)
+        real(dp) :: target_pga, row(size(pga)), t_best(2), r_best(2), tgt1(1), add(2)
         type(suite_ratio_t) :: f
-        integer :: n_rec, np_in, room, nc, n0, k, i, j, n_min, bad, na, ia, st
+        integer :: n_rec, np_in, room, n0, k, i, j, n_min, bad, na, ia, st
         real(dp) :: band
         character(len=512) :: msg
 
@@ -604,12 +634,10 @@ contains
         end do
         call suite_target_pga(target, target_pga, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
-        call suite_target_corners(target, corners, nc, stat, errmsg)
-        if (stat /= SEISPULSE_SUCCESS) return
 
         ! --- the grid, the target and the spectra there
         allocate(grid(np_in + size(ext) + own_extras))
-        call suite_check_periods(t1, np_in, [ext, t1, corners(1:nc)], grid, n0, stat, errmsg)
+        call suite_records_grid(target, t1, np_in, ext, grid, n0, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         allocate(tgt(n0), spec(n0, n_rec), m0(n0), r0(n0), om0(n0))
         call suite_target_values(target, grid(1:n0), tgt, stat, errmsg)
@@ -663,10 +691,10 @@ contains
         if (r_best(1) < check%min_ratio) then
             check%min_ratio = r_best(1)
             check%t_min_ratio = t_best(1)
-            check%spectrum_ok = check%min_ratio >= spectrum_fraction*(1.0_dp - suite_rtol) ! (c)
+            check%spectrum_ok = check%min_ratio >= SUITE_SPECTRUM_FRACTION*(1.0_dp - suite_rtol) ! (c)
             check%passed = check%passed .and. check%spectrum_ok
-            if (spectrum_fraction/check%min_ratio > check%common_scale) then      ! (M.1)
-                check%common_scale = spectrum_fraction/check%min_ratio
+            if (SUITE_SPECTRUM_FRACTION/check%min_ratio > check%common_scale) then      ! (M.1)
+                check%common_scale = SUITE_SPECTRUM_FRACTION/check%min_ratio
                 check%scale_rule = SUITE_RULE_SPECTRUM
             end if
         end if
@@ -674,7 +702,7 @@ contains
             check%own_min_ratio = r_best(2)
             check%own_t_min_ratio = t_best(2)
             check%own_passed = check%own_passed .and. &
-                check%own_min_ratio >= spectrum_fraction*(1.0_dp - suite_rtol)
+                check%own_min_ratio >= SUITE_SPECTRUM_FRACTION*(1.0_dp - suite_rtol)
         end if
 
         ! --- the returned grid: the check grid with the refined minimisers (those below the
