@@ -11,6 +11,7 @@ module test_record_suite
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT
     use seispulse_record_suite, only: SUITE_FIT_LINEAR, SUITE_FIT_LOG, suite_check_t, &
+                                      suite_records_grid, SUITE_SPECTRUM_FRACTION, &
                                       suite_check_periods, ec8_suite_check, suite_target_t, &
                                       SUITE_TARGET_EC8, SUITE_TARGET_EAK, suite_target_values, &
                                       suite_target_pga, suite_target_corners, &
@@ -403,6 +404,19 @@ contains
         if (allocated(error)) return
         call check(error, c(1:2), [0.15_dp, 0.6_dp], rtol=0.0_dp, message='EAK T1 T2 ground B')
         if (allocated(error)) return
+        ! Phi_e written out: (K.1)-(K.3) with q = theta = 1 and eta(5 %) = 1, gamma_I A =
+        ! 1.15 x 0.24 g, beta0 = 2.5, ground B T1 = 0.15 s, T2 = 0.6 s (doc/eak2000.md)
+        call check(error, v, 1.15_dp*0.24_dp*[1.0_dp, 1.0_dp + (0.1_dp/0.15_dp)*1.5_dp, 2.5_dp, &
+                   2.5_dp*(0.6_dp/1.3_dp), 2.5_dp*(0.6_dp/3.0_dp)], rtol=1.0e-14_dp, &
+                   message='EAK B exponent 1, written out')
+        if (allocated(error)) return
+        t%exponent = 2.0_dp/3.0_dp
+        call suite_target_values(t, per, v, stat, msg)
+        call check(error, v, 1.15_dp*0.24_dp*[1.0_dp, 2.0_dp, 2.5_dp, &
+                   2.5_dp*(0.6_dp/1.3_dp)**(2.0_dp/3.0_dp), &
+                   2.5_dp*(0.6_dp/3.0_dp)**(2.0_dp/3.0_dp)], rtol=1.0e-14_dp, &
+                   message='EAK B exponent 2/3, written out')
+        if (allocated(error)) return
         msg = ''
         t = suite_target_t(code=SUITE_TARGET_EC8, ag=0.0_dp)
         call suite_target_pga(t, pga, stat, msg)
@@ -432,9 +446,10 @@ contains
         real(dp) :: per(suite_records_room(6, 0)), psa(suite_records_room(6, 0), 3), pga(3)
         real(dp) :: tv(suite_records_room(6, 0)), m(suite_records_room(6, 0)), &
                     r(suite_records_room(6, 0)), om(suite_records_room(6, 0)), own(3), best
+        real(dp) :: g(suite_records_room(6, 0))
         type(suite_target_t) :: target
         type(suite_check_t) :: c
-        integer :: k, i, stat, n, at
+        integer :: k, i, stat, n, at, ng
         character(len=256) :: msg
         do k = 1, 3
             do i = 1, ns
@@ -495,8 +510,25 @@ contains
         if (allocated(error)) return
         call check(error, c%own_min_ratio <= c%grid_own_min_ratio, 'own refined')
         if (allocated(error)) return
-        call check(error, pga, amp*maxval(abs(accel(1:ns)))/amp(1), rtol=1.0e-2_dp, &
-                   message='pga')
+        do k = 1, 3
+            call check(error, pga(k), maxval(abs(accel((k - 1)*ns + 1:k*ns))), rtol=0.0_dp, &
+                       message='pga of record '//achar(48 + k))
+            if (allocated(error)) return
+        end do
+        ! the check grid: 6 log-spaced periods, T1 = 1 s and TC = 0.5 s (TD = 2 T1 is an
+        ! end, TB = 0.15 s lies below 0.2 T1); the refined periods come on top
+        call check(error, c%n_grid, 8)
+        if (allocated(error)) return
+        call suite_records_grid(target, 1.0_dp, 6, [real(dp) ::], g, ng, stat, msg)
+        call check(error, ng, c%n_grid)
+        if (allocated(error)) return
+        do i = 1, ng
+            call check(error, any(per(1:n) == g(i)), 'grid period on the returned periods')
+            if (allocated(error)) return
+        end do
+        call check(error, n - ng >= 1 .and. n - ng <= 2, 'one or two refined periods')
+        if (allocated(error)) return
+        call check(error, SUITE_SPECTRUM_FRACTION, 0.9_dp, rtol=0.0_dp, message='rule (c) 90 %')
     end subroutine test_trough
 
     subroutine test_records_bad(error)

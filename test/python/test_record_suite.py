@@ -21,7 +21,7 @@ against values computed here without the module under test:
 No published worked example of the check with numbers for records we can read (the
 pySLAMMER samples) was found; see doc/record-suites.md. The kernel on hand arrays, the
 boundary 0.9 x target and a record equal to c x target are tested in
-test/test_record_suite.f90 (array targets are not accepted from Python any more).
+test/test_record_suite.f90 (Python takes code targets only).
 """
 import numpy as np
 import pytest
@@ -216,7 +216,7 @@ def test_grid_extras_and_corners():
     assert TARGET.pga == pytest.approx(0.36, rel=1e-15)
     np.testing.assert_allclose(TARGET([0.1, 0.3, 1.0, 3.0]), ec8_b([0.1, 0.3, 1.0, 3.0]),
                                rtol=1e-15)
-    with pytest.raises(InvalidInputError, match=r"^xi_percent = 10: .* 5 % spectra"):
+    with pytest.raises(TypeError, match="xi_percent"):     # the check compares 5 % spectra
         codes.elastic_target(0.3, ground="B", xi_percent=10)
 
 
@@ -236,6 +236,26 @@ def test_targets():
     chk = codes.check_record_suite(suite(), 0.4, e, n_points=30)
     np.testing.assert_allclose(chk.target, e(chk.periods), rtol=1e-15)
     assert chk.pga_target == pytest.approx(1.15 * 0.36, rel=1e-15)
+
+    # Phi_e written out: (K.1)-(K.3) with q = theta = 1 and eta(5 %) = 1 (eta_min 0.7 does
+    # not act); Z3 A = 0.36 g, category III gamma_I = 1.15, ground C T1 = 0.2 s, T2 = 0.8 s,
+    # beta0 = 2.5 (doc/eak2000.md)
+    def phi_e(periods, expo):
+        ga = 1.15 * 0.36
+        return np.array([ga * (1.0 + (p / 0.2) * 1.5) if p <= 0.2 else
+                         ga * 2.5 if p <= 0.8 else ga * 2.5 * (0.8 / p) ** expo
+                         for p in periods])
+
+    tt = np.array([0.0, 0.1, 0.2, 0.5, 0.8, 1.2, 3.0])
+    np.testing.assert_allclose(e(tt), phi_e(tt, 1.0), rtol=1e-14)
+    assert e(3.0) == pytest.approx(1.15 * 0.36 * 2.5 * (0.8 / 3.0), rel=1e-14)
+    e23 = codes.eak2000_target("Z3", "C", "III")
+    np.testing.assert_allclose(e23(tt), phi_e(tt, 2.0 / 3.0), rtol=1e-14)
+    np.testing.assert_allclose(chk.target, phi_e(chk.periods, 1.0), rtol=1e-14)
+    chk23 = codes.check_record_suite(suite(), 2.0, e23, n_points=30)   # up to 4 s, beyond T2
+    np.testing.assert_allclose(chk23.target, phi_e(chk23.periods, 2.0 / 3.0), rtol=1e-14)
+    with pytest.raises(InvalidInputError, match="^elastic_exponent = True: .* not a bool"):
+        codes.eak2000_target(elastic_exponent=True)
     assert "gamma_I A" in str(chk) and chk.target_label.startswith("EAK 2000")
     with pytest.raises(InvalidInputError, match=r"^target: must be a SpectrumTarget from "
                                                 r"codes.elastic_target.*eak2000_target.*"
