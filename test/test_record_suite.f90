@@ -523,7 +523,7 @@ contains
         call check(error, ng, c%n_grid)
         if (allocated(error)) return
         do i = 1, ng
-            call check(error, any(per(1:n) == g(i)), 'grid period on the returned periods')
+            call check(error, minval(abs(per(1:n) - g(i))) <= 0.0_dp, 'grid period returned')
             if (allocated(error)) return
         end do
         call check(error, n - ng >= 1 .and. n - ng <= 2, 'one or two refined periods')
