@@ -87,7 +87,7 @@ contains
         if (ground == EAK_GROUND_X) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ground = '//int_str(ground)// &
                            ' (X): ground category X calls for a site-specific study '// &
-                           '(unverified); give ground A-D (1..4)')
+                           '(unverified); give ground A-D')
         else if (ground < EAK_GROUND_A .or. ground > EAK_GROUND_D) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ground = '//int_str(ground)// &
                            ': must be 1..4 (EAK 2000 soil categories A..D)')
