@@ -666,7 +666,7 @@ contains
         character(len=:), allocatable, intent(out) :: errmsg
         character(len=:), allocatable :: where
         character(len=512) :: msg
-        real(dp) :: ag
+        real(dp) :: ag, v(1)
         integer :: st
 
         where = located(path, gc)
@@ -707,11 +707,15 @@ contains
         if (.not. in_range(where, 'damping', c_damping, 0.0_dp, 1.0_dp, .false., errmsg, &
             damping_rule, open_hi=.true.)) return
         p%damping = c_damping
-        if (.not. in_range(where, 'q', c_q, 1.0_dp, big, .false., errmsg, &
-            'the behaviour factor must be finite and >= 1')) return
+        ! q and beta: the library's checks (the design spectrum at T = 0)
+        msg = ''
+        call ec8_design_spectrum([0.0_dp], p%ag, EC8_SPECTRUM_TYPE_1, p%ground, c_q, c_beta, &
+                                 v, st, msg)
+        if (st /= SEISPULSE_SUCCESS) then
+            errmsg = where//trim(msg)
+            return
+        end if
         p%q = c_q
-        if (.not. in_range(where, 'beta', c_beta, 0.0_dp, big, .false., errmsg, &
-            'the lower-bound factor must be finite and >= 0 (0.2 recommended)')) return
         p%beta = c_beta
     end subroutine check_ec8
 
@@ -724,7 +728,7 @@ contains
         character(len=:), allocatable, intent(out) :: errmsg
         character(len=:), allocatable :: where
         character(len=512) :: msg
-        real(dp) :: t_1, t_2
+        real(dp) :: t_1, t_2, v(1)
         integer :: st, code
 
         where = located(path, gk)
@@ -746,8 +750,6 @@ contains
                 errmsg = where//'zone_map: only with zone (alpha is given directly)'
                 return
             end if
-            if (.not. in_range(where, 'alpha', k_alpha, 0.0_dp, big, .false., errmsg, &
-                'must be a finite A/g >= 0')) return
             p%alpha = k_alpha
         else
             ! as Python: the default zone Z2 is a zone of the 2003 map only
@@ -812,30 +814,28 @@ contains
                 return
             end if
         else
-            if (.not. (k_importance > 0.0_dp .and. k_importance <= huge(1.0_dp))) then
-                errmsg = where//'importance = '//shortest_str(k_importance)//': must be a ' &
-                         //'finite factor gamma_I > 0'
-                return
-            end if
             p%importance = k_importance
         end if
-        if (.not. in_range(where, 'q', k_q, 1.0_dp, big, .false., errmsg, &
-            'the behaviour factor must be finite and >= 1')) return
-        p%q = k_q
-        if (.not. in_range(where, 'theta', k_theta, 0.0_dp, 1.0_dp, .true., errmsg, &
-            'must be in (0, 1] (the foundation factor; its rules are unverified)')) return
-        p%theta = k_theta
         if (.not. in_range(where, 'damping', k_damping, 0.0_dp, 1.0_dp, .false., errmsg, &
             damping_rule, open_hi=.true.)) return
         p%damping = k_damping
-        if (.not. in_range(where, 'eta_min', k_eta_min, 0.0_dp, 1.0_dp, .false., errmsg, &
-            'must be in [0, 1] (the floor of eta, unverified; 0: none)')) return
+        ! alpha, importance, q, theta, lower_bound, eta_min and the exponent: the library's
+        ! checks (both spectra at T = 0), placed at &eak
+        msg = ''
+        call eak2000_design_spectrum([0.0_dp], p%alpha, p%ground, p%importance, k_q, k_theta, &
+                                     100.0_dp*k_damping, k_eta_min, k_lower_bound, v, st, msg)
+        if (st == SEISPULSE_SUCCESS) call eak2000_elastic_spectrum([0.0_dp], p%alpha, &
+            p%ground, p%importance, 100.0_dp*k_damping, k_eta_min, k_exponent, v, st, msg)
+        if (st /= SEISPULSE_SUCCESS) then
+            ! the library's argument `exponent` is the key elastic_exponent here
+            errmsg = where//trim(msg)
+            if (index(msg, 'exponent = ') == 1) errmsg = where//'elastic_'//trim(msg)
+            return
+        end if
+        p%q = k_q
+        p%theta = k_theta
         p%eta_min = k_eta_min
-        if (.not. in_range(where, 'lower_bound', k_lower_bound, 0.0_dp, big, .false., errmsg, &
-            'must be finite and >= 0 (0: none)')) return
         p%lower_bound = k_lower_bound
-        if (.not. in_range(where, 'elastic_exponent', k_exponent, 0.0_dp, big, .true., errmsg, &
-            'must be finite and > 0 (2/3 as the design spectrum; 1 in one implementation)')) return
         p%exponent = k_exponent
     end subroutine check_eak
 
