@@ -156,6 +156,37 @@ def suite_reference(files, t1, target, fit, n_points, extra):
                 own_min_ratio=(own_mean / tgt).min())
 
 
+def least_ratio(recs, target, grid, ratio, factors):
+    """The least of sum_k f_k PSA_k(T) / (n target(T)) over [grid[0], grid[-1]], found
+    independently of the library: the grid's values, then in each grid interval next to
+    the three smallest grid ratios a dense scan (401 periods, sdof.spectrum exact peaks)
+    polished by scipy's bounded minimize_scalar (xatol 1e-12 s). Returns (ratio, T)."""
+    from scipy.optimize import minimize_scalar
+
+    def f(periods):
+        periods = np.atleast_1d(np.asarray(periods, dtype=float))
+        psa = [np.asarray(sdof.spectrum(r.accel, r.dt, periods, 0.05, peaks="exact").psa,
+                          dtype=float).ravel() for r in recs]
+        mean = sum(c * p for c, p in zip(factors, psa)) / len(recs)
+        return mean / np.asarray(target(periods), dtype=float)
+
+    best = (float(ratio.min()), float(grid[ratio.argmin()]))
+    for i in np.argsort(ratio)[:3]:
+        for a, b in ((i - 1, i), (i, i + 1)):
+            if a < 0 or b >= grid.size:
+                continue
+            scan = np.linspace(grid[a], grid[b], 401)
+            v = f(scan)
+            j = int(np.argmin(v))
+            lo, hi = scan[max(j - 1, 0)], scan[min(j + 1, scan.size - 1)]
+            res = minimize_scalar(lambda t: float(f(t)[0]), bounds=(lo, hi), method="bounded",
+                                  options=dict(xatol=1e-12))
+            for val, t in ((float(v[j]), float(scan[j])), (float(res.fun), float(res.x))):
+                if val < best[0]:
+                    best = (val, t)
+    return best
+
+
 SUITE_CASES = {
     # name: (target, &suite and code groups, target callable, fit, n_points, corner
     # periods, Python's target)
@@ -166,6 +197,10 @@ SUITE_CASES = {
                   "&ec8 ag = 0.2, ground = 'C' /\n",
                   lambda T: codes.elastic_spectrum(T, 0.2, 2, "C"), "log", 12,
                   [0.1, 0.25, 1.2], codes.elastic_target(0.2, 2, "C")),
+    # a coarse grid: the least ratios lie between grid periods (refined rows)
+    "ec8_1_coarse": ("&suite t1 = 1.5, n_points = 5 /\n&ec8 ag = 0.25, ground = 'C' /\n",
+                     lambda T: codes.elastic_spectrum(T, 0.25, 1, "C"), "linear", 5,
+                     [0.2, 0.6, 2.0], codes.elastic_target(0.25, 1, "C")),
     "eak": ("&suite t1 = 0.45, target = 'EAK', n_points = 20 /\n"
             "&eak zone = 'Z3', ground = 'A', importance_class = 'III' /\n",
             lambda T: codes.eak2000_spectrum(T, zone="Z3", ground="A", importance="III",
@@ -209,7 +244,9 @@ def test_suite_tables_against_numpy(driver, tmp_path, name):
     assert list(r["name"]) == ["quake_a", "quake_b", "quake_d"]
     assert list(r["index"]) == [1, 2, 3] and list(r["scale"]) == [1.0, 1.0, 1.0]
     assert r["own_total"] == pytest.approx(ref["own"], **rel)
-    assert r["common_total"] == pytest.approx([ref["common"]] * 3, **rel)
+    assert r["common_total"] == pytest.approx([common] * 3, **rel)
+    if on.all():                    # no refined row: the grid's factor (else checked below)
+        assert common == pytest.approx(ref["common"], **rel)
     assert r["pga"] == pytest.approx(ref["pga"], **rel)
     assert r["own_scale"] == pytest.approx(ref["own"], **rel)
     assert r["psa_t1"] == pytest.approx(ref["psa"][:, list(ref["grid"]).index(t1)], **rel)
@@ -238,7 +275,8 @@ def test_suite_tables_against_numpy(driver, tmp_path, name):
     own_ratio = m["mean_own"] / m["target"]
     assert u["own_min_ratio"][0] == np.min(own_ratio)
     assert u["own_t_min_ratio"][0] == m["period"][np.argmin(own_ratio)]
-    assert u["target"][0] == {"ec8_1_linear": "EC8_1", "ec8_2_log": "EC8_2", "eak": "EAK"}[name]
+    assert u["target"][0] == {"ec8_1_linear": "EC8_1", "ec8_1_coarse": "EC8_1",
+                              "ec8_2_log": "EC8_2", "eak": "EAK"}[name]
     assert u["fit"][0] == fit and u["n_periods"][0] == n
     assert u["n_listed"][0] == 3 and u["n_failed"][0] == 0
     by_pga = ref["target_pga"] / ref["pga"].mean() >= 0.9 / u["min_ratio"][0]
@@ -254,8 +292,34 @@ def test_suite_tables_against_numpy(driver, tmp_path, name):
     txt = read_summary_txt(tmp_path / "s_suite.txt")
     assert txt["check"][0] == u["check"][0] and txt["t1"] == ("%.6g" % t1, "s")
 
-    # Python's check_record_suite: the same library routine, the same numbers
+    # the refined rows (periods off the grid): each record's PSA there, independently
     recs = [records.read(tmp_path / f) for f in SUITE_FILES]
+    off = m["period"][~on]
+    if name == "ec8_1_coarse":
+        assert off.size > 0           # the case tests the refined rows
+    if off.size:
+        psa_off = np.array([np.asarray(sdof.spectrum(x.accel, x.dt, off, 0.05,
+                                                     peaks="exact").psa, dtype=float).ravel()
+                            for x in recs])
+        assert m["mean"][~on] == pytest.approx(psa_off.mean(axis=0), **rel)
+        assert m["ratio"][~on] == pytest.approx(psa_off.mean(axis=0) / target(off), **rel)
+        assert m["target_90"][~on] == pytest.approx(0.9 * target(off), **rel)
+        assert m["mean_own"][~on] == pytest.approx((ref["own"][:, None] * psa_off).mean(axis=0),
+                                                   **rel)
+        assert s["psa"][~on_long] == pytest.approx(psa_off.ravel(), **rel)
+    # min_ratio and own_min_ratio against a dense scan polished by scipy (the ratio is
+    # flat at its minimum: 1e-9 relative in the value, 1e-4 s in its period)
+    low, t_low = least_ratio(recs, target, ref["grid"], ref["ratio"], np.ones(3))
+    assert u["min_ratio"][0] == pytest.approx(low, rel=1e-9)
+    assert u["t_min_ratio"][0] == pytest.approx(t_low, abs=1e-4)
+    own_low, own_t = least_ratio(recs, target, ref["grid"], ref["own_mean"] / ref["target"],
+                                 ref["own"])
+    assert u["own_min_ratio"][0] == pytest.approx(own_low, rel=1e-9)
+    assert u["own_t_min_ratio"][0] == pytest.approx(own_t, abs=1e-4)
+    assert common == pytest.approx(max(ref["target_pga"] / ref["pga"].mean(), 0.9 / low),
+                                   rel=1e-9)
+
+    # Python's check_record_suite: the same library routine, the same numbers
     chk = codes.check_record_suite(recs, t1, py_target, n_points=n_points, fit=fit)
     assert np.asarray(chk.periods) == pytest.approx(m["period"], rel=1e-15)
     assert np.asarray(chk.mean) == pytest.approx(m["mean"], rel=1e-14)
