@@ -10,7 +10,8 @@
 !> <output>_suite (one-row summary), <output>_suite_records, <output>_suite_mean,
 !> <output>_suite_spectra. Everything is checked before any record is read (also that no
 !> two tables get one file name); the records read are joined and checked together (the
-!> library evaluates their 5 % PSA on the check grid and between grid periods). A record that cannot be read or analysed fails its rows
+!> library evaluates their 5 % PSA on the check grid and between grid periods). A record
+!> that cannot be read or analysed fails its rows
 !> (status failed; reported on stderr) and fails the check (check fail, status failed:
 !> the suite checked is not the one listed); the figures are those of the others if at
 !> least min_records remain (else NaN); run_spectra then returns ROWS_FAILED (exit
@@ -1465,7 +1466,8 @@ contains
             //'spectra: the check of a suite of records against a code''s elastic spectrum ' &
             //'(EN 1998-1 3.2.3.1.2(4))', head, 'n_listed: records listed; n_failed: ' &
             //'records that could not be read or that the check refuses (zero PGA or ' &
-            //'PSA; then check and own_check fail, status failed); n_records: records checked; n_periods: the check grid; ' &
+            //'PSA; then check and own_check fail, status failed); n_records: records ' &
+            //'checked; n_periods: the check grid; ' &
             //'common_rule: pga (b) or spectrum (c) sets common_scale; own_t_min_ratio: ' &
             //'the period of own_min_ratio (s)'], &
             [character(len=15) :: 'n_listed', 'n_failed', 'n_records', 'target', 'fit', &

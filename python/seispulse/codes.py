@@ -90,7 +90,8 @@ from . import _core
 from . import _fortran_codes as _f
 from ._seispulse import (sp_ec8_damping_correction, sp_ec8_design_spectrum,
                          sp_ec8_elastic_spectrum, sp_ec8_ground_parameters, sp_ec8_r_factor,
-                         sp_ec8_design_ag, sp_ec8_reference_pga, sp_ec8_rigid_thrust, sp_ec8_seismic_coefficients,
+                         sp_ec8_design_ag, sp_ec8_reference_pga, sp_ec8_rigid_thrust,
+                         sp_ec8_seismic_coefficients,
                          sp_ec8_thrust,
                          sp_ec8_vertical_ratio, sp_mononobe_okabe, sp_seed_whitman_increment,
                          sp_westergaard_pressure, sp_wood_thrust)
