@@ -9,8 +9,9 @@
 !> input file). Tables <output>_spectra (with &spectra), and with &suite:
 !> <output>_suite (one-row summary), <output>_suite_records, <output>_suite_mean,
 !> <output>_suite_spectra. Everything is checked before any record is read (also that no
-!> two tables get one file name); records are read one at a time and only their 5 % PSA
-!> on the check grid is kept. A record that cannot be read or analysed fails its rows
+!> two tables get one file name); the records read are joined and checked together (the
+!> library evaluates their 5 % PSA on the check grid and between grid periods). A record
+!> that cannot be read or analysed fails its rows
 !> (status failed; reported on stderr) and fails the check (check fail, status failed:
 !> the suite checked is not the one listed); the figures are those of the others if at
 !> least min_records remain (else NaN); run_spectra then returns ROWS_FAILED (exit
@@ -24,7 +25,7 @@ module driver_spectra
                          STANDARD_GRAVITY, &
                          ec8_elastic_spectrum, ec8_design_spectrum, ec8_ground_parameters, &
                          ec8_damping_correction, EC8_SPECTRUM_TYPE_1, EC8_SPECTRUM_TYPE_2, &
-                         ec8_reference_pga, EC8_ANNEX_GR, &
+                         ec8_reference_pga, ec8_design_ag, EC8_ANNEX_GR, &
                          eak2000_ground_parameters, eak2000_zone_acceleration, &
                          eak2000_importance_factor, eak2000_damping_correction, &
                          eak2000_design_spectrum, eak2000_elastic_spectrum, EAK_GROUND_A, &
@@ -79,7 +80,8 @@ module driver_spectra
         'EC8_2', 'EAK']
     character(len=6), parameter :: fit_names(2) = [character(len=6) :: 'linear', 'log']
     character(len=1), parameter :: ec8_grounds(5) = ['a', 'b', 'c', 'd', 'e']
-    !> EAK ground names: A..D, and X (refused by the library with its reason).
+    !> EAK ground names: A..D, and X (eak2000_ground_parameters refuses it with its reason,
+    !> placed at &eak ground).
     character(len=1), parameter :: eak_grounds(5) = ['a', 'b', 'c', 'd', 'x']
     character(len=2), parameter :: ec8_zones(3) = [character(len=2) :: 'z1', 'z2', 'z3']
     character(len=3), parameter :: eak_zones_2000(4) = [character(len=3) :: 'i', 'ii', 'iii', &
@@ -102,8 +104,6 @@ module driver_spectra
         //'(a ratio: 0.05 = 5 %)'
     !> Longest period (s) at which EN 1998-1 states the elastic spectrum.
     real(dp), parameter :: en_max_period = 4.0_dp
-    !> Damping ratio of the spectra of the records and of the target (the check, 5 %).
-    real(dp), parameter :: check_damping = 0.05_dp
 
     ! namelist variables (defaults are set in set_defaults); &ec8 and &eak share key
     ! names: local namelists in their readers read them into c_*, k_*
@@ -367,7 +367,7 @@ contains
 
         call range_notes(path, gs, gu, cfg, table_notes, suite_notes)
 
-        ! --- the records, one at a time, and the check
+        ! --- the records (read, then joined) and the check
         nfailed = 0
         if (cfg%suite) then
             call compute_suite(cfg, outs, res)
@@ -452,7 +452,7 @@ contains
                          //'and ground)'
                 return
             end if
-            call check_ec8(path, gc, cfg%suite .and. cfg%target /= CODE_EAK, cfg%ec8, errmsg)
+            call check_ec8(path, gc, cfg%ec8, errmsg)
             if (len(errmsg) > 0) return
         else if (find_group(groups, 'ec8') > 0) then
             errmsg = located(path, gc)//'not used (codes names no EN 1998-1 spectrum, and ' &
@@ -465,7 +465,7 @@ contains
                          //'or alpha, ground, ...)'
                 return
             end if
-            call check_eak(path, gk, cfg%suite .and. cfg%target == CODE_EAK, cfg%eak, errmsg)
+            call check_eak(path, gk, cfg%eak, errmsg)
             if (len(errmsg) > 0) return
         else if (find_group(groups, 'eak') > 0) then
             errmsg = located(path, gk)//'not used (codes names no EAK spectrum, and the ' &
@@ -661,24 +661,18 @@ contains
     end subroutine check_spectra
 
     !> &ec8: ag or a zone of the Greek NA, the ground, damping, q, beta.
-    subroutine check_ec8(path, gc, target, p, errmsg)
+    subroutine check_ec8(path, gc, p, errmsg)
         character(len=*), intent(in) :: path
         type(nml_group), intent(in) :: gc
-        logical, intent(in) :: target       !! the &suite target is an EN 1998-1 spectrum
         type(ec8_t), intent(inout) :: p
         character(len=:), allocatable, intent(out) :: errmsg
         character(len=:), allocatable :: where
         character(len=512) :: msg
+        real(dp) :: ag, v(1)
         integer :: st
 
         where = located(path, gc)
         errmsg = ''
-        if (given(gc, 'ag') .and. given(gc, 'zone')) then
-            errmsg = where//'ag, zone: give only one of them (ag: the design ground ' &
-                     //'acceleration in g; zone: ''Z1''..''Z3'' of the Greek National Annex, ' &
-                     //'a_gR times importance)'
-            return
-        end if
         if (given(gc, 'zone')) then
             p%zone = name_index(c_zone, ec8_zones)
             if (p%zone == 0) then
@@ -686,49 +680,26 @@ contains
                          //'Z2, Z3 of the Greek National Annex)'
                 return
             end if
-            if (given(gc, 'national_annex')) then
-                if (name_index(c_annex, annex_names) == 0) then
-                    errmsg = where//'national_annex = '''//trim(c_annex)//''': unknown ' &
-                             //'national annex (allowed: GR, the only one with zones here)'
-                    return
-                end if
-            end if
-            if (.not. (c_importance > 0.0_dp .and. c_importance <= huge(1.0_dp))) then
-                errmsg = where//'importance = '//shortest_str(c_importance)//': must be a ' &
-                         //'finite factor gamma_I > 0'
-                return
-            end if
-            p%importance = c_importance
-            msg = ''
-            call ec8_reference_pga(EC8_ANNEX_GR, p%zone, p%agr, st, msg)
-            if (st /= SEISPULSE_SUCCESS) then
-                errmsg = where//'zone = '''//trim(c_zone)//''': '//reason(msg)
-                return
-            end if
-            p%ag = p%importance * p%agr
-        else
-            if (.not. given(gc, 'ag')) then
-                errmsg = where//'ag: missing (give ag = the design ground acceleration on ' &
-                         //'ground A (g), or zone = ''Z1''..''Z3'' of the Greek National Annex)'
-                return
-            end if
-            if (given(gc, 'national_annex')) then
-                errmsg = where//'national_annex: only with zone (ag is given directly)'
-                return
-            end if
-            if (given(gc, 'importance')) then
-                errmsg = where//'importance: only with zone (ag is already gamma_I a_gR)'
-                return
-            end if
-            if (.not. in_range(where, 'ag', c_ag, 0.0_dp, big, .false., errmsg, &
-                'must be a finite acceleration >= 0 (g)')) return
-            if (target .and. .not. c_ag > 0.0_dp) then
-                errmsg = where//'ag = '//shortest_str(c_ag)//': must be > 0 with &suite (the ' &
-                         //'check needs a target spectrum that is not zero)'
-                return
-            end if
-            p%ag = c_ag
         end if
+        if (given(gc, 'national_annex')) then
+            if (name_index(c_annex, annex_names) == 0) then
+                errmsg = where//'national_annex = '''//trim(c_annex)//''': unknown ' &
+                         //'national annex (allowed: GR, the only one with zones here)'
+                return
+            end if
+        end if
+        ! the library's rule, as Python's (ec8_design_ag): one of ag and zone; with ag,
+        ! importance stays 1 and national_annex is only checked
+        ag = ieee_value(1.0_dp, ieee_quiet_nan)
+        if (given(gc, 'ag')) ag = c_ag
+        msg = ''
+        call ec8_design_ag(ag, EC8_ANNEX_GR, p%zone, c_importance, p%ag, st, msg)
+        if (st /= SEISPULSE_SUCCESS) then
+            errmsg = where//trim(msg)
+            return
+        end if
+        p%importance = c_importance
+        if (p%zone /= 0) call ec8_reference_pga(EC8_ANNEX_GR, p%zone, p%agr, st)
         p%ground = name_index(c_ground, ec8_grounds)
         if (p%ground == 0) then
             errmsg = where//'ground = '''//trim(c_ground)//''': unknown ground type ' &
@@ -738,25 +709,28 @@ contains
         if (.not. in_range(where, 'damping', c_damping, 0.0_dp, 1.0_dp, .false., errmsg, &
             damping_rule, open_hi=.true.)) return
         p%damping = c_damping
-        if (.not. in_range(where, 'q', c_q, 1.0_dp, big, .false., errmsg, &
-            'the behaviour factor must be finite and >= 1')) return
+        ! q and beta: the library's checks (the design spectrum at T = 0)
+        msg = ''
+        call ec8_design_spectrum([0.0_dp], p%ag, EC8_SPECTRUM_TYPE_1, p%ground, c_q, c_beta, &
+                                 v, st, msg)
+        if (st /= SEISPULSE_SUCCESS) then
+            errmsg = where//trim(msg)
+            return
+        end if
         p%q = c_q
-        if (.not. in_range(where, 'beta', c_beta, 0.0_dp, big, .false., errmsg, &
-            'the lower-bound factor must be finite and >= 0 (0.2 recommended)')) return
         p%beta = c_beta
     end subroutine check_ec8
 
     !> &eak: zone (of zone_map) or alpha, ground, importance or its class, q, theta,
     !> damping, and the unverified parameters.
-    subroutine check_eak(path, gk, target, p, errmsg)
+    subroutine check_eak(path, gk, p, errmsg)
         character(len=*), intent(in) :: path
         type(nml_group), intent(in) :: gk
-        logical, intent(in) :: target       !! the &suite target is EAK's spectrum
         type(eak_t), intent(inout) :: p
         character(len=:), allocatable, intent(out) :: errmsg
         character(len=:), allocatable :: where
         character(len=512) :: msg
-        real(dp) :: t_1, t_2
+        real(dp) :: t_1, t_2, v(1)
         integer :: st, code
 
         where = located(path, gk)
@@ -778,17 +752,15 @@ contains
                 errmsg = where//'zone_map: only with zone (alpha is given directly)'
                 return
             end if
-            if (.not. in_range(where, 'alpha', k_alpha, 0.0_dp, big, .false., errmsg, &
-                'must be a finite A/g >= 0')) return
-            if (target .and. .not. k_alpha > 0.0_dp) then
-                errmsg = where//'alpha = '//shortest_str(k_alpha)//': must be > 0 with &suite ' &
-                         //'target = ''EAK'' (the check needs a target spectrum that is not ' &
-                         //'zero)'
-                return
-            end if
             p%alpha = k_alpha
         else
-            if (.not. given(gk, 'zone')) k_zone = merge('Z2 ', 'II ', p%zone_map == EAK_MAP_2003)
+            ! as Python: the default zone Z2 is a zone of the 2003 map only
+            if (.not. given(gk, 'zone') .and. p%zone_map == EAK_MAP_2000) then
+                errmsg = where//'zone: missing (the default Z2 is a zone of the 2003 map; ' &
+                         //'with zone_map = ''2000'' give zone = ''I''..''IV'')'
+                return
+            end if
+            if (.not. given(gk, 'zone')) k_zone = 'Z2'
             if (p%zone_map == EAK_MAP_2003) then
                 p%zone = name_index(k_zone, ec8_zones)
                 if (p%zone == 0) then
@@ -818,11 +790,6 @@ contains
                      //'(allowed: A, B, C, D)'
             return
         end if
-        if (eak_grounds(p%ground) == 'x') then
-            errmsg = where//'ground = '''//trim(k_ground)//''': ground category X calls for ' &
-                     //'a site-specific study (unverified); give ground A, B, C or D'
-            return
-        end if
         p%ground = EAK_GROUND_A + p%ground - 1
         msg = ''
         call eak2000_ground_parameters(p%ground, t_1, t_2, st, msg)
@@ -849,30 +816,28 @@ contains
                 return
             end if
         else
-            if (.not. (k_importance > 0.0_dp .and. k_importance <= huge(1.0_dp))) then
-                errmsg = where//'importance = '//shortest_str(k_importance)//': must be a ' &
-                         //'finite factor gamma_I > 0'
-                return
-            end if
             p%importance = k_importance
         end if
-        if (.not. in_range(where, 'q', k_q, 1.0_dp, big, .false., errmsg, &
-            'the behaviour factor must be finite and >= 1')) return
-        p%q = k_q
-        if (.not. in_range(where, 'theta', k_theta, 0.0_dp, 1.0_dp, .true., errmsg, &
-            'must be in (0, 1] (the foundation factor; its rules are unverified)')) return
-        p%theta = k_theta
         if (.not. in_range(where, 'damping', k_damping, 0.0_dp, 1.0_dp, .false., errmsg, &
             damping_rule, open_hi=.true.)) return
         p%damping = k_damping
-        if (.not. in_range(where, 'eta_min', k_eta_min, 0.0_dp, 1.0_dp, .false., errmsg, &
-            'must be in [0, 1] (the floor of eta, unverified; 0: none)')) return
+        ! alpha, importance, q, theta, lower_bound, eta_min and the exponent: the library's
+        ! checks (both spectra at T = 0), placed at &eak
+        msg = ''
+        call eak2000_design_spectrum([0.0_dp], p%alpha, p%ground, p%importance, k_q, k_theta, &
+                                     100.0_dp*k_damping, k_eta_min, k_lower_bound, v, st, msg)
+        if (st == SEISPULSE_SUCCESS) call eak2000_elastic_spectrum([0.0_dp], p%alpha, &
+            p%ground, p%importance, 100.0_dp*k_damping, k_eta_min, k_exponent, v, st, msg)
+        if (st /= SEISPULSE_SUCCESS) then
+            ! the library's argument `exponent` is the key elastic_exponent here
+            errmsg = where//trim(msg)
+            if (index(msg, 'exponent = ') == 1) errmsg = where//'elastic_'//trim(msg)
+            return
+        end if
+        p%q = k_q
+        p%theta = k_theta
         p%eta_min = k_eta_min
-        if (.not. in_range(where, 'lower_bound', k_lower_bound, 0.0_dp, big, .false., errmsg, &
-            'must be finite and >= 0 (0: none)')) return
         p%lower_bound = k_lower_bound
-        if (.not. in_range(where, 'elastic_exponent', k_exponent, 0.0_dp, big, .true., errmsg, &
-            'must be finite and > 0 (2/3 as the design spectrum; 1 in one implementation)')) return
         p%exponent = k_exponent
     end subroutine check_eak
 
@@ -902,9 +867,10 @@ contains
                      //upper_list(code_names)//', each code''s elastic spectrum)'
             return
         end if
-        if (n_points < 2 .or. n_points > max_periods) then
-            errmsg = where//'n_points = '//int_str(n_points)//': must be in 2 .. ' &
-                     //int_str(max_periods)//' (log-spaced periods of the check)'
+        ! no upper limit (as Python's): the grid is allocated
+        if (n_points < 2) then
+            errmsg = where//'n_points = '//int_str(n_points)//': must be >= 2 ' &
+                     //'(log-spaced periods of the check)'
             return
         end if
         cfg%n_points = n_points
@@ -1499,8 +1465,9 @@ contains
         call write_tables(prefix, 'suite', [character(len=4096) :: 'seispulse analysis ' &
             //'spectra: the check of a suite of records against a code''s elastic spectrum ' &
             //'(EN 1998-1 3.2.3.1.2(4))', head, 'n_listed: records listed; n_failed: ' &
-            //'records that could not be read (then check and own_check fail, status ' &
-            //'failed); n_records: records checked; n_periods: the check grid; ' &
+            //'records that could not be read or that the check refuses (zero PGA or ' &
+            //'PSA; then check and own_check fail, status failed); n_records: records ' &
+            //'checked; n_periods: the check grid; ' &
             //'common_rule: pga (b) or spectrum (c) sets common_scale; own_t_min_ratio: ' &
             //'the period of own_min_ratio (s)'], &
             [character(len=15) :: 'n_listed', 'n_failed', 'n_records', 'target', 'fit', &

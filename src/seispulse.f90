@@ -168,7 +168,7 @@ module seispulse
                                WATER_IMPERVIOUS, WATER_PERMEABLE, EC8_SPECTRUM_TYPE_1, &
                                EC8_SPECTRUM_TYPE_2, EC8_GROUND_A, EC8_GROUND_B, EC8_GROUND_C, &
                                EC8_GROUND_D, EC8_GROUND_E, EC8_ANNEX_RECOMMENDED, EC8_ANNEX_GR, &
-                               ec8_reference_pga
+                               ec8_reference_pga, ec8_design_ag
     use seispulse_eak2000, only: eak2000_ground_parameters, eak2000_zone_acceleration, &
                                  eak2000_importance_factor, eak2000_damping_correction, &
                                  eak2000_check_damping, eak2000_design_spectrum, &

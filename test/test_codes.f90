@@ -25,7 +25,7 @@ module test_codes
                                WATER_IMPERVIOUS, WATER_PERMEABLE, EC8_SPECTRUM_TYPE_1, &
                                EC8_SPECTRUM_TYPE_2, EC8_GROUND_A, EC8_GROUND_B, EC8_GROUND_C, &
                                EC8_GROUND_D, EC8_GROUND_E, EC8_ANNEX_RECOMMENDED, EC8_ANNEX_GR, &
-                               ec8_reference_pga
+                               ec8_reference_pga, ec8_design_ag
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
     private
@@ -70,7 +70,9 @@ contains
                               test_design_spectrum), &
                  new_unittest('spectra: bad input', test_spectra_bad), &
                  new_unittest('Greek NA zones Z1..Z3 = 0.16/0.24/0.36 g; no zones otherwise', &
-                              test_reference_pga)]
+                              test_reference_pga), &
+                 new_unittest('ec8_design_ag: one of ag and zone, importance 1 with ag', &
+                              test_design_ag)]
     end subroutine collect_codes
 
     ! ------------------------------------------------------------------ helpers
@@ -1029,5 +1031,59 @@ contains
         call ec8_reference_pga(EC8_ANNEX_GR, 5, agr, stat)
         call check(error, stat, SEISPULSE_INVALID_INPUT, 'stat without errmsg')
     end subroutine test_reference_pga
+
+    !> The one rule of ag = gamma_I a_gR (written out: Z3 0.36 g x 1.2 = 0.432 g) and each
+    !> refusal with the parameter it names.
+    subroutine test_design_ag(error)
+        type(test_error), allocatable, intent(out) :: error
+        real(dp) :: nan, ag
+        integer :: stat
+        character(len=256) :: msg
+        nan = ieee_value(1.0_dp, ieee_quiet_nan)
+        msg = ''
+        call ec8_design_ag(nan, EC8_ANNEX_GR, 3, 1.2_dp, ag, stat, msg)
+        call check(error, stat, SEISPULSE_SUCCESS, trim(msg))
+        if (allocated(error)) return
+        call check(error, ag, 1.2_dp*0.36_dp, rtol=0.0_dp, message='Z3, gamma_I = 1.2')
+        if (allocated(error)) return
+        ! ag given: returned as is, importance 1 and either annex accepted (only checked)
+        call ec8_design_ag(0.25_dp, EC8_ANNEX_GR, 0, 1.0_dp, ag, stat, msg)
+        call check(error, stat, SEISPULSE_SUCCESS, trim(msg))
+        if (allocated(error)) return
+        call check(error, ag, 0.25_dp, rtol=0.0_dp, message='ag with annex GR')
+        if (allocated(error)) return
+        call ec8_design_ag(0.0_dp, EC8_ANNEX_RECOMMENDED, 0, 1.0_dp, ag, stat, msg)
+        call check(error, stat == SEISPULSE_SUCCESS .and. zero(ag), 'ag = 0, recommended')
+        if (allocated(error)) return
+        call ec8_design_ag(nan, EC8_ANNEX_GR, 0, 1.0_dp, ag, stat, msg)
+        call check_message(error, stat, SEISPULSE_INVALID_INPUT, msg, 'ag: give the design')
+        if (allocated(error)) return
+        call ec8_design_ag(0.2_dp, EC8_ANNEX_GR, 2, 1.0_dp, ag, stat, msg)
+        call check_message(error, stat, SEISPULSE_INVALID_INPUT, msg, 'ag and zone: give one')
+        if (allocated(error)) return
+        call ec8_design_ag(0.2_dp, EC8_ANNEX_GR, 0, 1.2_dp, ag, stat, msg)
+        call check_message(error, stat, SEISPULSE_INVALID_INPUT, msg, 'importance = 1.2')
+        if (allocated(error)) return
+        call check(error, index(msg, 'ag is already the design ground acceleration') > 0, &
+                   'importance with ag: '//trim(msg))
+        if (allocated(error)) return
+        call ec8_design_ag(nan, EC8_ANNEX_GR, 2, 0.0_dp, ag, stat, msg)
+        call check_message(error, stat, SEISPULSE_INVALID_INPUT, msg, &
+                           'importance = 0.0: must be a finite number > 0')
+        if (allocated(error)) return
+        call ec8_design_ag(nan, EC8_ANNEX_GR, 2, nan, ag, stat, msg)
+        call check_message(error, stat, SEISPULSE_INVALID_INPUT, msg, 'importance = ')
+        if (allocated(error)) return
+        call ec8_design_ag(-0.1_dp, EC8_ANNEX_GR, 0, 1.0_dp, ag, stat, msg)
+        call check_message(error, stat, SEISPULSE_INVALID_INPUT, msg, 'ag = -0.1: must be')
+        if (allocated(error)) return
+        call ec8_design_ag(0.2_dp, 7, 0, 1.0_dp, ag, stat, msg)
+        call check_message(error, stat, SEISPULSE_INVALID_INPUT, msg, 'annex = 7')
+        if (allocated(error)) return
+        call ec8_design_ag(nan, EC8_ANNEX_RECOMMENDED, 1, 1.0_dp, ag, stat, msg)
+        call check_message(error, stat, SEISPULSE_INVALID_INPUT, msg, 'annex = 0')
+        if (allocated(error)) return
+        call check(error, ag, 0.0_dp, rtol=0.0_dp, message='ag = 0 on error')
+    end subroutine test_design_ag
 
 end module test_codes

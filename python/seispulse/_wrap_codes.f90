@@ -214,3 +214,17 @@ subroutine sp_ec8_reference_pga(annex, zone, agr, stat, errmsg)
     errmsg = ''
     call ec8_reference_pga(annex, zone, agr, stat, errmsg)
 end subroutine sp_ec8_reference_pga
+
+!> ag = gamma_I a_gR (g) of a spectrum: ag given (NaN: not) or a zone (0: not) of annex.
+subroutine sp_ec8_design_ag(ag, annex, zone, importance, ag_out, stat, errmsg)
+    use seispulse_kinds, only: dp
+    use seispulse_codes, only: ec8_design_ag
+    implicit none
+    real(dp), intent(in) :: ag, importance
+    integer, intent(in) :: annex, zone
+    real(dp), intent(out) :: ag_out
+    integer, intent(out) :: stat
+    character(len=256), intent(out) :: errmsg
+    errmsg = ''
+    call ec8_design_ag(ag, annex, zone, importance, ag_out, stat, errmsg)
+end subroutine sp_ec8_design_ag

@@ -79,6 +79,7 @@ There are still no EAK wall rules: its retaining-wall clause could not be found 
 kv directly, e.g. from EN 1998-5, with the driver's ``code = 'direct'``).
 """
 
+import math
 import numbers
 import warnings
 from collections import namedtuple
@@ -89,7 +90,8 @@ from . import _core
 from . import _fortran_codes as _f
 from ._seispulse import (sp_ec8_damping_correction, sp_ec8_design_spectrum,
                          sp_ec8_elastic_spectrum, sp_ec8_ground_parameters, sp_ec8_r_factor,
-                         sp_ec8_reference_pga, sp_ec8_rigid_thrust, sp_ec8_seismic_coefficients,
+                         sp_ec8_design_ag, sp_ec8_reference_pga, sp_ec8_rigid_thrust,
+                         sp_ec8_seismic_coefficients,
                          sp_ec8_thrust,
                          sp_ec8_vertical_ratio, sp_mononobe_okabe, sp_seed_whitman_increment,
                          sp_westergaard_pressure, sp_wood_thrust)
@@ -488,27 +490,17 @@ def reference_pga(zone, national_annex="GR"):
 
 
 def _design_ag(ag, zone, national_annex, importance):
-    """ag of a spectrum: the given ag, or importance x a_gR of the zone (g)."""
+    """ag of a spectrum (g): the given ag, or importance x a_gR of the zone; the rule is the
+    library's (ec8_design_ag, the same as the driver's &ec8): one of ag and zone; with ag,
+    importance must be 1 and national_annex is only checked."""
     if isinstance(importance, (bool, np.bool_)):
         _scalar("importance", importance)        # refuses bools, naming importance
     gamma_i = _core.check_positive("importance", importance)
-    if zone is None:
-        if national_annex is not None:
-            _annex(national_annex)
-        if ag is None:
-            raise InvalidInputError("ag: give the design ground acceleration ag, or a seismic "
-                                    "zone (zone='Z1', 'Z2' or 'Z3' of the Greek National "
-                                    "Annex)")
-        if gamma_i != 1.0:
-            raise InvalidInputError(
-                f"importance = {gamma_i!r}: ag is already the design ground acceleration "
-                "gamma_I a_gR; importance applies to the a_gR of a zone only (give zone=, or "
-                "multiply ag yourself)")
-        return _scalar("ag", ag)
-    if ag is not None:
-        raise InvalidInputError("ag and zone: give one of them (a zone gives "
-                                "ag = importance x a_gR)")
-    return gamma_i*reference_pga(zone, national_annex)
+    code = _annex(national_annex)
+    a = math.nan if ag is None else _scalar("ag", ag)
+    out, stat, msg = sp_ec8_design_ag(a, code, 0 if zone is None else _zone(zone), gamma_i)
+    _core.raise_for_status(stat, msg)
+    return float(out)
 
 
 def elastic_spectrum(periods, ag=None, spectrum_type=1, ground="A", xi_percent=5.0, *,

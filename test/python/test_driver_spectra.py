@@ -156,6 +156,37 @@ def suite_reference(files, t1, target, fit, n_points, extra):
                 own_min_ratio=(own_mean / tgt).min())
 
 
+def least_ratio(recs, target, grid, ratio, factors):
+    """The least of sum_k f_k PSA_k(T) / (n target(T)) over [grid[0], grid[-1]], found
+    independently of the library: the grid's values, then in each grid interval next to
+    the three smallest grid ratios a dense scan (401 periods, sdof.spectrum exact peaks)
+    polished by scipy's bounded minimize_scalar (xatol 1e-12 s). Returns (ratio, T)."""
+    from scipy.optimize import minimize_scalar
+
+    def f(periods):
+        periods = np.atleast_1d(np.asarray(periods, dtype=float))
+        psa = [np.asarray(sdof.spectrum(r.accel, r.dt, periods, 0.05, peaks="exact").psa,
+                          dtype=float).ravel() for r in recs]
+        mean = sum(c * p for c, p in zip(factors, psa)) / len(recs)
+        return mean / np.asarray(target(periods), dtype=float)
+
+    best = (float(ratio.min()), float(grid[ratio.argmin()]))
+    for i in np.argsort(ratio)[:3]:
+        for a, b in ((i - 1, i), (i, i + 1)):
+            if a < 0 or b >= grid.size:
+                continue
+            scan = np.linspace(grid[a], grid[b], 401)
+            v = f(scan)
+            j = int(np.argmin(v))
+            lo, hi = scan[max(j - 1, 0)], scan[min(j + 1, scan.size - 1)]
+            res = minimize_scalar(lambda t: float(f(t)[0]), bounds=(lo, hi), method="bounded",
+                                  options=dict(xatol=1e-12))
+            for val, t in ((float(v[j]), float(scan[j])), (float(res.fun), float(res.x))):
+                if val < best[0]:
+                    best = (val, t)
+    return best
+
+
 SUITE_CASES = {
     # name: (target, &suite and code groups, target callable, fit, n_points, corner
     # periods, Python's target)
@@ -166,6 +197,10 @@ SUITE_CASES = {
                   "&ec8 ag = 0.2, ground = 'C' /\n",
                   lambda T: codes.elastic_spectrum(T, 0.2, 2, "C"), "log", 12,
                   [0.1, 0.25, 1.2], codes.elastic_target(0.2, 2, "C")),
+    # a coarse grid: the least ratios lie between grid periods (refined rows)
+    "ec8_1_coarse": ("&suite t1 = 1.5, n_points = 5 /\n&ec8 ag = 0.25, ground = 'C' /\n",
+                     lambda T: codes.elastic_spectrum(T, 0.25, 1, "C"), "linear", 5,
+                     [0.2, 0.6, 2.0], codes.elastic_target(0.25, 1, "C")),
     "eak": ("&suite t1 = 0.45, target = 'EAK', n_points = 20 /\n"
             "&eak zone = 'Z3', ground = 'A', importance_class = 'III' /\n",
             lambda T: codes.eak2000_spectrum(T, zone="Z3", ground="A", importance="III",
@@ -209,7 +244,9 @@ def test_suite_tables_against_numpy(driver, tmp_path, name):
     assert list(r["name"]) == ["quake_a", "quake_b", "quake_d"]
     assert list(r["index"]) == [1, 2, 3] and list(r["scale"]) == [1.0, 1.0, 1.0]
     assert r["own_total"] == pytest.approx(ref["own"], **rel)
-    assert r["common_total"] == pytest.approx([ref["common"]] * 3, **rel)
+    assert r["common_total"] == pytest.approx([common] * 3, **rel)
+    if on.all():                    # no refined row: the grid's factor (else checked below)
+        assert common == pytest.approx(ref["common"], **rel)
     assert r["pga"] == pytest.approx(ref["pga"], **rel)
     assert r["own_scale"] == pytest.approx(ref["own"], **rel)
     assert r["psa_t1"] == pytest.approx(ref["psa"][:, list(ref["grid"]).index(t1)], **rel)
@@ -238,7 +275,8 @@ def test_suite_tables_against_numpy(driver, tmp_path, name):
     own_ratio = m["mean_own"] / m["target"]
     assert u["own_min_ratio"][0] == np.min(own_ratio)
     assert u["own_t_min_ratio"][0] == m["period"][np.argmin(own_ratio)]
-    assert u["target"][0] == {"ec8_1_linear": "EC8_1", "ec8_2_log": "EC8_2", "eak": "EAK"}[name]
+    assert u["target"][0] == {"ec8_1_linear": "EC8_1", "ec8_1_coarse": "EC8_1",
+                              "ec8_2_log": "EC8_2", "eak": "EAK"}[name]
     assert u["fit"][0] == fit and u["n_periods"][0] == n
     assert u["n_listed"][0] == 3 and u["n_failed"][0] == 0
     # the rule that sets common_scale: the larger of the two factors of (M.1), which must
@@ -258,8 +296,34 @@ def test_suite_tables_against_numpy(driver, tmp_path, name):
     txt = read_summary_txt(tmp_path / "s_suite.txt")
     assert txt["check"][0] == u["check"][0] and txt["t1"] == ("%.6g" % t1, "s")
 
-    # Python's check_record_suite: the same library routine, the same numbers
+    # the refined rows (periods off the grid): each record's PSA there, independently
     recs = [records.read(tmp_path / f) for f in SUITE_FILES]
+    off = m["period"][~on]
+    if name == "ec8_1_coarse":
+        assert off.size > 0           # the case tests the refined rows
+    if off.size:
+        psa_off = np.array([np.asarray(sdof.spectrum(x.accel, x.dt, off, 0.05,
+                                                     peaks="exact").psa, dtype=float).ravel()
+                            for x in recs])
+        assert m["mean"][~on] == pytest.approx(psa_off.mean(axis=0), **rel)
+        assert m["ratio"][~on] == pytest.approx(psa_off.mean(axis=0) / target(off), **rel)
+        assert m["target_90"][~on] == pytest.approx(0.9 * target(off), **rel)
+        assert m["mean_own"][~on] == pytest.approx((ref["own"][:, None] * psa_off).mean(axis=0),
+                                                   **rel)
+        assert s["psa"][~on_long] == pytest.approx(psa_off.ravel(), **rel)
+    # min_ratio and own_min_ratio against a dense scan polished by scipy (the ratio is
+    # flat at its minimum: 1e-9 relative in the value, 1e-4 s in its period)
+    low, t_low = least_ratio(recs, target, ref["grid"], ref["ratio"], np.ones(3))
+    assert u["min_ratio"][0] == pytest.approx(low, rel=1e-9)
+    assert u["t_min_ratio"][0] == pytest.approx(t_low, abs=1e-4)
+    own_low, own_t = least_ratio(recs, target, ref["grid"], ref["own_mean"] / ref["target"],
+                                 ref["own"])
+    assert u["own_min_ratio"][0] == pytest.approx(own_low, rel=1e-9)
+    assert u["own_t_min_ratio"][0] == pytest.approx(own_t, abs=1e-4)
+    assert common == pytest.approx(max(ref["target_pga"] / ref["pga"].mean(), 0.9 / low),
+                                   rel=1e-9)
+
+    # Python's check_record_suite: the same library routine, the same numbers
     chk = codes.check_record_suite(recs, t1, py_target, n_points=n_points, fit=fit)
     assert np.asarray(chk.periods) == pytest.approx(m["period"], rel=1e-15)
     assert np.asarray(chk.mean) == pytest.approx(m["mean"], rel=1e-14)
@@ -422,19 +486,44 @@ ERRORS = {
     "eak_q": ("&spectra periods = 0.1, codes = 'EAK' /\n&eak q = 0.5 /\n", "eak",
               "q = 0.5: the behaviour factor"),
     "eak_theta_0": ("&spectra periods = 0.1, codes = 'EAK' /\n&eak theta = 0 /\n", "eak",
-                    "theta = 0.0: must be in (0, 1]"),
+                    "theta = 0.0: the foundation factor must lie in (0, 1]"),
     "eak_theta_big": ("&spectra periods = 0.1, codes = 'EAK' /\n&eak theta = 1.2 /\n", "eak",
-                      "theta = 1.2: must be in (0, 1]"),
+                      "theta = 1.2: the foundation factor must lie in (0, 1]"),
     "t1_zero": (RECS + "&suite t1 = 0 /\n" + EC8, "suite", "t1 = 0.0: must be a finite "
                 "period > 0"),
     "t1_missing": (RECS + "&suite target = 'EC8_1' /\n" + EC8, "suite", "t1: missing"),
     "too_few_records": ("&records files = 'records/quake_a.AT2', 'records/quake_b.csv' /\n"
                         "&suite t1 = 0.5 /\n" + EC8, "records",
                         "files: 2 records, fewer than &suite min_records = 3"),
-    "ag_and_zone": (SPEC + "&ec8 ag = 0.2, zone = 'Z2' /\n", "ec8", "ag, zone: give only one"),
-    "ag_missing": (SPEC + "&ec8 ground = 'B' /\n", "ec8", "ag: missing"),
+    # the library's rule and messages (ec8_design_ag), the same as Python's
+    "ag_and_zone": (SPEC + "&ec8 ag = 0.2, zone = 'Z2' /\n", "ec8",
+                    "ag and zone: give one of them"),
+    "ag_missing": (SPEC + "&ec8 ground = 'B' /\n", "ec8",
+                   "ag: give the design ground acceleration ag, or a seismic zone"),
     "importance_with_ag": (SPEC + "&ec8 ag = 0.2, importance = 1.2 /\n", "ec8",
-                           "importance: only with zone"),
+                           "importance = 1.2: ag is already the design ground acceleration "
+                           "gamma_I a_gR"),
+    "importance_zero": (SPEC + "&ec8 zone = 'Z2', importance = 0 /\n", "ec8",
+                        "importance = 0.0: must be a finite number > 0"),
+    "ag_negative": (SPEC + "&ec8 ag = -0.1 /\n", "ec8",
+                    "ag = -0.1: must be a finite acceleration >= 0 (g)"),
+    "annex_with_ag": (SPEC + "&ec8 ag = 0.2, national_annex = 'IT' /\n", "ec8",
+                      "national_annex = 'IT': unknown national annex"),
+    "eak_exponent": ("&spectra periods = 0.1, codes = 'EAK' /\n&eak elastic_exponent = 0 /\n",
+                     "eak", "elastic_exponent = 0.0: the long-period exponent must be finite"),
+    "eak_eta_min": ("&spectra periods = 0.1, codes = 'EAK' /\n&eak eta_min = 2 /\n", "eak",
+                    "eta_min = 2.0: the lower limit of eta must lie in [0, 1]"),
+    "eak_lower_bound": ("&spectra periods = 0.1, codes = 'EAK' /\n&eak lower_bound = -1 /\n",
+                        "eak", "lower_bound = -1.0: the floor factor must be finite and >= 0"),
+    "eak_importance": ("&spectra periods = 0.1, codes = 'EAK' /\n&eak importance = 0 /\n",
+                       "eak", "importance = 0.0: the importance factor gamma_I must be finite"),
+    "eak_alpha": ("&spectra periods = 0.1, codes = 'EAK' /\n&eak alpha = -0.1 /\n", "eak",
+                  "alpha = -0.1: the ground acceleration A/g must be finite and >= 0"),
+    "ec8_beta": (SPEC + "&ec8 ag = 0.2, beta = -1 /\n", "ec8",
+                 "beta = -1.0: the lower-bound factor must be finite and >= 0"),
+    "eak_2000_without_zone": ("&spectra periods = 0.1, codes = 'EAK' /\n"
+                              "&eak zone_map = '2000' /\n", "eak",
+                              "zone: missing (the default Z2 is a zone of the 2003 map"),
     "eak_zone_and_alpha": ("&spectra periods = 0.1, codes = 'EAK' /\n"
                            "&eak zone = 'Z1', alpha = 0.1 /\n", "eak", "zone, alpha: give only"),
     "eak_importance_twice": ("&spectra periods = 0.1, codes = 'EAK' /\n"
@@ -459,12 +548,15 @@ ERRORS = {
     "unknown_key": ("&spectra periods = 0.1, codes = 'EC8_1', damping = 0.05 /\n" + EC8,
                     "spectra", "damping: unknown key"),
     "n_points": (RECS + "&suite t1 = 0.5, n_points = 1 /\n" + EC8, "suite",
-                 "n_points = 1: must be in 2 .. 1000"),
+                 "n_points = 1: must be >= 2"),
     # a target of zero: refused before any record is read
+    # (the library's refusal of the target, placed at &ec8 / &eak)
     "ag_zero_suite": (RECS + "&suite t1 = 0.5 /\n&ec8 ag = 0 /\n", "ec8",
-                      "ag = 0.0: must be > 0 with &suite"),
+                      "ag = 0.0: the design ground acceleration of the target (g) must be "
+                      "finite and > 0"),
     "alpha_zero_suite": (RECS + "&suite t1 = 0.5, target = 'EAK' /\n&eak alpha = 0 /\n",
-                         "eak", "alpha = 0.0: must be > 0 with &suite target = 'EAK'"),
+                         "eak", "alpha = 0.0: the ground acceleration A/g of the target must "
+                         "be finite and > 0"),
     # a damping ratio in [0, 1), as &sdof: 5 (meant as 5 %) is refused
     "ec8_damping_percent": (SPEC + "&ec8 ag = 0.2, damping = 5 /\n", "ec8",
                             "damping = 5.0: must be a damping ratio in [0, 1) (a ratio: "
@@ -479,7 +571,7 @@ def test_input_error_messages_read_well(driver, tmp_path):
     pair of parentheses."""
     proc = run(driver, tmp_path, RUN + ERRORS["eak_ground_x"][0])
     assert proc.returncode == 2 and "(1..4)" not in proc.stderr, proc.stderr
-    assert "give ground A, B, C or D" in proc.stderr, proc.stderr
+    assert "give ground A-D" in proc.stderr, proc.stderr   # the library's message
     proc = run(driver, tmp_path, RUN + ERRORS["suite_without_records"][0])
     assert proc.returncode == 2 and ") (" not in proc.stderr, proc.stderr
     assert "; or &suite records_from = 'other.nml')" in proc.stderr, proc.stderr
@@ -631,3 +723,43 @@ def test_suite_does_not_depend_on_the_spectra_table(driver, tmp_path):
         b = read_table(tmp_path / f"b_{table}.csv")
         for k in a:
             assert list(a[k]) == list(b[k]), (table, k)
+
+
+@pytest.mark.parametrize("ec8, kwargs", [
+    ("ag = 0.2, zone = 'Z2'", dict(ag=0.2, zone="Z2")),
+    ("ground = 'B'", dict()),
+    ("ag = 0.2, importance = 1.2", dict(ag=0.2, importance=1.2)),
+    ("ag = -0.1", dict(ag=-0.1)),
+    ("zone = 'Z2', importance = -1", dict(zone="Z2", importance=-1.0)),
+])
+def test_ec8_ag_rule_as_python(driver, tmp_path, ec8, kwargs):
+    """&ec8 and codes.elastic_spectrum refuse the same ag / zone / importance combinations
+    with the same message (the library's ec8_design_ag)."""
+    with pytest.raises(codes.InvalidInputError) as exc:
+        codes.elastic_spectrum(0.1, **kwargs)
+    proc = run(driver, tmp_path, RUN + SPEC + f"&ec8 {ec8} /\n")
+    assert proc.returncode == 2, proc.stderr
+    m = FORM.match(proc.stderr.splitlines()[0])
+    assert m and m["group"] == "ec8" and m["rest"] == str(exc.value), proc.stderr
+
+
+def test_ec8_ag_accepted_as_python(driver, tmp_path):
+    """ag with importance = 1 and national_annex = 'GR' is accepted by both front ends
+    (the annex only checked): the spectra are those of ag alone, bit for bit."""
+    proc = run(driver, tmp_path, RUN + SPEC
+               + "&ec8 ag = 0.2, importance = 1, national_annex = 'GR', ground = 'B' /\n")
+    assert proc.returncode == 0, proc.stderr
+    t = read_table(tmp_path / "o_spectra.csv")
+    exact(t["ec8_1_elastic"], codes.elastic_spectrum([0.1, 1.0], 0.2, 1, "B", importance=1.0,
+                                                     national_annex="GR"))
+    exact(t["ec8_1_elastic"], codes.elastic_spectrum([0.1, 1.0], 0.2, 1, "B"))
+
+
+def test_eak_2000_map_needs_a_zone_as_python(driver, tmp_path):
+    """zone_map = '2000' without a zone: refused by the driver as by Python (the default
+    zone Z2 is a zone of the 2003 map)."""
+    with pytest.raises(codes.InvalidInputError, match="zone = 'Z2'"):
+        codes.eak2000_spectrum(0.3, zone_map="2000")
+    proc = run(driver, tmp_path, RUN + "&spectra periods = 0.1, codes = 'EAK' /\n"
+               "&eak zone_map = '2000' /\n")
+    assert proc.returncode == 2 and "&eak: zone: missing" in proc.stderr, proc.stderr

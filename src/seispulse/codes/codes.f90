@@ -65,7 +65,7 @@
 !> above about phi_d/3 it overestimates the passive resistance (log-spiral surfaces give
 !> less); this is EN's model, not a correction of it.
 module seispulse_codes
-    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_NO_SOLUTION, &
                                 set_error
@@ -81,7 +81,7 @@ module seispulse_codes
     public :: mononobe_okabe, ec8_thrust_t, ec8_thrust, westergaard_pressure
     public :: ec8_rigid_thrust, seed_whitman_increment, wood_thrust
     public :: ec8_ground_parameters, ec8_damping_correction, ec8_check_damping, &
-              ec8_elastic_spectrum, ec8_design_spectrum, ec8_reference_pga
+              ec8_elastic_spectrum, ec8_design_spectrum, ec8_reference_pga, ec8_design_ag
     public :: EC8_WALL_GRAVITY_300, EC8_WALL_GRAVITY_200, EC8_WALL_RESTRAINED
     public :: WATER_DRY, WATER_IMPERVIOUS, WATER_PERMEABLE
     public :: EC8_SPECTRUM_TYPE_1, EC8_SPECTRUM_TYPE_2
@@ -761,6 +761,53 @@ contains
                            'zones: give ag)')
         end select
     end subroutine ec8_reference_pga
+
+    !> The design ground acceleration ag = gamma_I a_gR on type A ground (g) of a spectrum,
+    !> from ag given directly or from a seismic zone (EN 1998-1 3.2.1(3)); the one rule of
+    !> every front end. "Not given": ag NaN, zone 0. Exactly one of ag and zone must be
+    !> given. With ag: ag is already gamma_I a_gR, so importance must be 1 (any other value
+    !> is refused: multiply ag yourself); annex is only checked (EC8_ANNEX_RECOMMENDED or
+    !> EC8_ANNEX_GR); ag must be finite and >= 0. With zone: ag_out = importance a_gR
+    !> (ec8_reference_pga of annex and zone), importance finite and > 0.
+    pure subroutine ec8_design_ag(ag, annex, zone, importance, ag_out, stat, errmsg)
+        real(dp), intent(in) :: ag            !! design ground acceleration, g (NaN: not given)
+        integer, intent(in) :: annex          !! EC8_ANNEX_GR or EC8_ANNEX_RECOMMENDED
+        integer, intent(in) :: zone           !! seismic zone 1..3 of annex (0: not given)
+        real(dp), intent(in) :: importance    !! importance factor gamma_I (> 0; 1 with ag)
+        real(dp), intent(out) :: ag_out       !! ag = gamma_I a_gR, g
+        integer, intent(out) :: stat          !! SEISPULSE_SUCCESS or SEISPULSE_INVALID_INPUT
+        character(len=*), intent(inout), optional :: errmsg  !! message naming the parameter
+        real(dp) :: agr
+        ag_out = 0.0_dp
+        stat = SEISPULSE_SUCCESS
+        if (zone == 0 .and. ieee_is_nan(ag)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ag: give the design '// &
+                           'ground acceleration ag, or a seismic zone (Z1, Z2 or Z3 of the '// &
+                           'Greek National Annex)')
+        else if (zone /= 0 .and. .not. ieee_is_nan(ag)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ag and zone: give one of '// &
+                           'them (a zone gives ag = importance x a_gR)')
+        else if (outside(importance, 0.0_dp, big, .true., .false.)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'importance = '// &
+                           real_str(importance)//': must be a finite number > 0')
+        else if (zone /= 0) then
+            call ec8_reference_pga(annex, zone, agr, stat, errmsg)
+            if (stat == SEISPULSE_SUCCESS) ag_out = importance*agr
+        else if (.not. (importance >= 1.0_dp .and. importance <= 1.0_dp)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'importance = '// &
+                           real_str(importance)//': ag is already the design ground '// &
+                           'acceleration gamma_I a_gR; importance applies to the a_gR of a '// &
+                           'zone only (give a zone, or multiply ag yourself)')
+        else if (annex /= EC8_ANNEX_GR .and. annex /= EC8_ANNEX_RECOMMENDED) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'annex = '//int_str(annex)// &
+                           ': must be 0 (EN recommended) or 1 (Greek National Annex)')
+        else if (outside(ag, 0.0_dp, big, .false., .false.)) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'ag = '//real_str(ag)// &
+                           ': must be a finite acceleration >= 0 (g)')
+        else
+            ag_out = ag
+        end if
+    end subroutine ec8_design_ag
 
     !> S, TB, TC, TD of EN 1998-1 Table 3.2 (Type 1) or 3.3 (Type 2), recommended values
     !> (a National Annex may give others).
