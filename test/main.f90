@@ -24,6 +24,7 @@ program tester
     use test_records, only: collect_records
     use test_number_reader, only: collect_number_reader
     use test_format, only: collect_format
+    use test_reentrant, only: collect_reentrant
     use test_newmark, only: collect_newmark
     use test_flexible, only: collect_flexible
     use test_flexible_exact, only: collect_flexible_exact
@@ -61,6 +62,10 @@ program tester
     if (selected('format')) then
         call collect_format(tests)
         call run_suite('format', tests, output_unit, npass, nfail)
+    end if
+    if (selected('reentrant')) then
+        call collect_reentrant(tests)
+        call run_suite('reentrant', tests, output_unit, npass, nfail)
     end if
     if (selected('fft')) then
         call collect_fft(tests)

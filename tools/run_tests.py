@@ -9,7 +9,9 @@ Stages, each run even if an earlier one failed:
            against it with pkg-config (shared and static)
   pip      test/install/check_pip.sh: pip install into a temp dir, import from outside
   doc      tools/check_doc_comments.py (every argument of a public procedure documented,
-           optional ones with their default; README's status codes = errors.f90), then
+           optional ones with their default; README's status codes = errors.f90),
+           tools/check_reentrant.py (no function of src/ returns a deferred-length string:
+           gfortran keeps its length in a static variable of the caller), then
            tools/make_doc.py (FORD: the HTML API reference, no warning allowed)
 
 Counts come from meson-logs/testlog.json: a test whose output ends with our Fortran
@@ -324,8 +326,10 @@ def stage_pip(stage, env, args):
 
 
 def stage_doc(stage, env, args):
-    banner("doc: doc-comment checker, FORD API reference")
+    banner("doc: doc-comment checker, reentrancy check, FORD API reference")
     script_stage(stage, env, [args.python, ROOT / "tools/check_doc_comments.py"])
+    script_stage(stage, env, [args.python, ROOT / "tools/check_reentrant.py", "--builddir",
+                              args.builddir])
     script_stage(stage, env, [args.python, ROOT / "tools/make_doc.py", "--builddir",
                               args.builddir])
 

@@ -71,7 +71,7 @@ module seispulse_codes
                                 set_error
     use seispulse_checks, only: outside, check_spectrum_periods
     use seispulse_optval, only: optval
-    use seispulse_format, only: real_str, int_str
+    use seispulse_format, only: real_str, real_str_len, int_str
     use seispulse_special, only: pi
     use seispulse_eak2000, only: EAK_ZONES_2003
     implicit none
@@ -455,7 +455,7 @@ contains
     !> An angle in radians as degrees for messages, rounded to 1e-4.
     pure function ang(x) result(text)
         real(dp), intent(in) :: x
-        character(len=:), allocatable :: text
+        character(len=real_str_len(anint(x/deg*1.0e4_dp)/1.0e4_dp)) :: text
         text = real_str(anint(x/deg*1.0e4_dp)/1.0e4_dp)
     end function ang
 

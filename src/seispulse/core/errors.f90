@@ -40,7 +40,14 @@ contains
     !> Short name of a status code, for logs.
     pure function status_name(code) result(name)
         integer, intent(in) :: code  !! a SEISPULSE_* code
-        character(len=:), allocatable :: name
+        character(len=len_trim(status_name_text(code))) :: name
+        name = status_name_text(code)
+    end function status_name
+
+    !> status_name(code) padded with blanks.
+    pure function status_name_text(code) result(name)
+        integer, intent(in) :: code
+        character(len=64) :: name
         select case (code)
         case (SEISPULSE_SUCCESS)
             name = 'success'
@@ -61,6 +68,6 @@ contains
         case default
             name = 'unknown status'
         end select
-    end function status_name
+    end function status_name_text
 
 end module seispulse_errors

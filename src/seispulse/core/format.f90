@@ -10,6 +10,12 @@ module seispulse_format
 
     public :: real_str, int_str, num_str, quote, upper, name_of, code_of
     public :: g_str, shortest_str, format_reals, NUM_LEN
+    public :: real_str_len, int_str_len, num_str_len, quote_len, name_len
+
+    ! Every function here that returns text gives its length by a specification
+    ! expression (a pure *_len function of the same arguments), never a deferred length:
+    ! gfortran keeps the length of a deferred-length result in a static variable of the
+    ! caller, which two threads at the same call site would share.
 
     !> longest text of a number from g_str, shortest_str, format_reals
     !> ("-1.2345678901234567e-308")
@@ -35,7 +41,20 @@ contains
     !> trailing zeros ("-1.0", "0.6", "1.0E+300", "NaN", "Infinity").
     pure function real_str(x) result(text)
         real(dp), intent(in) :: x  !! the number
-        character(len=:), allocatable :: text
+        character(len=real_str_len(x)) :: text
+        text = real_text(x)
+    end function real_str
+
+    !> The length of real_str(x).
+    pure integer function real_str_len(x)
+        real(dp), intent(in) :: x  !! the number
+        real_str_len = len_trim(real_text(x))
+    end function real_str_len
+
+    !> real_str(x) padded with blanks.
+    pure function real_text(x) result(text)
+        real(dp), intent(in) :: x
+        character(len=40) :: text
         character(len=40) :: buf
         integer :: e, k
         write(buf, '(g0.15)') x
@@ -52,22 +71,43 @@ contains
         else
             text = trim(buf)
         end if
-    end function real_str
+    end function real_text
 
     !> An integer as text for messages ("42", "-1").
     pure function int_str(i) result(text)
         integer, intent(in) :: i  !! the number
-        character(len=:), allocatable :: text
+        character(len=int_str_len(i)) :: text
         character(len=16) :: buf
         write(buf, '(i0)') i
-        text = trim(buf)
+        text = buf
     end function int_str
+
+    !> The length of int_str(i).
+    pure integer function int_str_len(i)
+        integer, intent(in) :: i  !! the number
+        character(len=16) :: buf
+        write(buf, '(i0)') i
+        int_str_len = len_trim(buf)
+    end function int_str_len
 
     !> A number for messages: fixed notation with up to 15 significant digits for
     !> 1e-5 <= |x| < 1e15 ("0.01", "133.895", "-0.35"), real_str's form otherwise.
     pure function num_str(x) result(s)
         real(dp), intent(in) :: x  !! the number (any unit; the caller writes the unit)
-        character(len=:), allocatable :: s
+        character(len=num_str_len(x)) :: s
+        s = num_text(x)
+    end function num_str
+
+    !> The length of num_str(x).
+    pure integer function num_str_len(x)
+        real(dp), intent(in) :: x  !! the number
+        num_str_len = len_trim(num_text(x))
+    end function num_str_len
+
+    !> num_str(x) padded with blanks.
+    pure function num_text(x) result(s)
+        real(dp), intent(in) :: x
+        character(len=64) :: s
         character(len=64) :: buf
         integer :: nd, k
         if (.not. ieee_is_finite(x)) then
@@ -90,13 +130,14 @@ contains
             if (buf(k:k) /= '0' .or. buf(k - 1:k - 1) == '.') exit
             k = k - 1
         end do
-        s = buf(1:k)
-        if (s(1:1) == '.') then
-            s = '0'//s
-        else if (len(s) > 1) then
-            if (s(1:2) == '-.') s = '-0'//s(2:)
+        if (buf(1:1) == '.') then
+            s = '0'//buf(1:k)
+        else if (k > 1 .and. buf(1:2) == '-.') then
+            s = '-0'//buf(2:k)
+        else
+            s = buf(1:k)
         end if
-    end function num_str
+    end function num_text
 
     !> x with `digits` significant digits as C's printf("%.<digits>g") writes it: the
     !> decimal exponent X of the correctly rounded value gives fixed notation for
@@ -107,11 +148,19 @@ contains
     pure function g_str(x, digits) result(s)
         real(dp), intent(in) :: x        !! the number
         integer, intent(in) :: digits    !! significant digits, 1..17 (clamped to that)
-        character(len=:), allocatable :: s
-        character(len=NUM_LEN) :: t(1)
-        call format_reals([x], min(max(digits, 1), 17), t)
-        s = trim(t(1))
+        character(len=len_trim(g_text(x, min(max(digits, 1), 17)))) :: s
+        s = g_text(x, min(max(digits, 1), 17))
     end function g_str
+
+    !> The text of x by format_reals with `digits` (0 or 1..17), padded with blanks.
+    pure function g_text(x, digits) result(s)
+        real(dp), intent(in) :: x
+        integer, intent(in) :: digits
+        character(len=NUM_LEN) :: s
+        character(len=NUM_LEN) :: t(1)
+        call format_reals([x], digits, t)
+        s = t(1)
+    end function g_text
 
     !> The shortest decimal text that reads back to exactly x (at most 17 significant
     !> digits; of the shortest, the nearest to x), laid out as Python's repr(float):
@@ -121,10 +170,8 @@ contains
     !> many numbers at a time.
     pure function shortest_str(x) result(s)
         real(dp), intent(in) :: x        !! the number
-        character(len=:), allocatable :: s
-        character(len=NUM_LEN) :: t(1)
-        call format_reals([x], 0, t)
-        s = trim(t(1))
+        character(len=len_trim(g_text(x, 0))) :: s
+        s = g_text(x, 0)
     end function shortest_str
 
     !> The texts of x(:) as g_str (digits 1..17) or shortest_str (digits 0) writes them,
@@ -409,20 +456,38 @@ contains
     !> with '...' when longer.
     pure function quote(text) result(s)
         character(len=*), intent(in) :: text  !! the text to quote (any length)
-        character(len=:), allocatable :: s
+        character(len=quote_len(text)) :: s
         integer :: k
         if (len(text) <= QUOTE_MAX) then
             s = "'"//text//"'"
             return
         end if
-        ! cut at a UTF-8 character boundary: not before a continuation byte 10xxxxxx
+        k = quote_cut(text)
+        s = "'"//text(1:k)//"...'"
+    end function quote
+
+    !> The length of quote(text).
+    pure integer function quote_len(text)
+        character(len=*), intent(in) :: text  !! the text to quote (any length)
+        if (len(text) <= QUOTE_MAX) then
+            quote_len = len(text) + 2
+        else
+            quote_len = quote_cut(text) + 5
+        end if
+    end function quote_len
+
+    !> The bytes of text (longer than QUOTE_MAX) that quote keeps: at most QUOTE_MAX, cut
+    !> at a UTF-8 character boundary (not before a continuation byte 10xxxxxx).
+    pure integer function quote_cut(text)
+        character(len=*), intent(in) :: text
+        integer :: k
         k = QUOTE_MAX
         do while (k > 1)
             if (iachar(text(k + 1:k + 1)) < 128 .or. iachar(text(k + 1:k + 1)) >= 192) exit
             k = k - 1
         end do
-        s = "'"//text(1:k)//"...'"
-    end function quote
+        quote_cut = k
+    end function quote_cut
 
     !> s in upper case (ASCII letters only).
     pure function upper(s) result(u)
@@ -443,13 +508,24 @@ contains
     pure function name_of(code, table) result(name)
         integer, intent(in) :: code                !! 1-based index
         character(len=*), intent(in) :: table(:)   !! the names
-        character(len=:), allocatable :: name
+        character(len=name_len(code, table)) :: name
         if (code >= 1 .and. code <= size(table)) then
-            name = trim(table(code))
+            name = table(code)
         else
             name = '?'
         end if
     end function name_of
+
+    !> The length of name_of(code, table).
+    pure integer function name_len(code, table)
+        integer, intent(in) :: code                !! 1-based index
+        character(len=*), intent(in) :: table(:)   !! the names
+        if (code >= 1 .and. code <= size(table)) then
+            name_len = len_trim(table(code))
+        else
+            name_len = 1
+        end if
+    end function name_len
 
     !> The code of a name in a table of names: its index, 0 if absent.
     pure integer function code_of(name, table)

@@ -11,7 +11,7 @@ module seispulse_number_reader
     use, intrinsic :: iso_fortran_env, only: int64
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use seispulse_kinds, only: dp
-    use seispulse_format, only: quote, int_str
+    use seispulse_format, only: quote, int_str, int_str_len
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, set_error
     implicit none
     private
@@ -183,7 +183,7 @@ contains
     pure function at_line(path, lnum) result(s)
         character(len=*), intent(in) :: path  !! the file
         integer, intent(in) :: lnum           !! the line number
-        character(len=:), allocatable :: s
+        character(len=len(path) + int_str_len(lnum) + 3) :: s
         s = path//':'//int_str(lnum)//': '
     end function at_line
 

@@ -772,7 +772,15 @@ contains
     pure function axis_unit(axes, which) result(u)
         integer, intent(in) :: axes
         character(len=*), intent(in) :: which
-        character(len=:), allocatable :: u
+        character(len=len_trim(axis_unit_text(axes, which))) :: u
+        u = axis_unit_text(axes, which)
+    end function axis_unit
+
+    !> axis_unit(axes, which) padded with blanks.
+    pure function axis_unit_text(axes, which) result(u)
+        integer, intent(in) :: axes
+        character(len=*), intent(in) :: which
+        character(len=64) :: u
         if (axes == MAP_AXES_DIMENSIONAL) then
             if (which == 'x') then
                 u = 'f_p, Hz'
@@ -786,6 +794,6 @@ contains
                 u = 'a_p/(g tan theta_c)'
             end if
         end if
-    end function axis_unit
+    end function axis_unit_text
 
 end module seispulse_cylinder

@@ -363,7 +363,14 @@ contains
     !> Name of an output column (ROLL_OUT_*), '' for another index.
     pure function roll_output_name(k) result(name)
         integer, intent(in) :: k  !! column index
-        character(len=:), allocatable :: name
+        character(len=len_trim(roll_output_name_text(k))) :: name
+        name = roll_output_name_text(k)
+    end function roll_output_name
+
+    !> roll_output_name(k) padded with blanks.
+    pure function roll_output_name_text(k) result(name)
+        integer, intent(in) :: k
+        character(len=64) :: name
         select case (k)
         case (ROLL_OUT_THETA)
             name = 'theta'
@@ -394,12 +401,19 @@ contains
         case default
             name = ''
         end select
-    end function roll_output_name
+    end function roll_output_name_text
 
     !> Name of a run outcome (ROLL_RUN_*), '' for another code.
     pure function roll_outcome_name(code) result(name)
         integer, intent(in) :: code  !! ROLL_RUN_* code
-        character(len=:), allocatable :: name
+        character(len=len_trim(roll_outcome_name_text(code))) :: name
+        name = roll_outcome_name_text(code)
+    end function roll_outcome_name
+
+    !> roll_outcome_name(code) padded with blanks.
+    pure function roll_outcome_name_text(code) result(name)
+        integer, intent(in) :: code
+        character(len=64) :: name
         select case (code)
         case (ROLL_RUN_REST)
             name = 'rest'
@@ -412,7 +426,7 @@ contains
         case default
             name = ''
         end select
-    end function roll_outcome_name
+    end function roll_outcome_name_text
 
     ! ------------------------------------------------------------------------------
     ! Set-up and checks

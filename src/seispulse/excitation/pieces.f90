@@ -122,16 +122,18 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         character(len=*), intent(in), optional :: name        !! of the record (default accel)
+        character(len=:), allocatable :: rname
         integer :: i
         stat = SEISPULSE_SUCCESS
+        call record_name(name, rname)
         if (size(accel) < 1) then
-            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, record_name(name) &
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, rname &
                            //': the record is empty (at least one sample is needed)')
             return
         end if
         do i = 1, size(accel)
             if (.not. ieee_is_finite(accel(i))) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, record_name(name) &
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, rname &
                                //'('//int_str(i)//') = '//real_str(accel(i)) &
                                //': every sample must be a finite number')
                 return
@@ -169,15 +171,17 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         character(len=*), intent(in), optional :: name        !! of the record (default accel)
+        character(len=:), allocatable :: rname
         real(dp) :: a_max
         integer :: i
         stat = SEISPULSE_SUCCESS
         a_max = g_product_max(g)
         do i = 1, size(accel)
             if (abs(accel(i)) > a_max) then
-                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, record_name(name) &
+                call record_name(name, rname)
+                call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, rname &
                                //'('//int_str(i)//') = '//real_str(accel(i)) &
-                               //': g * '//record_name(name)//' overflows (g = ' &
+                               //': g * '//rname//' overflows (g = ' &
                                //real_str(g)//' m/s^2)')
                 return
             end if
@@ -273,16 +277,18 @@ contains
         it%step = 0
     end subroutine record_pieces_init
 
-    !> The name of a record in messages: `name`, or accel.
-    pure function record_name(name) result(text)
+    !> The name of a record in messages: `name`, or accel. A subroutine, not a function
+    !> with a deferred-length result: gfortran keeps such a length in a static variable
+    !> of the caller, shared by threads.
+    pure subroutine record_name(name, text)
         character(len=*), intent(in), optional :: name
-        character(len=:), allocatable :: text
+        character(len=:), allocatable, intent(out) :: text
         if (present(name)) then
             text = name
         else
             text = 'accel'
         end if
-    end function record_name
+    end subroutine record_name
 
     !> Sample step i of a record (from t = (i - 1) dt to i dt, 1 <= i < size(accel)): the
     !> line through accel(i) and accel(i + 1), of slope (accel(i + 1) - accel(i))/dt. The

@@ -1233,22 +1233,35 @@ contains
     !> Canonical name of a kind code ('unknown' for a bad code).
     pure function pulse_kind_name(kind) result(name)
         integer, intent(in) :: kind  !! PULSE_* code
-        character(len=:), allocatable :: name
+        character(len=len_trim(pulse_kind_name_text(kind))) :: name
+        name = pulse_kind_name_text(kind)
+    end function pulse_kind_name
+
+    !> pulse_kind_name(kind) padded with blanks.
+    pure function pulse_kind_name_text(kind) result(name)
+        integer, intent(in) :: kind
+        character(len=64) :: name
         if (kind >= 1 .and. kind <= PULSE_NKINDS) then
             name = trim(kind_names(kind))
         else
             name = 'unknown'
         end if
-    end function pulse_kind_name
+    end function pulse_kind_name_text
 
     pure function kind_list() result(list)
-        character(len=:), allocatable :: list
-        integer :: i
-        list = trim(kind_names(1))
-        do i = 2, PULSE_NKINDS
-            list = list//', '//trim(kind_names(i))
-        end do
+        character(len=len_trim(kind_list_text())) :: list
+        list = kind_list_text()
     end function kind_list
+
+    !> kind_list() padded with blanks.
+    pure function kind_list_text() result(list)
+        character(len=PULSE_NKINDS * (len(kind_names) + 2)) :: list
+        integer :: i
+        list = kind_names(1)
+        do i = 2, PULSE_NKINDS
+            list = trim(list)//', '//trim(kind_names(i))
+        end do
+    end function kind_list_text
 
     !> Number of cycles of a sine or cosine cycle pulse: a whole number 1 <= n <= 10^6.
     subroutine check_cycles(cycles, stat, errmsg)

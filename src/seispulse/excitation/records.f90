@@ -294,13 +294,19 @@ contains
 
     !> "g, m/s2, ..." (ACCEL_UNIT_NAMES).
     pure function unit_list() result(s)
-        character(len=:), allocatable :: s
-        integer :: i
-        s = trim(ACCEL_UNIT_NAMES(1))
-        do i = 2, size(ACCEL_UNIT_NAMES)
-            s = s//', '//trim(ACCEL_UNIT_NAMES(i))
-        end do
+        character(len=len_trim(unit_list_text())) :: s
+        s = unit_list_text()
     end function unit_list
+
+    !> unit_list() padded with blanks.
+    pure function unit_list_text() result(s)
+        character(len=size(ACCEL_UNIT_NAMES) * (len(ACCEL_UNIT_NAMES) + 2)) :: s
+        integer :: i
+        s = ACCEL_UNIT_NAMES(1)
+        do i = 2, size(ACCEL_UNIT_NAMES)
+            s = trim(s)//', '//trim(ACCEL_UNIT_NAMES(i))
+        end do
+    end function unit_list_text
 
     !> Values in `units` to g (in place); a non-finite result is an error.
     subroutine to_g(a, units, path, stat, errmsg)

@@ -162,13 +162,20 @@ contains
     !> 'no_rocking', 'O1', 'O2', 'O3', 'S1' or 'S2' (doc/rocking.md section 3); 'unknown' otherwise.
     pure function rocking_region_name(code) result(name)
         integer, intent(in) :: code  !! ROCK_*
-        character(len=:), allocatable :: name
+        character(len=len_trim(rocking_region_name_text(code))) :: name
+        name = rocking_region_name_text(code)
+    end function rocking_region_name
+
+    !> rocking_region_name(code) padded with blanks.
+    pure function rocking_region_name_text(code) result(name)
+        integer, intent(in) :: code
+        character(len=64) :: name
         if (code >= 0 .and. code <= 5) then
             name = trim(region_names(code))
         else
             name = 'unknown'
         end if
-    end function rocking_region_name
+    end function rocking_region_name_text
 
     !> Uplift time tau_up = ln[1 - eta (1 - e^beta)]/(2 beta) (Eq. 2.4), in [0, 1/2];
     !> limits 0 (rectangle), eta/2 (triangle), 1/2 (spike). NaN when eta >= 1 (no uplift).

@@ -314,13 +314,20 @@ contains
     !> The name of a rigid-block model code ('' for an unknown code).
     pure function empirical_model_name(model) result(name)
         integer, intent(in) :: model  !! EMP_* code of a rigid-block model
-        character(len=:), allocatable :: name
+        character(len=len_trim(empirical_model_name_text(model))) :: name
+        name = empirical_model_name_text(model)
+    end function empirical_model_name
+
+    !> empirical_model_name(model) padded with blanks.
+    pure function empirical_model_name_text(model) result(name)
+        integer, intent(in) :: model
+        character(len=64) :: name
         if (model >= 1 .and. model <= EMP_RIGID_MODELS) then
             name = trim(model_names(model))
         else
             name = ''
         end if
-    end function empirical_model_name
+    end function empirical_model_name_text
 
     !> The code of a rigid-block model name (0 for an unknown name).
     pure integer function empirical_model_code(name) result(model)

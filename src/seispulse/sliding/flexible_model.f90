@@ -16,7 +16,7 @@ module seispulse_flexible_model
     use seispulse_checks, only: finite_positive, outside
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, &
                                 SEISPULSE_NO_CONVERGENCE, set_error
-    use seispulse_format, only: real_str, int_str, name_of, code_of
+    use seispulse_format, only: real_str, int_str, name_of, name_len, code_of
     use seispulse_special, only: log1p, pi
     implicit none
     private
@@ -336,7 +336,7 @@ contains
     !> Name of a soil code ('linear', 'equivalent_linear'; '?' if unknown).
     pure function flexible_soil_name(code) result(name)
         integer, intent(in) :: code  !! SOIL_LINEAR or SOIL_EQUIVALENT_LINEAR
-        character(len=:), allocatable :: name
+        character(len=name_len(code, soil_names)) :: name
         name = name_of(code, soil_names)
     end function flexible_soil_name
 

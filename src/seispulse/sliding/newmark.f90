@@ -34,7 +34,7 @@ module seispulse_newmark
     use seispulse_optval, only: optval
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_INTERNAL, &
                                 set_error
-    use seispulse_format, only: real_str, int_str, name_of, code_of
+    use seispulse_format, only: real_str, int_str, name_of, name_len, code_of
     use seispulse_sliding_sim, only: slide_t
     use seispulse_pieces, only: record_step_check
     use seispulse_sliding_closed, only: inclined_resistances
@@ -281,14 +281,14 @@ contains
     !> Name of a mode code ('down', 'both', 'asym'; '?' if unknown).
     pure function newmark_mode_name(code) result(name)
         integer, intent(in) :: code  !! NEWMARK_DOWN, NEWMARK_BOTH or NEWMARK_ASYM
-        character(len=:), allocatable :: name
+        character(len=name_len(code, mode_names)) :: name
         name = name_of(code, mode_names)
     end function newmark_mode_name
 
     !> Name of a method code ('exact', 'slammer'; '?' if unknown).
     pure function newmark_method_name(code) result(name)
         integer, intent(in) :: code  !! NEWMARK_EXACT or NEWMARK_SLAMMER
-        character(len=:), allocatable :: name
+        character(len=name_len(code, method_names)) :: name
         name = name_of(code, method_names)
     end function newmark_method_name
 

@@ -828,24 +828,38 @@ contains
     !> 'none', 'forced' or 'free'.
     pure function sliding_regime_name(regime) result(name)
         integer, intent(in) :: regime  !! SLIDING_REGIME_*
-        character(len=:), allocatable :: name
+        character(len=len_trim(sliding_regime_name_text(regime))) :: name
+        name = sliding_regime_name_text(regime)
+    end function sliding_regime_name
+
+    !> sliding_regime_name(regime) padded with blanks.
+    pure function sliding_regime_name_text(regime) result(name)
+        integer, intent(in) :: regime
+        character(len=64) :: name
         if (regime >= 0 .and. regime <= 2) then
             name = trim(regime_names(regime))
         else
             name = 'unknown'
         end if
-    end function sliding_regime_name
+    end function sliding_regime_name_text
 
     !> 'no_sliding', 'unilateral', 'stick', 'slip', 'stuck' or 'reverse_only'.
     pure function sliding_mode_name(mode) result(name)
         integer, intent(in) :: mode  !! SLIDING_MODE_*
-        character(len=:), allocatable :: name
+        character(len=len_trim(sliding_mode_name_text(mode))) :: name
+        name = sliding_mode_name_text(mode)
+    end function sliding_mode_name
+
+    !> sliding_mode_name(mode) padded with blanks.
+    pure function sliding_mode_name_text(mode) result(name)
+        integer, intent(in) :: mode
+        character(len=64) :: name
         if (mode >= 0 .and. mode <= 5) then
             name = trim(mode_names(mode))
         else
             name = 'unknown'
         end if
-    end function sliding_mode_name
+    end function sliding_mode_name_text
 
     !> Arguments of a half-cycle case, in this order: eta, beta, static_factor.
     subroutine check_half(eta, beta, static_factor, stat, errmsg)

@@ -80,7 +80,14 @@ contains
     !> Label of comparison row `row` (1..WALL_ROWS), for tables.
     pure function wall_row_label(row) result(label)
         integer, intent(in) :: row  !! ROW_*
-        character(len=:), allocatable :: label
+        character(len=len_trim(wall_row_label_text(row))) :: label
+        label = wall_row_label_text(row)
+    end function wall_row_label
+
+    !> wall_row_label(row) padded with blanks.
+    pure function wall_row_label_text(row) result(label)
+        integer, intent(in) :: row
+        character(len=64) :: label
         select case (row)
         case (ROW_STATIC)
             label = 'static active (Coulomb)'
@@ -101,7 +108,7 @@ contains
         case default
             label = 'row '//int_str(row)
         end select
-    end function wall_row_label
+    end function wall_row_label_text
 
     !> The comparison table: thrust (kN/m), height of its point of application above
     !> the base (m) and base moment (kNm/m) for every row ROW_*.

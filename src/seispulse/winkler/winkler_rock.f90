@@ -697,7 +697,14 @@ contains
     !> Name of a run outcome (WR_RUN_*), '' for another code.
     pure function winkler_outcome_name(code) result(name)
         integer, intent(in) :: code  !! WR_RUN_* code
-        character(len=:), allocatable :: name
+        character(len=len_trim(winkler_outcome_name_text(code))) :: name
+        name = winkler_outcome_name_text(code)
+    end function winkler_outcome_name
+
+    !> winkler_outcome_name(code) padded with blanks.
+    pure function winkler_outcome_name_text(code) result(name)
+        integer, intent(in) :: code
+        character(len=64) :: name
         select case (code)
         case (WR_RUN_SAFE)
             name = 'safe'
@@ -712,12 +719,19 @@ contains
         case default
             name = ''
         end select
-    end function winkler_outcome_name
+    end function winkler_outcome_name_text
 
     !> Name of an output column (WR_OUT_*), '' for another index.
     pure function winkler_output_name(k) result(name)
         integer, intent(in) :: k  !! column index
-        character(len=:), allocatable :: name
+        character(len=len_trim(winkler_output_name_text(k))) :: name
+        name = winkler_output_name_text(k)
+    end function winkler_output_name
+
+    !> winkler_output_name(k) padded with blanks.
+    pure function winkler_output_name_text(k) result(name)
+        integer, intent(in) :: k
+        character(len=64) :: name
         select case (k)
         case (WR_OUT_V)
             name = 'v'
@@ -744,7 +758,7 @@ contains
         case default
             name = ''
         end select
-    end function winkler_output_name
+    end function winkler_output_name_text
 
     !> Contact width b (m), Winkler modulus used (N/m^3), N (N), M (N m) and spring energy
     !> U (J) of `model` at the state (v, theta, v', theta') (m, rad, m/s, rad/s), with the
