@@ -18,6 +18,7 @@ call fetches it run both calls under one Python lock. Checked here:
 import ast
 import os
 import random
+import re
 import struct
 import subprocess
 import sys
@@ -166,7 +167,6 @@ def test_generated_c_releases_gil():
 
 def held_routines():
     """{routine: held module} of the wrappers that use a module holding a result."""
-    import re
     held = {}
     for path in sorted(PACKAGE.glob("_wrap*.f90")):
         routine = None
@@ -179,6 +179,16 @@ def held_routines():
             if routine and m and "held" in m.group(2):
                 held[routine] = m.group(1)
     return held
+
+
+def test_wrappers_hold_only_the_known_results():
+    """The f2py layer's only state between calls: the held results the locks guard (a new
+    one must be added to test_held_pairs_run_under_their_lock and to a lock)."""
+    proc = run_checker(*sorted(PACKAGE.glob("_wrap*.f90")))
+    held = sorted(re.findall(r":: (\w+)", line)[0] for line in proc.stdout.splitlines()
+                  if "SAVE attribute" in line or "module variable" in line)
+    assert held == ["held", "held_impacts", "held_slides", "held_wk_impacts"], proc.stdout
+    assert "init-local" not in proc.stdout.replace("ok   threads/init-local", "")
 
 
 def test_held_pairs_run_under_their_lock():
@@ -212,7 +222,7 @@ def test_held_pairs_run_under_their_lock():
 
 # --- the behaviour --------------------------------------------------------------------
 
-def long_record(n=60_000, seed=11):
+def long_record(n=40_000, seed=11):
     """A reproducible accelerogram (g): filtered noise with an envelope."""
     rng = np.random.default_rng(seed)
     noise = np.convolve(rng.standard_normal(n), np.ones(8) / 8, mode="same")
@@ -220,7 +230,7 @@ def long_record(n=60_000, seed=11):
     return 0.8 * noise * np.sin(np.pi * t) ** 2
 
 
-PERIODS = np.geomspace(0.05, 5.0, 150)
+PERIODS = np.geomspace(0.05, 5.0, 120)
 
 
 def spectrum_of(rec):
@@ -276,6 +286,7 @@ def test_two_spectra_in_parallel():
     best_serial = best_parallel = np.inf
     best_overlap = 0.0
     busy = []
+    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
     for _ in range(6):
         t0 = time.perf_counter()
         serial = [spectrum_of(r) for r in recs]
@@ -303,10 +314,10 @@ def test_two_spectra_in_parallel():
         for k in range(2):
             assert same_bits(out[k], reference[k])
             assert same_bits(serial[k], reference[k])
-        if best_parallel < 0.8 * best_serial and best_overlap > 0.7:
-            break
+        if best_overlap > 0.7 and (best_parallel < 0.8 * best_serial
+                                   or len(busy) >= 2 and min(busy) >= cores):
+            break       # shown, or no core free for a speed-up: no use going on
     assert best_overlap > 0.7, (best_overlap, best_serial, best_parallel)
-    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
     if best_parallel >= 0.8 * best_serial:
         if cores < 2 or min(busy) >= cores:
             pytest.skip(f"the calls ran at the same time (first end at {best_overlap:.2f} of "
