@@ -25,7 +25,7 @@ VENV_BIN := $(CURDIR)/$(VENV)/bin
 VENV_PY  := $(VENV_BIN)/python
 STAMP    := $(VENV)/.seispulse-deps
 PIP_PKGS := 'numpy>=1.24' meson meson-python ninja pytest mpmath scipy matplotlib pyslammer eqsig \
-            pandas
+            pandas hypothesis
 # meson and ninja from the venv (ninja is found on PATH)
 MESON    := PATH="$(VENV_BIN):$$PATH" $(VENV_BIN)/meson
 DRIVER   := $(BUILDDIR)/driver/seispulse

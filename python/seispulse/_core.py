@@ -40,7 +40,9 @@ def as_float_array(name, value):
 
 def as_scalar(name, value):
     """One real number as a Python float; InvalidInputError naming `name` for anything
-    else (arrays of more than one element, strings, None)."""
+    else (arrays of more than one element, strings, None, bools)."""
+    if _is_bool(value):
+        raise InvalidInputError(f"{name} = {value!r}: must be a real number, not a bool")
     arr = as_float_array(name, value)
     if arr.size != 1:
         raise InvalidInputError(f"{name}: must be a single number")
@@ -80,12 +82,18 @@ def names(table, codes, shape):
     return out.reshape(shape)
 
 
-def broadcast(**arrays):
+def broadcast(empty_ok=False, **arrays):
     """Broadcast named float arrays together like a numpy ufunc.
 
     Returns (shape, {name: array}) with each array converted; raises
-    InvalidInputError naming the arguments when the shapes do not broadcast."""
-    converted = {name: as_float_array(name, value) for name, value in arrays.items()}
+    InvalidInputError naming the arguments when the shapes do not broadcast, when they are
+    bools (True is not the number 1 here) or when one is empty, unless `empty_ok` (the
+    caller's Fortran routine takes zero-length arrays and gives empty results: f2py refuses
+    a zero length for the second and later arrays that share one size)."""
+    converted = {name: as_number_array(name, value) for name, value in arrays.items()}
+    empty = [name for name, a in converted.items() if a.size == 0]
+    if empty and not empty_ok:
+        raise InvalidInputError(f"{', '.join(empty)}: empty array (at least one value needed)")
     try:
         shape = np.broadcast_shapes(*(a.shape for a in converted.values()))
     except ValueError as exc:
@@ -141,7 +149,9 @@ def by_code(names_of):
 
 
 def check_positive(name, value, unit=""):
-    """A finite real scalar > 0."""
+    """A finite real scalar > 0 (a number: not a str or a bool)."""
+    if isinstance(value, (str, bytes, bool, np.bool_)):
+        raise InvalidInputError(f"{name} = {value!r}: must be a finite number > 0{unit}")
     try:
         x = float(value)
     except (TypeError, ValueError) as exc:
@@ -204,7 +214,7 @@ def record_and_step(accel, dt):
                                     " (leave dt out for a Record)")
         dt = accel.dt
         accel = accel.accel
-    rec = as_float_array("accel", accel)
+    rec = as_number_array("accel", accel)
     if rec.ndim != 1:
         raise InvalidInputError(f"accel: must be a 1-d array of samples (got shape {rec.shape})")
     if rec.size == 0:

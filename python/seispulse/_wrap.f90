@@ -5,6 +5,10 @@
 !> These sources are the only signatures: f2py reads them at build time (gen_binding.py);
 !> `!f2py intent(hide)` lines hide the sizes f2py takes from the arrays, and .f2py_f2cmap
 !> maps real(dp) to C double (checked by the build and test_binding_kinds.py).
+!> Every routine has a `!f2py threadsafe` line: its C wrapper releases the GIL during the
+!> Fortran call (the build checks it), so it must keep nothing between calls. The held
+!> results (sp_runs_held below, sp_records_held, sp_winkler_model) are the exception: Python
+!> makes each run + fetch pair under one lock (_core.HELD_LOCK, records._READ_LOCK).
 !> Element-by-element loops over a scalar routine are not written here: one line each in
 !> _wrap_loops.txt, from which gen_binding.py writes _wrap_loops.f90 at build time.
 
@@ -28,6 +32,7 @@ subroutine sp_exp_pulse(n, tau, nb, beta, full, a, v, d, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_pulses, only: exp_pulse
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n, nb
     integer, intent(in) :: n, nb, full
     real(dp), intent(in) :: tau(n), beta(nb)
@@ -46,6 +51,7 @@ subroutine sp_pulse_eval(kind, n, t, np, params, a, v, d, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_pulses, only: pulse_t, pulse_eval, pulse_from_params, PULSE_NPARAM
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n, np
     integer, intent(in) :: kind, n, np
     real(dp), intent(in) :: t(n), params(np, PULSE_NPARAM)
@@ -74,6 +80,7 @@ subroutine sp_pulse_end_time(kind, params, t_end, stat, errmsg)
     use seispulse_pulses, only: pulse_t, pulse_end_time, pulse_from_params, pulse_validate, &
                                 PULSE_NPARAM
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: kind
     real(dp), intent(in) :: params(PULSE_NPARAM)
     real(dp), intent(out) :: t_end
@@ -91,6 +98,7 @@ end subroutine sp_pulse_end_time
 subroutine sp_pulse_kind(name, kind, stat, errmsg)
     use seispulse_pulses, only: pulse_kind_from_name
     implicit none
+    !f2py threadsafe
     character(len=*), intent(in) :: name
     integer, intent(out) :: kind, stat
     character(len=256), intent(out) :: errmsg
@@ -110,6 +118,7 @@ subroutine sp_limit_form(n, which, eta, out)
     use seispulse_sliding_closed, only: rectangle_half, rectangle_full, triangle_half, &
                                  spike_velocity_ratio, full_cycle_peak_regression
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     !f2py intent(in,out) :: out
     integer, intent(in) :: n, which
@@ -143,6 +152,7 @@ subroutine sp_table_1_2(table, nr, rows, nc, cols, exps, stat, errmsg)
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_sliding_norm, only: table_1_2_exponents
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: nr, nc
     character(len=*), intent(in) :: table
     integer, intent(in) :: nr, nc
@@ -179,6 +189,7 @@ subroutine sp_stickslip(kind, params, nrec, accel, dt, ay_fwd, ay_rev, sfac, sta
                                    stickslip_record
     use sp_runs_held, only: held_slides
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: nrec, ngrid
     integer, intent(in) :: kind, nrec, static_all, ngrid
     real(dp), intent(in) :: params(PULSE_NPARAM), accel(nrec), dt, ay_fwd, ay_rev, sfac, &
@@ -232,6 +243,7 @@ subroutine sp_rocking_rect_normalized(n, fbar, eta, out)
     use seispulse_rocking_closed, only: rect_time_of_max_normalized, rect_max_rotation_normalized, &
                                  rect_impact_time_normalized
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: fbar(n), eta(n)
@@ -251,6 +263,7 @@ subroutine sp_rocking_block(which, x, y, z, g, alpha, p, e, r, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_rocking_sim, only: rocking_block_t, rectangular_block, symmetric_block
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: which
     real(dp), intent(in) :: x, y, z, g
     real(dp), intent(out) :: alpha, p, e, r
@@ -285,6 +298,7 @@ subroutine sp_rock(kind, params, nrec, accel, dt, alpha, p, e, g, linearized, ha
     use seispulse_rocking_sim, only: rocking_block_t, rocking_run_t, rock_pulse, rock_record
     use sp_runs_held, only: held_impacts
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: nrec, ngrid
     integer, intent(in) :: kind, nrec, linearized, has_t_max, ngrid, has_v
     real(dp), intent(in) :: params(PULSE_NPARAM), accel(nrec), dt, alpha, p, e, g, t_max, &
@@ -351,6 +365,7 @@ subroutine sp_overturning_map(alpha, e, kind, params, linearized, nf, freq, na, 
     use seispulse_pulses, only: pulse_from_params, PULSE_NPARAM
     use seispulse_rocking_sim, only: overturning_map
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: nf, na
     integer, intent(in) :: kind, linearized, nf, na
     real(dp), intent(in) :: alpha, e, params(PULSE_NPARAM), freq(nf), amp(na), kv
@@ -378,6 +393,7 @@ subroutine sp_newmark_rigid(n, accel, dt, mode, ky, ky_up, k_down, k_up, method,
     use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid
     use sp_runs_held, only: held_slides
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n, nt
     integer, intent(in) :: n, mode, method, nh, table, nt
     real(dp), intent(in) :: accel(n), dt, ky, ky_up, k_down, k_up, g, ky_disp(nt), ky_values(nt)
@@ -429,6 +445,7 @@ subroutine sp_newmark_rigid_many(n, accel, dt, mode, nk, ky, ky_up, k_down, k_up
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_newmark, only: newmark_block_t, newmark_result_t, newmark_rigid
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n, nk
     integer, intent(in) :: n, mode, nk, method
     real(dp), intent(in) :: accel(n), dt, ky(nk), ky_up(nk), k_down(nk), k_up(nk), g
@@ -465,6 +482,7 @@ subroutine sp_newmark_incline(mu, slope_deg, xi_deg, along_plane, ky, ky_up, k_d
     use seispulse_kinds, only: dp
     use seispulse_newmark, only: newmark_block_t, newmark_incline
     implicit none
+    !f2py threadsafe
     real(dp), intent(in) :: mu, slope_deg, xi_deg
     integer, intent(in) :: along_plane
     real(dp), intent(out) :: ky, ky_up, k_down, k_up
@@ -486,6 +504,7 @@ subroutine sp_fetch_slides(n, direction, t_start, t_stop, u_start, u_stop, w_pea
     use seispulse_kinds, only: dp
     use sp_runs_held, only: held_slides
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: n
     integer, intent(out) :: direction(n), from_slip(n)
     real(dp), intent(out) :: t_start(n), t_stop(n), u_start(n), u_stop(n), w_peak(n), t_peak(n)
@@ -517,6 +536,7 @@ subroutine sp_fetch_impacts(n, times)
     use seispulse_kinds, only: dp
     use sp_runs_held, only: held_impacts
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: n
     real(dp), intent(out) :: times(n)
     times = 0.0_dp

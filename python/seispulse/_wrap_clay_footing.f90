@@ -12,6 +12,7 @@ subroutine sp_clay_bearing(n, su, r, weight, has_nc, nc, n_ult, sf, chi, stat, e
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_clay_footing, only: clay_bearing
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n, has_nc
     real(dp), intent(in) :: su(n), r(n), weight(n), nc
@@ -41,6 +42,7 @@ subroutine sp_clay_moment_capacity(n, su, r, chi, model, has_nc, nc, m_ult, stat
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_clay_footing, only: moment_capacity_circle
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n, model, has_nc
     real(dp), intent(in) :: su(n), r(n), chi(n), nc
@@ -74,6 +76,7 @@ subroutine sp_clay_inelastic_pushover(r, h, weight, g_mod, nu, su, k_el, kr_c1, 
     use seispulse_clay_footing, only: degradation_coeffs_t, inelastic_pushover_t, &
                                       inelastic_pushover, IP_NCOL
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: has_nc, n
     real(dp), intent(in) :: r, h, weight, g_mod, nu, su, k_el, kr_c1, kr_c2, a_poly(5), b1, b2
@@ -111,6 +114,7 @@ subroutine sp_clay_stiffness_ratio(n, chi, k_el, kr_c1, kr_c2, k_ratio, kappa, s
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_clay_footing, only: degradation_coeffs_t, initial_stiffness_ratio
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: chi(n), k_el, kr_c1, kr_c2
@@ -137,6 +141,7 @@ subroutine sp_clay_gaussian(n, chi, x, a_poly, b1, b2, c1, c2, log_base, g_corr,
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_clay_footing, only: degradation_coeffs_t, gaussian_correction
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: chi(n), x(n), a_poly(5), b1, b2, c1, c2, log_base

@@ -7,6 +7,7 @@ subroutine sp_ec8_seismic_coefficients(alpha, s, r, vertical_ratio, kh, kv, stat
     use seispulse_kinds, only: dp
     use seispulse_codes, only: ec8_seismic_coefficients
     implicit none
+    !f2py threadsafe
     real(dp), intent(in) :: alpha, s, r, vertical_ratio
     real(dp), intent(out) :: kh, kv
     integer, intent(out) :: stat
@@ -20,6 +21,7 @@ subroutine sp_ec8_vertical_ratio(spectrum_type, ratio)
     use seispulse_kinds, only: dp
     use seispulse_codes, only: ec8_vertical_ratio
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: spectrum_type
     real(dp), intent(out) :: ratio
     ratio = ec8_vertical_ratio(spectrum_type)
@@ -30,6 +32,7 @@ subroutine sp_ec8_r_factor(wall_type, r, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_codes, only: ec8_r_factor
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: wall_type
     real(dp), intent(out) :: r
     integer, intent(out) :: stat
@@ -44,6 +47,7 @@ subroutine sp_mononobe_okabe(phi_deg, kh, kv, delta_deg, psi_deg, beta_deg, pass
     use seispulse_kinds, only: dp
     use seispulse_codes, only: mononobe_okabe
     implicit none
+    !f2py threadsafe
     real(dp), intent(in) :: phi_deg, kh, kv, delta_deg, psi_deg, beta_deg, gamma_phi
     integer, intent(in) :: passive
     real(dp), intent(out) :: k, theta, k_e3
@@ -61,6 +65,7 @@ subroutine sp_ec8_thrust(height, gamma, phi_deg, delta_deg, psi_deg, beta_deg, k
     use seispulse_kinds, only: dp
     use seispulse_codes, only: ec8_thrust, ec8_thrust_t
     implicit none
+    !f2py threadsafe
     real(dp), intent(in) :: height, gamma, phi_deg, delta_deg, psi_deg, beta_deg, kh, kv, &
                             gamma_w, gamma_d, gamma_phi
     integer, intent(in) :: water_case
@@ -81,6 +86,7 @@ subroutine sp_westergaard_pressure(n, kh, gamma_w, h_water, z, q, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_codes, only: westergaard_pressure
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: kh, gamma_w, h_water, z(n)
@@ -96,6 +102,7 @@ subroutine sp_ec8_rigid_thrust(alpha_s, gamma, height, thrust, z, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_codes, only: ec8_rigid_thrust
     implicit none
+    !f2py threadsafe
     real(dp), intent(in) :: alpha_s, gamma, height
     real(dp), intent(out) :: thrust, z
     integer, intent(out) :: stat
@@ -109,6 +116,7 @@ subroutine sp_seed_whitman_increment(kh, gamma, height, thrust, z, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_codes, only: seed_whitman_increment
     implicit none
+    !f2py threadsafe
     real(dp), intent(in) :: kh, gamma, height
     real(dp), intent(out) :: thrust, z
     integer, intent(out) :: stat
@@ -122,6 +130,7 @@ subroutine sp_wood_thrust(alpha_s, gamma, height, thrust, z, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_codes, only: wood_thrust
     implicit none
+    !f2py threadsafe
     real(dp), intent(in) :: alpha_s, gamma, height
     real(dp), intent(out) :: thrust, z
     integer, intent(out) :: stat
@@ -135,6 +144,7 @@ subroutine sp_ec8_ground_parameters(spectrum_type, ground, s, tb, tc, td, stat, 
     use seispulse_kinds, only: dp
     use seispulse_codes, only: ec8_ground_parameters
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: spectrum_type, ground
     real(dp), intent(out) :: s, tb, tc, td
     integer, intent(out) :: stat
@@ -151,6 +161,7 @@ subroutine sp_ec8_damping_correction(n, xi_percent, eta, stat, errmsg)
     use seispulse_format, only: int_str
     use seispulse_codes, only: ec8_damping_correction, ec8_check_damping
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: xi_percent(n)
@@ -176,6 +187,7 @@ subroutine sp_ec8_elastic_spectrum(n, periods, ag, spectrum_type, ground, xi_per
     use seispulse_kinds, only: dp
     use seispulse_codes, only: ec8_elastic_spectrum
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n, spectrum_type, ground
     real(dp), intent(in) :: periods(n), ag, xi_percent
@@ -192,6 +204,7 @@ subroutine sp_ec8_design_spectrum(n, periods, ag, spectrum_type, ground, q, beta
     use seispulse_kinds, only: dp
     use seispulse_codes, only: ec8_design_spectrum
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n, spectrum_type, ground
     real(dp), intent(in) :: periods(n), ag, q, beta
@@ -207,6 +220,7 @@ subroutine sp_ec8_reference_pga(annex, zone, agr, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_codes, only: ec8_reference_pga
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: annex, zone
     real(dp), intent(out) :: agr
     integer, intent(out) :: stat
@@ -220,6 +234,7 @@ subroutine sp_ec8_design_ag(ag, annex, zone, importance, ag_out, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_codes, only: ec8_design_ag
     implicit none
+    !f2py threadsafe
     real(dp), intent(in) :: ag, importance
     integer, intent(in) :: annex, zone
     real(dp), intent(out) :: ag_out

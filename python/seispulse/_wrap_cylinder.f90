@@ -47,6 +47,7 @@ subroutine sp_body_props(shape, r, h, mass, g, r_inner, j_o, has_j_axis, j_axis,
     use seispulse_cylinder, only: rocking_body_t
     use sp_cylinder_body, only: make_body
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: shape, has_j_axis
     real(dp), intent(in) :: r, h, mass, g, r_inner, j_o, j_axis
     integer, intent(out) :: shape_out
@@ -92,6 +93,7 @@ subroutine sp_body_block(shape, r, h, mass, g, r_inner, j_o, has_j_axis, j_axis,
     use seispulse_rocking_sim, only: rocking_block_t
     use sp_cylinder_body, only: make_body
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: shape, has_j_axis, linearized
     real(dp), intent(in) :: r, h, mass, g, r_inner, j_o, j_axis, e
     real(dp), intent(out) :: alpha, p, e_out
@@ -120,6 +122,7 @@ subroutine sp_equivalent_cylinder(b, h, mass, g, has_theta_c, theta_c, r_c, h_c,
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_cylinder, only: rocking_body_t, block_props, equivalent_cylinder
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: has_theta_c
     real(dp), intent(in) :: b, h, mass, g, theta_c
     real(dp), intent(out) :: r_c, h_c, mass_c
@@ -150,6 +153,7 @@ subroutine sp_equivalent_block(shape, r, h, mass, g, r_inner, j_o, has_j_axis, j
     use seispulse_cylinder, only: rocking_body_t, equivalent_block
     use sp_cylinder_body, only: make_body
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: shape, has_j_axis, has_alpha
     real(dp), intent(in) :: r, h, mass, g, r_inner, j_o, j_axis, alpha
     real(dp), intent(out) :: b_b, h_b, mass_b
@@ -180,6 +184,7 @@ subroutine sp_cyl_rigid_pushover(n, theta, r, h, mass, g, force, moment, stable,
     use seispulse_errors, only: SEISPULSE_SUCCESS
     use seispulse_cylinder, only: rocking_body_t, cylinder_props, rigid_pushover
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: theta(n), r(n), h(n), mass(n), g
@@ -219,6 +224,7 @@ subroutine sp_body_overturning_map(shape, r, h, mass, g, r_inner, j_o, has_j_axi
     use seispulse_cylinder, only: rocking_body_t, body_overturning_map
     use sp_cylinder_body, only: make_body
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: nx, ny
     integer, intent(in) :: shape, has_j_axis, kind, axes, linearized, has_e, nx, ny
     real(dp), intent(in) :: r, h, mass, g, r_inner, j_o, j_axis, params(PULSE_NPARAM), e, rtol
@@ -242,6 +248,7 @@ end subroutine sp_body_overturning_map
 subroutine sp_map_difference(n1, n2, a, m1, m2, b, diff, stat, errmsg)
     use seispulse_cylinder, only: map_difference
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n1, n2, m1, m2
     integer, intent(in) :: n1, n2, m1, m2
     integer, intent(in) :: a(n1, n2), b(m1, m2)
@@ -265,6 +272,7 @@ subroutine sp_body_overturning_threshold(shape, r, h, mass, g, r_inner, j_o, has
     use seispulse_cylinder, only: rocking_body_t, overturning_threshold
     use sp_cylinder_body, only: make_body
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: nf
     integer, intent(in) :: shape, has_j_axis, kind, nf, has_pga_max, has_n_scan, n_scan, has_e
     integer, intent(in) :: linearized

@@ -22,6 +22,7 @@ subroutine sp_cylinder_roll(shape, r, h, mass, g, r_inner, j_o, has_j_axis, j_ax
     use sp_cylinder_body, only: make_body
     use sp_runs_held, only: held_impacts
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: nrec, ngrid
     integer, intent(in) :: shape, has_j_axis, kind, nrec, has_t_max, ngrid
     real(dp), intent(in) :: r, h, mass, g, r_inner, j_o, j_axis, e, params(PULSE_NPARAM)

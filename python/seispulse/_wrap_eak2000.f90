@@ -6,6 +6,7 @@ subroutine sp_eak2000_ground_parameters(ground, t1, t2, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_eak2000, only: eak2000_ground_parameters
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: ground
     real(dp), intent(out) :: t1, t2
     integer, intent(out) :: stat
@@ -19,6 +20,7 @@ subroutine sp_eak2000_zone_acceleration(zone, zone_map, alpha, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_eak2000, only: eak2000_zone_acceleration
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: zone, zone_map
     real(dp), intent(out) :: alpha
     integer, intent(out) :: stat
@@ -32,6 +34,7 @@ subroutine sp_eak2000_importance_factor(category, gamma_i, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_eak2000, only: eak2000_importance_factor
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: category
     real(dp), intent(out) :: gamma_i
     integer, intent(out) :: stat
@@ -45,6 +48,7 @@ subroutine sp_eak2000_beta0(beta0)
     use seispulse_kinds, only: dp
     use seispulse_eak2000, only: EAK_BETA0
     implicit none
+    !f2py threadsafe
     real(dp), intent(out) :: beta0
     beta0 = EAK_BETA0
 end subroutine sp_eak2000_beta0
@@ -57,6 +61,7 @@ subroutine sp_eak2000_damping_correction(n, xi_percent, eta_min, eta, stat, errm
     use seispulse_format, only: int_str
     use seispulse_eak2000, only: eak2000_damping_correction, eak2000_check_damping
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: xi_percent(n), eta_min
@@ -83,6 +88,7 @@ subroutine sp_eak2000_design_spectrum(n, periods, alpha, ground, importance, q, 
     use seispulse_kinds, only: dp
     use seispulse_eak2000, only: eak2000_design_spectrum
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n, ground
     real(dp), intent(in) :: periods(n), alpha, importance, q, theta, xi_percent, eta_min, &
@@ -101,6 +107,7 @@ subroutine sp_eak2000_elastic_spectrum(n, periods, alpha, ground, importance, xi
     use seispulse_kinds, only: dp
     use seispulse_eak2000, only: eak2000_elastic_spectrum
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n, ground
     real(dp), intent(in) :: periods(n), alpha, importance, xi_percent, eta_min, exponent

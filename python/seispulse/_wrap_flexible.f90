@@ -55,6 +55,7 @@ subroutine sp_flexible(n, accel, dt, ky, analysis, height, vs, vs_base, damping,
     use seispulse_flexible_model, only: flexible_mass_t, flexible_result_t
     use sp_flexible_helpers, only: sp_flexible_run
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n, nt
     integer, intent(in) :: n, analysis, soil, max_iter, method, mode, table, nt, nh
     real(dp), intent(in) :: accel(n), dt, ky, height, vs, vs_base, damping, ref_strain_pct, g

@@ -8,6 +8,7 @@ subroutine sp_record_intensity(n, accel, dt, g, pga, pgv, pgd, arias, cav, d5_75
     use seispulse_kinds, only: dp
     use seispulse_intensity, only: intensity_t, record_intensity
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: accel(n)
@@ -37,6 +38,7 @@ subroutine sp_spectral_acceleration(n, accel, dt, period, damping, g, sa, stat, 
     use seispulse_kinds, only: dp
     use seispulse_intensity, only: spectral_acceleration
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: accel(n)

@@ -18,6 +18,7 @@ subroutine sp_ec8_suite_check_records(na, nr, ne, accel, first, npts, dt, code, 
     use seispulse_kinds, only: dp
     use seispulse_record_suite, only: ec8_suite_check_records, suite_check_t, suite_target_t
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: na, nr, ne
     integer, intent(in) :: na, nr, ne, code, spectrum_type, ground, fit, n_points, min_records
     integer, intent(in) :: nmax, first(nr), npts(nr)
@@ -58,6 +59,7 @@ end subroutine sp_ec8_suite_check_records
 subroutine sp_suite_records_room(n_points, ne, room)
     use seispulse_record_suite, only: suite_records_room
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: n_points, ne
     integer, intent(out) :: room
     room = suite_records_room(n_points, ne)
@@ -68,6 +70,7 @@ subroutine sp_suite_spectrum_fraction(fraction)
     use seispulse_kinds, only: dp
     use seispulse_record_suite, only: SUITE_SPECTRUM_FRACTION
     implicit none
+    !f2py threadsafe
     real(dp), intent(out) :: fraction
     fraction = SUITE_SPECTRUM_FRACTION
 end subroutine sp_suite_spectrum_fraction

@@ -23,6 +23,7 @@ subroutine sp_record_read(path, fmt, units, dt, npts, dt_out, t0, fmt_out, pga, 
     use seispulse_records, only: read_record
     use sp_records_held, only: held
     implicit none
+    !f2py threadsafe
     character(len=*), intent(in) :: path
     integer, intent(in) :: fmt, units
     real(dp), intent(in) :: dt
@@ -48,6 +49,7 @@ subroutine sp_record_fetch(n, accel, name, title)
     use seispulse_kinds, only: dp
     use sp_records_held, only: held
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: n
     real(dp), intent(out) :: accel(n)
     character(len=256), intent(out) :: name, title
@@ -76,6 +78,7 @@ subroutine sp_pga_scale_factor(pga, target_pga, slammer, factor, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_records, only: pga_scale_factor
     implicit none
+    !f2py threadsafe
     real(dp), intent(in) :: pga, target_pga
     integer, intent(in) :: slammer
     real(dp), intent(out) :: factor
@@ -90,6 +93,7 @@ subroutine sp_ground_motion(n, accel, dt, g, vel, disp, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_records, only: ground_motion
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: accel(n)
@@ -106,6 +110,7 @@ end subroutine sp_ground_motion
 subroutine sp_accel_unit_code(name, code, stat, errmsg)
     use seispulse_records, only: accel_unit_code
     implicit none
+    !f2py threadsafe
     character(len=*), intent(in) :: name
     integer, intent(out) :: code
     integer, intent(out) :: stat
@@ -119,6 +124,7 @@ subroutine sp_accel_unit_factor(name, g, factor, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_records, only: accel_unit_factor
     implicit none
+    !f2py threadsafe
     character(len=*), intent(in) :: name
     real(dp), intent(in) :: g
     real(dp), intent(out) :: factor

@@ -7,6 +7,7 @@ subroutine sp_sdof_response(n, accel, dt, period, damping, g, disp, vel, acc, st
     use seispulse_kinds, only: dp
     use seispulse_sdof_sim, only: sdof_response
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: accel(n), dt, period, damping, g
@@ -24,6 +25,7 @@ subroutine sp_sdof_spectrum(n, accel, dt, np, periods, nd, dampings, g, peaks, t
     use seispulse_kinds, only: dp
     use seispulse_sdof_sim, only: sdof_spectrum, pseudo_spectra
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n, np, nd
     integer, intent(in) :: n, np, nd
     real(dp), intent(in) :: accel(n), dt, periods(np), dampings(nd), g
@@ -51,6 +53,7 @@ end subroutine sp_sdof_spectrum
 subroutine sp_sdof_threads(n)
     use seispulse_sdof_sim, only: sdof_threads
     implicit none
+    !f2py threadsafe
     integer, intent(out) :: n
     n = sdof_threads()
 end subroutine sp_sdof_threads
@@ -60,6 +63,7 @@ subroutine sp_design_envelope(np, ns, periods, spectra, plateau_below, env, stat
     use seispulse_kinds, only: dp
     use seispulse_sdof_sim, only: design_envelope
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: np, ns
     integer, intent(in) :: np, ns
     real(dp), intent(in) :: periods(np), spectra(np, ns), plateau_below
@@ -76,6 +80,7 @@ subroutine sp_spectral_shape(np, periods, psa, pga, shape, t_peak, peak, stat, e
     use seispulse_kinds, only: dp
     use seispulse_sdof_sim, only: spectral_shape
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: np
     integer, intent(in) :: np
     real(dp), intent(in) :: periods(np), psa(np), pga

@@ -8,6 +8,7 @@ subroutine sp_harmonic_response(n, t, w0, period, ratio, damping, law, transient
     use seispulse_kinds, only: dp
     use seispulse_sdof_closed, only: harmonic_response
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n, law, transient
     real(dp), intent(in) :: t(n), w0, period, ratio, damping
@@ -24,6 +25,7 @@ subroutine sp_rect_pulse_response(n, t, w0, t1, period, z, v, a, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_sdof_closed, only: rect_pulse_response
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: t(n), w0, t1, period
@@ -39,6 +41,7 @@ subroutine sp_impulse_response(n, t, jw, period, damping, z, v, a, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_sdof_closed, only: impulse_response
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: t(n), jw, period, damping
@@ -55,6 +58,7 @@ subroutine sp_sdof_pulse_response(kind, params, period, damping, n, t, z, v, a, 
     use seispulse_pulses, only: pulse_from_params, PULSE_NPARAM
     use seispulse_sdof_closed, only: sdof_pulse_response
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: kind, n
     real(dp), intent(in) :: params(PULSE_NPARAM), period, damping, t(n)
@@ -72,6 +76,7 @@ subroutine sp_sdof_pulse_peaks(kind, params, period, damping, out, stat, errmsg)
     use seispulse_pulses, only: pulse_from_params, PULSE_NPARAM
     use seispulse_sdof_closed, only: sdof_pulse_peaks
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: kind
     real(dp), intent(in) :: params(PULSE_NPARAM), period, damping
     real(dp), intent(out) :: out(6)
@@ -89,6 +94,7 @@ subroutine sp_sdof_pulse_spectrum(kind, params, n, periods, damping, sd, sv, sa,
     use seispulse_pulses, only: pulse_from_params, PULSE_NPARAM
     use seispulse_sdof_closed, only: sdof_pulse_spectrum
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: kind, n
     real(dp), intent(in) :: params(PULSE_NPARAM), periods(n), damping
@@ -105,6 +111,7 @@ subroutine sp_pulse_peak_accel(kind, params, amax, tmax, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_pulses, only: pulse_from_params, pulse_peak_accel, PULSE_NPARAM
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: kind
     real(dp), intent(in) :: params(PULSE_NPARAM)
     real(dp), intent(out) :: amax, tmax

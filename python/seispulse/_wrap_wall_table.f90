@@ -35,6 +35,7 @@ subroutine sp_wall_comparison(height, gamma, phi_deg, wall_friction_deg, psi_deg
     use seispulse_wall_table, only: wall_case_t, wall_comparison, WALL_ROWS
     use wrap_wall_case, only: sp_wall_case
     implicit none
+    !f2py threadsafe
     real(dp), intent(in) :: height, gamma, phi_deg, wall_friction_deg, psi_deg, beta_deg, &
                             gamma_phi, gamma_w, gamma_d, kh, kv, alpha_s, nu, delta, omega_ratio, &
                             expo, d_theta, l_over_h
@@ -59,6 +60,7 @@ subroutine sp_wall_pressure(height, gamma, phi_deg, wall_friction_deg, psi_deg, 
     use seispulse_wall_table, only: wall_case_t, wall_pressure_profile, WALL_PROFILE_COLUMNS
     use wrap_wall_case, only: sp_wall_case
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: nd
     real(dp), intent(in) :: height, gamma, phi_deg, wall_friction_deg, psi_deg, beta_deg, &
                             gamma_phi, gamma_w, gamma_d, kh, kv, alpha_s, nu, delta, omega_ratio, &

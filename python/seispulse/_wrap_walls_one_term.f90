@@ -7,6 +7,7 @@ subroutine sp_ot_shape(shape, expo, a_oc, l_factor, mass_factor, s0, s1, h_ratio
     use seispulse_kinds, only: dp
     use seispulse_walls_one_term, only: one_term_shape_t, one_term_shape
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: shape
     real(dp), intent(in) :: expo
     real(dp), intent(out) :: a_oc, l_factor, mass_factor, s0, s1, h_ratio
@@ -29,6 +30,7 @@ subroutine sp_ot_pressure(omega_ratio, delta, nu, shape, expo, d_theta, l_over_h
     use seispulse_kinds, only: dp
     use seispulse_walls_one_term, only: one_term_pressure
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: ny
     integer, intent(in) :: ny, shape
     real(dp), intent(in) :: omega_ratio, delta, nu, expo, d_theta, l_over_h, y(ny)
@@ -46,6 +48,7 @@ subroutine sp_ot_displacement(omega_ratio, delta, nu, shape, expo, d_theta, l_ov
     use seispulse_kinds, only: dp
     use seispulse_walls_one_term, only: one_term_displacement
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: np
     integer, intent(in) :: np, shape
     real(dp), intent(in) :: omega_ratio, delta, nu, expo, d_theta, l_over_h, x(np), y(np)

@@ -7,6 +7,7 @@ subroutine sp_free_field_frequencies(height, vs, n, omegas, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_walls_common, only: free_field_frequencies
     implicit none
+    !f2py threadsafe
     real(dp), intent(in) :: height, vs
     integer, intent(in) :: n
     real(dp), intent(out) :: omegas(n)
@@ -24,6 +25,7 @@ subroutine sp_vy_rigid(n, omega_ratio, delta, nu, tol, q, m, h_ratio, nterms, st
     use seispulse_format, only: int_str
     use seispulse_walls_vy, only: vy_rigid
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: omega_ratio(n), delta(n), nu(n), tol
@@ -59,6 +61,7 @@ subroutine sp_vy_rigid_sweep(n, omega_ratios, delta, nu, tol, q, m, h_ratio, nte
     use seispulse_kinds, only: dp
     use seispulse_walls_vy, only: vy_rigid_sweep
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: omega_ratios(n), delta, nu, tol
@@ -76,6 +79,7 @@ subroutine sp_vy_pressure(omega_ratio, delta, nu, n, y, tol, p, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_walls_vy, only: vy_pressure
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: omega_ratio, delta, nu, y(n), tol
@@ -91,6 +95,7 @@ subroutine sp_vy_fields(omega_ratio, delta, nu, n, x, y, tol, u, v, sigma_x, tau
     use seispulse_kinds, only: dp
     use seispulse_walls_vy, only: vy_fields
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: n
     real(dp), intent(in) :: omega_ratio, delta, nu, x(n), y(n), tol

@@ -35,6 +35,7 @@ subroutine sp_wk_shape_factor(reading, factor, stat, errmsg)
     use seispulse_kinds, only: dp
     use seispulse_winkler, only: shape_factor
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: reading
     real(dp), intent(out) :: factor
     integer, intent(out) :: stat
@@ -50,6 +51,7 @@ subroutine sp_wk_master_curve(footing, n, x, k_ratio, m_ratio, b_ratio, a_ratio)
     use seispulse_kinds, only: dp
     use seispulse_winkler, only: winkler_master_curve
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: footing, n
     real(dp), intent(in) :: x(n)
@@ -67,6 +69,7 @@ subroutine sp_wk_pushover(r, h, weight, k, k_method, reading, n, theta, curve, s
     use seispulse_winkler, only: winkler_pushover, winkler_pushover_t, WP_NCOL
     use sp_winkler_results, only: pushover_scalars
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: k_method, reading, n
     real(dp), intent(in) :: r, h, weight, k, theta(n)
@@ -90,6 +93,7 @@ subroutine sp_wk_block_pushover(b, alpha, h, weight, k, k_method, n, theta, curv
     use seispulse_winkler, only: block_winkler_pushover, winkler_pushover_t, WP_NCOL
     use sp_winkler_results, only: pushover_scalars
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: n
     integer, intent(in) :: k_method, n
     real(dp), intent(in) :: b, alpha, h, weight, k, theta(n)
@@ -115,6 +119,7 @@ subroutine sp_wk_equivalent_cylinder(b, h, mass, g, alpha, k, k_method, has_thet
     use seispulse_cylinder, only: rocking_body_t, block_props
     use seispulse_winkler, only: winkler_equivalent_cylinder
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: k_method, has_theta_c
     real(dp), intent(in) :: b, h, mass, g, alpha, k, theta_c
     real(dp), intent(out) :: r_c, h_c, mass_c

@@ -60,6 +60,7 @@ subroutine sp_wk_model(shape, r, h, mass, g, r_inner, j_o, has_j_axis, j_axis, k
     use seispulse_winkler_rock, only: winkler_model_t
     use sp_winkler_model, only: make_model
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: shape, has_j_axis, k_method, reading, has_xi, damping_ref, has_c
     real(dp), intent(in) :: r, h, mass, g, r_inner, j_o, j_axis, k, alpha, xi, c
     integer, intent(out) :: footing
@@ -97,6 +98,7 @@ subroutine sp_wk_rock(shape, r, h, mass, g, r_inner, j_o, has_j_axis, j_axis, k,
                                       DAMP_ROCKING
     use sp_winkler_model, only: make_model, held_wk_impacts
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: nrec, ngrid
     integer, intent(in) :: shape, has_j_axis, k_method, reading, kind, nrec, has_v0
     integer, intent(in) :: has_t_max, has_rtol, ngrid
@@ -154,6 +156,7 @@ subroutine sp_wk_fetch_impacts(n, impacts)
     use seispulse_kinds, only: dp
     use sp_winkler_model, only: held_wk_impacts
     implicit none
+    !f2py threadsafe
     integer, intent(in) :: n
     real(dp), intent(out) :: impacts(n, 3)
     impacts = 0.0_dp
@@ -174,6 +177,7 @@ subroutine sp_wk_map(shape, r, h, mass, g, r_inner, j_o, has_j_axis, j_axis, k, 
     use seispulse_winkler_rock, only: winkler_model_t, winkler_overturning_map, DAMP_ROCKING
     use sp_winkler_model, only: make_model
     implicit none
+    !f2py threadsafe
     !f2py intent(hide) :: nx, ny
     integer, intent(in) :: shape, has_j_axis, k_method, reading, kind, axes, has_rtol, nx, ny
     real(dp), intent(in) :: r, h, mass, g, r_inner, j_o, j_axis, k, alpha, c

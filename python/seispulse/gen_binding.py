@@ -12,6 +12,10 @@ dimensions (``PULSE_NPARAM``) are replaced by their values read from LIBSRC. f2p
 writes ``_seispulsemodule.c`` and ``_seispulse-f2pywrappers.f`` from that file, with
 ``real(dp)`` mapped to C double by FILE.
 
+Every wrapper carries an ``!f2py threadsafe`` line: the generated C releases the GIL
+around each Fortran call, so Python threads run them in parallel; the build fails for a
+routine whose C keeps the GIL.
+
 Then the kinds are checked: a kind f2py does not map becomes C float and gives wrong
 numbers without any error, so any ``float`` argument in the generated C fails the build.
 
@@ -143,6 +147,21 @@ def check_kinds(pyf_text, c_text, f2cmap):
     return sorted(set(problems))
 
 
+ROUTINE_C_RE = re.compile(r"^static PyObject \*f2py_rout_\w+?_(sp_\w+)\(", re.M)
+
+
+def check_threadsafe(c_text):
+    """Routines of the generated C that keep the GIL during the Fortran call (an empty list
+    when every one releases it: `!f2py threadsafe` in each wrapper, so that Python threads
+    run Fortran calls in parallel; see README "Python in parallel")."""
+    starts = [(m.start(), m.group(1)) for m in ROUTINE_C_RE.finditer(c_text)]
+    if not starts:
+        return ["no wrapper routine found in the generated C"]
+    ends = [s for s, _ in starts[1:]] + [len(c_text)]
+    return [name for (start, name), end in zip(starts, ends)
+            if "Py_BEGIN_ALLOW_THREADS" not in c_text[start:end]]
+
+
 def cmd_f2py(args):
     outdir = Path(args.outdir)
     outdir.mkdir(parents=True, exist_ok=True)
@@ -166,6 +185,10 @@ def cmd_f2py(args):
             if problems:
                 more = f"; and {len(problems) - 5} more" if len(problems) > 5 else ""
                 raise StepFailed("kind mapping: " + "; ".join(problems[:5]) + more)
+            held = check_threadsafe(c_file.read_text(encoding="utf-8"))
+            if held:
+                raise StepFailed("the GIL is kept (no `!f2py threadsafe` line after "
+                                 "`implicit none`) by: " + ", ".join(held))
         except StepFailed as exc:
             log.flush()
             sys.stderr.write(log_path.read_text(encoding="utf-8", errors="replace"))
@@ -282,6 +305,7 @@ def loop_routine(doc, head, calls, local=None):
               "    use seispulse_errors, only: SEISPULSE_SUCCESS"]
     lines += [f"    use {module}, only: {', '.join(names)}" for module, names in uses.items()]
     lines += ["    implicit none",
+              "    !f2py threadsafe",
               "    !f2py intent(hide) :: n",
               "    integer, intent(in) :: n"]
     lines += ["    " + d for d in decls]

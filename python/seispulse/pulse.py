@@ -91,7 +91,7 @@ def exp_pulse(tau, beta, full=False):
         the velocity V_g; after a full cycle it rests at displacement D_g.
     """
     full = _core.check_bool("full", full)
-    shape, arr = _core.broadcast(tau=tau, beta=beta)
+    shape, arr = _core.broadcast(empty_ok=True, tau=tau, beta=beta)
     a, v, d, stat, msg = sp_exp_pulse(_core.flat(arr["tau"], shape),
                                       _core.compact(arr["beta"], shape), int(full))
     _core.raise_for_status(stat, msg)
@@ -107,7 +107,7 @@ def exp_pulse_peaks(beta, full=False):
     full cycle (reached at 2 t_d and kept).
     """
     full = _core.check_bool("full", full)
-    shape, arr = _core.broadcast(beta=beta)
+    shape, arr = _core.broadcast(empty_ok=True, beta=beta)
     vg, dg, stat, msg = sp_exp_pulse_peaks(_core.flat(arr["beta"], shape), int(full))
     _core.raise_for_status(stat, msg)
     return PulsePeaks(*_core.shaped(shape, vg, dg))
@@ -119,7 +119,7 @@ def exp_pulse_impulse_amplitude(beta):
     Equals 1 / vg (the unit-impulse normalization of doc/pulses.md section 1, unit impulse);
     +inf for the spike, whose normalized form tends to a Dirac delta at t_d / 2.
     """
-    shape, arr = _core.broadcast(beta=beta)
+    shape, arr = _core.broadcast(empty_ok=True, beta=beta)
     amp, stat, msg = sp_exp_pulse_impulse_amplitude(_core.flat(arr["beta"], shape))
     _core.raise_for_status(stat, msg)
     return _core.shaped(shape, amp)[0]
@@ -146,7 +146,7 @@ def _evaluate(kind, t, rename=None, **params):
     _core.raise_for_status(stat, msg)
     if t is _DEFINE:
         return _define(kind, code, rename, params)
-    shape, arr = _core.broadcast(t=t, **params)
+    shape, arr = _core.broadcast(empty_ok=True, t=t, **params)
     values = {name: arr.get(name, np.float64(_PARAM_DEFAULTS[name])) for name in _PARAM_ORDER}
     if all(np.size(values[name]) == 1 for name in _PARAM_ORDER):
         packed = np.array([[float(np.reshape(values[n], -1)[0]) for n in _PARAM_ORDER]],
@@ -293,10 +293,14 @@ def _excitation(pulse, accel, dt, dt_missing, t):
                                     "seispulse.pulse.define()")
         kind, params, rec, step = pulse.code, np.asarray(pulse.params, float), np.zeros(1), 1.0
     else:
-        rec = np.ascontiguousarray(_core.as_float_array("accel", accel).reshape(-1))
+        rec = _core.as_number_array("accel", accel)
+        if rec.ndim != 1:
+            raise InvalidInputError(f"accel: must be a 1-d array of samples (got shape "
+                                    f"{rec.shape})")
+        rec = np.ascontiguousarray(rec)
         if dt is None:
             raise InvalidInputError(dt_missing)
-        kind, params, step = 0, np.zeros(_fortran_codes.PULSE_NPARAM), _core.as_scalar("dt", dt)
+        kind, params, step = 0, np.zeros(_fortran_codes.PULSE_NPARAM), _core.as_number("dt", dt)
     grid = np.zeros(0) if t is None else np.ascontiguousarray(
         _core.as_float_array("t", t).reshape(-1))
     return kind, params, rec, step, grid

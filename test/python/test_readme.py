@@ -249,7 +249,8 @@ def run_driver(driver, nml, cwd, where):
 # ------------------------------------------------------------------ python
 
 #: Optional packages a python block needs when it uses these names.
-OPTIONAL = {"records.sample(": "pyslammer", "plot": "matplotlib", "to_frame(": "pandas"}
+OPTIONAL = {"records.sample(": "pyslammer", "plot": "matplotlib", "to_frame(": "pandas",
+            "import dask": "dask", "dask.distributed": "distributed"}
 
 
 @pytest.mark.parametrize("index", runnable("python"))
