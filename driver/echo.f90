@@ -14,7 +14,7 @@ module driver_echo
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
     use seispulse, only: dp, shortest_str, int_str
-    use driver_namelist_scan, only: nml_group, scan_unit, lower
+    use driver_namelist_scan, only: nml_group, scan_unit, lower, text_buffer, append, contents
     use driver_input, only: find_group, given
     use driver_tables, only: table_path, open_output
     implicit none
@@ -172,16 +172,16 @@ contains
         type(nml_group), intent(in) :: raw(:), groups(:)
         character(len=:), allocatable :: text
         character(len=:), allocatable :: key, gname
+        type(text_buffer) :: buf
         type(string_t), allocatable :: values(:)
         type(string_t), allocatable :: done(:)
         integer :: i, i2, j, k, ig, n, eq, col
         allocate(values(0))
-        text = ''
         do i = 1, size(raw)
             gname = lower(raw(i)%name)
             ig = find_group(groups, gname)
             if (ig == 0 .or. find_group(raw(1:i - 1), raw(i)%name) > 0) cycle
-            text = text//'&'//gname//new_line('a')
+            call append(buf, '&'//gname//new_line('a'))
             allocate(done(0))
             do i2 = i, size(raw)
                 if (raw(i2)%name /= raw(i)%name) cycle
@@ -192,19 +192,19 @@ contains
                     done = [done, string_t(key)]
                     eq = index(raw(i2)%items(j)%text, '=')
                     call clean_values(raw(i2)%items(j)%text(eq + 1:), .true., values, n)
-                    text = text//'    '//key//' = '//values(1)%s
+                    call append(buf, '    '//key//' = '//values(1)%s)
                     col = 7 + len(key) + len(values(1)%s)
                     do k = 2, n
                         if (col + 2 + len(values(k)%s) > line_len) then
-                            text = text//','//new_line('a')//repeat(' ', 7 + len(key)) &
-                                   //values(k)%s
+                            call append(buf, ','//new_line('a')//repeat(' ', 7 + len(key)) &
+                                       //values(k)%s)
                             col = 7 + len(key) + len(values(k)%s)
                         else
-                            text = text//', '//values(k)%s
+                            call append(buf, ', '//values(k)%s)
                             col = col + 2 + len(values(k)%s)
                         end if
                     end do
-                    text = text//new_line('a')
+                    call append(buf, new_line('a'))
                 end do
             end do
             ! keys the analysis does not echo (a range the echo gives as a list, say): as
@@ -212,11 +212,12 @@ contains
             do j = 1, size(groups(ig)%items)
                 key = groups(ig)%items(j)%key
                 if (any([(done(k)%s == key, k = 1, size(done))])) cycle
-                text = text//'    '//trim(adjustl(groups(ig)%items(j)%text))//new_line('a')
+                call append(buf, '    '//trim(adjustl(groups(ig)%items(j)%text))//new_line('a'))
             end do
             deallocate(done)
-            text = text//'/'//new_line('a')
+            call append(buf, '/'//new_line('a'))
         end do
+        text = contents(buf)
     end function echo_text
 
     !> The values of one item ("v1, n*v2, ..." as gfortran writes them) as namelist input
