@@ -302,7 +302,7 @@ contains
         character(len=*), intent(in) :: body
         integer, intent(in) :: line
         type(nml_group), allocatable :: more(:)
-        integer :: i, n, name_end, eq, key_start, k, prev_eq, item_start, neq, last_eq
+        integer :: i, j, n, name_end, eq, key_start, k, prev_eq, item_start, neq, last_eq
         integer, allocatable :: eqs(:), keys(:)
         character :: quote
 
@@ -342,10 +342,12 @@ contains
                 end do
                 ! key (with an optional subscript) ends at k
                 if (body(k:k) == ')') then
-                    do while (k > last_eq .and. body(k:k) /= '(')
-                        k = k - 1
+                    j = k
+                    do while (j > last_eq .and. body(j:j) /= '(')
+                        j = j - 1
                     end do
-                    k = k - 1
+                    ! no '(' since the '=' before: the ')' is part of the (bad) key
+                    if (body(j:j) == '(') k = j - 1
                 end if
                 key_start = max(k, 1)
                 do while (key_start > last_eq)
