@@ -14,7 +14,8 @@ module driver_echo
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
     use seispulse, only: dp, shortest_str, int_str
-    use driver_namelist_scan, only: nml_group, scan_unit, lower, text_buffer, append, contents
+    use driver_namelist_scan, only: nml_group, scan_unit, lower, text_buffer, append, contents, &
+                                    next_value
     use driver_input, only: find_group, given
     use driver_tables, only: table_path, open_output
     implicit none
@@ -302,32 +303,14 @@ contains
     subroutine split_values(text, a, b)
         character(len=*), intent(in) :: text
         integer, allocatable, intent(out) :: a(:), b(:)
-        integer :: i, start
-        character :: q
+        integer :: pos, i1, i2
         allocate(a(0), b(0))
-        q = ' '
-        start = 0
-        do i = 1, len(text) + 1
-            if (i <= len(text)) then
-                if (q /= ' ') then
-                    if (text(i:i) == q) q = ' '
-                    cycle
-                end if
-                if (text(i:i) == '"' .or. text(i:i) == '''') then
-                    q = text(i:i)
-                    if (start == 0) start = i
-                    cycle
-                end if
-                if (text(i:i) /= ',' .and. text(i:i) /= ' ') then
-                    if (start == 0) start = i
-                    cycle
-                end if
-            end if
-            if (start > 0) then
-                a = [a, start]
-                b = [b, i - 1]
-                start = 0
-            end if
+        pos = 1
+        do
+            call next_value(text, pos, i1, i2)
+            if (i1 == 0) exit
+            a = [a, i1]
+            b = [b, i2]
         end do
     end subroutine split_values
 

@@ -5,7 +5,7 @@ module driver_input
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
     use seispulse, only: dp, shortest_str, real_str, int_str
     use, intrinsic :: iso_fortran_env, only: int64
-    use driver_namelist_scan, only: nml_group, nml_item, lower
+    use driver_namelist_scan, only: nml_group, nml_item, lower, next_value
     implicit none
     private
 
@@ -192,45 +192,27 @@ contains
         character(len=*), intent(in) :: text
         integer(int64), intent(out) :: count
         character(len=:), allocatable, intent(out) :: first
-        integer :: i, start, star, reps, ios
-        character :: q
+        integer :: pos, start, last, star, reps, ios
         count = 0
         first = ''
-        q = ' '
-        start = 0
-        do i = 1, len(text) + 1
-            if (i <= len(text)) then
-                if (q /= ' ') then
-                    if (text(i:i) == q) q = ' '
-                    cycle
-                end if
-                if (text(i:i) == '"' .or. text(i:i) == '''') then
-                    q = text(i:i)
-                    if (start == 0) start = i
-                    cycle
-                end if
-                if (text(i:i) /= ',' .and. text(i:i) /= ' ') then
-                    if (start == 0) start = i
-                    cycle
-                end if
-            end if
-            if (start > 0) then
-                reps = 1
-                star = index(text(start:i - 1), '*')
-                if (star > 1) then
-                    if (verify(text(start:start + star - 2), '0123456789') == 0) then
-                        read(text(start:start + star - 2), *, iostat=ios) reps
-                        if (ios /= 0) reps = 1
-                    else
-                        star = 0
-                    end if
+        pos = 1
+        do
+            call next_value(text, pos, start, last)
+            if (start == 0) exit
+            reps = 1
+            star = index(text(start:last), '*')
+            if (star > 1) then
+                if (verify(text(start:start + star - 2), '0123456789') == 0) then
+                    read(text(start:start + star - 2), *, iostat=ios) reps
+                    if (ios /= 0) reps = 1
                 else
                     star = 0
                 end if
-                if (count == 0) first = text(start + star:i - 1)
-                count = count + reps
-                start = 0
+            else
+                star = 0
             end if
+            if (count == 0) first = text(start + star:last)
+            count = count + reps
         end do
     end subroutine count_values
 

@@ -11,13 +11,15 @@ module driver_namelist_scan
     private
 
     public :: nml_item, nml_group, scan_file, scan_unit, lower, read_line, control_char, &
-              char_name, text_buffer, append, contents
-    public :: max_line_len, max_input_len
+              char_name, text_buffer, append, contents, next_value, unreadable
+    public :: max_line_len, max_input_len, max_groups, max_items
 
     !> Longest line of an input file (characters): a longer one is not a namelist input.
     integer, parameter :: max_line_len = 262144
     !> Longest input file (characters, with the ends of lines).
     integer, parameter :: max_input_len = 8 * 1048576
+    !> Most groups in an input file, and items (key = value) in one group.
+    integer, parameter :: max_groups = 1000, max_items = 100000
 
     !> A text that grows by `append` (capacity doubled when full); `contents` is its text.
     type :: text_buffer
@@ -55,18 +57,8 @@ contains
 
         stat = 1
         allocate(groups(0))
-        select case (path_kind(path))
-        case (PATH_NONE)
-            errmsg = path//': cannot open the input file: no such file (or it cannot be ' &
-                     //'reached)'
-            return
-        case (PATH_DIR)
-            errmsg = path//': is a directory, not an input file'
-            return
-        case (PATH_OTHER)
-            errmsg = path//': not a regular file (a device, a pipe or a socket)'
-            return
-        end select
+        errmsg = unreadable(path, 'input file')
+        if (len(errmsg) > 0) return
         open(newunit=u, file=path, status='old', action='read', iostat=ios, iomsg=iomsg)
         if (ios /= 0) then
             errmsg = path//': cannot open the input file: '//trim(iomsg)
@@ -91,7 +83,7 @@ contains
         type(text_buffer) :: body
         type(nml_group), allocatable :: found(:)
         character(len=512) :: iomsg
-        integer :: ios, lineno, i, start_line, ngroups, max_len, bad, nline
+        integer :: ios, lineno, i, start_line, ngroups, max_len, bad, nline, item_cap
         integer(int64) :: total
         logical :: in_group, check, too_long
         character :: quote
@@ -100,6 +92,8 @@ contains
         if (present(checked)) check = checked
         max_len = huge(0)
         if (check) max_len = max_line_len
+        item_cap = huge(0) - 1
+        if (check) item_cap = max_items
         allocate(found(8))
         ngroups = 0
         errmsg = ''
@@ -161,19 +155,30 @@ contains
                     end if
                 case ('/')
                     if (in_group) then
-                        call add_group(found, ngroups, contents(body), start_line)
+                        if (check .and. ngroups == max_groups) then
+                            stat = 1
+                            errmsg = int_text(start_line)//': more than '//int_text(max_groups) &
+                                     //' groups (not a namelist input file?)'
+                            exit
+                        end if
+                        call add_group(found, ngroups, contents(body), start_line, item_cap)
                         in_group = .false.
+                        if (check .and. size(found(ngroups)%items) > max_items) then
+                            stat = 1
+                            errmsg = int_text(start_line)//': &'//found(ngroups)%name &
+                                     //': more than '//int_text(max_items)//' items ' &
+                                     //'(key = value) in the group'
+                            exit
+                        end if
                     end if
                 case default
                     if (in_group) call append(body, line(i:i))
                 end select
             end do
+            if (stat /= 0) exit
             if (in_group) call append(body, ' ')
         end do
-        allocate(groups(ngroups))
-        do i = 1, ngroups
-            call move_group(found(i), groups(i))
-        end do
+        groups = found(1:ngroups)
         if (stat /= 0) return
         if (in_group) then
             stat = 1
@@ -187,6 +192,64 @@ contains
             errmsg = trim(iomsg)
         end if
     end subroutine scan_unit
+
+    !> The next value of namelist value text ("a, b c ,d": separated by commas and blanks
+    !> outside quotes) from position pos: text(a:b), a = 0 when there is none; pos moves
+    !> past it.
+    pure subroutine next_value(text, pos, a, b)
+        character(len=*), intent(in) :: text
+        integer, intent(inout) :: pos
+        integer, intent(out) :: a, b
+        integer :: i
+        character :: q
+        a = 0
+        b = 0
+        q = ' '
+        do i = pos, len(text) + 1
+            if (i <= len(text)) then
+                if (q /= ' ') then
+                    if (text(i:i) == q) q = ' '
+                    cycle
+                end if
+                if (text(i:i) == '"' .or. text(i:i) == '''') then
+                    q = text(i:i)
+                    if (a == 0) a = i
+                    cycle
+                end if
+                if (text(i:i) /= ',' .and. text(i:i) /= ' ') then
+                    if (a == 0) a = i
+                    cycle
+                end if
+            end if
+            if (a > 0) then
+                b = i - 1
+                pos = i + 1
+                return
+            end if
+        end do
+        pos = len(text) + 2
+    end subroutine next_value
+
+    !> What keeps `path` from being read as a text file: '' if nothing, else "path: is a
+    !> directory, not a list file" (what = 'list file'), "path: cannot open the list
+    !> file: no such file ...", "path: not a regular file ...".
+    function unreadable(path, what) result(msg)
+        character(len=*), intent(in) :: path, what
+        character(len=:), allocatable :: msg
+        msg = ''
+        select case (path_kind(path))
+        case (PATH_NONE)
+            msg = path//': cannot open the '//what//': no such file (or it cannot be reached)'
+        case (PATH_DIR)
+            if (index('aeiou', what(1:1)) > 0) then
+                msg = path//': is a directory, not an '//what
+            else
+                msg = path//': is a directory, not a '//what
+            end if
+        case (PATH_OTHER)
+            msg = path//': not a regular file (a device, a pipe or a socket)'
+        end select
+    end function unreadable
 
     !> One line (non-advancing reads of 512-character chunks into a buffer that doubles);
     !> ios /= 0 at the end of the file. A line longer than max_len is cut there with
@@ -285,22 +348,15 @@ contains
         end if
     end function contents
 
-    !> Move group `from` into `to` (its items are not copied).
-    subroutine move_group(from, to)
-        type(nml_group), intent(inout) :: from
-        type(nml_group), intent(out) :: to
-        call move_alloc(from%name, to%name)
-        to%line = from%line
-        call move_alloc(from%items, to%items)
-    end subroutine move_group
-
     !> Split "name key = value, key = value ..." into the group name and items: the group
-    !> groups(ngroups + 1) (the array doubled when full).
-    subroutine add_group(groups, ngroups, body, line)
+    !> groups(ngroups + 1) (the array doubled when full). After max_items items the rest
+    !> of the body is one more item.
+    subroutine add_group(groups, ngroups, body, line, max_items)
         type(nml_group), allocatable, intent(inout) :: groups(:)
         integer, intent(inout) :: ngroups
         character(len=*), intent(in) :: body
         integer, intent(in) :: line
+        integer, intent(in) :: max_items
         type(nml_group), allocatable :: more(:)
         integer :: i, j, n, name_end, eq, key_start, k, prev_eq, item_start, neq, last_eq
         integer, allocatable :: eqs(:), keys(:)
@@ -308,9 +364,7 @@ contains
 
         if (ngroups == size(groups)) then
             allocate(more(2 * size(groups)))
-            do i = 1, ngroups
-                call move_group(groups(i), more(i))
-            end do
+            more(1:ngroups) = groups(1:ngroups)
             call move_alloc(more, groups)
         end if
         ngroups = ngroups + 1
@@ -362,6 +416,7 @@ contains
                 eqs(neq) = eq
                 keys(neq) = key_start
                 last_eq = eq
+                if (neq > max_items) exit
             end if
         end do
         allocate(groups(ngroups)%items(neq))

@@ -15,9 +15,8 @@ module driver_records
                          RECORD_COLUMN, UNITS_G, UNITS_M_S2, UNITS_CM_S2, finite_at_least, &
                          finite_positive, accel_unit_code, parse_real, NUM_OK, NUM_RANGE
     use driver_namelist_scan, only: nml_group, lower, read_line, control_char, char_name, &
-                                    text_buffer, append, contents, max_line_len
-    use driver_paths, only: path_kind, glob_files, has_glob_chars, string_t, PATH_NONE, &
-                            PATH_DIR, PATH_OTHER
+                                    text_buffer, append, contents, max_line_len, unreadable
+    use driver_paths, only: glob_files, has_glob_chars, string_t
     use driver_input, only: located, join, given, list_length, list_item, name_index, &
                             value_name
     use driver_echo, only: echo_unit, echo_path
@@ -467,33 +466,14 @@ contains
         integer, intent(inout) :: nrec
         type(record_in_t), intent(in) :: r
         type(record_in_t), allocatable :: more(:)
-        integer :: j
         if (nrec == size(found)) then
             allocate(more(2 * size(found)))
-            do j = 1, nrec
-                call move_record(found(j), more(j))
-            end do
+            more(1:nrec) = found(1:nrec)
             call move_alloc(more, found)
         end if
         nrec = nrec + 1
         found(nrec) = r
     end subroutine add_record
-
-    !> Move record input `from` into `to` (its strings are not copied).
-    subroutine move_record(from, to)
-        type(record_in_t), intent(inout) :: from
-        type(record_in_t), intent(out) :: to
-        if (allocated(from%file)) call move_alloc(from%file, to%file)
-        if (allocated(from%path)) call move_alloc(from%path, to%path)
-        if (allocated(from%name)) call move_alloc(from%name, to%name)
-        to%line = from%line
-        to%fmt = from%fmt
-        to%units = from%units
-        to%dt = from%dt
-        to%scale = from%scale
-        to%target = from%target
-        to%polarity = from%polarity
-    end subroutine move_record
 
     ! ------------------------------------------------------------------------------
     ! The list file (list = 'suite.csv')
@@ -517,19 +497,8 @@ contains
         integer :: u, ios, lineno, ncell, ncol, j, k, bad, nrows
         logical :: too_long
 
-        errmsg = ''
-        select case (path_kind(opened))
-        case (PATH_NONE)
-            errmsg = opened//': cannot open the list file: no such file (or it cannot be ' &
-                     //'reached)'
-            return
-        case (PATH_DIR)
-            errmsg = opened//': is a directory, not a list file'
-            return
-        case (PATH_OTHER)
-            errmsg = opened//': not a regular file (a device, a pipe or a socket)'
-            return
-        end select
+        errmsg = unreadable(opened, 'list file')
+        if (len(errmsg) > 0) return
         open(newunit=u, file=opened, status='old', action='read', iostat=ios, iomsg=iomsg)
         if (ios /= 0) then
             errmsg = opened//': cannot open the list file: '//trim(iomsg)
