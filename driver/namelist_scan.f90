@@ -6,12 +6,14 @@
 !> its key by re-reading each "key = value" item alone from an internal file.
 module driver_namelist_scan
     use, intrinsic :: iso_fortran_env, only: int64
+    use seispulse, only: int_str
     use driver_paths, only: path_kind, PATH_NONE, PATH_DIR, PATH_OTHER
     implicit none
     private
 
     public :: nml_item, nml_group, scan_file, scan_unit, lower, read_line, control_char, &
-              char_name, text_buffer, append, contents, next_value, unreadable
+              char_name, text_buffer, append, contents, next_value, unreadable, &
+              open_text
     public :: max_line_len, max_input_len, max_groups, max_items
 
     !> Longest line of an input file (characters): a longer one is not a namelist input.
@@ -52,18 +54,12 @@ contains
         type(nml_group), allocatable, intent(out) :: groups(:)
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
-        character(len=512) :: iomsg
-        integer :: u, ios
+        integer :: u
 
         stat = 1
         allocate(groups(0))
-        errmsg = unreadable(path, 'input file')
+        call open_text(path, 'input file', u, errmsg)
         if (len(errmsg) > 0) return
-        open(newunit=u, file=path, status='old', action='read', iostat=ios, iomsg=iomsg)
-        if (ios /= 0) then
-            errmsg = path//': cannot open the input file: '//trim(iomsg)
-            return
-        end if
         deallocate(groups)
         call scan_unit(u, groups, stat, errmsg, checked=.true.)
         close(u)
@@ -110,22 +106,22 @@ contains
             if (check) then
                 if (too_long) then
                     stat = 1
-                    errmsg = int_text(lineno)//': line longer than '//int_text(max_line_len) &
+                    errmsg = int_str(lineno)//': line longer than '//int_str(max_line_len) &
                              //' characters (not a namelist input file?)'
                     exit
                 end if
                 bad = control_char(line)
                 if (bad > 0) then
                     stat = 1
-                    errmsg = int_text(lineno)//': '//char_name(line(bad:bad))//' at column ' &
-                             //int_text(bad)//': not a text file (a namelist input is text)'
+                    errmsg = int_str(lineno)//': '//char_name(line(bad:bad))//' at column ' &
+                             //int_str(bad)//': not a text file (a namelist input is text)'
                     exit
                 end if
                 total = total + len(line) + 1
                 if (total > max_input_len) then
                     stat = 1
-                    errmsg = int_text(lineno)//': the input is longer than ' &
-                             //int_text(max_input_len)//' characters (not a namelist ' &
+                    errmsg = int_str(lineno)//': the input is longer than ' &
+                             //int_str(max_input_len)//' characters (not a namelist ' &
                              //'input file?)'
                     exit
                 end if
@@ -157,7 +153,7 @@ contains
                     if (in_group) then
                         if (check .and. ngroups == max_groups) then
                             stat = 1
-                            errmsg = int_text(start_line)//': more than '//int_text(max_groups) &
+                            errmsg = int_str(start_line)//': more than '//int_str(max_groups) &
                                      //' groups (not a namelist input file?)'
                             exit
                         end if
@@ -165,8 +161,8 @@ contains
                         in_group = .false.
                         if (check .and. size(found(ngroups)%items) > max_items) then
                             stat = 1
-                            errmsg = int_text(start_line)//': &'//found(ngroups)%name &
-                                     //': more than '//int_text(max_items)//' items ' &
+                            errmsg = int_str(start_line)//': &'//found(ngroups)%name &
+                                     //': more than '//int_str(max_items)//' items ' &
                                      //'(key = value) in the group'
                             exit
                         end if
@@ -229,6 +225,21 @@ contains
         end do
         pos = len(text) + 2
     end subroutine next_value
+
+    !> Open `path` for reading as a text file on a new unit u ("what": 'input file', 'list
+    !> file', for the messages); errmsg: '' or why not (unreadable, or the open's message).
+    subroutine open_text(path, what, u, errmsg)
+        character(len=*), intent(in) :: path, what
+        integer, intent(out) :: u
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=512) :: iomsg
+        integer :: ios
+        u = -1
+        errmsg = unreadable(path, what)
+        if (len(errmsg) > 0) return
+        open(newunit=u, file=path, status='old', action='read', iostat=ios, iomsg=iomsg)
+        if (ios /= 0) errmsg = path//': cannot open the '//what//': '//trim(iomsg)
+    end subroutine open_text
 
     !> What keeps `path` from being read as a text file: '' if nothing, else "path: is a
     !> directory, not a list file" (what = 'list file'), "path: cannot open the list
@@ -300,17 +311,9 @@ contains
         if (iachar(c) == 0) then
             s = 'a NUL byte'
         else
-            s = 'control character '//int_text(iachar(c))
+            s = 'control character '//int_str(iachar(c))
         end if
     end function char_name
-
-    pure function int_text(i) result(s)
-        integer, intent(in) :: i
-        character(len=:), allocatable :: s
-        character(len=16) :: t
-        write(t, '(i0)') i
-        s = trim(t)
-    end function int_text
 
     ! ------------------------------------------------------------------------------
     ! A text that grows by appending (capacity doubled: linear time in its length)

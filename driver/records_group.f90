@@ -15,7 +15,7 @@ module driver_records
                          RECORD_COLUMN, UNITS_G, UNITS_M_S2, UNITS_CM_S2, finite_at_least, &
                          finite_positive, accel_unit_code, parse_real, NUM_OK, NUM_RANGE
     use driver_namelist_scan, only: nml_group, lower, read_line, control_char, char_name, &
-                                    text_buffer, append, contents, max_line_len, unreadable
+                                    text_buffer, append, contents, max_line_len, open_text
     use driver_paths, only: glob_files, has_glob_chars, string_t
     use driver_input, only: located, join, given, list_length, list_item, name_index, &
                             value_name
@@ -492,18 +492,12 @@ contains
         character(len=:), allocatable, intent(out) :: errmsg
         type(string_t), allocatable :: cells(:)
         character(len=:), allocatable :: line, at
-        character(len=512) :: iomsg
         integer, allocatable :: col(:)
         integer :: u, ios, lineno, ncell, ncol, j, k, bad, nrows
         logical :: too_long
 
-        errmsg = unreadable(opened, 'list file')
+        call open_text(opened, 'list file', u, errmsg)
         if (len(errmsg) > 0) return
-        open(newunit=u, file=opened, status='old', action='read', iostat=ios, iomsg=iomsg)
-        if (ios /= 0) then
-            errmsg = opened//': cannot open the list file: '//trim(iomsg)
-            return
-        end if
         lineno = 0
         ncol = 0
         nrows = 0
