@@ -14,7 +14,8 @@ module driver_echo
     use, intrinsic :: iso_fortran_env, only: output_unit
     use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
     use seispulse, only: dp, shortest_str, int_str
-    use driver_namelist_scan, only: nml_group, scan_unit, lower
+    use driver_namelist_scan, only: nml_group, scan_unit, lower, text_buffer, append, contents, &
+                                    next_value
     use driver_input, only: find_group, given
     use driver_tables, only: table_path, open_output
     implicit none
@@ -172,16 +173,16 @@ contains
         type(nml_group), intent(in) :: raw(:), groups(:)
         character(len=:), allocatable :: text
         character(len=:), allocatable :: key, gname
+        type(text_buffer) :: buf
         type(string_t), allocatable :: values(:)
         type(string_t), allocatable :: done(:)
         integer :: i, i2, j, k, ig, n, eq, col
         allocate(values(0))
-        text = ''
         do i = 1, size(raw)
             gname = lower(raw(i)%name)
             ig = find_group(groups, gname)
             if (ig == 0 .or. find_group(raw(1:i - 1), raw(i)%name) > 0) cycle
-            text = text//'&'//gname//new_line('a')
+            call append(buf, '&'//gname//new_line('a'))
             allocate(done(0))
             do i2 = i, size(raw)
                 if (raw(i2)%name /= raw(i)%name) cycle
@@ -192,19 +193,19 @@ contains
                     done = [done, string_t(key)]
                     eq = index(raw(i2)%items(j)%text, '=')
                     call clean_values(raw(i2)%items(j)%text(eq + 1:), .true., values, n)
-                    text = text//'    '//key//' = '//values(1)%s
+                    call append(buf, '    '//key//' = '//values(1)%s)
                     col = 7 + len(key) + len(values(1)%s)
                     do k = 2, n
                         if (col + 2 + len(values(k)%s) > line_len) then
-                            text = text//','//new_line('a')//repeat(' ', 7 + len(key)) &
-                                   //values(k)%s
+                            call append(buf, ','//new_line('a')//repeat(' ', 7 + len(key)) &
+                                       //values(k)%s)
                             col = 7 + len(key) + len(values(k)%s)
                         else
-                            text = text//', '//values(k)%s
+                            call append(buf, ', '//values(k)%s)
                             col = col + 2 + len(values(k)%s)
                         end if
                     end do
-                    text = text//new_line('a')
+                    call append(buf, new_line('a'))
                 end do
             end do
             ! keys the analysis does not echo (a range the echo gives as a list, say): as
@@ -212,11 +213,12 @@ contains
             do j = 1, size(groups(ig)%items)
                 key = groups(ig)%items(j)%key
                 if (any([(done(k)%s == key, k = 1, size(done))])) cycle
-                text = text//'    '//trim(adjustl(groups(ig)%items(j)%text))//new_line('a')
+                call append(buf, '    '//trim(adjustl(groups(ig)%items(j)%text))//new_line('a'))
             end do
             deallocate(done)
-            text = text//'/'//new_line('a')
+            call append(buf, '/'//new_line('a'))
         end do
+        text = contents(buf)
     end function echo_text
 
     !> The values of one item ("v1, n*v2, ..." as gfortran writes them) as namelist input
@@ -301,32 +303,14 @@ contains
     subroutine split_values(text, a, b)
         character(len=*), intent(in) :: text
         integer, allocatable, intent(out) :: a(:), b(:)
-        integer :: i, start
-        character :: q
+        integer :: pos, i1, i2
         allocate(a(0), b(0))
-        q = ' '
-        start = 0
-        do i = 1, len(text) + 1
-            if (i <= len(text)) then
-                if (q /= ' ') then
-                    if (text(i:i) == q) q = ' '
-                    cycle
-                end if
-                if (text(i:i) == '"' .or. text(i:i) == '''') then
-                    q = text(i:i)
-                    if (start == 0) start = i
-                    cycle
-                end if
-                if (text(i:i) /= ',' .and. text(i:i) /= ' ') then
-                    if (start == 0) start = i
-                    cycle
-                end if
-            end if
-            if (start > 0) then
-                a = [a, start]
-                b = [b, i - 1]
-                start = 0
-            end if
+        pos = 1
+        do
+            call next_value(text, pos, i1, i2)
+            if (i1 == 0) exit
+            a = [a, i1]
+            b = [b, i2]
         end do
     end subroutine split_values
 

@@ -4,7 +4,8 @@
 module driver_input
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
     use seispulse, only: dp, shortest_str, real_str, int_str
-    use driver_namelist_scan, only: nml_group, lower
+    use, intrinsic :: iso_fortran_env, only: int64
+    use driver_namelist_scan, only: nml_group, nml_item, lower, next_value
     implicit none
     private
 
@@ -122,13 +123,98 @@ contains
             iomsg = ''
             call reader(-1, '&'//group%name//' '//group%items(i)%text//' /', ios, iomsg)
             if (ios /= 0) then
-                errmsg = located(path, group)//group%items(i)%key//': bad value in "' &
-                         //group%items(i)%text//'" ('//trim(iomsg)//')'
+                errmsg = located(path, group)//item_problem(group%name, group%items(i), &
+                                                            reader, iomsg)
                 return
             end if
         end do
         errmsg = located(path, group)//'cannot read the group ('//trim(iomsg)//')'
     end subroutine read_group
+
+    !> What is wrong with an item that does not read alone: more values than its list
+    !> holds ("ky: 1200 values, more than the list holds (1000)"), else "key: bad value
+    !> in "key = ..." (the compiler's message)", the item cut after max_quoted characters.
+    function item_problem(gname, item, reader, iomsg) result(text)
+        character(len=*), intent(in) :: gname
+        type(nml_item), intent(in) :: item
+        procedure(group_reader) :: reader
+        character(len=*), intent(in) :: iomsg
+        character(len=:), allocatable :: text
+        integer, parameter :: max_quoted = 100
+        character(len=:), allocatable :: first
+        character(len=512) :: msg
+        integer :: nvalues, lo, hi, mid, ios, eq
+        integer(int64) :: count
+        text = item%key//': bad value in "'//item%text(1:min(len(item%text), max_quoted))
+        if (len(item%text) > max_quoted) text = text//' ...'
+        text = text//'" ('//trim(iomsg)//')'
+        ! a list longer than its array: count the values, then find the size of the array
+        ! (the largest subscript that reads, by bisection)
+        eq = index(item%text, '=')
+        if (eq == 0 .or. index(item%text(1:eq), '(') > 0) return
+        call count_values(item%text(eq + 1:), count, first)
+        if (count < 2 .or. len(first) == 0) return
+        nvalues = int(min(count, int(huge(0), int64) - 1_int64))
+        if (.not. reads(1)) return
+        if (reads(nvalues)) return
+        lo = 1
+        hi = 2
+        do while (hi < nvalues)
+            if (.not. reads(hi)) exit
+            lo = hi
+            hi = 2 * hi
+        end do
+        hi = min(hi, nvalues)
+        ! reads(lo), not reads(hi)
+        do while (hi - lo > 1)
+            mid = lo + (hi - lo) / 2
+            if (reads(mid)) then
+                lo = mid
+            else
+                hi = mid
+            end if
+        end do
+        text = item%key//': '//int_str(nvalues)//' values, more than the list holds (' &
+               //int_str(lo)//')'
+    contains
+        logical function reads(i)
+            integer, intent(in) :: i
+            msg = ''
+            call reader(-1, '&'//gname//' '//item%key//'('//int_str(i)//') = '//first//' /', &
+                        ios, msg)
+            reads = ios == 0
+        end function reads
+    end function item_problem
+
+    !> The number of values in namelist value text "v1, 3*v2 v3" (commas or blanks
+    !> between them, outside quotes; r*v counts r) and the first value (without r*).
+    subroutine count_values(text, count, first)
+        character(len=*), intent(in) :: text
+        integer(int64), intent(out) :: count
+        character(len=:), allocatable, intent(out) :: first
+        integer :: pos, start, last, star, reps, ios
+        count = 0
+        first = ''
+        pos = 1
+        do
+            call next_value(text, pos, start, last)
+            if (start == 0) exit
+            reps = 1
+            star = index(text(start:last), '*')
+            if (star > 1) then
+                if (verify(text(start:start + star - 2), '0123456789') == 0) then
+                    read(text(start:start + star - 2), *, iostat=ios) reps
+                    if (ios /= 0) reps = 1
+                else
+                    star = 0
+                end if
+            else
+                star = 0
+            end if
+            if (count == 0) first = text(start + star:last)
+            count = count + reps
+        end do
+    end subroutine count_values
 
     !> Check the keys of an optional group and read it; an empty group (line 0) if absent.
     subroutine read_optional(path, groups, name, keys, reader, group, stat, errmsg)

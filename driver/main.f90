@@ -73,6 +73,8 @@ program seispulse_driver
 
     call scan_file(path, groups, stat, errmsg)
     if (stat /= 0) call fail(errmsg)
+    if (size(groups) == 0) call fail(path//':1: no namelist group in the input (empty, or ' &
+        //'only comments: it needs &run analysis = ..., output = ... /)')
 
     ! every group must be known and appear once
     do i = 1, size(groups)

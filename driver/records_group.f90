@@ -13,8 +13,10 @@ module driver_records
                          record_pga, &
                          pga_scale_factor, record_format_name, record_units_name, RECORD_AUTO, &
                          RECORD_COLUMN, UNITS_G, UNITS_M_S2, UNITS_CM_S2, finite_at_least, &
-                         finite_positive, accel_unit_code
-    use driver_namelist_scan, only: nml_group, lower
+                         finite_positive, accel_unit_code, parse_real, NUM_OK, NUM_RANGE
+    use driver_namelist_scan, only: nml_group, lower, read_line, control_char, char_name, &
+                                    text_buffer, append, contents, max_line_len, open_text
+    use driver_paths, only: glob_files, has_glob_chars, string_t
     use driver_input, only: located, join, given, list_length, list_item, name_index, &
                             value_name
     use driver_echo, only: echo_unit, echo_path
@@ -26,11 +28,14 @@ module driver_records
     public :: path_len, short, records_missing, record_line, failed_records, resolve, &
               count_strings, label_len
 
-    character(len=12), parameter :: records_keys(8) = [character(len=12) :: 'files', &
-        'format', 'units', 'dt', 'scale', 'target_pga', 'pga_rounding', 'polarity']
+    character(len=12), parameter :: records_keys(9) = [character(len=12) :: 'files', &
+        'format', 'units', 'dt', 'scale', 'target_pga', 'pga_rounding', 'polarity', 'list']
     character(len=10), parameter :: format_names(5) = [character(len=10) :: 'auto', 'at2', &
         'slammer', 'column', 'time_accel']
     character(len=7), parameter :: rounding_names(2) = [character(len=7) :: 'exact', 'slammer']
+    !> Columns of a list file (`list`): path first, the others optional.
+    character(len=10), parameter :: list_columns(8) = [character(len=10) :: 'path', 'name', &
+        'scale', 'target_pga', 'units', 'format', 'dt', 'polarity']
 
     !> Most record files.
     integer, parameter :: max_files = 500
@@ -45,18 +50,33 @@ module driver_records
     character(len=*), parameter :: records_missing = ' (it lists the record files: ' &
         //'files = ''a.AT2'', ...)'
 
+    ! the problems of a value (after "key = value"), the same in &records and in a list
+    character(len=*), parameter :: bad_dt = ': must be a finite time step >= 0 (s; 0: from ' &
+        //'the file)'
+    character(len=*), parameter :: bad_scale = ': must be a finite factor > 0 (polarity = ' &
+        //'-1 turns the record over)'
+    character(len=*), parameter :: bad_target = ': must be a finite PGA > 0 (g; 0: use scale)'
+    character(len=*), parameter :: bad_polarity = ': must be 1 or -1 (-1 turns the record ' &
+        //'over before anything else)'
+    character(len=*), parameter :: auto_units = '; or auto (the AT2 header''s units, else g)'
+
     ! namelist variables (defaults are set in records_defaults)
-    character(len=path_len) :: files(max_files)
+    character(len=path_len) :: files(max_files), list
     character(len=32) :: format(max_files), units(max_files)
     real(dp) :: dt(max_files), scale(max_files), target_pga(max_files)
     character(len=32) :: pga_rounding
     integer :: polarity(max_files)
-    namelist /records/ files, format, units, dt, scale, target_pga, pga_rounding, polarity
+    namelist /records/ files, format, units, dt, scale, target_pga, pga_rounding, polarity, list
 
     !> One record file and how to read and scale it.
     type :: record_in_t
-        character(len=:), allocatable :: file   !! as written in &records
+        character(len=:), allocatable :: file   !! as written in &records (a file a pattern
+                                                !! matched: as if written there), or in the
+                                                !! path column of the list
         character(len=:), allocatable :: path   !! the path opened (relative to the input)
+        character(len=:), allocatable :: name   !! its label in the tables (the list's name
+                                                !! column); unset or '': the file stem
+        integer :: line = 0                     !! its line in the list file, 0: from files
         integer :: fmt = RECORD_AUTO            !! RECORD_*
         integer :: units = 0                    !! UNITS_*, 0: auto (AT2 header, else g)
         real(dp) :: dt = 0.0_dp                 !! s, 0: from the file
@@ -64,6 +84,19 @@ module driver_records
         real(dp) :: target = 0.0_dp             !! target PGA (g), 0: use scale
         integer :: polarity = 1                 !! +1 or -1
     end type record_in_t
+
+    !> The &records group of the last check_records as given, for echo_records: its files
+    !> entries (patterns as written, path = the entry as opened), the value of each per-file
+    !> key for every record (one value given, else the default), how many values each was
+    !> given (format, units, dt, scale, target_pga, polarity) and the list file as opened
+    !> ('' without one).
+    type :: records_given_t
+        type(record_in_t), allocatable :: entries(:)
+        type(record_in_t) :: shared
+        integer :: counts(6) = 0
+        character(len=:), allocatable :: list
+    end type records_given_t
+    type(records_given_t), save :: last_given
 
     !> What happened to one record.
     type :: record_out_t
@@ -85,6 +118,7 @@ contains
         real(dp) :: nan
         nan = ieee_value(nan, ieee_quiet_nan)
         files = ''
+        list = ''
         format = ''
         units = ''
         dt = nan
@@ -107,34 +141,51 @@ contains
         end if
     end subroutine read_records
 
-    !> Check &records (read by read_records) and fill recs. errmsg is empty on success.
+    !> Check &records (read by read_records) and fill recs: the files of `files` in order
+    !> (a pattern: the files it matches, sorted), then the rows of the list file `list`.
+    !> errmsg is empty on success.
     subroutine check_records(path, gr, recs, slammer_rounding, errmsg)
         character(len=*), intent(in) :: path
         type(nml_group), intent(in) :: gr
         type(record_in_t), allocatable, intent(out) :: recs(:)  !! one per file
         logical, intent(out) :: slammer_rounding                 !! pga_rounding = 'slammer'
         character(len=:), allocatable, intent(out) :: errmsg
-        character(len=:), allocatable :: where, item
-        integer :: n, i, k, n_fmt, n_units, n_dt, n_scale, n_target, n_pol, code
+        type(record_in_t), allocatable :: entries(:), found(:)
+        type(record_in_t) :: shared
+        character(len=:), allocatable :: where, item, list_opened
+        integer :: n, i, k, n_fmt, n_units, n_dt, n_scale, n_target, n_pol, nrec
         real(dp) :: x
         character(len=256) :: msg
 
         where = located(path, gr)
         errmsg = ''
         slammer_rounding = .false.
-        if (.not. given(gr, 'files')) then
-            errmsg = where//'files: missing (the record files: files = ''a.AT2'', ''b.csv'')'
+        if (.not. (given(gr, 'files') .or. given(gr, 'list'))) then
+            errmsg = where//'files: missing (the record files: files = ''a.AT2'', ''b.csv'', ' &
+                     //'or a list of them: list = ''suite.csv'')'
             return
         end if
-        call count_strings(files, 'files', n, errmsg)
-        if (len(errmsg) > 0) then
-            errmsg = where//errmsg
-            return
+        n = 0
+        if (given(gr, 'files')) then
+            call count_strings(files, 'files', n, errmsg)
+            if (len(errmsg) > 0) then
+                errmsg = where//errmsg
+                return
+            end if
         end if
-        allocate(recs(n))
+        list_opened = ''
+        if (given(gr, 'list')) then
+            if (len_trim(list) == 0) then
+                errmsg = where//'list: empty (the list file of the records: list = ' &
+                         //'''suite.csv'')'
+                return
+            end if
+            list_opened = resolve(path, trim(adjustl(list)))
+        end if
+        allocate(entries(n))
         do i = 1, n
-            recs(i)%file = trim(adjustl(files(i)))
-            recs(i)%path = resolve(path, recs(i)%file)
+            entries(i)%file = trim(adjustl(files(i)))
+            entries(i)%path = resolve(path, entries(i)%file)
         end do
 
         ! --- how many values each per-file key has: 1 (all files) or n (one each)
@@ -165,94 +216,15 @@ contains
         call check_count('polarity', n_pol)
         if (len(errmsg) > 0) return
 
-        ! --- the values
-        do i = 1, n
-            associate (r => recs(i))
-                if (n_fmt > 0) then
-                    k = min(i, n_fmt)
-                    item = value_name('format', k, n_fmt)
-                    code = name_index(format(k), format_names)
-                    if (code == 0) then
-                        errmsg = where//item//' = '''//trim(format(k))//''': unknown format ' &
-                                 //'(allowed: '//join(format_names)//')'
-                        return
-                    end if
-                    ! format_names are in the order of the RECORD_* codes
-                    r%fmt = RECORD_AUTO + code - 1
-                    if (record_format_name(r%fmt) /= trim(format_names(code))) then
-                        errmsg = where//item//': internal error: format codes changed'
-                        return
-                    end if
-                end if
-                if (n_units > 0) then
-                    k = min(i, n_units)
-                    item = value_name('units', k, n_units)
-                    if (trim(lower(adjustl(units(k)))) == 'auto') then
-                        r%units = 0
-                    else
-                        ! the one vocabulary of acceleration units (seispulse_records)
-                        call accel_unit_code(units(k), r%units, code, msg)
-                        if (code /= SEISPULSE_SUCCESS) then
-                            errmsg = where//item//' = '//trim(msg)//'; or auto (the AT2 ' &
-                                     //'header''s units, else g)'
-                            return
-                        end if
-                    end if
-                end if
-                if (n_dt > 0) then
-                    k = min(i, n_dt)
-                    x = dt(k)
-                    if (.not. finite_at_least(x, 0.0_dp)) then
-                        errmsg = where//value_name('dt', k, n_dt)//' = '//shortest_str(x) &
-                                 //': must be a finite time step >= 0 (s; 0: from the file)'
-                        return
-                    end if
-                    r%dt = x
-                end if
-                if (r%fmt == RECORD_COLUMN .and. .not. r%dt > 0.0_dp) then
-                    errmsg = where//'dt: '//list_item('files', i)//' = '''//r%file &
-                             //''' has format ''column'', which has no time step: give ' &
-                             //'dt > 0 (s) for it'
-                    return
-                end if
-                if (n_scale > 0) then
-                    k = min(i, n_scale)
-                    x = scale(k)
-                    if (.not. finite_positive(x)) then
-                        errmsg = where//value_name('scale', k, n_scale)//' = '//shortest_str(x) &
-                                 //': must be a finite factor > 0 (polarity = -1 turns the ' &
-                                 //'record over)'
-                        return
-                    end if
-                    r%scale = x
-                end if
-                if (n_target > 0) then
-                    k = min(i, n_target)
-                    x = target_pga(k)
-                    if (.not. finite_at_least(x, 0.0_dp)) then
-                        errmsg = where//value_name('target_pga', k, n_target)//' = ' &
-                                 //shortest_str(x)//': must be a finite PGA > 0 (g; 0: use scale)'
-                        return
-                    end if
-                    r%target = x
-                end if
-                if (r%target > 0.0_dp .and. abs(r%scale - 1.0_dp) > 0.0_dp) then
-                    errmsg = where//'scale, target_pga: '//list_item('files', i)//' = ''' &
-                             //r%file//''' has both (target_pga > 0 scales the record to ' &
-                             //'that PGA; give scale = 1 or leave it out for that file)'
-                    return
-                end if
-                if (n_pol > 0) then
-                    k = min(i, n_pol)
-                    if (abs(polarity(k)) /= 1) then
-                        errmsg = where//value_name('polarity', k, n_pol)//' = ' &
-                                 //int_str(polarity(k))//': must be 1 or -1 (-1 turns the ' &
-                                 //'record over before anything else)'
-                        return
-                    end if
-                    r%polarity = polarity(k)
-                end if
-            end associate
+        ! --- the values: i = 0 the value for every record (of the list too) when one is
+        ! given, else the default; i = 1..n those of the files entries
+        do i = 0, n
+            if (i == 0) then
+                call set_values(shared, i)
+            else
+                call set_values(entries(i), i)
+            end if
+            if (len(errmsg) > 0) return
         end do
 
         select case (name_index(pga_rounding, rounding_names))
@@ -265,20 +237,122 @@ contains
                      //'(allowed: '//join(rounding_names)//')'
             return
         end select
+
+        ! --- the records: the files entries (patterns expanded), then the list
+        allocate(found(max(1, n)))
+        nrec = 0
+        do i = 1, n
+            call expand_entry(path, entries(i), found, nrec, msg)
+            if (len_trim(msg) > 0) then
+                errmsg = where//list_item('files', i)//' = '''//entries(i)%file//''': ' &
+                         //trim(msg)
+                return
+            end if
+        end do
+        if (len(list_opened) > 0) then
+            call read_list(list_opened, shared, found, nrec, errmsg)
+            if (len(errmsg) > 0) then
+                errmsg = where//'list = '''//trim(adjustl(list))//''': '//errmsg
+                return
+            end if
+        end if
+        allocate(recs(nrec))
+        do i = 1, nrec
+            recs(i) = found(i)
+        end do
         if (given(gr, 'pga_rounding') .and. .not. any(recs%target > 0.0_dp)) &
             write(error_unit, '(a)') 'warning: '//where//'pga_rounding: not used without ' &
             //'target_pga'
 
+        call move_alloc(entries, last_given%entries)
+        last_given%shared = shared
+        last_given%counts = [n_fmt, n_units, n_dt, n_scale, n_target, n_pol]
+        last_given%list = list_opened
+
     contains
 
+        !> The values of entry i of files (i = 0: the value for all records) into r.
+        subroutine set_values(r, i)
+            type(record_in_t), intent(inout) :: r
+            integer, intent(in) :: i
+            if (n_fmt > 0 .and. (i > 0 .or. n_fmt == 1)) then
+                k = max(1, min(i, n_fmt))
+                item = value_name('format', k, n_fmt)
+                call format_code(format(k), r%fmt, msg)
+                if (len_trim(msg) > 0) then
+                    errmsg = where//item//' = '''//trim(format(k))//''': '//trim(msg)
+                    return
+                end if
+            end if
+            if (n_units > 0 .and. (i > 0 .or. n_units == 1)) then
+                k = max(1, min(i, n_units))
+                item = value_name('units', k, n_units)
+                call units_code(units(k), r%units, msg)
+                if (len_trim(msg) > 0) then
+                    errmsg = where//item//' = '//trim(msg)//auto_units
+                    return
+                end if
+            end if
+            if (n_dt > 0 .and. (i > 0 .or. n_dt == 1)) then
+                k = max(1, min(i, n_dt))
+                x = dt(k)
+                if (.not. finite_at_least(x, 0.0_dp)) then
+                    errmsg = where//value_name('dt', k, n_dt)//' = '//shortest_str(x)//bad_dt
+                    return
+                end if
+                r%dt = x
+            end if
+            if (i > 0 .and. r%fmt == RECORD_COLUMN .and. .not. r%dt > 0.0_dp) then
+                errmsg = where//'dt: '//list_item('files', i)//' = '''//r%file &
+                         //''' has format ''column'', which has no time step: give ' &
+                         //'dt > 0 (s) for it'
+                return
+            end if
+            if (n_scale > 0 .and. (i > 0 .or. n_scale == 1)) then
+                k = max(1, min(i, n_scale))
+                x = scale(k)
+                if (.not. finite_positive(x)) then
+                    errmsg = where//value_name('scale', k, n_scale)//' = '//shortest_str(x) &
+                             //bad_scale
+                    return
+                end if
+                r%scale = x
+            end if
+            if (n_target > 0 .and. (i > 0 .or. n_target == 1)) then
+                k = max(1, min(i, n_target))
+                x = target_pga(k)
+                if (.not. finite_at_least(x, 0.0_dp)) then
+                    errmsg = where//value_name('target_pga', k, n_target)//' = ' &
+                             //shortest_str(x)//bad_target
+                    return
+                end if
+                r%target = x
+            end if
+            if (i > 0 .and. r%target > 0.0_dp .and. abs(r%scale - 1.0_dp) > 0.0_dp) then
+                errmsg = where//'scale, target_pga: '//list_item('files', i)//' = ''' &
+                         //r%file//''' has both (target_pga > 0 scales the record to ' &
+                         //'that PGA; give scale = 1 or leave it out for that file)'
+                return
+            end if
+            if (n_pol > 0 .and. (i > 0 .or. n_pol == 1)) then
+                k = max(1, min(i, n_pol))
+                if (abs(polarity(k)) /= 1) then
+                    errmsg = where//value_name('polarity', k, n_pol)//' = ' &
+                             //int_str(polarity(k))//bad_polarity
+                    return
+                end if
+                r%polarity = polarity(k)
+            end if
+        end subroutine set_values
+
         !> Number of values of a per-file text key (0: not given).
-        subroutine per_file_strings(list, name, m)
-            character(len=*), intent(in) :: list(:)
+        subroutine per_file_strings(values, name, m)
+            character(len=*), intent(in) :: values(:)
             character(len=*), intent(in) :: name
             integer, intent(out) :: m
             m = 0
             if (.not. given(gr, name)) return
-            call count_strings(list, name, m, errmsg)
+            call count_strings(values, name, m, errmsg)
             if (len(errmsg) > 0) then
                 errmsg = where//errmsg
                 return
@@ -287,13 +361,13 @@ contains
         end subroutine per_file_strings
 
         !> Number of values of a per-file real key (0: not given).
-        subroutine per_file_reals(list, name, m)
-            real(dp), intent(in) :: list(:)
+        subroutine per_file_reals(values, name, m)
+            real(dp), intent(in) :: values(:)
             character(len=*), intent(in) :: name
             integer, intent(out) :: m
             m = 0
             if (.not. given(gr, name)) return
-            call list_length(list, name, m, errmsg)
+            call list_length(values, name, m, errmsg)
             if (len(errmsg) > 0) then
                 errmsg = where//errmsg
                 return
@@ -310,44 +384,446 @@ contains
 
     end subroutine check_records
 
+    !> RECORD_* code of a format name; problem: '' or why it is refused.
+    subroutine format_code(text, code, problem)
+        character(len=*), intent(in) :: text
+        integer, intent(inout) :: code
+        character(len=*), intent(out) :: problem
+        integer :: k
+        problem = ''
+        k = name_index(text, format_names)
+        if (k == 0) then
+            problem = 'unknown format (allowed: '//join(format_names)//')'
+            return
+        end if
+        ! format_names are in the order of the RECORD_* codes
+        code = RECORD_AUTO + k - 1
+        if (record_format_name(code) /= trim(format_names(k))) &
+            problem = 'internal error: format codes changed'
+    end subroutine format_code
+
+    !> UNITS_* code of a unit name, 0 for 'auto'; problem: '' or the library's message
+    !> ("'x': unknown acceleration unit (allowed: ...)").
+    subroutine units_code(text, code, problem)
+        character(len=*), intent(in) :: text
+        integer, intent(inout) :: code
+        character(len=*), intent(out) :: problem
+        integer :: st
+        problem = ''
+        if (trim(lower(adjustl(text))) == 'auto') then
+            code = 0
+            return
+        end if
+        ! the one vocabulary of acceleration units (seispulse_records)
+        call accel_unit_code(text, code, st, problem)
+        if (st == SEISPULSE_SUCCESS) problem = ''
+    end subroutine units_code
+
+    !> Append to found(1:nrec) the records of one files entry: the entry itself, or the
+    !> files its pattern matches (sorted; directories it matches are left out). msg: ''
+    !> or why the entry is refused (a pattern that matches no file).
+    subroutine expand_entry(nml_path, entry, found, nrec, msg)
+        character(len=*), intent(in) :: nml_path        !! the input file
+        type(record_in_t), intent(in) :: entry
+        type(record_in_t), allocatable, intent(inout) :: found(:)
+        integer, intent(inout) :: nrec
+        character(len=*), intent(out) :: msg
+        type(string_t), allocatable :: matches(:)
+        integer :: j, n_dirs, st, k
+        msg = ''
+        if (.not. has_glob_chars(entry%file)) then
+            call add_record(found, nrec, entry)
+            return
+        end if
+        call glob_files(entry%path, matches, n_dirs, st)
+        if (st /= 0) then
+            msg = 'the pattern cannot be expanded (a directory cannot be read, or out of ' &
+                  //'memory)'
+            return
+        end if
+        if (size(matches) == 0) then
+            msg = 'the pattern matches no file'
+            if (n_dirs > 0) msg = trim(msg)//' (only '//int_str(n_dirs)//' directories, ' &
+                //'which are left out)'
+            return
+        end if
+        ! a match as if written in &records: without the directory of the input
+        k = index(nml_path, '/', back=.true.)
+        if (entry%file(1:1) == '/') k = 0
+        do j = 1, size(matches)
+            call add_record(found, nrec, entry)
+            found(nrec)%path = matches(j)%s
+            found(nrec)%file = matches(j)%s
+            if (k > 0 .and. len(matches(j)%s) > k) then
+                if (matches(j)%s(1:k) == nml_path(1:k)) found(nrec)%file = matches(j)%s(k + 1:)
+            end if
+        end do
+    end subroutine expand_entry
+
+    !> found(nrec + 1) = r (found doubled when full).
+    subroutine add_record(found, nrec, r)
+        type(record_in_t), allocatable, intent(inout) :: found(:)
+        integer, intent(inout) :: nrec
+        type(record_in_t), intent(in) :: r
+        type(record_in_t), allocatable :: more(:)
+        if (nrec == size(found)) then
+            allocate(more(2 * size(found)))
+            more(1:nrec) = found(1:nrec)
+            call move_alloc(more, found)
+        end if
+        nrec = nrec + 1
+        found(nrec) = r
+    end subroutine add_record
+
+    ! ------------------------------------------------------------------------------
+    ! The list file (list = 'suite.csv')
+    ! ------------------------------------------------------------------------------
+
+    !> Append the records of the list file `opened` (CSV: a header row naming the columns,
+    !> then one row per record; blank lines and lines starting with # skipped) to
+    !> found(1:nrec). Every record starts from `shared` (the &records values for all
+    !> records); a cell that is not empty replaces its value. errmsg: '' or
+    !> "<opened>:<line>: <column> = '<cell>': problem".
+    subroutine read_list(opened, shared, found, nrec, errmsg)
+        character(len=*), intent(in) :: opened              !! the list file as opened
+        type(record_in_t), intent(in) :: shared
+        type(record_in_t), allocatable, intent(inout) :: found(:)
+        integer, intent(inout) :: nrec
+        character(len=:), allocatable, intent(out) :: errmsg
+        type(string_t), allocatable :: cells(:)
+        character(len=:), allocatable :: line, at
+        integer, allocatable :: col(:)
+        integer :: u, ios, lineno, ncell, ncol, j, k, bad, nrows
+        logical :: too_long
+
+        call open_text(opened, 'list file', u, errmsg)
+        if (len(errmsg) > 0) return
+        lineno = 0
+        ncol = 0
+        nrows = 0
+        allocate(col(0))
+        do
+            call read_line(u, line, ios, max_line_len, too_long)
+            if (ios /= 0) exit
+            lineno = lineno + 1
+            at = opened//':'//int_str(lineno)//': '
+            if (too_long) then
+                errmsg = at//'line longer than '//int_str(max_line_len)//' characters (not ' &
+                         //'a list file?)'
+                exit
+            end if
+            bad = control_char(line)
+            if (bad > 0) then
+                errmsg = at//char_name(line(bad:bad))//' at column '//int_str(bad) &
+                         //': not a text file (a list file is CSV text)'
+                exit
+            end if
+            k = verify(line, ' '//achar(9)//achar(13))
+            if (k == 0) cycle
+            if (line(k:k) == '#') cycle
+            call split_csv(line, cells, ncell, errmsg)
+            if (len(errmsg) > 0) then
+                errmsg = at//errmsg
+                exit
+            end if
+            if (ncol == 0) then
+                ! the header
+                ncol = ncell
+                deallocate(col)
+                allocate(col(ncol))
+                do j = 1, ncol
+                    col(j) = name_index(cells(j)%s, list_columns)
+                    if (col(j) == 0) then
+                        errmsg = at//'column '''//cells(j)%s//''': unknown column (allowed: ' &
+                                 //join(list_columns)//')'
+                        exit
+                    end if
+                    if (any(col(1:j - 1) == col(j))) then
+                        errmsg = at//'column '''//cells(j)%s//''': given twice'
+                        exit
+                    end if
+                end do
+                if (len(errmsg) > 0) exit
+                if (.not. any(col == 1)) then
+                    errmsg = at//'no column ''path'' in the header (the first row names ' &
+                             //'the columns: path, and any of '//join(list_columns(2:))//')'
+                    exit
+                end if
+                cycle
+            end if
+            if (ncell /= ncol) then
+                errmsg = at//int_str(ncell)//' fields, the header has '//int_str(ncol) &
+                         //' (a field with a comma is quoted: "a,b")'
+                exit
+            end if
+            nrows = nrows + 1
+            call add_record(found, nrec, shared)
+            found(nrec)%line = lineno
+            call list_row(opened, cells, col, found(nrec), errmsg)
+            if (len(errmsg) > 0) then
+                errmsg = at//errmsg
+                exit
+            end if
+        end do
+        close(u)
+        if (len(errmsg) > 0) return
+        if (ncol == 0) then
+            errmsg = opened//': no header row (the first row names the columns: path, and ' &
+                     //'any of '//join(list_columns(2:))//')'
+        else if (nrows == 0) then
+            errmsg = opened//': no record (one row per record after the header)'
+        end if
+    end subroutine read_list
+
+    !> The values of one row of the list into r (its cells by column code col: the index
+    !> in list_columns). errmsg: '' or "<column> = '<cell>': problem".
+    subroutine list_row(opened, cells, col, r, errmsg)
+        character(len=*), intent(in) :: opened
+        type(string_t), intent(in) :: cells(:)
+        integer, intent(in) :: col(:)
+        type(record_in_t), intent(inout) :: r
+        character(len=:), allocatable, intent(inout) :: errmsg
+        character(len=256) :: msg
+        character(len=:), allocatable :: c, item
+        real(dp) :: x
+        integer :: j
+        do j = 1, size(col)
+            c = cells(j)%s
+            item = trim(list_columns(col(j)))//' = '''//c//''''
+            if (len(c) == 0) then
+                if (col(j) == 1) then
+                    errmsg = 'path: empty (the record file of this row)'
+                    return
+                end if
+                cycle
+            end if
+            msg = ''
+            select case (col(j))
+            case (1)
+                r%file = c
+                r%path = resolve(opened, c)
+            case (2)
+                r%name = c
+            case (3)
+                call cell_real(c, x, msg)
+                if (len_trim(msg) == 0 .and. .not. finite_positive(x)) msg = bad_scale(3:)
+                r%scale = x
+            case (4)
+                call cell_real(c, x, msg)
+                if (len_trim(msg) == 0 .and. .not. finite_at_least(x, 0.0_dp)) &
+                    msg = bad_target(3:)
+                r%target = x
+            case (5)
+                call units_code(c, r%units, msg)
+                if (len_trim(msg) > 0) then
+                    errmsg = 'units = '//trim(msg)//auto_units
+                    return
+                end if
+            case (6)
+                call format_code(c, r%fmt, msg)
+            case (7)
+                call cell_real(c, x, msg)
+                if (len_trim(msg) == 0 .and. .not. finite_at_least(x, 0.0_dp)) msg = bad_dt(3:)
+                r%dt = x
+            case (8)
+                if (c == '1' .or. c == '+1') then
+                    r%polarity = 1
+                else if (c == '-1') then
+                    r%polarity = -1
+                else
+                    msg = bad_polarity(3:)
+                end if
+            end select
+            if (len_trim(msg) > 0) then
+                errmsg = item//': '//trim(msg)
+                return
+            end if
+        end do
+        if (r%fmt == RECORD_COLUMN .and. .not. r%dt > 0.0_dp) then
+            errmsg = 'dt: the record '''//r%file//''' has format ''column'', which has no ' &
+                     //'time step: give dt > 0 (s) for it'
+        else if (r%target > 0.0_dp .and. abs(r%scale - 1.0_dp) > 0.0_dp) then
+            errmsg = 'scale = '//shortest_str(r%scale)//', target_pga = ' &
+                     //shortest_str(r%target)//': both (target_pga > 0 scales the record to ' &
+                     //'that PGA; give scale = 1 in this row, or leave target_pga empty)'
+        end if
+    end subroutine list_row
+
+    !> A decimal number in a cell (the library's strict reader); problem: '' or why not.
+    subroutine cell_real(c, x, problem)
+        character(len=*), intent(in) :: c
+        real(dp), intent(out) :: x
+        character(len=*), intent(out) :: problem
+        integer :: code
+        problem = ''
+        call parse_real(c, x, code)
+        if (code == NUM_RANGE) then
+            problem = 'out of the range of double precision'
+        else if (code /= NUM_OK) then
+            problem = 'not a number'
+        end if
+    end subroutine cell_real
+
+    !> The fields of a CSV line: separated by commas, blanks around them dropped; a field
+    !> in double quotes may hold commas, and "" stands for one quote. errmsg: '' or why the
+    !> line cannot be split.
+    subroutine split_csv(line, cells, ncell, errmsg)
+        character(len=*), intent(in) :: line
+        type(string_t), allocatable, intent(out) :: cells(:)
+        integer, intent(out) :: ncell
+        character(len=:), allocatable, intent(inout) :: errmsg
+        type(text_buffer) :: cell
+        character(len=*), parameter :: blanks = ' '//achar(9)//achar(13)
+        integer :: i, n, k
+        n = len(line)
+        allocate(cells(count_commas() + 1))
+        ncell = 0
+        i = 1
+        do
+            ! one field, starting at i
+            cell%n = 0
+            do while (i <= n)
+                if (index(blanks, line(i:i)) == 0) exit
+                i = i + 1
+            end do
+            if (i <= n .and. line(i:i) == '"') then
+                i = i + 1
+                do
+                    if (i > n) then
+                        errmsg = 'field '//int_str(ncell + 1)//': no closing quote (")'
+                        return
+                    end if
+                    if (line(i:i) == '"') then
+                        if (i < n) then
+                            if (line(i + 1:i + 1) == '"') then
+                                call append(cell, '"')
+                                i = i + 2
+                                cycle
+                            end if
+                        end if
+                        i = i + 1
+                        exit
+                    end if
+                    call append(cell, line(i:i))
+                    i = i + 1
+                end do
+                k = i
+                do while (i <= n)
+                    if (line(i:i) == ',') exit
+                    if (index(blanks, line(i:i)) == 0) then
+                        errmsg = 'field '//int_str(ncell + 1)//': text after the closing ' &
+                                 //'quote'
+                        return
+                    end if
+                    i = i + 1
+                end do
+                ncell = ncell + 1
+                cells(ncell)%s = contents(cell)
+            else
+                k = i
+                do while (i <= n)
+                    if (line(i:i) == ',') exit
+                    i = i + 1
+                end do
+                ncell = ncell + 1
+                cells(ncell)%s = trim_blanks(line(k:i - 1))
+            end if
+            if (i > n) exit
+            i = i + 1
+        end do
+    contains
+        !> Commas in the line: the most fields it can have, less one.
+        integer function count_commas()
+            integer :: j
+            count_commas = 0
+            do j = 1, n
+                if (line(j:j) == ',') count_commas = count_commas + 1
+            end do
+        end function count_commas
+        function trim_blanks(s) result(t)
+            character(len=*), intent(in) :: s
+            character(len=:), allocatable :: t
+            integer :: e
+            e = verify(s, blanks, back=.true.)
+            t = s(1:e)
+        end function trim_blanks
+    end subroutine split_csv
+
     ! ------------------------------------------------------------------------------
     ! Echo
     ! ------------------------------------------------------------------------------
 
-    !> &records with one value per file (a namelist that reads back to the same input).
+    !> &records as given, completed (a namelist that reads back to the same input): the
+    !> files entries as written (a pattern stays a pattern), the list file, and per-file
+    !> keys with one value per files entry (one value for all records when there is a list
+    !> and the input gave one). The group is that of the last check_records (recs: its
+    !> records, whose files are the entries if check_records was not called).
     subroutine echo_records(recs, slammer_rounding)
         type(record_in_t), intent(in) :: recs(:)
         logical, intent(in) :: slammer_rounding
-        integer :: i, flen
+        type(records_given_t) :: gv
+        integer :: i, flen, sizes(6)
+        if (allocated(last_given%entries)) then
+            gv = last_given
+        else
+            gv%entries = recs
+            gv%list = ''
+        end if
         flen = 1
-        do i = 1, size(recs)
-            flen = max(flen, len(echo_path(recs(i)%path)))
+        do i = 1, size(gv%entries)
+            flen = max(flen, len(echo_path(gv%entries(i)%path)))
         end do
-        call echo_records_n(recs, slammer_rounding, size(recs), flen)
+        ! with a list, a key given one value keeps one value (for the list's rows too)
+        sizes = max(1, size(gv%entries))
+        if (len(gv%list) > 0) then
+            where (gv%counts <= 1) sizes = 1
+        end if
+        call echo_records_n(gv, slammer_rounding, max(1, size(gv%entries)), flen, sizes, &
+                            max(1, len(echo_path(gv%list))))
     end subroutine echo_records
 
-    subroutine echo_records_n(recs, slammer_rounding, n, flen)
-        type(record_in_t), intent(in) :: recs(:)
+    subroutine echo_records_n(gv, slammer_rounding, n, flen, sizes, llen)
+        type(records_given_t), intent(in) :: gv
         logical, intent(in) :: slammer_rounding
-        integer, intent(in) :: n, flen
+        integer, intent(in) :: n, flen, sizes(6), llen
         character(len=flen) :: files(n)
-        character(len=10) :: format(n)
-        character(len=6) :: units(n)
-        real(dp) :: dt(n), scale(n), target_pga(n)
+        character(len=10) :: format(sizes(1))
+        character(len=6) :: units(sizes(2))
+        real(dp) :: dt(sizes(3)), scale(sizes(4)), target_pga(sizes(5))
         character(len=7) :: pga_rounding
-        integer :: polarity(n), i
-        namelist /records/ files, format, units, dt, scale, target_pga, pga_rounding, polarity
-        do i = 1, n
-            files(i) = echo_path(recs(i)%path)
-            format(i) = record_format_name(recs(i)%fmt)
-            units(i) = units_name(recs(i)%units)
-            dt(i) = recs(i)%dt
-            scale(i) = recs(i)%scale
-            target_pga(i) = recs(i)%target
-            polarity(i) = recs(i)%polarity
+        character(len=llen) :: list
+        integer :: polarity(sizes(6)), i
+        type(record_in_t) :: r
+        namelist /records/ files, format, units, dt, scale, target_pga, pga_rounding, polarity, &
+                           list
+        files = ''
+        do i = 1, size(gv%entries)
+            files(i) = echo_path(gv%entries(i)%path)
+        end do
+        do i = 1, maxval(sizes)
+            r = value_of(i)
+            if (i <= size(format)) format(i) = record_format_name(r%fmt)
+            if (i <= size(units)) units(i) = units_name(r%units)
+            if (i <= size(dt)) dt(i) = r%dt
+            if (i <= size(scale)) scale(i) = r%scale
+            if (i <= size(target_pga)) target_pga(i) = r%target
+            if (i <= size(polarity)) polarity(i) = r%polarity
         end do
         pga_rounding = merge('slammer', 'exact  ', slammer_rounding)
+        list = echo_path(gv%list)
         write(echo_unit(), nml=records)
+    contains
+        !> The values of entry i (those for all records when there is no entry; a key
+        !> given one value has it in every entry).
+        function value_of(i) result(r)
+            integer, intent(in) :: i
+            type(record_in_t) :: r
+            if (size(gv%entries) == 0) then
+                r = gv%shared
+            else
+                r = gv%entries(min(i, size(gv%entries)))
+            end if
+        end function value_of
     end subroutine echo_records_n
 
     ! ------------------------------------------------------------------------------
@@ -378,7 +854,7 @@ contains
         else
             call read_record(r%path, rec, st, msg, fmt=r%fmt, dt=r%dt)
         end if
-        o%name = record_label(rec, r%path, ir)
+        o%name = record_label(rec, r, ir)
         o%message = ''
         if (st == SEISPULSE_SUCCESS) then
             o%fmt = rec%fmt
@@ -429,6 +905,8 @@ contains
         type(record_out_t), intent(in) :: o               !! what happened
         character(len=:), allocatable :: line
         line = 'record '//int_str(ir)//': '//r%file//': '
+        if (r%line > 0) line = 'record '//int_str(ir)//': '//r%file//' (list line ' &
+                               //int_str(r%line)//'): '
         if (o%ok) then
             line = line//'format '//record_format_name(o%fmt)//', npts '//int_str(o%npts) &
                    //', dt '//shortest_str(o%dt)//', PGA '//shortest_str(o%pga_read) &
@@ -479,18 +957,20 @@ contains
         if (o%factor < 0.0_dp) s = s//', turned over (polarity -1)'
     end function scaled_text
 
-    !> The table's label of a record: the file stem (the file name if it has none).
-    function record_label(rec, path, i) result(s)
+    !> The table's label of a record: its name in the list, else the file stem (the file
+    !> name if it has none).
+    function record_label(rec, r, i) result(s)
         type(record_t), intent(in) :: rec
-        character(len=*), intent(in) :: path
+        type(record_in_t), intent(in) :: r
         integer, intent(in) :: i
         character(len=:), allocatable :: s
         integer :: k
         s = ''
-        if (allocated(rec%name)) s = trim(rec%name)
+        if (allocated(r%name)) s = r%name
+        if (len(s) == 0 .and. allocated(rec%name)) s = trim(rec%name)
         if (len(s) == 0) then
-            k = index(path, '/', back=.true.)
-            s = trim(path(k + 1:))
+            k = index(r%path, '/', back=.true.)
+            s = trim(r%path(k + 1:))
         end if
         if (len(s) == 0) s = 'record_'//int_str(i)
     end function record_label

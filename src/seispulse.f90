@@ -10,6 +10,7 @@ module seispulse
                                 in_closed
     use seispulse_format, only: real_str, int_str, g_str, shortest_str, format_reals, NUM_LEN, &
                                 upper
+    use seispulse_number_reader, only: parse_real, NUM_OK, NUM_INVALID, NUM_RANGE
     use seispulse_special, only: expm1, log1p, exp_phis, exp_phis_scaled, phi2, phi3, sin_pi, &
                                  cos_pi, complex_phis, phi1, phi1_taylor, phi1_from_exp, &
                                  log1p_over_x, sinh_minus_x, x_minus_asinh, x_minus_sin, pi
