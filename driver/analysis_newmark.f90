@@ -768,7 +768,11 @@ contains
     end subroutine newmark_unit
 
     !> Record ir (read, polarity, scale), its intensity row (it1, row 1) and its rows
-    !> (nblk x ncol); stderr lines go to log%log.
+    !> (nblk x ncol); stderr lines go to log%log. Texts are built in the critical section
+    !> seispulse_text: gfortran 12 keeps the length of a deferred-length character function
+    !> result (int_str, shortest_str, list_item, ...) in one static variable per call site,
+    !> so two threads at one call site could swap lengths; the sliding analyses themselves
+    !> run outside it, concurrently.
     subroutine record_rows(ir, o, note, rows, it1, log)
         integer, intent(in) :: ir
         type(record_out_t), intent(out) :: o
@@ -779,7 +783,7 @@ contains
         type(newmark_result_t) :: rn, ri
         type(flexible_result_t) :: fn, fi
         real(dp), allocatable :: accel(:)
-        character(len=:), allocatable :: errmsg
+        character(len=:), allocatable :: errmsg, what
         character(len=4096) :: msg
         real(dp) :: nan, ky_up_col
         integer :: nrec, nblk, ib, st, st2, c0, ncol
@@ -796,11 +800,12 @@ contains
         note = ''
         associate (cfg => run_cfg, where => run_where, r => run_cfg%recs(ir))
             ! --- read, turn over, scale
+            !$omp critical (seispulse_text)
             call load_record(where, r, ir, nrec, 'newmark', cfg%slammer_rounding, o, accel, &
                              log)
-            if (o%ok) call intensity_record(it1, 1, accel, o%dt, cfg%g, &
-                                            where//list_item('files', ir)//' = ''' &
-                                            //r%file//'''', log)
+            what = where//list_item('files', ir)//' = '''//r%file//''''
+            !$omp end critical (seispulse_text)
+            if (o%ok) call intensity_record(it1, 1, accel, o%dt, cfg%g, what, log)
 
             ! --- the rows of this record
             do ib = 1, nblk
@@ -834,11 +839,12 @@ contains
                     end if
                     if (st /= SEISPULSE_SUCCESS .or. st2 /= SEISPULSE_SUCCESS) then
                         ! a failure of the sliding analysis itself: this row only
-                        errmsg = where//list_item('files', ir)//' = '''//r%file//''', ' &
-                                 //row_name(cfg, ib)//': '//trim(msg)
+                        !$omp critical (seispulse_text)
+                        errmsg = what//', '//row_name(cfg, ib)//': '//trim(msg)
                         call report(errmsg, log)
                         if (len(o%message) > 0) o%message = o%message//'; '
                         o%message = o%message//row_name(cfg, ib)//': '//trim(msg)
+                        !$omp end critical (seispulse_text)
                         cycle
                     end if
                     if (cfg%kind == KIND_RIGID) then
@@ -853,11 +859,12 @@ contains
                             fn%damping_final, fn%period, real(fn%iterations, dp), &
                             merge(1.0_dp, 0.0_dp, fn%converged .and. fi%converged)]
                         if (unconverged) then
-                            call add_log(log, 'warning: '//where//list_item('files', ir) &
-                                         //' = '''//r%file//''', '//row_name(cfg, ib)//': ' &
+                            !$omp critical (seispulse_text)
+                            call add_log(log, 'warning: '//what//', '//row_name(cfg, ib)//': ' &
                                          //trim(msg))
                             if (len(note) > 0) note = note//'; '
                             note = note//row_name(cfg, ib)//': '//trim(msg)
+                            !$omp end critical (seispulse_text)
                         end if
                     end if
                     rows(ib, ncol) = 0.0_dp
