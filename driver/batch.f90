@@ -286,7 +286,7 @@ contains
         character(len=*), intent(in) :: jpath
         character(len=16), intent(in) :: fp
         integer, intent(in) :: n
-        integer :: i
+        integer :: i, last
         journal = c_null_ptr
         call make_parent_dir(jpath)
         journal = c_fopen(jpath//'.tmp'//c_null_char, 'wb'//c_null_char)
@@ -294,9 +294,14 @@ contains
             call journal_warning()
             return
         end if
-        call put_line(MAGIC//' '//int_str(JOURNAL_FORMAT)//' '//fp//' '//int_str(n))
+        last = 0
         do i = 1, n
-            if (restored(i)) call put_line(unit_line(i, kept(i)))
+            if (restored(i)) last = i
+        end do
+        ! forced to disk once, after the last of these lines
+        call put_line(MAGIC//' '//int_str(JOURNAL_FORMAT)//' '//fp//' '//int_str(n), last == 0)
+        do i = 1, n
+            if (restored(i)) call put_line(unit_line(i, kept(i)), i == last)
         end do
         if (journal_failed) return
         if (c_rename(jpath//'.tmp'//c_null_char, jpath//c_null_char) /= 0) then
@@ -306,14 +311,21 @@ contains
         end if
     end subroutine open_journal
 
-    !> Write one line and its new line, then force it to disk.
-    subroutine put_line(line)
+    !> Write one line and its new line, then (unless `sync` is false: more lines follow at
+    !> once) force it to disk.
+    subroutine put_line(line, sync)
         character(len=*), intent(in) :: line
+        logical, intent(in), optional :: sync
         integer(c_size_t) :: nb
         if (.not. c_associated(journal)) return
         nb = int(len(line) + 1, c_size_t)
         if (c_fwrite(line//new_line('a'), 1_c_size_t, nb, journal) /= nb) then
             call journal_warning()
+        else if (present(sync)) then
+            if (.not. sync) return
+        end if
+        if (journal_failed) then
+            return
         else if (c_fflush(journal) /= 0) then
             call journal_warning()
         else if (c_fsync(c_fileno(journal)) /= 0) then
