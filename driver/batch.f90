@@ -24,7 +24,8 @@
 !> as is one with a damaged line (checksum, a unit out of range or twice, a malformed
 !> field); an unterminated last line (the run was killed while writing it) is dropped and
 !> that unit computed again. The journal is removed once the tables are committed
-!> (batch_commit, from the driver's end of run).
+!> (batch_commit, from the driver's end of run), and after an error (exit status 2) unless
+!> the run was a restart (batch_discard); a killed run leaves it.
 module driver_batch
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int64
     use, intrinsic :: iso_c_binding, only: c_int, c_char, c_ptr, c_size_t, c_null_char, &
@@ -38,7 +39,7 @@ module driver_batch
     implicit none
     private
 
-    public :: batch_run, batch_commit, journal_path
+    public :: batch_run, batch_commit, batch_discard, journal_path
     public :: record_keys, pack_record, unpack_record, RECORD_VALUES, RECORD_FIELDS
 
     !> Version of the journal format (the header's second word).
@@ -226,6 +227,16 @@ contains
         call remove_file(journal_file//'.tmp')
         deallocate(journal_file)
     end subroutine batch_commit
+
+    !> After an error (exit status 2, no table written): the journal this run started is
+    !> removed with the other outputs, unless the run was a restart (restart = .true.:
+    !> it stays, to resume from once the problem is fixed). A journal this run did not
+    !> start (an input error before the batch, a journal refused) is never touched.
+    subroutine batch_discard()
+        if (.not. allocated(journal_file)) return
+        if (run_restart()) return
+        call batch_commit()
+    end subroutine batch_discard
 
     !> Under MPI the workers wait in par_run_units: hand them no unit, so they end.
     subroutine release_workers()

@@ -198,6 +198,22 @@ def test_restart_after_kills(driver, tmp_path, record_set):
     assert not (job / "out" / "batch.journal.tmp").exists()
 
 
+def test_error_without_restart_removes_its_journal(driver, tmp_path, record_set):
+    """restart = .false. and an output error: no output left, the journal neither; a
+    journal this run did not start (an input error before the batch) stays."""
+    job = case(tmp_path, "job", record_set, newmark_input(record_set[1], False))
+    (job / "out" / "batch_newmark.txt.part").mkdir(parents=True)
+    r = run(driver, job)
+    assert r.returncode == 2
+    assert sorted(p.name for p in (job / "out").iterdir()) == ["batch_newmark.txt.part"]
+    (job / "out" / "batch_newmark.txt.part").rmdir()
+    (job / "out" / "batch.journal").write_text("not a journal\n")
+    (job / "in.nml").write_text(newmark_input(record_set[1], False).replace("ky =", "kx ="))
+    r = run(driver, job)
+    assert r.returncode == 2 and "kx" in r.stderr
+    assert (job / "out" / "batch.journal").read_text() == "not a journal\n"
+
+
 def test_complete_journal_restores_all(driver, tmp_path, record_set):
     ref = case(tmp_path, "ref", record_set, newmark_input(record_set[1], True))
     assert run(driver, ref).returncode == 0
@@ -357,3 +373,16 @@ def test_sdof_threads_and_journal(driver, tmp_path, record_set):
     assert "sdof: 12 of 12 units restored from out/batch.journal" in r.stderr
     assert tables(one, SDOF_TABLES) == tables(two, SDOF_TABLES)
     assert not journal.exists()
+
+
+def test_restart_of_another_analysis_is_ignored(driver, tmp_path, source_root):
+    """Only the batches keep a journal: restart = .true. elsewhere is a warning."""
+    text = (source_root / "input" / "example.nml").read_text()
+    text = text.replace("    analysis = 'pulse'", "    restart = .true.\n    analysis = 'pulse'")
+    (tmp_path / "in.nml").write_text(text)
+    r = subprocess.run([driver, "in.nml"], cwd=tmp_path, capture_output=True, text=True,
+                       timeout=60)
+    assert r.returncode == 0, r.stderr
+    assert r.stderr.startswith("warning: in.nml:4: &run: restart: only the analyses "
+                               "'newmark' and 'sdof' keep a journal")
+    assert not list((tmp_path / "out").glob("*journal*"))
