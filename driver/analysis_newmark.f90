@@ -42,6 +42,9 @@ module driver_newmark
                                       intensity_start, intensity_record, intensity_failures, &
                                       intensity_write
     use driver_echo, only: echo_unit
+    use driver_unit_result, only: unit_result_t, add_field, get_field, add_log
+    use driver_batch, only: batch_run, record_keys, pack_record, unpack_record, RECORD_VALUES, &
+                            RECORD_FIELDS
     implicit none
     private
 
@@ -102,6 +105,13 @@ module driver_newmark
     type :: note_t
         character(len=:), allocatable :: text
     end type note_t
+
+    ! --- the batch being computed (set by compute before batch_run, read-only while the
+    ! units run concurrently in newmark_unit)
+    type(config_t) :: run_cfg
+    character(len=:), allocatable :: run_where          !! "file:line: &records: "
+    logical :: run_itab_on = .false.                    !! the intensity table is on
+    real(dp), allocatable :: run_periods(:)             !! its Sa periods (s)
 
 contains
 
@@ -194,7 +204,8 @@ contains
         if (cfg%kind /= KIND_RIGID) call echo_slope(cfg%mass)
 
         ! --- compute every row (nothing is written before all of them are done)
-        call compute(path, gr, cfg, outs, notes, table, nfailed, itab)
+        call compute(path, gr, prefix, cfg, outs, notes, table, nfailed, itab, stat, errmsg)
+        if (stat /= 0) return
 
         ! --- write
         call write_result(path, prefix, cfg, outs, notes, table, files_out, stat, errmsg)
@@ -658,124 +669,209 @@ contains
     ! Computation
     ! ------------------------------------------------------------------------------
 
-    !> Every record (read, polarity, scale), every block, normal and inverse. A record
+    !> Every record (read, polarity, scale), every block, normal and inverse: one unit
+    !> of a batch per record (driver_batch: threads, ranks, the restart journal). A record
     !> that fails leaves NaN results and status failed in its rows; the message goes to
-    !> stderr at once. An unconverged flexible case keeps its results (converged = 0)
-    !> with a warning on stderr and a note for the header. Progress: one line per record
-    !> on stderr.
-    subroutine compute(path, gr, cfg, outs, notes, table, nfailed, itab)
+    !> stderr. An unconverged flexible case keeps its results (converged = 0) with a
+    !> warning on stderr and a note for the header. Progress: one line per record on
+    !> stderr, in record order. stat /= 0: the journal was refused (errmsg), nothing done.
+    subroutine compute(path, gr, prefix, cfg, outs, notes, table, nfailed, itab, stat, errmsg)
         character(len=*), intent(in) :: path
         type(nml_group), intent(in) :: gr
+        character(len=*), intent(in) :: prefix             !! output prefix (the journal)
         type(config_t), intent(in) :: cfg
         type(record_out_t), allocatable, intent(out) :: outs(:)
         type(note_t), allocatable, intent(out) :: notes(:)  !! per record ('' if none)
         real(dp), allocatable, intent(out) :: table(:, :)   !! the numeric columns
         integer, intent(out) :: nfailed
         type(intensity_table_t), intent(inout) :: itab     !! its rows, if it is on
-        type(newmark_result_t) :: rn, ri
-        type(flexible_result_t) :: fn, fi
-        real(dp), allocatable :: accel(:)
-        character(len=:), allocatable :: where, errmsg
-        character(len=4096) :: msg
-        real(dp) :: nan, ky_up_col
-        integer :: nrec, nblk, ir, ib, row, st, st2, c0, i, ncol
-        logical :: unconverged
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        type(unit_result_t), allocatable :: results(:)
+        integer :: nrec, nblk, ir, i, ncol, nv, ni
 
-        nan = ieee_value(nan, ieee_quiet_nan)
-        where = located(path, gr)
+        ! --- the batch's read-only state, then every record as one unit
+        run_cfg = cfg
+        run_where = located(path, gr)
+        run_itab_on = itab%on
+        allocate(run_periods, source=itab%periods)
+        call batch_run(path, prefix, 'newmark', record_keys(cfg%recs, cfg%slammer_rounding), &
+                       newmark_unit, results, stat, errmsg)
+        deallocate(run_periods)
+        nfailed = 0
+        if (stat /= 0) return
+
+        ! --- the tables, as a serial run fills them
         nrec = size(cfg%recs)
         nblk = size(cfg%blocks)
-        c0 = 2                       ! columns before ky: pga, scale (and mu)
-        if (cfg%with_mu) c0 = 3
-        ncol = c0 + 11               ! ... status
-        if (cfg%kind /= KIND_RIGID) ncol = c0 + 17   ! ... kmax .. converged, status
+        ncol = row_columns(cfg)
         allocate(outs(nrec), notes(nrec))
         allocate(table(nrec * nblk, ncol))
-        table = nan
-        nfailed = 0
         call intensity_start(itab, nrec)
         do ir = 1, nrec
-            notes(ir)%text = ''
-            associate (r => cfg%recs(ir), o => outs(ir))
-                ! --- read, turn over, scale
-                call load_record(where, r, ir, nrec, 'newmark', cfg%slammer_rounding, o, accel)
-                if (o%ok) call intensity_record(itab, ir, accel, o%dt, cfg%g, &
-                                                where//list_item('files', ir)//' = ''' &
-                                                //r%file//'''')
-
-                ! --- the rows of this record
-                do ib = 1, nblk
-                    row = (ir - 1) * nblk + ib
-                    associate (b => cfg%blocks(ib))
-                        ky_up_col = b%ky_up
-                        if (b%mode == NEWMARK_DOWN) ky_up_col = ieee_value(nan, &
-                                                                           ieee_positive_inf)
-                        if (b%mode == NEWMARK_BOTH) ky_up_col = b%ky
-                        if (cfg%with_mu) table(row, 3) = cfg%mu(ib)
-                        table(row, c0 + 1) = b%ky
-                        table(row, c0 + 2) = ky_up_col
-                        table(row, ncol) = 1.0_dp
-                        if (.not. o%ok) cycle
-                        table(row, 1) = o%pga
-                        table(row, 2) = o%factor
-                        msg = ''
-                        st2 = SEISPULSE_SUCCESS
-                        unconverged = .false.
-                        if (cfg%kind == KIND_RIGID) then
-                            call newmark_rigid(accel, o%dt, b, cfg%method, cfg%g, rn, st, msg)
-                            if (st == SEISPULSE_SUCCESS) call newmark_rigid(-accel, o%dt, b, &
-                                cfg%method, cfg%g, ri, st2, msg)
-                        else
-                            call flexible_row(cfg, b, accel, o%dt, fn, st, msg)
-                            if (st == SEISPULSE_SUCCESS .or. st == SEISPULSE_NO_CONVERGENCE) &
-                                call flexible_row(cfg, b, -accel, o%dt, fi, st2, msg)
-                            ! not converged: the last iteration's results, with a warning
-                            unconverged = st == SEISPULSE_NO_CONVERGENCE .or. &
-                                          st2 == SEISPULSE_NO_CONVERGENCE
-                            if (st == SEISPULSE_NO_CONVERGENCE) st = SEISPULSE_SUCCESS
-                            if (st2 == SEISPULSE_NO_CONVERGENCE) st2 = SEISPULSE_SUCCESS
-                        end if
-                        if (st /= SEISPULSE_SUCCESS .or. st2 /= SEISPULSE_SUCCESS) then
-                            ! a failure of the sliding analysis itself: this row only
-                            errmsg = where//list_item('files', ir)//' = '''//r%file//''', ' &
-                                     //row_name(cfg, ib)//': '//trim(msg)
-                            call report(errmsg)
-                            if (len(o%message) > 0) o%message = o%message//'; '
-                            o%message = o%message//row_name(cfg, ib)//': '//trim(msg)
-                            cycle
-                        end if
-                        if (cfg%kind == KIND_RIGID) then
-                            table(row, c0 + 3:c0 + 10) = [rn%max_disp, 100.0_dp * rn%max_disp, &
-                                rn%final_disp, 100.0_dp * rn%final_disp, ri%max_disp, &
-                                100.0_dp * ri%max_disp, ri%final_disp, 100.0_dp * ri%final_disp]
-                        else
-                            table(row, c0 + 3:c0 + 16) = [fn%max_disp, 100.0_dp * fn%max_disp, &
-                                fn%final_disp, 100.0_dp * fn%final_disp, fi%max_disp, &
-                                100.0_dp * fi%max_disp, fi%final_disp, &
-                                100.0_dp * fi%final_disp, fn%kmax, fn%vs_final, &
-                                fn%damping_final, fn%period, real(fn%iterations, dp), &
-                                merge(1.0_dp, 0.0_dp, fn%converged .and. fi%converged)]
-                            if (unconverged) then
-                                write(error_unit, '(a)') 'warning: '//where &
-                                    //list_item('files', ir)//' = '''//r%file//''', ' &
-                                    //row_name(cfg, ib)//': '//trim(msg)
-                                flush(error_unit)
-                                if (len(notes(ir)%text) > 0) notes(ir)%text = notes(ir)%text &
-                                    //'; '
-                                notes(ir)%text = notes(ir)%text//row_name(cfg, ib)//': ' &
-                                                 //trim(msg)
-                            end if
-                        end if
-                        table(row, ncol) = 0.0_dp
-                    end associate
-                end do
+            associate (res => results(ir))
+                call unpack_record(res, outs(ir))
+                nv = RECORD_VALUES + nblk * ncol
+                table((ir - 1) * nblk + 1:ir * nblk, :) = &
+                    reshape(res%values(RECORD_VALUES + 1:nv), [nblk, ncol])
+                notes(ir)%text = get_field(res, RECORD_FIELDS + 1)
+                if (itab%on) then
+                    ni = size(itab%table, 2)
+                    itab%table(ir, :) = res%values(nv + 1:nv + ni)
+                    itab%notes(ir) = get_field(res, RECORD_FIELDS + 2)
+                end if
             end associate
         end do
-        nfailed = 0
         do i = 1, size(table, 1)
             if (table(i, ncol) > 0.5_dp) nfailed = nfailed + 1
         end do
     end subroutine compute
+
+    !> The numeric columns of a row: pga, scale (, mu), ky, ky_up, the results, status.
+    pure integer function row_columns(cfg) result(ncol)
+        type(config_t), intent(in) :: cfg
+        integer :: c0
+        c0 = 2                       ! columns before ky: pga, scale (and mu)
+        if (cfg%with_mu) c0 = 3
+        ncol = c0 + 11               ! ... status
+        if (cfg%kind /= KIND_RIGID) ncol = c0 + 17   ! ... kmax .. converged, status
+    end function row_columns
+
+    !> One unit: record ir read, its rows and its intensity row, packed into res (the
+    !> record (pack_record), the rows (nblk x ncol, column-major), the intensity row;
+    !> fields: the record's, the note, the intensity note); stderr lines into res%log.
+    !> Runs concurrently: it reads run_cfg, run_where, run_itab_on, run_periods only.
+    subroutine newmark_unit(ir, res)
+        integer, intent(in) :: ir
+        type(unit_result_t), intent(out) :: res
+        type(record_out_t) :: o
+        type(intensity_table_t) :: it1
+        real(dp), allocatable :: rows(:, :)
+        character(len=:), allocatable :: note
+        integer :: nv, ni
+
+        it1%on = run_itab_on
+        allocate(it1%periods, source=run_periods)
+        call intensity_start(it1, 1)
+        call record_rows(ir, o, note, rows, it1, res)
+        nv = RECORD_VALUES + size(rows)
+        ni = 0
+        if (it1%on) ni = size(it1%table, 2)
+        allocate(res%values(nv + ni))
+        call pack_record(o, res)
+        res%values(RECORD_VALUES + 1:nv) = reshape(rows, [size(rows)])
+        call add_field(res, note)
+        if (it1%on) then
+            res%values(nv + 1:nv + ni) = it1%table(1, :)
+            call add_field(res, trim(it1%notes(1)))
+        end if
+    end subroutine newmark_unit
+
+    !> Record ir (read, polarity, scale), its intensity row (it1, row 1) and its rows
+    !> (nblk x ncol); stderr lines go to log%log. Texts are built in the critical section
+    !> seispulse_text: gfortran 12 keeps the length of a deferred-length character function
+    !> result (int_str, shortest_str, list_item, ...) in one static variable per call site,
+    !> so two threads at one call site could swap lengths; the sliding analyses themselves
+    !> run outside it, concurrently.
+    subroutine record_rows(ir, o, note, rows, it1, log)
+        integer, intent(in) :: ir
+        type(record_out_t), intent(out) :: o
+        character(len=:), allocatable, intent(out) :: note   !! '' or the unconverged rows
+        real(dp), allocatable, intent(out) :: rows(:, :)
+        type(intensity_table_t), intent(inout) :: it1
+        type(unit_result_t), intent(inout) :: log
+        type(newmark_result_t) :: rn, ri
+        type(flexible_result_t) :: fn, fi
+        real(dp), allocatable :: accel(:)
+        character(len=:), allocatable :: errmsg, what
+        character(len=4096) :: msg
+        real(dp) :: nan, ky_up_col
+        integer :: nrec, nblk, ib, st, st2, c0, ncol
+        logical :: unconverged
+
+        nan = ieee_value(nan, ieee_quiet_nan)
+        nrec = size(run_cfg%recs)
+        nblk = size(run_cfg%blocks)
+        c0 = 2
+        if (run_cfg%with_mu) c0 = 3
+        ncol = row_columns(run_cfg)
+        allocate(rows(nblk, ncol))
+        rows = nan
+        note = ''
+        associate (cfg => run_cfg, where => run_where, r => run_cfg%recs(ir))
+            ! --- read, turn over, scale
+            !$omp critical (seispulse_text)
+            call load_record(where, r, ir, nrec, 'newmark', cfg%slammer_rounding, o, accel, &
+                             log)
+            what = where//list_item('files', ir)//' = '''//r%file//''''
+            !$omp end critical (seispulse_text)
+            if (o%ok) call intensity_record(it1, 1, accel, o%dt, cfg%g, what, log)
+
+            ! --- the rows of this record
+            do ib = 1, nblk
+                associate (b => cfg%blocks(ib))
+                    ky_up_col = b%ky_up
+                    if (b%mode == NEWMARK_DOWN) ky_up_col = ieee_value(nan, ieee_positive_inf)
+                    if (b%mode == NEWMARK_BOTH) ky_up_col = b%ky
+                    if (cfg%with_mu) rows(ib, 3) = cfg%mu(ib)
+                    rows(ib, c0 + 1) = b%ky
+                    rows(ib, c0 + 2) = ky_up_col
+                    rows(ib, ncol) = 1.0_dp
+                    if (.not. o%ok) cycle
+                    rows(ib, 1) = o%pga
+                    rows(ib, 2) = o%factor
+                    msg = ''
+                    st2 = SEISPULSE_SUCCESS
+                    unconverged = .false.
+                    if (cfg%kind == KIND_RIGID) then
+                        call newmark_rigid(accel, o%dt, b, cfg%method, cfg%g, rn, st, msg)
+                        if (st == SEISPULSE_SUCCESS) call newmark_rigid(-accel, o%dt, b, &
+                            cfg%method, cfg%g, ri, st2, msg)
+                    else
+                        call flexible_row(cfg, b, accel, o%dt, fn, st, msg)
+                        if (st == SEISPULSE_SUCCESS .or. st == SEISPULSE_NO_CONVERGENCE) &
+                            call flexible_row(cfg, b, -accel, o%dt, fi, st2, msg)
+                        ! not converged: the last iteration's results, with a warning
+                        unconverged = st == SEISPULSE_NO_CONVERGENCE .or. &
+                                      st2 == SEISPULSE_NO_CONVERGENCE
+                        if (st == SEISPULSE_NO_CONVERGENCE) st = SEISPULSE_SUCCESS
+                        if (st2 == SEISPULSE_NO_CONVERGENCE) st2 = SEISPULSE_SUCCESS
+                    end if
+                    if (st /= SEISPULSE_SUCCESS .or. st2 /= SEISPULSE_SUCCESS) then
+                        ! a failure of the sliding analysis itself: this row only
+                        !$omp critical (seispulse_text)
+                        errmsg = what//', '//row_name(cfg, ib)//': '//trim(msg)
+                        call report(errmsg, log)
+                        if (len(o%message) > 0) o%message = o%message//'; '
+                        o%message = o%message//row_name(cfg, ib)//': '//trim(msg)
+                        !$omp end critical (seispulse_text)
+                        cycle
+                    end if
+                    if (cfg%kind == KIND_RIGID) then
+                        rows(ib, c0 + 3:c0 + 10) = [rn%max_disp, 100.0_dp * rn%max_disp, &
+                            rn%final_disp, 100.0_dp * rn%final_disp, ri%max_disp, &
+                            100.0_dp * ri%max_disp, ri%final_disp, 100.0_dp * ri%final_disp]
+                    else
+                        rows(ib, c0 + 3:c0 + 16) = [fn%max_disp, 100.0_dp * fn%max_disp, &
+                            fn%final_disp, 100.0_dp * fn%final_disp, fi%max_disp, &
+                            100.0_dp * fi%max_disp, fi%final_disp, &
+                            100.0_dp * fi%final_disp, fn%kmax, fn%vs_final, &
+                            fn%damping_final, fn%period, real(fn%iterations, dp), &
+                            merge(1.0_dp, 0.0_dp, fn%converged .and. fi%converged)]
+                        if (unconverged) then
+                            !$omp critical (seispulse_text)
+                            call add_log(log, 'warning: '//what//', '//row_name(cfg, ib)//': ' &
+                                         //trim(msg))
+                            if (len(note) > 0) note = note//'; '
+                            note = note//row_name(cfg, ib)//': '//trim(msg)
+                            !$omp end critical (seispulse_text)
+                        end if
+                    end if
+                    rows(ib, ncol) = 0.0_dp
+                end associate
+            end do
+        end associate
+    end subroutine record_rows
 
     !> One flexible case (decoupled or coupled) on accel (g): the library's stat
     !> (SEISPULSE_NO_CONVERGENCE: res holds the last iteration) and message.

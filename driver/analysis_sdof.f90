@@ -37,6 +37,8 @@ module driver_sdof
     use driver_sdof_common, only: max_periods, max_dampings, check_dampings
     use driver_axis, only: axis_values
     use driver_echo, only: echo_unit
+    use driver_unit_result, only: unit_result_t
+    use driver_batch, only: batch_run, record_keys, pack_record, unpack_record, RECORD_VALUES
     implicit none
     private
 
@@ -98,6 +100,11 @@ module driver_sdof
         real(dp), allocatable :: t_peak(:), peak(:) !! per damping: peak of PSA/PGA
         real(dp), allocatable :: hist(:, :)         !! history rows (numeric columns)
     end type record_res_t
+
+    ! --- the batch being computed (set by compute before batch_run, read-only while the
+    ! units run concurrently in sdof_unit)
+    type(config_t) :: run_cfg
+    character(len=:), allocatable :: run_where          !! "file:line: &records: "
 
 contains
 
@@ -213,7 +220,8 @@ contains
         call echo_sdof(cfg)
 
         ! --- compute every table (nothing is written before all of them are done)
-        call compute(path, gr, cfg, outs, res)
+        call compute(path, gr, prefix, cfg, outs, res, stat, errmsg)
+        if (stat /= 0) return
         nfailed = count(.not. outs%ok)
 
         ! --- write
@@ -456,40 +464,182 @@ contains
     ! Computation
     ! ------------------------------------------------------------------------------
 
-    !> Every record (read, polarity, scale), its spectra and histories. A record that
-    !> fails (reading, scaling or a library check) keeps o%ok = .false. and its message,
-    !> reported on stderr at once.
-    subroutine compute(path, gr, cfg, outs, res)
+    !> Every record (read, polarity, scale), its spectra and histories: one unit of a
+    !> batch per record (driver_batch: threads, ranks, the restart journal). A record
+    !> that fails (reading, scaling or a library check) keeps o%ok = .false. and its
+    !> message, reported on stderr (in record order). stat /= 0: the journal was refused
+    !> (errmsg), nothing done.
+    subroutine compute(path, gr, prefix, cfg, outs, res, stat, errmsg)
         character(len=*), intent(in) :: path
         type(nml_group), intent(in) :: gr
+        character(len=*), intent(in) :: prefix            !! output prefix (the journal)
         type(config_t), intent(in) :: cfg
         type(record_out_t), allocatable, intent(out) :: outs(:)
         type(record_res_t), allocatable, intent(out) :: res(:)
-        real(dp), allocatable :: accel(:)
-        character(len=:), allocatable :: where
-        character(len=4096) :: msg
-        integer :: nrec, ir, st
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        type(unit_result_t), allocatable :: results(:)
+        integer :: nrec, ir
 
-        where = located(path, gr)
+        run_cfg = cfg
+        run_where = located(path, gr)
+        call batch_run(path, prefix, 'sdof', record_keys(cfg%recs, cfg%slammer_rounding), &
+                       sdof_unit, results, stat, errmsg)
+        if (stat /= 0) return
         nrec = size(cfg%recs)
         allocate(outs(nrec), res(nrec))
         do ir = 1, nrec
-            associate (r => cfg%recs(ir), o => outs(ir))
-                call load_record(where, r, ir, nrec, 'sdof', cfg%slammer_rounding, o, accel)
-                if (o%ok) then
-                    msg = ''
-                    call analyse(cfg, accel, o%dt, o%pga, res(ir), st, msg)
-                    if (st /= SEISPULSE_SUCCESS) then
-                        ! a failure of the oscillator itself: this record's rows
-                        o%ok = .false.
-                        o%message = trim(msg)
-                        call report(where//list_item('files', ir)//' = '''//r%file//''': ' &
-                                    //o%message)
-                    end if
-                end if
-            end associate
+            call unpack_record(results(ir), outs(ir))
+            if (outs(ir)%ok) call unpack_results(cfg, outs(ir)%dt, results(ir)%values, res(ir))
         end do
     end subroutine compute
+
+    !> One unit: record ir read and analysed, packed into res: the record (pack_record),
+    !> then, if it was computed, its results (pack_results); stderr lines into res%log.
+    !> Runs concurrently: it reads run_cfg and run_where only. Texts are built in the
+    !> critical section seispulse_text (see driver_newmark's record_rows: gfortran 12 and
+    !> deferred-length character function results); the oscillators run outside it.
+    subroutine sdof_unit(ir, res)
+        integer, intent(in) :: ir
+        type(unit_result_t), intent(out) :: res
+        type(record_out_t) :: o
+        type(record_res_t) :: q
+        real(dp), allocatable :: accel(:), packed(:)
+        character(len=4096) :: msg
+        integer :: st
+
+        associate (cfg => run_cfg, r => run_cfg%recs(ir))
+            !$omp critical (seispulse_text)
+            call load_record(run_where, r, ir, size(cfg%recs), 'sdof', cfg%slammer_rounding, &
+                             o, accel, res)
+            !$omp end critical (seispulse_text)
+            if (o%ok) then
+                msg = ''
+                call analyse(cfg, accel, o%dt, o%pga, q, st, msg)
+                if (st /= SEISPULSE_SUCCESS) then
+                    ! a failure of the oscillator itself: this record's rows
+                    o%ok = .false.
+                    o%message = trim(msg)
+                    !$omp critical (seispulse_text)
+                    call report(run_where//list_item('files', ir)//' = '''//r%file//''': ' &
+                                //o%message, res)
+                    !$omp end critical (seispulse_text)
+                end if
+            end if
+            if (o%ok) then
+                call pack_results(cfg, q, accel, packed)
+            else
+                allocate(packed(0))
+            end if
+        end associate
+        allocate(res%values(RECORD_VALUES + size(packed)))
+        call pack_record(o, res)
+        res%values(RECORD_VALUES + 1:) = packed
+    end subroutine sdof_unit
+
+    !> The results of a computed record as one list: SD, SV, SA, PSV, PSA (periods x
+    !> dampings each), with shape PSA/PGA, t_peak, peak; with histories the number of
+    !> samples n, the record (n) and per oscillator (damping, then period) z, z', a_abs
+    !> (n each): the other history columns follow from cfg and the record's dt.
+    subroutine pack_results(cfg, q, accel, v)
+        type(config_t), intent(in) :: cfg
+        type(record_res_t), intent(in) :: q
+        real(dp), intent(in) :: accel(:)                  !! the record as scaled (g)
+        real(dp), allocatable, intent(out) :: v(:)
+        integer :: nspec, nhist, npd, n, nosc, k, pos
+        npd = size(cfg%periods) * size(cfg%dampings)
+        nspec = 0
+        if (cfg%spectra) nspec = 5 * npd
+        if (cfg%spectra .and. cfg%shape) nspec = nspec + npd + 2 * size(cfg%dampings)
+        nhist = 0
+        n = size(accel)
+        nosc = size(cfg%h_periods) * size(cfg%h_dampings)
+        if (cfg%history) nhist = 1 + n + 3 * n * nosc
+        allocate(v(nspec + nhist))
+        pos = 0
+        if (cfg%spectra) then
+            call put(reshape(q%sd, [npd]))
+            call put(reshape(q%sv, [npd]))
+            call put(reshape(q%sa, [npd]))
+            call put(reshape(q%psv, [npd]))
+            call put(reshape(q%psa, [npd]))
+            if (cfg%shape) then
+                call put(reshape(q%shp, [npd]))
+                call put(q%t_peak)
+                call put(q%peak)
+            end if
+        end if
+        if (cfg%history) then
+            call put([real(n, dp)])
+            call put(accel)
+            do k = 0, nosc - 1
+                call put(q%hist(k * n + 1:(k + 1) * n, 5))
+                call put(q%hist(k * n + 1:(k + 1) * n, 6))
+                call put(q%hist(k * n + 1:(k + 1) * n, 7))
+            end do
+        end if
+    contains
+        subroutine put(x)
+            real(dp), intent(in) :: x(:)
+            v(pos + 1:pos + size(x)) = x
+            pos = pos + size(x)
+        end subroutine put
+    end subroutine pack_results
+
+    !> The record_res_t of a computed record from the values of its unit (after
+    !> RECORD_VALUES): what analyse computed, bit for bit (the history columns damping, T,
+    !> t = (i-1) dt and status as analyse builds them).
+    subroutine unpack_results(cfg, dt, values, q)
+        type(config_t), intent(in) :: cfg
+        real(dp), intent(in) :: dt                        !! the record's time step (s)
+        real(dp), intent(in) :: values(:)                 !! the unit's values
+        type(record_res_t), intent(out) :: q
+        real(dp), allocatable :: accel(:), t(:)
+        integer :: np, nd, npd, n, i, j, k, row, pos
+        np = size(cfg%periods)
+        nd = size(cfg%dampings)
+        npd = np * nd
+        pos = RECORD_VALUES
+        if (cfg%spectra) then
+            q%sd = reshape(take(npd), [np, nd])
+            q%sv = reshape(take(npd), [np, nd])
+            q%sa = reshape(take(npd), [np, nd])
+            q%psv = reshape(take(npd), [np, nd])
+            q%psa = reshape(take(npd), [np, nd])
+            if (cfg%shape) then
+                q%shp = reshape(take(npd), [np, nd])
+                q%t_peak = take(nd)
+                q%peak = take(nd)
+            end if
+        end if
+        if (.not. cfg%history) return
+        n = nint(values(pos + 1))
+        pos = pos + 1
+        accel = take(n)
+        allocate(q%hist(n * size(cfg%h_periods) * size(cfg%h_dampings), 8))
+        t = dt * [(real(i - 1, dp), i = 1, n)]
+        row = 0
+        do j = 1, size(cfg%h_dampings)
+            do k = 1, size(cfg%h_periods)
+                q%hist(row + 1:row + n, 1) = cfg%h_dampings(j)
+                q%hist(row + 1:row + n, 2) = cfg%h_periods(k)
+                q%hist(row + 1:row + n, 3) = t
+                q%hist(row + 1:row + n, 4) = accel
+                q%hist(row + 1:row + n, 5) = take(n)
+                q%hist(row + 1:row + n, 6) = take(n)
+                q%hist(row + 1:row + n, 7) = take(n)
+                q%hist(row + 1:row + n, 8) = 0.0_dp
+                row = row + n
+            end do
+        end do
+    contains
+        function take(m) result(x)
+            integer, intent(in) :: m
+            real(dp) :: x(m)
+            x = values(pos + 1:pos + m)
+            pos = pos + m
+        end function take
+    end subroutine unpack_results
 
     !> Spectra (and PSA/PGA) and histories of one record (accel in g).
     subroutine analyse(cfg, accel, dt, pga, q, stat, msg)
@@ -526,9 +676,11 @@ contains
         n = size(accel)
         if (n > max_history_rows / (size(cfg%h_periods) * size(cfg%h_dampings))) then
             stat = 1
+            !$omp critical (seispulse_text)
             msg = 'the response histories ('//int_str(n)//' samples x ' &
                   //int_str(size(cfg%h_periods) * size(cfg%h_dampings))//' oscillators) ' &
                   //'would have more than '//int_str(max_history_rows)//' rows'
+            !$omp end critical (seispulse_text)
             return
         end if
         allocate(q%hist(n * size(cfg%h_periods) * size(cfg%h_dampings), 8))

@@ -16,6 +16,7 @@ module driver_intensity_table
     use driver_tables, only: write_tables, say_written, category_kind, status_names
     use driver_records, only: record_in_t, record_out_t, record_line, report, path_len
     use driver_echo, only: echo_unit
+    use driver_unit_result, only: unit_result_t
     implicit none
     private
 
@@ -96,12 +97,14 @@ contains
     !> The row of record ir, read as accel (g) at step dt (s), with g (m/s^2); a
     !> failure goes to stderr at once (prefixed by `what`, "file:line: &records:
     !> files(2) = 'x'") and into the table's header. Rows of records not read stay NaN
-    !> with status failed.
-    subroutine intensity_record(itab, ir, accel, dt, g, what)
+    !> with status failed. With `log` (a unit of a batch) the failure goes to log%log
+    !> instead of stderr.
+    subroutine intensity_record(itab, ir, accel, dt, g, what, log)
         type(intensity_table_t), intent(inout) :: itab
         integer, intent(in) :: ir
         real(dp), intent(in) :: accel(:), dt, g
         character(len=*), intent(in) :: what
+        type(unit_result_t), intent(inout), optional :: log  !! collects the stderr line
         type(intensity_t) :: im
         character(len=1024) :: msg
         real(dp) :: sa
@@ -123,7 +126,7 @@ contains
             itab%table(ir, :) = ieee_value(1.0_dp, ieee_quiet_nan)
             itab%table(ir, size(itab%table, 2)) = 1.0_dp
             itab%notes(ir) = 'intensity: '//trim(msg)
-            call report(what//': intensity: '//trim(msg))
+            call report(what//': intensity: '//trim(msg), log)
             return
         end if
         itab%table(ir, size(itab%table, 2)) = 0.0_dp

@@ -26,9 +26,11 @@ program seispulse_driver
     use driver_empirical, only: run_empirical, empirical_groups, empirical_tables
     use driver_spectra, only: run_spectra, spectra_groups, spectra_tables
     use driver_run_group, only: run_analysis, run_output, read_run, run_keys, write_run, &
-                                run_verbose, check_run_digits
+                                run_verbose, check_run_digits, run_restart
     use driver_echo, only: echo_unit, echo_start, echo_finish, echo_file_path
     use driver_tables, only: commit_outputs, discard_outputs
+    use driver_parallel, only: par_init, par_finalize, par_root
+    use driver_batch, only: batch_commit, batch_discard
     implicit none
 
     interface
@@ -64,6 +66,7 @@ program seispulse_driver
     type(nml_group), allocatable :: groups(:)
     integer :: stat, irun, i, j
 
+    call par_init()
     if (command_argument_count() /= 1) then
         write(error_unit, '(a)') 'usage: seispulse INPUT.nml   (see README, "Batch driver")'
         call finish(EXIT_INPUT_ERROR)
@@ -94,6 +97,17 @@ program seispulse_driver
     if (stat /= 0) call fail(errmsg)
     call read_group(path, groups(irun), read_run, stat, errmsg)
     if (stat /= 0) call fail(errmsg)
+    ! another MPI rank takes part in batches only (driver_batch); anything else is the
+    ! root's alone
+    select case (lower(run_analysis()))
+    case ('newmark', 'sdof')
+    case default
+        if (.not. par_root()) call finish(EXIT_OK)
+        if (run_restart() .and. any(analyses == lower(run_analysis()))) &
+            write(error_unit, '(a)') 'warning: '//located(path, groups(irun)) &
+            //'restart: only the analyses ''newmark'' and ''sdof'' keep a journal to ' &
+            //'restart from (ignored)'
+    end select
     if (len(run_output()) == 0) call fail(located(path, groups(irun)) &
         //'output: missing (the prefix of the output files, e.g. ''out/case1'')')
     call echo_start(run_output())
@@ -219,23 +233,32 @@ contains
     end subroutine write_echo
 
     !> Exit with `status`: the outputs of the run are renamed to their final names
-    !> (EXIT_OK, EXIT_ROWS_FAILED; a rename that fails makes it EXIT_INPUT_ERROR), or, for
-    !> EXIT_INPUT_ERROR, deleted together with the files of an earlier run of this
-    !> prefix.
+    !> (EXIT_OK, EXIT_ROWS_FAILED; a rename that fails makes it EXIT_INPUT_ERROR) and the
+    !> restart journal of a batch removed, or, for EXIT_INPUT_ERROR, the outputs deleted
+    !> together with the files of an earlier run of this prefix (and the journal this run
+    !> started, unless it is a restart: driver_batch's batch_discard). Another MPI rank than
+    !> the root touches no file and exits with 0.
     subroutine finish(status)
         integer, intent(in) :: status
         integer :: st, rc
         character(len=:), allocatable :: msg
         rc = status
+        if (.not. par_root()) then
+            call par_finalize()
+            call c_exit(0_c_int)
+        end if
         if (rc /= EXIT_INPUT_ERROR) then
             call commit_outputs(st, msg)
             if (st /= 0) then
                 write(error_unit, '(a)') 'seispulse: error: ' &
                     //output_located(path)//msg
                 rc = EXIT_INPUT_ERROR
+            else
+                call batch_commit()
             end if
         end if
         if (rc == EXIT_INPUT_ERROR) then
+            call batch_discard()
             ! the input itself (an edited echo file under its own prefix) always stays
             if (allocated(path)) then
                 call discard_outputs(run_output(), all_tables, keep=path)
@@ -245,6 +268,7 @@ contains
         end if
         flush(output_unit)
         flush(error_unit)
+        call par_finalize()
         call c_exit(int(rc, c_int))
     end subroutine finish
 

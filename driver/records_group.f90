@@ -20,6 +20,7 @@ module driver_records
     use driver_input, only: located, join, given, list_length, list_item, name_index, &
                             value_name
     use driver_echo, only: echo_unit, echo_path
+    use driver_unit_result, only: unit_result_t, add_log
     implicit none
     private
 
@@ -833,8 +834,9 @@ contains
     !> Read record ir of nrec, turn it over (polarity) and scale it (scale, or target
     !> PGA): accel in g and o. Progress on stderr ("<tag>: record ir/nrec: ..."); a
     !> record that cannot be read or scaled gives o%ok = .false. with o%message, also
-    !> reported on stderr at once ("<where>files(ir) = '...': message").
-    subroutine load_record(where, r, ir, nrec, tag, slammer_rounding, o, accel)
+    !> reported on stderr at once ("<where>files(ir) = '...': message"). With `log` (a unit
+    !> of a batch, which never prints) those lines go to log%log instead of stderr.
+    subroutine load_record(where, r, ir, nrec, tag, slammer_rounding, o, accel, log)
         character(len=*), intent(in) :: where             !! "file:line: &records: "
         type(record_in_t), intent(in) :: r                !! the record's input
         integer, intent(in) :: ir, nrec                   !! its index, the number of records
@@ -842,6 +844,7 @@ contains
         logical, intent(in) :: slammer_rounding           !! pga_rounding = 'slammer'
         type(record_out_t), intent(out) :: o              !! what happened
         real(dp), allocatable, intent(out) :: accel(:)    !! the scaled record (g), if ok
+        type(unit_result_t), intent(inout), optional :: log  !! collects the stderr lines
         type(record_t) :: rec
         character(len=4096) :: msg
         real(dp) :: factor
@@ -883,13 +886,13 @@ contains
             o%pga = record_pga(accel)
             call progress(tag, ir, nrec, o%name//' (npts '//int_str(o%npts)//', dt ' &
                           //shortest_str(o%dt)//' s, PGA '//short(o%pga_read)//' g' &
-                          //scaled_text(o)//')')
+                          //scaled_text(o)//')', log)
         else
             o%ok = .false.
             o%message = trim(msg)
-            call progress(tag, ir, nrec, o%name//' (failed)')
+            call progress(tag, ir, nrec, o%name//' (failed)', log)
             call report(where//list_item('files', ir)//' = '''//r%file//''': ' &
-                        //o%message)
+                        //o%message, log)
         end if
     end subroutine load_record
 
@@ -975,18 +978,28 @@ contains
         if (len(s) == 0) s = 'record_'//int_str(i)
     end function record_label
 
-    !> "<tag>: record i/n: text" on stderr (tag: the analysis).
-    subroutine progress(tag, i, n, text)
+    !> "<tag>: record i/n: text" on stderr (tag: the analysis), or into log%log.
+    subroutine progress(tag, i, n, text, log)
         character(len=*), intent(in) :: tag
         integer, intent(in) :: i, n
         character(len=*), intent(in) :: text
+        type(unit_result_t), intent(inout), optional :: log  !! collects the line instead
+        if (present(log)) then
+            call add_log(log, tag//': record '//int_str(i)//'/'//int_str(n)//': '//text)
+            return
+        end if
         write(error_unit, '(a)') tag//': record '//int_str(i)//'/'//int_str(n)//': '//text
         flush(error_unit)
     end subroutine progress
 
-    !> An error of one record or row: reported at once, the run goes on.
-    subroutine report(text)
+    !> An error of one record or row: reported at once (or into log%log), the run goes on.
+    subroutine report(text, log)
         character(len=*), intent(in) :: text
+        type(unit_result_t), intent(inout), optional :: log  !! collects the line instead
+        if (present(log)) then
+            call add_log(log, 'seispulse: error: '//text)
+            return
+        end if
         write(error_unit, '(a)') 'seispulse: error: '//text
         flush(error_unit)
     end subroutine report

@@ -6,9 +6,10 @@ module driver_run_group
     public :: run_analysis, run_output, read_run, run_keys, write_run
     public :: run_verbose
     public :: run_digits, run_csv_digits, check_run_digits
+    public :: run_restart
 
-    character(len=10), parameter :: run_keys(5) = [character(len=10) :: 'analysis', 'output', &
-        'verbose', 'digits', 'csv_digits']
+    character(len=10), parameter :: run_keys(6) = [character(len=10) :: 'analysis', 'output', &
+        'verbose', 'digits', 'csv_digits', 'restart']
 
     character(len=32) :: analysis = ''
     character(len=1024) :: output = ''
@@ -22,6 +23,10 @@ module driver_run_group
     logical :: verbose = .false.
     namelist /run/ verbose
     namelist /run/ digits, csv_digits
+    !> Resume a killed run of a batch analysis ('newmark', 'sdof') from its journal
+    !> <output>.journal (driver_batch): the units found there are not computed again.
+    logical :: restart = .false.
+    namelist /run/ restart
 
 contains
 
@@ -51,6 +56,11 @@ contains
     logical function run_verbose()
         run_verbose = verbose
     end function run_verbose
+
+    !> Whether to resume from the journal of a killed run (restart = .true.).
+    logical function run_restart()
+        run_restart = restart
+    end function run_restart
 
     !> Significant digits of the numbers in text tables.
     integer function run_digits()

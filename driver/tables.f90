@@ -19,6 +19,7 @@ module driver_tables
     public :: write_tables, delete_files, say_written, stack
     public :: write_table_pair, category_kind, table_path, commit_outputs, discard_outputs
     public :: open_output, status_names
+    public :: make_parent_dir, remove_file
 
     !> The names of a row status column: 0 ok, 1 failed (category_kind(status_names)).
     character(len=6), parameter :: status_names(0:1) = [character(len=6) :: 'ok', 'failed']

@@ -40,6 +40,9 @@ NOT_RUN = {
     ("sh", "make run"): "builds the project; its driver run is input/example.nml, run here "
                         "as `seispulse input/example.nml`",
     ("sh", "make test"): "runs the test suite this test is part of",
+    ("sh", "OMP_NUM_THREADS=4 seispulse input/newmark_example.nml"):
+        "a driver run on threads: test_driver_restart.py compares the tables and standard "
+        "error of 2 threads with those of one",
     ("sh", "meson setup build -Dpython=$(which python3)"):
         "configures the build this test runs in (make build does the same)",
     ("sh", "meson compile -C build"): "compiles the build this test runs in",

@@ -1,0 +1,884 @@
+!> The batch engine: an analysis whose work splits into independent units (for the
+!> records analyses one unit = one record with all its rows) hands them to batch_run,
+!> which computes them where driver_parallel says (OpenMP threads, MPI ranks), keeps a
+!> restart journal, prints the units' stderr lines in unit order and returns every
+!> unit's result to the analysis, which turns them into its tables.
+!>
+!> **The journal** `<output>.journal` (next to the tables; README "Batch driver",
+!> "Restart") records each unit as it is finished, so that a run that is killed can be
+!> resumed with `restart = .true.` in &run: the units found in the journal are not
+!> computed again. It is a text file, one line per unit, each line written whole and
+!> forced to disk (fflush, fsync) before the next unit is delivered:
+!>
+!>     seispulse-journal 1 <fingerprint: 16 hex digits> <number of units>
+!>     u <unit> <n> <value 1> ... <value n> <text> <log> <checksum: 16 hex digits>
+!>
+!> Values are the IEEE 754 bit patterns of the doubles as 16 lowercase hex digits (exact:
+!> a restored unit gives the same tables, bit for bit). <text> and <log> are `-` when
+!> absent, else `=` followed by the string with `%`, blanks, control characters (new line,
+!> the field separator) and DEL written as `%XX` (hex). The checksum is the 64-bit FNV-1a
+!> hash of the bytes of the line before the blank that precedes it. The fingerprint is the
+!> FNV-1a hash of the journal format, the seispulse version, the analysis, the bytes of the
+!> input file and the key of every unit (the record file, its size and how it is read
+!> and scaled): a journal whose fingerprint differs belongs to another run and is refused,
+!> as is one with a damaged line (checksum, a unit out of range or twice, a malformed
+!> field); an unterminated last line (the run was killed while writing it) is dropped and
+!> that unit computed again. The journal is removed once the tables are committed
+!> (batch_commit, from the driver's end of run), and after an error (exit status 2) unless
+!> the run was a restart (batch_discard); a killed run leaves it.
+module driver_batch
+    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int64
+    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_ptr, c_size_t, c_null_char, &
+                                           c_null_ptr, c_associated
+    use seispulse, only: dp, int_str, seispulse_version
+    use driver_unit_result, only: unit_result_t, add_field, get_field
+    use driver_parallel, only: par_run_units, par_root, par_finalize, unit_work
+    use driver_run_group, only: run_restart
+    use driver_tables, only: make_parent_dir, remove_file
+    use driver_records, only: record_in_t, record_out_t
+    implicit none
+    private
+
+    public :: batch_run, batch_commit, batch_discard, journal_path
+    public :: record_keys, pack_record, unpack_record, RECORD_VALUES, RECORD_FIELDS
+
+    !> Version of the journal format (the header's second word).
+    integer, parameter :: JOURNAL_FORMAT = 1
+    character(len=*), parameter :: MAGIC = 'seispulse-journal'
+    !> Values and text fields pack_record puts first in a unit's result.
+    integer, parameter :: RECORD_VALUES = 7, RECORD_FIELDS = 2
+    !> FNV-1a 64: offset basis 0xcbf29ce484222325 and prime 2^40 + 0x1b3, in 32-bit limbs.
+    integer(int64), parameter :: FNV_HI = 3421674724_int64, FNV_LO = 2216829733_int64
+    integer(int64), parameter :: MASK32 = 4294967295_int64
+    character(len=16), parameter :: HEX = '0123456789abcdef'
+    !> Bytes of the input file hashed per read.
+    integer, parameter :: CHUNK = 65536
+    !> Separator of the parts of a record's key.
+    character(len=1), parameter :: KEY_SEP = '|'
+
+    !> A 64-bit FNV-1a hash in two 32-bit limbs (no integer overflow anywhere).
+    type :: fnv_t
+        integer(int64) :: hi = FNV_HI
+        integer(int64) :: lo = FNV_LO
+    end type fnv_t
+
+    interface
+        ! C stdio and POSIX: the journal is written with C streams so that each line can
+        ! be forced to disk (fflush, then fsync of the stream's file descriptor).
+        type(c_ptr) function c_fopen(path, mode) bind(c, name='fopen')
+            import :: c_ptr, c_char
+            character(kind=c_char), intent(in) :: path(*), mode(*)
+        end function c_fopen
+        integer(c_size_t) function c_fwrite(buf, size, count, stream) bind(c, name='fwrite')
+            import :: c_size_t, c_char, c_ptr
+            character(kind=c_char), intent(in) :: buf(*)
+            integer(c_size_t), value, intent(in) :: size, count
+            type(c_ptr), value, intent(in) :: stream
+        end function c_fwrite
+        integer(c_int) function c_fflush(stream) bind(c, name='fflush')
+            import :: c_int, c_ptr
+            type(c_ptr), value, intent(in) :: stream
+        end function c_fflush
+        integer(c_int) function c_fileno(stream) bind(c, name='fileno')
+            import :: c_int, c_ptr
+            type(c_ptr), value, intent(in) :: stream
+        end function c_fileno
+        integer(c_int) function c_fsync(fd) bind(c, name='fsync')
+            import :: c_int
+            integer(c_int), value, intent(in) :: fd
+        end function c_fsync
+        integer(c_int) function c_fclose(stream) bind(c, name='fclose')
+            import :: c_int, c_ptr
+            type(c_ptr), value, intent(in) :: stream
+        end function c_fclose
+        integer(c_int) function c_rename(old, new) bind(c, name='rename')
+            import :: c_int, c_char
+            character(kind=c_char), intent(in) :: old(*), new(*)
+        end function c_rename
+        ! C exit(): a worker rank ends without gfortran's STOP line
+        subroutine c_exit(status) bind(c, name='exit')
+            import :: c_int
+            integer(c_int), value, intent(in) :: status
+        end subroutine c_exit
+    end interface
+
+    ! --- the state of the batch being delivered (written on the root by `deliver` only,
+    ! one call at a time; the units never touch it)
+    type(unit_result_t), allocatable :: kept(:)    !! results by unit
+    logical, allocatable :: done(:)                !! unit delivered or restored
+    logical, allocatable :: restored(:)            !! unit read from the journal
+    integer :: next_log = 1                        !! the first unit whose log is not out
+    type(c_ptr) :: journal = c_null_ptr            !! the open journal (null: none)
+    character(len=:), allocatable :: journal_file  !! its path (removed by batch_commit)
+    logical :: journal_failed = .false.            !! a write failed (warned once)
+
+contains
+
+    !> The journal of the run with output prefix `prefix`: <prefix>.journal
+    !> ('out/case1' -> out/case1.journal; a prefix that is a directory, 'out/', ->
+    !> out/seispulse.journal). Its directory is created as the tables' is.
+    pure function journal_path(prefix) result(path)
+        character(len=*), intent(in) :: prefix   !! output prefix of &run
+        character(len=:), allocatable :: path
+        integer :: n
+        n = len_trim(prefix)
+        if (n == 0) then
+            path = 'seispulse.journal'
+        else if (prefix(n:n) == '/') then
+            path = prefix(1:n)//'seispulse.journal'
+        else
+            path = prefix(1:n)//'.journal'
+        end if
+    end function journal_path
+
+    !> Compute the units of a batch and return their results (on the root). Units are
+    !> those of size(keys); with `restart = .true.` in &run those in the journal of an
+    !> earlier, killed run of the same input are restored instead of computed (one line
+    !> on stderr says how many). Each computed unit's log (its stderr lines) is printed in
+    !> unit order. stat /= 0: the journal is refused (another run's, or damaged), errmsg
+    !> "journal:line: problem (what to do)"; nothing was computed. On a worker rank (MPI)
+    !> this routine computes what the root sends it, then ends the process (status 0).
+    subroutine batch_run(path, prefix, analysis, keys, work, results, stat, errmsg)
+        character(len=*), intent(in) :: path       !! the input file (its bytes enter the
+                                                   !! fingerprint)
+        character(len=*), intent(in) :: prefix     !! output prefix (the journal's place)
+        character(len=*), intent(in) :: analysis   !! 'newmark', 'sdof' (log lines, fingerprint)
+        character(len=*), intent(in) :: keys(:)    !! one per unit: what identifies it
+        procedure(unit_work) :: work               !! computes one unit (concurrently)
+        type(unit_result_t), allocatable, intent(out) :: results(:)  !! every unit's result
+        integer, intent(out) :: stat               !! 0, or 1 (journal refused)
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=16) :: fp
+        character(len=:), allocatable :: jpath, msg
+        integer, allocatable :: todo(:)
+        integer :: n, i, nrest
+        logical :: exists
+
+        stat = 0
+        errmsg = ''
+        if (.not. par_root()) then
+            ! a worker: the root hands out the units; then this process ends
+            allocate(todo(0))
+            call par_run_units(todo, work, deliver)
+            call par_finalize()
+            flush(output_unit)
+            flush(error_unit)
+            call c_exit(0_c_int)
+        end if
+
+        n = size(keys)
+        jpath = journal_path(prefix)
+        call fingerprint(path, analysis, keys, fp, stat, msg)
+        if (stat /= 0) then
+            errmsg = msg
+            call release_workers()
+            return
+        end if
+        if (allocated(kept)) deallocate(kept)
+        if (allocated(done)) deallocate(done)
+        if (allocated(restored)) deallocate(restored)
+        allocate(kept(n), done(n), restored(n))
+        done = .false.
+        restored = .false.
+        next_log = 1
+        journal_failed = .false.
+
+        inquire(file=jpath, exist=exists)
+        nrest = 0
+        if (run_restart()) then
+            if (exists) then
+                call read_journal(jpath, fp, n, stat, errmsg)
+                if (stat /= 0) then
+                    call release_workers()
+                    return
+                end if
+                nrest = count(restored)
+                write(error_unit, '(a)') analysis//': '//int_str(nrest)//' of ' &
+                    //int_str(n)//' units restored from '//jpath
+            else
+                write(error_unit, '(a)') analysis//': restart: no journal '//jpath &
+                    //': all '//int_str(n)//' units are computed'
+            end if
+            flush(error_unit)
+        else if (exists) then
+            write(error_unit, '(a)') 'warning: '//jpath//': the journal of an earlier run ' &
+                //'is replaced (restart = .true. in &run resumes from it)'
+            flush(error_unit)
+        end if
+        done = restored
+
+        journal_file = jpath
+        call open_journal(jpath, fp, n)
+        todo = pack([(i, i = 1, n)], .not. restored)
+        call print_logs()
+        call par_run_units(todo, work, deliver)
+        if (c_associated(journal)) then
+            if (c_fclose(journal) /= 0) call journal_warning()
+            journal = c_null_ptr
+        end if
+        call move_alloc(kept, results)
+        deallocate(done, restored)
+    end subroutine batch_run
+
+    !> After the tables of the run are committed: remove its journal (if any).
+    subroutine batch_commit()
+        if (.not. allocated(journal_file)) return
+        call remove_file(journal_file)
+        call remove_file(journal_file//'.tmp')
+        deallocate(journal_file)
+    end subroutine batch_commit
+
+    !> After an error (exit status 2, no table written): the journal this run started is
+    !> removed with the other outputs, unless the run was a restart (restart = .true.:
+    !> it stays, to resume from once the problem is fixed). A journal this run did not
+    !> start (an input error before the batch, a journal refused) is never touched.
+    subroutine batch_discard()
+        if (.not. allocated(journal_file)) return
+        if (run_restart()) return
+        call batch_commit()
+    end subroutine batch_discard
+
+    !> Under MPI the workers wait in par_run_units: hand them no unit, so they end.
+    subroutine release_workers()
+        integer :: none(0)
+        call par_run_units(none, nothing, deliver)
+    end subroutine release_workers
+
+    !> The work of no unit (release_workers never calls it).
+    subroutine nothing(i, res)
+        integer, intent(in) :: i
+        type(unit_result_t), intent(out) :: res
+        res%text = int_str(i)
+    end subroutine nothing
+
+    !> On the root, one unit at a time: journal it, keep it, print the logs now due.
+    subroutine deliver(i, res)
+        integer, intent(in) :: i
+        type(unit_result_t), intent(in) :: res
+        character(len=:), allocatable :: line
+        if (i < 1 .or. i > size(kept)) return
+        if (done(i)) return
+        kept(i) = res
+        done(i) = .true.
+        if (c_associated(journal)) then
+            line = unit_line(i, res)
+            call put_line(line)
+        end if
+        call print_logs()
+    end subroutine deliver
+
+    !> Print the logs of the units from next_log on, in order, up to the first unit not
+    !> yet done (a restored unit prints nothing: one line said how many were restored).
+    subroutine print_logs()
+        logical :: printed
+        printed = .false.
+        do while (next_log <= size(done))
+            if (.not. done(next_log)) exit
+            if (.not. restored(next_log) .and. allocated(kept(next_log)%log)) then
+                if (len(kept(next_log)%log) > 0) then
+                    write(error_unit, '(a)') kept(next_log)%log
+                    printed = .true.
+                end if
+            end if
+            next_log = next_log + 1
+        end do
+        if (printed) flush(error_unit)
+    end subroutine print_logs
+
+    ! ------------------------------------------------------------------------------
+    ! Writing the journal
+    ! ------------------------------------------------------------------------------
+
+    !> Start the journal: the header and the restored units' lines go to <jpath>.tmp,
+    !> forced to disk, which then replaces <jpath> (rename: a kill leaves the old journal
+    !> or the new one, never half of one). The stream stays open for the units to come;
+    !> a journal that cannot be written is a warning (the run goes on without it).
+    subroutine open_journal(jpath, fp, n)
+        character(len=*), intent(in) :: jpath
+        character(len=16), intent(in) :: fp
+        integer, intent(in) :: n
+        integer :: i, last
+        journal = c_null_ptr
+        call make_parent_dir(jpath)
+        journal = c_fopen(jpath//'.tmp'//c_null_char, 'wb'//c_null_char)
+        if (.not. c_associated(journal)) then
+            call journal_warning()
+            return
+        end if
+        last = 0
+        do i = 1, n
+            if (restored(i)) last = i
+        end do
+        ! forced to disk once, after the last of these lines
+        call put_line(MAGIC//' '//int_str(JOURNAL_FORMAT)//' '//fp//' '//int_str(n), last == 0)
+        do i = 1, n
+            if (restored(i)) call put_line(unit_line(i, kept(i)), i == last)
+        end do
+        if (journal_failed) return
+        if (c_rename(jpath//'.tmp'//c_null_char, jpath//c_null_char) /= 0) then
+            call journal_warning()
+            if (c_fclose(journal) /= 0) continue
+            journal = c_null_ptr
+        end if
+    end subroutine open_journal
+
+    !> Write one line and its new line, then (unless `sync` is false: more lines follow at
+    !> once) force it to disk.
+    subroutine put_line(line, sync)
+        character(len=*), intent(in) :: line
+        logical, intent(in), optional :: sync
+        integer(c_size_t) :: nb
+        if (.not. c_associated(journal)) return
+        nb = int(len(line) + 1, c_size_t)
+        if (c_fwrite(line//new_line('a'), 1_c_size_t, nb, journal) /= nb) then
+            call journal_warning()
+        else if (present(sync)) then
+            if (.not. sync) return
+        end if
+        if (journal_failed) then
+            return
+        else if (c_fflush(journal) /= 0) then
+            call journal_warning()
+        else if (c_fsync(c_fileno(journal)) /= 0) then
+            call journal_warning()
+        end if
+    end subroutine put_line
+
+    !> A journal write failed: say so once; the run goes on without the journal.
+    subroutine journal_warning()
+        if (journal_failed) return
+        journal_failed = .true.
+        write(error_unit, '(a)') 'warning: cannot write the journal '//journal_file &
+            //': the run goes on without it (a restart computes the units it misses)'
+        flush(error_unit)
+        if (c_associated(journal)) then
+            if (c_fclose(journal) /= 0) continue
+        end if
+        journal = c_null_ptr
+    end subroutine journal_warning
+
+    !> The journal line of unit i: "u <i> <n> <hex>... <text> <log> <checksum>".
+    function unit_line(i, res) result(line)
+        integer, intent(in) :: i
+        type(unit_result_t), intent(in) :: res
+        character(len=:), allocatable :: line, head, text, log
+        type(fnv_t) :: h
+        integer :: nv, k, pos
+        nv = -1
+        if (allocated(res%values)) nv = size(res%values)
+        head = 'u '//int_str(i)//' '//int_str(nv)
+        text = escaped(res%text, allocated(res%text))
+        log = escaped(res%log, allocated(res%log))
+        allocate(character(len=len(head) + 17 * max(nv, 0) + 2 + len(text) + len(log) &
+                 + 17) :: line)
+        line(1:len(head)) = head
+        pos = len(head)
+        do k = 1, nv
+            line(pos + 1:pos + 17) = ' '//hex_real(res%values(k))
+            pos = pos + 17
+        end do
+        line(pos + 1:pos + 2 + len(text) + len(log)) = ' '//text//' '//log
+        pos = pos + 2 + len(text) + len(log)
+        call fnv_feed(h, line(1:pos))
+        line(pos + 1:) = ' '//fnv_hex(h)
+    end function unit_line
+
+    !> '-' for an absent string, else '=' and the string with %, blanks, control
+    !> characters and DEL as %XX.
+    function escaped(s, present_) result(e)
+        character(len=*), intent(in) :: s
+        logical, intent(in) :: present_
+        character(len=:), allocatable :: e
+        integer :: i, n, c
+        if (.not. present_) then
+            e = '-'
+            return
+        end if
+        n = 1
+        do i = 1, len(s)
+            n = n + merge(3, 1, needs_escape(s(i:i)))
+        end do
+        allocate(character(len=n) :: e)
+        e(1:1) = '='
+        n = 1
+        do i = 1, len(s)
+            if (needs_escape(s(i:i))) then
+                c = ichar(s(i:i))
+                e(n + 1:n + 3) = '%'//HEX(c / 16 + 1:c / 16 + 1)//HEX(mod(c, 16) + 1:mod(c, 16) + 1)
+                n = n + 3
+            else
+                e(n + 1:n + 1) = s(i:i)
+                n = n + 1
+            end if
+        end do
+    end function escaped
+
+    pure logical function needs_escape(ch)
+        character(len=1), intent(in) :: ch
+        needs_escape = ch == '%' .or. ch == ' ' .or. ichar(ch) < 32 .or. ichar(ch) == 127
+    end function needs_escape
+
+    ! ------------------------------------------------------------------------------
+    ! Reading the journal
+    ! ------------------------------------------------------------------------------
+
+    !> Read the journal `jpath` of this run (fingerprint fp, n units) into kept/restored.
+    !> stat /= 0 with errmsg "jpath:line: problem (...)" for a foreign or damaged journal.
+    subroutine read_journal(jpath, fp, n, stat, errmsg)
+        character(len=*), intent(in) :: jpath
+        character(len=16), intent(in) :: fp
+        integer, intent(in) :: n
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=:), allocatable :: buf, problem
+        character(len=512) :: iomsg
+        integer(int64) :: size8
+        integer :: u, pos, k, lineno, nbytes
+
+        stat = 0
+        errmsg = ''
+        inquire(file=jpath, size=size8)
+        if (size8 < 0 .or. size8 > int(huge(0), int64)) then
+            call refuse(1, 'cannot read it (size unknown or above 2 GB)')
+            return
+        end if
+        nbytes = int(size8)
+        allocate(character(len=nbytes) :: buf)
+        open(newunit=u, file=jpath, access='stream', form='unformatted', action='read', &
+             status='old', iostat=stat, iomsg=iomsg)
+        if (stat == 0 .and. nbytes > 0) read(u, iostat=stat, iomsg=iomsg) buf
+        if (stat == 0) then
+            close(u)
+        else
+            close(u, iostat=k)
+            call refuse(1, 'cannot read it: '//trim(iomsg))
+            return
+        end if
+
+        pos = 1
+        lineno = 0
+        do while (pos <= nbytes)
+            k = index(buf(pos:), new_line('a'))
+            ! an unterminated last line: the run was killed while writing it; that unit
+            ! is computed again
+            if (k == 0) exit
+            lineno = lineno + 1
+            if (lineno == 1) then
+                call check_header(buf(pos:pos + k - 2), fp, n, problem)
+            else
+                call read_unit_line(buf(pos:pos + k - 2), n, problem)
+            end if
+            if (len(problem) > 0) then
+                call refuse(lineno, problem)
+                return
+            end if
+            pos = pos + k
+        end do
+        if (lineno == 0) call refuse(1, 'no header line (not a complete seispulse journal)')
+
+    contains
+
+        subroutine refuse(line, what)
+            integer, intent(in) :: line
+            character(len=*), intent(in) :: what
+            stat = 1
+            errmsg = jpath//':'//int_str(line)//': '//what//' (delete the journal, or run ' &
+                     //'with restart = .false. in &run to compute every unit again)'
+            restored = .false.
+        end subroutine refuse
+
+    end subroutine read_journal
+
+    !> The header "seispulse-journal <format> <fingerprint> <units>" of this run?
+    !> problem: '' if it is, else what differs.
+    subroutine check_header(line, fp, n, problem)
+        character(len=*), intent(in) :: line
+        character(len=16), intent(in) :: fp
+        integer, intent(in) :: n
+        character(len=:), allocatable, intent(out) :: problem
+        character(len=:), allocatable :: w
+        integer :: pos, fmt, units
+        logical :: ok
+        problem = ''
+        pos = 1
+        call next_word(line, pos, w)
+        if (w /= MAGIC) then
+            problem = 'not a seispulse journal (its first line does not start with ' &
+                      //MAGIC//')'
+            return
+        end if
+        call next_word(line, pos, w)
+        call read_int(w, fmt, ok)
+        if (.not. ok) then
+            problem = 'damaged header (journal format '''//w//''')'
+            return
+        end if
+        if (fmt /= JOURNAL_FORMAT) then
+            problem = 'journal format '//int_str(fmt)//', this seispulse reads format ' &
+                      //int_str(JOURNAL_FORMAT)//' only'
+            return
+        end if
+        call next_word(line, pos, w)
+        if (w /= fp) then
+            problem = 'the journal of another run (fingerprint '//w//', this run''s is ' &
+                      //fp//': the input file, the analysis, the record files or the ' &
+                      //'seispulse version differ)'
+            return
+        end if
+        call next_word(line, pos, w)
+        call read_int(w, units, ok)
+        if (.not. ok .or. pos <= len(line)) then
+            problem = 'damaged header (the number of units)'
+            return
+        end if
+        if (units /= n) problem = 'the journal of another run ('//int_str(units) &
+            //' units, this run has '//int_str(n)//')'
+    end subroutine check_header
+
+    !> One unit line: check it and keep its unit. problem: '' or what is wrong.
+    subroutine read_unit_line(line, n, problem)
+        character(len=*), intent(in) :: line
+        integer, intent(in) :: n
+        character(len=:), allocatable, intent(out) :: problem
+        character(len=:), allocatable :: w
+        type(unit_result_t) :: res
+        type(fnv_t) :: h
+        integer :: pos, last, i, nv, k
+        integer(int64) :: bits
+        logical :: ok
+
+        problem = ''
+        last = index(line, ' ', back=.true.)
+        if (last == 0) then
+            problem = 'damaged line (no checksum)'
+            return
+        end if
+        call fnv_feed(h, line(1:last - 1))
+        if (line(last + 1:) /= fnv_hex(h)) then
+            problem = 'damaged line (its checksum does not match)'
+            return
+        end if
+        pos = 1
+        call next_word(line(1:last - 1), pos, w)
+        if (w /= 'u') then
+            problem = 'damaged line (not a unit line)'
+            return
+        end if
+        call next_word(line(1:last - 1), pos, w)
+        call read_int(w, i, ok)
+        if (.not. ok) then
+            problem = 'damaged line (unit '''//w//''')'
+            return
+        end if
+        if (i < 1 .or. i > n) then
+            problem = 'unit '//int_str(i)//' out of range (this run has units 1 to ' &
+                      //int_str(n)//')'
+            return
+        end if
+        if (restored(i)) then
+            problem = 'unit '//int_str(i)//' given twice'
+            return
+        end if
+        call next_word(line(1:last - 1), pos, w)
+        call read_int(w, nv, ok)
+        if (.not. ok .or. nv < -1) then
+            problem = 'damaged line (number of values '''//w//''')'
+            return
+        end if
+        if (nv >= 0) then
+            allocate(res%values(nv))
+            do k = 1, nv
+                call next_word(line(1:last - 1), pos, w)
+                call read_hex(w, bits, ok)
+                if (.not. ok) then
+                    problem = 'damaged line (value '//int_str(k)//' '''//w//''')'
+                    return
+                end if
+                res%values(k) = transfer(bits, 1.0_dp)
+            end do
+        end if
+        call next_word(line(1:last - 1), pos, w)
+        call unescape(w, res%text, ok)
+        if (ok) then
+            call next_word(line(1:last - 1), pos, w)
+            call unescape(w, res%log, ok)
+        end if
+        if (.not. ok .or. pos <= last - 1) then
+            problem = 'damaged line (text fields)'
+            return
+        end if
+        kept(i) = res
+        restored(i) = .true.
+    end subroutine read_unit_line
+
+    !> The word of s at pos (up to the next blank or the end); pos moves past the blank.
+    subroutine next_word(s, pos, w)
+        character(len=*), intent(in) :: s
+        integer, intent(inout) :: pos
+        character(len=:), allocatable, intent(out) :: w
+        integer :: k
+        if (pos > len(s)) then
+            w = ''
+            return
+        end if
+        k = index(s(pos:), ' ')
+        if (k == 0) then
+            w = s(pos:)
+            pos = len(s) + 1
+        else
+            w = s(pos:pos + k - 2)
+            pos = pos + k
+        end if
+    end subroutine next_word
+
+    !> A decimal integer (digits, optionally a leading '-', at most 9 digits).
+    subroutine read_int(w, v, ok)
+        character(len=*), intent(in) :: w
+        integer, intent(out) :: v
+        logical, intent(out) :: ok
+        integer :: k, s
+        v = 0
+        s = 1
+        if (len(w) > 0) then
+            if (w(1:1) == '-') s = 2
+        end if
+        ok = len(w) >= s .and. len(w) - s < 9
+        if (.not. ok) return
+        ok = verify(w(s:), '0123456789') == 0
+        if (.not. ok) return
+        do k = s, len(w)
+            v = 10 * v + (ichar(w(k:k)) - ichar('0'))
+        end do
+        if (s == 2) v = -v
+    end subroutine read_int
+
+    !> 16 lowercase hex digits as the 64 bits they spell.
+    subroutine read_hex(w, bits, ok)
+        character(len=*), intent(in) :: w
+        integer(int64), intent(out) :: bits
+        logical, intent(out) :: ok
+        integer(int64) :: hi, lo
+        integer :: k, d
+        bits = 0
+        ok = len(w) == 16
+        if (.not. ok) return
+        hi = 0
+        lo = 0
+        do k = 1, 16
+            d = index(HEX, w(k:k)) - 1
+            if (d < 0) then
+                ok = .false.
+                return
+            end if
+            if (k <= 8) then
+                hi = 16 * hi + d
+            else
+                lo = 16 * lo + d
+            end if
+        end do
+        bits = ior(ishft(hi, 32), lo)
+    end subroutine read_hex
+
+    !> The string of an escaped field ('-': absent; '=...': %XX decoded). ok: well formed.
+    subroutine unescape(w, s, ok)
+        character(len=*), intent(in) :: w
+        character(len=:), allocatable, intent(out) :: s
+        logical, intent(out) :: ok
+        integer :: i, n, d1, d2
+        ok = .true.
+        if (w == '-') return
+        ok = .false.
+        if (len(w) < 1) return
+        if (w(1:1) /= '=') return
+        allocate(character(len=len(w)) :: s)
+        n = 0
+        i = 2
+        do while (i <= len(w))
+            if (w(i:i) == '%') then
+                if (i + 2 > len(w)) return
+                d1 = index(HEX, w(i + 1:i + 1)) - 1
+                d2 = index(HEX, w(i + 2:i + 2)) - 1
+                if (d1 < 0 .or. d2 < 0) return
+                n = n + 1
+                s(n:n) = char(16 * d1 + d2)
+                i = i + 3
+            else
+                n = n + 1
+                s(n:n) = w(i:i)
+                i = i + 1
+            end if
+        end do
+        s = s(1:n)
+        ok = .true.
+    end subroutine unescape
+
+    ! ------------------------------------------------------------------------------
+    ! Fingerprint and hashing
+    ! ------------------------------------------------------------------------------
+
+    !> FNV-1a 64 of the journal format, the seispulse version, the analysis, the bytes of
+    !> the input file and the unit keys (each string preceded by its length), as hex.
+    subroutine fingerprint(path, analysis, keys, fp, stat, errmsg)
+        character(len=*), intent(in) :: path, analysis
+        character(len=*), intent(in) :: keys(:)
+        character(len=16), intent(out) :: fp
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        type(fnv_t) :: h
+        character(len=CHUNK) :: buf
+        character(len=512) :: iomsg
+        integer(int64) :: size8, left
+        integer :: u, i, m
+
+        fp = ''
+        errmsg = ''
+        call feed_string(MAGIC//' '//int_str(JOURNAL_FORMAT))
+        call feed_string(seispulse_version)
+        call feed_string(analysis)
+        inquire(file=path, size=size8)
+        open(newunit=u, file=path, access='stream', form='unformatted', action='read', &
+             status='old', iostat=stat, iomsg=iomsg)
+        if (stat /= 0 .or. size8 < 0) then
+            if (stat == 0) close(u)
+            stat = 1
+            errmsg = path//': cannot read the input file for the journal''s fingerprint: ' &
+                     //trim(iomsg)
+            return
+        end if
+        call fnv_feed(h, int_str(int(min(size8, int(huge(0), int64))))//':')
+        left = size8
+        do while (left > 0)
+            m = int(min(left, int(CHUNK, int64)))
+            read(u, iostat=stat, iomsg=iomsg) buf(1:m)
+            if (stat /= 0) then
+                close(u)
+                stat = 1
+                errmsg = path//': cannot read the input file for the journal''s ' &
+                         //'fingerprint: '//trim(iomsg)
+                return
+            end if
+            call fnv_feed(h, buf(1:m))
+            left = left - m
+        end do
+        close(u)
+        call feed_string(int_str(size(keys)))
+        do i = 1, size(keys)
+            call feed_string(trim(keys(i)))
+        end do
+        fp = fnv_hex(h)
+        stat = 0
+
+    contains
+
+        subroutine feed_string(s)
+            character(len=*), intent(in) :: s
+            call fnv_feed(h, int_str(len(s))//':')
+            call fnv_feed(h, s)
+        end subroutine feed_string
+
+    end subroutine fingerprint
+
+    !> Hash the bytes of s into h (FNV-1a 64: xor the byte, multiply by the prime, in
+    !> 32-bit limbs: (hi 2^32 + lo)(2^40 + 435) mod 2^64).
+    pure subroutine fnv_feed(h, s)
+        type(fnv_t), intent(inout) :: h
+        character(len=*), intent(in) :: s
+        integer(int64) :: t
+        integer :: i
+        do i = 1, len(s)
+            h%lo = ieor(h%lo, int(ichar(s(i:i)), int64))
+            t = h%lo * 435_int64
+            h%hi = iand(h%hi * 435_int64 + h%lo * 256_int64 + ishft(t, -32), MASK32)
+            h%lo = iand(t, MASK32)
+        end do
+    end subroutine fnv_feed
+
+    !> The hash as 16 lowercase hex digits.
+    pure function fnv_hex(h) result(s)
+        type(fnv_t), intent(in) :: h
+        character(len=16) :: s
+        s = hex8(h%hi)//hex8(h%lo)
+    end function fnv_hex
+
+    !> A double's IEEE 754 bits as 16 lowercase hex digits.
+    pure function hex_real(x) result(s)
+        real(dp), intent(in) :: x
+        character(len=16) :: s
+        integer(int64) :: bits
+        bits = transfer(x, bits)
+        s = hex8(ibits(bits, 32, 32))//hex8(ibits(bits, 0, 32))
+    end function hex_real
+
+    !> 0 <= v < 2^32 as 8 hex digits.
+    pure function hex8(v) result(s)
+        integer(int64), intent(in) :: v
+        character(len=8) :: s
+        integer :: k, d
+        do k = 8, 1, -1
+            d = int(ibits(v, 4 * (8 - k), 4))
+            s(k:k) = HEX(d + 1:d + 1)
+        end do
+    end function hex8
+
+    ! ------------------------------------------------------------------------------
+    ! Records as units
+    ! ------------------------------------------------------------------------------
+
+    !> The key of each record (one unit per record): the path opened, the file's size in
+    !> bytes (-1: none), and how it is read and scaled (format, units, dt, scale, target
+    !> PGA as exact bits, polarity, the PGA rounding).
+    function record_keys(recs, slammer_rounding) result(keys)
+        type(record_in_t), intent(in) :: recs(:)
+        logical, intent(in) :: slammer_rounding
+        character(len=:), allocatable :: keys(:)
+        character(len=:), allocatable :: k1
+        integer(int64) :: size8
+        integer :: i, l
+        logical :: exists
+        l = 1
+        do i = 1, size(recs)
+            l = max(l, len(recs(i)%path) + 120)
+        end do
+        allocate(character(len=l) :: keys(size(recs)))
+        do i = 1, size(recs)
+            associate (r => recs(i))
+                size8 = -1
+                inquire(file=r%path, exist=exists)
+                if (exists) inquire(file=r%path, size=size8)
+                k1 = r%path//KEY_SEP//int_str(int(min(size8, int(huge(0), int64)))) &
+                     //KEY_SEP//int_str(r%fmt)//KEY_SEP//int_str(r%units) &
+                     //KEY_SEP//hex_real(r%dt)//hex_real(r%scale)//hex_real(r%target) &
+                     //KEY_SEP//int_str(r%polarity)//KEY_SEP//merge('s', 'e', slammer_rounding)
+                keys(i) = k1
+            end associate
+        end do
+    end function record_keys
+
+    !> Put what happened to a record first in a unit's result: values(1:RECORD_VALUES)
+    !> (res%values allocated by the caller with at least that many) and the first
+    !> RECORD_FIELDS text fields (name, message).
+    subroutine pack_record(o, res)
+        type(record_out_t), intent(in) :: o
+        type(unit_result_t), intent(inout) :: res
+        res%values(1:RECORD_VALUES) = [merge(1.0_dp, 0.0_dp, o%ok), real(o%fmt, dp), &
+                                       real(o%npts, dp), o%dt, o%pga_read, o%factor, o%pga]
+        call add_field(res, o%name)
+        call add_field(res, o%message)
+    end subroutine pack_record
+
+    !> The record_out_t that pack_record put into res.
+    subroutine unpack_record(res, o)
+        type(unit_result_t), intent(in) :: res
+        type(record_out_t), intent(out) :: o
+        o%ok = res%values(1) > 0.5_dp
+        o%fmt = nint(res%values(2))
+        o%npts = nint(res%values(3))
+        o%dt = res%values(4)
+        o%pga_read = res%values(5)
+        o%factor = res%values(6)
+        o%pga = res%values(7)
+        o%name = get_field(res, 1)
+        o%message = get_field(res, 2)
+    end subroutine unpack_record
+
+end module driver_batch
