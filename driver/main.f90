@@ -29,6 +29,7 @@ program seispulse_driver
                                 run_verbose, check_run_digits
     use driver_echo, only: echo_unit, echo_start, echo_finish, echo_file_path
     use driver_tables, only: commit_outputs, discard_outputs
+    use driver_parallel, only: par_init, par_finalize
     implicit none
 
     interface
@@ -64,6 +65,8 @@ program seispulse_driver
     type(nml_group), allocatable :: groups(:)
     integer :: stat, irun, i, j
 
+    ! an MPI job: every rank reads the input; only the root prints and writes
+    call par_init()
     if (command_argument_count() /= 1) then
         write(error_unit, '(a)') 'usage: seispulse INPUT.nml   (see README, "Batch driver")'
         call finish(EXIT_INPUT_ERROR)
@@ -243,6 +246,7 @@ contains
         end if
         flush(output_unit)
         flush(error_unit)
+        call par_finalize()
         call c_exit(int(rc, c_int))
     end subroutine finish
 
