@@ -1,7 +1,8 @@
 # seispulse: quick start is `make run` and `make test` (see `make help`).
 #
-# deps   system packages (apt: gfortran liblapack-dev pkg-config; python3-dev python3-venv
-#        for Debian's own python only) and a virtual environment .venv with the Python tools
+# deps   system packages (apt: gfortran liblapack-dev pkg-config; openmpi-bin libopenmpi-dev
+#        for the MPI driver; python3-dev python3-venv for Debian's own python only) and a
+#        virtual environment .venv with the Python tools
 # build  meson setup + compile in build/ (the f2py extension is built with .venv's python);
 #        their output goes to build/meson-logs/*-output.txt, printed only when a step fails
 # run    build, then the batch driver on input/example.nml (tables go under out/)
@@ -47,7 +48,9 @@ help:
 
 deps: sysdeps $(STAMP)
 
-# System packages. Cheap checks; apt-get only runs when something is missing.
+# System packages. Cheap checks; apt-get only runs when something is missing. Open MPI
+# (mpifort, mpirun) makes the driver the MPI build (meson option mpi, auto) and lets make
+# test run it over ranks; without apt-get (or root/sudo) it is only reported missing.
 # Python headers and venv support come from apt only for Debian's own /usr python; any
 # other interpreter (pyenv, conda, uv, ...) ships its own.
 PY_HAS_HEADERS := import os, sys, sysconfig; \
@@ -64,6 +67,8 @@ sysdeps:
 	    command -v $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
 	if [ -z "$$missing" ] && ! pkg-config --exists lapack; then missing=" lapack.pc"; fi; \
 	[ -z "$$missing" ] || pkgs=" gfortran liblapack-dev pkg-config"; \
+	mpipkgs=""; \
+	{ command -v mpifort && command -v mpirun; } >/dev/null 2>&1 || mpipkgs=" openmpi-bin libopenmpi-dev"; \
 	pylack=""; pypkgs=""; \
 	$(PYTHON) -c '$(PY_HAS_HEADERS)' || { pylack="$$pylack Python.h"; pypkgs="$$pypkgs python3-dev"; }; \
 	if ! $(VENV)/bin/python -c '' >/dev/null 2>&1 && ! $(PYTHON) -c '$(PY_HAS_VENV)' >/dev/null 2>&1; then \
@@ -76,6 +81,15 @@ sysdeps:
 	             "install them for that interpreter, or use another one: make PYTHON=..." >&2; \
 	        exit 1; \
 	    fi; \
+	fi; \
+	if [ -n "$$mpipkgs" ]; then \
+	    if [ -z "$$pkgs" ] && { ! command -v apt-get >/dev/null 2>&1 || \
+	         { [ "$$(id -u)" != 0 ] && ! command -v sudo >/dev/null 2>&1; }; }; then \
+	        echo "deps: no mpifort/mpirun: the driver is built without MPI (install Open MPI" \
+	             "or MPICH for the MPI build)"; \
+	        exit 0; \
+	    fi; \
+	    missing="$$missing mpifort/mpirun"; pkgs="$$pkgs$$mpipkgs"; \
 	fi; \
 	[ -n "$$pkgs" ] || exit 0; \
 	echo "deps: missing$$missing -> apt-get install$$pkgs"; \
@@ -91,6 +105,8 @@ sysdeps:
 	for p in gfortran gcc pkg-config; do \
 	    command -v $$p >/dev/null 2>&1 || { echo "error: $$p still missing after apt-get" >&2; exit 1; }; done; \
 	pkg-config --exists lapack || { echo "error: pkg-config finds no lapack after apt-get" >&2; exit 1; }; \
+	[ -z "$$mpipkgs" ] || { command -v mpifort && command -v mpirun; } >/dev/null 2>&1 \
+	    || { echo "error: still no mpifort/mpirun after apt-get" >&2; exit 1; }; \
 	$(PYTHON) -c '$(PY_HAS_HEADERS)' || { echo "error: still no Python.h after apt-get" >&2; exit 1; }; \
 	$(VENV)/bin/python -c '' >/dev/null 2>&1 || $(PYTHON) -c '$(PY_HAS_VENV)' \
 	    || { echo "error: still no venv/ensurepip after apt-get" >&2; exit 1; }

@@ -18,6 +18,7 @@ module driver_echo
                                     next_value
     use driver_input, only: find_group, given
     use driver_tables, only: table_path, open_output
+    use driver_parallel, only: par_root
     implicit none
     private
 
@@ -121,7 +122,8 @@ contains
         path = repeat('../', depth)//rest
     end function echo_path
 
-    !> Write the echo: the file (when `to_file`) and standard output (when `to_stdout`).
+    !> Write the echo: the file (when `to_file`) and standard output (when `to_stdout`);
+    !> nothing on a rank other than the root of an MPI job.
     !> `groups` are the groups of the input file (keys given there are kept even when
     !> their value is NaN or blank).
     subroutine echo_finish(input, groups, prefix, to_file, to_stdout, stat, errmsg)
@@ -138,7 +140,7 @@ contains
 
         stat = 0
         errmsg = ''
-        if (.not. opened) return
+        if (.not. opened .or. .not. par_root()) return
         rewind(unit)
         call scan_unit(unit, raw, stat, errmsg)
         if (stat /= 0) then

@@ -66,6 +66,7 @@ program seispulse_driver
     type(nml_group), allocatable :: groups(:)
     integer :: stat, irun, i, j
 
+    ! an MPI job: every rank reads the input; only the root prints and writes
     call par_init()
     if (command_argument_count() /= 1) then
         write(error_unit, '(a)') 'usage: seispulse INPUT.nml   (see README, "Batch driver")'

@@ -6,6 +6,8 @@
 !> ends without an input error (commit_outputs); on an input error (discard_outputs) the
 !> temporary files and the files an earlier run wrote under the same prefix are removed.
 !> table_path is the one place that builds an output file name.
+!> Only the root of an MPI job writes: on another rank (driver_parallel) write_tables
+!> writes nothing, open_output opens /dev/null, and nothing is renamed or deleted.
 module driver_tables
     use, intrinsic :: iso_fortran_env, only: output_unit, int64
     use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_associated
@@ -13,6 +15,7 @@ module driver_tables
     use seispulse, only: dp, int_str, g_str, format_reals, NUM_LEN
     use driver_run_group, only: run_digits, run_csv_digits
     use driver_input, only: output_located
+    use driver_parallel, only: par_root
     implicit none
     private
 
@@ -119,6 +122,7 @@ contains
     !> Open <path>.part for writing (the directory is created) and register it: it is
     !> renamed to `path` by commit_outputs, deleted by discard_outputs. stat /= 0 with
     !> errmsg if it cannot be created or `path` is already an output of this run.
+    !> On a rank other than the root of an MPI job: /dev/null, not registered.
     subroutine open_output(path, unit, stat, errmsg)
         character(len=*), intent(in) :: path            !! the final path
         integer, intent(out) :: unit
@@ -129,6 +133,12 @@ contains
         integer :: i
         errmsg = ''
         unit = -1
+        if (.not. par_root()) then
+            open(newunit=unit, file='/dev/null', status='old', action='write', iostat=stat, &
+                 iomsg=iomsg)
+            if (stat /= 0) errmsg = 'cannot open /dev/null: '//trim(iomsg)
+            return
+        end if
         do i = 1, npending
             if (pending(i)%s == path) then
                 stat = 1
@@ -164,6 +174,7 @@ contains
         integer :: i
         stat = 0
         errmsg = ''
+        if (.not. par_root()) return
         do i = 1, npending
             if (c_rename(pending(i)%s//'.part'//c_null_char, &
                          pending(i)%s//c_null_char) /= 0) then
@@ -186,6 +197,7 @@ contains
         character(len=*), intent(in), optional :: keep  !! a path never to delete
         character(len=:), allocatable :: kept
         integer :: i
+        if (.not. par_root()) return
         do i = 1, npending
             call remove_file(pending(i)%s//'.part')
         end do
@@ -237,6 +249,7 @@ contains
     subroutine drop_output(path)
         character(len=*), intent(in) :: path
         integer :: i, j
+        if (.not. par_root()) return
         call remove_file(path//'.part')
         call remove_file(path)
         j = 0
@@ -260,6 +273,7 @@ contains
     !> code k >= 0 written as its name, -1 as `undecided`, NaN as `nan`; double-quoted in
     !> the .csv). With `summary` and one row, the .txt has one `name  value  unit` line
     !> per column instead of a header and a row (the .csv is the same).
+    !> On a rank other than the root of an MPI job: only `files` (nothing is written).
     subroutine write_tables(prefix, name, comments, names, units, data, files, stat, errmsg, &
                             labels, kinds, summary)
         character(len=*), intent(in) :: prefix          !! output prefix (may contain a directory)
@@ -299,6 +313,8 @@ contains
         iomsg = ''
         files(1) = table_path(prefix, name, 'txt')
         files(2) = table_path(prefix, name, 'csv')
+        stat = 0
+        if (.not. par_root()) return        ! the root of an MPI job writes them
 
         ! the kind of each numeric column, and the names of a category column
         allocate(kind_of(ndat), ncat(ndat), cats(0:63, ndat))

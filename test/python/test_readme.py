@@ -72,6 +72,12 @@ NOT_RUN = {
         "installs into the user's prefix (check_install.sh installs into a temporary one)",
     ("sh", "PYTHONPATH=build/python python3 bench/*"):
         "a benchmark: minutes per run, timing figures, and peer programs to compare with",
+    ("sh", "export OMP_NUM_THREADS=1"): "changes the user's shell (the MPI runs of the tests "
+                                       "set it for mpirun)",
+    ("sh", "mpirun -n *"): "an MPI job: test_driver_mpi.py runs the driver with mpirun over 2 "
+                           "and 3 ranks and compares every file with the one-process run",
+    ("sh", "srun *"): "a Slurm job step: needs a Slurm cluster (the MPI runs of the tests use "
+                      "mpirun)",
     ("namelist", "&run analysis = 'newmark', output = 'out/case' /"):
         "the key reference of &records and &newmark (values such as `...`), not an input",
     ("namelist", "&run analysis = 'empirical', output = 'out/case' /"):
