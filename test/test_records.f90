@@ -11,7 +11,7 @@ module test_records
                                  RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, &
                                  RECORD_TIME_ACCEL, UNITS_G, UNITS_M_S2, UNITS_CM_S2, &
                                  STANDARD_GRAVITY, accel_unit_code, accel_unit_factor, &
-                                 RECORD_MAX_SAMPLES, RECORD_MAX_BYTES
+                                 MAX_RECORD_SAMPLES, MAX_RECORD_BYTES
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
     private
@@ -692,7 +692,7 @@ contains
 
     !> Hostile or mistaken files: a huge, negative or zero-padded NPTS, NPTS far above the
     !> data, a NUL byte, a file ending inside a number, control bytes and a line of 1 MB
-    !> in a message, the sample limit (RECORD_MAX_SAMPLES, or a lower max_samples) hit
+    !> in a message, the sample limit (MAX_RECORD_SAMPLES, or a lower max_samples) hit
     !> on the row past it in every format. Each error names the file and the line.
     subroutine test_hostile(error)
         type(test_error), allocatable, intent(out) :: error
@@ -703,13 +703,13 @@ contains
         character(len=1024) :: msg
         character(len=:), allocatable :: path
         ! the limits as documented (module notes of seispulse_record_reader)
-        call check(error, RECORD_MAX_SAMPLES == 10000000 .and. RECORD_MAX_BYTES == 536870912, &
-                   'RECORD_MAX_SAMPLES = 1e7, RECORD_MAX_BYTES = 512 MiB')
+        call check(error, MAX_RECORD_SAMPLES == 10000000 .and. MAX_RECORD_BYTES == 536870912, &
+                   'MAX_RECORD_SAMPLES = 1e7, MAX_RECORD_BYTES = 512 MiB')
         if (allocated(error)) return
         ! a record of 1e8 samples announced: refused at line 4, nothing allocated for it
         call read_fails(error, head//'NPTS= 100000000, DT= .01 SEC'//NL//'1 2 3'//NL, &
                         'n1e8.at2', SEISPULSE_INVALID_INPUT, ':4: ', 'NPTS = 100000000', &
-                        'RECORD_MAX_SAMPLES = 10000000')
+                        'MAX_RECORD_SAMPLES = 10000000')
         if (allocated(error)) return
         call read_fails(error, head//'NPTS= 99999999999999999999, DT= .01'//NL//'1'//NL, &
                         'n1e20.at2', SEISPULSE_INVALID_INPUT, ':4: ', &
@@ -754,10 +754,10 @@ contains
         ! a bad max_samples is an argument error (message names the argument)
         call read_text('1'//NL, 'max0.txt', rec, stat, msg, path, dt=0.1_dp, max_samples=0)
         call check(error, stat == SEISPULSE_INVALID_INPUT .and. index(msg, 'max_samples = 0: ' &
-                   //'must be 1 to RECORD_MAX_SAMPLES = 10000000') == 1, 'max0: '//trim(msg))
+                   //'must be 1 to MAX_RECORD_SAMPLES = 10000000') == 1, 'max0: '//trim(msg))
         if (allocated(error)) return
         call read_text('1'//NL, 'max1e9.txt', rec, stat, msg, path, dt=0.1_dp, &
-                       max_samples=RECORD_MAX_SAMPLES + 1)
+                       max_samples=MAX_RECORD_SAMPLES + 1)
         call check(error, stat == SEISPULSE_INVALID_INPUT .and. index(msg, 'max_samples = ' &
                    //'10000001: must be 1') == 1, 'max above the limit: '//trim(msg))
         if (allocated(error)) return
@@ -812,7 +812,7 @@ contains
         call check(error, stat, SEISPULSE_INVALID_INPUT, 'huge file: status ('//trim(msg)//')')
         if (allocated(error)) return
         call check(error, index(msg, path//': the file has 1073741824 bytes') == 1 .and. &
-                   index(msg, 'RECORD_MAX_BYTES = 536870912') > 0, 'huge file: '//trim(msg))
+                   index(msg, 'MAX_RECORD_BYTES = 536870912') > 0, 'huge file: '//trim(msg))
     end subroutine test_huge_file
 
     subroutine test_bad_arguments(error)

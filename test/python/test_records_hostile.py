@@ -2,7 +2,7 @@
 records.py and doc/records.md): every one raises a documented error naming the file
 and, where there is one, the line -- in bounded time and memory. The 1 GiB file is a
 sparse file (os.truncate: no disk, no time); the sample limit is hit for real with a
-column of RECORD_MAX_SAMPLES + 1 rows (20 MB)."""
+column of MAX_RECORD_SAMPLES + 1 rows (20 MB)."""
 import os
 import time
 
@@ -22,15 +22,15 @@ def write(tmp_path, name, data):
 
 
 def test_limits_are_public():
-    assert R.RECORD_MAX_SAMPLES == 10_000_000
-    assert R.RECORD_MAX_BYTES == 512 * 1024 * 1024
-    assert "RECORD_MAX_SAMPLES" in R.__all__ and "RECORD_MAX_BYTES" in R.__all__
+    assert R.MAX_RECORD_SAMPLES == 10_000_000
+    assert R.MAX_RECORD_BYTES == 512 * 1024 * 1024
+    assert "MAX_RECORD_SAMPLES" in R.__all__ and "MAX_RECORD_BYTES" in R.__all__
 
 
 # (file name, content, read keywords, message after "<path>", parts of the message)
 HOSTILE = [
     ("n1e8.at2", AT2_HEAD + b"NPTS= 100000000, DT= .01 SEC\n1 2 3\n", {}, ":4: ",
-     ["NPTS = 100000000", "RECORD_MAX_SAMPLES = 10000000"]),
+     ["NPTS = 100000000", "MAX_RECORD_SAMPLES = 10000000"]),
     ("n1e20.at2", AT2_HEAD + b"NPTS= 99999999999999999999, DT= .01\n1\n", {}, ":4: ",
      ["more samples than a record may have"]),
     ("nneg.at2", AT2_HEAD + b"NPTS= -5, DT= .01\n1\n", {}, ":4: ",
@@ -74,7 +74,7 @@ def test_sparse_gigabyte_file(tmp_path):
     assert time.perf_counter() - start < 1.0
     assert str(err.value) == (
         f"{path}: the file has 1073741824 bytes, more than a record file may have "
-        "(RECORD_MAX_BYTES = 536870912 bytes, 512 MiB): not an accelerogram, or too long "
+        "(MAX_RECORD_BYTES = 536870912 bytes, 512 MiB): not an accelerogram, or too long "
         "to read")
 
 
@@ -85,8 +85,8 @@ def test_directory(tmp_path):
 
 
 def test_sample_limit_rows(tmp_path):
-    """RECORD_MAX_SAMPLES rows read; one more is refused at its line."""
-    n = R.RECORD_MAX_SAMPLES
+    """MAX_RECORD_SAMPLES rows read; one more is refused at its line."""
+    n = R.MAX_RECORD_SAMPLES
     path = write(tmp_path, "limit.txt", b"# limit\n" + b"0\n" * n)
     rec = R.read(path, dt=0.01)
     assert rec.npts == n and rec.pga == 0.0
@@ -96,4 +96,4 @@ def test_sample_limit_rows(tmp_path):
         R.read(path, dt=0.01)
     assert str(err.value) == (
         f"{path}:{n + 2}: a row of data: more samples than a record may have "
-        f"(RECORD_MAX_SAMPLES = {n} samples, the limit of the reader)")
+        f"(MAX_RECORD_SAMPLES = {n} samples, the limit of the reader)")

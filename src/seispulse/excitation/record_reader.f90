@@ -36,14 +36,14 @@
 !> Limits (hostile or mistaken input: a binary file, a huge NPTS, a file of 1e8 samples
 !> or of 1 GB): memory and time stay bounded and the error names the file and the line.
 !>
-!> - `RECORD_MAX_SAMPLES` = 10 000 000 samples. The longest accelerograms in use hold
+!> - `MAX_RECORD_SAMPLES` = 10 000 000 samples. The longest accelerograms in use hold
 !>   about 1e5 samples (NGA-West2: up to some 1e4 - 1e5; a 10 min subduction record at
 !>   200 Hz: 1.2e5); 1e7 samples is 27.8 h at 100 Hz or 2.8 h at 1 kHz, and keeps the
 !>   reader's arrays (values, and for two columns times and line numbers: 20 bytes a
 !>   sample) under 200 MB. An AT2 header with a larger NPTS is refused at line 4, a text
-!>   file at the row of sample RECORD_MAX_SAMPLES + 1.
-!> - `RECORD_MAX_BYTES` = 536 870 912 bytes (512 MiB): the file is held in memory while
-!>   it is parsed; 512 MiB leaves some 50 characters for each of RECORD_MAX_SAMPLES
+!>   file at the row of sample MAX_RECORD_SAMPLES + 1.
+!> - `MAX_RECORD_BYTES` = 536 870 912 bytes (512 MiB): the file is held in memory while
+!>   it is parsed; 512 MiB leaves some 50 characters for each of MAX_RECORD_SAMPLES
 !>   samples (an AT2 value takes about 15, a SLAMMER row about 20). A larger file is
 !>   refused before it is read, from its size.
 !> - a NUL byte anywhere: a record is a text file; the error gives its line and column.
@@ -63,7 +63,7 @@ module seispulse_record_reader
     public :: read_record_file, base_name, record_format_name, record_units_name
     public :: RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, RECORD_TIME_ACCEL
     public :: UNITS_G, UNITS_M_S2, UNITS_CM_S2
-    public :: RECORD_MAX_SAMPLES, RECORD_MAX_BYTES
+    public :: MAX_RECORD_SAMPLES, MAX_RECORD_BYTES
 
     integer, parameter :: RECORD_AUTO = 0        !! detect the format (see the module notes)
     integer, parameter :: RECORD_AT2 = 1         !! PEER NGA .AT2
@@ -77,10 +77,10 @@ module seispulse_record_reader
 
     !> The most samples a record may have (the module notes give the reasoning): a
     !> larger AT2 NPTS, or more rows of data, is an error naming the line.
-    integer, parameter :: RECORD_MAX_SAMPLES = 10000000
+    integer, parameter :: MAX_RECORD_SAMPLES = 10000000
     !> The largest record file, in bytes (512 MiB; the module notes give the reasoning):
     !> a larger file is refused from its size, before it is read.
-    integer, parameter :: RECORD_MAX_BYTES = 536870912
+    integer, parameter :: MAX_RECORD_BYTES = 536870912
 
     character(len=*), parameter :: LF = achar(10), CR = achar(13), TAB = achar(9)
 
@@ -110,7 +110,7 @@ contains
     !>
     !> stat = SEISPULSE_IO when the file cannot be opened or read, else
     !> SEISPULSE_INVALID_INPUT for a malformed file (the message names the file and the
-    !> line, what was expected and what was found), a file above RECORD_MAX_BYTES or
+    !> line, what was expected and what was found), a file above MAX_RECORD_BYTES or
     !> more samples than `max_samples`.
     subroutine read_record_file(path, fmt_in, units_in, dt_in, accel, units, dt, t0, title, &
                                 fmt, stat, errmsg, max_samples)
@@ -129,7 +129,7 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         integer, intent(in), optional :: max_samples  !! the most samples accepted, 1 to
-                                                      !! RECORD_MAX_SAMPLES (the default)
+                                                      !! MAX_RECORD_SAMPLES (the default)
         type(text_t) :: txt
         integer :: want, nmax
 
@@ -139,12 +139,12 @@ contains
         t0 = 0.0_dp
         title = ''
         fmt = RECORD_AUTO
-        nmax = RECORD_MAX_SAMPLES
+        nmax = MAX_RECORD_SAMPLES
         if (present(max_samples)) nmax = max_samples
-        if (nmax < 1 .or. nmax > RECORD_MAX_SAMPLES) then
+        if (nmax < 1 .or. nmax > MAX_RECORD_SAMPLES) then
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'max_samples = ' &
-                           //int_str(nmax)//': must be 1 to RECORD_MAX_SAMPLES = ' &
-                           //int_str(RECORD_MAX_SAMPLES))
+                           //int_str(nmax)//': must be 1 to MAX_RECORD_SAMPLES = ' &
+                           //int_str(MAX_RECORD_SAMPLES))
             return
         end if
         call load_file(path, txt%buf, stat, errmsg)
@@ -244,11 +244,11 @@ contains
                            //'the file is unknown (not a regular file?)')
             return
         end if
-        if (nbytes > int(RECORD_MAX_BYTES, int64)) then
+        if (nbytes > int(MAX_RECORD_BYTES, int64)) then
             close(u)
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, path//': the file has ' &
                            //int64_str(nbytes)//' bytes, more than a record file may have ' &
-                           //'(RECORD_MAX_BYTES = '//int_str(RECORD_MAX_BYTES)//' bytes, 512 ' &
+                           //'(MAX_RECORD_BYTES = '//int_str(MAX_RECORD_BYTES)//' bytes, 512 ' &
                            //'MiB): not an accelerogram, or too long to read')
             return
         end if
@@ -865,7 +865,7 @@ contains
             i0 = verify(tok, '0')
             if (i0 == 0) i0 = len(tok)
             if (len(tok) - i0 + 1 > 9) then
-                call too_many(path, 4, 'NPTS = '//shown(tok), RECORD_MAX_SAMPLES, stat, errmsg)
+                call too_many(path, 4, 'NPTS = '//shown(tok), MAX_RECORD_SAMPLES, stat, errmsg)
                 return
             end if
             npts = 0
@@ -1091,8 +1091,8 @@ contains
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
         character(len=:), allocatable :: limit
-        if (nmax == RECORD_MAX_SAMPLES) then
-            limit = 'RECORD_MAX_SAMPLES = '//int_str(nmax)//' samples, the limit of the reader'
+        if (nmax == MAX_RECORD_SAMPLES) then
+            limit = 'MAX_RECORD_SAMPLES = '//int_str(nmax)//' samples, the limit of the reader'
         else
             limit = 'max_samples = '//int_str(nmax)//' samples'
         end if

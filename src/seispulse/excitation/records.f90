@@ -19,8 +19,8 @@ module seispulse_records
     use seispulse_record_reader, only: read_record_file, base_name, record_format_name, &
                                        record_units_name, RECORD_AUTO, RECORD_AT2, &
                                        RECORD_SLAMMER, RECORD_COLUMN, RECORD_TIME_ACCEL, &
-                                       UNITS_G, UNITS_M_S2, UNITS_CM_S2, RECORD_MAX_SAMPLES, &
-                                       RECORD_MAX_BYTES
+                                       UNITS_G, UNITS_M_S2, UNITS_CM_S2, MAX_RECORD_SAMPLES, &
+                                       MAX_RECORD_BYTES
     implicit none
     private
 
@@ -28,7 +28,7 @@ module seispulse_records
               record_format_name, record_units_name
     public :: RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, RECORD_TIME_ACCEL
     public :: UNITS_G, UNITS_M_S2, UNITS_CM_S2, STANDARD_GRAVITY
-    public :: RECORD_MAX_SAMPLES, RECORD_MAX_BYTES
+    public :: MAX_RECORD_SAMPLES, MAX_RECORD_BYTES
     public :: accel_unit_code, accel_unit_factor, ACCEL_UNIT_NAMES
 
     real(dp), parameter :: STANDARD_GRAVITY = 9.80665_dp  !! m/s^2, for unit conversion
@@ -70,8 +70,8 @@ contains
     !> was expected and what was found). On error `rec` holds no samples (npts = 0).
     !>
     !> Limits (seispulse_record_reader's notes give the reasoning): at most
-    !> RECORD_MAX_SAMPLES = 10 000 000 samples (or `max_samples`) and a file of at most
-    !> RECORD_MAX_BYTES = 512 MiB; a NUL byte is an error. Beyond them the error comes in
+    !> MAX_RECORD_SAMPLES = 10 000 000 samples (or `max_samples`) and a file of at most
+    !> MAX_RECORD_BYTES = 512 MiB; a NUL byte is an error. Beyond them the error comes in
     !> bounded time and memory and names the file and the line.
     subroutine read_record(path, rec, stat, errmsg, fmt, units, dt, max_samples)
         character(len=*), intent(in) :: path                  !! the file
@@ -84,7 +84,7 @@ contains
         real(dp), intent(in), optional :: dt     !! time step (s); required for RECORD_COLUMN;
                                                  !! <= 0 or absent = not given
         integer, intent(in), optional :: max_samples  !! the most samples accepted, 1 to
-                                                      !! RECORD_MAX_SAMPLES (the default)
+                                                      !! MAX_RECORD_SAMPLES (the default)
         integer :: want, units_in, units_read, fmt_read
         real(dp) :: dt_in
 
