@@ -10,6 +10,10 @@
 #        the doc-comment checker and the API reference (FORD)
 # doc    the HTML API reference of the Fortran library with FORD (installed into .venv if
 #        missing): $(BUILDDIR)/doc/api/index.html
+# fuzz   fuzzing campaigns, one target after the other, FUZZ_SECONDS each (default 600):
+#        AFL++ on the record reader and on the driver (instrumented build in build-fuzz/),
+#        atheris on the Python entry points; afl++ (apt) and atheris (pip) installed when
+#        missing; exit status 1 when a crash or a hang was found (fuzz/README.md)
 # build, run and test also let .venv's python `import seispulse` (pylink, below)
 #
 # Variables: PYTHON (interpreter the venv is made from, default python3), BUILDDIR (build).
@@ -32,7 +36,9 @@ MESON    := PATH="$(VENV_BIN):$$PATH" $(VENV_BIN)/meson
 DRIVER   := $(BUILDDIR)/driver/seispulse
 EXAMPLE  := input/example.nml
 
-.PHONY: help deps sysdeps venv pylink build run test doc clean
+FUZZ_SECONDS ?= 600
+
+.PHONY: help deps sysdeps venv pylink build run test doc clean fuzz fuzzdeps
 
 help:
 	@echo 'seispulse make targets:'
@@ -40,6 +46,7 @@ help:
 	@echo '  make test    build and run every test suite; last line "N passed, N failed"'
 	@echo '  make build   configure ($(BUILDDIR)/, meson) and compile only'
 	@echo '  make doc     HTML API reference with FORD: $(BUILDDIR)/doc/api/index.html'
+	@echo '  make fuzz    fuzz the record reader, the driver and Python, FUZZ_SECONDS=$(FUZZ_SECONDS) each'
 	@echo '  make deps    install system packages if missing and the .venv Python tools'
 	@echo '  make pylink  let .venv/bin/python import seispulse from $(BUILDDIR)/python (build, run'
 	@echo '               and test do it too)'
@@ -173,8 +180,31 @@ test: deps pylink
 doc: $(STAMP)
 	@$(VENV_PY) tools/make_doc.py --builddir $(BUILDDIR)
 
+# afl++ from apt and atheris from pip, each only when missing; a failure here is not
+# fatal: fuzz/run.sh then reports the target as not run
+fuzzdeps: $(STAMP)
+	@if ! command -v afl-fuzz >/dev/null 2>&1 || [ ! -f /usr/lib/afl/afl-compiler-rt.o ]; then \
+	    if [ "$$(id -u)" = 0 ]; then sudo=""; elif command -v sudo >/dev/null 2>&1; then sudo="sudo"; \
+	    else sudo="none"; fi; \
+	    if command -v apt-get >/dev/null 2>&1 && [ "$$sudo" != none ]; then \
+	        echo "fuzzdeps: missing afl-fuzz -> apt-get install afl++"; \
+	        $$sudo env DEBIAN_FRONTEND=noninteractive apt-get update -q || true; \
+	        $$sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -q afl++ || true; \
+	    else echo "fuzzdeps: no afl-fuzz and no way to apt-get install afl++" >&2; fi; \
+	fi
+	@$(VENV_PY) -c 'import atheris' >/dev/null 2>&1 || { \
+	    echo "fuzzdeps: pip install atheris into $(VENV)"; \
+	    $(VENV_PY) -m pip install -q --disable-pip-version-check atheris || true; }
+
+fuzz: build fuzzdeps
+	@if command -v afl-fuzz >/dev/null 2>&1; then \
+	    MESON="$(VENV_BIN)/meson" PATH="$(VENV_BIN):$$PATH" fuzz/build.sh \
+	        || echo "fuzz: the instrumented build failed; AFL++ targets skipped" >&2; fi
+	@FUZZ_SECONDS=$(FUZZ_SECONDS) PYTHON=$(VENV_PY) PYBUILD=$(abspath $(BUILDDIR))/python \
+	    fuzz/run.sh
+
 clean:
-	rm -rf $(BUILDDIR) build-check build-install
+	rm -rf $(BUILDDIR) build-check build-install build-fuzz
 	@pth=$(PTH_FILE); case "$$(cat "$$pth" 2>/dev/null)" in \
 	    '$(abspath $(BUILDDIR))/python'|'$(abspath build-check)/python'|'$(abspath build-install)/python') \
 	        rm -f "$$pth"; echo "clean: removed $$pth (it named a removed build dir)";; esac

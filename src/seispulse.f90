@@ -106,7 +106,7 @@ module seispulse
                                  RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, &
                                  RECORD_TIME_ACCEL, UNITS_G, UNITS_M_S2, UNITS_CM_S2, &
                                  STANDARD_GRAVITY, accel_unit_code, accel_unit_factor, &
-                                 ACCEL_UNIT_NAMES
+                                 ACCEL_UNIT_NAMES, MAX_RECORD_SAMPLES, MAX_RECORD_BYTES
     use seispulse_intensity, only: intensity_t, record_intensity, spectral_acceleration, &
                                    mean_period, TM_F_LOW, TM_F_HIGH, TM_DF_MAX, TM_MAX_POINTS
     use seispulse_fft, only: fft, next_power_of_two, is_power_of_two

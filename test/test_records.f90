@@ -10,7 +10,8 @@ module test_records
                                  ground_motion, record_format_name, record_units_name, &
                                  RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, &
                                  RECORD_TIME_ACCEL, UNITS_G, UNITS_M_S2, UNITS_CM_S2, &
-                                 STANDARD_GRAVITY, accel_unit_code, accel_unit_factor
+                                 STANDARD_GRAVITY, accel_unit_code, accel_unit_factor, &
+                                 MAX_RECORD_SAMPLES, MAX_RECORD_BYTES
     use testing, only: test_error, unit_test, new_unittest, check
     implicit none
     private
@@ -47,6 +48,8 @@ contains
                  new_unittest('auto detection and explicit formats', test_detection), &
                  new_unittest('empty file, comments only, missing file', test_empty_missing), &
                  new_unittest('very long lines are read whole', test_long_lines), &
+                 new_unittest('hostile files: NPTS, NUL, sizes, limits', test_hostile), &
+                 new_unittest('a sparse file of 1 GiB is refused from its size', test_huge_file), &
                  new_unittest('bad arguments', test_bad_arguments), &
                  new_unittest('record_pga and the code names', test_pga_names), &
                  new_unittest('pga_scale_factor: exact and SLAMMER rounding', test_scale), &
@@ -123,32 +126,33 @@ contains
     end subroutine remove_file
 
     !> Write `text` to a fixture named `tag`, read it with the given options, delete it.
-    subroutine read_text(text, tag, rec, stat, msg, path, fmt, units, dt)
+    subroutine read_text(text, tag, rec, stat, msg, path, fmt, units, dt, max_samples)
         character(len=*), intent(in) :: text, tag
         type(record_t), intent(out) :: rec
         integer, intent(out) :: stat
         character(len=*), intent(out) :: msg
         character(len=:), allocatable, intent(out) :: path
-        integer, intent(in), optional :: fmt, units
+        integer, intent(in), optional :: fmt, units, max_samples
         real(dp), intent(in), optional :: dt
         path = tmp_file(tag)
         call write_text(path, text)
         msg = ''
-        call read_record(path, rec, stat, msg, fmt=fmt, units=units, dt=dt)
+        call read_record(path, rec, stat, msg, fmt=fmt, units=units, dt=dt, &
+                         max_samples=max_samples)
         call remove_file(path)
     end subroutine read_text
 
     !> A successful read of `text`.
-    subroutine read_ok(error, text, tag, rec, fmt, units, dt)
+    subroutine read_ok(error, text, tag, rec, fmt, units, dt, max_samples)
         type(test_error), allocatable, intent(inout) :: error
         character(len=*), intent(in) :: text, tag
         type(record_t), intent(out) :: rec
-        integer, intent(in), optional :: fmt, units
+        integer, intent(in), optional :: fmt, units, max_samples
         real(dp), intent(in), optional :: dt
         integer :: stat
         character(len=1024) :: msg
         character(len=:), allocatable :: path
-        call read_text(text, tag, rec, stat, msg, path, fmt, units, dt)
+        call read_text(text, tag, rec, stat, msg, path, fmt, units, dt, max_samples)
         call check(error, stat, SEISPULSE_SUCCESS, tag//': status ('//trim(msg)//')')
         if (allocated(error)) return
         call check(error, rec%npts, size(rec%accel), tag//': npts = size(accel)')
@@ -156,19 +160,19 @@ contains
 
     !> A failed read of `text`: status `code`, message starting with `<path>` + `head`
     !> (head = ':6: ' or ': ') and containing `part` (and `part2`).
-    subroutine read_fails(error, text, tag, code, head, part, part2, fmt, units, dt)
+    subroutine read_fails(error, text, tag, code, head, part, part2, fmt, units, dt, max_samples)
         type(test_error), allocatable, intent(inout) :: error
         character(len=*), intent(in) :: text, tag
         integer, intent(in) :: code
         character(len=*), intent(in) :: head, part
         character(len=*), intent(in), optional :: part2
-        integer, intent(in), optional :: fmt, units
+        integer, intent(in), optional :: fmt, units, max_samples
         real(dp), intent(in), optional :: dt
         type(record_t) :: rec
         integer :: stat
         character(len=1024) :: msg
         character(len=:), allocatable :: path
-        call read_text(text, tag, rec, stat, msg, path, fmt, units, dt)
+        call read_text(text, tag, rec, stat, msg, path, fmt, units, dt, max_samples)
         call check(error, stat, code, tag//': status ('//trim(msg)//')')
         if (allocated(error)) return
         call check(error, index(msg, path//head) == 1, tag//": message should start with '" &
@@ -685,6 +689,131 @@ contains
         call read_fails(error, '0 1'//NL//'0.5 2 '//repeat('9', 50000)//NL, 'longbad.txt', &
                         SEISPULSE_INVALID_INPUT, ':2: ', 'found 3')
     end subroutine test_long_lines
+
+    !> Hostile or mistaken files: a huge, negative or zero-padded NPTS, NPTS far above the
+    !> data, a NUL byte, a file ending inside a number, control bytes and a line of 1 MB
+    !> in a message, the sample limit (MAX_RECORD_SAMPLES, or a lower max_samples) hit
+    !> on the row past it in every format. Each error names the file and the line.
+    subroutine test_hostile(error)
+        type(test_error), allocatable, intent(out) :: error
+        character(len=*), parameter :: head = 'PEER NGA STRONG MOTION DATABASE RECORD'//NL// &
+            'title'//NL//'ACCELERATION TIME SERIES IN UNITS OF G'//NL
+        type(record_t) :: rec
+        integer :: stat
+        character(len=1024) :: msg
+        character(len=:), allocatable :: path
+        ! the limits as documented (module notes of seispulse_record_reader)
+        call check(error, MAX_RECORD_SAMPLES == 10000000 .and. MAX_RECORD_BYTES == 536870912, &
+                   'MAX_RECORD_SAMPLES = 1e7, MAX_RECORD_BYTES = 512 MiB')
+        if (allocated(error)) return
+        ! a record of 1e8 samples announced: refused at line 4, nothing allocated for it
+        call read_fails(error, head//'NPTS= 100000000, DT= .01 SEC'//NL//'1 2 3'//NL, &
+                        'n1e8.at2', SEISPULSE_INVALID_INPUT, ':4: ', 'NPTS = 100000000', &
+                        'MAX_RECORD_SAMPLES = 10000000')
+        if (allocated(error)) return
+        call read_fails(error, head//'NPTS= 99999999999999999999, DT= .01'//NL//'1'//NL, &
+                        'n1e20.at2', SEISPULSE_INVALID_INPUT, ':4: ', &
+                        "NPTS = '99999999999999999999'", 'more samples than a record may have')
+        if (allocated(error)) return
+        call read_fails(error, head//'  10000001    .0100    NPTS, DT'//NL//'1'//NL, &
+                        'nold.at2', SEISPULSE_INVALID_INPUT, ':4: ', 'NPTS = 10000001')
+        if (allocated(error)) return
+        call read_fails(error, head//'NPTS= -5, DT= .01'//NL//'1'//NL, 'nneg.at2', &
+                        SEISPULSE_INVALID_INPUT, ':4: ', "NPTS = '-5' is not a positive integer")
+        if (allocated(error)) return
+        ! leading zeros do not count towards the limit
+        call read_ok(error, head//'NPTS= 00000000000000000003, DT= .01'//NL//'1 2 3'//NL, &
+                     'nzeros.at2', rec)
+        if (allocated(error)) return
+        call check(error, rec%npts, 3, 'NPTS with leading zeros')
+        if (allocated(error)) return
+        ! NPTS far above the data (below the limit): the values are counted, not allocated
+        call read_fails(error, head//'NPTS= 9999999, DT= .01'//NL//'1 2 3'//NL, 'nfar.at2', &
+                        SEISPULSE_INVALID_INPUT, ': ', 'NPTS = 9999999', 'only 3 values (line 5)')
+        if (allocated(error)) return
+        ! max_samples: the row past the limit, in each format
+        call read_fails(error, head//'NPTS= 6, DT= .01'//NL//'1 2 3 4 5 6'//NL, 'max.at2', &
+                        SEISPULSE_INVALID_INPUT, ':4: ', 'NPTS = 6', 'max_samples = 5 samples', &
+                        max_samples=5)
+        if (allocated(error)) return
+        call read_ok(error, head//'NPTS= 5, DT= .01'//NL//'1 2 3 4 5'//NL, 'max5.at2', rec, &
+                     max_samples=5)
+        if (allocated(error)) return
+        call read_fails(error, '# c'//NL//'1'//NL//'2'//NL//NL//'3'//NL//'4'//NL, 'max.txt', &
+                        SEISPULSE_INVALID_INPUT, ':6: ', 'a row of data', 'max_samples = 3', &
+                        fmt=RECORD_COLUMN, dt=0.01_dp, max_samples=3)
+        if (allocated(error)) return
+        call read_fails(error, '# a'//NL//'# b'//NL//'0,1'//NL//'1,2'//NL//'2,3'//NL, &
+                        'max.csv', SEISPULSE_INVALID_INPUT, ':5: ', 'max_samples = 2', &
+                        max_samples=2)
+        if (allocated(error)) return
+        call read_ok(error, '0 1'//NL//'1 2'//NL, 'max2.dat', rec, max_samples=2)
+        if (allocated(error)) return
+        call check(error, rec%npts, 2, 'max_samples = npts is accepted')
+        if (allocated(error)) return
+        ! a bad max_samples is an argument error (message names the argument)
+        call read_text('1'//NL, 'max0.txt', rec, stat, msg, path, dt=0.1_dp, max_samples=0)
+        call check(error, stat == SEISPULSE_INVALID_INPUT .and. index(msg, 'max_samples = 0: ' &
+                   //'must be 1 to MAX_RECORD_SAMPLES = 10000000') == 1, 'max0: '//trim(msg))
+        if (allocated(error)) return
+        call read_text('1'//NL, 'max1e9.txt', rec, stat, msg, path, dt=0.1_dp, &
+                       max_samples=MAX_RECORD_SAMPLES + 1)
+        call check(error, stat == SEISPULSE_INVALID_INPUT .and. index(msg, 'max_samples = ' &
+                   //'10000001: must be 1') == 1, 'max above the limit: '//trim(msg))
+        if (allocated(error)) return
+        ! NUL bytes: binary data, with the line and column of the first
+        call read_fails(error, '0 1'//NL//'0.5 2'//achar(0)//NL, 'nul.txt', &
+                        SEISPULSE_INVALID_INPUT, ':2: ', 'a NUL byte (column 6)', 'binary data')
+        if (allocated(error)) return
+        call read_fails(error, repeat(achar(0), 4096), 'zeros.at2', SEISPULSE_INVALID_INPUT, &
+                        ':1: ', 'a NUL byte (column 1)')
+        if (allocated(error)) return
+        ! the file ends inside a number
+        call read_fails(error, '1.0'//NL//'2.5e', 'midnum.txt', SEISPULSE_INVALID_INPUT, &
+                        ':2: ', "'2.5e'", fmt=RECORD_COLUMN, dt=0.01_dp)
+        if (allocated(error)) return
+        call read_fails(error, head//'NPTS= 3, DT= .01'//NL//'1 2 -', 'midnum.at2', &
+                        SEISPULSE_INVALID_INPUT, ':5: ', "'-'")
+        if (allocated(error)) return
+        ! control bytes in a quoted line are shown as \xNN
+        call read_fails(error, '0 1 '//achar(27)//'[31m'//NL, 'esc.txt', &
+                        SEISPULSE_INVALID_INPUT, ':1: ', "found '0 1 \x1B[31m'")
+        if (allocated(error)) return
+        ! a line of 1 MB: an error in bounded time, the message quotes 40 characters
+        call read_text('0 1'//NL//'1 '//repeat('7', 1000000)//' 3'//NL, 'mb.txt', rec, stat, &
+                       msg, path)
+        call check(error, stat, SEISPULSE_INVALID_INPUT, '1 MB line: status')
+        if (allocated(error)) return
+        call check(error, index(msg, path//':2: ') == 1 .and. len_trim(msg) < len(path) + 200, &
+                   '1 MB line: '//trim(msg))
+    end subroutine test_hostile
+
+    !> A sparse file of 1 GiB (one byte written at its end: no disk used) is refused from
+    !> its size, before it is read: bounded time and memory.
+    subroutine test_huge_file(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(record_t) :: rec
+        integer :: stat, u, ios
+        character(len=1024) :: msg
+        character(len=:), allocatable :: path
+        path = tmp_file('huge.txt')
+        open(newunit=u, file=path, access='stream', form='unformatted', status='replace', &
+             action='write', iostat=ios)
+        if (ios == 0) write(u, pos=1073741824, iostat=ios) NL
+        if (ios == 0) close(u, iostat=ios)
+        call check(error, ios == 0, 'cannot write the sparse fixture '//path)
+        if (allocated(error)) then
+            call remove_file(path)
+            return
+        end if
+        msg = ''
+        call read_record(path, rec, stat, msg)
+        call remove_file(path)
+        call check(error, stat, SEISPULSE_INVALID_INPUT, 'huge file: status ('//trim(msg)//')')
+        if (allocated(error)) return
+        call check(error, index(msg, path//': the file has 1073741824 bytes') == 1 .and. &
+                   index(msg, 'MAX_RECORD_BYTES = 536870912') > 0, 'huge file: '//trim(msg))
+    end subroutine test_huge_file
 
     subroutine test_bad_arguments(error)
         type(test_error), allocatable, intent(out) :: error

@@ -42,7 +42,8 @@ from ._seispulse import (sp_ground_motion, sp_pga_scale_factor, sp_record_fetch,
 from .errors import InvalidInputError
 
 __all__ = ["STANDARD_GRAVITY", "FORMATS", "UNITS", "Record", "read", "from_array", "sample",
-           "Intensity", "intensity", "spectral_acceleration", "accel_unit_factor"]
+           "Intensity", "intensity", "spectral_acceleration", "accel_unit_factor",
+           "MAX_RECORD_SAMPLES", "MAX_RECORD_BYTES"]
 
 #: Standard gravity (m/s^2): converts m/s^2 and cm/s^2 to g, default ``g`` of the
 #: velocity and displacement.
@@ -53,6 +54,15 @@ _FORMAT_CODES = {"auto": _f.RECORD_AUTO, "at2": _f.RECORD_AT2, "slammer": _f.REC
                  "column": _f.RECORD_COLUMN, "time_accel": _f.RECORD_TIME_ACCEL}
 FORMATS = tuple(_FORMAT_CODES)
 _FORMAT_NAMES = {code: name for name, code in _FORMAT_CODES.items()}
+
+#: The most samples :func:`read` accepts (10 000 000: some 100 times the longest
+#: accelerograms in use, 27.8 h at 100 Hz; the reader's arrays stay under 200 MB): a
+#: larger AT2 NPTS, or more rows, raises InvalidInputError naming the line.
+MAX_RECORD_SAMPLES = _f.MAX_RECORD_SAMPLES
+#: The largest file :func:`read` accepts, in bytes (512 MiB: some 50 characters for each
+#: of MAX_RECORD_SAMPLES samples; the file is held in memory while it is parsed): a
+#: larger one raises InvalidInputError before it is read.
+MAX_RECORD_BYTES = _f.MAX_RECORD_BYTES
 
 #: Units of the values in a file or array (aliases: 'm/s^2', 'cm/s^2', 'gal'; any case:
 #: the library's one vocabulary, as in the driver and for pulses).
@@ -294,9 +304,11 @@ def read(path, fmt="auto", units=None, dt=None):
     ------
     InvalidInputError
         A malformed file (the message starts with ``<path>:<n>:``) or a bad
-        argument.
+        argument; a file with a NUL byte (binary data), of more than
+        :data:`MAX_RECORD_BYTES` bytes or more than :data:`MAX_RECORD_SAMPLES` samples
+        (refused in bounded time and memory).
     FileError
-        The file cannot be opened or read.
+        The file cannot be opened or read (missing, a directory).
     """
     try:
         fspath = os.fspath(path)

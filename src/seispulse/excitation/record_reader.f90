@@ -32,6 +32,24 @@
 !>
 !> The file is read in one piece (stream access) and parsed in memory; numbers are
 !> converted to the correctly rounded double (seispulse_number_reader).
+!>
+!> Limits (hostile or mistaken input: a binary file, a huge NPTS, a file of 1e8 samples
+!> or of 1 GB): memory and time stay bounded and the error names the file and the line.
+!>
+!> - `MAX_RECORD_SAMPLES` = 10 000 000 samples. The longest accelerograms in use hold
+!>   about 1e5 samples (NGA-West2: up to some 1e4 - 1e5; a 10 min subduction record at
+!>   200 Hz: 1.2e5); 1e7 samples is 27.8 h at 100 Hz or 2.8 h at 1 kHz, and keeps the
+!>   reader's arrays (values, and for two columns times and line numbers: 20 bytes a
+!>   sample) under 200 MB. An AT2 header with a larger NPTS is refused at line 4, a text
+!>   file at the row of sample MAX_RECORD_SAMPLES + 1.
+!> - `MAX_RECORD_BYTES` = 536 870 912 bytes (512 MiB): the file is held in memory while
+!>   it is parsed; 512 MiB leaves some 50 characters for each of MAX_RECORD_SAMPLES
+!>   samples (an AT2 value takes about 15, a SLAMMER row about 20). A larger file is
+!>   refused before it is read, from its size.
+!> - a NUL byte anywhere: a record is a text file; the error gives its line and column.
+!>
+!> The reader therefore takes at most about 0.7 GB and time linear in the size of the
+!> file (messages quote at most 40 characters of a line, control bytes shown as \xNN).
 module seispulse_record_reader
     use, intrinsic :: iso_fortran_env, only: int64
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -45,6 +63,7 @@ module seispulse_record_reader
     public :: read_record_file, base_name, record_format_name, record_units_name
     public :: RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, RECORD_TIME_ACCEL
     public :: UNITS_G, UNITS_M_S2, UNITS_CM_S2
+    public :: MAX_RECORD_SAMPLES, MAX_RECORD_BYTES
 
     integer, parameter :: RECORD_AUTO = 0        !! detect the format (see the module notes)
     integer, parameter :: RECORD_AT2 = 1         !! PEER NGA .AT2
@@ -55,6 +74,13 @@ module seispulse_record_reader
     integer, parameter :: UNITS_G = 1            !! acceleration in g
     integer, parameter :: UNITS_M_S2 = 2         !! acceleration in m/s^2
     integer, parameter :: UNITS_CM_S2 = 3        !! acceleration in cm/s^2 (gal)
+
+    !> The most samples a record may have (the module notes give the reasoning): a
+    !> larger AT2 NPTS, or more rows of data, is an error naming the line.
+    integer, parameter :: MAX_RECORD_SAMPLES = 10000000
+    !> The largest record file, in bytes (512 MiB; the module notes give the reasoning):
+    !> a larger file is refused from its size, before it is read.
+    integer, parameter :: MAX_RECORD_BYTES = 536870912
 
     character(len=*), parameter :: LF = achar(10), CR = achar(13), TAB = achar(9)
 
@@ -84,9 +110,10 @@ contains
     !>
     !> stat = SEISPULSE_IO when the file cannot be opened or read, else
     !> SEISPULSE_INVALID_INPUT for a malformed file (the message names the file and the
-    !> line, what was expected and what was found).
+    !> line, what was expected and what was found), a file above MAX_RECORD_BYTES or
+    !> more samples than `max_samples`.
     subroutine read_record_file(path, fmt_in, units_in, dt_in, accel, units, dt, t0, title, &
-                                fmt, stat, errmsg)
+                                fmt, stat, errmsg, max_samples)
         character(len=*), intent(in) :: path                  !! the file
         integer, intent(in) :: fmt_in            !! RECORD_*: the format asked for (AUTO: detect)
         integer, intent(in) :: units_in          !! UNITS_* of the values, 0: not given
@@ -101,8 +128,10 @@ contains
         integer, intent(out) :: fmt              !! the format read (RECORD_AUTO on error)
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
+        integer, intent(in), optional :: max_samples  !! the most samples accepted, 1 to
+                                                      !! MAX_RECORD_SAMPLES (the default)
         type(text_t) :: txt
-        integer :: want
+        integer :: want, nmax
 
         stat = SEISPULSE_SUCCESS
         units = UNITS_G
@@ -110,7 +139,17 @@ contains
         t0 = 0.0_dp
         title = ''
         fmt = RECORD_AUTO
+        nmax = MAX_RECORD_SAMPLES
+        if (present(max_samples)) nmax = max_samples
+        if (nmax < 1 .or. nmax > MAX_RECORD_SAMPLES) then
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, 'max_samples = ' &
+                           //int_str(nmax)//': must be 1 to MAX_RECORD_SAMPLES = ' &
+                           //int_str(MAX_RECORD_SAMPLES))
+            return
+        end if
         call load_file(path, txt%buf, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
+        call check_no_nul(path, txt%buf, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) return
         ! UTF-8 byte-order mark EF BB BF
         if (len(txt%buf) >= 3) then
@@ -125,16 +164,17 @@ contains
 
         select case (want)
         case (RECORD_AT2)
-            call read_at2(path, txt, units_in, dt_in, accel, units, dt, t0, title, stat, errmsg)
+            call read_at2(path, txt, units_in, dt_in, nmax, accel, units, dt, t0, title, stat, &
+                          errmsg)
         case (RECORD_COLUMN)
-            call read_columns(path, txt, 1, .false., units_in, dt_in, accel, units, dt, t0, &
-                              title, stat, errmsg)
+            call read_columns(path, txt, 1, .false., units_in, dt_in, nmax, accel, units, dt, &
+                              t0, title, stat, errmsg)
         case (RECORD_SLAMMER)
-            call read_columns(path, txt, 2, .true., units_in, dt_in, accel, units, dt, t0, &
-                              title, stat, errmsg)
+            call read_columns(path, txt, 2, .true., units_in, dt_in, nmax, accel, units, dt, &
+                              t0, title, stat, errmsg)
         case default
-            call read_columns(path, txt, 2, .false., units_in, dt_in, accel, units, dt, t0, &
-                              title, stat, errmsg)
+            call read_columns(path, txt, 2, .false., units_in, dt_in, nmax, accel, units, dt, &
+                              t0, title, stat, errmsg)
         end select
         if (stat == SEISPULSE_SUCCESS) fmt = want
     end subroutine read_record_file
@@ -198,10 +238,18 @@ contains
             return
         end if
         inquire(unit=u, size=nbytes)
-        if (nbytes < 0 .or. nbytes > int(huge(1), int64)) then
+        if (nbytes < 0) then
             close(u)
             call set_error(stat, errmsg, SEISPULSE_IO, path//': cannot read: the size of ' &
-                           //'the file is unknown or above 2 GiB')
+                           //'the file is unknown (not a regular file?)')
+            return
+        end if
+        if (nbytes > int(MAX_RECORD_BYTES, int64)) then
+            close(u)
+            call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, path//': the file has ' &
+                           //int64_str(nbytes)//' bytes, more than a record file may have ' &
+                           //'(MAX_RECORD_BYTES = '//int_str(MAX_RECORD_BYTES)//' bytes, 512 ' &
+                           //'MiB): not an accelerogram, or too long to read')
             return
         end if
         allocate(character(len=int(nbytes)) :: buf, stat=ios)
@@ -220,6 +268,59 @@ contains
         end if
         close(u)
     end subroutine load_file
+
+    !> A NUL byte is an error naming its line and column: a record is a text file.
+    subroutine check_no_nul(path, buf, stat, errmsg)
+        character(len=*), intent(in) :: path
+        character(len=*), intent(in) :: buf
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        integer :: k, i, lnum, lstart
+        stat = SEISPULSE_SUCCESS
+        k = index(buf, achar(0))
+        if (k == 0) return
+        lnum = 1
+        lstart = 1
+        do i = 1, k - 1
+            if (buf(i:i) == LF) then
+                lnum = lnum + 1
+                lstart = i + 1
+            end if
+        end do
+        call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, at_line(path, lnum)//'a NUL ' &
+                       //'byte (column '//int_str(k - lstart + 1)//'): a record is a text ' &
+                       //'file, this one holds binary data')
+    end subroutine check_no_nul
+
+    !> An integer(int64) as text.
+    pure function int64_str(n) result(s)
+        integer(int64), intent(in) :: n
+        character(len=:), allocatable :: s
+        character(len=24) :: b
+        write(b, '(i0)') n
+        s = trim(b)
+    end function int64_str
+
+    !> A quoted excerpt of a line for a message: quote() (at most 40 characters) with
+    !> control bytes shown as \xNN, so that a message stays one printable line.
+    pure function shown(text) result(s)
+        character(len=*), intent(in) :: text
+        character(len=:), allocatable :: s
+        character(len=*), parameter :: HEX = '0123456789ABCDEF'
+        character(len=:), allocatable :: t
+        integer :: i, c, n
+        n = min(len(text), 160)
+        t = ''
+        do i = 1, n
+            c = iachar(text(i:i))
+            if ((c < 32 .and. c /= 9) .or. c == 127) then
+                t = t//'\x'//HEX(c / 16 + 1:c / 16 + 1)//HEX(mod(c, 16) + 1:mod(c, 16) + 1)
+            else
+                t = t//text(i:i)
+            end if
+        end do
+        s = quote(t)
+    end function shown
 
     !> Advance to the next line; false at the end of the text. The line is
     !> txt%buf(txt%ls:txt%le), without its LF or CRLF.
@@ -449,7 +550,7 @@ contains
                     call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
                                    at_line(path, txt%line)//'expected 1 or 2 numbers (one ' &
                                    //'column of accelerations, or time and acceleration), ' &
-                                   //'found '//quote(line))
+                                   //'found '//shown(line))
                     exit
                 end if
                 if (nf == 1) then
@@ -484,12 +585,13 @@ contains
     end subroutine no_data
 
     !> PEER NGA .AT2.
-    subroutine read_at2(path, txt, units_in, dt_in, accel, units, dt_out, t0, title, stat, &
+    subroutine read_at2(path, txt, units_in, dt_in, nmax, accel, units, dt_out, t0, title, stat, &
                         errmsg)
         character(len=*), intent(in) :: path
         type(text_t), intent(inout) :: txt
         integer, intent(in) :: units_in    !! 0: not given
         real(dp), intent(in) :: dt_in      !! 0: not given
+        integer, intent(in) :: nmax        !! the most samples accepted
         real(dp), allocatable, intent(inout) :: accel(:)  !! the values read
         integer, intent(out) :: units      !! their UNITS_*
         real(dp), intent(inout) :: dt_out  !! time step (s)
@@ -520,17 +622,21 @@ contains
                     if (ok3 < 0) then
                         call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
                                        at_line(path, 3)//'not an acceleration record (' &
-                                       //'expected '//LINE3//', found '//quote(line)//')')
+                                       //'expected '//LINE3//', found '//shown(line)//')')
                         return
                     else if (ok3 == 0) then
                         call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
                                        at_line(path, 3)//'expected the quantity and units ' &
-                                       //'as '//LINE3//', found '//quote(line))
+                                       //'as '//LINE3//', found '//shown(line))
                         return
                     end if
                 case (4)
                     call at2_npts_dt(line, npts, dt_hdr, stat, errmsg, path)
                     if (stat /= SEISPULSE_SUCCESS) return
+                    if (npts > nmax) then
+                        call too_many(path, 4, 'NPTS = '//int_str(npts), nmax, stat, errmsg)
+                        return
+                    end if
                 end select
             end associate
         end do
@@ -558,7 +664,11 @@ contains
 
         ! at most one value per two bytes of text
         cap = max(1, min(npts, len(txt%buf) / 2 + 1))
-        allocate(vals(cap))
+        allocate(vals(cap), stat=k)
+        if (k /= 0) then
+            call out_of_memory(path, cap, stat, errmsg)
+            return
+        end if
         n = 0
         first_line = 0
         do while (next_line(txt))
@@ -578,7 +688,7 @@ contains
                         call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
                                        at_line(path, txt%line)//'more values than NPTS = ' &
                                        //int_str(npts)//' (line 4): the extra values start ' &
-                                       //'here ('//quote(line(ts:te))//')')
+                                       //'here ('//shown(line(ts:te))//')')
                         return
                     end if
                     call value_at(path, txt%line, line(ts:te), x, stat, errmsg)
@@ -741,19 +851,25 @@ contains
         subroutine bad4(what)
             character(len=*), intent(in) :: what
             call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, at_line(path, 4)//what//'; ' &
-                           //AT2_LINE4_FORMS//', found '//quote(line))
+                           //AT2_LINE4_FORMS//', found '//shown(line))
         end subroutine bad4
 
         logical function set_npts(tok)
             character(len=*), intent(in) :: tok
-            integer :: i
+            integer :: i, i0
             set_npts = .false.
-            if (verify(tok, '0123456789') /= 0 .or. len(tok) > 9) then
-                call bad4('NPTS = '//quote(tok)//' is not a positive integer')
+            if (verify(tok, '0123456789') /= 0) then
+                call bad4('NPTS = '//shown(tok)//' is not a positive integer')
+                return
+            end if
+            i0 = verify(tok, '0')
+            if (i0 == 0) i0 = len(tok)
+            if (len(tok) - i0 + 1 > 9) then
+                call too_many(path, 4, 'NPTS = '//shown(tok), MAX_RECORD_SAMPLES, stat, errmsg)
                 return
             end if
             npts = 0
-            do i = 1, len(tok)
+            do i = i0, len(tok)
                 npts = 10 * npts + (iachar(tok(i:i)) - iachar('0'))
             end do
             if (npts == 0) then
@@ -767,10 +883,10 @@ contains
             character(len=*), intent(in) :: tok
             call parse_real(tok, dt, code)
             if (code /= NUM_OK) then
-                call bad4('DT = '//quote(tok)//' is not a number')
+                call bad4('DT = '//shown(tok)//' is not a number')
                 dt = 0.0_dp
             else if (.not. dt > 0.0_dp) then
-                call bad4('DT = '//quote(tok)//' must be > 0')
+                call bad4('DT = '//shown(tok)//' must be > 0')
                 dt = 0.0_dp
             end if
         end subroutine set_dt
@@ -811,14 +927,15 @@ contains
 
     !> One or two columns: RECORD_COLUMN (ncol = 1), RECORD_TIME_ACCEL and
     !> RECORD_SLAMMER (ncol = 2; `slammer` requires the two comment lines).
-    subroutine read_columns(path, txt, ncol, slammer, units_in, dt_in, accel, units, dt_out, &
-                            t0, title, stat, errmsg)
+    subroutine read_columns(path, txt, ncol, slammer, units_in, dt_in, nmax, accel, units, &
+                            dt_out, t0, title, stat, errmsg)
         character(len=*), intent(in) :: path
         type(text_t), intent(inout) :: txt
         integer, intent(in) :: ncol
         logical, intent(in) :: slammer
         integer, intent(in) :: units_in
         real(dp), intent(in) :: dt_in
+        integer, intent(in) :: nmax        !! the most samples accepted
         real(dp), allocatable, intent(inout) :: accel(:)  !! the values read
         integer, intent(out) :: units      !! their UNITS_*
         real(dp), intent(inout) :: dt_out  !! time step (s)
@@ -838,9 +955,13 @@ contains
                            //'file has no time step; give dt')
             return
         end if
-        cap = count_lines(txt%buf)
-        allocate(vals(cap))
-        if (ncol == 2) allocate(times(cap), lines(cap))
+        cap = min(count_lines(txt%buf), nmax)
+        allocate(vals(cap), stat=i)
+        if (i == 0 .and. ncol == 2) allocate(times(cap), lines(cap), stat=i)
+        if (i /= 0) then
+            call out_of_memory(path, cap, stat, errmsg)
+            return
+        end if
         n = 0
         titled = .false.
         do while (next_line(txt))
@@ -848,7 +969,7 @@ contains
                 if (slammer .and. txt%line <= 2 .and. .not. is_comment(line)) then
                     call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, at_line(path, txt%line) &
                                    //"expected a '#' comment line (a SLAMMER file starts " &
-                                   //'with two), found '//quote(line))
+                                   //'with two), found '//shown(line))
                     return
                 end if
                 if (is_comment(line)) then
@@ -867,12 +988,16 @@ contains
                         call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
                                        at_line(path, txt%line)//'expected 1 value (a single ' &
                                        //'column of accelerations), found '//int_str(nf)//': ' &
-                                       //quote(line))
+                                       //shown(line))
                     else
                         call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, &
                                        at_line(path, txt%line)//'expected 2 values (time, ' &
-                                       //'acceleration), found '//int_str(nf)//': '//quote(line))
+                                       //'acceleration), found '//int_str(nf)//': '//shown(line))
                     end if
+                    return
+                end if
+                if (n == nmax) then
+                    call too_many(path, txt%line, 'a row of data', nmax, stat, errmsg)
                     return
                 end if
                 p = 1
@@ -958,6 +1083,32 @@ contains
         dt_out = dt
     end subroutine read_columns
 
+    !> The error of a record above the sample limit, at line lnum: `what` would make
+    !> more than nmax samples.
+    subroutine too_many(path, lnum, what, nmax, stat, errmsg)
+        character(len=*), intent(in) :: path, what
+        integer, intent(in) :: lnum, nmax
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        character(len=:), allocatable :: limit
+        if (nmax == MAX_RECORD_SAMPLES) then
+            limit = 'MAX_RECORD_SAMPLES = '//int_str(nmax)//' samples, the limit of the reader'
+        else
+            limit = 'max_samples = '//int_str(nmax)//' samples'
+        end if
+        call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, at_line(path, lnum)//what &
+                       //': more samples than a record may have ('//limit//')')
+    end subroutine too_many
+
+    subroutine out_of_memory(path, n, stat, errmsg)
+        character(len=*), intent(in) :: path
+        integer, intent(in) :: n
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
+        call set_error(stat, errmsg, SEISPULSE_IO, path//': cannot read: out of memory for ' &
+                       //int_str(n)//' samples')
+    end subroutine out_of_memory
+
     subroutine empty_value(path, lnum, line, stat, errmsg)
         character(len=*), intent(in) :: path, line
         integer, intent(in) :: lnum
@@ -965,7 +1116,7 @@ contains
         character(len=*), intent(inout), optional :: errmsg
         call set_error(stat, errmsg, SEISPULSE_INVALID_INPUT, at_line(path, lnum)//'empty ' &
                        //'value (a leading or trailing comma, or two commas in a row): ' &
-                       //quote(line))
+                       //shown(line))
     end subroutine empty_value
 
     ! ------------------------------------------------------------------------------

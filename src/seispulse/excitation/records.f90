@@ -19,7 +19,8 @@ module seispulse_records
     use seispulse_record_reader, only: read_record_file, base_name, record_format_name, &
                                        record_units_name, RECORD_AUTO, RECORD_AT2, &
                                        RECORD_SLAMMER, RECORD_COLUMN, RECORD_TIME_ACCEL, &
-                                       UNITS_G, UNITS_M_S2, UNITS_CM_S2
+                                       UNITS_G, UNITS_M_S2, UNITS_CM_S2, MAX_RECORD_SAMPLES, &
+                                       MAX_RECORD_BYTES
     implicit none
     private
 
@@ -27,6 +28,7 @@ module seispulse_records
               record_format_name, record_units_name
     public :: RECORD_AUTO, RECORD_AT2, RECORD_SLAMMER, RECORD_COLUMN, RECORD_TIME_ACCEL
     public :: UNITS_G, UNITS_M_S2, UNITS_CM_S2, STANDARD_GRAVITY
+    public :: MAX_RECORD_SAMPLES, MAX_RECORD_BYTES
     public :: accel_unit_code, accel_unit_factor, ACCEL_UNIT_NAMES
 
     real(dp), parameter :: STANDARD_GRAVITY = 9.80665_dp  !! m/s^2, for unit conversion
@@ -66,7 +68,12 @@ contains
     !> ("<path>: cannot open: <system message>"), SEISPULSE_INVALID_INPUT for a
     !> malformed file or a bad argument (the message names the file and the line, what
     !> was expected and what was found). On error `rec` holds no samples (npts = 0).
-    subroutine read_record(path, rec, stat, errmsg, fmt, units, dt)
+    !>
+    !> Limits (seispulse_record_reader's notes give the reasoning): at most
+    !> MAX_RECORD_SAMPLES = 10 000 000 samples (or `max_samples`) and a file of at most
+    !> MAX_RECORD_BYTES = 512 MiB; a NUL byte is an error. Beyond them the error comes in
+    !> bounded time and memory and names the file and the line.
+    subroutine read_record(path, rec, stat, errmsg, fmt, units, dt, max_samples)
         character(len=*), intent(in) :: path                  !! the file
         type(record_t), intent(out) :: rec                    !! the record read
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
@@ -76,6 +83,8 @@ contains
                                                  !! UNITS_G (AT2: the units of header line 3)
         real(dp), intent(in), optional :: dt     !! time step (s); required for RECORD_COLUMN;
                                                  !! <= 0 or absent = not given
+        integer, intent(in), optional :: max_samples  !! the most samples accepted, 1 to
+                                                      !! MAX_RECORD_SAMPLES (the default)
         integer :: want, units_in, units_read, fmt_read
         real(dp) :: dt_in
 
@@ -113,7 +122,7 @@ contains
         end if
 
         call read_record_file(path, want, units_in, dt_in, rec%accel, units_read, rec%dt, rec%t0, &
-                              rec%title, fmt_read, stat, errmsg)
+                              rec%title, fmt_read, stat, errmsg, max_samples)
         if (stat == SEISPULSE_SUCCESS) call to_g(rec%accel, units_read, path, stat, errmsg)
         if (stat /= SEISPULSE_SUCCESS) then
             rec%npts = 0
