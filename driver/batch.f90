@@ -8,7 +8,8 @@
 !> "Restart") records each unit as it is finished, so that a run that is killed can be
 !> resumed with `restart = .true.` in &run: the units found in the journal are not
 !> computed again. It is a text file, one line per unit, each line written whole and
-!> forced to disk (fflush, fsync) before the next unit is delivered:
+!> handed to the operating system (fflush: a killed run keeps it) before the next unit is
+!> delivered, and forced to disk (fsync: a power loss keeps it) at most once a second:
 !>
 !>     seispulse-journal 1 <fingerprint: 16 hex digits> <number of units>
 !>     u <unit> <n> <value 1> ... <value n> <text> <log> <checksum: 16 hex digits>
@@ -111,6 +112,10 @@ module driver_batch
     type(c_ptr) :: journal = c_null_ptr            !! the open journal (null: none)
     character(len=:), allocatable :: journal_file  !! its path (removed by batch_commit)
     logical :: journal_failed = .false.            !! a write failed (warned once)
+    integer(int64) :: last_sync = -1               !! clock count of the last fsync (-1: none)
+    !> Seconds between two fsyncs of the journal (every line is flushed to the system
+    !> at once; see put_line).
+    real, parameter :: SYNC_INTERVAL = 1.0
 
 contains
 
@@ -339,10 +344,23 @@ contains
             return
         else if (c_fflush(journal) /= 0) then
             call journal_warning()
-        else if (c_fsync(c_fileno(journal)) /= 0) then
-            call journal_warning()
+            return
         end if
+        ! the line is now with the operating system (a killed run keeps it); to disk (a
+        ! power loss keeps it) at most once per SYNC_INTERVAL: an fsync costs milliseconds,
+        ! as much as a short record, and a power loss then costs at most that much work
+        if (.not. sync_due()) return
+        if (c_fsync(c_fileno(journal)) /= 0) call journal_warning()
     end subroutine put_line
+
+    !> Whether SYNC_INTERVAL has passed since the journal was last forced to disk (the
+    !> first call: yes); if so, the clock restarts now.
+    logical function sync_due()
+        integer(int64) :: now, rate
+        call system_clock(now, rate)
+        sync_due = last_sync < 0 .or. real(now - last_sync) >= SYNC_INTERVAL * real(rate)
+        if (sync_due) last_sync = now
+    end function sync_due
 
     !> A journal write failed: say so once; the run goes on without the journal.
     subroutine journal_warning()
