@@ -800,9 +800,9 @@ contains
         note = ''
         associate (cfg => run_cfg, where => run_where, r => run_cfg%recs(ir))
             ! --- read, turn over, scale
-            !$omp critical (seispulse_text)
             call load_record(where, r, ir, nrec, 'newmark', cfg%slammer_rounding, o, accel, &
                              log)
+            !$omp critical (seispulse_text)
             what = where//list_item('files', ir)//' = '''//r%file//''''
             !$omp end critical (seispulse_text)
             if (o%ok) call intensity_record(it1, 1, accel, o%dt, cfg%g, what, log)

@@ -509,10 +509,8 @@ contains
         integer :: st
 
         associate (cfg => run_cfg, r => run_cfg%recs(ir))
-            !$omp critical (seispulse_text)
             call load_record(run_where, r, ir, size(cfg%recs), 'sdof', cfg%slammer_rounding, &
                              o, accel, res)
-            !$omp end critical (seispulse_text)
             if (o%ok) then
                 msg = ''
                 call analyse(cfg, accel, o%dt, o%pga, q, st, msg)

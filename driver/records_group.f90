@@ -847,17 +847,46 @@ contains
         type(unit_result_t), intent(inout), optional :: log  !! collects the stderr lines
         type(record_t) :: rec
         character(len=4096) :: msg
-        real(dp) :: factor
         integer :: st
 
-        ! --- read, turn over, scale
+        ! --- read, turn over, scale (numbers only: threads run this side by side)
+        call read_scaled(r, slammer_rounding, rec, o, accel, st, msg)
+        ! --- the label and the lines, one thread at a time: gfortran 12 keeps the length
+        ! of a deferred-length function result (record_label, short, list_item, ...) in
+        ! one static variable per call site
+        !$omp critical (seispulse_text)
+        o%name = record_label(rec, r, ir)
+        if (st == SEISPULSE_SUCCESS) then
+            call progress(tag, ir, nrec, o%name//' (npts '//int_str(o%npts)//', dt ' &
+                          //shortest_str(o%dt)//' s, PGA '//short(o%pga_read)//' g' &
+                          //scaled_text(o)//')', log)
+        else
+            call progress(tag, ir, nrec, o%name//' (failed)', log)
+            call report(where//list_item('files', ir)//' = '''//r%file//''': ' &
+                        //o%message, log)
+        end if
+        !$omp end critical (seispulse_text)
+    end subroutine load_record
+
+    !> The numbers of load_record: read record r, turn it over and scale it into accel
+    !> (g); o gets everything but the name (o%ok, o%message on failure). st is
+    !> SEISPULSE_SUCCESS or not, msg the reason. Only library calls and intrinsic string
+    !> operations: safe to run in several threads at once.
+    subroutine read_scaled(r, slammer_rounding, rec, o, accel, st, msg)
+        type(record_in_t), intent(in) :: r                !! the record's input
+        logical, intent(in) :: slammer_rounding           !! pga_rounding = 'slammer'
+        type(record_t), intent(out) :: rec                !! the record as read
+        type(record_out_t), intent(inout) :: o            !! what happened
+        real(dp), allocatable, intent(out) :: accel(:)    !! the scaled record (g), if ok
+        integer, intent(out) :: st
+        character(len=*), intent(out) :: msg
+        real(dp) :: factor
         msg = ''
         if (r%units > 0) then
             call read_record(r%path, rec, st, msg, fmt=r%fmt, units=r%units, dt=r%dt)
         else
             call read_record(r%path, rec, st, msg, fmt=r%fmt, dt=r%dt)
         end if
-        o%name = record_label(rec, r, ir)
         o%message = ''
         if (st == SEISPULSE_SUCCESS) then
             o%fmt = rec%fmt
@@ -881,20 +910,13 @@ contains
                       //'overflows'
             end if
         end if
-        if (st == SEISPULSE_SUCCESS) then
-            o%ok = .true.
+        o%ok = st == SEISPULSE_SUCCESS
+        if (o%ok) then
             o%pga = record_pga(accel)
-            call progress(tag, ir, nrec, o%name//' (npts '//int_str(o%npts)//', dt ' &
-                          //shortest_str(o%dt)//' s, PGA '//short(o%pga_read)//' g' &
-                          //scaled_text(o)//')', log)
         else
-            o%ok = .false.
             o%message = trim(msg)
-            call progress(tag, ir, nrec, o%name//' (failed)', log)
-            call report(where//list_item('files', ir)//' = '''//r%file//''': ' &
-                        //o%message, log)
         end if
-    end subroutine load_record
+    end subroutine read_scaled
 
     ! ------------------------------------------------------------------------------
     ! Labels and messages

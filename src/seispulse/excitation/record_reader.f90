@@ -54,7 +54,7 @@ module seispulse_record_reader
     use, intrinsic :: iso_fortran_env, only: int64
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     use seispulse_kinds, only: dp
-    use seispulse_format, only: num_str, quote, upper, int_str
+    use seispulse_format, only: num_str, quote, upper, int_str, int_str_len, quote_len
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT, SEISPULSE_IO, set_error
     use seispulse_number_reader, only: parse_real, value_at, at_line, NUM_OK
     implicit none
@@ -183,7 +183,15 @@ contains
     !> ('unknown' otherwise).
     pure function record_format_name(code) result(name)
         integer, intent(in) :: code  !! a RECORD_* code
-        character(len=:), allocatable :: name
+        ! a length by specification expression, not deferred: reentrant (gfortran 12)
+        character(len=len_trim(format_text(code))) :: name
+        name = format_text(code)
+    end function record_format_name
+
+    !> record_format_name, blank-padded.
+    pure function format_text(code) result(name)
+        integer, intent(in) :: code
+        character(len=16) :: name
         select case (code)
         case (RECORD_AUTO)
             name = 'auto'
@@ -198,12 +206,19 @@ contains
         case default
             name = 'unknown'
         end select
-    end function record_format_name
+    end function format_text
 
     !> Name of a UNITS_* code: 'g', 'm/s2', 'cm/s2' ('unknown' otherwise).
     pure function record_units_name(code) result(name)
         integer, intent(in) :: code  !! a UNITS_* code
-        character(len=:), allocatable :: name
+        character(len=len_trim(units_text(code))) :: name
+        name = units_text(code)
+    end function record_units_name
+
+    !> record_units_name, blank-padded.
+    pure function units_text(code) result(name)
+        integer, intent(in) :: code
+        character(len=8) :: name
         select case (code)
         case (UNITS_G)
             name = 'g'
@@ -214,7 +229,7 @@ contains
         case default
             name = 'unknown'
         end select
-    end function record_units_name
+    end function units_text
 
     ! ------------------------------------------------------------------------------
     ! The file and its lines
@@ -295,32 +310,62 @@ contains
     !> An integer(int64) as text.
     pure function int64_str(n) result(s)
         integer(int64), intent(in) :: n
-        character(len=:), allocatable :: s
+        character(len=int64_str_len(n)) :: s
+        write(s, '(i0)') n
+    end function int64_str
+
+    !> The length of int64_str(n).
+    pure integer function int64_str_len(n)
+        integer(int64), intent(in) :: n
         character(len=24) :: b
         write(b, '(i0)') n
-        s = trim(b)
-    end function int64_str
+        int64_str_len = len_trim(b)
+    end function int64_str_len
 
     !> A quoted excerpt of a line for a message: quote() (at most 40 characters) with
     !> control bytes shown as \xNN, so that a message stays one printable line.
     pure function shown(text) result(s)
         character(len=*), intent(in) :: text
-        character(len=:), allocatable :: s
+        ! lengths by specification expressions, not deferred: reentrant (gfortran 12)
+        character(len=quote_len(controls_shown(text))) :: s
+        s = quote(controls_shown(text))
+    end function shown
+
+    !> The first 160 characters of text with control bytes (but tab) written as \xNN.
+    pure function controls_shown(text) result(t)
+        character(len=*), intent(in) :: text
+        character(len=controls_shown_len(text)) :: t
         character(len=*), parameter :: HEX = '0123456789ABCDEF'
-        character(len=:), allocatable :: t
-        integer :: i, c, n
-        n = min(len(text), 160)
-        t = ''
-        do i = 1, n
+        integer :: i, c, p
+        p = 0
+        do i = 1, min(len(text), 160)
             c = iachar(text(i:i))
-            if ((c < 32 .and. c /= 9) .or. c == 127) then
-                t = t//'\x'//HEX(c / 16 + 1:c / 16 + 1)//HEX(mod(c, 16) + 1:mod(c, 16) + 1)
+            if (is_control(c)) then
+                t(p + 1:p + 4) = '\x'//HEX(c / 16 + 1:c / 16 + 1) &
+                                 //HEX(mod(c, 16) + 1:mod(c, 16) + 1)
+                p = p + 4
             else
-                t = t//text(i:i)
+                t(p + 1:p + 1) = text(i:i)
+                p = p + 1
             end if
         end do
-        s = quote(t)
-    end function shown
+    end function controls_shown
+
+    !> The length of controls_shown(text).
+    pure integer function controls_shown_len(text)
+        character(len=*), intent(in) :: text
+        integer :: i
+        controls_shown_len = min(len(text), 160)
+        do i = 1, min(len(text), 160)
+            if (is_control(iachar(text(i:i)))) controls_shown_len = controls_shown_len + 3
+        end do
+    end function controls_shown_len
+
+    !> Whether character code c is a control byte shown as \xNN (not a tab).
+    pure logical function is_control(c)
+        integer, intent(in) :: c
+        is_control = (c < 32 .and. c /= 9) .or. c == 127
+    end function is_control
 
     !> Advance to the next line; false at the end of the text. The line is
     !> txt%buf(txt%ls:txt%le), without its LF or CRLF.
@@ -393,20 +438,23 @@ contains
     !> A comment line as a title: without the leading '#'s, blanks and trailing commas.
     pure function comment_text(line) result(text)
         character(len=*), intent(in) :: line
-        character(len=:), allocatable :: text
-        integer :: a, b
+        character(len=comment_len(line)) :: text
+        integer :: a
         a = verify(line, ' '//TAB//'#')
-        if (a == 0) then
-            text = ''
-            return
-        end if
-        b = verify(line, ' '//TAB//',', back=.true.)
-        if (b < a) then
-            text = ''
-        else
-            text = line(a:b)
-        end if
+        if (len(text) > 0) text = line(a:a + len(text) - 1)
     end function comment_text
+
+    !> The length of comment_text(line): from its first character that is not a blank, a
+    !> tab or '#' to its last that is not a blank, a tab or a comma (0: none).
+    pure integer function comment_len(line)
+        character(len=*), intent(in) :: line
+        integer :: a, b
+        comment_len = 0
+        a = verify(line, ' '//TAB//'#')
+        if (a == 0) return
+        b = verify(line, ' '//TAB//',', back=.true.)
+        comment_len = max(0, b - a + 1)
+    end function comment_len
 
     !> The next value of a line: bounds ts:te (ts = 0 at the end of the line). Values
     !> are separated by blanks and/or one comma; `empty` flags an empty value (a
@@ -1126,7 +1174,8 @@ contains
     !> "line a" or "lines a-b".
     pure function line_range(a, b) result(s)
         integer, intent(in) :: a, b
-        character(len=:), allocatable :: s
+        character(len=merge(7 + int_str_len(a) + int_str_len(b), 5 + int_str_len(a), &
+                            b > a)) :: s
         if (b > a) then
             s = 'lines '//int_str(a)//'-'//int_str(b)
         else
@@ -1137,21 +1186,31 @@ contains
     !> The file name of a path, without the directory.
     pure function base_with_ext(path) result(b)
         character(len=*), intent(in) :: path
-        character(len=:), allocatable :: b
+        character(len=max(0, len_trim(path) - scan(path, '/\', back=.true.))) :: b
         integer :: k
         k = scan(path, '/\', back=.true.)
-        b = path(k + 1:len_trim(path))
+        b = path(k + 1:k + len(b))
     end function base_with_ext
 
     !> The file name without the directory and the last extension (a leading dot is
     !> part of the name: '.hidden' stays).
     pure function base_name(path) result(b)
         character(len=*), intent(in) :: path  !! a file path
-        character(len=:), allocatable :: b
+        character(len=base_name_len(path)) :: b
         integer :: k
-        b = base_with_ext(path)
-        k = index(b, '.', back=.true.)
-        if (k > 1) b = b(1:k - 1)
+        k = scan(path, '/\', back=.true.)
+        b = path(k + 1:k + len(b))
     end function base_name
+
+    !> The length of base_name(path).
+    pure integer function base_name_len(path)
+        character(len=*), intent(in) :: path
+        integer :: k, n, d
+        k = scan(path, '/\', back=.true.)
+        n = max(0, len_trim(path) - k)
+        d = index(path(k + 1:k + n), '.', back=.true.)
+        base_name_len = n
+        if (d > 1) base_name_len = d - 1
+    end function base_name_len
 
 end module seispulse_record_reader
