@@ -33,6 +33,8 @@ import re
 import sys
 from pathlib import Path
 
+from check_doc_comments import split_comment   # tools/: the same reader of comments
+
 ROOT = Path(__file__).resolve().parent.parent
 CHECKS = ("save", "init-local", "data", "common", "module-var", "open-unit", "parse")
 
@@ -56,16 +58,7 @@ BLOCK_END_RE = re.compile(r"^end\s*(?:do|if|select|associate|block|where|forall|
 
 def strip_comment(line):
     """The code of one physical line: the comment (outside quotes) removed."""
-    quote = None
-    for i, ch in enumerate(line):
-        if quote:
-            if ch == quote:
-                quote = None
-        elif ch in "'\"":
-            quote = ch
-        elif ch == "!":
-            return line[:i]
-    return line
+    return split_comment(line)[0]
 
 
 def statements(text):
