@@ -81,7 +81,7 @@ def read_accel_g(path):
 def make_records(source_root, where, count=16, longest=10):
     """`count` one-column records (g) in where/records: the synthetic records, each repeated
     1 to `longest` times; returns their names and dt."""
-    bases = sorted((source_root / "input" / "records").iterdir())
+    bases = sorted((source_root / "input" / "records").glob("quake_*"))
     repeats = [min(r, longest) for r in [1, 10, 3, 7, 2, 9, 1, 5, 8, 1, 4, 10, 6, 2, 1, 3]]
     (where / "records").mkdir(parents=True)
     names, dts = [], []

@@ -241,6 +241,20 @@ contains
         character(len=:), allocatable, intent(out) :: buf
         integer, intent(out) :: stat
         character(len=*), intent(inout), optional :: errmsg
+        ! one thread at a time: a Fortran file is connected to one unit only, and threads
+        ! may read the same record file ("File already opened in another unit"); the
+        ! parsing that follows runs in parallel
+        !$omp critical (seispulse_record_file)
+        call read_whole_file(path, buf, stat, errmsg)
+        !$omp end critical (seispulse_record_file)
+    end subroutine load_file
+
+    !> load_file's reading.
+    subroutine read_whole_file(path, buf, stat, errmsg)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable, intent(out) :: buf
+        integer, intent(out) :: stat
+        character(len=*), intent(inout), optional :: errmsg
         integer :: u, ios
         integer(int64) :: nbytes
         character(len=512) :: msg
@@ -282,7 +296,7 @@ contains
             end if
         end if
         close(u)
-    end subroutine load_file
+    end subroutine read_whole_file
 
     !> A NUL byte is an error naming its line and column: a record is a text file.
     subroutine check_no_nul(path, buf, stat, errmsg)
