@@ -37,7 +37,7 @@ module driver_newmark
                             slope_line
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
-                              path_len, records_missing, record_line, failed_records
+                              records_missing, record_line, failed_records, label_len
     use driver_intensity_table, only: intensity_table_t, intensity_check, intensity_echo, &
                                       intensity_start, intensity_record, intensity_failures, &
                                       intensity_write
@@ -928,7 +928,7 @@ contains
         character(len=:), allocatable, intent(out) :: errmsg
         character(len=4096), allocatable :: comments(:)
         character(len=16), allocatable :: names(:), col_units(:)
-        character(len=path_len), allocatable :: labels(:)
+        character(len=label_len(outs)), allocatable :: labels(:)
         character(len=:), allocatable :: line
         character(len=64), allocatable :: kinds(:)
         !> the names of the column converged: 0 no, 1 yes

@@ -14,7 +14,7 @@ module driver_intensity_table
                          spectral_acceleration, sdof_validate
     use driver_input, only: list_length, value_name, list_item
     use driver_tables, only: write_tables, say_written, category_kind, status_names
-    use driver_records, only: record_in_t, record_out_t, record_line, report, path_len
+    use driver_records, only: record_in_t, record_out_t, record_line, report, label_len
     use driver_echo, only: echo_unit
     use driver_unit_result, only: unit_result_t
     implicit none
@@ -166,7 +166,7 @@ contains
         character(len=:), allocatable, intent(out) :: errmsg
         character(len=4096), allocatable :: comments(:)
         character(len=24), allocatable :: names(:), col_units(:), kinds(:)
-        character(len=path_len), allocatable :: labels(:)
+        character(len=label_len(outs)), allocatable :: labels(:)
         character(len=512) :: files_out(2)
         character(len=:), allocatable :: line
         integer :: ir, k, np

@@ -4,28 +4,13 @@
 !> goes to `deliver` on the root, one at a time (never two threads at once), in the order
 !> the units finish; the caller makes the output independent of that order.
 module driver_parallel
-    use driver_unit_result, only: unit_result_t
+    use driver_unit_result, only: unit_result_t, unit_work, unit_deliver, run_units_here
     implicit none
     private
 
     public :: par_init, par_finalize, par_rank, par_size, par_root, par_mpi_built
     public :: par_run_units, unit_work, unit_deliver
 
-    abstract interface
-        !> Compute unit `i` (1-based) into res. Called concurrently from threads (and on
-        !> every rank): it must only read shared state.
-        subroutine unit_work(i, res)
-            import :: unit_result_t
-            integer, intent(in) :: i
-            type(unit_result_t), intent(out) :: res
-        end subroutine unit_work
-        !> On the root: unit `i` is done (journal it, keep it, print its log).
-        subroutine unit_deliver(i, res)
-            import :: unit_result_t
-            integer, intent(in) :: i
-            type(unit_result_t), intent(in) :: res
-        end subroutine unit_deliver
-    end interface
 
 contains
 
@@ -63,16 +48,7 @@ contains
         integer, intent(in) :: todo(:)
         procedure(unit_work) :: work
         procedure(unit_deliver) :: deliver
-        type(unit_result_t) :: res
-        integer :: k
-        !$omp parallel do schedule(dynamic, 1) private(res)
-        do k = 1, size(todo)
-            call work(todo(k), res)
-            !$omp critical (seispulse_deliver)
-            call deliver(todo(k), res)
-            !$omp end critical (seispulse_deliver)
-        end do
-        !$omp end parallel do
+        call run_units_here(todo, work, deliver)
     end subroutine par_run_units
 
 end module driver_parallel

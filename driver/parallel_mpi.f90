@@ -33,28 +33,13 @@ module driver_parallel
                        MPI_Comm_free, MPI_Comm_rank, MPI_Comm_size, MPI_Send, MPI_Recv, &
                        MPI_Isend, MPI_Iprobe, MPI_Probe, MPI_Waitall
     use seispulse, only: dp
-    use driver_unit_result, only: unit_result_t
+    use driver_unit_result, only: unit_result_t, unit_work, unit_deliver, run_units_here
     implicit none
     private
 
     public :: par_init, par_finalize, par_rank, par_size, par_root, par_mpi_built
     public :: par_run_units, unit_work, unit_deliver
 
-    abstract interface
-        !> Compute unit `i` (1-based) into res. Called concurrently from threads (and on
-        !> every rank): it must only read shared state.
-        subroutine unit_work(i, res)
-            import :: unit_result_t
-            integer, intent(in) :: i
-            type(unit_result_t), intent(out) :: res
-        end subroutine unit_work
-        !> On the root: unit `i` is done (journal it, keep it, print its log).
-        subroutine unit_deliver(i, res)
-            import :: unit_result_t
-            integer, intent(in) :: i
-            type(unit_result_t), intent(in) :: res
-        end subroutine unit_deliver
-    end interface
 
     !> Units a worker holds assigned at most (the one it computes and the next).
     integer, parameter :: PREFETCH = 2
@@ -181,7 +166,7 @@ contains
         procedure(unit_work) :: work
         procedure(unit_deliver) :: deliver
         if (.not. mpi_on .or. nproc == 1) then
-            call run_local(todo, work, deliver)
+            call run_units_here(todo, work, deliver)
         else if (rank == 0) then
             call run_root(todo, work, deliver)
         else
@@ -189,22 +174,6 @@ contains
         end if
     end subroutine par_run_units
 
-    !> One process: the units over OpenMP threads (as the serial build).
-    subroutine run_local(todo, work, deliver)
-        integer, intent(in) :: todo(:)
-        procedure(unit_work) :: work
-        procedure(unit_deliver) :: deliver
-        type(unit_result_t) :: res
-        integer :: k
-        !$omp parallel do schedule(dynamic, 1) private(res)
-        do k = 1, size(todo)
-            call work(todo(k), res)
-            !$omp critical (seispulse_deliver)
-            call deliver(todo(k), res)
-            !$omp end critical (seispulse_deliver)
-        end do
-        !$omp end parallel do
-    end subroutine run_local
 
     !> The root: assign, compute its own share, receive and deliver, then stop the workers.
     subroutine run_root(todo, work, deliver)

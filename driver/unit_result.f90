@@ -10,6 +10,7 @@ module driver_unit_result
     private
 
     public :: unit_result_t, FIELD_SEP, add_field, get_field, add_log
+    public :: unit_work, unit_deliver, run_units_here
 
     !> Separator of the text fields of a unit (ASCII record separator: never in a
     !> record path, a name or a message the driver writes).
@@ -21,7 +22,42 @@ module driver_unit_result
         character(len=:), allocatable :: log            !! stderr lines joined by new_line
     end type unit_result_t
 
+    abstract interface
+        !> Compute unit `i` (1-based) into res. Called concurrently from threads (and on
+        !> every rank of an MPI job): it must only read shared state.
+        subroutine unit_work(i, res)
+            import :: unit_result_t
+            integer, intent(in) :: i
+            type(unit_result_t), intent(out) :: res
+        end subroutine unit_work
+        !> On the root: unit `i` is done (journal it, keep it, print its log).
+        subroutine unit_deliver(i, res)
+            import :: unit_result_t
+            integer, intent(in) :: i
+            type(unit_result_t), intent(in) :: res
+        end subroutine unit_deliver
+    end interface
+
 contains
+
+    !> The units `todo` in this process: spread over OpenMP threads (dynamic schedule:
+    !> records differ in length), each result to `deliver` one at a time (never two
+    !> threads at once), in the order the units finish.
+    subroutine run_units_here(todo, work, deliver)
+        integer, intent(in) :: todo(:)
+        procedure(unit_work) :: work
+        procedure(unit_deliver) :: deliver
+        type(unit_result_t) :: res
+        integer :: k
+        !$omp parallel do schedule(dynamic, 1) private(res)
+        do k = 1, size(todo)
+            call work(todo(k), res)
+            !$omp critical (seispulse_deliver)
+            call deliver(todo(k), res)
+            !$omp end critical (seispulse_deliver)
+        end do
+        !$omp end parallel do
+    end subroutine run_units_here
 
     !> Append one text field.
     subroutine add_field(res, field)
