@@ -55,6 +55,7 @@ module driver_cylinder
                                      map_table, rock_records, record_at, run_summary_kinds, &
                                      map_class_names, run_outcome_names, map_class_line
     use driver_echo, only: echo_unit
+    use driver_records, only: record_place
     implicit none
     private
 
@@ -1235,8 +1236,8 @@ contains
                 call load_record(located(path, s%gr), s%recs(ir), ir, nrec, 'cylinder', &
                                  s%slammer_rounding, outs(ir), accel)
                 if (.not. outs(ir)%ok) then
-                    errmsg = located(path, s%gr)//list_item('files', ir)//' = ''' &
-                             //s%recs(ir)%file//''': '//outs(ir)%message
+                    errmsg = located(path, s%gr)//record_place(ir, s%recs(ir))//': ' &
+                             //outs(ir)%message
                     return
                 end if
                 if (ir == 1) then

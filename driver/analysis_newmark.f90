@@ -45,6 +45,7 @@ module driver_newmark
     use driver_unit_result, only: unit_result_t, add_field, get_field, add_log
     use driver_batch, only: batch_run, record_keys, pack_record, unpack_record, RECORD_VALUES, &
                             RECORD_FIELDS
+    use driver_records, only: record_place
     implicit none
     private
 
@@ -803,7 +804,7 @@ contains
             call load_record(where, r, ir, nrec, 'newmark', cfg%slammer_rounding, o, accel, &
                              log)
             !$omp critical (seispulse_text)
-            what = where//list_item('files', ir)//' = '''//r%file//''''
+            what = where//record_place(ir, r)
             !$omp end critical (seispulse_text)
             if (o%ok) call intensity_record(it1, 1, accel, o%dt, cfg%g, what, log)
 

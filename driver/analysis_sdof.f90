@@ -39,6 +39,7 @@ module driver_sdof
     use driver_echo, only: echo_unit
     use driver_unit_result, only: unit_result_t
     use driver_batch, only: batch_run, record_keys, pack_record, unpack_record, RECORD_VALUES
+    use driver_records, only: record_place
     implicit none
     private
 
@@ -519,7 +520,7 @@ contains
                     o%ok = .false.
                     o%message = trim(msg)
                     !$omp critical (seispulse_text)
-                    call report(run_where//list_item('files', ir)//' = '''//r%file//''': ' &
+                    call report(run_where//record_place(ir, r)//': ' &
                                 //o%message, res)
                     !$omp end critical (seispulse_text)
                 end if

@@ -48,6 +48,7 @@ module driver_spectra
     use driver_sdof_common, only: max_periods
     use driver_axis, only: axis_values
     use driver_echo, only: echo_unit, echo_path
+    use driver_records, only: record_place
     implicit none
     private
 
@@ -1129,8 +1130,8 @@ contains
             associate (o => outs(idx(bad)))
                 o%ok = .false.
                 o%message = reason(msg)
-                call report(where//list_item('files', idx(bad))//' = ''' &
-                            //cfg%recs(idx(bad))%file//''': '//o%message)
+                call report(where//record_place(idx(bad), cfg%recs(idx(bad)))//': ' &
+                            //o%message)
             end associate
         end do
 

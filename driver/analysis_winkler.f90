@@ -56,6 +56,7 @@ module driver_winkler
                                      map_grids, map_axes_header, map_table, run_summary_kinds, &
                                      map_class_names, winkler_outcome_names, map_class_line
     use driver_echo, only: echo_unit
+    use driver_records, only: record_place
     implicit none
     private
 
@@ -1262,7 +1263,7 @@ contains
                     failed(ir) = .true.
                     outs(ir)%message = trim(msg)
                     write(error_unit, '(a)') 'seispulse: error: '//where &
-                        //list_item('files', ir)//' = '''//s%recs(ir)%file//''': '//trim(msg)
+                        //record_place(ir, s%recs(ir))//': '//trim(msg)
                     if (allocated(part)) deallocate(part)
                 else
                     summary(ir, 1) = outs(ir)%pga

@@ -27,6 +27,7 @@ module driver_records
     public :: records_keys, record_in_t, record_out_t, records_defaults, read_records
     public :: check_records, echo_records, load_record, progress, report
     public :: path_len, short, records_missing, record_line, failed_records, resolve, &
+              record_place, &
               count_strings, label_len
 
     character(len=12), parameter :: records_keys(9) = [character(len=12) :: 'files', &
@@ -862,7 +863,7 @@ contains
                           //scaled_text(o)//')', log)
         else
             call progress(tag, ir, nrec, o%name//' (failed)', log)
-            call report(where//list_item('files', ir)//' = '''//r%file//''': ' &
+            call report(where//record_place(ir, r)//': ' &
                         //o%message, log)
         end if
         !$omp end critical (seispulse_text)
@@ -981,6 +982,19 @@ contains
         if (abs(abs(o%factor) - 1.0_dp) > 0.0_dp) s = ' -> '//short(o%pga)//' g'
         if (o%factor < 0.0_dp) s = s//', turned over (polarity -1)'
     end function scaled_text
+
+    !> Where record ir comes from, for messages: "files(3) = 'a.AT2'", or for a record of
+    !> the list "list line 7 = 'a.AT2'" (its line in the list file).
+    function record_place(ir, r) result(s)
+        integer, intent(in) :: ir                         !! its index among the records
+        type(record_in_t), intent(in) :: r
+        character(len=:), allocatable :: s
+        if (r%line > 0) then
+            s = 'list line '//int_str(r%line)//' = '''//r%file//''''
+        else
+            s = list_item('files', ir)//' = '''//r%file//''''
+        end if
+    end function record_place
 
     !> The table's label of a record: its name in the list, else the file stem (the file
     !> name if it has none).

@@ -17,6 +17,7 @@ module driver_rocking_common
     use driver_axis, only: axis_values
     use driver_pulse_group, only: time_grid
     use driver_tables, only: category_kind
+    use driver_records, only: record_place
     implicit none
     private
 
@@ -466,7 +467,7 @@ contains
                 if (index(msg, 'accel_v') == 1) msg = '&'//tag//': kv = '//real_str(kv) &
                     //': a_v = kv a_g falls below -g in this record: '//trim(msg)
                 outs(ir)%message = trim(msg)
-                call report(where//list_item('files', ir)//' = '''//recs(ir)%file//''': ' &
+                call report(where//record_place(ir, recs(ir))//': ' &
                             //trim(msg))
             end if
             ! a failed record: one row of NaN in the history

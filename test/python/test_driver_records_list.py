@@ -317,3 +317,15 @@ def test_list_of_2000_records(driver, tmp_path, recs):
     text = echo_text(tmp_path, proc.stdout)
     assert "list = 'data/big.csv'" in text and len(text.splitlines()) < 15
     assert not math.isnan(row[4])
+
+
+def test_failed_list_record_named_by_its_list_line(driver, tmp_path, recs):
+    """A record of the list that cannot be read is named by its line in the list file (not
+    by a files(i) index that the input does not have); its rows fail, exit status 1."""
+    (tmp_path / "data" / "l.csv").write_text(
+        "path,name\n# a comment line\nrecs/quake_a.AT2,a\nrecs/missing.AT2,gone\n")
+    proc = run(driver, tmp_path, newmark_input("list = 'data/l.csv'"))
+    assert proc.returncode == 1, proc.stderr
+    assert ("case.nml:2: &records: list line 4 = 'recs/missing.AT2': " in proc.stderr), \
+        proc.stderr
+    assert "files(2)" not in proc.stderr
