@@ -77,22 +77,6 @@ def do_read(fdp):
     check_record(records.read(path, fmt=fmt, units=units, dt=dt))
 
 
-#: Known finding (fuzz/README.md, "Findings"): exact spectrum peaks take up to 1e6
-#: sub-steps per record step for T < 2 dt / 1e6, about 0.1 s per sample and period; inputs
-#: above this many sub-steps use peaks='samples' so that a campaign looks for new findings.
-KNOWN_SLOW_WORK = 2.0e7
-
-
-def exact_work(n, dt, periods):
-    """Sub-steps of an exact spectrum, as sdof_sim's sub_steps counts them (at most)."""
-    work = 0.0
-    for period in periods:
-        if period > 0 and math.isfinite(dt) and dt > 0:
-            ratio = 2.0 * dt / period
-            work += (n - 1) * (min(ratio, 1.0e6) + 1.0 if math.isfinite(ratio) else 1.0e6)
-    return work
-
-
 def do_spectrum(fdp):
     accel = floats(fdp, MAX_SAMPLES)
     dt = positive(fdp)
@@ -100,8 +84,6 @@ def do_spectrum(fdp):
     damping = fdp.ConsumeFloatInRange(-0.1, 1.1)
     if fdp.ConsumeBool():
         peaks = ("exact", "samples", "other")[fdp.ConsumeIntInRange(0, 2)]
-        if peaks == "exact" and exact_work(len(accel), dt, periods) > KNOWN_SLOW_WORK:
-            peaks = "samples"  # a known finding, kept out of the campaigns (README)
         sdof.spectrum(accel, dt, periods, damping=damping, peaks=peaks, threads=1)
     else:
         period = abs(number(fdp))

@@ -27,7 +27,10 @@
 !> bracketed by a sign change of q' and found by safeguarded Newton (the bracket
 !> shrinks at every step, at most 100 steps). A step is examined only when the bound
 !> |q| <= max(|q_n|, |q_(n+1)|) + h^2 max|q''|/8 can beat the running maximum, so the
-!> cost is that of the recurrence except near peaks. SDOF_PEAKS_SAMPLES takes the
+!> cost is that of the recurrence except near peaks. Above max_sub_steps sub-steps per
+!> record step only the first and the last damped period of each record step are
+!> searched (`cycles_run`, where the proof is): the cost is bounded whatever T/dt.
+!> SDOF_PEAKS_SAMPLES takes the
 !> maxima over the samples only (what eqsig, OpenSees and most programs report).
 !> Maxima are taken over the duration of the record (no free vibration after it);
 !> T = 0 is the ground itself: SD = SV = 0, SA = PGA.
@@ -66,6 +69,13 @@ module seispulse_sdof_sim
 
     !> Oscillators run side by side in one spectrum loop (see oscillator_peaks).
     integer, parameter :: lanes = 4
+
+    !> Exact peaks: above this many sub-steps per record step, only the first and the
+    !> last damped cycle of each record step are searched (`cycles_run`).
+    integer, parameter :: max_sub_steps = 64
+
+    !> Sub-steps of 0.4 T_d in each searched window: the windows span 1.2 T_d > T_d.
+    integer, parameter :: window_steps = 3
 
     !> One exact step of length h for a given oscillator: the state after the step is
     !>     z+ = e11 z + e12 v + b1 a_n + c1 a_(n+1)
@@ -451,6 +461,13 @@ contains
         end if
         ! unused lanes repeat the first oscillator; their results are dropped
         m = run_key(periods(1), zetas(1), dt, mode)
+        if (mode == SDOF_PEAKS_EXACT .and. m > max_sub_steps) then
+            ! many damped cycles per record step: cost independent of T/dt
+            do l = 1, nl
+                call cycles_run(periods(l), zetas(l), ga, dt, pz(l), pv(l), pa(l))
+            end do
+            return
+        end if
         do l = 1, lanes
             i = min(l, nl)
             st(l) = sdof_step(periods(i), zetas(i), dt / m)
@@ -659,6 +676,95 @@ contains
             call absolute_time(pa(l), st(l)%h)
         end do
     end subroutine exact_run
+
+    !> Exact peaks when a record step spans many damped periods T_d (more than
+    !> max_sub_steps sub-steps). Within a record step (length dt) every response q
+    !> in {z, z', a_abs} is q(t) = c + d t + y(t), a line plus a damped sinusoid with
+    !> y(t + T_d) = e^(-zeta omega T_d) y(t). Let t* be the first point of the step
+    !> where q is largest and suppose T_d <= t* <= dt - T_d. If y(t*) >= 0, then
+    !> q(t* - T_d) + q(t* + T_d) - 2 q(t*) = y(t*) (2 cosh(zeta omega T_d) - 2) >= 0, so
+    !> q(t* - T_d) = q(t*): t* was not the first. If y(t*) < 0, the mean of
+    !> q(t* -/+ T_d/2) is c + d t* + |y(t*)| cosh(zeta omega T_d/2) > q(t*). Either way
+    !> a contradiction: the largest q (and, with -q, the largest -q) lies in the first
+    !> or the last T_d of the step. Those two windows of 1.2 T_d are searched exactly
+    !> by `step_peaks` on sub-steps of 0.4 T_d; the state jumps between them by one
+    !> exact step. Cost: 8 steps per record step, whatever T/dt.
+    subroutine cycles_run(period, zeta, ga, dt, pz, pv, pa)
+        real(dp), intent(in) :: period  !! natural period (s), > 0
+        real(dp), intent(in) :: zeta    !! damping ratio
+        real(dp), intent(in) :: ga(:)   !! ground acceleration (m/s^2)
+        real(dp), intent(in) :: dt      !! record step (s), > 2.4 T_d
+        type(peak_t), intent(out) :: pz, pv, pa
+        type(sdof_step_t) :: sw, sj
+        real(dp) :: hw, tj, z, v, zj, vj, mz, mv, ma, s, t0, aj
+        integer :: i
+        hw = 0.4_dp * period / sqrt((1.0_dp - zeta) * (1.0_dp + zeta))
+        tj = dt - 2 * window_steps * hw
+        sw = sdof_step(period, zeta, hw)
+        sj = sdof_step(period, zeta, tj)
+        pz = peak_t(0.0_dp, 0.0_dp)
+        pv = peak_t(0.0_dp, 0.0_dp)
+        pa = peak_t(0.0_dp, 0.0_dp)
+        mz = 0.0_dp
+        mv = 0.0_dp
+        ma = 0.0_dp
+        z = 0.0_dp
+        v = 0.0_dp
+        do i = 1, size(ga) - 1
+            s = (ga(i + 1) - ga(i)) / dt
+            t0 = (i - 1) * dt
+            ! the first window [0, 1.2 T_d]
+            call window_peaks(sw, ga(i), s, 0.0_dp, t0, .false., ga(i + 1), z, v, &
+                              mz, mv, ma, pz, pv, pa)
+            ! one exact step to dt - 1.2 T_d, then the last window
+            aj = ga(i) + s * (window_steps * hw)
+            zj = sj%e11 * z + sj%e12 * v + sj%b1 * aj + sj%c1 * (aj + s * tj)
+            vj = sj%e21 * z + sj%e22 * v + sj%b2 * aj + sj%c2 * (aj + s * tj)
+            z = zj
+            v = vj
+            call window_peaks(sw, ga(i), s, dt - window_steps * hw, t0, .true., ga(i + 1), &
+                              z, v, mz, mv, ma, pz, pv, pa)
+        end do
+    end subroutine cycles_run
+
+    !> window_steps exact sub-steps of sw%h from the state (z, v) at tau0 (s) inside the
+    !> record step that starts at t0 (s) with a_g = a_start + s tau (m/s^2); the state
+    !> is advanced, the peaks updated (absolute times). `last`: the window ends the
+    !> record step, its end sample is a_end.
+    subroutine window_peaks(sw, a_start, s, tau0, t0, last, a_end, z, v, mz, mv, ma, &
+                            pz, pv, pa)
+        type(sdof_step_t), intent(in) :: sw
+        real(dp), intent(in) :: a_start, s, tau0, t0, a_end
+        logical, intent(in) :: last
+        real(dp), intent(inout) :: z, v, mz, mv, ma
+        type(peak_t), intent(inout) :: pz, pv, pa
+        real(dp) :: a0, a1, z1, v1, w2, zw2, d2_0, d2_1, f, bound2, sk, tk
+        integer :: k
+        w2 = sw%omega**2
+        zw2 = 2.0_dp * sw%zeta * sw%omega
+        a1 = a_start + s * tau0
+        do k = 1, window_steps
+            a0 = a1
+            a1 = a_start + s * (tau0 + k * sw%h)
+            if (last .and. k == window_steps) a1 = a_end
+            sk = (a1 - a0) * sw%inv_h
+            z1 = sw%e11 * z + sw%e12 * v + sw%b1 * a0 + sw%c1 * a1
+            v1 = sw%e21 * z + sw%e22 * v + sw%b2 * a0 + sw%c2 * a1
+            d2_0 = -(a0 + zw2 * v + w2 * z)
+            d2_1 = -(a1 + zw2 * v1 + w2 * z1)
+            ! the bound of exact_run
+            f = -(sk + 0.5_dp * zw2 * d2_0 + w2 * v) * sw%inv_wd
+            bound2 = (d2_0 * d2_0 + f * f) * sw%h4_64
+            call step_peaks(sw, 1, z, v, z1, v1, a0, a1, sk, d2_0, d2_1, f, bound2, &
+                            mz, mv, ma, pz, pv, pa)
+            tk = t0 + tau0 + (k - 1) * sw%h
+            if (pz%step > 0) pz = peak_t(pz%value, tk + pz%time, 0)
+            if (pv%step > 0) pv = peak_t(pv%value, tk + pv%time, 0)
+            if (pa%step > 0) pa = peak_t(pa%value, tk + pa%time, 0)
+            z = z1
+            v = v1
+        end do
+    end subroutine window_peaks
 
     !> A peak's time counted from the first sample (s) instead of within its sub-step.
     pure subroutine absolute_time(p, h)
