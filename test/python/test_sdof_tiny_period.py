@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 
 from seispulse import sdof
+from seispulse.errors import InvalidInputError
 
 ROOT = os.environ.get("SEISPULSE_SOURCE_ROOT",
                       os.path.join(os.path.dirname(__file__), "..", ".."))
@@ -99,3 +100,15 @@ def test_fuzz_input_replays_fast():
     # the Python start and the instrumentation take most of this; the spectrum took
     # 5 s per period (11 periods) before cycles_run
     assert time.perf_counter() - t0 < 20.0
+
+
+def test_spectrum_record_overflowing_with_g_is_an_error():
+    """A sample whose product with g overflows (the fuzz input has 1.8e308 g) is an error
+    naming it, not an infinite or meaningless spectrum."""
+    accel = np.array([0.0, 1.0e308, -0.5e308, 0.0])
+    with pytest.raises(InvalidInputError, match=r"accel\[1\] = .*overflows"):
+        sdof.spectrum(accel, 0.01, [0.1, 1.0], damping=0.05)
+    # the largest sample that does not overflow is accepted
+    ok = np.array([0.0, np.finfo(float).max / 9.80665 * (1 - 1e-15), 0.0])
+    sd = sdof.spectrum(ok, 0.01, [1.0], damping=0.05, peaks="samples")
+    assert np.all(np.isfinite(np.asarray(sd.sa)))

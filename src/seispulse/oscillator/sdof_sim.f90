@@ -48,7 +48,7 @@ module seispulse_sdof_sim
     use seispulse_optval, only: optval
     use seispulse_records, only: STANDARD_GRAVITY
     use seispulse_special, only: complex_phis, pi
-    use seispulse_pieces, only: record_step_check
+    use seispulse_pieces, only: record_step_check, record_in_si
     !$ use omp_lib, only: omp_set_num_threads, omp_get_max_threads
     implicit none
     private
@@ -323,6 +323,7 @@ contains
         real(dp), intent(out), optional :: t_sv(:, :)         !! time of max |z'| (s)
         real(dp), intent(out), optional :: t_sa(:, :)         !! time of max |a_abs| (s)
         integer :: np, nd, k, i, j, mode
+        real(dp), allocatable :: ga(:)                        ! the record (m/s^2)
         real(dp) :: tz(size(periods), size(dampings)), tv(size(periods), size(dampings)), &
                     ta(size(periods), size(dampings))
         call record_step_check(accel, dt, g, stat, errmsg)
@@ -364,6 +365,10 @@ contains
                 return
             end if
         end if
+        ! m/s^2 once for all oscillators; a sample whose product with g overflows is an
+        ! error naming it (found by fuzzing: it gave infinite or meaningless spectra)
+        call record_in_si(accel, g, ga, stat, errmsg)
+        if (stat /= SEISPULSE_SUCCESS) return
         call run_spectrum()
     contains
         logical function times_fit(t)
@@ -375,11 +380,7 @@ contains
         subroutine run_spectrum()
             integer :: nthreads, ngroups, g1, g2, nl, ip(lanes), id(lanes)
             integer, allocatable :: first(:), key(:)
-            real(dp), allocatable :: ga(:)
             type(peak_t) :: pz(lanes), pv(lanes), pa(lanes)
-            ! m/s^2 once for all oscillators
-            allocate(ga(size(accel)))
-            ga = g * accel
             ! groups of up to `lanes` consecutive (period, damping) pairs that share a
             ! run (run_key); fixed before the threads start, so results do not depend
             ! on them
