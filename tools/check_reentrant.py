@@ -36,6 +36,8 @@ import sys
 import tempfile
 from pathlib import Path
 
+from check_thread_safety import statements   # tools/: the same reader of free-form source
+
 ROOT = Path(__file__).resolve().parent.parent
 
 # Pending: src/seispulse/excitation/record_reader.f90 is being reworked elsewhere; its
@@ -52,44 +54,11 @@ DEFERRED_RE = re.compile(r"^\s*character\s*\(\s*(?:len\s*=\s*)?:\s*\)(.*?)::(.*)
 STATIC_RE = re.compile(r"static integer\(kind=8\) (slen\.\d+);")
 
 
-def statements(text):
-    """Free-form source as logical lines: comments dropped, continuations joined."""
-    out, cur = [], ""
-    for raw in text.split("\n"):
-        line = strip_comment(raw).rstrip()
-        if cur:
-            line = line.lstrip()
-            if line.startswith("&"):
-                line = line[1:]
-        if line.endswith("&"):
-            cur += line[:-1]
-            continue
-        out.append(cur + line)
-        cur = ""
-    if cur:
-        out.append(cur)
-    return out
-
-
-def strip_comment(line):
-    """The line without its `!` comment (a `!` inside quotes is text)."""
-    quote = None
-    for i, c in enumerate(line):
-        if quote:
-            if c == quote:
-                quote = None
-        elif c in "'\"":
-            quote = c
-        elif c == "!":
-            return line[:i]
-    return line
-
-
 def deferred_functions(root):
     """(file, function) of every function whose result is deferred-length text."""
     found = []
     for path in sorted((root / "src").rglob("*.f90")):
-        lines = statements(path.read_text(encoding="utf-8"))
+        lines = [stmt for _, stmt in statements(path.read_text(encoding="utf-8"))]
         i = 0
         while i < len(lines):
             m = FUNC_RE.match(lines[i])

@@ -33,7 +33,7 @@ import re
 import sys
 from pathlib import Path
 
-from check_doc_comments import split_comment   # tools/: the same reader of comments
+from check_doc_comments import split_comment, split_top   # tools/: the same readers
 
 ROOT = Path(__file__).resolve().parent.parent
 CHECKS = ("save", "init-local", "data", "common", "module-var", "open-unit", "parse")
@@ -81,26 +81,6 @@ def statements(text):
                 out.append((first, part.strip()))
         pending = ""
     return out
-
-
-def split_top(text, sep):
-    """text split at `sep` outside quotes and parentheses."""
-    parts, depth, quote, start = [], 0, None, 0
-    for i, ch in enumerate(text):
-        if quote:
-            if ch == quote:
-                quote = None
-        elif ch in "'\"":
-            quote = ch
-        elif ch in "([":
-            depth += 1
-        elif ch in ")]":
-            depth -= 1
-        elif ch == sep and depth == 0:
-            parts.append(text[start:i])
-            start = i + 1
-    parts.append(text[start:])
-    return parts
 
 
 def initialised(entities):
