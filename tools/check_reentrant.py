@@ -14,12 +14,10 @@ the caller's frame).
 Checks (standard library only):
 
   reentrant/deferred-results  every `function` in src/**/*.f90 whose result variable is
-                              declared `character(len=:)` (or `character(:)`) is an error,
-                              but for the PENDING ones below
+                              declared `character(len=:)` (or `character(:)`) is an error
   reentrant/static-lengths    (with --builddir, when BUILDDIR/compile_commands.json exists)
                               every library source compiled with -fdump-tree-original
                               (-O0, into a temp dir): no `static integer(kind=8) slen.N`
-                              but for calls of the PENDING functions
 
 Prints `ok   reentrant/<check>: ...` or `FAIL reentrant/<check>: why` lines (the form
 tools/run_tests.py counts); exit status 1 on a failure.
@@ -39,11 +37,6 @@ from pathlib import Path
 from check_thread_safety import statements   # tools/: the same reader of free-form source
 
 ROOT = Path(__file__).resolve().parent.parent
-
-# Pending: src/seispulse/excitation/record_reader.f90 is being reworked elsewhere; its
-# deferred-length functions are to get a specification-expression length (or become
-# subroutines) there. Remove a name from here when it is done: the check then holds it.
-PENDING = set()
 
 FUNC_RE = re.compile(
     r"^\s*(?:(?:pure|elemental|impure|recursive|module)\s+)*"
@@ -121,8 +114,7 @@ def main():
     failed = False
 
     found = deferred_functions(ROOT)
-    bad = [(f, n) for f, n in found if n.lower() not in PENDING]
-    pending = sorted(n for _, n in found if n.lower() in PENDING)
+    bad = found
     if bad:
         failed = True
         print(f"FAIL reentrant/deferred-results: {len(bad)} functions return "
@@ -130,7 +122,7 @@ def main():
         for f, n in bad:
             print(f"    {f}: {n}")
     else:
-        print(f"ok   reentrant/deferred-results: none in src/ (pending: {', '.join(pending)})")
+        print("ok   reentrant/deferred-results: none in src/")
 
     if args.builddir:
         builddir = Path(args.builddir)
@@ -143,7 +135,7 @@ def main():
             failed = True
             print(f"FAIL reentrant/static-lengths: a source did not compile: {exc}")
         if calls is not None:
-            other = {k: v for k, v in calls.items() if k.lower() not in PENDING}
+            other = calls
             if other:
                 failed = True
                 print(f"FAIL reentrant/static-lengths: {sum(other.values())} call sites "
@@ -151,9 +143,8 @@ def main():
                 for k, v in sorted(other.items(), key=lambda kv: -kv[1]):
                     print(f"    {k}: {v}")
             else:
-                left = sum(calls.values())
-                print(f"ok   reentrant/static-lengths: no static result length in the "
-                      f"library but {left} calls of pending functions")
+                print("ok   reentrant/static-lengths: no static result length in the "
+                      "library")
     return 1 if failed else 0
 
 
