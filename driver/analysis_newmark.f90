@@ -32,15 +32,16 @@ module driver_newmark
                             list_length, list_item, value_name, name_index, ROWS_FAILED
     use driver_input, only: missing_group
     use driver_input, only: output_located
-    use driver_tables, only: write_tables, say_written, category_kind, status_names
+    use driver_tables, only: table_t, table_open, table_comment, table_row, table_close, &
+                             table_drop, say_written, category_kind, status_names
     use driver_slope, only: slope_keys, slope_defaults, read_slope, check_slope, echo_slope, &
                             slope_line
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
-                              records_missing, record_line, failed_records, label_len
+                              records_missing, record_line, add_failed_record
     use driver_intensity_table, only: intensity_table_t, intensity_check, intensity_echo, &
-                                      intensity_start, intensity_record, intensity_failures, &
-                                      intensity_write
+                                      intensity_start, intensity_record, intensity_open, &
+                                      intensity_add
     use driver_echo, only: echo_unit
     use driver_unit_result, only: unit_result_t, add_field, get_field, add_log
     use driver_batch, only: batch_run, record_keys, pack_record, unpack_record, RECORD_VALUES, &
@@ -102,17 +103,20 @@ module driver_newmark
         real(dp), allocatable :: ky_disp(:), ky_values(:) !! yield table (m, g), if given
     end type config_t
 
-    !> A note on one record's rows that is not a failure (an unconverged iteration).
-    type :: note_t
-        character(len=:), allocatable :: text
-    end type note_t
-
     ! --- the batch being computed (set by compute before batch_run, read-only while the
     ! units run concurrently in newmark_unit)
     type(config_t) :: run_cfg
     character(len=:), allocatable :: run_where          !! "file:line: &records: "
     logical :: run_itab_on = .false.                    !! the intensity table is on
     real(dp), allocatable :: run_periods(:)             !! its Sa periods (s)
+    ! --- the tables being written (on the root, by newmark_take: one record at a time,
+    ! in record order)
+    type(table_t) :: out_table                          !! <output>_newmark
+    type(table_t) :: out_itable                         !! <output>_intensity (if on)
+    integer :: out_failed = 0                           !! rows of out_table failed
+    integer :: out_ifailed = 0                          !! rows of out_itable failed
+    integer :: out_named = 0                            !! records in out_names
+    character(len=:), allocatable :: out_names          !! records with a failed row
 
 contains
 
@@ -163,11 +167,7 @@ contains
         type(nml_group) :: gr, gn, gs
         type(config_t) :: cfg
         type(intensity_table_t) :: itab
-        type(record_out_t), allocatable :: outs(:)
-        type(note_t), allocatable :: notes(:)
-        real(dp), allocatable :: table(:, :)
-        character(len=512) :: files_out(2)
-        integer :: nfailed, nrows, nblk, ir
+        character(len=512) :: files_out(2), files_int(2)
 
         call set_defaults()
         call read_optional(path, groups, 'records', records_keys, read_records, gr, stat, &
@@ -204,36 +204,20 @@ contains
         call intensity_echo(itab)
         if (cfg%kind /= KIND_RIGID) call echo_slope(cfg%mass)
 
-        ! --- compute every row (nothing is written before all of them are done)
-        call compute(path, gr, prefix, cfg, outs, notes, table, nfailed, itab, stat, errmsg)
+        ! --- compute every record, writing its rows as it comes (the tables are renamed
+        !     from <file>.part when the run ends)
+        call compute(path, gr, prefix, cfg, itab, files_out, files_int, stat, errmsg)
         if (stat /= 0) return
-
-        ! --- write
-        call write_result(path, prefix, cfg, outs, notes, table, files_out, stat, errmsg)
-        if (stat /= 0) then
-            stat = 1
-            errmsg = output_located(path)//errmsg
-            return
-        end if
         call say_written('newmark table', files_out)
-        call intensity_write(path, prefix, cfg%g, cfg%recs, outs, itab, stat, errmsg)
-        if (stat /= 0) then
-            stat = 1
-            errmsg = output_located(path)//errmsg
-            return
-        end if
+        if (itab%on) call say_written('intensity table', files_int)
         stat = 0
-        if (nfailed > 0) then
-            nrows = size(table, 1)
-            nblk = size(cfg%blocks)
+        if (out_failed > 0) then
             stat = ROWS_FAILED
-            errmsg = int_str(nfailed)//' of '//int_str(nrows)//' rows failed (records: ' &
-                     //failed_records(outs, [(any(table((ir - 1) * nblk + 1:ir * nblk, &
-                                                        size(table, 2)) > 0.5_dp), &
-                                             ir = 1, size(outs))])//')'
-        else if (intensity_failures(itab) > 0) then
+            errmsg = int_str(out_failed)//' of '//int_str(size(cfg%recs) * size(cfg%blocks)) &
+                     //' rows failed (records: '//out_names//')'
+        else if (out_ifailed > 0) then
             stat = ROWS_FAILED
-            errmsg = int_str(intensity_failures(itab))//' of '//int_str(size(outs)) &
+            errmsg = int_str(out_ifailed)//' of '//int_str(size(cfg%recs)) &
                      //' rows of the intensity table failed'
         end if
     end subroutine run_newmark
@@ -671,62 +655,96 @@ contains
     ! ------------------------------------------------------------------------------
 
     !> Every record (read, polarity, scale), every block, normal and inverse: one unit
-    !> of a batch per record (driver_batch: threads, ranks, the restart journal). A record
-    !> that fails leaves NaN results and status failed in its rows; the message goes to
-    !> stderr. An unconverged flexible case keeps its results (converged = 0) with a
-    !> warning on stderr and a note for the header. Progress: one line per record on
-    !> stderr, in record order. stat /= 0: the journal was refused (errmsg), nothing done.
-    subroutine compute(path, gr, prefix, cfg, outs, notes, table, nfailed, itab, stat, errmsg)
+    !> of a batch per record (driver_batch: threads, ranks, the restart journal). The
+    !> tables are opened first; each record's header line and rows go into them as soon
+    !> as every record before it is done (newmark_take), so memory does not grow with the
+    !> number of records. A record that fails leaves NaN results and status failed in its
+    !> rows; the message goes to stderr. An unconverged flexible case keeps its results
+    !> (converged = 0) with a warning on stderr and a note in the header. Progress: one
+    !> line per record on stderr, in record order. stat /= 0: the journal was refused or
+    !> an output failed (errmsg); no table is left.
+    subroutine compute(path, gr, prefix, cfg, itab, files_out, files_int, stat, errmsg)
         character(len=*), intent(in) :: path
         type(nml_group), intent(in) :: gr
         character(len=*), intent(in) :: prefix             !! output prefix (the journal)
-        type(config_t), intent(in) :: cfg
-        type(record_out_t), allocatable, intent(out) :: outs(:)
-        type(note_t), allocatable, intent(out) :: notes(:)  !! per record ('' if none)
-        real(dp), allocatable, intent(out) :: table(:, :)   !! the numeric columns
-        integer, intent(out) :: nfailed
-        type(intensity_table_t), intent(inout) :: itab     !! its rows, if it is on
+        type(config_t), intent(inout) :: cfg               !! its records are lent to run_cfg
+        type(intensity_table_t), intent(in) :: itab        !! on/off, Sa periods
+        character(len=*), intent(out) :: files_out(2), files_int(2)  !! tables written
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
-        type(unit_result_t), allocatable :: results(:)
-        integer :: nrec, nblk, ir, i, ncol, nv, ni
+        type(record_in_t), allocatable :: recs(:)
 
-        ! --- the batch's read-only state, then every record as one unit
+        ! --- the batch's read-only state (the records moved there, not copied: a long
+        !     list is held once) and the tables
+        call move_alloc(cfg%recs, recs)
         run_cfg = cfg
+        call move_alloc(recs, run_cfg%recs)
         run_where = located(path, gr)
         run_itab_on = itab%on
         allocate(run_periods, source=itab%periods)
-        call batch_run(path, prefix, 'newmark', record_keys(cfg%recs, cfg%slammer_rounding), &
-                       newmark_unit, results, stat, errmsg)
+        out_failed = 0
+        out_ifailed = 0
+        out_named = 0
+        out_names = ''
+        call open_table(path, prefix, cfg, stat, errmsg)
+        if (stat == 0) call intensity_open(out_itable, path, prefix, cfg%g, itab, stat, errmsg)
+        if (stat == 0) then
+            ! --- every record as one unit
+            call batch_run(path, prefix, 'newmark', record_keys(run_cfg%recs, &
+                           cfg%slammer_rounding), newmark_unit, newmark_take, stat, errmsg)
+            if (stat == 0) then
+                call table_close(out_table, stat, errmsg)
+                if (stat == 0) call table_close(out_itable, stat, errmsg)
+                if (stat /= 0) errmsg = output_located(path)//errmsg
+            end if
+        else
+            errmsg = output_located(path)//errmsg
+        end if
+        if (stat /= 0) then
+            ! the journal was refused (its message as it is), or an output failed
+            call table_drop(out_table)
+            call table_drop(out_itable)
+            stat = 1
+        end if
+        files_out = out_table%files
+        files_int = out_itable%files
         deallocate(run_periods)
-        nfailed = 0
-        if (stat /= 0) return
-
-        ! --- the tables, as a serial run fills them
-        nrec = size(cfg%recs)
-        nblk = size(cfg%blocks)
-        ncol = row_columns(cfg)
-        allocate(outs(nrec), notes(nrec))
-        allocate(table(nrec * nblk, ncol))
-        call intensity_start(itab, nrec)
-        do ir = 1, nrec
-            associate (res => results(ir))
-                call unpack_record(res, outs(ir))
-                nv = RECORD_VALUES + nblk * ncol
-                table((ir - 1) * nblk + 1:ir * nblk, :) = &
-                    reshape(res%values(RECORD_VALUES + 1:nv), [nblk, ncol])
-                notes(ir)%text = get_field(res, RECORD_FIELDS + 1)
-                if (itab%on) then
-                    ni = size(itab%table, 2)
-                    itab%table(ir, :) = res%values(nv + 1:nv + ni)
-                    itab%notes(ir) = get_field(res, RECORD_FIELDS + 2)
-                end if
-            end associate
-        end do
-        do i = 1, size(table, 1)
-            if (table(i, ncol) > 0.5_dp) nfailed = nfailed + 1
-        end do
+        call move_alloc(run_cfg%recs, cfg%recs)
     end subroutine compute
+
+    !> On the root, record ir's unit, in record order (driver_batch): its header line and
+    !> its rows into the table, its intensity row; the failed rows are counted.
+    subroutine newmark_take(ir, res)
+        integer, intent(in) :: ir
+        type(unit_result_t), intent(in) :: res
+        type(record_out_t) :: o
+        real(dp), allocatable :: rows(:, :)
+        character(len=:), allocatable :: line, note
+        integer :: nblk, ncol, nv, ib, nbad
+        logical :: failed
+
+        nblk = size(run_cfg%blocks)
+        ncol = row_columns(run_cfg)
+        call unpack_record(res, o)
+        nv = RECORD_VALUES + nblk * ncol
+        rows = reshape(res%values(RECORD_VALUES + 1:nv), [nblk, ncol])
+        note = get_field(res, RECORD_FIELDS + 1)
+        line = record_line(ir, run_cfg%recs(ir), o)
+        if (o%ok .and. len(o%message) > 0) line = line//'; FAILED rows: '//o%message
+        if (len(note) > 0) line = line//'; NOT CONVERGED: '//note
+        call table_comment(out_table, line)
+        do ib = 1, nblk
+            call table_row(out_table, rows(ib, :), o%name)
+        end do
+        nbad = count(rows(:, ncol) > 0.5_dp)
+        out_failed = out_failed + nbad
+        if (nbad > 0) call add_failed_record(out_names, out_named, ir, o%name)
+        if (run_itab_on) then
+            call intensity_add(out_itable, ir, run_cfg%recs(ir), o, res%values(nv + 1:), &
+                               get_field(res, RECORD_FIELDS + 2), failed)
+            if (failed) out_ifailed = out_ifailed + 1
+        end if
+    end subroutine newmark_take
 
     !> The numeric columns of a row: pga, scale (, mu), ky, ky_up, the results, status.
     pure integer function row_columns(cfg) result(ncol)
@@ -918,171 +936,130 @@ contains
     ! Output
     ! ------------------------------------------------------------------------------
 
-    subroutine write_result(path, prefix, cfg, outs, notes, table, files_out, stat, errmsg)
+    !> Open the table <output>_newmark (out_table): its columns (the rigid block's, with
+    !> mu, or with the flexible mass's six before status) and the header lines before
+    !> the records' (newmark_take writes a line per record).
+    subroutine open_table(path, prefix, cfg, stat, errmsg)
         character(len=*), intent(in) :: path, prefix
         type(config_t), intent(in) :: cfg
-        type(record_out_t), intent(in) :: outs(:)
-        type(note_t), intent(in) :: notes(:)
-        real(dp), intent(in) :: table(:, :)
-        character(len=*), intent(out) :: files_out(2)
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
-        character(len=4096), allocatable :: comments(:)
         character(len=16), allocatable :: names(:), col_units(:)
-        character(len=label_len(outs)), allocatable :: labels(:)
-        character(len=:), allocatable :: line
         character(len=64), allocatable :: kinds(:)
+        character(len=:), allocatable :: line
         !> the names of the column converged: 0 no, 1 yes
         character(len=3), parameter :: converged_names(0:1) = [character(len=3) :: 'no', 'yes']
-        integer :: nblk, ir, nc, i
+        integer :: k, i, ncol
+        logical :: flexible, with_table
 
-        nblk = size(cfg%blocks)
-        if (cfg%kind /= KIND_RIGID .or. allocated(cfg%ky_disp)) then
-            call write_flexible()
-            return
+        ! --- the columns
+        ncol = row_columns(cfg)
+        allocate(names(ncol + 1), col_units(ncol + 1))
+        names(1:3) = [character(len=16) :: 'record', 'pga', 'scale']
+        col_units(1:3) = [character(len=16) :: '-', 'g', '-']
+        k = 4
+        if (cfg%with_mu) then
+            names(4) = 'mu'
+            col_units(4) = '-'
+            k = 5
         end if
-        allocate(comments(7 + size(outs)))
-        comments(1) = 'seispulse analysis newmark: rigid-block (Newmark) sliding on ' &
-                      //'accelerograms, one row per record and '//merge('mu', 'ky', cfg%with_mu)
-        comments(2) = 'input: '//trim(path)
-        line = 'mode = '//newmark_mode_name(cfg%mode)//', method = ' &
-               //newmark_method_name(cfg%method)//', g = '//shortest_str(cfg%g)//' m/s2'
-        if (cfg%with_mu) line = line//'; incline: slope_deg = '//shortest_str(cfg%slope_deg) &
-            //', xi_deg = '//shortest_str(cfg%xi_deg)//', along_plane = ' &
-            //trim(merge('true ', 'false', cfg%along_plane))//' (ky, ky_up from Eq. 1.31)'
-        comments(3) = line
-        comments(4) = 'sign convention: positive slip = downslope, driven by positive ' &
-                      //'ground acceleration; normal = the record times scale (scale < 0: ' &
-                      //'polarity -1), inverse = the normal record x -1'
-        comments(5) = 'max: largest |u| over time; final: u when the block is at rest at ' &
-                      //'the end (signed); ky_up = inf: no upslope sliding (mode ''down''); ' &
-                      //'pga: after scaling'
-        comments(6) = 'status: ok, or failed (nan results; the reason is below and on ' &
-                      //'stderr); exit status 1 when a row failed (2: an input error, no table)'
-        comments(7) = 'records (index, file, format read, npts, dt (s), PGA as read (g), ' &
-                      //'scale factor):'
-        do ir = 1, size(outs)
-            associate (o => outs(ir), r => cfg%recs(ir))
-                line = record_line(ir, r, o)
-                if (o%ok .and. len(o%message) > 0) line = line//'; FAILED rows: '//o%message
-                comments(7 + ir) = line
-            end associate
-        end do
+        names(k) = 'ky'
+        col_units(k) = 'g'
+        names(k + 1:k + 10) = [character(len=16) :: 'ky_up', 'max_normal', 'max_normal_cm', &
+            'final_normal', 'final_normal_cm', 'max_inverse', 'max_inverse_cm', &
+            'final_inverse', 'final_inverse_cm', 'status']
+        col_units(k + 1:k + 10) = [character(len=16) :: 'g', 'm', 'cm', 'm', 'cm', 'm', &
+            'cm', 'm', 'cm', '-']
+        if (cfg%kind /= KIND_RIGID) then
+            names(k + 10:k + 16) = [character(len=16) :: 'kmax', 'vs_final', &
+                'damping_final', 'period', 'iterations', 'converged', 'status']
+            col_units(k + 10:k + 16) = [character(len=16) :: 'g', 'm/s', '-', 's', '-', &
+                '-', '-']
+        end if
+        allocate(kinds(size(names)))
+        kinds = ''
+        kinds(size(names)) = category_kind(status_names)
+        if (cfg%kind /= KIND_RIGID) then
+            kinds(k + 14) = 'int'                            ! iterations
+            kinds(k + 15) = category_kind(converged_names)  ! converged
+        end if
+        call table_open(out_table, prefix, 'newmark', names, col_units, stat, errmsg, &
+                        kinds=kinds, labelled=.true.)
+        if (stat /= 0) return
 
-        call write_columns(comments)
-
-    contains
-
-        !> The table of a flexible mass, or of a rigid block with a yield table.
-        subroutine write_flexible()
-            logical :: flexible
-            flexible = cfg%kind /= KIND_RIGID
-            allocate(comments(12 + size(outs)))
-            nc = 0
-            if (flexible) then
-                call add('seispulse analysis newmark: '//trim(kind_names(cfg%kind)) &
-                         //' flexible sliding mass on accelerograms (doc/flexible.md), one ' &
-                         //'row per record and ky')
-            else
-                call add('seispulse analysis newmark: rigid-block (Newmark) sliding on ' &
-                         //'accelerograms with a yield table, one row per record')
-            end if
-            call add('input: '//trim(path))
+        ! --- the header lines
+        flexible = cfg%kind /= KIND_RIGID
+        with_table = allocated(cfg%ky_disp)
+        if (flexible) then
+            call add('seispulse analysis newmark: '//trim(kind_names(cfg%kind)) &
+                     //' flexible sliding mass on accelerograms (doc/flexible.md), one ' &
+                     //'row per record and ky')
+        else if (with_table) then
+            call add('seispulse analysis newmark: rigid-block (Newmark) sliding on ' &
+                     //'accelerograms with a yield table, one row per record')
+        else
+            call add('seispulse analysis newmark: rigid-block (Newmark) sliding on ' &
+                     //'accelerograms, one row per record and '//merge('mu', 'ky', cfg%with_mu))
+        end if
+        call add('input: '//trim(path))
+        if (flexible .or. with_table) then
             call add('method = '//trim(kind_names(cfg%kind))//', rule = ' &
                      //newmark_method_name(cfg%method)//', mode = ' &
                      //newmark_mode_name(cfg%mode)//', g = '//shortest_str(cfg%g)//' m/s2')
-            if (flexible) call add(slope_line(cfg%mass))
-            if (allocated(cfg%ky_disp)) then
-                line = 'yield table (ky_disp m: ky_table g):'
-                do i = 1, size(cfg%ky_disp)
-                    line = line//' '//shortest_str(cfg%ky_disp(i))//': ' &
-                        //shortest_str(cfg%ky_values(i))
-                    if (i < size(cfg%ky_disp)) line = line//','
-                end do
-                call add(line//'; the column ky is ky_table(1)')
-            end if
-            call add('sign convention: positive slip = downslope, driven by positive ' &
-                     //'ground acceleration; normal = the record times scale (scale < 0: ' &
-                     //'polarity -1), inverse = the normal record x -1')
+        else
+            line = 'mode = '//newmark_mode_name(cfg%mode)//', method = ' &
+                   //newmark_method_name(cfg%method)//', g = '//shortest_str(cfg%g)//' m/s2'
+            if (cfg%with_mu) line = line//'; incline: slope_deg = ' &
+                //shortest_str(cfg%slope_deg)//', xi_deg = '//shortest_str(cfg%xi_deg) &
+                //', along_plane = '//trim(merge('true ', 'false', cfg%along_plane)) &
+                //' (ky, ky_up from Eq. 1.31)'
+            call add(line)
+        end if
+        if (flexible) call add(slope_line(cfg%mass))
+        if (with_table) then
+            line = 'yield table (ky_disp m: ky_table g):'
+            do i = 1, size(cfg%ky_disp)
+                line = line//' '//shortest_str(cfg%ky_disp(i))//': ' &
+                    //shortest_str(cfg%ky_values(i))
+                if (i < size(cfg%ky_disp)) line = line//','
+            end do
+            call add(line//'; the column ky is ky_table(1)')
+        end if
+        call add('sign convention: positive slip = downslope, driven by positive ' &
+                 //'ground acceleration; normal = the record times scale (scale < 0: ' &
+                 //'polarity -1), inverse = the normal record x -1')
+        if (flexible .or. with_table) then
             call add('max: largest |u| over time; final: u when the mass is at rest at ' &
                      //'the end (signed); ky_up = inf: no upslope sliding (mode ''down''); ' &
                      //'pga: after scaling')
-            if (flexible) then
-                call add('kmax: the peak of the average acceleration of the mass (HEA, g), ' &
-                         //'signed, of the normal record (the inverse''s is -kmax); ' &
-                         //'vs_final (m/s), damping_final (user or material, plus ' &
-                         //'radiation) and period = 4 height / vs_final (s) of the final ' &
-                         //'response, iterations (equivalent-linear; 0 for linear): the ' &
-                         //'same for normal and inverse')
-                call add('converged: yes, or no when the equivalent-linear iteration stopped ' &
-                         //'at max_iter: the results of its last iteration, a warning below ' &
-                         //'and on stderr, status ok')
-            end if
-            call add('status: ok, or failed (nan results; the reason is below and on ' &
-                     //'stderr); exit status 1 when a row failed (2: an input error, no table)')
-            call add('records (index, file, format read, npts, dt (s), PGA as read (g), ' &
-                     //'scale factor):')
-            do ir = 1, size(outs)
-                associate (o => outs(ir), r => cfg%recs(ir))
-                    line = record_line(ir, r, o)
-                    if (o%ok .and. len(o%message) > 0) line = line//'; FAILED rows: ' &
-                        //o%message
-                    if (len(notes(ir)%text) > 0) line = line//'; NOT CONVERGED: ' &
-                        //notes(ir)%text
-                    call add(line)
-                end associate
-            end do
+        else
+            call add('max: largest |u| over time; final: u when the block is at rest at ' &
+                     //'the end (signed); ky_up = inf: no upslope sliding (mode ''down''); ' &
+                     //'pga: after scaling')
+        end if
+        if (flexible) then
+            call add('kmax: the peak of the average acceleration of the mass (HEA, g), ' &
+                     //'signed, of the normal record (the inverse''s is -kmax); ' &
+                     //'vs_final (m/s), damping_final (user or material, plus ' &
+                     //'radiation) and period = 4 height / vs_final (s) of the final ' &
+                     //'response, iterations (equivalent-linear; 0 for linear): the ' &
+                     //'same for normal and inverse')
+            call add('converged: yes, or no when the equivalent-linear iteration stopped ' &
+                     //'at max_iter: the results of its last iteration, a warning below ' &
+                     //'and on stderr, status ok')
+        end if
+        call add('status: ok, or failed (nan results; the reason is below and on ' &
+                 //'stderr); exit status 1 when a row failed (2: an input error, no table)')
+        call add('records (index, file, format read, npts, dt (s), PGA as read (g), ' &
+                 //'scale factor):')
 
-            call write_columns(comments(1:nc))
-        end subroutine write_flexible
-
-        !> The columns (the rigid block's, with mu, or with the flexible mass's six before
-        !> status), the row labels, and the one table writer.
-        subroutine write_columns(text)
-            character(len=*), intent(in) :: text(:)  !! the header comments
-            integer :: k
-            allocate(names(size(table, 2) + 1), col_units(size(table, 2) + 1))
-            names(1:3) = [character(len=16) :: 'record', 'pga', 'scale']
-            col_units(1:3) = [character(len=16) :: '-', 'g', '-']
-            k = 4
-            if (cfg%with_mu) then
-                names(4) = 'mu'
-                col_units(4) = '-'
-                k = 5
-            end if
-            names(k) = 'ky'
-            col_units(k) = 'g'
-            names(k + 1:k + 10) = [character(len=16) :: 'ky_up', 'max_normal', 'max_normal_cm', &
-                'final_normal', 'final_normal_cm', 'max_inverse', 'max_inverse_cm', &
-                'final_inverse', 'final_inverse_cm', 'status']
-            col_units(k + 1:k + 10) = [character(len=16) :: 'g', 'm', 'cm', 'm', 'cm', 'm', &
-                'cm', 'm', 'cm', '-']
-            if (cfg%kind /= KIND_RIGID) then
-                names(k + 10:k + 16) = [character(len=16) :: 'kmax', 'vs_final', &
-                    'damping_final', 'period', 'iterations', 'converged', 'status']
-                col_units(k + 10:k + 16) = [character(len=16) :: 'g', 'm/s', '-', 's', '-', &
-                    '-', '-']
-            end if
-            allocate(labels(size(table, 1)), kinds(size(names)))
-            do ir = 1, size(outs)
-                labels((ir - 1) * nblk + 1:ir * nblk) = outs(ir)%name
-            end do
-            kinds = ''
-            kinds(size(names)) = category_kind(status_names)
-            if (cfg%kind /= KIND_RIGID) then
-                kinds(k + 14) = 'int'                            ! iterations
-                kinds(k + 15) = category_kind(converged_names)  ! converged
-            end if
-            call write_tables(prefix, 'newmark', text, names, col_units, table, files_out, &
-                              stat, errmsg, labels=labels, kinds=kinds)
-        end subroutine write_columns
+    contains
 
         subroutine add(text)
             character(len=*), intent(in) :: text
-            nc = nc + 1
-            comments(nc) = text
+            call table_comment(out_table, text)
         end subroutine add
 
-    end subroutine write_result
+    end subroutine open_table
 
 end module driver_newmark

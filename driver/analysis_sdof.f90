@@ -19,7 +19,7 @@
 !> Analyses 'sdof_beta' and 'sdof_shock': driver_sdof_beta, driver_sdof_shock.
 module driver_sdof
     use, intrinsic :: iso_fortran_env, only: output_unit
-    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
     use seispulse, only: dp, shortest_str, SEISPULSE_SUCCESS, outside, int_str, sdof_spectrum, &
                          pseudo_spectra, &
                          sdof_response, design_envelope, spectral_shape, SDOF_PEAKS_EXACT, &
@@ -29,11 +29,11 @@ module driver_sdof
                             name_index, ROWS_FAILED
     use driver_input, only: missing_group
     use driver_input, only: output_located
-    use driver_tables, only: write_tables, delete_files, say_written, category_kind, &
-                             status_names
+    use driver_tables, only: table_t, table_open, table_comment, table_row, table_close, &
+                             table_drop, say_written, category_kind, status_names
     use driver_records, only: records_keys, record_in_t, record_out_t, records_defaults, &
                               read_records, check_records, echo_records, load_record, report, &
-                              records_missing, record_line, failed_records, label_len
+                              records_missing, record_line, add_failed_record
     use driver_sdof_common, only: max_periods, max_dampings, check_dampings
     use driver_axis, only: axis_values
     use driver_echo, only: echo_unit
@@ -106,6 +106,19 @@ module driver_sdof
     ! units run concurrently in sdof_unit)
     type(config_t) :: run_cfg
     character(len=:), allocatable :: run_where          !! "file:line: &records: "
+    ! --- the tables being written (on the root, by sdof_take: one record at a time, in
+    ! record order)
+    type(table_t) :: out_spectra, out_envelope, out_history
+    integer :: out_failed = 0                    !! records failed
+    integer :: out_named = 0                     !! records in out_names
+    character(len=:), allocatable :: out_names   !! the failed records (failed_records)
+    integer :: out_nok = 0                       !! records computed (in the envelope)
+    integer :: out_hrows = 0                     !! rows of the history table so far
+    character(len=:), allocatable :: out_error   !! why the history table was dropped
+    !> the envelope: per period, damping and curve (SA, PSA, PSA/PGA) the largest ordinate
+    !> of the records so far, and whether one was not finite
+    real(dp), allocatable :: env_max(:, :, :)
+    logical, allocatable :: env_bad(:, :, :)
 
 contains
 
@@ -173,10 +186,6 @@ contains
         character(len=:), allocatable, intent(out) :: errmsg
         type(nml_group) :: gr, gs, gh
         type(config_t) :: cfg
-        type(record_out_t), allocatable :: outs(:)
-        type(record_res_t), allocatable :: res(:)
-        character(len=512) :: files_s(2), files_e(2), files_h(2)
-        integer :: nfailed
 
         call set_defaults()
         call read_optional(path, groups, 'records', records_keys, read_records, gr, stat, &
@@ -220,48 +229,18 @@ contains
         call echo_records(cfg%recs, cfg%slammer_rounding)
         call echo_sdof(cfg)
 
-        ! --- compute every table (nothing is written before all of them are done)
-        call compute(path, gr, prefix, cfg, outs, res, stat, errmsg)
+        ! --- compute every record, writing its rows as it comes (the tables are renamed
+        !     from <file>.part when the run ends)
+        call compute(path, gr, prefix, cfg, stat, errmsg)
         if (stat /= 0) return
-        nfailed = count(.not. outs%ok)
-
-        ! --- write
-        if (cfg%spectra) then
-            call write_spectra(path, prefix, cfg, outs, res, files_s, stat, errmsg)
-            if (stat /= 0) then
-                stat = 1
-                errmsg = output_located(path)//errmsg
-                return
-            end if
-        end if
-        if (cfg%envelope) then
-            call write_envelope(path, prefix, cfg, outs, res, files_e, stat, errmsg)
-            if (stat /= 0) then
-                if (cfg%spectra) call delete_files(files_s)
-                stat = 1
-                errmsg = output_located(path)//errmsg
-                return
-            end if
-        end if
-        if (cfg%history) then
-            call write_history(path, prefix, cfg, outs, res, files_h, stat, errmsg)
-            if (stat /= 0) then
-                if (cfg%spectra) call delete_files(files_s)
-                if (cfg%envelope) call delete_files(files_e)
-                stat = 1
-                errmsg = output_located(path)//errmsg
-                return
-            end if
-        end if
-        if (cfg%spectra) call say_written('sdof spectra', files_s)
-        if (cfg%envelope) call say_written('sdof envelope', files_e)
-        if (cfg%history) call say_written('sdof history', files_h)
+        if (cfg%spectra) call say_written('sdof spectra', out_spectra%files)
+        if (cfg%envelope) call say_written('sdof envelope', out_envelope%files)
+        if (cfg%history) call say_written('sdof history', out_history%files)
         stat = 0
-        if (nfailed > 0) then
+        if (out_failed > 0) then
             stat = ROWS_FAILED
-            errmsg = int_str(nfailed)//' of '//int_str(size(outs))//' records failed (' &
-                     //failed_records(outs, .not. outs%ok)//'): their rows hold NaN and ' &
-                     //'status failed'
+            errmsg = int_str(out_failed)//' of '//int_str(size(cfg%recs))//' records failed (' &
+                     //out_names//'): their rows hold NaN and status failed'
         end if
     end subroutine run_sdof
 
@@ -466,34 +445,97 @@ contains
     ! ------------------------------------------------------------------------------
 
     !> Every record (read, polarity, scale), its spectra and histories: one unit of a
-    !> batch per record (driver_batch: threads, ranks, the restart journal). A record
-    !> that fails (reading, scaling or a library check) keeps o%ok = .false. and its
-    !> message, reported on stderr (in record order). stat /= 0: the journal was refused
-    !> (errmsg), nothing done.
-    subroutine compute(path, gr, prefix, cfg, outs, res, stat, errmsg)
+    !> batch per record (driver_batch: threads, ranks, the restart journal). The tables
+    !> are opened first; each record's header line and rows go into them as soon as every
+    !> record before it is done (sdof_take), so memory does not grow with the number of
+    !> records; the envelope keeps the running maxima. A record that fails (reading,
+    !> scaling or a library check) keeps o%ok = .false. and its message, reported on
+    !> stderr (in record order). stat /= 0: the journal was refused, or an output or the
+    !> envelope failed (errmsg); no table is left.
+    subroutine compute(path, gr, prefix, cfg, stat, errmsg)
         character(len=*), intent(in) :: path
         type(nml_group), intent(in) :: gr
         character(len=*), intent(in) :: prefix            !! output prefix (the journal)
-        type(config_t), intent(in) :: cfg
-        type(record_out_t), allocatable, intent(out) :: outs(:)
-        type(record_res_t), allocatable, intent(out) :: res(:)
+        type(config_t), intent(inout) :: cfg              !! its records are lent to run_cfg
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
-        type(unit_result_t), allocatable :: results(:)
-        integer :: nrec, ir
+        type(record_in_t), allocatable :: recs(:)
+        integer :: np, nd
 
+        ! --- the batch's read-only state (the records moved there, not copied: a long
+        !     list is held once) and the tables
+        call move_alloc(cfg%recs, recs)
         run_cfg = cfg
+        call move_alloc(recs, run_cfg%recs)
         run_where = located(path, gr)
-        call batch_run(path, prefix, 'sdof', record_keys(cfg%recs, cfg%slammer_rounding), &
-                       sdof_unit, results, stat, errmsg)
-        if (stat /= 0) return
-        nrec = size(cfg%recs)
-        allocate(outs(nrec), res(nrec))
-        do ir = 1, nrec
-            call unpack_record(results(ir), outs(ir))
-            if (outs(ir)%ok) call unpack_results(cfg, outs(ir)%dt, results(ir)%values, res(ir))
-        end do
+        out_failed = 0
+        out_named = 0
+        out_names = ''
+        out_nok = 0
+        out_hrows = 0
+        out_error = ''
+        np = size(cfg%periods)
+        nd = size(cfg%dampings)
+        if (allocated(env_max)) deallocate(env_max, env_bad)
+        if (cfg%envelope) allocate(env_max(np, nd, 3), env_bad(np, nd, 3))
+        call open_tables(prefix, cfg, stat, errmsg)
+        if (stat == 0) then
+            call batch_run(path, prefix, 'sdof', record_keys(run_cfg%recs, &
+                           cfg%slammer_rounding), sdof_unit, sdof_take, stat, errmsg)
+            if (stat == 0) then
+                if (len(out_error) > 0) then
+                    stat = 1
+                    errmsg = out_error
+                else
+                    call close_tables(path, run_cfg, stat, errmsg)
+                end if
+                if (stat /= 0) errmsg = output_located(path)//errmsg
+            end if
+        else
+            errmsg = output_located(path)//errmsg
+        end if
+        if (stat /= 0) then
+            ! the journal was refused (its message as it is), or an output failed
+            call drop_tables()
+            stat = 1
+        end if
+        call move_alloc(run_cfg%recs, cfg%recs)
     end subroutine compute
+
+    !> On the root, record ir's unit, in record order (driver_batch): its header line in
+    !> every table, its spectra rows, its history rows, its spectra into the envelope's
+    !> maxima; a failed record is counted and named.
+    subroutine sdof_take(ir, res)
+        integer, intent(in) :: ir
+        type(unit_result_t), intent(in) :: res
+        type(record_out_t) :: o
+        type(record_res_t) :: q
+        character(len=:), allocatable :: line
+        real(dp) :: nan
+
+        nan = ieee_value(nan, ieee_quiet_nan)
+        associate (cfg => run_cfg)
+            call unpack_record(res, o)
+            if (o%ok) call unpack_results(cfg, o%dt, res%values, q)
+            line = record_comment(cfg, ir, o, q)
+            if (cfg%spectra) then
+                call table_comment(out_spectra, line)
+                call spectra_rows(cfg, o, q)
+            end if
+            if (cfg%envelope) then
+                call table_comment(out_envelope, line)
+                if (o%ok) call envelope_add(q)
+            end if
+            if (cfg%history) then
+                call table_comment(out_history, line)
+                call history_rows(cfg, o, q)
+            end if
+            if (.not. o%ok) then
+                out_failed = out_failed + 1
+                call add_failed_record(out_names, out_named, ir, o%name)
+            end if
+        end associate
+    end subroutine sdof_take
 
     !> One unit: record ir read and analysed, packed into res: the record (pack_record),
     !> then, if it was computed, its results (pack_results); stderr lines into res%log.
@@ -709,42 +751,40 @@ contains
     ! ------------------------------------------------------------------------------
 
     !> The first header lines of every table of this analysis: what, the input, then
-    !> `head`, then the records (one line each).
-    subroutine record_comments(path, what, head, cfg, outs, res, comments)
+    !> `head`, then the title of the records' lines (record_comment gives each).
+    function lead_comments(path, what, head) result(lines)
         character(len=*), intent(in) :: path, what
         character(len=*), intent(in) :: head(:)
-        type(config_t), intent(in) :: cfg
-        type(record_out_t), intent(in) :: outs(:)
-        type(record_res_t), intent(in) :: res(:)
-        character(len=4096), allocatable, intent(out) :: comments(:)
-        character(len=:), allocatable :: line
-        integer :: ir, j, nrec, nh
-
-        nrec = size(outs)
+        character(len=max(len(head), 4096)) :: lines(3 + size(head))
+        integer :: nh
         nh = size(head)
-        allocate(comments(3 + nh + nrec))
-        comments(1) = 'seispulse analysis sdof: '//what
-        comments(2) = 'input: '//trim(path)
-        comments(3:2 + nh) = head
-        comments(3 + nh) = 'records (index, file, format read, npts, dt (s), PGA as read ' &
-                           //'(g), scale factor, PGA after scaling (g)):'
-        do ir = 1, nrec
-            associate (o => outs(ir), r => cfg%recs(ir))
-                line = record_line(ir, r, o)
-                if (o%ok) then
-                    line = line//', PGA '//shortest_str(o%pga)
-                    if (cfg%spectra .and. cfg%shape) then
-                        do j = 1, size(cfg%dampings)
-                            line = line//'; damping '//shortest_str(cfg%dampings(j))//': PSA/PGA ' &
-                                   //'peak '//shortest_str(res(ir)%peak(j))//' at T = ' &
-                                   //shortest_str(res(ir)%t_peak(j))//' s'
-                        end do
-                    end if
-                end if
-                comments(3 + nh + ir) = line
-            end associate
-        end do
-    end subroutine record_comments
+        lines(1) = 'seispulse analysis sdof: '//what
+        lines(2) = 'input: '//trim(path)
+        lines(3:2 + nh) = head
+        lines(3 + nh) = 'records (index, file, format read, npts, dt (s), PGA as read ' &
+                        //'(g), scale factor, PGA after scaling (g)):'
+    end function lead_comments
+
+    !> The header line of record ir (the same in every table): how it was read, its PGA
+    !> after scaling and, with shape = .true., the peak of PSA/PGA per damping.
+    function record_comment(cfg, ir, o, q) result(line)
+        type(config_t), intent(in) :: cfg
+        integer, intent(in) :: ir
+        type(record_out_t), intent(in) :: o
+        type(record_res_t), intent(in) :: q
+        character(len=:), allocatable :: line
+        integer :: j
+        line = record_line(ir, cfg%recs(ir), o)
+        if (.not. o%ok) return
+        line = line//', PGA '//shortest_str(o%pga)
+        if (cfg%spectra .and. cfg%shape) then
+            do j = 1, size(cfg%dampings)
+                line = line//'; damping '//shortest_str(cfg%dampings(j))//': PSA/PGA ' &
+                       //'peak '//shortest_str(q%peak(j))//' at T = ' &
+                       //shortest_str(q%t_peak(j))//' s'
+            end do
+        end if
+    end function record_comment
 
     !> "periods: ...; g = ... m/s2; peaks = ..." of the spectrum tables.
     function spectra_line(cfg) result(s)
@@ -758,230 +798,269 @@ contains
         end if
     end function spectra_line
 
-    !> The spectra table: one row per record, damping and period.
-    subroutine write_spectra(path, prefix, cfg, outs, res, files_out, stat, errmsg)
-        character(len=*), intent(in) :: path, prefix
+    !> Open the tables of the run (spectra: one row per record, damping ratio and period;
+    !> envelope: one row per damping ratio and period; histories: per record, damping
+    !> and period the samples of the response). stat /= 0: none is left.
+    subroutine open_tables(prefix, cfg, stat, errmsg)
+        character(len=*), intent(in) :: prefix
         type(config_t), intent(in) :: cfg
-        type(record_out_t), intent(in) :: outs(:)
-        type(record_res_t), intent(in) :: res(:)
-        character(len=*), intent(out) :: files_out(2)
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
-        character(len=4096), allocatable :: comments(:)
-        character(len=4096) :: head(4)
         character(len=8), allocatable :: names(:), col_units(:)
-        character(len=label_len(outs)), allocatable :: labels(:)
         character(len=16), allocatable :: kinds(:)
-        real(dp), allocatable :: table(:, :)
-        real(dp) :: nan
-        integer :: np, nd, nrec, ncol, ir, j, i, row
+        integer :: ncol
 
-        nan = ieee_value(nan, ieee_quiet_nan)
-        np = size(cfg%periods)
-        nd = size(cfg%dampings)
-        nrec = size(outs)
+        stat = 0
+        errmsg = ''
+        if (cfg%spectra) then
+            ncol = spectra_columns(cfg)
+            allocate(names(ncol + 1), col_units(ncol + 1))
+            names(1:8) = [character(len=8) :: 'record', 'damping', 'T', 'SD', 'SV', 'SA', &
+                          'PSV', 'PSA']
+            col_units(1:8) = [character(len=8) :: '-', '-', 's', 'm', 'm/s', 'g', 'm/s', 'g']
+            if (cfg%shape) then
+                names(9) = 'PSA/PGA'
+                col_units(9) = '-'
+            end if
+            names(ncol + 1) = 'status'
+            col_units(ncol + 1) = '-'
+            allocate(kinds(ncol + 1))
+            kinds = ''
+            kinds(ncol + 1) = category_kind(status_names)
+            call table_open(out_spectra, prefix, 'sdof', names, col_units, stat, errmsg, &
+                            kinds=kinds, labelled=.true.)
+            if (stat /= 0) return
+            deallocate(names, col_units)
+        end if
+        if (cfg%envelope) then
+            ncol = merge(5, 4, cfg%shape)
+            allocate(names(ncol), col_units(ncol))
+            names(1:4) = [character(len=8) :: 'damping', 'T', 'SA', 'PSA']
+            col_units(1:4) = [character(len=8) :: '-', 's', 'g', 'g']
+            if (cfg%shape) then
+                names(5) = 'PSA/PGA'
+                col_units(5) = '-'
+            end if
+            call table_open(out_envelope, prefix, 'sdof_envelope', names, col_units, stat, &
+                            errmsg)
+            if (stat /= 0) then
+                call drop_tables()
+                return
+            end if
+        end if
+        if (cfg%history) then
+            call table_open(out_history, prefix, 'sdof_history', &
+                [character(len=8) :: 'record', 'damping', 'T', 't', 'a_g', 'z', 'z''', &
+                 'a_abs', 'status'], &
+                [character(len=8) :: '-', '-', 's', 's', 'g', 'm', 'm/s', 'g', '-'], stat, &
+                errmsg, labelled=.true., kinds=[character(len=16) :: '', '', '', '', '', '', &
+                '', '', category_kind(status_names)])
+            if (stat /= 0) call drop_tables()
+        end if
+    end subroutine open_tables
+
+    !> The numeric columns of a spectra row: damping, T, SD, SV, SA, PSV, PSA (, PSA/PGA),
+    !> status.
+    pure integer function spectra_columns(cfg) result(ncol)
+        type(config_t), intent(in) :: cfg
         ncol = merge(9, 8, cfg%shape)
-        allocate(table(nrec * nd * np, ncol))
-        allocate(labels(nrec * nd * np))
-        table = nan
-        do ir = 1, nrec
-            do j = 1, nd
-                do i = 1, np
-                    row = ((ir - 1) * nd + j - 1) * np + i
-                    labels(row) = outs(ir)%name
-                    table(row, 1) = cfg%dampings(j)
-                    table(row, 2) = cfg%periods(i)
-                    table(row, ncol) = 1.0_dp
-                    if (.not. outs(ir)%ok) cycle
-                    associate (q => res(ir))
-                        table(row, 3:7) = [q%sd(i, j), q%sv(i, j), q%sa(i, j), q%psv(i, j), &
-                                           q%psa(i, j)]
-                        if (cfg%shape) table(row, 8) = q%shp(i, j)
-                    end associate
-                    table(row, ncol) = 0.0_dp
-                end do
+    end function spectra_columns
+
+    !> The spectra rows of one record (NaN results and status failed if it failed).
+    subroutine spectra_rows(cfg, o, q)
+        type(config_t), intent(in) :: cfg
+        type(record_out_t), intent(in) :: o
+        type(record_res_t), intent(in) :: q
+        real(dp) :: row(spectra_columns(cfg)), nan
+        integer :: i, j, ncol
+        nan = ieee_value(nan, ieee_quiet_nan)
+        ncol = size(row)
+        do j = 1, size(cfg%dampings)
+            do i = 1, size(cfg%periods)
+                row = nan
+                row(1) = cfg%dampings(j)
+                row(2) = cfg%periods(i)
+                row(ncol) = 1.0_dp
+                if (o%ok) then
+                    row(3:7) = [q%sd(i, j), q%sv(i, j), q%sa(i, j), q%psv(i, j), q%psa(i, j)]
+                    if (cfg%shape) row(8) = q%shp(i, j)
+                    row(ncol) = 0.0_dp
+                end if
+                call table_row(out_spectra, row, o%name)
             end do
         end do
+    end subroutine spectra_rows
 
-        head(1) = spectra_line(cfg)
-        head(2) = 'SD, SV: largest |z|, |z''| (displacement and velocity of the mass ' &
-                  //'relative to the ground); SA: largest |a_g + z''''| (absolute ' &
-                  //'acceleration); PSV = omega SD, PSA = omega^2 SD / g (Eq. 2.33); ' &
-                  //'maxima over the record (no free vibration after it)'
-        head(3) = 'T = 0: the ground itself (SD = SV = PSV = 0, SA = PSA = the PGA after ' &
-                  //'scaling)'
-        if (cfg%shape) head(3) = trim(head(3))//'; PSA/PGA: the normalized spectral shape'
-        head(4) = 'status: ok, or failed (nan results; the reason is below and on ' &
-                  //'stderr); exit status 1 when a record failed (2: an input error, no table)'
-        call record_comments(path, 'response spectra of the linear oscillator on ' &
-                             //'accelerograms, one row per record, damping ratio and period', &
-                             head, cfg, outs, res, comments)
-        allocate(names(ncol + 1), col_units(ncol + 1))
-        names(1:8) = [character(len=8) :: 'record', 'damping', 'T', 'SD', 'SV', 'SA', 'PSV', &
-                      'PSA']
-        col_units(1:8) = [character(len=8) :: '-', '-', 's', 'm', 'm/s', 'g', 'm/s', 'g']
-        if (cfg%shape) then
-            names(9) = 'PSA/PGA'
-            col_units(9) = '-'
-        end if
-        names(ncol + 1) = 'status'
-        col_units(ncol + 1) = '-'
-        allocate(kinds(ncol + 1))
-        kinds = ''
-        kinds(ncol + 1) = category_kind(status_names)
-        call write_tables(prefix, 'sdof', comments, names, col_units, table, files_out, &
-                          stat, errmsg, labels=labels, kinds=kinds)
-    end subroutine write_spectra
-
-    !> The envelope table: one row per damping and period, over the records computed.
-    subroutine write_envelope(path, prefix, cfg, outs, res, files_out, stat, errmsg)
-        character(len=*), intent(in) :: path, prefix
+    !> The history rows of one record (one row of NaN per damping and period, status
+    !> failed, if it failed). Past max_history_rows in all the history table is dropped
+    !> and out_error says why.
+    subroutine history_rows(cfg, o, q)
         type(config_t), intent(in) :: cfg
-        type(record_out_t), intent(in) :: outs(:)
-        type(record_res_t), intent(in) :: res(:)
-        character(len=*), intent(out) :: files_out(2)
+        type(record_out_t), intent(in) :: o
+        type(record_res_t), intent(in) :: q
+        real(dp) :: row(8), nan
+        integer :: i, j, k, n
+        nan = ieee_value(nan, ieee_quiet_nan)
+        if (o%ok) then
+            n = size(q%hist, 1)
+        else
+            n = size(cfg%h_periods) * size(cfg%h_dampings)
+        end if
+        if (out_hrows > max_history_rows - n) then
+            if (len(out_error) == 0) out_error = 'the history table would have more than ' &
+                //int_str(max_history_rows)//' rows (give fewer records, or fewer periods ' &
+                //'or damping ratios in &sdof_history)'
+            call table_drop(out_history)
+            return
+        end if
+        out_hrows = out_hrows + n
+        if (o%ok) then
+            do i = 1, n
+                call table_row(out_history, q%hist(i, :), o%name)
+            end do
+        else
+            do j = 1, size(cfg%h_dampings)
+                do k = 1, size(cfg%h_periods)
+                    row = nan
+                    row(1:2) = [cfg%h_dampings(j), cfg%h_periods(k)]
+                    row(8) = 1.0_dp
+                    call table_row(out_history, row, o%name)
+                end do
+            end do
+        end if
+    end subroutine history_rows
+
+    !> A computed record's SA, PSA (and PSA/PGA) into the envelope's running maxima
+    !> (env_max; env_bad marks an ordinate that was not finite, which design_envelope
+    !> refuses).
+    subroutine envelope_add(q)
+        type(record_res_t), intent(in) :: q
+        out_nok = out_nok + 1
+        call take(1, q%sa)
+        call take(2, q%psa)
+        if (run_cfg%shape) call take(3, q%shp)
+    contains
+        subroutine take(k, x)
+            integer, intent(in) :: k
+            real(dp), intent(in) :: x(:, :)
+            if (out_nok == 1) then
+                env_max(:, :, k) = x
+                env_bad(:, :, k) = .false.
+            else
+                env_max(:, :, k) = max(env_max(:, :, k), x)
+            end if
+            env_bad(:, :, k) = env_bad(:, :, k) .or. .not. ieee_is_finite(x)
+        end subroutine take
+    end subroutine envelope_add
+
+    !> Write the envelope's rows (design_envelope of the maxima over the records
+    !> computed) and close every table, each with its first header lines.
+    subroutine close_tables(path, cfg, stat, errmsg)
+        character(len=*), intent(in) :: path
+        type(config_t), intent(in) :: cfg
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
-        character(len=4096), allocatable :: comments(:)
-        character(len=4096) :: head(3), msg
-        character(len=8), allocatable :: names(:), col_units(:)
-        real(dp), allocatable :: table(:, :), sa(:, :), psa(:, :), shp(:, :)
-        real(dp) :: nan
-        integer :: np, nd, nok, ncol, ir, j, k, r1, r2, st
+        character(len=4096) :: head(4)
+
+        stat = 0
+        errmsg = ''
+        if (cfg%spectra) then
+            head(1) = spectra_line(cfg)
+            head(2) = 'SD, SV: largest |z|, |z''| (displacement and velocity of the mass ' &
+                      //'relative to the ground); SA: largest |a_g + z''''| (absolute ' &
+                      //'acceleration); PSV = omega SD, PSA = omega^2 SD / g (Eq. 2.33); ' &
+                      //'maxima over the record (no free vibration after it)'
+            head(3) = 'T = 0: the ground itself (SD = SV = PSV = 0, SA = PSA = the PGA after ' &
+                      //'scaling)'
+            if (cfg%shape) head(3) = trim(head(3))//'; PSA/PGA: the normalized spectral shape'
+            head(4) = 'status: ok, or failed (nan results; the reason is below and on ' &
+                      //'stderr); exit status 1 when a record failed (2: an input error, no ' &
+                      //'table)'
+            call table_close(out_spectra, stat, errmsg, lead=lead_comments(path, &
+                'response spectra of the linear oscillator on accelerograms, one row per ' &
+                //'record, damping ratio and period', head))
+            if (stat /= 0) return
+        end if
+        if (cfg%envelope) then
+            call envelope_rows(cfg, stat, errmsg)
+            if (stat /= 0) return
+            head(1) = spectra_line(cfg)
+            head(2) = 'the largest SA, PSA'
+            if (cfg%shape) head(2) = trim(head(2))//', PSA/PGA'
+            head(2) = trim(head(2))//' at each period over the '//int_str(out_nok) &
+                      //' records computed (of '//int_str(size(cfg%recs))//'; NaN: none was)'
+            if (cfg%plateau_below > 0.0_dp) then
+                head(3) = 'plateau: below T = '//shortest_str(cfg%plateau_below) &
+                          //' s each curve is held at its largest value at that or any ' &
+                          //'longer period'
+            else
+                head(3) = 'no plateau (plateau_below = 0)'
+            end if
+            call table_close(out_envelope, stat, errmsg, lead=lead_comments(path, &
+                'envelope of the response spectra over the records (the design curve), ' &
+                //'one row per damping ratio and period', head(1:3)))
+            if (stat /= 0) return
+        end if
+        if (cfg%history) then
+            head(1) = 'g = '//shortest_str(cfg%g)//' m/s2; the oscillator starts from rest; ' &
+                      //'t = (i-1) dt at the samples of the record'
+            head(2) = 'a_g: the ground acceleration (the record as scaled); z, z'': ' &
+                      //'displacement and velocity of the mass relative to the ground; ' &
+                      //'a_abs = a_g + z'''': absolute acceleration of the mass; T = 0: the ' &
+                      //'ground (z = z'' = 0, a_abs = a_g)'
+            head(3) = 'status: ok, or failed (one row of nan per damping and period; the ' &
+                      //'reason is below and on stderr)'
+            call table_close(out_history, stat, errmsg, lead=lead_comments(path, &
+                'response histories of the linear oscillator on accelerograms, one block ' &
+                //'of rows per record, damping ratio and period', head(1:3)))
+        end if
+    end subroutine close_tables
+
+    !> The envelope's rows: per damping ratio and period, design_envelope of the maxima
+    !> over the records computed (NaN if none was). stat /= 0: design_envelope refused.
+    subroutine envelope_rows(cfg, stat, errmsg)
+        type(config_t), intent(in) :: cfg
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=4096) :: msg
+        real(dp) :: row(merge(5, 4, cfg%shape)), env(size(cfg%periods), 3), nan
+        integer :: np, j, i, k, nk
 
         nan = ieee_value(nan, ieee_quiet_nan)
         np = size(cfg%periods)
-        nd = size(cfg%dampings)
-        nok = count(outs%ok)
-        ncol = merge(5, 4, cfg%shape)
-        allocate(table(nd * np, ncol), sa(np, nok), psa(np, nok), shp(np, nok))
-        table = nan
-        do j = 1, nd
-            r1 = (j - 1) * np + 1
-            r2 = j * np
-            table(r1:r2, 1) = cfg%dampings(j)
-            table(r1:r2, 2) = cfg%periods
-            if (nok == 0) cycle
-            k = 0
-            do ir = 1, size(outs)
-                if (.not. outs(ir)%ok) cycle
-                k = k + 1
-                sa(:, k) = res(ir)%sa(:, j)
-                psa(:, k) = res(ir)%psa(:, j)
-                if (cfg%shape) shp(:, k) = res(ir)%shp(:, j)
-            end do
-            msg = ''
-            call design_envelope(cfg%periods, sa, cfg%plateau_below, table(r1:r2, 3), st, msg)
-            if (st == SEISPULSE_SUCCESS) call design_envelope(cfg%periods, psa, &
-                cfg%plateau_below, table(r1:r2, 4), st, msg)
-            if (st == SEISPULSE_SUCCESS .and. cfg%shape) call design_envelope(cfg%periods, &
-                shp, cfg%plateau_below, table(r1:r2, 5), st, msg)
-            if (st /= SEISPULSE_SUCCESS) then
-                stat = 1
-                errmsg = 'envelope: '//trim(msg)
-                return
-            end if
-        end do
-
-        head(1) = spectra_line(cfg)
-        head(2) = 'the largest SA, PSA'
-        if (cfg%shape) head(2) = trim(head(2))//', PSA/PGA'
-        head(2) = trim(head(2))//' at each period over the '//int_str(nok)//' records ' &
-                  //'computed (of '//int_str(size(outs))//'; NaN: none was)'
-        if (cfg%plateau_below > 0.0_dp) then
-            head(3) = 'plateau: below T = '//shortest_str(cfg%plateau_below)//' s each curve is ' &
-                      //'held at its largest value at that or any longer period'
-        else
-            head(3) = 'no plateau (plateau_below = 0)'
-        end if
-        call record_comments(path, 'envelope of the response spectra over the records ' &
-                             //'(the design curve), one row per damping ratio and period', &
-                             head, cfg, outs, res, comments)
-        allocate(names(ncol), col_units(ncol))
-        names(1:4) = [character(len=8) :: 'damping', 'T', 'SA', 'PSA']
-        col_units(1:4) = [character(len=8) :: '-', 's', 'g', 'g']
-        if (cfg%shape) then
-            names(5) = 'PSA/PGA'
-            col_units(5) = '-'
-        end if
-        call write_tables(prefix, 'sdof_envelope', comments, names, col_units, table, &
-                          files_out, stat, errmsg)
-    end subroutine write_envelope
-
-    !> The history table: per record, damping and period the samples of the response.
-    subroutine write_history(path, prefix, cfg, outs, res, files_out, stat, errmsg)
-        character(len=*), intent(in) :: path, prefix
-        type(config_t), intent(in) :: cfg
-        type(record_out_t), intent(in) :: outs(:)
-        type(record_res_t), intent(in) :: res(:)
-        character(len=*), intent(out) :: files_out(2)
-        integer, intent(out) :: stat
-        character(len=:), allocatable, intent(out) :: errmsg
-        character(len=4096), allocatable :: comments(:)
-        character(len=4096) :: head(3)
-        character(len=label_len(outs)), allocatable :: labels(:)
-        real(dp), allocatable :: table(:, :)
-        real(dp) :: nan
-        integer :: nrow, ir, j, k, row, n, nosc, nhp
-
-        nan = ieee_value(nan, ieee_quiet_nan)
-        nhp = size(cfg%h_periods)
-        nosc = nhp * size(cfg%h_dampings)
-        nrow = 0
-        do ir = 1, size(outs)
-            if (outs(ir)%ok) then
-                nrow = nrow + size(res(ir)%hist, 1)
-            else
-                nrow = nrow + nosc
-            end if
-            if (nrow > max_history_rows) then
-                stat = 1
-                errmsg = 'the history table would have more than '//int_str(max_history_rows) &
-                         //' rows (give fewer records, or fewer periods or damping ratios ' &
-                         //'in &sdof_history)'
-                return
-            end if
-        end do
-        allocate(table(nrow, 8))
-        allocate(labels(nrow))
-        row = 0
-        do ir = 1, size(outs)
-            if (outs(ir)%ok) then
-                n = size(res(ir)%hist, 1)
-                table(row + 1:row + n, :) = res(ir)%hist
-            else
-                n = nosc
-                table(row + 1:row + n, :) = nan
-                do j = 1, size(cfg%h_dampings)
-                    do k = 1, nhp
-                        table(row + (j - 1) * nhp + k, 1:2) = [cfg%h_dampings(j), &
-                                                               cfg%h_periods(k)]
-                    end do
+        nk = size(row) - 2
+        stat = 0
+        errmsg = ''
+        do j = 1, size(cfg%dampings)
+            env = nan
+            if (out_nok > 0) then
+                do k = 1, nk
+                    ! the maxima over the records are the envelope's peaks exactly; a
+                    ! column with a non-finite ordinate is refused as the records were
+                    msg = ''
+                    call design_envelope(cfg%periods, reshape(merge(nan, env_max(:, j, k), &
+                        env_bad(:, j, k)), [np, 1]), cfg%plateau_below, env(:, k), stat, msg)
+                    if (stat /= SEISPULSE_SUCCESS) then
+                        stat = 1
+                        errmsg = 'envelope: '//trim(msg)
+                        return
+                    end if
                 end do
-                table(row + 1:row + n, 8) = 1.0_dp
             end if
-            labels(row + 1:row + n) = outs(ir)%name
-            row = row + n
+            do i = 1, np
+                row(1:2) = [cfg%dampings(j), cfg%periods(i)]
+                row(3:) = env(i, 1:nk)
+                call table_row(out_envelope, row)
+            end do
         end do
+    end subroutine envelope_rows
 
-        head(1) = 'g = '//shortest_str(cfg%g) &
-            //' m/s2; the oscillator starts from rest; t = (i-1) dt ' &
-                  //'at the samples of the record'
-        head(2) = 'a_g: the ground acceleration (the record as scaled); z, z'': displacement ' &
-                  //'and velocity of the mass relative to the ground; a_abs = a_g + z'''': ' &
-                  //'absolute acceleration of the mass; T = 0: the ground (z = z'' = 0, ' &
-                  //'a_abs = a_g)'
-        head(3) = 'status: ok, or failed (one row of nan per damping and period; the ' &
-                  //'reason is below and on stderr)'
-        call record_comments(path, 'response histories of the linear oscillator on ' &
-                             //'accelerograms, one block of rows per record, damping ratio ' &
-                             //'and period', head, cfg, outs, res, comments)
-        call write_tables(prefix, 'sdof_history', comments, &
-            [character(len=8) :: 'record', 'damping', 'T', 't', 'a_g', 'z', 'z''', 'a_abs', &
-             'status'], &
-            [character(len=8) :: '-', '-', 's', 's', 'g', 'm', 'm/s', 'g', '-'], table, &
-            files_out, stat, errmsg, labels=labels, kinds=[character(len=16) :: '', '', '', '', &
-            '', '', '', '', category_kind(status_names)])
-    end subroutine write_history
+    !> Give up every table of the run (an error elsewhere): their files are dropped, the
+    !> ones already closed too.
+    subroutine drop_tables()
+        call table_drop(out_spectra)
+        call table_drop(out_envelope)
+        call table_drop(out_history)
+    end subroutine drop_tables
 
 end module driver_sdof

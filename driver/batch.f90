@@ -1,8 +1,10 @@
 !> The batch engine: an analysis whose work splits into independent units (for the
 !> records analyses one unit = one record with all its rows) hands them to batch_run,
 !> which computes them where driver_parallel says (OpenMP threads, MPI ranks), keeps a
-!> restart journal, prints the units' stderr lines in unit order and returns every
-!> unit's result to the analysis, which turns them into its tables.
+!> restart journal, prints the units' stderr lines in unit order and hands every unit's
+!> result, in unit order, to the analysis, which writes it into its tables at once: a
+!> result is held only until the units before it are done, so memory does not grow with
+!> the number of units.
 !>
 !> **The journal** `<output>.journal` (next to the tables; README "Batch driver",
 !> "Restart") records each unit as it is finished, so that a run that is killed can be
@@ -32,7 +34,7 @@ module driver_batch
     use, intrinsic :: iso_c_binding, only: c_int, c_char, c_ptr, c_size_t, c_null_char, &
                                            c_null_ptr, c_associated
     use seispulse, only: dp, int_str, seispulse_version
-    use driver_unit_result, only: unit_result_t, add_field, get_field
+    use driver_unit_result, only: unit_result_t, add_field, get_field, unit_deliver
     use driver_parallel, only: par_run_units, par_root, par_finalize, unit_work
     use driver_run_group, only: run_restart
     use driver_tables, only: make_parent_dir, remove_file
@@ -105,10 +107,11 @@ module driver_batch
 
     ! --- the state of the batch being delivered (written on the root by `deliver` only,
     ! one call at a time; the units never touch it)
-    type(unit_result_t), allocatable :: kept(:)    !! results by unit
+    type(unit_result_t), allocatable :: kept(:)    !! results by unit, until handed on
     logical, allocatable :: done(:)                !! unit delivered or restored
     logical, allocatable :: restored(:)            !! unit read from the journal
-    integer :: next_log = 1                        !! the first unit whose log is not out
+    integer :: next_log = 1                        !! the first unit not yet handed on
+    procedure(unit_deliver), pointer :: consumer => null()  !! batch_run's `consume`
     type(c_ptr) :: journal = c_null_ptr            !! the open journal (null: none)
     character(len=:), allocatable :: journal_file  !! its path (removed by batch_commit)
     logical :: journal_failed = .false.            !! a write failed (warned once)
@@ -136,21 +139,25 @@ contains
         end if
     end function journal_path
 
-    !> Compute the units of a batch and return their results (on the root). Units are
-    !> those of size(keys); with `restart = .true.` in &run those in the journal of an
-    !> earlier, killed run of the same input are restored instead of computed (one line
-    !> on stderr says how many). Each computed unit's log (its stderr lines) is printed in
-    !> unit order. stat /= 0: the journal is refused (another run's, or damaged), errmsg
-    !> "journal:line: problem (what to do)"; nothing was computed. On a worker rank (MPI)
-    !> this routine computes what the root sends it, then ends the process (status 0).
-    subroutine batch_run(path, prefix, analysis, keys, work, results, stat, errmsg)
+    !> Compute the units of a batch and hand their results to `consume` (on the root),
+    !> once each, in unit order, as soon as every unit before it is done; a result is
+    !> released once consumed. Units are those of size(keys); with `restart = .true.` in
+    !> &run those in the journal of an earlier, killed run of the same input are restored
+    !> instead of computed (one line on stderr says how many). Each computed unit's log
+    !> (its stderr lines) is printed in unit order, before the unit is consumed. `consume`
+    !> runs one call at a time, in the critical section seispulse_text (it may build
+    !> texts while units run). stat /= 0: the journal is refused (another run's, or
+    !> damaged), errmsg "journal:line: problem (what to do)"; nothing was computed or
+    !> consumed. On a worker rank (MPI) this routine computes what the root sends it, then
+    !> ends the process (status 0).
+    subroutine batch_run(path, prefix, analysis, keys, work, consume, stat, errmsg)
         character(len=*), intent(in) :: path       !! the input file (its bytes enter the
                                                    !! fingerprint)
         character(len=*), intent(in) :: prefix     !! output prefix (the journal's place)
         character(len=*), intent(in) :: analysis   !! 'newmark', 'sdof' (log lines, fingerprint)
         character(len=*), intent(in) :: keys(:)    !! one per unit: what identifies it
         procedure(unit_work) :: work               !! computes one unit (concurrently)
-        type(unit_result_t), allocatable, intent(out) :: results(:)  !! every unit's result
+        procedure(unit_deliver) :: consume         !! takes each result, in unit order
         integer, intent(out) :: stat               !! 0, or 1 (journal refused)
         character(len=:), allocatable, intent(out) :: errmsg
         character(len=16) :: fp
@@ -215,14 +222,15 @@ contains
         journal_file = jpath
         call open_journal(jpath, fp, n)
         todo = pack([(i, i = 1, n)], .not. restored)
-        call print_logs()
+        consumer => consume
+        call hand_on()
         call par_run_units(todo, work, deliver)
+        consumer => null()
         if (c_associated(journal)) then
             if (c_fclose(journal) /= 0) call journal_warning()
             journal = c_null_ptr
         end if
-        call move_alloc(kept, results)
-        deallocate(done, restored)
+        deallocate(kept, done, restored)
     end subroutine batch_run
 
     !> After the tables of the run are committed: remove its journal (if any).
@@ -256,7 +264,7 @@ contains
         res%text = int_str(i)
     end subroutine nothing
 
-    !> On the root, one unit at a time: journal it, keep it, print the logs now due.
+    !> On the root, one unit at a time: journal it, keep it, hand on the units now due.
     subroutine deliver(i, res)
         integer, intent(in) :: i
         type(unit_result_t), intent(in) :: res
@@ -269,26 +277,29 @@ contains
             line = unit_line(i, res)
             call put_line(line)
         end if
-        call print_logs()
+        call hand_on()
     end subroutine deliver
 
-    !> Print the logs of the units from next_log on, in order, up to the first unit not
-    !> yet done (a restored unit prints nothing: one line said how many were restored).
-    subroutine print_logs()
-        logical :: printed
-        printed = .false.
+    !> The units from next_log on, in order, up to the first unit not yet done: print its
+    !> log (a restored unit prints nothing: one line said how many were restored), hand
+    !> it to the consumer, release it.
+    subroutine hand_on()
+        type(unit_result_t) :: empty
         do while (next_log <= size(done))
             if (.not. done(next_log)) exit
             if (.not. restored(next_log) .and. allocated(kept(next_log)%log)) then
                 if (len(kept(next_log)%log) > 0) then
                     write(error_unit, '(a)') kept(next_log)%log
-                    printed = .true.
+                    flush(error_unit)
                 end if
             end if
+            !$omp critical (seispulse_text)
+            call consumer(next_log, kept(next_log))
+            !$omp end critical (seispulse_text)
+            kept(next_log) = empty
             next_log = next_log + 1
         end do
-        if (printed) flush(error_unit)
-    end subroutine print_logs
+    end subroutine hand_on
 
     ! ------------------------------------------------------------------------------
     ! Writing the journal
@@ -842,32 +853,29 @@ contains
     ! Records as units
     ! ------------------------------------------------------------------------------
 
-    !> The key of each record (one unit per record): the path opened, the file's size in
-    !> bytes (-1: none), and how it is read and scaled (format, units, dt, scale, target
-    !> PGA as exact bits, polarity, the PGA rounding).
+    !> The key of each record (one unit per record): the FNV-1a hash (16 hex digits: a
+    !> key per record costs 16 bytes, whatever the length of its path) of the path
+    !> opened, the file's size in bytes (-1: none), and how it is read and scaled
+    !> (format, units, dt, scale, target PGA as exact bits, polarity, the PGA rounding).
     function record_keys(recs, slammer_rounding) result(keys)
         type(record_in_t), intent(in) :: recs(:)
         logical, intent(in) :: slammer_rounding
-        character(len=:), allocatable :: keys(:)
-        character(len=:), allocatable :: k1
+        character(len=16) :: keys(size(recs))
+        type(fnv_t) :: h
         integer(int64) :: size8
-        integer :: i, l
+        integer :: i
         logical :: exists
-        l = 1
-        do i = 1, size(recs)
-            l = max(l, len(recs(i)%path) + 120)
-        end do
-        allocate(character(len=l) :: keys(size(recs)))
         do i = 1, size(recs)
             associate (r => recs(i))
                 size8 = -1
                 inquire(file=r%path, exist=exists)
                 if (exists) inquire(file=r%path, size=size8)
-                k1 = r%path//KEY_SEP//int_str(int(min(size8, int(huge(0), int64)))) &
+                h = fnv_t()
+                call fnv_feed(h, r%path//KEY_SEP//int_str(int(min(size8, int(huge(0), int64)))) &
                      //KEY_SEP//int_str(r%fmt)//KEY_SEP//int_str(r%units) &
                      //KEY_SEP//hex_real(r%dt)//hex_real(r%scale)//hex_real(r%target) &
-                     //KEY_SEP//int_str(r%polarity)//KEY_SEP//merge('s', 'e', slammer_rounding)
-                keys(i) = k1
+                     //KEY_SEP//int_str(r%polarity)//KEY_SEP//merge('s', 'e', slammer_rounding))
+                keys(i) = fnv_hex(h)
             end associate
         end do
     end function record_keys

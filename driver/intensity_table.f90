@@ -13,15 +13,16 @@ module driver_intensity_table
                          record_intensity, &
                          spectral_acceleration, sdof_validate
     use driver_input, only: list_length, value_name, list_item
-    use driver_tables, only: write_tables, say_written, category_kind, status_names
-    use driver_records, only: record_in_t, record_out_t, record_line, report, label_len
+    use driver_tables, only: table_t, table_open, table_comment, table_row, category_kind, &
+                             status_names
+    use driver_records, only: record_in_t, record_out_t, record_line, report
     use driver_echo, only: echo_unit
     use driver_unit_result, only: unit_result_t
     implicit none
     private
 
     public :: intensity_table_t, intensity_check, intensity_echo, intensity_start, &
-              intensity_record, intensity_failures, intensity_write, SA_DAMPING
+              intensity_record, intensity_open, intensity_add, SA_DAMPING
 
     real(dp), parameter :: SA_DAMPING = 0.05_dp   !! damping ratio of the Sa columns
 
@@ -132,13 +133,6 @@ contains
         itab%table(ir, size(itab%table, 2)) = 0.0_dp
     end subroutine intensity_record
 
-    !> Rows of the table that failed (status failed); 0 without the table.
-    integer function intensity_failures(itab) result(n)
-        type(intensity_table_t), intent(in) :: itab
-        n = 0
-        if (itab%on) n = count(itab%table(:, size(itab%table, 2)) > 0.5_dp)
-    end function intensity_failures
-
     !> The keys of the intensity table in effect, as a &newmark group (when it is on).
     subroutine intensity_echo(itab)
         type(intensity_table_t), intent(in) :: itab
@@ -155,48 +149,24 @@ contains
         end subroutine echo
     end subroutine intensity_echo
 
-    !> Write <prefix>_intensity (txt and csv) and say so. stat /= 0: an output error.
-    subroutine intensity_write(path, prefix, g, recs, outs, itab, stat, errmsg)
+    !> Start the table <prefix>_intensity (when it is on): its columns and the header
+    !> lines before the records'; intensity_add writes each record's line and row.
+    !> stat /= 0: an output error (nothing is left).
+    subroutine intensity_open(t, path, prefix, g, itab, stat, errmsg)
+        type(table_t), intent(out) :: t
         character(len=*), intent(in) :: path, prefix
         real(dp), intent(in) :: g
-        type(record_in_t), intent(in) :: recs(:)
-        type(record_out_t), intent(in) :: outs(:)
         type(intensity_table_t), intent(in) :: itab
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
-        character(len=4096), allocatable :: comments(:)
         character(len=24), allocatable :: names(:), col_units(:), kinds(:)
-        character(len=label_len(outs)), allocatable :: labels(:)
-        character(len=512) :: files_out(2)
         character(len=:), allocatable :: line
-        integer :: ir, k, np
+        integer :: k, np
 
         stat = 0
         errmsg = ''
         if (.not. itab%on) return
         np = size(itab%periods)
-        allocate(comments(6 + size(outs)))
-        comments(1) = 'seispulse analysis newmark: intensity measures of each record ' &
-                      //'(doc/intensity.md), one row per record'
-        comments(2) = 'input: '//trim(path)
-        comments(3) = 'the record as analysed (read, scaled, polarity), linear between ' &
-                      //'samples; g = '//shortest_str(g) &
-                          //' m/s2; pgv, pgd from rest at the first ' &
-                      //'sample, true peaks'
-        comments(4) = 'arias = pi/(2g) int a^2 dt; cav = int |a| dt; d5_75, d5_95 from the ' &
-                      //'Husid curve (NaN without energy); tm: mean period, 0.25-20 Hz'
-        line = 'sa_T=...: pseudo-spectral acceleration (2 pi/T)^2 SD/g, damping ' &
-               //shortest_str(SA_DAMPING)//'; status: ok, or failed (nan results)'
-        if (np == 0) line = 'no sa_periods; status: ok, or failed (nan results)'
-        comments(5) = line
-        comments(6) = 'records (index, file, format read, npts, dt (s), PGA as read (g), ' &
-                      //'scale factor):'
-        do ir = 1, size(outs)
-            line = record_line(ir, recs(ir), outs(ir))
-            if (outs(ir)%ok .and. len_trim(itab%notes(ir)) > 0) &
-                line = line//'; FAILED: '//trim(itab%notes(ir))
-            comments(6 + ir) = line
-        end do
         allocate(names(n_measures + np + 2), col_units(n_measures + np + 2))
         names(1:n_measures + 1) = [character(len=24) :: 'record', 'pga', 'pgv', 'pgd', &
             'arias', 'cav', 'd5_75', 'd5_95', 'tm']
@@ -208,17 +178,45 @@ contains
         end do
         names(n_measures + np + 2) = 'status'
         col_units(n_measures + np + 2) = '-'
-        allocate(labels(size(outs)))
-        do ir = 1, size(outs)
-            labels(ir) = outs(ir)%name
-        end do
         allocate(kinds(n_measures + np + 2))
         kinds = ''
         kinds(n_measures + np + 2) = category_kind(status_names)
-        call write_tables(prefix, 'intensity', comments, names, col_units, itab%table, &
-                          files_out, stat, errmsg, labels=labels, kinds=kinds)
+        call table_open(t, prefix, 'intensity', names, col_units, stat, errmsg, kinds=kinds, &
+                        labelled=.true.)
         if (stat /= 0) return
-        call say_written('intensity table', files_out)
-    end subroutine intensity_write
+        call table_comment(t, 'seispulse analysis newmark: intensity measures of each ' &
+                           //'record (doc/intensity.md), one row per record')
+        call table_comment(t, 'input: '//trim(path))
+        call table_comment(t, 'the record as analysed (read, scaled, polarity), linear ' &
+                           //'between samples; g = '//shortest_str(g) &
+                           //' m/s2; pgv, pgd from rest at the first sample, true peaks')
+        call table_comment(t, 'arias = pi/(2g) int a^2 dt; cav = int |a| dt; d5_75, d5_95 ' &
+                           //'from the Husid curve (NaN without energy); tm: mean period, ' &
+                           //'0.25-20 Hz')
+        line = 'sa_T=...: pseudo-spectral acceleration (2 pi/T)^2 SD/g, damping ' &
+               //shortest_str(SA_DAMPING)//'; status: ok, or failed (nan results)'
+        if (np == 0) line = 'no sa_periods; status: ok, or failed (nan results)'
+        call table_comment(t, line)
+        call table_comment(t, 'records (index, file, format read, npts, dt (s), PGA as ' &
+                           //'read (g), scale factor):')
+    end subroutine intensity_open
+
+    !> Record ir of the intensity table: its header line and its row (measures, Sa,
+    !> status; `note`: why it failed, '' if it did not). failed: its status is failed.
+    subroutine intensity_add(t, ir, r, o, row, note, failed)
+        type(table_t), intent(inout) :: t
+        integer, intent(in) :: ir
+        type(record_in_t), intent(in) :: r
+        type(record_out_t), intent(in) :: o
+        real(dp), intent(in) :: row(:)
+        character(len=*), intent(in) :: note
+        logical, intent(out) :: failed
+        character(len=:), allocatable :: line
+        line = record_line(ir, r, o)
+        if (o%ok .and. len_trim(note) > 0) line = line//'; FAILED: '//trim(note)
+        call table_comment(t, line)
+        call table_row(t, row, o%name)
+        failed = row(size(row)) > 0.5_dp
+    end subroutine intensity_add
 
 end module driver_intensity_table

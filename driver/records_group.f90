@@ -27,7 +27,7 @@ module driver_records
     public :: records_keys, record_in_t, record_out_t, records_defaults, read_records
     public :: check_records, echo_records, load_record, progress, report
     public :: path_len, short, records_missing, record_line, failed_records, resolve, &
-              record_place, &
+              record_place, add_failed_record, &
               count_strings, label_len
 
     character(len=12), parameter :: records_keys(9) = [character(len=12) :: 'files', &
@@ -963,16 +963,26 @@ contains
         s = ''
         named = 0
         do ir = 1, size(outs)
-            if (.not. failed(ir)) cycle
-            named = named + 1
-            if (named > max_named) then
-                s = s//', ...'
-                exit
-            end if
-            if (named > 1) s = s//', '
-            s = s//int_str(ir)//' '''//outs(ir)%name//''''
+            if (failed(ir)) call add_failed_record(s, named, ir, outs(ir)%name)
         end do
     end function failed_records
+
+    !> Add record ir, `name`, to s, the list of failed_records built one record at a time
+    !> (`named`: records added so far, 0 at first).
+    subroutine add_failed_record(s, named, ir, name)
+        character(len=:), allocatable, intent(inout) :: s
+        integer, intent(inout) :: named
+        integer, intent(in) :: ir
+        character(len=*), intent(in) :: name
+        named = named + 1
+        if (named > max_named + 1) return
+        if (named > max_named) then
+            s = s//', ...'
+        else
+            if (named > 1) s = s//', '
+            s = s//int_str(ir)//' '''//name//''''
+        end if
+    end subroutine add_failed_record
 
     !> " -> 0.4 g" (or with the polarity) when the record is scaled or turned over.
     function scaled_text(o) result(s)

@@ -6,8 +6,13 @@
 !> ends without an input error (commit_outputs); on an input error (discard_outputs) the
 !> temporary files and the files an earlier run wrote under the same prefix are removed.
 !> table_path is the one place that builds an output file name.
-!> Only the root of an MPI job writes: on another rank (driver_parallel) write_tables
-!> writes nothing, open_output opens /dev/null, and nothing is renamed or deleted.
+!> A table is written row by row (table_t: table_open, table_comment, table_row,
+!> table_close), so that a batch over thousands of records never holds its tables: the
+!> CSV lines go out at once and the .txt, whose columns are aligned over all rows, is
+!> assembled at the end from scratch files. write_tables writes a table held in memory
+!> through the same routines.
+!> Only the root of an MPI job writes: on another rank (driver_parallel) a table writes
+!> nothing, open_output opens /dev/null, and nothing is renamed or deleted.
 module driver_tables
     use, intrinsic :: iso_fortran_env, only: output_unit, int64
     use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_associated
@@ -20,6 +25,7 @@ module driver_tables
     private
 
     public :: write_tables, delete_files, say_written, stack
+    public :: table_t, table_open, table_comment, table_row, table_close, table_drop
     public :: write_table_pair, category_kind, table_path, commit_outputs, discard_outputs
     public :: open_output, status_names
     public :: make_parent_dir, remove_file
@@ -34,6 +40,31 @@ module driver_tables
     type :: path_t
         character(len=:), allocatable :: s
     end type path_t
+
+    !> A table written row by row (table_open, then table_comment and table_row, then
+    !> table_close; write_tables does all of it for a table held in memory). The CSV rows
+    !> are written as they come; the .txt needs the width of every column before its
+    !> first row, so its header lines and its cells wait in two scratch files until
+    !> table_close: memory does not grow with the rows. The first error is kept (stat,
+    !> errmsg; both files are dropped) and later calls do nothing.
+    type :: table_t
+        character(len=512) :: files(2) = ''       !! final paths: txt, csv
+        integer :: stat = 0                       !! the first error (0: none)
+        character(len=:), allocatable :: errmsg   !! its message
+        logical :: writing = .false.              !! files open and no error (root only)
+        logical :: created = .false.              !! its files are outputs of this run
+        logical :: summary = .false.              !! one row as name/value/unit lines
+        integer :: ut = -1, uc = -1               !! the .txt and the .csv (<path>.part)
+        integer :: ucom = -1, ucell = -1          !! scratch: header lines, .txt cells
+        integer :: ncol = 0, ndat = 0, j0 = 1     !! columns, numeric ones, first numeric
+        integer :: nrow = 0, ncom = 0             !! rows and header lines so far
+        integer :: digits = 0, csv_digits = 0     !! &run digits, csv_digits
+        type(path_t), allocatable :: names(:), units(:)
+        integer, allocatable :: kind_of(:), width(:), ncat(:)
+        type(path_t), allocatable :: cats(:, :)   !! names of the category columns' codes
+        character(len=:), allocatable :: line, cells  !! buffers: a line, a row's cells
+        character(len=512) :: iomsg = ''
+    end type table_t
 
     !> Final paths of the files written under <path>.part in this run, not yet renamed.
     type(path_t), allocatable :: pending(:)
@@ -261,6 +292,379 @@ contains
         npending = j
     end subroutine drop_output
 
+    !> Start table `name` of the run (see write_tables for the layout, `kinds` and
+    !> `summary`; `labelled`: the first column is text, given to table_row as `label`):
+    !> its .txt and .csv are created as <path>.part (open_output) and the CSV header is
+    !> written. Then table_comment and table_row in any order, then table_close; after a
+    !> failure elsewhere, table_drop. Nothing is written on a rank other than the root of
+    !> an MPI job (t%files still names the files). stat /= 0 with errmsg: nothing is left.
+    subroutine table_open(t, prefix, name, names, units, stat, errmsg, kinds, labelled, &
+                          summary)
+        type(table_t), intent(out) :: t
+        character(len=*), intent(in) :: prefix          !! output prefix (may contain a directory)
+        character(len=*), intent(in) :: name            !! table name, e.g. 'pulse'
+        character(len=*), intent(in) :: names(:)        !! column names
+        character(len=*), intent(in) :: units(:)        !! column units
+        integer, intent(out) :: stat                    !! 0 or an iostat
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=*), intent(in), optional :: kinds(:)   !! column kinds
+        logical, intent(in), optional :: labelled       !! the first column is text
+        logical, intent(in), optional :: summary        !! one row as name/value/unit lines
+        character(len=:), allocatable :: head
+        integer :: j
+
+        t%ncol = size(names)
+        t%j0 = 1
+        if (present(labelled)) then
+            if (labelled) t%j0 = 2
+        end if
+        t%ndat = t%ncol - t%j0 + 1
+        t%digits = run_digits()
+        t%csv_digits = run_csv_digits()
+        if (present(summary)) t%summary = summary
+        t%errmsg = ''
+        t%files(1) = table_path(prefix, name, 'txt')
+        t%files(2) = table_path(prefix, name, 'csv')
+        stat = 0
+        errmsg = ''
+        if (.not. par_root()) return        ! the root of an MPI job writes them
+
+        ! the names and units, the kind of each numeric column, the names of a category
+        ! column, and the width of each text column: at least its name and (unit)
+        allocate(t%names(t%ncol), t%units(t%ncol), t%width(t%ncol))
+        do j = 1, t%ncol
+            t%names(j)%s = trim(names(j))
+            t%units(j)%s = trim(units(j))
+            t%width(j) = max(len_trim(names(j)), len_trim(units(j)) + 2)
+        end do
+        allocate(t%kind_of(t%ndat), t%ncat(t%ndat), t%cats(0:63, t%ndat))
+        t%kind_of = KIND_REAL
+        t%ncat = 0
+        if (present(kinds)) then
+            do j = 1, t%ndat
+                if (j + t%j0 - 1 > size(kinds)) exit
+                call parse_kind(kinds(j + t%j0 - 1), t%kind_of(j), t%cats(:, j), t%ncat(j))
+            end do
+        end if
+
+        call open_output(trim(t%files(1)), t%ut, stat, errmsg)
+        if (stat /= 0) return
+        t%created = .true.
+        call open_output(trim(t%files(2)), t%uc, stat, errmsg)
+        if (stat /= 0) then
+            call table_fail(t, '')
+            return
+        end if
+        t%writing = .true.
+        ! the .txt waits for the widths: its header lines and cells go to scratch files
+        ! (unformatted stream: lengths, then bytes)
+        open(newunit=t%ucom, status='scratch', access='stream', form='unformatted', &
+             iostat=t%stat, iomsg=t%iomsg)
+        if (t%stat == 0) open(newunit=t%ucell, status='scratch', access='stream', &
+                              form='unformatted', iostat=t%stat, iomsg=t%iomsg)
+        if (t%stat /= 0) then
+            call table_fail(t, 'cannot open a scratch file for '//trim(t%files(1)) &
+                            //' (in TMPDIR, else /tmp)')
+        else
+            ! CSV: the header "name (unit)"
+            head = t%names(1)%s//' ('//t%units(1)%s//')'
+            do j = 2, t%ncol
+                head = head//','//t%names(j)%s//' ('//t%units(j)%s//')'
+            end do
+            write(t%uc, '(a)', iostat=t%stat, iomsg=t%iomsg) head
+            if (t%stat /= 0) call table_write_failed(t)
+        end if
+        stat = t%stat
+        errmsg = t%errmsg
+    end subroutine table_open
+
+    !> A header line of the .txt (written with '# ' before it; trailing blanks dropped).
+    subroutine table_comment(t, line)
+        type(table_t), intent(inout) :: t
+        character(len=*), intent(in) :: line
+        if (.not. t%writing) return
+        write(t%ucom, iostat=t%stat, iomsg=t%iomsg) len_trim(line), trim(line)
+        if (t%stat /= 0) call table_write_failed(t)
+        t%ncom = t%ncom + 1
+    end subroutine table_comment
+
+    !> The next row: its numeric columns (t%ndat values) and, in a labelled table, the text
+    !> of its first column. The CSV line is written now; the .txt cells wait.
+    subroutine table_row(t, values, label)
+        type(table_t), intent(inout) :: t
+        real(dp), intent(in) :: values(:)               !! the numeric columns
+        character(len=*), intent(in), optional :: label !! the first column's text
+        ! each number is converted once, for the CSV cell and the .txt cell
+        character(len=NUM_LEN) :: cells(size(values)), ctext(size(values))
+        integer :: lens(t%ncol)
+        character(len=:), allocatable :: c
+        integer :: j, pos, cpos
+
+        if (.not. t%writing) return
+        call format_reals(values, t%digits, cells, t%csv_digits, ctext)
+        pos = 0
+        cpos = 0
+        if (present(label)) then
+            call append(t%line, pos, csv_quote(label))
+            lens(1) = len_trim(label)
+            call append(t%cells, cpos, label(1:lens(1)))
+        end if
+        do j = 1, t%ndat
+            if (pos > 0) call append(t%line, pos, ',')
+            select case (t%kind_of(j))
+            case (KIND_INT)
+                c = trim(int_text(values(j)))
+                call append(t%line, pos, c)
+            case (KIND_CAT)
+                c = cat_text(t, values(j), j)
+                call append(t%line, pos, '"'//c//'"')
+            case default
+                c = trim(cells(j))
+                call append(t%line, pos, trim(ctext(j)))
+            end select
+            lens(j + t%j0 - 1) = len(c)
+            call append(t%cells, cpos, c)
+        end do
+        do j = 1, t%ncol
+            t%width(j) = max(t%width(j), lens(j))
+        end do
+        write(t%uc, '(a)', iostat=t%stat, iomsg=t%iomsg) t%line(1:pos)
+        if (t%stat == 0) write(t%ucell, iostat=t%stat, iomsg=t%iomsg) lens, t%cells(1:cpos)
+        if (t%stat /= 0) call table_write_failed(t)
+        t%nrow = t%nrow + 1
+    end subroutine table_row
+
+    !> Write the .txt (the header lines: `lead`, then those of table_comment; the column
+    !> names and units; the rows aligned) and close both files (they are renamed by
+    !> commit_outputs). stat /= 0 with errmsg: the first error of this table (both files
+    !> are dropped).
+    subroutine table_close(t, stat, errmsg, lead)
+        type(table_t), intent(inout) :: t
+        integer, intent(out) :: stat
+        character(len=:), allocatable, intent(out) :: errmsg
+        character(len=*), intent(in), optional :: lead(:)  !! first header lines (known last)
+        character(len=:), allocatable :: text
+        integer :: k, n
+
+        if (t%writing) then
+            ! the header lines, then the table
+            if (present(lead)) then
+                do k = 1, size(lead)
+                    if (t%stat == 0) write(t%ut, '(a)', iostat=t%stat, iomsg=t%iomsg) &
+                        '# '//trim(lead(k))
+                end do
+            end if
+            do k = 1, t%ncom
+                if (t%stat /= 0) exit
+                if (k == 1) then
+                    read(t%ucom, pos=1, iostat=t%stat, iomsg=t%iomsg) n
+                else
+                    read(t%ucom, iostat=t%stat, iomsg=t%iomsg) n
+                end if
+                if (t%stat /= 0) exit
+                if (allocated(text)) deallocate(text)
+                allocate(character(len=n) :: text)
+                read(t%ucom, iostat=t%stat, iomsg=t%iomsg) text
+                if (t%stat == 0) write(t%ut, '(a)', iostat=t%stat, iomsg=t%iomsg) '# '//text
+                if (t%stat /= 0) exit
+            end do
+            if (t%stat == 0) then
+                if (t%summary .and. t%nrow == 1) then
+                    call write_summary(t)
+                else
+                    call write_text_rows(t)
+                end if
+            end if
+            if (t%stat /= 0) then
+                call table_write_failed(t)
+            else
+                close(t%ucom, iostat=k)
+                close(t%ucell, iostat=k)
+                close(t%ut, iostat=t%stat, iomsg=t%iomsg)
+                t%ut = -1
+                if (t%stat == 0) close(t%uc, iostat=t%stat, iomsg=t%iomsg)
+                t%uc = -1
+                if (t%stat /= 0) call table_fail(t, 'cannot close the tables')
+            end if
+            t%writing = .false.
+        end if
+        stat = t%stat
+        errmsg = ''
+        if (allocated(t%errmsg)) errmsg = t%errmsg
+    end subroutine table_close
+
+    !> Give up a table (another part of the run failed): its files, being written or
+    !> closed already, are dropped (no longer outputs of the run). A table never opened:
+    !> nothing.
+    subroutine table_drop(t)
+        type(table_t), intent(inout) :: t
+        if (t%created) call table_fail(t, '')
+    end subroutine table_drop
+
+    !> The row cells from the scratch file, each column right-aligned to its width (the
+    !> label column left-adjusted) after a blank, under the header lines (names, then
+    !> (units)) that start with '#' in place of the first blank.
+    subroutine write_text_rows(t)
+        type(table_t), intent(inout) :: t
+        integer :: lens(t%ncol)
+        integer :: i, k, pos, p
+        character(len=:), allocatable :: head
+        if (allocated(t%line)) deallocate(t%line)
+        allocate(character(len=sum(t%width) + t%ncol) :: t%line)
+        ! the header lines
+        pos = 0
+        do k = 1, t%ncol
+            call put_cell(t%names(k)%s, k)
+        end do
+        t%line(1:1) = '#'
+        write(t%ut, '(a)', iostat=t%stat, iomsg=t%iomsg) t%line(1:pos)
+        pos = 0
+        do k = 1, t%ncol
+            head = '('//t%units(k)%s//')'
+            call put_cell(head, k)
+        end do
+        t%line(1:1) = '#'
+        if (t%stat == 0) write(t%ut, '(a)', iostat=t%stat, iomsg=t%iomsg) t%line(1:pos)
+        ! the rows
+        do i = 1, t%nrow
+            if (t%stat /= 0) return
+            call read_cells(t, i, lens)
+            if (t%stat /= 0) return
+            pos = 0
+            p = 0
+            do k = 1, t%ncol
+                call put_cell(t%cells(p + 1:p + lens(k)), k)
+                p = p + lens(k)
+            end do
+            write(t%ut, '(a)', iostat=t%stat, iomsg=t%iomsg) t%line(1:pos)
+        end do
+    contains
+        !> Append ' ' and c in the width of column k (left-adjusted in a label column).
+        subroutine put_cell(c, k)
+            character(len=*), intent(in) :: c
+            integer, intent(in) :: k
+            integer :: w, n
+            w = t%width(k)
+            n = len(c)
+            t%line(pos + 1:pos + 1 + w) = ' '
+            if (k < t%j0) then
+                t%line(pos + 2:pos + 1 + n) = c
+            else
+                t%line(pos + 2 + w - n:pos + 1 + w) = c
+            end if
+            pos = pos + 1 + w
+        end subroutine put_cell
+    end subroutine write_text_rows
+
+    !> One `name  value  unit` line per column (the one row of a summary).
+    subroutine write_summary(t)
+        type(table_t), intent(inout) :: t
+        integer :: lens(t%ncol)
+        integer :: wn, wv, k, p
+        call read_cells(t, 1, lens)
+        if (t%stat /= 0) return
+        wn = 0
+        do k = 1, t%ncol
+            wn = max(wn, len(t%names(k)%s))
+        end do
+        wv = maxval(lens)
+        p = 0
+        do k = 1, t%ncol
+            if (t%stat /= 0) return
+            write(t%ut, '(a)', iostat=t%stat, iomsg=t%iomsg) pad(t%names(k)%s, wn)//'  ' &
+                //repeat(' ', wv - lens(k))//t%cells(p + 1:p + lens(k))//'  '//t%units(k)%s
+            p = p + lens(k)
+        end do
+    end subroutine write_summary
+
+    !> The cells of row i (rows are read in order) into t%cells, their lengths into lens.
+    subroutine read_cells(t, i, lens)
+        type(table_t), intent(inout) :: t
+        integer, intent(in) :: i
+        integer, intent(out) :: lens(:)
+        integer :: n
+        if (i == 1) then
+            read(t%ucell, pos=1, iostat=t%stat, iomsg=t%iomsg) lens
+        else
+            read(t%ucell, iostat=t%stat, iomsg=t%iomsg) lens
+        end if
+        if (t%stat /= 0) return
+        n = sum(lens)
+        if (.not. allocated(t%cells)) allocate(character(len=max(256, n)) :: t%cells)
+        if (len(t%cells) < n) then
+            deallocate(t%cells)
+            allocate(character(len=2 * n) :: t%cells)
+        end if
+        read(t%ucell, iostat=t%stat, iomsg=t%iomsg) t%cells(1:n)
+    end subroutine read_cells
+
+    !> A category code as its name ('undecided' for -1, 'nan' for NaN) of numeric column j.
+    function cat_text(t, x, j) result(c)
+        type(table_t), intent(in) :: t
+        real(dp), intent(in) :: x
+        integer, intent(in) :: j
+        character(len=:), allocatable :: c
+        integer :: k
+        if (ieee_is_nan(x)) then
+            c = 'nan'
+            return
+        end if
+        k = -2
+        if (abs(x) < 1.0e9_dp) k = nint(x)
+        if (abs(x - real(k, dp)) > 0.0_dp) k = -2   ! not a code
+        if (k >= 0 .and. k < t%ncat(j)) then
+            c = t%cats(k, j)%s
+        else if (k == -1) then
+            c = 'undecided'
+        else
+            c = g_str(x, 17)
+        end if
+    end function cat_text
+
+    !> A write failed: the message names the files and the system's reason.
+    subroutine table_write_failed(t)
+        type(table_t), intent(inout) :: t
+        call table_fail(t, 'cannot write '//trim(t%files(1))//' / '//trim(t%files(2)))
+    end subroutine table_write_failed
+
+    !> Close and drop both files; keep the first error (`what`: its text, '' to keep the
+    !> one set already).
+    subroutine table_fail(t, what)
+        type(table_t), intent(inout) :: t
+        character(len=*), intent(in) :: what
+        integer :: ios
+        if (len(what) > 0 .and. len(t%errmsg) == 0) t%errmsg = what//': '//trim(t%iomsg)
+        if (t%ut /= -1) close(t%ut, iostat=ios)
+        if (t%uc /= -1) close(t%uc, iostat=ios)
+        if (t%ucom /= -1) close(t%ucom, iostat=ios)
+        if (t%ucell /= -1) close(t%ucell, iostat=ios)
+        t%ut = -1
+        t%uc = -1
+        t%ucom = -1
+        t%ucell = -1
+        call drop_output(trim(t%files(1)))
+        call drop_output(trim(t%files(2)))
+        if (t%stat == 0) t%stat = 1
+        t%writing = .false.
+        t%created = .false.
+    end subroutine table_fail
+
+    !> Append c to text(1:pos), growing text.
+    subroutine append(text, pos, c)
+        character(len=:), allocatable, intent(inout) :: text
+        integer, intent(inout) :: pos
+        character(len=*), intent(in) :: c
+        character(len=:), allocatable :: grown
+        if (.not. allocated(text)) allocate(character(len=max(256, 2 * len(c))) :: text)
+        if (pos + len(c) > len(text)) then
+            allocate(character(len=2 * (pos + len(c))) :: grown)
+            grown(1:pos) = text(1:pos)
+            call move_alloc(grown, text)
+        end if
+        text(pos + 1:pos + len(c)) = c
+        pos = pos + len(c)
+    end subroutine append
+
     !> Write table `name` of the run: table_path(prefix, name, 'txt') and (..., 'csv')
     !> (as <path>.part until commit_outputs).
     !>
@@ -274,6 +678,7 @@ contains
     !> the .csv). With `summary` and one row, the .txt has one `name  value  unit` line
     !> per column instead of a header and a row (the .csv is the same).
     !> On a rank other than the root of an MPI job: only `files` (nothing is written).
+    !> A table built row by row (a batch) uses table_open ... table_close directly.
     subroutine write_tables(prefix, name, comments, names, units, data, files, stat, errmsg, &
                             labels, kinds, summary)
         character(len=*), intent(in) :: prefix          !! output prefix (may contain a directory)
@@ -288,266 +693,24 @@ contains
         character(len=*), intent(in), optional :: labels(:)  !! text of the first column, per row
         character(len=*), intent(in), optional :: kinds(:)   !! column kinds (see above)
         logical, intent(in), optional :: summary        !! one row as name/value/unit lines
-        character(len=512) :: iomsg
-        integer :: ut, uc, i, j, ncol, j0, nrow, ndat, digits, csv_digits, pos
-        integer, allocatable :: kind_of(:), width(:)
-        type(path_t), allocatable :: cats(:, :)
-        integer, allocatable :: ncat(:)
-        ! the text of each cell of the .txt (a category name longer than that is
-        ! written from cat_text directly)
-        character(len=NUM_LEN), allocatable :: cells(:, :)
-        character(len=NUM_LEN), allocatable :: ctext(:)      ! the CSV cells of a row
-        character(len=:), allocatable :: line, head, text
-        logical :: as_summary
-
-        ncol = size(names)
-        nrow = size(data, 1)
-        ndat = size(data, 2)
-        j0 = 1          ! first numeric column in names/units
-        if (present(labels)) j0 = 2
-        digits = run_digits()
-        csv_digits = run_csv_digits()
-        as_summary = .false.
-        if (present(summary)) as_summary = summary .and. nrow == 1
-        errmsg = ''
-        iomsg = ''
-        files(1) = table_path(prefix, name, 'txt')
-        files(2) = table_path(prefix, name, 'csv')
-        stat = 0
-        if (.not. par_root()) return        ! the root of an MPI job writes them
-
-        ! the kind of each numeric column, and the names of a category column
-        allocate(kind_of(ndat), ncat(ndat), cats(0:63, ndat))
-        kind_of = KIND_REAL
-        ncat = 0
-        if (present(kinds)) then
-            do j = 1, ndat
-                if (j + j0 - 1 > size(kinds)) exit
-                call parse_kind(kinds(j + j0 - 1), kind_of(j), cats(:, j), ncat(j))
-            end do
-        end if
-
-        ut = -1
-        uc = -1
-        call open_output(trim(files(1)), ut, stat, errmsg)
+        type(table_t) :: t
+        integer :: i
+        ! an absent kinds/summary is passed on as absent
+        call table_open(t, prefix, name, names, units, stat, errmsg, kinds=kinds, &
+                        labelled=present(labels), summary=summary)
+        files = t%files
         if (stat /= 0) return
-        call open_output(trim(files(2)), uc, stat, errmsg)
-        if (stat /= 0) then
-            call fail('')
-            return
-        end if
-
-        ! the width of each text column: at least its name and (unit)
-        allocate(width(ncol))
-        do j = 1, ncol
-            width(j) = max(len_trim(names(j)), len_trim(units(j)) + 2)
-        end do
-        if (present(labels)) then
-            do i = 1, nrow
-                width(1) = max(width(1), len_trim(labels(i)))
-            end do
-        end if
-
-        ! CSV: header "name (unit)", then the rows; each number is converted once, for
-        ! the CSV cell and the text cell (kept for the .txt, written when the widths
-        ! are known)
-        head = trim(names(1))//' ('//trim(units(1))//')'
-        do j = 2, ncol
-            head = head//','//trim(names(j))//' ('//trim(units(j))//')'
-        end do
-        write(uc, '(a)', iostat=stat, iomsg=iomsg) head
-        allocate(cells(nrow, ndat), ctext(ndat))
-        do i = 1, nrow
-            if (stat /= 0) exit
-            call format_reals(data(i, :), digits, cells(i, :), csv_digits, ctext)
-            pos = 0
-            if (present(labels)) call put(csv_quote(labels(i)))
-            do j = 1, ndat
-                if (pos > 0) call put(',')
-                select case (kind_of(j))
-                case (KIND_INT)
-                    cells(i, j) = int_text(data(i, j))
-                    call put(trim(cells(i, j)))
-                case (KIND_CAT)
-                    head = cat_text(data(i, j), j)
-                    cells(i, j) = head
-                    call put('"'//head//'"')
-                    width(j + j0 - 1) = max(width(j + j0 - 1), len(head))
-                case default
-                    call put(trim(ctext(j)))
-                end select
-                width(j + j0 - 1) = max(width(j + j0 - 1), len_trim(cells(i, j)))
-            end do
-            write(uc, '(a)', iostat=stat, iomsg=iomsg) text(1:pos)
-        end do
-
         do i = 1, size(comments)
-            if (stat /= 0) exit
-            write(ut, '(a)', iostat=stat, iomsg=iomsg) '# '//trim(comments(i))
+            call table_comment(t, comments(i))
         end do
-        if (stat == 0) then
-            if (as_summary) then
-                call write_summary(cells)
+        do i = 1, size(data, 1)
+            if (present(labels)) then
+                call table_row(t, data(i, :), labels(i))
             else
-                call write_text_table(cells)
+                call table_row(t, data(i, :))
             end if
-        end if
-        if (stat /= 0) then
-            call fail('cannot write '//trim(files(1))//' / '//trim(files(2)))
-            return
-        end if
-        close(ut, iostat=stat, iomsg=iomsg)
-        if (stat == 0) close(uc, iostat=stat, iomsg=iomsg)
-        if (stat /= 0) call fail('cannot close the tables')
-
-    contains
-
-        !> Append c to the CSV line text(1:pos).
-        subroutine put(c)
-            character(len=*), intent(in) :: c
-            character(len=:), allocatable :: grown
-            if (.not. allocated(text)) allocate(character(len=max(256, 2 * len(c))) :: text)
-            if (pos + len(c) > len(text)) then
-                allocate(character(len=2 * (pos + len(c))) :: grown)
-                grown(1:pos) = text(1:pos)
-                call move_alloc(grown, text)
-            end if
-            text(pos + 1:pos + len(c)) = c
-            pos = pos + len(c)
-        end subroutine put
-
-        !> The text of cell (i, j) of the .txt: cells(i, j), or a category name longer
-        !> than that.
-        function cell_of(cells, i, j) result(c)
-            character(len=*), intent(in) :: cells(:, :)
-            integer, intent(in) :: i, j
-            character(len=:), allocatable :: c
-            if (kind_of(j) == KIND_CAT) then
-                c = cat_text(data(i, j), j)
-            else
-                c = trim(cells(i, j))
-            end if
-        end function cell_of
-
-        !> A category code as its name ('undecided' for -1, 'nan' for NaN).
-        function cat_text(x, j) result(c)
-            real(dp), intent(in) :: x
-            integer, intent(in) :: j
-            character(len=:), allocatable :: c
-            integer :: k
-            if (ieee_is_nan(x)) then
-                c = 'nan'
-                return
-            end if
-            k = -2
-            if (abs(x) < 1.0e9_dp) k = nint(x)
-            if (abs(x - real(k, dp)) > 0.0_dp) k = -2   ! not a code
-            if (k >= 0 .and. k < ncat(j)) then
-                c = cats(k, j)%s
-            else if (k == -1) then
-                c = 'undecided'
-            else
-                c = g_str(x, 17)
-            end if
-        end function cat_text
-
-        !> The header lines and the rows of the .txt: columns right-aligned to their
-        !> width (a text column left-adjusted), each after a blank; the header lines
-        !> (names, then (units)) start with '#' in place of the first blank.
-        subroutine write_text_table(cells)
-            character(len=*), intent(in) :: cells(:, :)
-            integer :: n
-            n = sum(width) + ncol
-            allocate(character(len=n) :: line)
-            if (stat /= 0) return
-            call header_line(names, .false.)
-            if (stat /= 0) return
-            call header_line(units, .true.)
-            do i = 1, nrow
-                if (stat /= 0) return
-                pos = 0
-                if (present(labels)) call put_cell(labels(i), width(1), .true.)
-                do j = 1, ndat
-                    call put_cell(cell_of(cells, i, j), width(j + j0 - 1), .false.)
-                end do
-                write(ut, '(a)', iostat=stat, iomsg=iomsg) line(1:pos)
-            end do
-        end subroutine write_text_table
-
-        subroutine header_line(words, in_parens)
-            character(len=*), intent(in) :: words(:)
-            logical, intent(in) :: in_parens
-            integer :: k
-            pos = 0
-            do k = 1, ncol
-                if (in_parens) then
-                    head = '('//trim(words(k))//')'
-                else
-                    head = trim(words(k))
-                end if
-                if (k < j0) then
-                    call put_cell(head, width(k), .true.)
-                else
-                    call put_cell(head, width(k), .false.)
-                end if
-            end do
-            line(1:1) = '#'
-            write(ut, '(a)', iostat=stat, iomsg=iomsg) line(1:pos)
-        end subroutine header_line
-
-        !> Append ' ' and c in w characters, left-adjusted or right-aligned.
-        subroutine put_cell(c, w, left_adjusted)
-            character(len=*), intent(in) :: c
-            integer, intent(in) :: w
-            logical, intent(in) :: left_adjusted
-            integer :: n
-            n = len_trim(c)
-            line(pos + 1:pos + 1 + w) = ' '
-            if (left_adjusted) then
-                line(pos + 2:pos + 1 + n) = c(1:n)
-            else
-                line(pos + 2 + w - n:pos + 1 + w) = c(1:n)
-            end if
-            pos = pos + 1 + w
-        end subroutine put_cell
-
-        !> One `name  value  unit` line per column (the one row of a summary).
-        subroutine write_summary(cells)
-            character(len=*), intent(in) :: cells(:, :)
-            integer :: wn, wv, k
-            character(len=:), allocatable :: v
-            wn = 0
-            wv = 0
-            do k = 1, ncol
-                wn = max(wn, len_trim(names(k)))
-                if (k < j0) then
-                    wv = max(wv, len_trim(labels(1)))
-                else
-                    wv = max(wv, len(cell_of(cells, 1, k - j0 + 1)))
-                end if
-            end do
-            do k = 1, ncol
-                if (stat /= 0) return
-                if (k < j0) then
-                    v = trim(labels(1))
-                else
-                    v = cell_of(cells, 1, k - j0 + 1)
-                end if
-                write(ut, '(a)', iostat=stat, iomsg=iomsg) pad(names(k), wn)//'  ' &
-                    //repeat(' ', wv - len(v))//v//'  '//trim(units(k))
-            end do
-        end subroutine write_summary
-
-        subroutine fail(what)
-            character(len=*), intent(in) :: what
-            if (len(what) > 0) errmsg = what//': '//trim(iomsg)
-            if (ut /= -1) close(ut, iostat=i)
-            if (uc /= -1) close(uc, iostat=i)
-            call drop_output(trim(files(1)))
-            call drop_output(trim(files(2)))
-            if (stat == 0) stat = 1
-        end subroutine fail
-
+        end do
+        call table_close(t, stat, errmsg)
     end subroutine write_tables
 
     !> An integer-valued number as an integer ("3", "-1"); "nan"; else g_str's 17 digits.

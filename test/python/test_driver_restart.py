@@ -119,9 +119,12 @@ def tables(folder, names=TABLES):
 
 
 def full_journal(driver, folder, table="batch_newmark.txt"):
-    """Run to the end but fail writing `table` (a directory in its way): exit 2 after
-    every unit is journaled, so the journal is complete and kept."""
-    blocker = folder / "out" / (table + ".part")
+    """Run to the end but fail committing `table` (a directory in the way of its final
+    name, so the rename of its .part fails): exit 2 after every unit is journaled, so the
+    journal is complete and kept."""
+    blocker = folder / "out" / table
+    if blocker.is_file():
+        blocker.unlink()             # the table of an earlier run
     blocker.mkdir(parents=True)
     r = run(driver, folder)
     blocker.rmdir()
@@ -203,14 +206,16 @@ def test_restart_after_kills(driver, tmp_path, record_set):
 
 
 def test_error_without_restart_removes_its_journal(driver, tmp_path, record_set):
-    """restart = .false. and an output error: no output left, the journal neither; a
-    journal this run did not start (an input error before the batch) stays."""
+    """restart = .false. and an output error once every record is done (the table cannot
+    be renamed to its name): no output left, the journal neither; a journal this run did
+    not start (an input error before the batch) stays."""
     job = case(tmp_path, "job", record_set, newmark_input(record_set[1], False))
-    (job / "out" / "batch_newmark.txt.part").mkdir(parents=True)
+    (job / "out" / "batch_newmark.txt").mkdir(parents=True)
     r = run(driver, job)
     assert r.returncode == 2
-    assert sorted(p.name for p in (job / "out").iterdir()) == ["batch_newmark.txt.part"]
-    (job / "out" / "batch_newmark.txt.part").rmdir()
+    assert len(PROGRESS.findall(r.stderr)) == NREC, "every record was computed"
+    assert sorted(p.name for p in (job / "out").iterdir()) == ["batch_newmark.txt"]
+    (job / "out" / "batch_newmark.txt").rmdir()
     (job / "out" / "batch.journal").write_text("not a journal\n")
     (job / "in.nml").write_text(newmark_input(record_set[1], False).replace("ky =", "kx ="))
     r = run(driver, job)
