@@ -419,8 +419,11 @@ contains
                 c = cat_text(t, values(j), j)
                 call append(t%line, pos, '"'//c//'"')
             case default
-                c = trim(cells(j))
-                call append(t%line, pos, trim(ctext(j)))
+                ! a number (the common case: no allocation)
+                call append(t%line, pos, ctext(j)(1:len_trim(ctext(j))))
+                lens(j + t%j0 - 1) = len_trim(cells(j))
+                call append(t%cells, cpos, cells(j)(1:lens(j + t%j0 - 1)))
+                cycle
             end select
             lens(j + t%j0 - 1) = len(c)
             call append(t%cells, cpos, c)
