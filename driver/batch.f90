@@ -110,6 +110,9 @@ module driver_batch
     type(unit_result_t), allocatable :: kept(:)    !! results by unit, until handed on
     logical, allocatable :: done(:)                !! unit delivered or restored
     logical, allocatable :: restored(:)            !! unit read from the journal
+    integer(int64), allocatable :: line_at(:)      !! where its line starts in journal_file
+    integer, allocatable :: line_len(:)            !! its length (without the new line)
+    character(len=:), allocatable :: restore_problem  !! a restored unit that did not read back
     integer :: next_log = 1                        !! the first unit not yet handed on
     procedure(unit_deliver), pointer :: consumer => null()  !! batch_run's `consume`
     type(c_ptr) :: journal = c_null_ptr            !! the open journal (null: none)
@@ -146,10 +149,13 @@ contains
     !> instead of computed (one line on stderr says how many). Each computed unit's log
     !> (its stderr lines) is printed in unit order, before the unit is consumed. `consume`
     !> runs one call at a time, in the critical section seispulse_text (it may build
-    !> texts while units run). stat /= 0: the journal is refused (another run's, or
-    !> damaged), errmsg "journal:line: problem (what to do)"; nothing was computed or
-    !> consumed. On a worker rank (MPI) this routine computes what the root sends it, then
-    !> ends the process (status 0).
+    !> texts while units run). A restored unit is read again from the journal when its
+    !> turn comes (read_journal only checks it). stat /= 0: the journal is refused
+    !> (another run's, or damaged), errmsg "journal:line: problem (what to do)", nothing
+    !> was computed or consumed; or a restored unit did not read back (the journal changed
+    !> during the run), errmsg naming it, the units from it on were not consumed. On a
+    !> worker rank (MPI) this routine computes what the root sends it, then ends the
+    !> process (status 0).
     subroutine batch_run(path, prefix, analysis, keys, work, consume, stat, errmsg)
         character(len=*), intent(in) :: path       !! the input file (its bytes enter the
                                                    !! fingerprint)
@@ -188,10 +194,13 @@ contains
         end if
         if (allocated(kept)) deallocate(kept)
         if (allocated(done)) deallocate(done)
-        if (allocated(restored)) deallocate(restored)
-        allocate(kept(n), done(n), restored(n))
+        if (allocated(restored)) deallocate(restored, line_at, line_len)
+        allocate(kept(n), done(n), restored(n), line_at(n), line_len(n))
         done = .false.
         restored = .false.
+        line_at = 0
+        line_len = 0
+        restore_problem = ''
         next_log = 1
         journal_failed = .false.
 
@@ -230,7 +239,12 @@ contains
             if (c_fclose(journal) /= 0) call journal_warning()
             journal = c_null_ptr
         end if
-        deallocate(kept, done, restored)
+        deallocate(kept, done, restored, line_at, line_len)
+        if (len(restore_problem) > 0) then
+            stat = 1
+            errmsg = restore_problem//' (delete the journal, or run with restart = ' &
+                     //'.false. in &run to compute every unit again)'
+        end if
     end subroutine batch_run
 
     !> After the tables of the run are committed: remove its journal (if any).
@@ -293,9 +307,12 @@ contains
                     flush(error_unit)
                 end if
             end if
-            !$omp critical (seispulse_text)
-            call consumer(next_log, kept(next_log))
-            !$omp end critical (seispulse_text)
+            if (restored(next_log)) call load_restored(next_log, kept(next_log))
+            if (len(restore_problem) == 0) then
+                !$omp critical (seispulse_text)
+                call consumer(next_log, kept(next_log))
+                !$omp end critical (seispulse_text)
+            end if
             kept(next_log) = empty
             next_log = next_log + 1
         end do
@@ -305,15 +322,20 @@ contains
     ! Writing the journal
     ! ------------------------------------------------------------------------------
 
-    !> Start the journal: the header and the restored units' lines go to <jpath>.tmp,
-    !> forced to disk, which then replaces <jpath> (rename: a kill leaves the old journal
-    !> or the new one, never half of one). The stream stays open for the units to come;
+    !> Start the journal: the header and the restored units' lines (copied from the old
+    !> journal) go to <jpath>.tmp, forced to disk, which then replaces <jpath> (rename: a
+    !> kill leaves the old journal or the new one, never half of one); line_at then
+    !> points into the new one. The stream stays open for the units to come;
     !> a journal that cannot be written is a warning (the run goes on without it).
     subroutine open_journal(jpath, fp, n)
         character(len=*), intent(in) :: jpath
         character(len=16), intent(in) :: fp
         integer, intent(in) :: n
-        integer :: i, last
+        integer(int64), allocatable :: new_at(:)
+        integer(int64) :: at
+        character(len=:), allocatable :: line
+        character(len=512) :: iomsg
+        integer :: i, last, u, stat
         journal = c_null_ptr
         call make_parent_dir(jpath)
         journal = c_fopen(jpath//'.tmp'//c_null_char, 'wb'//c_null_char)
@@ -326,15 +348,35 @@ contains
             if (restored(i)) last = i
         end do
         ! forced to disk once, after the last of these lines
-        call put_line(MAGIC//' '//int_str(JOURNAL_FORMAT)//' '//fp//' '//int_str(n), last == 0)
-        do i = 1, n
-            if (restored(i)) call put_line(unit_line(i, kept(i)), i == last)
-        end do
+        line = MAGIC//' '//int_str(JOURNAL_FORMAT)//' '//fp//' '//int_str(n)
+        call put_line(line, last == 0)
+        if (last > 0) then
+            ! the restored units' lines, copied from the old journal; where they will be
+            at = len(line) + 2
+            allocate(new_at(n))
+            new_at = 0
+            open(newunit=u, file=jpath, access='stream', form='unformatted', action='read', &
+                 status='old', iostat=stat, iomsg=iomsg)
+            do i = 1, n
+                if (stat /= 0 .or. journal_failed) exit
+                if (.not. restored(i)) cycle
+                deallocate(line)
+                allocate(character(len=line_len(i)) :: line)
+                read(u, pos=line_at(i), iostat=stat, iomsg=iomsg) line
+                if (stat /= 0) exit
+                call put_line(line, i == last)
+                new_at(i) = at
+                at = at + line_len(i) + 1
+            end do
+            close(u, iostat=i)
+            if (stat /= 0) call journal_warning()
+        end if
         if (journal_failed) return
         if (c_rename(jpath//'.tmp'//c_null_char, jpath//c_null_char) /= 0) then
+            ! the old journal stays where it was (restored units are read from it)
             call journal_warning()
-            if (c_fclose(journal) /= 0) continue
-            journal = c_null_ptr
+        else if (last > 0) then
+            line_at = new_at
         end if
     end subroutine open_journal
 
@@ -451,7 +493,10 @@ contains
     ! Reading the journal
     ! ------------------------------------------------------------------------------
 
-    !> Read the journal `jpath` of this run (fingerprint fp, n units) into kept/restored.
+    !> Check the journal `jpath` of this run (fingerprint fp, n units): restored(i) for each
+    !> unit it holds, and where its line is (line_at, line_len). The lines are read a
+    !> chunk at a time and each unit is parsed to be checked, not kept: hand_on reads it
+    !> again when its turn comes (so a restart does not hold the journal in memory).
     !> stat /= 0 with errmsg "jpath:line: problem (...)" for a foreign or damaged journal.
     subroutine read_journal(jpath, fp, n, stat, errmsg)
         character(len=*), intent(in) :: jpath
@@ -459,51 +504,56 @@ contains
         integer, intent(in) :: n
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
-        character(len=:), allocatable :: buf, problem
+        character(len=:), allocatable :: line, problem
         character(len=512) :: iomsg
-        integer(int64) :: size8
-        integer :: u, pos, k, lineno, nbytes
+        integer(int64) :: start
+        integer :: u, lineno, i
+        type(unit_result_t) :: res
+        logical :: complete
 
         stat = 0
         errmsg = ''
-        inquire(file=jpath, size=size8)
-        if (size8 < 0 .or. size8 > int(huge(0), int64)) then
-            call refuse(1, 'cannot read it (size unknown or above 2 GB)')
-            return
-        end if
-        nbytes = int(size8)
-        allocate(character(len=nbytes) :: buf)
         open(newunit=u, file=jpath, access='stream', form='unformatted', action='read', &
              status='old', iostat=stat, iomsg=iomsg)
-        if (stat == 0 .and. nbytes > 0) read(u, iostat=stat, iomsg=iomsg) buf
-        if (stat == 0) then
-            close(u)
-        else
-            close(u, iostat=k)
+        if (stat /= 0) then
             call refuse(1, 'cannot read it: '//trim(iomsg))
             return
         end if
-
-        pos = 1
         lineno = 0
-        do while (pos <= nbytes)
-            k = index(buf(pos:), new_line('a'))
+        start = 1
+        do
+            call read_line(u, start, line, complete, stat, iomsg)
+            if (stat /= 0) then
+                call refuse(lineno + 1, 'cannot read it: '//trim(iomsg))
+                exit
+            end if
             ! an unterminated last line: the run was killed while writing it; that unit
             ! is computed again
-            if (k == 0) exit
+            if (.not. complete) exit
             lineno = lineno + 1
             if (lineno == 1) then
-                call check_header(buf(pos:pos + k - 2), fp, n, problem)
+                call check_header(line, fp, n, problem)
             else
-                call read_unit_line(buf(pos:pos + k - 2), n, problem)
+                call parse_unit_line(line, n, i, res, problem)
+                if (len(problem) == 0) then
+                    if (restored(i)) then
+                        problem = 'unit '//int_str(i)//' given twice'
+                    else
+                        restored(i) = .true.
+                        line_at(i) = start
+                        line_len(i) = len(line)
+                    end if
+                end if
             end if
             if (len(problem) > 0) then
                 call refuse(lineno, problem)
-                return
+                exit
             end if
-            pos = pos + k
+            start = start + len(line) + 1
         end do
-        if (lineno == 0) call refuse(1, 'no header line (not a complete seispulse journal)')
+        close(u, iostat=i)
+        if (stat == 0 .and. lineno == 0) &
+            call refuse(1, 'no header line (not a complete seispulse journal)')
 
     contains
 
@@ -517,6 +567,75 @@ contains
         end subroutine refuse
 
     end subroutine read_journal
+
+    !> The line of stream unit u that starts at byte `start` (without its new line): its
+    !> end is found a chunk at a time, then it is read whole. complete: a new line ends it
+    !> (else the file ends first; line is then ''). stat /= 0: a read error (iomsg).
+    subroutine read_line(u, start, line, complete, stat, iomsg)
+        integer, intent(in) :: u
+        integer(int64), intent(in) :: start
+        character(len=:), allocatable, intent(out) :: line
+        logical, intent(out) :: complete
+        integer, intent(out) :: stat
+        character(len=*), intent(inout) :: iomsg
+        character(len=CHUNK) :: buf
+        integer(int64) :: size8, at, n
+        integer :: m, k
+        line = ''
+        complete = .false.
+        stat = 0
+        inquire(unit=u, size=size8)
+        at = start
+        do while (at <= size8)
+            m = int(min(size8 - at + 1, int(CHUNK, int64)))
+            read(u, pos=at, iostat=stat, iomsg=iomsg) buf(1:m)
+            if (stat /= 0) return
+            k = index(buf(1:m), new_line('a'))
+            if (k > 0) then
+                n = at + k - 1 - start
+                if (n > int(huge(0), int64)) then
+                    stat = 1
+                    iomsg = 'a line longer than 2 GB'
+                    return
+                end if
+                deallocate(line)
+                allocate(character(len=int(n)) :: line)
+                if (n > 0) read(u, pos=start, iostat=stat, iomsg=iomsg) line
+                complete = stat == 0
+                return
+            end if
+            at = at + m
+        end do
+    end subroutine read_line
+
+    !> Unit i restored from the journal, read again from its line (read_journal checked
+    !> it); a line that no longer reads back (the journal changed during the run) leaves
+    !> res empty and restore_problem set.
+    subroutine load_restored(i, res)
+        integer, intent(in) :: i
+        type(unit_result_t), intent(out) :: res
+        character(len=:), allocatable :: line, problem
+        character(len=512) :: iomsg
+        integer :: u, j, stat, ios
+        logical :: complete
+        problem = ''
+        open(newunit=u, file=journal_file, access='stream', form='unformatted', &
+             action='read', status='old', iostat=stat, iomsg=iomsg)
+        if (stat == 0) then
+            call read_line(u, line_at(i), line, complete, stat, iomsg)
+            close(u, iostat=ios)
+        end if
+        if (stat /= 0) then
+            problem = 'cannot read it again: '//trim(iomsg)
+        else if (.not. complete .or. len(line) /= line_len(i)) then
+            problem = 'it changed during the run'
+        else
+            call parse_unit_line(line, size(done), j, res, problem)
+            if (len(problem) == 0 .and. j /= i) problem = 'it changed during the run'
+        end if
+        if (len(problem) > 0 .and. len(restore_problem) == 0) &
+            restore_problem = journal_file//': unit '//int_str(i)//': '//problem
+    end subroutine load_restored
 
     !> The header "seispulse-journal <format> <fingerprint> <units>" of this run?
     !> problem: '' if it is, else what differs.
@@ -564,15 +683,17 @@ contains
             //' units, this run has '//int_str(n)//')'
     end subroutine check_header
 
-    !> One unit line: check it and keep its unit. problem: '' or what is wrong.
-    subroutine read_unit_line(line, n, problem)
+    !> One unit line: check it and read unit i's result from it. problem: '' or what is
+    !> wrong.
+    subroutine parse_unit_line(line, n, i, res, problem)
         character(len=*), intent(in) :: line
         integer, intent(in) :: n
+        integer, intent(out) :: i
+        type(unit_result_t), intent(out) :: res
         character(len=:), allocatable, intent(out) :: problem
         character(len=:), allocatable :: w
-        type(unit_result_t) :: res
         type(fnv_t) :: h
-        integer :: pos, last, i, nv, k
+        integer :: pos, last, nv, k
         integer(int64) :: bits
         logical :: ok
 
@@ -604,10 +725,6 @@ contains
                       //int_str(n)//')'
             return
         end if
-        if (restored(i)) then
-            problem = 'unit '//int_str(i)//' given twice'
-            return
-        end if
         call next_word(line(1:last - 1), pos, w)
         call read_int(w, nv, ok)
         if (.not. ok .or. nv < -1) then
@@ -632,13 +749,8 @@ contains
             call next_word(line(1:last - 1), pos, w)
             call unescape(w, res%log, ok)
         end if
-        if (.not. ok .or. pos <= last - 1) then
-            problem = 'damaged line (text fields)'
-            return
-        end if
-        kept(i) = res
-        restored(i) = .true.
-    end subroutine read_unit_line
+        if (.not. ok .or. pos <= last - 1) problem = 'damaged line (text fields)'
+    end subroutine parse_unit_line
 
     !> The word of s at pos (up to the next blank or the end); pos moves past the blank.
     subroutine next_word(s, pos, w)

@@ -395,3 +395,19 @@ def test_restart_of_another_analysis_is_ignored(driver, tmp_path, source_root):
     assert r.stderr.startswith("warning: in.nml:4: &run: restart: only the analyses "
                                "'newmark' and 'sdof' keep a journal")
     assert not list((tmp_path / "out").glob("*journal*"))
+
+
+def test_journal_that_cannot_be_replaced(driver, tmp_path, record_set):
+    """A directory where the journal goes: the new journal cannot take its name, so the
+    run warns once and goes on without one (it used to crash closing the journal twice);
+    the tables equal a plain run's and no .tmp is left."""
+    ref = case(tmp_path, "ref", record_set, newmark_input(record_set[1], False))
+    assert run(driver, ref).returncode == 0
+    job = case(tmp_path, "job", record_set, newmark_input(record_set[1], False))
+    (job / "out" / "batch.journal").mkdir(parents=True)
+    r = run(driver, job)
+    assert r.returncode == 0, r.stderr
+    assert r.stderr.count("warning: cannot write the journal out/batch.journal") == 1
+    assert tables(job) == tables(ref)
+    assert not (job / "out" / "batch.journal.tmp").exists()
+    assert (job / "out" / "batch.journal").is_dir()
