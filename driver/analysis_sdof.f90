@@ -483,12 +483,7 @@ contains
             call batch_run(path, prefix, 'sdof', record_keys(run_cfg%recs, &
                            cfg%slammer_rounding), sdof_unit, sdof_take, stat, errmsg)
             if (stat == 0) then
-                if (len(out_error) > 0) then
-                    stat = 1
-                    errmsg = out_error
-                else
-                    call close_tables(path, run_cfg, stat, errmsg)
-                end if
+                call close_tables(path, run_cfg, stat, errmsg)
                 if (stat /= 0) errmsg = output_located(path)//errmsg
             end if
         else
@@ -511,9 +506,7 @@ contains
         type(record_out_t) :: o
         type(record_res_t) :: q
         character(len=:), allocatable :: line
-        real(dp) :: nan
 
-        nan = ieee_value(nan, ieee_quiet_nan)
         associate (cfg => run_cfg)
             call unpack_record(res, o)
             if (o%ok) call unpack_results(cfg, o%dt, res%values, q)
@@ -594,8 +587,12 @@ contains
         if (cfg%spectra .and. cfg%shape) nspec = nspec + npd + 2 * size(cfg%dampings)
         nhist = 0
         n = size(accel)
-        nosc = size(cfg%h_periods) * size(cfg%h_dampings)
-        if (cfg%history) nhist = 1 + n + 3 * n * nosc
+        nosc = 0
+        if (cfg%history) then
+            ! (the history periods and dampings are allocated only with &sdof_history)
+            nosc = size(cfg%h_periods) * size(cfg%h_dampings)
+            nhist = 1 + n + 3 * n * nosc
+        end if
         allocate(v(nspec + nhist))
         pos = 0
         if (cfg%spectra) then
@@ -954,7 +951,9 @@ contains
     end subroutine envelope_add
 
     !> Write the envelope's rows (design_envelope of the maxima over the records
-    !> computed) and close every table, each with its first header lines.
+    !> computed) and close every table, each with its first header lines, in the order
+    !> spectra, envelope, histories (the first that fails gives stat and errmsg; a
+    !> history table past max_history_rows fails with out_error).
     subroutine close_tables(path, cfg, stat, errmsg)
         character(len=*), intent(in) :: path
         type(config_t), intent(in) :: cfg
@@ -1002,6 +1001,12 @@ contains
             if (stat /= 0) return
         end if
         if (cfg%history) then
+            if (len(out_error) > 0) then
+                ! the history table was dropped: it would have had too many rows
+                stat = 1
+                errmsg = out_error
+                return
+            end if
             head(1) = 'g = '//shortest_str(cfg%g)//' m/s2; the oscillator starts from rest; ' &
                       //'t = (i-1) dt at the samples of the record'
             head(2) = 'a_g: the ground acceleration (the record as scaled); z, z'': ' &

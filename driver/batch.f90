@@ -13,7 +13,7 @@
 !> handed to the operating system (fflush: a killed run keeps it) before the next unit is
 !> delivered, and forced to disk (fsync: a power loss keeps it) at most once a second:
 !>
-!>     seispulse-journal 1 <fingerprint: 16 hex digits> <number of units>
+!>     seispulse-journal 2 <fingerprint: 16 hex digits> <number of units>
 !>     u <unit> <n> <value 1> ... <value n> <text> <log> <checksum: 16 hex digits>
 !>
 !> Values are the IEEE 754 bit patterns of the doubles as 16 lowercase hex digits (exact:
@@ -22,13 +22,17 @@
 !> the field separator) and DEL written as `%XX` (hex). The checksum is the 64-bit FNV-1a
 !> hash of the bytes of the line before the blank that precedes it. The fingerprint is the
 !> FNV-1a hash of the journal format, the seispulse version, the analysis, the bytes of the
-!> input file and the key of every unit (the record file, its size and how it is read
-!> and scaled): a journal whose fingerprint differs belongs to another run and is refused,
+!> input file and the key of every unit (a hash of the record file's path, its size and
+!> how it is read and scaled; format 1 took the keys as they are, so its journals are
+!> refused as of another format): a journal whose fingerprint differs belongs to another
+!> run and is refused,
 !> as is one with a damaged line (checksum, a unit out of range or twice, a malformed
 !> field); an unterminated last line (the run was killed while writing it) is dropped and
 !> that unit computed again. The journal is removed once the tables are committed
 !> (batch_commit, from the driver's end of run), and after an error (exit status 2) unless
-!> the run was a restart (batch_discard); a killed run leaves it.
+!> the run was a restart (batch_discard); a killed run leaves it. The journal also keeps
+!> memory bounded: a restored unit, and a unit finished out of turn while the allowed bytes of
+!> results wait already, is read back from its line when its turn comes.
 module driver_batch
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int64
     use, intrinsic :: iso_c_binding, only: c_int, c_char, c_ptr, c_size_t, c_null_char, &
@@ -46,7 +50,7 @@ module driver_batch
     public :: record_keys, pack_record, unpack_record, RECORD_VALUES, RECORD_FIELDS
 
     !> Version of the journal format (the header's second word).
-    integer, parameter :: JOURNAL_FORMAT = 1
+    integer, parameter :: JOURNAL_FORMAT = 2
     character(len=*), parameter :: MAGIC = 'seispulse-journal'
     !> Values and text fields pack_record puts first in a unit's result.
     integer, parameter :: RECORD_VALUES = 7, RECORD_FIELDS = 2
@@ -110,18 +114,29 @@ module driver_batch
     type(unit_result_t), allocatable :: kept(:)    !! results by unit, until handed on
     logical, allocatable :: done(:)                !! unit delivered or restored
     logical, allocatable :: restored(:)            !! unit read from the journal
+    logical, allocatable :: on_disk(:)             !! its result is read from the journal
+                                                   !! in its turn (restored, or set aside)
     integer(int64), allocatable :: line_at(:)      !! where its line starts in journal_file
     integer, allocatable :: line_len(:)            !! its length (without the new line)
-    character(len=:), allocatable :: restore_problem  !! a restored unit that did not read back
+    integer(int64) :: held = 0                     !! bytes of the results in kept
+    integer(int64) :: hold_limit = 0               !! hold_bytes() of this batch
+    character(len=:), allocatable :: restore_problem  !! a unit that did not read back
     integer :: next_log = 1                        !! the first unit not yet handed on
     procedure(unit_deliver), pointer :: consumer => null()  !! batch_run's `consume`
     type(c_ptr) :: journal = c_null_ptr            !! the open journal (null: none)
     character(len=:), allocatable :: journal_file  !! its path (removed by batch_commit)
     logical :: journal_failed = .false.            !! a write failed (warned once)
+    integer(int64) :: journal_end = 1              !! where its next line goes (its size + 1)
+    integer :: reader = -1                         !! journal_file open for reading (-1: not)
     integer(int64) :: last_sync = -1               !! clock count of the last fsync (-1: none)
     !> Seconds between two fsyncs of the journal (every line is flushed to the system
     !> at once; see put_line).
     real, parameter :: SYNC_INTERVAL = 1.0
+    !> MiB of results held while they wait for an earlier unit (a long record keeps the
+    !> short ones after it waiting), unless SEISPULSE_BATCH_HOLD_MB says otherwise: beyond
+    !> this a result waits in the journal, which has it already, and is read back in its
+    !> turn, so memory stays bounded.
+    integer, parameter :: HOLD_MB = 16
 
 contains
 
@@ -194,10 +209,12 @@ contains
         end if
         if (allocated(kept)) deallocate(kept)
         if (allocated(done)) deallocate(done)
-        if (allocated(restored)) deallocate(restored, line_at, line_len)
-        allocate(kept(n), done(n), restored(n), line_at(n), line_len(n))
+        if (allocated(restored)) deallocate(restored, on_disk, line_at, line_len)
+        allocate(kept(n), done(n), restored(n), on_disk(n), line_at(n), line_len(n))
         done = .false.
         restored = .false.
+        held = 0
+        hold_limit = hold_bytes()
         line_at = 0
         line_len = 0
         restore_problem = ''
@@ -227,6 +244,7 @@ contains
             flush(error_unit)
         end if
         done = restored
+        on_disk = restored
 
         journal_file = jpath
         call open_journal(jpath, fp, n)
@@ -239,7 +257,9 @@ contains
             if (c_fclose(journal) /= 0) call journal_warning()
             journal = c_null_ptr
         end if
-        deallocate(kept, done, restored, line_at, line_len)
+        if (reader /= -1) close(reader, iostat=i)
+        reader = -1
+        deallocate(kept, done, restored, on_disk, line_at, line_len)
         if (len(restore_problem) > 0) then
             stat = 1
             errmsg = restore_problem//' (delete the journal, or run with restart = ' &
@@ -278,36 +298,53 @@ contains
         res%text = int_str(i)
     end subroutine nothing
 
-    !> On the root, one unit at a time: journal it, keep it, hand on the units now due.
+    !> On the root, one unit at a time: journal it, keep it (or, out of turn with
+    !> hold_limit bytes held already, leave it in the journal), hand on the units now due.
     subroutine deliver(i, res)
         integer, intent(in) :: i
         type(unit_result_t), intent(in) :: res
         character(len=:), allocatable :: line
+        integer(int64) :: at
         if (i < 1 .or. i > size(kept)) return
         if (done(i)) return
-        kept(i) = res
         done(i) = .true.
+        at = journal_end
+        line = ''
         if (c_associated(journal)) then
             line = unit_line(i, res)
             call put_line(line)
         end if
+        if (i /= next_log .and. held + result_bytes(res) > hold_limit .and. &
+            c_associated(journal) .and. .not. journal_failed) then
+            on_disk(i) = .true.
+            line_at(i) = at
+            line_len(i) = len(line)
+        else
+            kept(i) = res
+            held = held + result_bytes(res)
+        end if
         call hand_on()
     end subroutine deliver
 
-    !> The units from next_log on, in order, up to the first unit not yet done: print its
-    !> log (a restored unit prints nothing: one line said how many were restored), hand
-    !> it to the consumer, release it.
+    !> The units from next_log on, in order, up to the first unit not yet done: read it
+    !> back if it waits in the journal, print its log (a restored unit prints nothing:
+    !> one line said how many were restored), hand it to the consumer, release it. After
+    !> a unit that does not read back (restore_problem) nothing more is handed on.
     subroutine hand_on()
         type(unit_result_t) :: empty
         do while (next_log <= size(done))
             if (.not. done(next_log)) exit
+            if (on_disk(next_log)) then
+                call load_unit(next_log, kept(next_log))
+            else
+                held = held - result_bytes(kept(next_log))
+            end if
             if (.not. restored(next_log) .and. allocated(kept(next_log)%log)) then
                 if (len(kept(next_log)%log) > 0) then
                     write(error_unit, '(a)') kept(next_log)%log
                     flush(error_unit)
                 end if
             end if
-            if (restored(next_log)) call load_restored(next_log, kept(next_log))
             if (len(restore_problem) == 0) then
                 !$omp critical (seispulse_text)
                 call consumer(next_log, kept(next_log))
@@ -317,6 +354,28 @@ contains
             next_log = next_log + 1
         end do
     end subroutine hand_on
+
+    !> Bytes of results a batch may hold out of turn: SEISPULSE_BATCH_HOLD_MB (MiB, an
+    !> integer >= 0; 0: every result out of turn waits in the journal) if it is set to
+    !> one, else HOLD_MB.
+    integer(int64) function hold_bytes() result(b)
+        character(len=32) :: text
+        integer :: length, status, mb, ios
+        b = int(HOLD_MB, int64) * 1048576_int64
+        call get_environment_variable('SEISPULSE_BATCH_HOLD_MB', text, length, status)
+        if (status /= 0 .or. length == 0) return
+        read(text, *, iostat=ios) mb
+        if (ios == 0 .and. mb >= 0) b = int(mb, int64) * 1048576_int64
+    end function hold_bytes
+
+    !> Bytes a result takes in memory (about).
+    pure integer(int64) function result_bytes(res) result(b)
+        type(unit_result_t), intent(in) :: res
+        b = 64
+        if (allocated(res%values)) b = b + 8_int64 * size(res%values)
+        if (allocated(res%text)) b = b + len(res%text)
+        if (allocated(res%log)) b = b + len(res%log)
+    end function result_bytes
 
     ! ------------------------------------------------------------------------------
     ! Writing the journal
@@ -332,7 +391,6 @@ contains
         character(len=16), intent(in) :: fp
         integer, intent(in) :: n
         integer(int64), allocatable :: new_at(:)
-        integer(int64) :: at
         character(len=:), allocatable :: line
         character(len=512) :: iomsg
         integer :: i, last, u, stat
@@ -343,6 +401,7 @@ contains
             call journal_warning()
             return
         end if
+        journal_end = 1
         last = 0
         do i = 1, n
             if (restored(i)) last = i
@@ -350,25 +409,25 @@ contains
         ! forced to disk once, after the last of these lines
         line = MAGIC//' '//int_str(JOURNAL_FORMAT)//' '//fp//' '//int_str(n)
         call put_line(line, last == 0)
+        new_at = line_at
         if (last > 0) then
-            ! the restored units' lines, copied from the old journal; where they will be
-            at = len(line) + 2
-            allocate(new_at(n))
-            new_at = 0
+            ! the restored units' lines, copied from the old journal, and where they go
             open(newunit=u, file=jpath, access='stream', form='unformatted', action='read', &
                  status='old', iostat=stat, iomsg=iomsg)
-            do i = 1, n
-                if (stat /= 0 .or. journal_failed) exit
-                if (.not. restored(i)) cycle
-                deallocate(line)
-                allocate(character(len=line_len(i)) :: line)
-                read(u, pos=line_at(i), iostat=stat, iomsg=iomsg) line
-                if (stat /= 0) exit
-                call put_line(line, i == last)
-                new_at(i) = at
-                at = at + line_len(i) + 1
-            end do
-            close(u, iostat=i)
+            if (stat == 0) then
+                do i = 1, n
+                    if (stat /= 0 .or. journal_failed) exit
+                    if (.not. restored(i)) cycle
+                    deallocate(line)
+                    allocate(character(len=line_len(i)) :: line)
+                    read(u, pos=line_at(i), iostat=stat, iomsg=iomsg) line
+                    if (stat /= 0) exit
+                    new_at(i) = journal_end
+                    call put_line(line, i == last)
+                end do
+                close(u, iostat=i)
+            end if
+            ! (the old journal was read a moment ago: this cannot fail but by accident)
             if (stat /= 0) call journal_warning()
         end if
         if (journal_failed) return
@@ -390,7 +449,10 @@ contains
         nb = int(len(line) + 1, c_size_t)
         if (c_fwrite(line//new_line('a'), 1_c_size_t, nb, journal) /= nb) then
             call journal_warning()
-        else if (present(sync)) then
+            return
+        end if
+        journal_end = journal_end + int(nb, int64)
+        if (present(sync)) then
             if (.not. sync) return
         end if
         if (journal_failed) then
@@ -494,10 +556,11 @@ contains
     ! ------------------------------------------------------------------------------
 
     !> Check the journal `jpath` of this run (fingerprint fp, n units): restored(i) for each
-    !> unit it holds, and where its line is (line_at, line_len). The lines are read a
-    !> chunk at a time and each unit is parsed to be checked, not kept: hand_on reads it
-    !> again when its turn comes (so a restart does not hold the journal in memory).
-    !> stat /= 0 with errmsg "jpath:line: problem (...)" for a foreign or damaged journal.
+    !> unit it holds, and where its line is (line_at, line_len). The file is read through
+    !> a buffer of CHUNK bytes (a longer line by read_line) and each unit is parsed to be
+    !> checked, not kept: hand_on reads it back in its turn (a restart does not hold the
+    !> journal in memory). stat /= 0 with errmsg "jpath:line: problem (...)" for a
+    !> foreign or damaged journal.
     subroutine read_journal(jpath, fp, n, stat, errmsg)
         character(len=*), intent(in) :: jpath
         character(len=16), intent(in) :: fp
@@ -505,9 +568,10 @@ contains
         integer, intent(out) :: stat
         character(len=:), allocatable, intent(out) :: errmsg
         character(len=:), allocatable :: line, problem
+        character(len=CHUNK) :: buf
         character(len=512) :: iomsg
-        integer(int64) :: start
-        integer :: u, lineno, i
+        integer(int64) :: start, size8, buf_at
+        integer :: u, lineno, i, k, off, buf_n
         type(unit_result_t) :: res
         logical :: complete
 
@@ -519,10 +583,30 @@ contains
             call refuse(1, 'cannot read it: '//trim(iomsg))
             return
         end if
+        inquire(unit=u, size=size8)
         lineno = 0
         start = 1
-        do
-            call read_line(u, start, line, complete, stat, iomsg)
+        buf_at = 1                 ! buf(1:buf_n) holds the bytes from buf_at on
+        buf_n = 0
+        do while (start <= size8)
+            ! the line at start: in the buffer, else from a buffer refilled at start, else
+            ! (longer than the buffer) read whole
+            k = 0
+            off = int(start - buf_at)
+            if (start < buf_at + buf_n) k = index(buf(off + 1:buf_n), new_line('a'))
+            if (k == 0) then
+                buf_at = start
+                off = 0
+                buf_n = int(min(size8 - start + 1, int(CHUNK, int64)))
+                read(u, pos=start, iostat=stat, iomsg=iomsg) buf(1:buf_n)
+                if (stat == 0) k = index(buf(1:buf_n), new_line('a'))
+            end if
+            if (stat == 0 .and. k > 0) then
+                line = buf(off + 1:off + k - 1)
+                complete = .true.
+            else if (stat == 0) then
+                call read_line(u, start, line, complete, stat, iomsg)
+            end if
             if (stat /= 0) then
                 call refuse(lineno + 1, 'cannot read it: '//trim(iomsg))
                 exit
@@ -608,34 +692,37 @@ contains
         end do
     end subroutine read_line
 
-    !> Unit i restored from the journal, read again from its line (read_journal checked
-    !> it); a line that no longer reads back (the journal changed during the run) leaves
-    !> res empty and restore_problem set.
-    subroutine load_restored(i, res)
+    !> Unit i read back from its journal line (restored, or set aside by deliver; checked
+    !> when it was read or written): exactly its bytes and the new line after them. A line
+    !> that no longer reads back (the journal changed during the run) leaves res empty
+    !> and restore_problem set.
+    subroutine load_unit(i, res)
         integer, intent(in) :: i
         type(unit_result_t), intent(out) :: res
         character(len=:), allocatable :: line, problem
         character(len=512) :: iomsg
-        integer :: u, j, stat, ios
-        logical :: complete
+        integer :: j, stat
         problem = ''
-        open(newunit=u, file=journal_file, access='stream', form='unformatted', &
-             action='read', status='old', iostat=stat, iomsg=iomsg)
+        stat = 0
+        if (reader == -1) open(newunit=reader, file=journal_file, access='stream', &
+                               form='unformatted', action='read', status='old', &
+                               iostat=stat, iomsg=iomsg)
+        if (stat /= 0) reader = -1
         if (stat == 0) then
-            call read_line(u, line_at(i), line, complete, stat, iomsg)
-            close(u, iostat=ios)
+            allocate(character(len=line_len(i) + 1) :: line)
+            read(reader, pos=line_at(i), iostat=stat, iomsg=iomsg) line
         end if
         if (stat /= 0) then
             problem = 'cannot read it again: '//trim(iomsg)
-        else if (.not. complete .or. len(line) /= line_len(i)) then
+        else if (line(len(line):) /= new_line('a')) then
             problem = 'it changed during the run'
         else
-            call parse_unit_line(line, size(done), j, res, problem)
+            call parse_unit_line(line(1:line_len(i)), size(done), j, res, problem)
             if (len(problem) == 0 .and. j /= i) problem = 'it changed during the run'
         end if
         if (len(problem) > 0 .and. len(restore_problem) == 0) &
             restore_problem = journal_file//': unit '//int_str(i)//': '//problem
-    end subroutine load_restored
+    end subroutine load_unit
 
     !> The header "seispulse-journal <format> <fingerprint> <units>" of this run?
     !> problem: '' if it is, else what differs.
@@ -734,13 +821,18 @@ contains
         if (nv >= 0) then
             allocate(res%values(nv))
             do k = 1, nv
-                call next_word(line(1:last - 1), pos, w)
-                call read_hex(w, bits, ok)
+                ! 16 hex digits and a blank (a text field follows the values), read in
+                ! place: a journal holds millions of them
+                ok = pos + 16 <= last - 1
+                if (ok) ok = line(pos + 16:pos + 16) == ' '
+                if (ok) call read_hex(line(pos:pos + 15), bits, ok)
                 if (.not. ok) then
+                    call next_word(line(1:last - 1), pos, w)
                     problem = 'damaged line (value '//int_str(k)//' '''//w//''')'
                     return
                 end if
                 res%values(k) = transfer(bits, 1.0_dp)
+                pos = pos + 17
             end do
         end if
         call next_word(line(1:last - 1), pos, w)

@@ -677,6 +677,7 @@ contains
         type(text_buffer) :: cell
         character(len=*), parameter :: blanks = ' '//achar(9)//achar(13)
         integer :: i, n, k
+        logical :: quoted
         n = len(line)
         allocate(cells(count_commas() + 1))
         ncell = 0
@@ -688,7 +689,9 @@ contains
                 if (index(blanks, line(i:i)) == 0) exit
                 i = i + 1
             end do
-            if (i <= n .and. line(i:i) == '"') then
+            quoted = .false.
+            if (i <= n) quoted = line(i:i) == '"'     ! (.and. need not short-circuit)
+            if (quoted) then
                 i = i + 1
                 do
                     if (i > n) then

@@ -356,15 +356,13 @@ contains
             return
         end if
         t%writing = .true.
-        ! the .txt waits for the widths: its header lines and cells go to scratch files
-        ! (unformatted stream: lengths, then bytes)
-        open(newunit=t%ucom, status='scratch', access='stream', form='unformatted', &
-             iostat=t%stat, iomsg=t%iomsg)
-        if (t%stat == 0) open(newunit=t%ucell, status='scratch', access='stream', &
-                              form='unformatted', iostat=t%stat, iomsg=t%iomsg)
+        ! the .txt waits for the widths: its header lines and cells go to two scratch
+        ! files (unformatted stream: lengths, then bytes) next to it, on the disk that
+        ! takes the tables (not a /tmp that may live in memory), unlinked at once
+        call open_scratch(trim(t%files(1))//'.part.lines', t%ucom)
+        if (t%stat == 0) call open_scratch(trim(t%files(1))//'.part.cells', t%ucell)
         if (t%stat /= 0) then
-            call table_fail(t, 'cannot open a scratch file for '//trim(t%files(1)) &
-                            //' (in TMPDIR, else /tmp)')
+            call table_fail(t, 'cannot create a scratch file next to '//trim(t%files(1)))
         else
             ! CSV: the header "name (unit)"
             head = t%names(1)%s//' ('//t%units(1)%s//')'
@@ -376,6 +374,24 @@ contains
         end if
         stat = t%stat
         errmsg = t%errmsg
+
+    contains
+
+        !> Open `path` for reading and writing and remove its name (the open file lives
+        !> until it is closed; a killed run leaves nothing).
+        subroutine open_scratch(path, unit)
+            character(len=*), intent(in) :: path
+            integer, intent(out) :: unit
+            open(newunit=unit, file=path, status='replace', access='stream', &
+                 form='unformatted', action='readwrite', iostat=t%stat, iomsg=t%iomsg)
+            if (t%stat /= 0) then
+                unit = -1
+            else if (c_unlink(path//c_null_char) /= 0) then
+                t%stat = 1
+                t%iomsg = 'cannot remove its name'
+            end if
+        end subroutine open_scratch
+
     end subroutine table_open
 
     !> A header line of the .txt (written with '# ' before it; trailing blanks dropped).
@@ -401,6 +417,14 @@ contains
         integer :: j, pos, cpos
 
         if (.not. t%writing) return
+        if (size(values) /= t%ndat .or. present(label) .neqv. t%j0 == 2) then
+            ! a caller's mistake: say so rather than write a wrong row
+            t%iomsg = 'table_row: '//int_str(size(values))//' values for '// &
+                      int_str(t%ndat)//' numeric columns, a label given: ' &
+                      //trim(merge('yes', 'no ', present(label)))
+            call table_fail(t, 'internal error in '//trim(t%files(1)))
+            return
+        end if
         call format_reals(values, t%digits, cells, t%csv_digits, ctext)
         pos = 0
         cpos = 0

@@ -4,6 +4,7 @@
 module test_sliding_closed
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, &
                                              ieee_negative_inf, ieee_is_nan
+    use, intrinsic :: iso_fortran_env, only: int64
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT
     use seispulse_format, only: real_str
@@ -36,8 +37,32 @@ contains
                  new_unittest('block in SI scales the dimensionless answer', test_block), &
                  new_unittest('normalization: 1.25-1.29, Tables 1.2 and 1.3', test_norm), &
                  new_unittest('bad input names the parameter', test_bad_input), &
-                 new_unittest('closed forms = event-driven integrator on the grid', test_grid)]
+                 new_unittest('closed forms = event-driven integrator on the grid', test_grid), &
+                 new_unittest('full cycle: eta down to the smallest subnormal', test_tiny_eta)]
     end subroutine collect_sliding_closed
+
+    !> eta = the smallest subnormal double: no overflow on the way (the check build traps
+    !> one: the free-stop time (V_g - v)/eta was computed as a division, now +inf without
+    !> it), and the answer of eta = 1e-16 (the slip is the eta -> 0 limit to rounding;
+    !> the time of the stop approaches 2 as sqrt(eta)).
+    subroutine test_tiny_eta(error)
+        type(test_error), allocatable, intent(out) :: error
+        type(full_cycle_t) :: r, r0
+        real(dp) :: eta
+        integer :: stat, stat0
+        eta = transfer(1_int64, 1.0_dp)
+        call full_cycle(eta, eta, 1.0_dp, 1.0_dp, .false., r, stat)
+        call full_cycle(1.0e-16_dp, 1.0e-16_dp, 1.0_dp, 1.0_dp, .false., r0, stat0)
+        call check(error, stat == SEISPULSE_SUCCESS .and. stat0 == SEISPULSE_SUCCESS, 'stat')
+        if (allocated(error)) return
+        call check(error, r%mode == r0%mode, 'mode')
+        if (allocated(error)) return
+        call check(error, r%um1, r0%um1, rtol=1.0e-14_dp, message='um1')
+        if (allocated(error)) return
+        call check(error, r%ures, r0%ures, rtol=1.0e-14_dp, message='ures')
+        if (allocated(error)) return
+        call check(error, r%tau_m1, r0%tau_m1, rtol=1.0e-7_dp, message='tau_m1')
+    end subroutine test_tiny_eta
 
     subroutine test_onset(error)
         type(test_error), allocatable, intent(out) :: error

@@ -108,8 +108,8 @@ def case(tmp_path, name, record_set, text):
     return folder
 
 
-def run(driver, folder, threads=1):
-    env = dict(os.environ, OMP_NUM_THREADS=str(threads))
+def run(driver, folder, threads=1, **environ):
+    env = dict(os.environ, OMP_NUM_THREADS=str(threads), **environ)
     return subprocess.run([driver, "in.nml"], cwd=folder, capture_output=True, text=True,
                           timeout=120, env=env)
 
@@ -244,7 +244,7 @@ def test_journal_format(driver, tmp_path, record_set):
     lines = journal.read_bytes().split(b"\n")
     assert lines[-1] == b""
     head = lines[0].split(b" ")
-    assert head[0] == b"seispulse-journal" and head[1] == b"1" and len(head[2]) == 16
+    assert head[0] == b"seispulse-journal" and head[1] == b"2" and len(head[2]) == 16
     assert int(head[3]) == NREC
     units = set()
     for line in lines[1:-1]:
@@ -411,3 +411,45 @@ def test_journal_that_cannot_be_replaced(driver, tmp_path, record_set):
     assert tables(job) == tables(ref)
     assert not (job / "out" / "batch.journal.tmp").exists()
     assert (job / "out" / "batch.journal").is_dir()
+
+
+def long_first(folder, files, repeats=40):
+    """files with a record `repeats` times as long as r00 (records/long.csv) first: two
+    threads then finish many later records while the first is still running."""
+    rows = [line for line in (folder / "records" / "r00.csv").read_text().splitlines()
+            if line and not line.startswith("#")]
+    acc = [a for _, a in (r.split(",") for r in rows)]
+    lines = ["# r00 repeated", "# time_s, accel_g"]
+    lines += [f"{i * 0.02:.4f},{a}" for i, a in enumerate(acc * repeats)]
+    (folder / "records" / "long.csv").write_text("\n".join(lines) + "\n")
+    return ["'records/long.csv'"] + list(files)
+
+
+@pytest.mark.parametrize("analysis", ["newmark", "sdof"])
+def test_results_set_aside_in_the_journal(driver, tmp_path, record_set, analysis):
+    """SEISPULSE_BATCH_HOLD_MB=0: every result finished out of turn waits in the journal
+    and is read back in its turn (as a long first record makes happen on two threads):
+    the tables, stdout and stderr are those of one thread holding everything, also when
+    some units are restored from a journal."""
+    def make(name, restart):
+        folder = case(tmp_path, name, record_set, "")
+        files = long_first(folder, record_set[1])
+        text = (newmark_input(files, restart, bad=True) if analysis == "newmark"
+                else sdof_input(files, restart))
+        (folder / "in.nml").write_text(text)
+        return folder
+    names = TABLES if analysis == "newmark" else SDOF_TABLES
+    one, two = make("one", False), make("two", False)
+    r1 = run(driver, one, threads=1)
+    r2 = run(driver, two, threads=2, SEISPULSE_BATCH_HOLD_MB="0")
+    assert r1.returncode == r2.returncode, r2.stderr
+    assert r1.stderr == r2.stderr and r1.stdout == r2.stdout
+    assert tables(one, names) == tables(two, names)
+    # restored units and units set aside together: a journal of the first half
+    three = make("three", True)
+    journal = full_journal(driver, three, table=names[0])
+    lines = journal.read_bytes().split(b"\n")
+    journal.write_bytes(b"\n".join(lines[:len(lines) // 2]) + b"\n")
+    r3 = run(driver, three, threads=2, SEISPULSE_BATCH_HOLD_MB="0")
+    assert r3.returncode == r1.returncode, r3.stderr
+    assert tables(one, names) == tables(three, names)

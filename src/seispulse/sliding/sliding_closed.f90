@@ -191,7 +191,14 @@ contains
         vm = w_k / c%vg
         ! Eq. 1.7 (1.23 for tau0 > 1/2): after the lobe the ground velocity is V_g and the
         ! block stops at tau0 + (V_g - v_g(tau0))/eta, if that is after the lobe
-        h = (c%vg - v0) / eta
+        ! (+-inf without the overflow, for an eta near the smallest double)
+        if (eta >= 1.0_dp) then
+            h = (c%vg - v0) / eta
+        else if (abs(c%vg - v0) < eta * huge(1.0_dp)) then
+            h = (c%vg - v0) / eta
+        else
+            h = sign(ieee_value(h, ieee_positive_inf), c%vg - v0)
+        end if
         if (.not. full .and. tau0 + h > 1.0_dp) then
             regime = SLIDING_REGIME_FREE
             tau_m = tau0 + h
