@@ -417,7 +417,7 @@ contains
         integer :: j, pos, cpos
 
         if (.not. t%writing) return
-        if (size(values) /= t%ndat .or. present(label) .neqv. t%j0 == 2) then
+        if (size(values) /= t%ndat .or. (present(label) .neqv. t%j0 == 2)) then
             ! a caller's mistake: say so rather than write a wrong row
             t%iomsg = 'table_row: '//int_str(size(values))//' values for '// &
                       int_str(t%ndat)//' numeric columns, a label given: ' &
