@@ -3,13 +3,14 @@
 !> printed ones differ, and the whole grid against the event-driven integrator.
 module test_sliding_closed
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, &
-                                             ieee_negative_inf, ieee_is_nan
+                                             ieee_negative_inf, ieee_is_nan, ieee_is_finite
     use, intrinsic :: iso_fortran_env, only: int64
     use seispulse_kinds, only: dp
     use seispulse_errors, only: SEISPULSE_SUCCESS, SEISPULSE_INVALID_INPUT
     use seispulse_format, only: real_str
     use seispulse_special, only: pi
-    use seispulse_pulses, only: exp_pulse_peaks
+    use seispulse_pulses, only: exp_pulse_peaks, exp_consts_t, exp_consts, exp_eval, &
+                                exp_rise_time
     use seispulse_sliding_closed
     use seispulse_sliding_norm
     use testing, only: test_error, unit_test, new_unittest, check
@@ -38,7 +39,9 @@ contains
                  new_unittest('normalization: 1.25-1.29, Tables 1.2 and 1.3', test_norm), &
                  new_unittest('bad input names the parameter', test_bad_input), &
                  new_unittest('closed forms = event-driven integrator on the grid', test_grid), &
-                 new_unittest('full cycle: eta down to the smallest subnormal', test_tiny_eta)]
+                 new_unittest('full cycle: eta down to the smallest subnormal', test_tiny_eta), &
+                 new_unittest('full cycle: eta from 1e-13 to subnormal against references', &
+                              test_small_eta)]
     end subroutine collect_sliding_closed
 
     !> eta = the smallest subnormal double: no overflow on the way (the check build traps
@@ -63,6 +66,148 @@ contains
         if (allocated(error)) return
         call check(error, r%tau_m1, r0%tau_m1, rtol=1.0e-7_dp, message='tau_m1')
     end subroutine test_tiny_eta
+
+    !> eta = 10^-k (k = 13..40, 100, 200, 300, 307) and two subnormals. The forward slide
+    !> stops at tau_m1 = 2 - sigma, sigma ~ sqrt(2 eta/g(beta)) with g = beta/expm1(beta),
+    !> and the block slides back at once with v_g(tau_m1) = O(eta) of ground velocity to come
+    !> (doc/sliding.md section 5). Taken as V_g - v_g(tau_m1 - 1) that velocity was lost
+    !> below the rounding of V_g: no bracket from eta = 1e-17 on, tau_m2 wrong before (by
+    !> 2e-5 at 1e-13, 0.2 at 1e-16; by 2 for subnormals). References: the rectangle in
+    !> closed form (section 5); the triangle in closed form, tau_m1 = 2 - sqrt(2 eta) + eta/2,
+    !> tau_m2 = 4 - 2 sqrt(2 eta) + 3 eta/4 (the sqrt(eta) approach to the limits 2 and 4);
+    !> any finite beta: ref_small_eta; the integrator where it is usable: the forward slide
+    !> for eta >= 1e-14 (its reverse slide and, at beta = 50, its stop time lose digits as
+    !> the old closed form did), and the half cycle for normal eta (at a subnormal eta its
+    !> stop time overflows: no reference). The spike sticks, with no slip.
+    subroutine test_small_eta(error)
+        type(test_error), allocatable, intent(out) :: error
+        real(dp) :: betas(9), etas(34), inf, eta, beta, tau_m1, um1, tau_m2, um2, ures, vm2
+        type(full_cycle_t) :: f, g
+        integer :: ib, ie, k, stat
+        character(len=:), allocatable :: at
+        inf = ieee_value(inf, ieee_positive_inf)
+        betas = [-inf, -50.0_dp, -1.0_dp, 0.0_dp, 1.0e-9_dp, 1.0_dp, 5.0_dp, 50.0_dp, inf]
+        do k = 13, 40
+            etas(k - 12) = 10.0_dp**(-k)
+        end do
+        etas(29:32) = [1.0e-100_dp, 1.0e-200_dp, 1.0e-300_dp, 1.0e-307_dp]
+        etas(33) = transfer(20240225330731_int64, 1.0_dp)   ! 1e-310
+        etas(34) = transfer(1_int64, 1.0_dp)                ! 4.9e-324, the smallest
+        do ib = 1, size(betas)
+            beta = betas(ib)
+            do ie = 1, size(etas)
+                eta = etas(ie)
+                at = ' at eta = '//real_str(eta)//', beta = '//real_str(beta)
+                call full_cycle(eta, eta, beta, 1.0_dp, .false., f, stat)
+                call check(error, stat == SEISPULSE_SUCCESS, 'full cycle: stat'//at)
+                if (allocated(error)) return
+                call check(error, all(ieee_is_finite([f%tau_y1, f%tau_m1, f%um1, f%tau_y2, &
+                           f%tau_m2, f%um2, f%ures, f%vm1, f%vm2])), 'full cycle: finite'//at)
+                if (allocated(error)) return
+                if (beta > huge(beta)) then
+                    call check(error, f%mode == SLIDING_MODE_STICK .and. same(f%um1, 0.0_dp) &
+                               .and. same(f%um2, 0.0_dp), 'spike: stick, no slip'//at)
+                    if (allocated(error)) return
+                    ! V_m/V_g = 1 - eta (1 - ln eta) -> 1 (section 3)
+                    call check(error, f%vm1, 1.0_dp, rtol=1.0e-9_dp, message='spike vm1'//at)
+                    if (allocated(error)) return
+                else
+                    call check(error, f%mode == SLIDING_MODE_SLIP, 'mode slip, not ' &
+                               //sliding_mode_name(f%mode)//at)
+                    if (allocated(error)) return
+                    call agree(error, f%tau_m1, f%tau_y2, 'tau_y2 = tau_m1', eta, eta, beta, &
+                               1.0_dp)
+                    if (allocated(error)) return
+                    if (beta < -huge(beta)) then
+                        call rectangle_full(eta, tau_m1, um1, tau_m2, um2, ures)
+                        vm2 = 2.0_dp * eta * (1.0_dp - eta) / (1.0_dp + eta)
+                    else
+                        call ref_small_eta(eta, beta, tau_m1, um1, tau_m2, um2, vm2)
+                        ures = um1 - um2
+                    end if
+                    call agree(error, tau_m1, f%tau_m1, 'tau_m1', eta, eta, beta, 1.0_dp)
+                    if (allocated(error)) return
+                    call agree(error, um1, f%um1, 'um1', eta, eta, beta, 1.0_dp)
+                    if (allocated(error)) return
+                    call agree(error, tau_m2, f%tau_m2, 'tau_m2', eta, eta, beta, 1.0_dp)
+                    if (allocated(error)) return
+                    call agree(error, um2, f%um2, 'um2', eta, eta, beta, 1.0_dp)
+                    if (allocated(error)) return
+                    call agree(error, ures, f%ures, 'ures', eta, eta, beta, 1.0_dp)
+                    if (allocated(error)) return
+                    call agree(error, vm2, f%vm2, 'vm2', eta, eta, beta, 1.0_dp)
+                    if (allocated(error)) return
+                end if
+                if (same(beta, 0.0_dp)) then
+                    call check(error, f%tau_m1, 2.0_dp - sqrt(2.0_dp * eta) + 0.5_dp * eta, &
+                               rtol=2.0e-15_dp, message='triangle tau_m1'//at)
+                    if (allocated(error)) return
+                    call check(error, f%tau_m2, 4.0_dp - 2.0_dp * sqrt(2.0_dp * eta) &
+                               + 0.75_dp * eta, rtol=2.0e-15_dp, message='triangle tau_m2'//at)
+                    if (allocated(error)) return
+                end if
+                if (eta >= 1.0e-14_dp .and. beta < huge(beta)) then
+                    call full_cycle_integrated(eta, eta, beta, 1.0_dp, .false., .true., g, stat)
+                    call check(error, stat == SEISPULSE_SUCCESS .and. g%mode == f%mode, &
+                               'integrator: stat and mode'//at)
+                    if (allocated(error)) return
+                    call agree(error, f%tau_y1, g%tau_y1, 'tau_y1', eta, eta, beta, 1.0_dp)
+                    if (allocated(error)) return
+                    call agree(error, f%um1, g%um1, 'um1', eta, eta, beta, 1.0_dp)
+                    if (allocated(error)) return
+                    call agree(error, f%vm1, g%vm1, 'vm1', eta, eta, beta, 1.0_dp)
+                    if (allocated(error)) return
+                end if
+                if (eta >= tiny(eta)) then
+                    call compare_half(error, eta, beta, 1.0_dp)
+                    if (allocated(error)) return
+                end if
+            end do
+        end do
+    end subroutine test_small_eta
+
+    !> Reference of test_small_eta for a finite beta: the symmetric full cycle whose forward
+    !> slide stops in the last quarter, tau_m1 = 2 - sigma with sigma < 1/2, and whose block
+    !> slides back at once and stops after the pulse (doc/sliding.md section 5), written in
+    !> sigma, where the full-cycle ground velocity and displacement are those of the rising
+    !> branch, v(sigma) and V_g - d(sigma), without cancellation. The stop: v(sigma) =
+    !> v(tau_y) + eta (2 - sigma - tau_y) (Eq. 1.6), by bisection on the logarithm of sigma;
+    !> u_m1 by Eq. 1.5. The reverse slide starts at 2 - sigma with v(sigma) to come, is
+    !> v(sigma) - eta sigma fast at tau = 2 and stops v(sigma)/eta after its start; it slips
+    !> v sigma - d(sigma) - eta sigma^2/2 (up to tau = 2) + (v - eta sigma)^2/(2 eta) (after).
+    subroutine ref_small_eta(eta, beta, tau_m1, um1, tau_m2, um2, vm2)
+        real(dp), intent(in) :: eta, beta
+        real(dp), intent(out) :: tau_m1, um1, tau_m2, um2, vm2
+        type(exp_consts_t) :: c
+        real(dp) :: ty, a, v0, d0, lo, hi, sig, vs, ds, h, w2
+        integer :: i
+        c = exp_consts(beta)
+        ty = exp_rise_time(eta, beta)
+        call exp_eval(c, ty, .false., a, v0, d0)
+        ! v(sigma) - v0 - eta (2 - sigma - ty): < 0 at tiny (v ~ sigma^2 underflows), > 0 at 1/2
+        lo = tiny(1.0_dp)
+        hi = 0.5_dp
+        do i = 1, 200
+            sig = sqrt(lo) * sqrt(hi)
+            if (.not. (sig > lo .and. sig < hi)) exit
+            call exp_eval(c, sig, .false., a, vs, ds)
+            if (vs - v0 < eta * (2.0_dp - sig - ty)) then
+                lo = sig
+            else
+                hi = sig
+            end if
+        end do
+        sig = hi
+        call exp_eval(c, sig, .false., a, vs, ds)
+        tau_m1 = 2.0_dp - sig
+        h = tau_m1 - ty
+        um1 = ((c%vg - ds) - d0) - h * v0 - 0.5_dp * eta * h * h
+        w2 = vs - eta * sig
+        tau_m2 = tau_m1 + vs / eta
+        um2 = (vs * sig - ds - 0.5_dp * eta * sig * sig) + w2 * w2 / (2.0_dp * eta)
+        ! peak reverse velocity, where the mirrored lobe falls to eta: tbar = 1 - tau_y
+        vm2 = ((vs - v0) - eta * (sig - ty)) / c%vg
+    end subroutine ref_small_eta
 
     subroutine test_onset(error)
         type(test_error), allocatable, intent(out) :: error

@@ -107,10 +107,12 @@ module seispulse_sliding_closed
     !> (half cycle) or of the corrected Eq. 1.19 (full cycle), in the form of Eq. 1.4:
     !> w(tau) = v_g(tau) - v_g(tau0) - eta (tau - tau0).
     !> Its slope is the relative acceleration a_g(tau) - eta (for Newton's method).
+    !> `late` (half cycle): w = rest0 - (V_g - v_g(tau)) - eta (tau - tau0), with rest0 =
+    !> V_g - v_g(tau0) given, free of the cancellation of the first form near the lobe end.
     type, extends(smooth_function) :: slide_velocity
         type(exp_consts_t) :: c
-        logical :: full = .false.
-        real(dp) :: tau0 = 0.0_dp, v0 = 0.0_dp, eta = 0.0_dp
+        logical :: full = .false., late = .false.
+        real(dp) :: tau0 = 0.0_dp, v0 = 0.0_dp, eta = 0.0_dp, rest0 = 0.0_dp
     contains
         procedure :: eval => slide_velocity_eval
         procedure :: eval_slope => slide_velocity_slope
@@ -159,21 +161,44 @@ contains
     !> kinetic resistance eta. The lobe must exceed eta at tau0 (the onset, or the instant of
     !> an immediate reversal). `full`: the ground carries on with the mirrored lobe (first
     !> slide of a full cycle, corrected Eq. 1.19), otherwise with the constant velocity V_g.
-    subroutine one_slide(c, full, tau0, eta, tau_m, um, dug, vm, regime, stat, errmsg)
+    !> rest0 (half cycle only): V_g - v_g(tau0), the ground velocity the lobe still gives,
+    !> when the caller has it without the cancellation of that difference (a reversal late
+    !> in the lobe, section 5); used when it is below V_g/1024.
+    subroutine one_slide(c, full, tau0, eta, tau_m, um, dug, vm, regime, stat, errmsg, rest0)
         type(exp_consts_t), intent(in) :: c
         logical, intent(in) :: full
         real(dp), intent(in) :: tau0, eta
         real(dp), intent(out) :: tau_m, um, dug, vm
         integer, intent(out) :: regime, stat
         character(len=*), intent(inout), optional :: errmsg
+        real(dp), intent(in), optional :: rest0
         type(slide_velocity) :: w
-        real(dp) :: a0, v0, d0, tau_k, a, v, d, w_k, w_hi, hi, h
+        real(dp) :: a0, v0, d0, ty, tau_k, a, v, d, w_k, w_hi, hi, h, dv
+        logical :: moves
         ! relative acceleration a - eta stays positive up to tau_k, where the falling
         ! branch comes down to eta (tau_k = 1 - tau_y(eta), section 3)
-        tau_k = 1.0_dp - exp_rise_time(eta, c%beta)
+        ty = exp_rise_time(eta, c%beta)
+        tau_k = 1.0_dp - ty
         call exp_eval(c, tau0, full, a0, v0, d0)
         stat = SEISPULSE_SUCCESS
-        if (.not. (tau_k > tau0)) then
+        dv = c%vg - v0
+        moves = tau_k > tau0
+        if (present(rest0) .and. .not. full) then
+            ! below V_g/1024 the difference V_g - v0 keeps fewer than about 43 of the 53 bits
+            ! (none once rest0 is below the rounding of V_g: no bracket, or a wrong stop), and
+            ! tau0 as little of its distance to the lobe end: then the lobe exceeds eta at
+            ! tau0 if more ground velocity is left than after tau_k, v_g(tau_y(eta)) by
+            ! symmetry. Above, the difference is good to about 2^-43, and kept (the results
+            ! there are those of before)
+            if (rest0 < c%vg / 1024.0_dp) then
+                w%late = .true.
+                w%rest0 = rest0
+                dv = rest0
+                call exp_eval(c, ty, .false., a, v, d)
+                moves = rest0 > v
+            end if
+        end if
+        if (.not. moves) then
             ! the lobe only touches eta: a slide of zero length (the spike, beta = +inf)
             tau_m = tau0
             um = 0.0_dp
@@ -193,11 +218,11 @@ contains
         ! block stops at tau0 + (V_g - v_g(tau0))/eta, if that is after the lobe
         ! (+-inf without the overflow, for an eta near the smallest double)
         if (eta >= 1.0_dp) then
-            h = (c%vg - v0) / eta
-        else if (abs(c%vg - v0) < eta * huge(1.0_dp)) then
-            h = (c%vg - v0) / eta
+            h = dv / eta
+        else if (abs(dv) < eta * huge(1.0_dp)) then
+            h = dv / eta
         else
-            h = sign(ieee_value(h, ieee_positive_inf), c%vg - v0)
+            h = sign(ieee_value(h, ieee_positive_inf), dv)
         end if
         if (.not. full .and. tau0 + h > 1.0_dp) then
             regime = SLIDING_REGIME_FREE
@@ -208,17 +233,18 @@ contains
             ! Newton: the slope a_g - eta comes with the value)
             if (full) then
                 ! v_g(2 - tau_y) = v_g(tau_y) <= v_g(tau0): w(2 - tau_y) < 0 (section 4)
-                hi = 2.0_dp - exp_rise_time(eta, c%beta)
+                hi = 2.0_dp - ty
             else
                 hi = 1.0_dp
             end if
             w_hi = w%eval(hi)
-            if (w_hi < 0.0_dp) then
+            if (w_hi < 0.0_dp .and. tau_k < hi) then
                 call find_root_newton(w, tau_k, hi, tau_m, stat, errmsg, fa_known=w_k, &
                                       fb_known=w_hi)
                 if (stat /= SEISPULSE_SUCCESS) return
             else
-                ! on the free/forced boundary (tau_m = 1 up to rounding)
+                ! on the free/forced boundary (tau_m = 1 up to rounding), or a bracket
+                ! [1 - tau_y, 1] narrower than the rounding of 1 (tau_k = 1)
                 tau_m = hi
             end if
             regime = SLIDING_REGIME_FORCED
@@ -245,8 +271,22 @@ contains
         real(dp), intent(in) :: x
         real(dp), intent(out) :: y, dy
         real(dp) :: a, v, d
-        call exp_eval(self%c, x, self%full, a, v, d)
-        y = (v - self%v0) - self%eta * (x - self%tau0)
+        if (self%late) then
+            ! the half-cycle lobe is symmetric: V_g - v_g(x) = v_g(1 - x), a_g(x) = a_g(1 - x)
+            if (x >= 1.0_dp) then
+                a = 0.0_dp
+                v = 0.0_dp
+            else if (x > 0.5_dp) then
+                call exp_eval(self%c, 1.0_dp - x, .false., a, v, d)
+            else
+                call exp_eval(self%c, x, .false., a, v, d)
+                v = self%c%vg - v
+            end if
+            y = (self%rest0 - v) - self%eta * (x - self%tau0)
+        else
+            call exp_eval(self%c, x, self%full, a, v, d)
+            y = (v - self%v0) - self%eta * (x - self%tau0)
+        end if
         dy = a - self%eta
     end subroutine slide_velocity_slope
 
@@ -256,7 +296,8 @@ contains
     elemental function spike_vm(eta_on, eta) result(vm)
         real(dp), intent(in) :: eta_on, eta
         real(dp) :: vm
-        vm = 0.5_dp * ((1.0_dp - eta_on) + (1.0_dp - eta) + eta * log(eta_on * eta))
+        ! two logarithms: eta_on eta underflows to 0 for a subnormal eta
+        vm = 0.5_dp * ((1.0_dp - eta_on) + (1.0_dp - eta) + eta * (log(eta_on) + log(eta)))
     end function spike_vm
 
     ! ------------------------------------------------------------------------------
@@ -313,7 +354,7 @@ contains
         integer, intent(out) :: stat                          !! SEISPULSE_SUCCESS or error code
         character(len=*), intent(inout), optional :: errmsg  !! message when stat /= 0
         type(exp_consts_t) :: c
-        real(dp) :: nan, on2, tbar0, tbar_m, dug
+        real(dp) :: nan, on2, tbar0, tbar_m, dug, a1, v1, d1, v2, rest
         integer :: regime
         real(dp) :: static_in
         logical :: reverse_in
@@ -351,25 +392,35 @@ contains
 
         ! the second lobe exceeds on2 on (1 + tau_y(on2), 2 - tau_y(on2)) (section 7)
         tbar0 = exp_rise_time(on2, beta)
+        ! ground velocity at the forward stop by Eq. 1.6, v_g(tau_m1) = v_g(tau_y1) +
+        ! eta1 (tau_m1 - tau_y1) (section 2): near tau = 2 it is O(eta1) and keeps its relative
+        ! precision, where tau_m1 keeps only that of 2 (it is 2 to rounding for a tiny eta1)
+        call exp_eval(c, res%tau_y1, .true., a1, v1, d1)
+        rest = v1 + eta1 * (res%tau_m1 - res%tau_y1)
+        call exp_eval(c, tbar0, .true., a1, v2, d1)
         if (res%tau_m1 <= 1.0_dp + tbar0) then
             res%mode = SLIDING_MODE_STICK
-        else if (res%tau_m1 < 2.0_dp - tbar0) then
+            call reverse_slide(on2)
+        else if (rest > v2) then
+            ! tau_m1 < 2 - tau_y(on2), in velocities: v_g(tau_m1) > v_g(2 - tau_y(on2)) =
+            ! v_g(tau_y(on2)), as v_g falls monotonically to 0 at tau = 2
             res%mode = SLIDING_MODE_SLIP
             tbar0 = res%tau_m1 - 1.0_dp
+            ! the mirrored lobe still gives V_g - v(tbar0) = v_g(tau_m1)
+            call reverse_slide(on2, rest)
         else
             res%mode = SLIDING_MODE_STUCK
-            return
         end if
-        call reverse_slide(on2)
 
     contains
 
         !> The reverse slide is a forward slide on the mirrored second lobe in the shifted
         !> time tbar = tau - 1, with kinetic eta2 (Table 1.1 with the bars of Table 1.4).
-        subroutine reverse_slide(eta_on)
+        subroutine reverse_slide(eta_on, rest0)
             real(dp), intent(in) :: eta_on
+            real(dp), intent(in), optional :: rest0  !! V_g - v(tbar0), see one_slide
             call one_slide(c, .false., tbar0, eta2, tbar_m, res%um2, dug, res%vm2, regime, &
-                           stat, errmsg)
+                           stat, errmsg, rest0)
             if (stat /= SEISPULSE_SUCCESS) return
             if (beta > huge(beta)) res%vm2 = spike_vm(eta_on, eta2)
             res%tau_y2 = 1.0_dp + tbar0
