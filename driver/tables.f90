@@ -21,6 +21,7 @@ module driver_tables
     use driver_run_group, only: run_digits, run_csv_digits
     use driver_input, only: output_located
     use driver_parallel, only: par_root
+    use driver_namelist_scan, only: text_buffer, append
     implicit none
     private
 
@@ -62,7 +63,8 @@ module driver_tables
         type(path_t), allocatable :: names(:), units(:)
         integer, allocatable :: kind_of(:), width(:), ncat(:)
         type(path_t), allocatable :: cats(:, :)   !! names of the category columns' codes
-        character(len=:), allocatable :: line, cells  !! buffers: a line, a row's cells
+        type(text_buffer) :: csv_line, row_cells  !! a row being built: CSV line, .txt cells
+        character(len=:), allocatable :: line, cells  !! a .txt line; a row's cells read back
         character(len=512) :: iomsg = ''
     end type table_t
 
@@ -356,6 +358,7 @@ contains
             return
         end if
         t%writing = .true.
+        allocate(character(len=256) :: t%csv_line%s, t%row_cells%s)
         ! the .txt waits for the widths: its header lines and cells go to two scratch
         ! files (unformatted stream: lengths, then bytes) next to it, on the disk that
         ! takes the tables (not a /tmp that may live in memory), unlinked at once
@@ -414,7 +417,7 @@ contains
         character(len=NUM_LEN) :: cells(size(values)), ctext(size(values))
         integer :: lens(t%ncol)
         character(len=:), allocatable :: c
-        integer :: j, pos, cpos
+        integer :: j
 
         if (.not. t%writing) return
         if (size(values) /= t%ndat .or. (present(label) .neqv. t%j0 == 2)) then
@@ -426,37 +429,39 @@ contains
             return
         end if
         call format_reals(values, t%digits, cells, t%csv_digits, ctext)
-        pos = 0
-        cpos = 0
-        if (present(label)) then
-            call append(t%line, pos, csv_quote(label))
-            lens(1) = len_trim(label)
-            call append(t%cells, cpos, label(1:lens(1)))
-        end if
-        do j = 1, t%ndat
-            if (pos > 0) call append(t%line, pos, ',')
-            select case (t%kind_of(j))
-            case (KIND_INT)
-                c = trim(int_text(values(j)))
-                call append(t%line, pos, c)
-            case (KIND_CAT)
-                c = cat_text(t, values(j), j)
-                call append(t%line, pos, '"'//c//'"')
-            case default
-                ! a number (the common case: no allocation)
-                call append(t%line, pos, ctext(j)(1:len_trim(ctext(j))))
-                lens(j + t%j0 - 1) = len_trim(cells(j))
-                call append(t%cells, cpos, cells(j)(1:lens(j + t%j0 - 1)))
-                cycle
-            end select
-            lens(j + t%j0 - 1) = len(c)
-            call append(t%cells, cpos, c)
-        end do
-        do j = 1, t%ncol
-            t%width(j) = max(t%width(j), lens(j))
-        end do
-        write(t%uc, '(a)', iostat=t%stat, iomsg=t%iomsg) t%line(1:pos)
-        if (t%stat == 0) write(t%ucell, iostat=t%stat, iomsg=t%iomsg) lens, t%cells(1:cpos)
+        associate (csv => t%csv_line, txt => t%row_cells)
+            csv%n = 0
+            txt%n = 0
+            if (present(label)) then
+                call append(csv, csv_quote(label))
+                lens(1) = len_trim(label)
+                call append(txt, label(1:lens(1)))
+            end if
+            do j = 1, t%ndat
+                if (csv%n > 0) call append(csv, ',')
+                select case (t%kind_of(j))
+                case (KIND_INT)
+                    c = trim(int_text(values(j)))
+                    call append(csv, c)
+                case (KIND_CAT)
+                    c = cat_text(t, values(j), j)
+                    call append(csv, '"'//c//'"')
+                case default
+                    ! a number (the common case: no allocation)
+                    call append(csv, ctext(j)(1:len_trim(ctext(j))))
+                    lens(j + t%j0 - 1) = len_trim(cells(j))
+                    call append(txt, cells(j)(1:lens(j + t%j0 - 1)))
+                    cycle
+                end select
+                lens(j + t%j0 - 1) = len(c)
+                call append(txt, c)
+            end do
+            do j = 1, t%ncol
+                t%width(j) = max(t%width(j), lens(j))
+            end do
+            write(t%uc, '(a)', iostat=t%stat, iomsg=t%iomsg) csv%s(1:csv%n)
+            if (t%stat == 0) write(t%ucell, iostat=t%stat, iomsg=t%iomsg) lens, txt%s(1:txt%n)
+        end associate
         if (t%stat /= 0) call table_write_failed(t)
         t%nrow = t%nrow + 1
     end subroutine table_row
@@ -675,22 +680,6 @@ contains
         t%writing = .false.
         t%created = .false.
     end subroutine table_fail
-
-    !> Append c to text(1:pos), growing text.
-    subroutine append(text, pos, c)
-        character(len=:), allocatable, intent(inout) :: text
-        integer, intent(inout) :: pos
-        character(len=*), intent(in) :: c
-        character(len=:), allocatable :: grown
-        if (.not. allocated(text)) allocate(character(len=max(256, 2 * len(c))) :: text)
-        if (pos + len(c) > len(text)) then
-            allocate(character(len=2 * (pos + len(c))) :: grown)
-            grown(1:pos) = text(1:pos)
-            call move_alloc(grown, text)
-        end if
-        text(pos + 1:pos + len(c)) = c
-        pos = pos + len(c)
-    end subroutine append
 
     !> Write table `name` of the run: table_path(prefix, name, 'txt') and (..., 'csv')
     !> (as <path>.part until commit_outputs).

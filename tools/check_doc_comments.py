@@ -167,26 +167,37 @@ def split_semicolons(code):
     return split_top(code, ";")
 
 
-def split_top(s, sep=","):
-    """Split on sep outside parentheses, brackets and quotes."""
-    parts, depth, quote, cur = [], 0, None, ""
+def top_level(s):
+    """(ch, top) for each character of s: top is True outside parentheses, brackets and
+    quotes (the brackets and quote characters themselves are not top)."""
+    depth, quote = 0, None
     for ch in s:
         if quote:
-            cur += ch
             if ch == quote:
                 quote = None
-            continue
-        if ch in "'\"":
+            yield ch, False
+        elif ch in "'\"":
             quote = ch
+            yield ch, False
         elif ch in "([":
             depth += 1
+            yield ch, False
         elif ch in ")]":
             depth -= 1
-        elif ch == sep and depth == 0:
+            yield ch, False
+        else:
+            yield ch, depth == 0
+
+
+def split_top(s, sep=","):
+    """Split on sep outside parentheses, brackets and quotes."""
+    parts, cur = [], ""
+    for ch, top in top_level(s):
+        if top and ch == sep:
             parts.append(cur.strip())
             cur = ""
-            continue
-        cur += ch
+        else:
+            cur += ch
     if cur.strip():
         parts.append(cur.strip())
     return parts

@@ -33,7 +33,7 @@ import re
 import sys
 from pathlib import Path
 
-from check_doc_comments import split_comment, split_top   # tools/: the same readers
+from check_doc_comments import split_comment, split_top, top_level   # the same readers
 
 ROOT = Path(__file__).resolve().parent.parent
 CHECKS = ("save", "init-local", "data", "common", "module-var", "open-unit", "parse")
@@ -90,22 +90,8 @@ def initialised(entities):
 
 
 def strip_parens(text):
-    """text without what is inside parentheses or quotes (a(1:n) -> a())."""
-    out, depth, quote = [], 0, None
-    for ch in text:
-        if quote:
-            if ch == quote:
-                quote = None
-            continue
-        if ch in "'\"":
-            quote = ch
-        elif ch in "([":
-            depth += 1
-        elif ch in ")]":
-            depth -= 1
-        elif depth == 0:
-            out.append(ch)
-    return "".join(out)
+    """text without what is inside parentheses or quotes, nor these (a(1:n) = 1 -> a = 1)."""
+    return "".join(ch for ch, top in top_level(text) if top)
 
 
 def declaration(stmt):
